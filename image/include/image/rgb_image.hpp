@@ -1,0 +1,50 @@
+// A 24-bit RGB picture, rows top to bottom (spec §1): the scanned-out frame on a DVI link, a
+// display's buffer, a test-pattern tile. Rows are contiguous so strips copy as spans.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace l2 {
+
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb&, const Rgb&) = default;
+};
+
+class RgbImage {
+ public:
+  static constexpr int kChannels = 3;
+
+  RgbImage() = default;
+  RgbImage(int width, int height, Rgb fill = {});
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t stride() const { return static_cast<std::size_t>(width_) * kChannels; }
+  bool empty() const { return width_ == 0 || height_ == 0; }
+
+  std::span<std::uint8_t> row(int y) { return {bytes_.data() + y * stride(), stride()}; }
+  std::span<const std::uint8_t> row(int y) const {
+    return {bytes_.data() + y * stride(), stride()};
+  }
+  std::uint8_t* data() { return bytes_.data(); }
+  const std::uint8_t* data() const { return bytes_.data(); }
+  std::span<const std::uint8_t> bytes() const { return bytes_; }
+
+  Rgb at(int x, int y) const;
+  void set(int x, int y, Rgb c);
+  void fill(Rgb c);
+  // Fills the rectangle clipped to the image.
+  void fill_rect(int x, int y, int w, int h, Rgb c);
+
+  friend bool operator==(const RgbImage&, const RgbImage&) = default;
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<std::uint8_t> bytes_;
+};
+
+}  // namespace l2

@@ -1,0 +1,38 @@
+#include "image/rgb_image.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace l2 {
+
+RgbImage::RgbImage(int width, int height, Rgb fill_colour) : width_(width), height_(height) {
+  if (width < 0 || height < 0) throw std::invalid_argument("RgbImage: negative size");
+  bytes_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * kChannels);
+  fill(fill_colour);
+}
+
+Rgb RgbImage::at(int x, int y) const {
+  const std::uint8_t* p = bytes_.data() + y * stride() + static_cast<std::size_t>(x) * kChannels;
+  return {p[0], p[1], p[2]};
+}
+
+void RgbImage::set(int x, int y, Rgb c) {
+  std::uint8_t* p = bytes_.data() + y * stride() + static_cast<std::size_t>(x) * kChannels;
+  p[0] = c.r;
+  p[1] = c.g;
+  p[2] = c.b;
+}
+
+void RgbImage::fill(Rgb c) {
+  fill_rect(0, 0, width_, height_, c);
+}
+
+void RgbImage::fill_rect(int x, int y, int w, int h, Rgb c) {
+  const int x0 = std::max(x, 0), x1 = std::min(x + w, width_);
+  const int y0 = std::max(y, 0), y1 = std::min(y + h, height_);
+  for (int yy = y0; yy < y1; ++yy) {
+    for (int xx = x0; xx < x1; ++xx) set(xx, yy, c);
+  }
+}
+
+}  // namespace l2
