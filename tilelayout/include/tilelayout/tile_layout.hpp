@@ -1,0 +1,72 @@
+// A planned routing: which pipeserver renders which tile, and where each tile sits in that
+// pipeserver's framebuffer (spec §4). Everything downstream — rendering, header drawing,
+// scan-out, routing checks — reads this one structure.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tilelayout/geometry.hpp"
+#include "tilelayout/wall.hpp"
+
+namespace l2 {
+
+class RgbImage;
+
+// A tile that lies within one display: a logical tile after splitting at display edges.
+struct DisplayTile {
+  int display = 0;
+  Rect on_display;    // dx, dy, w, h on the output display
+  Rect on_canvas;     // the same pixels on the logical canvas (what the renderer draws)
+  int logical_tile = 0;  // index into TileLayout::logical_tiles
+};
+
+// A tile placed in a pipeserver framebuffer. Its header gap is columns fb_x-2 .. fb_x-1 of
+// rows fb_y .. fb_y + row height - 1; its pixels are fb_x .. fb_x+w-1, fb_y .. fb_y+h-1.
+struct PackedTile {
+  DisplayTile tile;
+  int fb_x = 0, fb_y = 0;
+};
+
+// A row of packed tiles (spec §4 rule 2): as tall as its tallest tile.
+struct PackedRow {
+  int y = 0, height = 0;
+  int first_tile = 0, tile_count = 0;  // range in ServerPlan::tiles
+};
+
+struct ServerPlan {
+  int server = 0;
+  int fb_width = 0, fb_height = 0;
+  std::vector<PackedTile> tiles;  // in packing order
+  std::vector<PackedRow> rows;
+  int used_height() const { return rows.empty() ? 0 : rows.back().y + rows.back().height; }
+};
+
+struct TileLayout {
+  Wall wall;
+  std::vector<Rect> logical_tiles;   // canvas rectangles, in tiling order
+  std::vector<DisplayTile> tiles;    // split at display edges; pixels behind mullions dropped
+  std::vector<int> tile_server;      // tiles[i] is rendered by pipeserver tile_server[i]
+  std::vector<ServerPlan> servers;   // one per pipeserver
+  std::vector<std::string> warnings; // for example canvas area left uncovered
+};
+
+// A wall that cannot be used as written. what() is one line naming file, line and field where
+// they are known: "walls/x.toml:12: tiling.tile_width: must be 1..4095, got 0".
+class LayoutError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Packs tiles into one framebuffer exactly per spec §4 rules 1, 2 and 5. Throws LayoutError
+// naming the server, the tile and by how much it does not fit.
+ServerPlan pack_tiles(int server, int fb_width, int fb_height,
+                      const std::vector<DisplayTile>& tiles);
+
+// Draws every header of spec §4 rule 3 (COPY / SKIP / END) into `fb` for the given parity;
+// touches only header pixels. `fb` must be fb_width x fb_height.
+void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb);
+
+}  // namespace l2

@@ -1,0 +1,49 @@
+// The description of a display wall, as read from a wall file (TOML): the output displays and
+// where they sit on the logical canvas, the pipeservers, the mesh limits and swap-lock groups.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tilelayout/geometry.hpp"
+
+namespace l2 {
+
+struct Display {
+  int id = 0;               // output display number carried in strip headers, 0..63
+  int width = 0, height = 0;
+  int canvas_x = 0, canvas_y = 0;  // where the display's pixel (0,0) sits on the canvas
+  int swap_group = 0;       // displays of one group swap together (spec §6)
+  std::string monitor;      // optional monitor name or index for --show monitors
+
+  Rect on_canvas() const { return {canvas_x, canvas_y, width, height}; }
+};
+
+enum class TilingKind { Grid, List, KdSplit, Strips };
+enum class AssignmentPolicy { RoundRobin, ZigZag, Spiral, Blocks, AreaBalanced };
+
+struct TilingSpec {
+  TilingKind kind = TilingKind::Grid;
+  int tile_width = 0, tile_height = 0;  // Grid
+  std::vector<Rect> rects;              // List, in canvas coordinates
+  int tile_count = 0;                   // KdSplit: number of tiles
+  std::vector<std::vector<double>> cost;  // KdSplit: cost grid over the canvas (empty: uniform)
+  int strip_count = 0;                  // Strips: horizontal strips ...
+  int substrip_count = 0;               // ... each cut into this many vertical sub-strips
+};
+
+struct Wall {
+  std::filesystem::path source;  // the wall file, for error messages; empty when built in code
+  std::string name;
+  int canvas_width = 0, canvas_height = 0;
+  std::vector<Display> displays;  // displays[i].id == i
+  TilingSpec tiling;
+  int server_count = 1;
+  int framebuffer_width = 1280, framebuffer_height = 1024;
+  AssignmentPolicy assignment = AssignmentPolicy::RoundRobin;
+  int board_max_width = 1280, board_max_height = 1024;  // per-input limit of a board (spec §5)
+  int refresh_hz = 60;
+};
+
+}  // namespace l2
