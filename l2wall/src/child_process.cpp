@@ -1,0 +1,85 @@
+#include "child_process.hpp"
+
+#include <fmt/format.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+extern char** environ;
+
+namespace l2 {
+namespace {
+
+ExitStatus decode_wait_status(int status) {
+  ExitStatus s;
+  if (WIFEXITED(status)) s.code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) s.signal = WTERMSIG(status);
+  return s;
+}
+
+}  // namespace
+
+std::string ExitStatus::describe() const {
+  if (signal != 0) return fmt::format("killed by signal {} ({})", signal, strsignal(signal));
+  return fmt::format("exited with code {}", code);
+}
+
+ChildProcess::ChildProcess(std::vector<std::string> argv) : argv_(std::move(argv)) {
+  if (argv_.empty()) throw std::invalid_argument("ChildProcess: no program given");
+  std::vector<char*> args;
+  for (auto& a : argv_) args.push_back(a.data());
+  args.push_back(nullptr);
+  const int rc = posix_spawn(&pid_, args[0], nullptr, nullptr, args.data(), environ);
+  if (rc != 0) {
+    pid_ = -1;
+    throw std::runtime_error(fmt::format("cannot start {}: {}", argv_[0], std::strerror(rc)));
+  }
+}
+
+ChildProcess::ChildProcess(ChildProcess&& other) noexcept
+    : argv_(std::move(other.argv_)), pid_(other.pid_), status_(other.status_) {
+  other.pid_ = -1;
+}
+
+ChildProcess::~ChildProcess() {
+  if (pid_ > 0 && !status_) terminate();
+}
+
+std::optional<ExitStatus> ChildProcess::poll() {
+  if (status_ || pid_ <= 0) return status_;
+  int status = 0;
+  pid_t r;
+  do {
+    r = waitpid(pid_, &status, WNOHANG);
+  } while (r < 0 && errno == EINTR);
+  if (r == pid_) status_ = decode_wait_status(status);
+  return status_;
+}
+
+std::optional<ExitStatus> ChildProcess::wait_for(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!poll()) {
+    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return status_;
+}
+
+ExitStatus ChildProcess::terminate(std::chrono::milliseconds grace) {
+  if (poll()) return *status_;
+  kill(pid_, SIGTERM);
+  if (wait_for(grace)) return *status_;
+  kill(pid_, SIGKILL);
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  status_ = decode_wait_status(status);
+  return *status_;
+}
+
+}  // namespace l2
