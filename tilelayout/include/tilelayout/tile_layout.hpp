@@ -69,4 +69,9 @@ ServerPlan pack_tiles(int server, int fb_width, int fb_height,
 // touches only header pixels. `fb` must be fb_width x fb_height.
 void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb);
 
+// Spec §4 rule 4: blacks every pixel that is neither a tile pixel nor a header gap of a packed
+// row (scanlines below the last row, the rest of a row after its END, the parts of a row below
+// a shorter tile). A renderer calls it so leftover pixels are never read as headers.
+void clear_outside_tiles(const ServerPlan& plan, RgbImage& fb);
+
 }  // namespace l2

@@ -1,0 +1,85 @@
+// Spec §4 rules 1, 2 and 5: place a pipeserver's tiles, in list order, into its framebuffer.
+#include <fmt/format.h>
+
+#include "strip_headers/strip_header.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+namespace {
+
+std::string describe(int server, int index, const DisplayTile& t) {
+  return fmt::format("pipeserver {}: tile {} (display {}, {}x{} at {},{})", server, index,
+                     t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y);
+}
+
+// A tile must be expressible in headers: every COPY names display, x, y + r and width in their
+// bit widths (spec §2). Checked here so nothing is drawn for a plan that cannot be encoded.
+void check_encodable(int server, int index, const DisplayTile& t) {
+  const Rect& r = t.on_display;
+  const char* problem = nullptr;
+  if (t.display < 0 || t.display >= kMaxDisplays) {
+    problem = "display must be 0..63";
+  } else if (r.w < 1 || r.h < 1) {
+    problem = "tile is empty";
+  } else if (r.w > kMaxCoordinate) {
+    problem = "width must be at most 4095";
+  } else if (r.x < 0 || r.x > kMaxCoordinate || r.y < 0 || r.bottom() - 1 > kMaxCoordinate) {
+    problem = "display coordinates must be 0..4095";
+  }
+  if (problem) throw LayoutError(fmt::format("{}: {}", describe(server, index, t), problem));
+}
+
+}  // namespace
+
+ServerPlan pack_tiles(int server, int fb_width, int fb_height,
+                      const std::vector<DisplayTile>& tiles) {
+  if (fb_width < kHeaderPixels + 1 || fb_height < 1) {
+    throw LayoutError(
+        fmt::format("pipeserver {}: framebuffer {}x{} is too small", server, fb_width, fb_height));
+  }
+  ServerPlan plan;
+  plan.server = server;
+  plan.fb_width = fb_width;
+  plan.fb_height = fb_height;
+  plan.tiles.reserve(tiles.size());
+
+  int gap_x = 0;  // where the next tile's header gap starts in the current row
+  for (int i = 0; i < static_cast<int>(tiles.size()); ++i) {
+    const DisplayTile& t = tiles[i];
+    check_encodable(server, i, t);
+    const int w = t.on_display.w, h = t.on_display.h;
+    if (w > fb_width - kHeaderPixels) {
+      throw LayoutError(
+          fmt::format("{} does not fit the {}x{} framebuffer: needs {} columns, {} too many",
+                      describe(server, i, t), fb_width, fb_height, w + kHeaderPixels,
+                      w + kHeaderPixels - fb_width));
+    }
+    // Rule 2: a tile whose gap and pixels would pass W starts a new row below the last one.
+    if (plan.rows.empty() || gap_x + kHeaderPixels + w > fb_width) {
+      const int y = plan.used_height();
+      plan.rows.push_back({y, 0, i, 0});
+      gap_x = 0;
+    }
+    PackedRow& row = plan.rows.back();
+    plan.tiles.push_back({t, gap_x + kHeaderPixels, row.y});
+    row.height = std::max(row.height, h);
+    ++row.tile_count;
+    gap_x += kHeaderPixels + w;
+  }
+
+  // Rule 5, height: name the first tile that crosses the bottom and what all tiles need.
+  const int needed = plan.used_height();
+  for (const PackedRow& row : plan.rows) {
+    if (row.y + row.height <= fb_height) continue;
+    for (int i = row.first_tile; i < row.first_tile + row.tile_count; ++i) {
+      const PackedTile& p = plan.tiles[i];
+      if (p.fb_y + p.tile.on_display.h <= fb_height) continue;
+      throw LayoutError(fmt::format(
+          "{} does not fit the {}x{} framebuffer: needs {} rows, {} too many",
+          describe(server, i, p.tile), fb_width, fb_height, needed, needed - fb_height));
+    }
+  }
+  return plan;
+}
+
+}  // namespace l2
