@@ -1,0 +1,63 @@
+// One render node of the wall (spec §1, §4): renders every tile assigned to it at its packed
+// place, draws the strip headers into the gaps with the frame's parity, and scans the
+// framebuffer out as a 24-bit RGB frame.
+#pragma once
+
+#include <memory>
+
+#include "image/rgb_image.hpp"
+#include "pipeserver/bucketing.hpp"
+#include "pipeserver/camera.hpp"
+#include "pipeserver/gl_context.hpp"
+#include "pipeserver/scene.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+struct FrameTimes {
+  double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
+  double header_ms = 0;   // draw_headers
+  double scanout_ms = 0;  // RGBA bottom-up -> RGB top-down
+  BucketStats buckets;
+  double total_ms() const { return render_ms + header_ms + scanout_ms; }
+};
+
+// The logical canvas of a wall.
+inline Canvas canvas_of(const Wall& wall) {
+  return {wall.canvas_width, wall.canvas_height};
+}
+
+// Spec §6.1: frame k carries parity k mod 2.
+inline bool frame_parity(int frame) {
+  return (frame & 1) != 0;
+}
+
+class Pipeserver {
+ public:
+  // Throws std::out_of_range when `server` is not a pipeserver of the layout.
+  Pipeserver(const TileLayout& layout, int server);
+
+  // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
+  // stays valid until the next call.
+  const RgbImage& render_frame(int frame, Scene& scene);
+
+  const ServerPlan& plan() const { return plan_; }
+  const FrameTimes& last_times() const { return times_; }
+
+ private:
+  ServerPlan plan_;
+  Canvas canvas_;
+  GlContext gl_;
+  RgbImage frame_;
+  FrameTimes times_;
+};
+
+// What display `display` should show for `frame`: the display's canvas rectangle rendered
+// whole, at display resolution, with the same camera (its own GL context).
+RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame);
+
+// Any canvas rectangle rendered alone into an image of its size (its own GL context): the
+// reference render's engine, and the whole-canvas render the tile tests crop.
+RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame);
+
+}  // namespace l2

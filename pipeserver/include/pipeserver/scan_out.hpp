@@ -1,0 +1,16 @@
+// Scan-out (spec §1): the GL framebuffer (RGBA, rows bottom to top) becomes the 24-bit RGB frame
+// a DVI link carries (rows top to bottom, alpha dropped). A hot path: one pass per row, no
+// per-pixel calls; the destination is the caller's, so the live run can scan out straight into
+// shared memory.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+namespace l2 {
+
+// Converts a w x h RGBA bottom-up image into w x h RGB top-down in `dst_rgb` (w*h*3 bytes).
+// Throws std::invalid_argument when dst_rgb is too small.
+void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb);
+
+}  // namespace l2

@@ -1,0 +1,79 @@
+// Scenes a pipeserver renders: geometry in batches, each with a bounding box so sort-first
+// bucketing can skip the tiles a batch does not touch. Every scene is a pure function of its
+// options and the frame number, so all pipeservers of a wall (and the reference render) agree.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace l2 {
+
+struct Box {
+  glm::vec3 lo{0.0f}, hi{0.0f};
+  void extend(glm::vec3 p);
+  static Box empty();
+};
+
+enum class Primitive { Triangles, TriangleStrips };
+
+// One draw call's worth of geometry, in the scene's model space.
+struct Batch {
+  Primitive primitive = Primitive::Triangles;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;             // empty when the scene is unlit
+  std::vector<glm::vec3> colours;             // per vertex, 0..1
+  std::vector<std::uint32_t> indices;         // Triangles: indexed; empty means positions in order
+  std::vector<int> strip_first, strip_count;  // TriangleStrips: one entry per strip
+  Box bounds;
+
+  std::size_t triangle_count() const;
+  void compute_bounds();
+};
+
+struct SceneOptions {
+  std::filesystem::path mesh_file;  // mesh: PLY or OBJ; empty means the bundled bunny
+  long triangles = 100000;          // strips: total triangle count (up to millions)
+  int strip_length = 16;            // strips: triangles per strip
+  int grid = 40;                    // isosurface: cells along each axis
+  int tessellation = 16;            // patches: segments along each patch edge
+  int patches = 4;                  // patches: patches along each side of the sheet
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  virtual const char* name() const = 0;
+  // Makes batches() and model() those of frame `frame`. Same frame, same geometry.
+  virtual void set_frame(int frame) = 0;
+
+  const std::vector<Batch>& batches() const { return batches_; }
+  const glm::mat4& model() const { return model_; }
+  bool lit() const { return lit_; }
+  // The sphere every frame of the scene stays inside (model transform applied): the camera
+  // frames it, so it must not depend on the frame.
+  glm::vec3 centre() const { return {0.0f, 0.0f, 0.0f}; }
+  float radius() const { return 1.0f; }
+
+  std::size_t triangle_count() const;
+
+ protected:
+  std::vector<Batch> batches_;
+  glm::mat4 model_{1.0f};
+  bool lit_ = true;
+};
+
+// "mesh", "strips", "isosurface" or "patches". Throws std::invalid_argument on an unknown name
+// and std::runtime_error (naming file and line) on an unreadable mesh file.
+std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
+const std::vector<std::string>& scene_names();
+
+// The bunny shipped in data/, found relative to the source tree at build time.
+std::filesystem::path default_mesh_file();
+
+}  // namespace l2

@@ -1,0 +1,89 @@
+#include "pipeserver/pipeserver.hpp"
+
+#include <GL/gl.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include "pipeserver/scan_out.hpp"
+#include "pipeserver/tile_renderer.hpp"
+
+namespace l2 {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+const ServerPlan& plan_of(const TileLayout& layout, int server) {
+  if (server < 0 || server >= static_cast<int>(layout.servers.size())) {
+    throw std::out_of_range(fmt::format("pipeserver {} does not exist: the wall has {} (0..{})",
+                                        server, layout.servers.size(),
+                                        static_cast<int>(layout.servers.size()) - 1));
+  }
+  return layout.servers[static_cast<std::size_t>(server)];
+}
+
+}  // namespace
+
+Pipeserver::Pipeserver(const TileLayout& layout, int server)
+    : plan_(plan_of(layout, server)),
+      canvas_(canvas_of(layout.wall)),
+      gl_(plan_.fb_width, plan_.fb_height),
+      frame_(plan_.fb_width, plan_.fb_height) {}
+
+const RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
+  gl_.make_current();
+  scene.set_frame(frame);
+
+  auto t0 = Clock::now();
+  TileRenderer renderer(scene, canvas_);
+  for (const PackedTile& p : plan_.tiles) {
+    const Rect& r = p.tile.on_canvas;
+    // Packed rows count from the top; GL windows from the bottom.
+    renderer.draw_tile(r, p.fb_x, plan_.fb_height - p.fb_y - r.h);
+  }
+  glFinish();
+  times_.render_ms = ms_since(t0);
+  times_.buckets = renderer.stats();
+
+  t0 = Clock::now();
+  scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height,
+           {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())});
+  times_.scanout_ms = ms_since(t0);
+
+  // Headers go in after scan-out: they are RGB words, and the gaps were cleared black by the
+  // render (the scissor keeps tiles out of them).
+  t0 = Clock::now();
+  draw_headers(plan_, frame_parity(frame), frame_);
+  times_.header_ms = ms_since(t0);
+  return frame_;
+}
+
+RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {
+  GlContext gl(rect.w, rect.h);
+  scene.set_frame(frame);
+  TileRenderer renderer(scene, canvas);
+  renderer.draw_tile(rect, 0, 0);
+  glFinish();
+  RgbImage image(rect.w, rect.h);
+  scan_out(gl.rgba(), rect.w, rect.h,
+           {image.data(), image.stride() * static_cast<std::size_t>(image.height())});
+  return image;
+}
+
+RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame) {
+  const auto& displays = layout.wall.displays;
+  if (display < 0 || display >= static_cast<int>(displays.size())) {
+    throw std::out_of_range(
+        fmt::format("display {} does not exist: the wall has {}", display, displays.size()));
+  }
+  return render_canvas_rect(canvas_of(layout.wall),
+                            displays[static_cast<std::size_t>(display)].on_canvas(), scene, frame);
+}
+
+}  // namespace l2

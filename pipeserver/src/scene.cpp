@@ -1,0 +1,64 @@
+#include "pipeserver/scene.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "scene_common.hpp"
+
+namespace l2 {
+
+void Box::extend(glm::vec3 p) {
+  lo = glm::min(lo, p);
+  hi = glm::max(hi, p);
+}
+
+Box Box::empty() {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  return {glm::vec3(inf), glm::vec3(-inf)};
+}
+
+std::size_t Batch::triangle_count() const {
+  if (primitive == Primitive::Triangles) {
+    return (indices.empty() ? positions.size() : indices.size()) / 3;
+  }
+  std::size_t n = 0;
+  for (const int c : strip_count) n += static_cast<std::size_t>(std::max(c - 2, 0));
+  return n;
+}
+
+void Batch::compute_bounds() {
+  bounds = Box::empty();
+  for (const auto& p : positions) bounds.extend(p);
+}
+
+std::size_t Scene::triangle_count() const {
+  std::size_t n = 0;
+  for (const auto& b : batches_) n += b.triangle_count();
+  return n;
+}
+
+const std::vector<std::string>& scene_names() {
+  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches"};
+  return names;
+}
+
+std::filesystem::path default_mesh_file() {
+  return std::filesystem::path(L2_DATA_DIR) / "bunny.ply";
+}
+
+std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options) {
+  if (name == "mesh") {
+    const auto path = options.mesh_file.empty() ? default_mesh_file() : options.mesh_file;
+    return detail::make_mesh_scene(load_mesh(path));
+  }
+  if (name == "strips") return detail::make_strips_scene(options);
+  if (name == "isosurface") return detail::make_isosurface_scene(options);
+  if (name == "patches") return detail::make_patches_scene(options);
+  throw std::invalid_argument(
+      fmt::format("unknown scene '{}' (expected mesh, strips, isosurface or patches)", name));
+}
+
+}  // namespace l2

@@ -1,0 +1,35 @@
+// Pieces the scene implementations share: a seeded random source and the scene classes.
+#pragma once
+
+#include <cstdint>
+
+#include "pipeserver/mesh_file.hpp"
+#include "pipeserver/scene.hpp"
+
+namespace l2::detail {
+
+// splitmix64: a tiny, well-mixed generator; the same seed gives the same scene everywhere.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [lo, hi).
+  float uniform(float lo, float hi) {
+    return lo + (hi - lo) * static_cast<float>(next() >> 40) / static_cast<float>(1 << 24);
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh);
+std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options);
+std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
+std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
+
+}  // namespace l2::detail

@@ -1,0 +1,85 @@
+// `strips`: many small unlit coloured triangle strips scattered through a ball, in the manner of
+// WireGL's Hundy. Geometry is built once; frames turn the cloud.
+#include <algorithm>
+#include <cmath>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+#include "scene_common.hpp"
+
+namespace l2::detail {
+
+namespace {
+
+constexpr int kStripsPerBatch = 256;
+
+class StripsScene : public Scene {
+ public:
+  explicit StripsScene(const SceneOptions& o) {
+    if (o.triangles < 1 || o.triangles > 50'000'000) {
+      throw std::invalid_argument("strips: triangles must be 1..50000000");
+    }
+    if (o.strip_length < 1 || o.strip_length > 4096) {
+      throw std::invalid_argument("strips: strip_length must be 1..4096");
+    }
+    lit_ = false;
+    Random rng(0x5eed5751);
+    const long strips = (o.triangles + o.strip_length - 1) / o.strip_length;
+    // Strip size shrinks as the count grows, so the cloud keeps roughly the same coverage.
+    const float size = std::clamp(0.9f / std::cbrt(static_cast<float>(strips)), 0.004f, 0.25f);
+    long left = o.triangles;
+    for (long s = 0; s < strips; s += kStripsPerBatch) {
+      Batch b;
+      b.primitive = Primitive::TriangleStrips;
+      // Each batch is a loose cluster around its own centre, so bucketing has something to save.
+      const glm::vec3 centre = random_in_ball(rng) * 0.8f;
+      for (long k = s; k < std::min(strips, s + kStripsPerBatch); ++k) {
+        const int tris = static_cast<int>(std::min<long>(o.strip_length, left));
+        left -= tris;
+        add_strip(b, rng, centre + random_in_ball(rng) * 0.2f, size, tris);
+      }
+      b.compute_bounds();
+      batches_.push_back(std::move(b));
+    }
+  }
+
+  const char* name() const override { return "strips"; }
+
+  void set_frame(int frame) override {
+    const float t = static_cast<float>(frame % 360);
+    model_ = glm::rotate(glm::mat4(1.0f), glm::radians(2.0f * t), glm::vec3(0.3f, 1.0f, 0.1f));
+  }
+
+ private:
+  static glm::vec3 random_in_ball(Random& rng) {
+    for (;;) {
+      const glm::vec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      if (glm::dot(p, p) <= 1.0f) return p;
+    }
+  }
+
+  // A zig-zag ribbon of `tris` triangles with one random colour.
+  static void add_strip(Batch& b, Random& rng, glm::vec3 start, float size, int tris) {
+    const glm::vec3 along = glm::normalize(random_in_ball(rng) + glm::vec3(1e-3f)) * (size * 0.3f);
+    const glm::vec3 across = glm::normalize(random_in_ball(rng) + glm::vec3(0, 1e-3f, 0)) * size;
+    const glm::vec3 colour(rng.uniform(0.2f, 1), rng.uniform(0.2f, 1), rng.uniform(0.2f, 1));
+    b.strip_first.push_back(static_cast<int>(b.positions.size()));
+    b.strip_count.push_back(tris + 2);
+    for (int v = 0; v < tris + 2; ++v) {
+      const float step = static_cast<float>(v / 2);
+      b.positions.push_back(start + along * step + (v % 2 ? across : glm::vec3(0.0f)));
+      b.colours.push_back(colour);
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options) {
+  auto s = std::make_unique<StripsScene>(options);
+  s->set_frame(0);
+  return s;
+}
+
+}  // namespace l2::detail

@@ -1,0 +1,102 @@
+#include "pipeserver/tile_renderer.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1  // glMultiDrawArrays (GL 1.4), exported by libOSMesa
+#include <GL/gl.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace l2 {
+
+namespace {
+
+void setup_state(bool lit) {
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DITHER);  // dithering depends on window position, so it would differ per tile
+  glShadeModel(GL_SMOOTH);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  if (!lit) {
+    glDisable(GL_LIGHTING);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    return;
+  }
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_NORMALIZE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  // A directional key light from upper left, fixed in eye space (so set with identity modelview).
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  const GLfloat direction[] = {-0.4f, 0.6f, 1.0f, 0.0f};
+  const GLfloat ambient[] = {0.25f, 0.25f, 0.25f, 1.0f};
+  const GLfloat diffuse[] = {0.85f, 0.85f, 0.85f, 1.0f};
+  const GLfloat none[] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glLightfv(GL_LIGHT0, GL_POSITION, direction);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, ambient);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, none);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+}
+
+}  // namespace
+
+TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
+    : scene_(scene),
+      canvas_(canvas),
+      camera_(frame_sphere(canvas, scene.centre(), scene.radius())),
+      drawn_(scene.batches().size(), false) {
+  setup_state(scene.lit());
+  const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();
+  footprints_.reserve(scene.batches().size());
+  for (const auto& b : scene.batches()) {
+    footprints_.push_back(canvas_footprint(canvas, clip_from_model, b.bounds));
+  }
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixf(glm::value_ptr(camera_.view * scene.model()));
+}
+
+void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
+  glViewport(gl_x, gl_y, on_canvas.w, on_canvas.h);
+  glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
+  glEnable(GL_SCISSOR_TEST);
+  glMatrixMode(GL_PROJECTION);
+  const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
+  glLoadMatrixd(glm::value_ptr(projection));
+  glMatrixMode(GL_MODELVIEW);
+  const auto& batches = scene_.batches();
+  for (std::size_t i = 0; i < batches.size(); ++i) {
+    if (!overlaps(footprints_[i], on_canvas)) continue;
+    draw_batch(batches[i]);
+    ++stats_.tile_draws;
+    if (!drawn_[i]) {
+      drawn_[i] = true;
+      ++stats_.batches;
+    }
+  }
+}
+
+void TileRenderer::draw_batch(const Batch& b) const {
+  glVertexPointer(3, GL_FLOAT, 0, b.positions.data());
+  glColorPointer(3, GL_FLOAT, 0, b.colours.data());
+  if (scene_.lit()) glNormalPointer(GL_FLOAT, 0, b.normals.data());
+  if (b.primitive == Primitive::TriangleStrips) {
+    glMultiDrawArrays(GL_TRIANGLE_STRIP, b.strip_first.data(), b.strip_count.data(),
+                      static_cast<GLsizei>(b.strip_first.size()));
+  } else if (b.indices.empty()) {
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.positions.size()));
+  } else {
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT,
+                   b.indices.data());
+  }
+}
+
+}  // namespace l2
