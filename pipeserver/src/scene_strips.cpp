@@ -12,7 +12,7 @@ namespace l2::detail {
 
 namespace {
 
-constexpr int kStripsPerBatch = 256;
+constexpr int kStripsPerBatch = 64;
 
 class StripsScene : public Scene {
  public:

@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "pipeserver/mesh_file.hpp"
+#include "pipeserver/scene.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_file(const std::string& name, const std::string& bytes) {
+  const fs::path dir = fs::temp_directory_path() / "l2_pipeserver_mesh_test";
+  fs::create_directories(dir);
+  std::ofstream(dir / name, std::ios::binary) << bytes;
+  return dir / name;
+}
+
+std::string error_of(const fs::path& p) {
+  try {
+    load_mesh(p);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MeshFile, AsciiPlyQuadIsFanned) {
+  const auto p = write_file("quad.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                            "property float y\nproperty float z\nproperty uchar red\n"
+                            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0 9\n1 0 0 9\n1 1 0 9\n0 1 0.5 9\n4 0 1 2 3\n");
+  const auto m = load_mesh(p);
+  ASSERT_EQ(m.positions.size(), 4u);
+  EXPECT_EQ(m.positions[3], glm::vec3(0, 1, 0.5f));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+}
+
+TEST(MeshFile, BinaryLittleEndianPly) {
+  std::string body;
+  const auto put = [&](const void* p, std::size_t n) {
+    body.append(static_cast<const char*>(p), n);
+  };
+  const float v[3][3] = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}};
+  for (const auto& vert : v) put(vert, sizeof vert);
+  const unsigned char n = 3;
+  const std::int32_t idx[3] = {2, 1, 0};
+  put(&n, 1);
+  put(idx, sizeof idx);
+  const auto p = write_file("tri.ply",
+                            "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                            "property float x\nproperty float y\nproperty float z\n"
+                            "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                                body);
+  const auto m = load_mesh(p);
+  EXPECT_EQ(m.positions[2], glm::vec3(0, 3, 0));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{2, 1, 0}));
+}
+
+TEST(MeshFile, ObjWithSlashesAndNegativeIndices) {
+  const auto p =
+      write_file("tri.obj", "# tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 -1//1\n");
+  const auto m = load_mesh(p);
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(MeshFile, ErrorsNameFileLineAndProblem) {
+  const auto obj = write_file("bad.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  EXPECT_EQ(error_of(obj), obj.string() + ":3: face refers to vertex 7 of 2");
+  const auto ply = write_file("bad.ply",
+                              "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                              "property float y\nproperty float z\nend_header\n1 2\n");
+  EXPECT_EQ(error_of(ply), ply.string() + ": PLY body ends early or holds a non-number");
+  const auto range = write_file("range.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                "property float y\nproperty float z\nelement face 1\n"
+                                "property list uchar int vertex_indices\nend_header\n"
+                                "0 0 0\n3 0 0 5\n");
+  EXPECT_EQ(error_of(range), range.string() + ": face refers to vertex 5 of 1");
+  EXPECT_EQ(error_of(write_file("x.stl", "solid")),
+            (fs::temp_directory_path() / "l2_pipeserver_mesh_test" / "x.stl").string() +
+                ": unknown mesh format (expected .ply or .obj)");
+  EXPECT_NE(error_of("/nonexistent/bunny.ply").find("cannot open"), std::string::npos);
+}
+
+TEST(MeshFile, BundledBunnyLoads) {
+  const auto m = load_mesh(default_mesh_file());
+  EXPECT_EQ(m.positions.size(), 1839u);
+  EXPECT_EQ(m.indices.size(), 3u * 3674u);
+}
+
+}  // namespace
+}  // namespace l2

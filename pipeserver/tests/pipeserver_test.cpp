@@ -1,0 +1,104 @@
+// Whole pipeservers on a small wall: header placement, frame parity, and reassembly of every
+// display from the COPY strips equal to the reference render.
+#include <gtest/gtest.h>
+
+#include "pipeserver/pipeserver.hpp"
+#include "strip_headers/strip_header.hpp"
+#include "test_support.hpp"
+
+namespace l2 {
+namespace {
+
+StripHeader header_at(const RgbImage& fb, int x, int y) {
+  const auto* p = fb.row(y).data() + static_cast<std::size_t>(x) * 3;
+  const auto h = decode(header_value(p, p + 3));
+  EXPECT_TRUE(h.has_value()) << "no valid header at " << x << "," << y;
+  return h.value_or(StripHeader{});
+}
+
+TEST(Pipeserver, HeadersSitInTheGapsOfEveryPackedTile) {
+  const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
+  Pipeserver ps(layout, 1);
+  auto scene = make_scene("patches", test::small_options());
+  const RgbImage& fb = ps.render_frame(3, *scene);
+  ASSERT_EQ(fb.width(), 160);
+  ASSERT_EQ(fb.height(), 120);
+  ASSERT_FALSE(ps.plan().tiles.empty());
+  for (const PackedTile& p : ps.plan().tiles) {
+    const StripHeader h = header_at(fb, p.fb_x - 2, p.fb_y);
+    EXPECT_EQ(h.op, StripOp::Copy);
+    EXPECT_TRUE(h.frame);
+    EXPECT_EQ(h.display, p.tile.display);
+    EXPECT_EQ(h.x, p.tile.on_display.x);
+    EXPECT_EQ(h.y, p.tile.on_display.y);
+    EXPECT_EQ(h.width, p.tile.on_display.w);
+    const StripHeader last = header_at(fb, p.fb_x - 2, p.fb_y + p.tile.on_display.h - 1);
+    EXPECT_EQ(last.y, p.tile.on_display.y + p.tile.on_display.h - 1);
+  }
+  // Below the last packed row the frame is black.
+  for (int y = ps.plan().used_height(); y < fb.height(); ++y)
+    for (int x = 0; x < fb.width(); ++x) ASSERT_EQ(fb.at(x, y), Rgb{});
+}
+
+TEST(Pipeserver, FrameParityAlternatesWithTheFrameNumber) {
+  const TileLayout layout = test::small_layout(1, 68, 48, 160, 100);
+  Pipeserver ps(layout, 0);
+  auto scene = make_scene("mesh");
+  for (int frame : {0, 1, 2, 7, 10}) {
+    const auto r = test::reassemble(layout.wall, {ps.render_frame(frame, *scene)});
+    EXPECT_EQ(r.parities_seen, std::vector<int>{frame % 2}) << "frame " << frame;
+  }
+}
+
+TEST(Pipeserver, ReportsTimesAndOverlap) {
+  const TileLayout layout = test::small_layout(1, 34, 24, 200, 200);
+  Pipeserver ps(layout, 0);
+  auto scene = make_scene("strips", test::small_options());
+  ps.render_frame(0, *scene);
+  const FrameTimes& t = ps.last_times();
+  EXPECT_GT(t.render_ms, 0.0);
+  EXPECT_GE(t.scanout_ms, 0.0);
+  EXPECT_GE(t.header_ms, 0.0);
+  EXPECT_GT(t.buckets.batches, 0);
+  EXPECT_GE(t.buckets.tile_draws, t.buckets.batches);
+  // Fewer draws than drawing every batch into every tile: bucketing saved something.
+  EXPECT_LT(t.buckets.tile_draws,
+            static_cast<long>(scene->batches().size() * ps.plan().tiles.size()));
+}
+
+TEST(Pipeserver, UnknownServerIsAClearError) {
+  const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
+  try {
+    Pipeserver ps(layout, 2);
+    FAIL();
+  } catch (const std::out_of_range& e) {
+    EXPECT_STREQ(e.what(), "pipeserver 2 does not exist: the wall has 2 (0..1)");
+  }
+}
+
+class Reassembles : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Reassembles, EveryDisplayEqualsTheReferenceRender) {
+  const TileLayout layout = test::small_layout(3, 40, 20, 120, 120);
+  auto scene = make_scene(GetParam(), test::small_options());
+  const int frame = 4;
+  std::vector<RgbImage> frames;
+  for (int s = 0; s < 3; ++s) {
+    Pipeserver ps(layout, s);
+    frames.push_back(ps.render_frame(frame, *scene));
+  }
+  const auto r = test::reassemble(layout.wall, frames);
+  EXPECT_EQ(r.errors.total(), 0u);
+  EXPECT_EQ(r.copied_pixels, 2 * 64 * 48);  // every display pixel arrives exactly once
+  for (int d = 0; d < 2; ++d) {
+    const RgbImage ref = render_reference(layout, d, *scene, frame);
+    const auto diff = test::compare(r.displays[static_cast<std::size_t>(d)], ref);
+    EXPECT_EQ(diff.pixels_differing, 0) << "display " << d << " max diff " << diff.max_channel_diff;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScenes, Reassembles,
+                         ::testing::Values("mesh", "strips", "isosurface", "patches"));
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,45 @@
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "pipeserver/scan_out.hpp"
+
+namespace l2 {
+namespace {
+
+TEST(ScanOut, FlipsRowsAndDropsAlpha) {
+  // 5 x 2 RGBA, GL order: row 0 is the bottom. Width 5 exercises the 4-pixel loop and the tail.
+  std::vector<std::uint8_t> rgba;
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 5; ++x)
+      rgba.insert(rgba.end(),
+                  {static_cast<std::uint8_t>(10 * x + y), static_cast<std::uint8_t>(100 + y),
+                   static_cast<std::uint8_t>(200 + x), 77});
+  std::vector<std::uint8_t> rgb(5 * 2 * 3, 0xEE);
+  scan_out(rgba.data(), 5, 2, rgb);
+  const std::vector<std::uint8_t> expected{
+      1, 101, 200, 11, 101, 201, 21, 101, 202, 31, 101, 203, 41, 101, 204,  // GL row 1 = top
+      0, 100, 200, 10, 100, 201, 20, 100, 202, 30, 100, 203, 40, 100, 204};
+  EXPECT_EQ(rgb, expected);
+}
+
+TEST(ScanOut, WritesNothingPastTheFrame) {
+  std::vector<std::uint8_t> rgba(3 * 3 * 4, 9);
+  std::vector<std::uint8_t> rgb(3 * 3 * 3 + 4, 0xEE);
+  scan_out(rgba.data(), 3, 3, std::span(rgb).first(27));
+  for (std::size_t i = 27; i < rgb.size(); ++i) EXPECT_EQ(rgb[i], 0xEE);
+}
+
+TEST(ScanOut, RefusesASmallDestination) {
+  std::vector<std::uint8_t> rgba(4 * 2 * 4), rgb(4 * 2 * 3 - 1);
+  try {
+    scan_out(rgba.data(), 4, 2, rgb);
+    FAIL() << "expected a throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "scan_out: destination holds 23 bytes, 4x2 RGB needs 24");
+  }
+}
+
+}  // namespace
+}  // namespace l2

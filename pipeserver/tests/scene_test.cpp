@@ -1,0 +1,80 @@
+#include <gtest/gtest.h>
+
+#include "pipeserver/scene.hpp"
+#include "test_support.hpp"
+
+namespace l2 {
+namespace {
+
+std::vector<glm::vec3> all_positions(const Scene& s) {
+  std::vector<glm::vec3> out;
+  for (const auto& b : s.batches()) out.insert(out.end(), b.positions.begin(), b.positions.end());
+  return out;
+}
+
+class EveryScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryScene, SameFrameSameGeometryAcrossInstances) {
+  auto a = make_scene(GetParam(), test::small_options());
+  auto b = make_scene(GetParam(), test::small_options());
+  a->set_frame(5);
+  b->set_frame(9);
+  b->set_frame(5);
+  EXPECT_EQ(all_positions(*a), all_positions(*b));
+  EXPECT_EQ(a->model(), b->model());
+}
+
+TEST_P(EveryScene, AnimatesOverFrames) {
+  auto s = make_scene(GetParam(), test::small_options());
+  s->set_frame(1);
+  const auto p1 = all_positions(*s);
+  const auto m1 = s->model();
+  s->set_frame(2);
+  EXPECT_TRUE(p1 != all_positions(*s) || m1 != s->model());
+}
+
+TEST_P(EveryScene, BatchBoundsHoldTheirGeometry) {
+  auto s = make_scene(GetParam(), test::small_options());
+  ASSERT_GT(s->batches().size(), 1u);
+  for (const auto& b : s->batches()) {
+    for (const auto& p : b.positions) {
+      EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, b.bounds.lo)) &&
+                  glm::all(glm::lessThanEqual(p, b.bounds.hi)));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, EveryScene,
+                         ::testing::Values("mesh", "strips", "isosurface", "patches"));
+
+TEST(Scenes, StripsHonourTheTriangleCount) {
+  SceneOptions o;
+  o.triangles = 12345;
+  o.strip_length = 10;
+  auto s = make_scene("strips", o);
+  EXPECT_EQ(s->triangle_count(), 12345u);
+  EXPECT_FALSE(s->lit());
+}
+
+TEST(Scenes, PatchTessellationSetsTriangleCount) {
+  SceneOptions o;
+  o.patches = 2;
+  o.tessellation = 5;
+  EXPECT_EQ(make_scene("patches", o)->triangle_count(), 2u * 2u * 5u * 5u * 2u);
+}
+
+TEST(Scenes, UnknownNameIsAClearError) {
+  try {
+    make_scene("teapot");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown scene 'teapot' (expected mesh, strips, isosurface or patches)");
+  }
+}
+
+TEST(Scenes, BunnyIsTheDefaultMesh) {
+  EXPECT_EQ(make_scene("mesh")->triangle_count(), 3674u);
+}
+
+}  // namespace
+}  // namespace l2

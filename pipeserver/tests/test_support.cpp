@@ -1,0 +1,102 @@
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace l2::test {
+
+TileLayout small_layout(int servers, int tile_w, int tile_h, int fb_w, int fb_h) {
+  TileLayout layout;
+  Wall& wall = layout.wall;
+  wall.name = "small";
+  wall.canvas_width = 136;
+  wall.canvas_height = 48;
+  wall.displays = {Display{0, 64, 48, 0, 0, 0, ""}, Display{1, 64, 48, 72, 0, 0, ""}};
+  wall.server_count = servers;
+  wall.framebuffer_width = fb_w;
+  wall.framebuffer_height = fb_h;
+  for (int y = 0; y < wall.canvas_height; y += tile_h) {
+    for (int x = 0; x < wall.canvas_width; x += tile_w) {
+      const Rect logical =
+          intersect({x, y, tile_w, tile_h}, {0, 0, wall.canvas_width, wall.canvas_height});
+      const int index = static_cast<int>(layout.logical_tiles.size());
+      layout.logical_tiles.push_back(logical);
+      for (const Display& d : wall.displays) {
+        const Rect part = intersect(logical, d.on_canvas());
+        if (part.empty()) continue;
+        const Rect on_display{part.x - d.canvas_x, part.y - d.canvas_y, part.w, part.h};
+        layout.tiles.push_back(DisplayTile{d.id, on_display, part, index});
+        layout.tile_server.push_back(static_cast<int>(layout.tile_server.size()) % servers);
+      }
+    }
+  }
+  for (int s = 0; s < servers; ++s) {
+    std::vector<DisplayTile> mine;
+    for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+      if (layout.tile_server[i] == s) mine.push_back(layout.tiles[i]);
+    }
+    layout.servers.push_back(pack_tiles(s, fb_w, fb_h, mine));
+  }
+  return layout;
+}
+
+Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames) {
+  Reassembly out;
+  for (const Display& d : wall.displays) out.displays.emplace_back(d.width, d.height);
+  bool seen[2] = {false, false};
+  for (const RgbImage& frame : frames) {
+    for (int y = 0; y < frame.height(); ++y) {
+      const std::uint8_t* row = frame.row(y).data();
+      parse_scanline(row, frame.width(), 3, out.errors, [&](const ParsedStrip& s) {
+        seen[s.header.frame ? 1 : 0] = true;
+        if (s.header.op != StripOp::Copy) return;
+        ++out.copies;
+        out.copied_pixels += s.length;
+        if (s.header.display >= out.displays.size()) {
+          ++out.errors.missing_display;
+          return;
+        }
+        RgbImage& dst = out.displays[s.header.display];
+        if (s.header.y >= dst.height() || s.header.x + s.length > dst.width()) {
+          ++out.errors.clips;
+          return;
+        }
+        std::memcpy(dst.row(s.header.y).data() + s.header.x * 3,
+                    row + static_cast<std::size_t>(s.source_x) * 3,
+                    static_cast<std::size_t>(s.length) * 3);
+      });
+    }
+  }
+  for (int p = 0; p < 2; ++p) {
+    if (seen[p]) out.parities_seen.push_back(p);
+  }
+  return out;
+}
+
+ImageDiff compare(const RgbImage& a, const RgbImage& b) {
+  if (a.width() != b.width() || a.height() != b.height()) {
+    throw std::invalid_argument("compare: images differ in size");
+  }
+  ImageDiff d;
+  const auto pa = a.bytes(), pb = b.bytes();
+  for (std::size_t i = 0; i < pa.size(); i += 3) {
+    int worst = 0;
+    for (std::size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[i + c] - pb[i + c]));
+    if (worst > 0) ++d.pixels_differing;
+    d.max_channel_diff = std::max(d.max_channel_diff, worst);
+  }
+  return d;
+}
+
+SceneOptions small_options() {
+  SceneOptions o;
+  o.triangles = 3000;
+  o.grid = 12;
+  o.tessellation = 4;
+  o.patches = 3;
+  return o;
+}
+
+}  // namespace l2::test

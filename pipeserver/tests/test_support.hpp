@@ -1,0 +1,39 @@
+// Fixtures for the pipeserver tests: a small wall built in code, routing of scanned-out frames
+// back into displays with the spec §3 parser, and image comparison.
+#pragma once
+
+#include <vector>
+
+#include "image/rgb_image.hpp"
+#include "pipeserver/scene.hpp"
+#include "strip_headers/scanline_parser.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2::test {
+
+// Two 64x48 displays side by side with an 8-pixel mullion (canvas 136x48), cut into a grid of
+// tile_w x tile_h logical tiles, split at display edges, dealt round-robin to `servers`
+// pipeservers with fb_w x fb_h framebuffers.
+TileLayout small_layout(int servers, int tile_w, int tile_h, int fb_w, int fb_h);
+
+struct Reassembly {
+  std::vector<RgbImage> displays;
+  StripErrorCounts errors;
+  long copies = 0;
+  long copied_pixels = 0;
+  std::vector<int> parities_seen;  // frame bit of every COPY/SKIP header, once per value seen
+};
+
+// Routes every COPY strip of every frame to its display, as the emulator would.
+Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames);
+
+struct ImageDiff {
+  long pixels_differing = 0;
+  int max_channel_diff = 0;
+};
+ImageDiff compare(const RgbImage& a, const RgbImage& b);
+
+// Small, quick versions of every scene.
+SceneOptions small_options();
+
+}  // namespace l2::test
