@@ -44,6 +44,8 @@ struct Wall {
   AssignmentPolicy assignment = AssignmentPolicy::RoundRobin;
   int board_max_width = 1280, board_max_height = 1024;  // per-input limit of a board (spec §5)
   int refresh_hz = 60;
+  // Lines in the wall file (0: unknown), so errors found while planning can still point there.
+  int tiling_line = 0, framebuffer_line = 0;
 };
 
 }  // namespace l2

@@ -1,0 +1,21 @@
+// Pictures of a plan, for people: what each framebuffer holds and who renders which part of
+// the wall. Pure drawing; tilelayout --png writes them.
+#pragma once
+
+#include "image/rgb_image.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+// A distinct, bright colour for index i (displays, pipeservers).
+Rgb palette_colour(int i);
+
+// One pipeserver framebuffer: header gaps white, tiles in their destination display's colour
+// and labelled with the display number, unused space dark grey.
+RgbImage framebuffer_picture(const ServerPlan& plan);
+
+// The canvas: mullions and hidden areas dark grey, display edges outlined, each display tile
+// in its pipeserver's colour with a dark outline and labelled with the pipeserver number.
+RgbImage wall_picture(const TileLayout& layout);
+
+}  // namespace l2

@@ -1,0 +1,35 @@
+// From a Wall to a TileLayout: cut the canvas into logical tiles, split them at display edges
+// (dropping what mullions hide), hand them to pipeservers by the wall's policy and pack each
+// pipeserver's framebuffer (spec §4).
+#pragma once
+
+#include <vector>
+
+#include "tilelayout/tile_layout.hpp"
+#include "tilelayout/wall.hpp"
+
+namespace l2 {
+
+// The whole plan. Throws LayoutError (file, line, what does not fit) when a pipeserver's tiles
+// do not fit its framebuffer or the tiling cannot be cut. Uncovered display areas are warnings.
+TileLayout plan_layout(const Wall& wall);
+
+// The steps of plan_layout, exposed so each can be checked on its own.
+
+// Logical tiles on the canvas, in tiling order (row-major for grid and strips; k-d tiles in
+// depth-first order, first half left/top).
+std::vector<Rect> make_logical_tiles(const Wall& wall);
+
+// Each logical tile intersected with each display (in display order); empty parts dropped.
+std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<Rect>& logical);
+
+// The pipeserver of each logical tile. `weights` is the work per tile (its visible pixels),
+// used by AreaBalanced. Orders, then deals round-robin, except Blocks (contiguous runs of the
+// raster order) and AreaBalanced (largest first to the least-loaded server):
+//   RoundRobin: tiling order;  ZigZag: tile rows (same top edge) alternately left-to-right and
+//   right-to-left;  Spiral: rings around the canvas centre, clockwise from the top-left.
+std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
+                                const std::vector<long long>& weights, int server_count,
+                                Rect canvas);
+
+}  // namespace l2

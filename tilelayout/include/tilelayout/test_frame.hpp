@@ -1,0 +1,16 @@
+// The frame a pipeserver would scan out if every tile showed the routing test pattern: how a
+// routing is validated without any rendering (tilelayout --scanout, routing tests).
+#pragma once
+
+#include "image/rgb_image.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+// Fills every packed tile of `fb` with test_pattern(display, x, y) of its destination pixels.
+void fill_test_pattern(const ServerPlan& plan, RgbImage& fb);
+
+// A full scanned-out frame (spec §1): black, test-pattern tiles, every header of §4 rule 3.
+RgbImage test_frame(const ServerPlan& plan, bool frame_parity);
+
+}  // namespace l2

@@ -1,0 +1,135 @@
+#include "toml_fields.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+void TomlSource::fail(int line, std::string_view field, std::string_view message) const {
+  if (line > 0) throw LayoutError(fmt::format("{}:{}: {}: {}", file, line, field, message));
+  throw LayoutError(fmt::format("{}: {}: {}", file, field, message));
+}
+
+void TomlSource::fail(const toml::node& at, std::string_view field,
+                      std::string_view message) const {
+  fail(line_of(at), field, message);
+}
+
+int line_of(const toml::node& node) {
+  return static_cast<int>(node.source().begin.line);
+}
+
+const char* type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    default:
+      return "a date or time";
+  }
+}
+
+int array_integer(const toml::node& node, const std::string& field, const TomlSource& source,
+                  long long min, long long max) {
+  const auto* v = node.as_integer();
+  if (!v) source.fail(node, field, fmt::format("must be an integer, got {}", type_name(node)));
+  const long long value = v->get();
+  if (value < min || value > max) {
+    source.fail(node, field, fmt::format("must be {}..{}, got {}", min, max, value));
+  }
+  return static_cast<int>(value);
+}
+
+TomlFields::TomlFields(const toml::table& table, std::string prefix, const TomlSource& source,
+                       std::initializer_list<std::string_view> allowed)
+    : table_(table), prefix_(std::move(prefix)), source_(source) {
+  const toml::key* unknown = nullptr;
+  for (const auto& [key, node] : table_) {
+    if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
+    if (!unknown || key.source().begin.line < unknown->source().begin.line) unknown = &key;
+  }
+  if (unknown) {
+    source_.fail(static_cast<int>(unknown->source().begin.line), field(unknown->str()),
+                 "unknown key");
+  }
+}
+
+int TomlFields::line() const {
+  return l2::line_of(table_);
+}
+
+int TomlFields::line_of(std::string_view key) const {
+  const toml::node* n = table_.get(key);
+  return n ? l2::line_of(*n) : line();
+}
+
+std::string TomlFields::field(std::string_view key) const {
+  return prefix_.empty() ? std::string(key) : fmt::format("{}.{}", prefix_, key);
+}
+
+void TomlFields::fail(std::string_view key, std::string_view message) const {
+  source_.fail(line_of(key), field(key), message);
+}
+
+std::optional<int> TomlFields::integer(std::string_view key, long long min, long long max) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return std::nullopt;
+  return array_integer(*n, field(key), source_, min, max);
+}
+
+int TomlFields::integer(std::string_view key, long long min, long long max, int fallback) const {
+  return integer(key, min, max).value_or(fallback);
+}
+
+int TomlFields::required_integer(std::string_view key, long long min, long long max) const {
+  const auto v = integer(key, min, max);
+  if (!v) source_.fail(line(), field(key), "missing (required)");
+  return *v;
+}
+
+std::optional<std::string> TomlFields::string(std::string_view key) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return std::nullopt;
+  const auto* s = n->as_string();
+  if (!s) fail(key, fmt::format("must be a string, got {}", type_name(*n)));
+  return s->get();
+}
+
+int TomlFields::choice(std::string_view key, const std::vector<std::string_view>& choices,
+                       int fallback) const {
+  const auto s = string(key);
+  if (!s) return fallback;
+  const auto it = std::find(choices.begin(), choices.end(), *s);
+  if (it == choices.end()) {
+    fail(key, fmt::format("must be one of {}, got \"{}\"", fmt::join(choices, ", "), *s));
+  }
+  return static_cast<int>(it - choices.begin());
+}
+
+const toml::array* TomlFields::array(std::string_view key) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return nullptr;
+  if (!n->is_array()) fail(key, fmt::format("must be an array, got {}", type_name(*n)));
+  return n->as_array();
+}
+
+const toml::table* TomlFields::table(std::string_view key) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) fail(key, fmt::format("must be a table, got {}", type_name(*n)));
+  return n->as_table();
+}
+
+}  // namespace l2

@@ -1,0 +1,162 @@
+// [display_grid], [[display]] and [canvas]: where every output display sits on the canvas.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "strip_headers/strip_header.hpp"
+#include "wall_sections.hpp"
+
+namespace l2 {
+namespace {
+
+constexpr int kMaxCanvas = 16384;         // canvas positions are not in headers; just sane
+constexpr int kMaxSize = kMaxCoordinate;  // display sizes are: x, y, width have 12 bits
+
+// Optional per-display values of a grid, one per display in id order.
+void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
+  const int n = static_cast<int>(displays.size());
+  if (const toml::array* groups = f.array("swap_groups")) {
+    if (static_cast<int>(groups->size()) != n) {
+      f.fail("swap_groups",
+             fmt::format("needs {} entries (one per display), got {}", n, groups->size()));
+    }
+    for (int i = 0; i < n; ++i) {
+      displays[i].swap_group =
+          array_integer(*groups->get(i), fmt::format("{}[{}]", f.field("swap_groups"), i),
+                        f.source(), 0, kMaxDisplays - 1);
+    }
+  }
+  if (const toml::array* monitors = f.array("monitors")) {
+    if (static_cast<int>(monitors->size()) != n) {
+      f.fail("monitors",
+             fmt::format("needs {} entries (one per display), got {}", n, monitors->size()));
+    }
+    for (int i = 0; i < n; ++i) {
+      const toml::node& m = *monitors->get(i);
+      if (!m.is_string()) {
+        f.source().fail(m, fmt::format("{}[{}]", f.field("monitors"), i),
+                        fmt::format("must be a string, got {}", type_name(m)));
+      }
+      displays[i].monitor = m.as_string()->get();
+    }
+  }
+}
+
+void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
+  const TomlFields f(table, "display_grid", top.source(),
+                     {"columns", "rows", "width", "height", "mullion_x", "mullion_y", "origin_x",
+                      "origin_y", "swap_groups", "monitors"});
+  const int columns = f.required_integer("columns", 1, kMaxDisplays);
+  const int rows = f.required_integer("rows", 1, kMaxDisplays);
+  if (columns * rows > kMaxDisplays) {
+    f.fail("rows", fmt::format("{}x{} displays need ids up to {}, beyond the last id 63", columns,
+                               rows, columns * rows - 1));
+  }
+  const int w = f.required_integer("width", 1, kMaxSize);
+  const int h = f.required_integer("height", 1, kMaxSize);
+  // A negative mullion is projector overlap; it must leave each display some pixels of its own.
+  const int mx = f.integer("mullion_x", -(w - 1), kMaxSize, 0);
+  const int my = f.integer("mullion_y", -(h - 1), kMaxSize, 0);
+  const int ox = f.integer("origin_x", 0, kMaxCanvas - 1, 0);
+  const int oy = f.integer("origin_y", 0, kMaxCanvas - 1, 0);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < columns; ++c) {
+      Display d;
+      d.id = r * columns + c;
+      d.width = w;
+      d.height = h;
+      d.canvas_x = ox + c * (w + mx);
+      d.canvas_y = oy + r * (h + my);
+      wall.displays.push_back(d);
+    }
+  }
+  read_grid_lists(f, wall.displays);
+}
+
+void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
+  std::vector<int> lines;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string name = fmt::format("display[{}]", i);
+    const toml::node& node = *list.get(i);
+    if (!node.is_table()) {
+      top.source().fail(node, name, fmt::format("must be a table, got {}", type_name(node)));
+    }
+    const TomlFields f(*node.as_table(), name, top.source(),
+                       {"id", "width", "height", "x", "y", "swap_group", "monitor"});
+    Display d;
+    d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
+    d.width = f.required_integer("width", 1, kMaxSize);
+    d.height = f.required_integer("height", 1, kMaxSize);
+    d.canvas_x = f.required_integer("x", 0, kMaxCanvas - 1);
+    d.canvas_y = f.required_integer("y", 0, kMaxCanvas - 1);
+    d.swap_group = f.integer("swap_group", 0, kMaxDisplays - 1, 0);
+    d.monitor = f.string("monitor").value_or("");
+    for (std::size_t j = 0; j < wall.displays.size(); ++j) {
+      if (wall.displays[j].id == d.id) {
+        f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));
+      }
+    }
+    wall.displays.push_back(d);
+    lines.push_back(f.line());
+  }
+  // Display ids are array indices everywhere downstream (Wall::displays[i].id == i).
+  std::sort(wall.displays.begin(), wall.displays.end(),
+            [](const Display& a, const Display& b) { return a.id < b.id; });
+  for (int i = 0; i < static_cast<int>(wall.displays.size()); ++i) {
+    if (wall.displays[i].id != i) {
+      top.source().fail(lines.back(), "display",
+                        fmt::format("ids must run 0..{} without gaps; id {} is missing",
+                                    wall.displays.size() - 1, i));
+    }
+  }
+}
+
+}  // namespace
+
+void read_displays(const TomlFields& top, Wall& wall) {
+  const toml::table* grid = top.table("display_grid");
+  const toml::array* list = top.array("display");
+  if (grid && list) {
+    top.fail("display", "use either [display_grid] or [[display]], not both");
+  }
+  if (grid) {
+    read_grid(top, *grid, wall);
+  } else if (list && !list->empty()) {
+    read_list(top, *list, wall);
+  } else {
+    top.source().fail(0, "display_grid",
+                      "the wall has no displays ([display_grid] or [[display]])");
+  }
+}
+
+void read_canvas(const TomlFields& top, Wall& wall) {
+  int right = 0, bottom = 0;
+  for (const Display& d : wall.displays) {
+    right = std::max(right, d.canvas_x + d.width);
+    bottom = std::max(bottom, d.canvas_y + d.height);
+  }
+  wall.canvas_width = right;
+  wall.canvas_height = bottom;
+  const toml::table* table = top.table("canvas");
+  if (!table) {
+    if (right > kMaxCanvas || bottom > kMaxCanvas) {
+      top.source().fail(0, "display",
+                        fmt::format("the displays span {}x{} pixels, more than the "
+                                    "{}x{} a canvas may have",
+                                    right, bottom, kMaxCanvas, kMaxCanvas));
+    }
+    return;
+  }
+  const TomlFields f(*table, "canvas", top.source(), {"width", "height"});
+  wall.canvas_width = f.required_integer("width", 1, kMaxCanvas);
+  wall.canvas_height = f.required_integer("height", 1, kMaxCanvas);
+  for (const Display& d : wall.displays) {
+    if (d.canvas_x + d.width > wall.canvas_width || d.canvas_y + d.height > wall.canvas_height) {
+      f.fail(d.canvas_x + d.width > wall.canvas_width ? "width" : "height",
+             fmt::format("display {} ({}x{} at {},{}) extends past the {}x{} canvas", d.id, d.width,
+                         d.height, d.canvas_x, d.canvas_y, wall.canvas_width, wall.canvas_height));
+    }
+  }
+}
+
+}  // namespace l2

@@ -1,0 +1,51 @@
+#include "tilelayout/wall_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "tilelayout/tile_layout.hpp"
+#include "wall_sections.hpp"
+
+namespace l2 {
+
+Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_for_messages) {
+  const TomlSource source{path_for_messages.string()};
+  toml::table doc;
+  try {
+    doc = toml::parse(toml_text, source.file);
+  } catch (const toml::parse_error& e) {
+    const int line = static_cast<int>(e.source().begin.line);
+    throw LayoutError(fmt::format("{}:{}: malformed TOML: {}", source.file, line, e.description()));
+  }
+  const TomlFields top(
+      doc, "", source,
+      {"name", "canvas", "display_grid", "display", "tiling", "pipeservers", "mesh"});
+  Wall wall;
+  wall.source = path_for_messages;
+  wall.name = top.string("name").value_or(path_for_messages.stem().string());
+  read_displays(top, wall);
+  read_canvas(top, wall);
+  read_tiling(top, wall);
+  read_servers_and_mesh(top, wall);
+  return wall;
+}
+
+Wall load_wall(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_wall(text.str(), path);
+}
+
+Wall default_wall() {
+  return parse_wall(default_wall_toml(), "walls/kd-2x2.toml (built in)");
+}
+
+}  // namespace l2

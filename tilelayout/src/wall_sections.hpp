@@ -1,0 +1,18 @@
+// The sections of a wall file, each read by its own function. Private to the loader.
+#pragma once
+
+#include "tilelayout/wall.hpp"
+#include "toml_fields.hpp"
+
+namespace l2 {
+
+// [display_grid] or [[display]]: fills wall.displays.
+void read_displays(const TomlFields& top, Wall& wall);
+// [canvas] (optional): fills the canvas size and checks every display lies on it.
+void read_canvas(const TomlFields& top, Wall& wall);
+// [tiling]: needs the canvas.
+void read_tiling(const TomlFields& top, Wall& wall);
+// [pipeservers] and [mesh].
+void read_servers_and_mesh(const TomlFields& top, Wall& wall);
+
+}  // namespace l2
