@@ -1,5 +1,7 @@
 #include "test_support.hpp"
 
+#include "pipeserver/pipeserver.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -88,6 +90,22 @@ ImageDiff compare(const RgbImage& a, const RgbImage& b) {
     d.max_channel_diff = std::max(d.max_channel_diff, worst);
   }
   return d;
+}
+
+WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame) {
+  std::vector<RgbImage> frames;
+  for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
+    Pipeserver ps(layout, s);
+    frames.push_back(ps.render_frame(frame, scene));
+  }
+  WallCheck out;
+  out.reassembly = reassemble(layout.wall, frames);
+  for (const Display& d : layout.wall.displays) {
+    out.diffs.push_back(compare(out.reassembly.displays[static_cast<std::size_t>(d.id)],
+                                render_reference(layout, d.id, scene, frame)));
+    out.display_pixels += static_cast<long>(d.width) * d.height;
+  }
+  return out;
 }
 
 SceneOptions small_options() {

@@ -33,6 +33,15 @@ struct ImageDiff {
 };
 ImageDiff compare(const RgbImage& a, const RgbImage& b);
 
+// Renders `frame` on every pipeserver of the layout, routes the frames and compares every
+// display with its reference render.
+struct WallCheck {
+  Reassembly reassembly;
+  std::vector<ImageDiff> diffs;  // per display
+  long display_pixels = 0;       // sum of display areas
+};
+WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame);
+
 // Small, quick versions of every scene.
 SceneOptions small_options();
 

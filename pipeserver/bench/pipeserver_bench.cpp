@@ -1,0 +1,79 @@
+// Header drawing plus scan-out must stay under 2% of frame time on the default wall (issue).
+// Renders frames of every pipeserver of the default wall with the default bunny, and prints
+// the share, with a memcpy of one framebuffer as the same-run baseline for the scan-out cost.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "pipeserver/pipeserver.hpp"
+#include "pipeserver/scan_out.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+double memcpy_ms(std::size_t bytes) {
+  std::vector<std::uint8_t> a(bytes, 1), b(bytes);
+  std::vector<double> t;
+  for (int i = 0; i < 30; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::memcpy(b.data(), a.data(), bytes);
+    t.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    a[static_cast<std::size_t>(i)] = b[static_cast<std::size_t>(i) + 1];  // keep the copies alive
+  }
+  return median(t);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string scene_name = argc > 1 ? argv[1] : "mesh";
+  const int frames = argc > 2 ? std::max(3, std::atoi(argv[2])) : 20;
+  const l2::TileLayout layout = l2::plan_layout(l2::default_wall());
+  auto scene = l2::make_scene(scene_name);
+  std::printf("default wall '%s': canvas %dx%d, %zu displays, %zu pipeservers, framebuffer %dx%d\n",
+              layout.wall.name.c_str(), layout.wall.canvas_width, layout.wall.canvas_height,
+              layout.wall.displays.size(), layout.servers.size(), layout.wall.framebuffer_width,
+              layout.wall.framebuffer_height);
+  std::printf("scene %s (%zu triangles), %d frames per pipeserver, medians:\n", scene_name.c_str(),
+              scene->triangle_count(), frames);
+  double worst_share = 0;
+  for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
+    l2::Pipeserver ps(layout, s);
+    std::vector<double> render, header, scan, share, overlap;
+    for (int k = 0; k < frames; ++k) {
+      ps.render_frame(k, *scene);
+      const auto& t = ps.last_times();
+      render.push_back(t.render_ms);
+      header.push_back(t.header_ms);
+      scan.push_back(t.scanout_ms);
+      share.push_back(100.0 * (t.header_ms + t.scanout_ms) / t.total_ms());
+      overlap.push_back(t.buckets.overlap_factor());
+    }
+    const auto& plan = ps.plan();
+    const std::size_t rgba_bytes =
+        static_cast<std::size_t>(plan.fb_width) * static_cast<std::size_t>(plan.fb_height) * 4;
+    const double base = memcpy_ms(rgba_bytes);
+    worst_share = std::max(worst_share, median(share));
+    std::printf(
+        "  server %d: %zu tiles; render %.2f ms, headers %.3f ms, scan-out %.3f ms "
+        "(%.2fx a memcpy of the RGBA framebuffer, %.3f ms); headers+scan-out %.2f%% of frame; "
+        "overlap %.2f\n",
+        s, plan.tiles.size(), median(render), median(header), median(scan), median(scan) / base,
+        base, median(share), median(overlap));
+  }
+  std::printf("worst headers+scan-out share: %.2f%% (target < 2%%): %s\n", worst_share,
+              worst_share < 2.0 ? "PASS" : "FAIL");
+  return worst_share < 2.0 ? 0 : 1;
+}

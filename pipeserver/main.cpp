@@ -1,0 +1,117 @@
+// pipeserver: renders one pipeserver's frame of a wall (tiles at their packed places, strip
+// headers in the gaps, scanned out to 24-bit RGB) and, on request, the reference render of
+// every display of that frame.
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <optional>
+
+#include "image/png_io.hpp"
+#include "pipeserver/pipeserver.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace {
+
+struct Options {
+  std::string wall;  // empty: the built-in default wall
+  int server = 0;
+  int frame = 0;
+  int count = 1;
+  std::string scene = "mesh";
+  std::string out;
+  std::string reference;
+  l2::SceneOptions scene_options;
+};
+
+void print_times(int server, int frame, const l2::FrameTimes& t) {
+  const double share = 100.0 * (t.header_ms + t.scanout_ms) / t.total_ms();
+  std::printf(
+      "server %d frame %d: render %.2f ms, headers %.3f ms, scan-out %.3f ms "
+      "(headers+scan-out %.2f%% of %.2f ms); batches %ld, tile draws %ld, overlap %.2f\n",
+      server, frame, t.render_ms, t.header_ms, t.scanout_ms, share, t.total_ms(), t.buckets.batches,
+      t.buckets.tile_draws, t.buckets.overlap_factor());
+}
+
+int run(const Options& o) {
+  const l2::Wall wall = o.wall.empty() ? l2::default_wall() : l2::load_wall(o.wall);
+  const l2::TileLayout layout = l2::plan_layout(wall);
+  for (const auto& w : layout.warnings)
+    std::fprintf(stderr, "pipeserver: warning: %s\n", w.c_str());
+  auto scene = l2::make_scene(o.scene, o.scene_options);
+
+  if (!o.out.empty()) {
+    l2::Pipeserver ps(layout, o.server);
+    const l2::RgbImage* frame = nullptr;
+    for (int k = o.frame; k < o.frame + o.count; ++k) {
+      frame = &ps.render_frame(k, *scene);
+      print_times(o.server, k, ps.last_times());
+    }
+    l2::write_png(o.out, *frame);
+    std::printf("wrote %s (%dx%d, %zu tiles)\n", o.out.c_str(), frame->width(), frame->height(),
+                ps.plan().tiles.size());
+  }
+  if (!o.reference.empty()) {
+    const int last = o.frame + o.count - 1;
+    for (const auto& d : wall.displays) {
+      const auto path = std::filesystem::path(o.reference) / fmt::format("display-{}.png", d.id);
+      l2::write_png(path, l2::render_reference(layout, d.id, *scene, last));
+      std::printf("wrote %s (reference, display %d, frame %d)\n", path.c_str(), d.id, last);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
+      "pipeserver --server with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
+      "draws the strip headers of spec §4 with the parity of --frame, and writes the scanned-out\n"
+      "24-bit RGB frame. --reference writes what each display should show for that frame."};
+  Options o;
+  app.add_option("--wall", o.wall, "wall file (TOML); default: the built-in default wall")
+      ->check(CLI::ExistingFile);
+  app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::NonNegativeNumber);
+  app.add_option("--frame", o.frame, "application frame number (animation, header parity k mod 2)")
+      ->check(CLI::Range(0, 1 << 30));
+  app.add_option("--count", o.count,
+                 "render frames --frame .. --frame+count-1 (times printed for each); the last is "
+                 "written")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--scene", o.scene, "mesh | strips | isosurface | patches")
+      ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches"}));
+  app.add_option("--out", o.out, "PNG file for the scanned-out frame");
+  app.add_option("--reference", o.reference,
+                 "folder for the reference render of each display (display-<id>.png)");
+  app.add_option("--mesh", o.scene_options.mesh_file,
+                 "mesh scene: PLY or OBJ file (default: bunny)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--triangles", o.scene_options.triangles, "strips scene: triangle count")
+      ->check(CLI::Range(1L, 50'000'000L));
+  app.add_option("--strip-length", o.scene_options.strip_length,
+                 "strips scene: triangles per strip")
+      ->check(CLI::Range(1, 4096));
+  app.add_option("--grid", o.scene_options.grid, "isosurface scene: cells per axis")
+      ->check(CLI::Range(2, 256));
+  app.add_option("--tessellation", o.scene_options.tessellation,
+                 "patches scene: segments per patch edge")
+      ->check(CLI::Range(1, 1024));
+  app.add_option("--patches", o.scene_options.patches, "patches scene: patches per side")
+      ->check(CLI::Range(1, 64));
+  CLI11_PARSE(app, argc, argv);
+  if (o.out.empty() && o.reference.empty()) {
+    std::fprintf(stderr, "pipeserver: nothing to do: give --out and/or --reference\n");
+    return 2;
+  }
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pipeserver: %s\n", e.what());
+    return 1;
+  }
+}
