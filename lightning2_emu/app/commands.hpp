@@ -1,0 +1,44 @@
+// The lightning2_emu subcommands: options shared by both, and their entry points.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "lightning2_emu/emulator.hpp"
+
+namespace l2 {
+
+struct CommonOptions {
+  std::string displays;  // "WxH,WxH"
+  std::string wall;      // wall file, instead of displays
+  std::string groups;    // "0,0,1" swap group per display (--displays only)
+  std::string mesh;      // "RxC" boards; empty: the smallest that fits
+  std::string board_max = "1280x1024";
+  std::string background = "000000";
+  int threads = 0;
+  std::filesystem::path out;
+  std::vector<std::string> inputs;  // frame files (route) or folders (sequence)
+};
+
+// What both commands build from the options: the emulator's configuration and, for --wall,
+// where each display sits on the wall.
+struct Setup {
+  EmulatorConfig config;
+  bool from_wall = false;
+  struct Placement {
+    int display = 0, x = 0, y = 0;
+  };
+  std::vector<Placement> placements;  // --wall: canvas position of every display
+  int canvas_width = 0, canvas_height = 0;
+};
+Setup make_setup(const CommonOptions& options);
+
+// The displays as placed on the wall, mullions (canvas not on any display) in dark grey.
+// shown_by_id[d] is what display d shows (nullptr: not configured).
+RgbImage compose_wall(const Setup& setup, const std::vector<const RgbImage*>& shown_by_id);
+
+int run_route(const CommonOptions& options);
+int run_sequence(const CommonOptions& options, int ticks);
+
+}  // namespace l2

@@ -1,0 +1,105 @@
+#include "frame_files.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+
+namespace l2 {
+namespace {
+
+int parse_int(std::string_view text, const std::string& what) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || end != text.data() + text.size() || text.empty()) {
+    throw std::invalid_argument(fmt::format("{}: '{}' is not a number", what, text));
+  }
+  return value;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t at = text.find(sep, start);
+    parts.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+    if (at == std::string::npos) return parts;
+    start = at + 1;
+  }
+}
+
+}  // namespace
+
+InputLimit parse_size(const std::string& text, const std::string& what) {
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) {
+    throw std::invalid_argument(fmt::format("{}: '{}' is not WIDTHxHEIGHT", what, text));
+  }
+  const int w = parse_int(std::string_view(text).substr(0, x), what);
+  const int h = parse_int(std::string_view(text).substr(x + 1), what);
+  if (w < 1 || h < 1) {
+    throw std::invalid_argument(fmt::format("{}: '{}' must be at least 1x1", what, text));
+  }
+  return {w, h};
+}
+
+std::vector<DisplaySpec> parse_display_list(const std::string& text) {
+  std::vector<DisplaySpec> displays;
+  for (const std::string& part : split(text, ',')) {
+    const int id = static_cast<int>(displays.size());
+    const InputLimit size = parse_size(part, fmt::format("--displays: display {}", id));
+    displays.push_back({id, size.width, size.height, 0});
+  }
+  return displays;
+}
+
+void apply_group_list(const std::string& text, std::vector<DisplaySpec>& displays) {
+  const std::vector<std::string> parts = split(text, ',');
+  if (parts.size() != displays.size()) {
+    throw std::invalid_argument(
+        fmt::format("--groups: {} groups given for {} displays", parts.size(), displays.size()));
+  }
+  for (std::size_t d = 0; d < parts.size(); ++d) {
+    displays[d].swap_group = parse_int(parts[d], fmt::format("--groups: display {}", d));
+  }
+}
+
+Rgb parse_colour(const std::string& text, const std::string& what) {
+  std::string hex = text;
+  if (!hex.empty() && hex[0] == '#') hex.erase(0, 1);
+  unsigned value = 0;
+  const auto [end, ec] = std::from_chars(hex.data(), hex.data() + hex.size(), value, 16);
+  if (hex.size() != 6 || ec != std::errc{} || end != hex.data() + hex.size()) {
+    throw std::invalid_argument(fmt::format("{}: '{}' is not a colour RRGGBB", what, text));
+  }
+  return {static_cast<std::uint8_t>(value >> 16), static_cast<std::uint8_t>(value >> 8),
+          static_cast<std::uint8_t>(value)};
+}
+
+std::vector<std::filesystem::path> list_frames(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) {
+    throw std::runtime_error(fmt::format("{}: not a folder of frames", folder.string()));
+  }
+  static const std::vector<std::string> kExtensions = {".png",  ".ppm", ".pnm", ".tif",
+                                                       ".tiff", ".bmp", ".jpg", ".jpeg"};
+  std::vector<fs::path> frames;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (entry.is_regular_file() &&
+        std::find(kExtensions.begin(), kExtensions.end(), ext) != kExtensions.end()) {
+      frames.push_back(entry.path());
+    }
+  }
+  if (frames.empty()) {
+    throw std::runtime_error(fmt::format("{}: no frame images in this folder", folder.string()));
+  }
+  std::sort(frames.begin(), frames.end());
+  return frames;
+}
+
+}  // namespace l2

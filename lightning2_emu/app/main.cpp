@@ -1,0 +1,68 @@
+// lightning2_emu: the Lightning-2 emulator on captured frames.
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <exception>
+
+#include "commands.hpp"
+
+namespace {
+
+void add_common(CLI::App& cmd, l2::CommonOptions& o) {
+  cmd.add_option("--displays", o.displays,
+                 "Output displays 0, 1, ... as WxH[,WxH...] (mesh: as many board columns as "
+                 "needed)");
+  cmd.add_option("--wall", o.wall,
+                 "Wall file (TOML): displays, swap groups and board limit from the wall");
+  cmd.add_option("--groups", o.groups,
+                 "Swap-lock group of each display, e.g. 0,0,1,1 (default: all in group 0)");
+  cmd.add_option("--mesh", o.mesh,
+                 "Mesh as ROWSxCOLUMNS boards (4 inputs a row, 8 displays a column); default: "
+                 "the smallest that fits");
+  cmd.add_option("--board-max", o.board_max, "Largest input a board accepts, WxH")
+      ->capture_default_str();
+  cmd.add_option("--background", o.background, "Colour of pixels no strip writes, RRGGBB")
+      ->capture_default_str();
+  cmd.add_option("--threads", o.threads, "Worker threads (0: one per core)")->capture_default_str();
+  cmd.add_option("--out", o.out, "Output folder")->required();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Lightning-2 emulator: reads strip headers (spec §2-§3) out of scanned-out input frames "
+      "and routes their strips to output displays through a mesh of boards (spec §5-§6)."};
+  app.require_subcommand(1);
+
+  l2::CommonOptions route_options;
+  CLI::App* route = app.add_subcommand(
+      "route",
+      "Route one frame per input (input i is the i-th file); writes OUT/display-<d>.png, "
+      "OUT/report.json and, with --wall, OUT/wall.png");
+  add_common(*route, route_options);
+  route->add_option("inputs", route_options.inputs, "Input frames IN0.png IN1.png ...")->required();
+
+  l2::CommonOptions seq_options;
+  int ticks = 0;
+  CLI::App* sequence = app.add_subcommand(
+      "sequence",
+      "Run folders of frames over time (one folder per input, frames sorted by name, one per "
+      "refresh) with the parity, torn, idle and latency rules of spec §6; writes "
+      "OUT/display-<d>/frame-<t>.png for every refresh, OUT/report.json and, with --wall, "
+      "OUT/wall/frame-<t>.png");
+  add_common(*sequence, seq_options);
+  sequence->add_option("--ticks", ticks,
+                       "Refreshes to run (default: the longest input's frame count + 1; an "
+                       "input past its last frame keeps scanning it out)");
+  sequence->add_option("inputs", seq_options.inputs, "Input folders IN0/ IN1/ ...")->required();
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*route) return l2::run_route(route_options);
+    return l2::run_sequence(seq_options, ticks);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "lightning2_emu: {}\n", e.what());
+    return 1;
+  }
+}

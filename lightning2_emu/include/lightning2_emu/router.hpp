@@ -1,0 +1,99 @@
+// The hot path of the emulator: reads scanned-out input frames scanline by scanline (spec §3)
+// and copies their COPY strips into the back buffers of the displays it owns, with the overlap
+// priority and background of spec §5.
+//
+// A frame is routed in three steps, so the frame sequencer (§6) can decide between them which
+// inputs count:
+//   scan()   parses every input in parallel into per-input strip lists (headers only: the
+//            pixels are not touched);
+//   write()  copies the strips of the chosen inputs into the back buffers, in parallel over
+//            display row bands, inputs in ascending order so the higher input wins;
+//   finish() fills every pixel no strip wrote with the background, counts coverage and
+//            overdraw, and starts the displays' next frame.
+// Buffers are reused from frame to frame: after the first frames nothing is allocated. The
+// result does not depend on the number of workers.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lightning2_emu/display_buffers.hpp"
+#include "lightning2_emu/input_frame.hpp"
+#include "lightning2_emu/mesh.hpp"
+#include "lightning2_emu/route_report.hpp"
+#include "lightning2_emu/worker_pool.hpp"
+
+namespace l2 {
+
+class Router {
+ public:
+  // Throws MeshError for a display the mesh does not have, a repeated id or a bad size.
+  Router(const Mesh& mesh, std::vector<DisplaySpec> displays, WorkerPool& pool,
+         Rgb background = {});
+
+  const Mesh& mesh() const { return mesh_; }
+  int display_count() const { return static_cast<int>(displays_.size()); }
+  DisplayBuffers& display(int index) { return displays_[index]; }
+  const DisplayBuffers& display(int index) const { return displays_[index]; }
+  int index_of_display(int id) const;  // -1 when the mesh has no display `id`
+  Rgb background() const { return background_; }
+
+  // Parses frames[i] as input i (a frame that is not present() counts as no signal).
+  // Throws MeshError before parsing anything when there are more frames than mesh inputs or a
+  // frame is larger than the board limit or has fewer than 3 bytes per pixel.
+  void scan(std::span<const InputFrame> frames);
+  const InputFrameStats& scanned(int input) const { return inputs_[input].stats; }
+
+  // Writes the strips found by the last scan() for every input i with route_input[i] != 0.
+  // The frames given to scan() must still be valid.
+  void write(std::span<const std::uint8_t> route_input);
+
+  // Completes the current frame of the displays with the given indices (not ids).
+  void finish(std::span<const int> display_indices, std::vector<DisplayFrameStats>& out);
+
+  // scan + write every input + finish every display: one whole frame, as `route` does.
+  RouteReport route(std::span<const InputFrame> frames);
+
+ private:
+  // A COPY strip after clipping to its display: where to read and where to write.
+  struct RoutedStrip {
+    std::int32_t src_x, src_y;
+    std::uint16_t dst_x, dst_y, length;
+  };
+  // Columns x0..x1-1 of one display row written by `input` during the current frame.
+  struct Span {
+    std::uint16_t x0, x1, input;
+  };
+  struct InputState {
+    InputFrame frame;
+    InputFrameStats stats;
+    std::vector<std::vector<RoutedStrip>> bands;  // [band_offset[d] + band]
+  };
+  struct DisplayState {
+    int band_rows = 1, band_count = 1, band_offset = 0;
+    int highest_input_written = -1;       // over earlier write() calls of this frame
+    std::vector<std::vector<Span>> rows;  // per display row
+  };
+  struct BandTask {
+    int display, band;
+  };
+
+  void scan_input(int input);
+  void write_band(int display, int band, std::span<const std::uint8_t> route_input);
+  DisplayFrameStats finish_band(int display, int band);
+
+  Mesh mesh_;
+  WorkerPool& pool_;
+  Rgb background_;
+  std::vector<DisplayBuffers> displays_;
+  std::vector<DisplayState> display_state_;
+  std::vector<int> index_of_id_;  // kMaxDisplays entries
+  std::vector<InputState> inputs_;
+  std::vector<BandTask> band_tasks_;
+  std::vector<BandTask> finish_tasks_;
+  std::vector<DisplayFrameStats> band_stats_;
+  std::vector<int> scan_inputs_;
+};
+
+}  // namespace l2

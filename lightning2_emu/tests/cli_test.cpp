@@ -1,0 +1,143 @@
+// The lightning2_emu executable on real files: PNG frames in, PNG displays and JSON out.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "frame_builder.hpp"
+#include "image/png_io.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::FrameBuilder;
+
+struct Result {
+  int status;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  const std::string command = std::string(L2_EMU_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buffer[512];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  fs::path dir =
+      fs::temp_directory_path() /
+      ("l2emu-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  void SetUp() override {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+};
+
+TEST_F(Cli, RouteWritesEveryDisplayAndAReport) {
+  // Input 0 fills display 0 (20x3) row 0 and display 1 (10x2) row 1; input 1 has a bad header.
+  FrameBuilder in0(40, 4), in1(40, 4);
+  const int x = in0.copy(0, 0, 0, 0, 0, 20);
+  in0.copy(x, 0, 1, 0, 1, 10);
+  in1.raw_header(0, 0, 0x000000000001);
+  write_png(dir / "in0.png", in0.image());
+  write_png(dir / "in1.png", in1.image());
+  const Result r =
+      run("route --displays 20x3,10x2 --background 102030 --out " + (dir / "out").string() + " " +
+          (dir / "in0.png").string() + " " + (dir / "in1.png").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const RgbImage d0 = read_png(dir / "out/display-0.png");
+  const RgbImage d1 = read_png(dir / "out/display-1.png");
+  ASSERT_EQ(d0.width(), 20);
+  ASSERT_EQ(d1.height(), 2);
+  for (int k = 0; k < 20; ++k) EXPECT_EQ(d0.at(k, 0), testing::pattern(0, k, 0));
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(d1.at(k, 1), testing::pattern(1, k, 1));
+  EXPECT_EQ(d0.at(3, 2), (Rgb{0x10, 0x20, 0x30}));
+  const auto report = read_json(dir / "out/report.json");
+  EXPECT_EQ(report["displays"][0]["covered_pixels"], 20);
+  EXPECT_EQ(report["displays"][1]["strips"], 1);
+  EXPECT_EQ(report["inputs"][0]["copy_strips"], 2);
+  EXPECT_EQ(report["inputs"][1]["errors"]["check_errors"], 1);
+  EXPECT_EQ(report["errors"]["total"], 1);
+  EXPECT_EQ(report["mesh"]["inputs"], 4);
+}
+
+TEST_F(Cli, RouteRefusesInputsLargerThanTheBoardLimit) {
+  write_png(dir / "big.png", RgbImage(1281, 10));
+  const Result r = run("route --displays 100x100 --out " + (dir / "o").string() + " " +
+                       (dir / "big.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("big.png: input 0 is 1281x10, larger than the board limit 1280x1024"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST_F(Cli, RouteRefusesInputsAndDisplaysBeyondTheMesh) {
+  write_png(dir / "a.png", RgbImage(8, 8));
+  std::string five;
+  for (int i = 0; i < 5; ++i) five += " " + (dir / "a.png").string();
+  Result r = run("route --displays 10x10 --mesh 1x1 --out " + (dir / "o").string() + five);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("5 inputs given, the mesh"), std::string::npos) << r.output;
+  std::string nine = "10x10";
+  for (int d = 1; d < 9; ++d) nine += ",10x10";
+  r = run("route --displays " + nine + " --mesh 1x1 --out " + (dir / "o").string() + " " +
+          (dir / "a.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("display 8 is beyond the mesh"), std::string::npos) << r.output;
+  r = run("route --displays 10y10 --out " + (dir / "o").string() + " " + (dir / "a.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("--displays: display 0: '10y10' is not WIDTHxHEIGHT"), std::string::npos)
+      << r.output;
+}
+
+TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
+  // Two inputs, three frames each; input 1 tears its second frame once.
+  auto frame = [](int input, int k, bool torn) {
+    FrameBuilder b(32, 4);
+    const Rgb c{static_cast<std::uint8_t>(50 * k + 10), static_cast<std::uint8_t>(input), 0};
+    b.copy_fill(0, 0, 0, 0, input, 8, c, k % 2);
+    b.copy_fill(0, 1, 0, 8, input, 8, c, torn ? !(k % 2) : k % 2);
+    return b.image();
+  };
+  for (int i = 0; i < 2; ++i) fs::create_directories(dir / ("in" + std::to_string(i)));
+  write_png(dir / "in0/f0.png", frame(0, 0, false));
+  write_png(dir / "in0/f1.png", frame(0, 1, false));
+  write_png(dir / "in0/f2.png", frame(0, 1, false));
+  write_png(dir / "in1/f0.png", frame(1, 0, false));
+  write_png(dir / "in1/f1.png", frame(1, 1, true));
+  write_png(dir / "in1/f2.png", frame(1, 1, false));
+  const Result r = run("sequence --displays 16x2 --out " + (dir / "out").string() + " " +
+                       (dir / "in0").string() + " " + (dir / "in1").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto shown = [&](int t) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", t);
+    return read_png(dir / "out/display-0" / name).at(0, 0);
+  };
+  EXPECT_EQ(shown(0), Rgb{});            // nothing yet
+  EXPECT_EQ(shown(1), (Rgb{10, 0, 0}));  // frame 0
+  EXPECT_EQ(shown(2), (Rgb{10, 0, 0}));  // frame 1 torn on input 1: still frame 0
+  EXPECT_EQ(shown(3), (Rgb{60, 0, 0}));  // frame 1
+  const auto report = read_json(dir / "out/report.json");
+  EXPECT_EQ(report["ticks"], 4);
+  EXPECT_EQ(report["frames_torn"], 1);
+  EXPECT_EQ(report["groups"][0]["swaps"], 2);
+  EXPECT_EQ(report["tick_log"][1]["frames"][1], "torn");
+}
+
+}  // namespace
+}  // namespace l2
