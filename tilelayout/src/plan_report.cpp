@@ -1,0 +1,71 @@
+#include "tilelayout/plan_report.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+
+#include "tilelayout/coverage.hpp"
+
+namespace l2 {
+namespace {
+
+const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
+const char* const kPolicyNames[] = {"round-robin", "zig-zag", "spiral", "blocks", "area-balanced"};
+
+void servers(const TileLayout& layout, std::string& out) {
+  for (const ServerPlan& s : layout.servers) {
+    long long used = 0;
+    for (const PackedTile& p : s.tiles) used += p.tile.on_display.area();
+    const double total = double(s.fb_width) * s.fb_height;
+    out += fmt::format(
+        "pipeserver {}: {} tiles in {} rows, {} of {} rows used, framebuffer use {:.1f}%\n",
+        s.server, s.tiles.size(), s.rows.size(), s.used_height(), s.fb_height,
+        100.0 * double(used) / total);
+    for (const PackedTile& p : s.tiles) {
+      const DisplayTile& t = p.tile;
+      out += fmt::format(
+          "  tile {:>4} -> display {:>2} {:>4}x{:<4} at {:>4},{:<4}  packed at {:>4},{:<4}  "
+          "canvas {},{}\n",
+          t.logical_tile, t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y,
+          p.fb_x, p.fb_y, t.on_canvas.x, t.on_canvas.y);
+    }
+  }
+}
+
+void displays(const TileLayout& layout, std::string& out) {
+  for (const DisplayCoverage& c : display_coverage(layout.wall, layout.tiles)) {
+    const Display& d = layout.wall.displays[c.display];
+    std::set<int> from;
+    int count = 0;
+    for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+      if (layout.tiles[i].display != d.id) continue;
+      from.insert(layout.tile_server[i]);
+      ++count;
+    }
+    out += fmt::format(
+        "display {}: {}x{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
+        "by {} tiles from pipeservers {}\n",
+        d.id, d.width, d.height, d.canvas_x, d.canvas_y, d.swap_group,
+        100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
+        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")));
+  }
+}
+
+}  // namespace
+
+std::string format_plan(const TileLayout& layout) {
+  const Wall& w = layout.wall;
+  std::string out = fmt::format(
+      "wall \"{}\" ({}): canvas {}x{}, {} displays, {} tiling: {} logical tiles -> {} display "
+      "tiles, {} pipeservers of {}x{}, assignment {}\n",
+      w.name, w.source.empty() ? std::string("built in code") : w.source.string(), w.canvas_width,
+      w.canvas_height, w.displays.size(), kTilingNames[static_cast<int>(w.tiling.kind)],
+      layout.logical_tiles.size(), layout.tiles.size(), w.server_count, w.framebuffer_width,
+      w.framebuffer_height, kPolicyNames[static_cast<int>(w.assignment)]);
+  servers(layout, out);
+  displays(layout, out);
+  for (const std::string& warning : layout.warnings) out += warning + "\n";
+  return out;
+}
+
+}  // namespace l2
