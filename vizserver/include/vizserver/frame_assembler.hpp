@@ -1,0 +1,94 @@
+// The compositing server's bookkeeping, without sockets: which pipeserver sent which tiles for
+// which frame, when a frame is complete, and composing it in the order the overlap rule needs.
+//
+// Overlap rule (spec §5, as the emulator applies it): where tiles overlap, the tile from the
+// higher pipeserver number wins; within one pipeserver the later tile wins. Tiles from
+// different connections arrive interleaved in any order, so nothing is drawn on arrival: a
+// frame's tiles are kept per pipeserver, in arrival order (one TCP stream keeps one
+// pipeserver's order), and the frame is composed only once every pipeserver has finished it,
+// pipeserver 0 first. The picture therefore never depends on network timing.
+//
+// Frame rules: each pipeserver's frame numbers strictly increase, and it sends all tiles of a
+// frame before that frame's FRAME_DONE. A frame is complete when every pipeserver has sent a
+// FRAME_DONE for it or for a later frame (a pipeserver that skips a frame number had nothing
+// for it). Complete frames are composed lowest first.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/rgb_image.hpp"
+#include "strip_headers/scanline_parser.hpp"
+#include "vizserver/wire.hpp"
+
+namespace l2::viz {
+
+struct ReceivedTile {
+  TileHeader header;
+  std::vector<std::uint8_t> pixels;  // w*h*3 bytes, rows top to bottom
+};
+
+struct ComposedFrame {
+  std::uint32_t frame = 0;
+  std::vector<RgbImage> displays;  // one per display, in display order
+  std::size_t tiles = 0;
+  StripErrorCounts counts;  // clips and missing_display of this frame, per tile row (§3)
+};
+
+class FrameAssembler {
+ public:
+  FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int server_count,
+                 Rgb background = {}, std::size_t max_buffered_bytes = std::size_t{1} << 30);
+
+  int server_count() const { return static_cast<int>(servers_.size()); }
+  int display_count() const { return static_cast<int>(sizes_.size()); }
+
+  // Protocol events of pipeserver `server` (0..server_count-1). An error return is one line,
+  // "pipeserver 1: ..."; the pipeserver broke the rules or the run cannot go on.
+  std::optional<std::string> connect(int server);
+  std::optional<std::string> add_tile(int server, ReceivedTile tile);
+  std::optional<std::string> finish(int server, const FrameDone& done);
+  // The connection of `server` closed. Error if a frame is, or will be, waiting for it.
+  std::optional<std::string> disconnect(int server);
+
+  // Removes and composes every complete frame, lowest first.
+  std::vector<ComposedFrame> take_complete();
+
+  // The lowest frame that exists and still waits for `server`, if any.
+  std::optional<std::uint32_t> frame_waiting_for(int server) const;
+  // Every pipeserver connected and disconnected, and no frame is waiting.
+  bool all_done() const;
+  std::optional<std::uint32_t> last_composed() const { return last_composed_; }
+  std::size_t buffered_bytes() const { return buffered_bytes_; }
+
+ private:
+  struct Server {
+    bool connected = false, closed = false;
+    std::optional<std::uint32_t> last_done;   // its last FRAME_DONE
+    std::optional<std::uint32_t> open_frame;  // tiles sent, FRAME_DONE not yet
+  };
+  struct Frame {
+    std::vector<std::vector<ReceivedTile>> tiles;  // [server] in arrival order
+  };
+
+  std::string name(int server) const;
+  std::optional<std::string> check_new_frame(std::uint32_t frame) const;
+  std::optional<std::string> check_order(int server, std::uint32_t frame, const char* what) const;
+  Frame& frame_entry(std::uint32_t frame);
+  bool waits_for(const Server& s, std::uint32_t frame) const;
+  ComposedFrame compose(std::uint32_t number, Frame& frame) const;
+
+  std::vector<std::pair<int, int>> sizes_;
+  Rgb background_;
+  std::size_t max_buffered_bytes_;
+  std::vector<Server> servers_;
+  std::map<std::uint32_t, Frame> frames_;
+  std::size_t buffered_bytes_ = 0;
+  std::optional<std::uint32_t> last_composed_;
+};
+
+}  // namespace l2::viz

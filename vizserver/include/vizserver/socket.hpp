@@ -1,0 +1,66 @@
+// Plain POSIX TCP at the edge of the visualization server: an owning descriptor, listen and
+// connect with bounded waits, and send/receive loops that survive partial transfers and EINTR.
+// Sockets are non-blocking throughout; "blocking" calls here wait in poll() up to a deadline,
+// so no call can hang on a dead or silent peer.
+#pragma once
+
+#include <sys/uio.h>
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace l2::viz {
+
+using Clock = std::chrono::steady_clock;
+
+// Every network failure: one line naming the peer ("compositing server 127.0.0.1:5000: ...").
+class VizError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Fd {
+ public:
+  Fd() = default;
+  explicit Fd(int fd) : fd_(fd) {}
+  Fd(Fd&& o) noexcept : fd_(o.release()) {}
+  Fd& operator=(Fd&& o) noexcept;
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  ~Fd() { reset(); }
+
+  int get() const { return fd_; }
+  explicit operator bool() const { return fd_ >= 0; }
+  int release();
+  void reset();
+
+ private:
+  int fd_ = -1;
+};
+
+// Listens on host:port (port 0: the kernel picks a free one; read it with local_port).
+Fd listen_tcp(const std::string& host, std::uint16_t port);
+std::uint16_t local_port(int fd);
+// "127.0.0.1:43210" for a connected socket.
+std::string peer_name(int fd);
+
+// Connects to host:port, retrying refused connections (the server may not be listening yet)
+// until `timeout` has passed. The socket is non-blocking with TCP_NODELAY.
+Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout);
+
+void set_nonblocking(int fd);
+void set_nodelay(int fd);
+
+// Sends every byte of `parts` (gathered, no copy) before `deadline`. Throws VizError naming
+// `peer` on timeout or error; a peer that closed gives "closed the connection".
+void send_all(int fd, std::span<const iovec> parts, Clock::time_point deadline,
+              const std::string& peer);
+// Receives exactly n bytes before `deadline`; throws VizError likewise.
+void recv_all(int fd, std::uint8_t* data, std::size_t n, Clock::time_point deadline,
+              const std::string& peer);
+
+}  // namespace l2::viz

@@ -1,0 +1,67 @@
+// The pipeserver's end of the visualization-server path (WireGL §4.2): after rendering, send
+// each tile's pixels straight from the framebuffer to the compositing server, say when the
+// frame is complete, and wait for the server's SWAPPED to pace the next frame.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "vizserver/socket.hpp"
+
+namespace l2::viz {
+
+// Where a tile goes: a rectangle of one output display (the fields of l2::DisplayTile's
+// display and on_display, kept plain so this library does not depend on tilelayout).
+struct TileTarget {
+  int display = 0;
+  int x = 0, y = 0, w = 0, h = 0;
+};
+
+struct SenderOptions {
+  std::chrono::milliseconds connect_timeout{5000};  // retries until the server listens
+  std::chrono::milliseconds io_timeout{10000};      // one send or the WELCOME, at most
+};
+
+class TileSender {
+ public:
+  // Connects, says HELLO and waits for WELCOME. Throws VizError: unreachable server, or the
+  // server's refusal verbatim (wrong display count, pipeserver id taken or out of range).
+  static TileSender connect(const std::string& host, std::uint16_t port, int server_id,
+                            int display_count, SenderOptions options = {});
+
+  // Sends one tile: h rows of w RGB pixels, row r starting at rgb + r * stride (stride in
+  // bytes, so a tile inside a bigger framebuffer goes out row span by row span, uncopied).
+  // Throws std::invalid_argument for sides outside 1..4095, VizError if the server is gone.
+  void send_tile(std::uint32_t frame, const TileTarget& tile, const std::uint8_t* rgb,
+                 std::size_t stride);
+  // This pipeserver's part of `frame` is complete: tiles_sent tiles went out for it.
+  void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
+  // Blocks until the server has swapped `frame` (or a later one). Throws VizError on timeout,
+  // on an ERROR from the server (its text included) or when the server is gone.
+  void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout);
+
+  std::optional<std::uint32_t> last_swapped() const { return last_swapped_; }
+  int server_id() const { return server_id_; }
+  // "compositing server 127.0.0.1:5000", the prefix of every error.
+  const std::string& peer() const { return peer_; }
+  int fd() const { return fd_.get(); }
+
+ private:
+  TileSender(Fd fd, std::string peer, int server_id, SenderOptions options);
+  // Reads one server message and records it. Throws VizError on ERROR (text kept) or EOF.
+  void read_message(Clock::time_point deadline, const char* waiting_for);
+  void send(std::span<const iovec> parts);
+
+  Fd fd_;
+  std::string peer_;
+  int server_id_ = 0;
+  SenderOptions options_;
+  bool welcomed_ = false;
+  std::string server_error_;  // the text of an ERROR the server sent, if any
+  std::optional<std::uint32_t> last_swapped_;
+};
+
+}  // namespace l2::viz

@@ -1,0 +1,178 @@
+#include "vizserver/frame_assembler.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "vizserver/compose.hpp"
+
+namespace l2::viz {
+
+FrameAssembler::FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int server_count,
+                               Rgb background, std::size_t max_buffered_bytes)
+    : sizes_(std::move(display_sizes)),
+      background_(background),
+      max_buffered_bytes_(max_buffered_bytes) {
+  if (server_count < 1) throw std::invalid_argument("FrameAssembler: need at least 1 pipeserver");
+  for (const auto& [w, h] : sizes_) {
+    if (w < 1 || h < 1) throw std::invalid_argument(fmt::format("display size {}x{}", w, h));
+  }
+  servers_.resize(static_cast<std::size_t>(server_count));
+}
+
+std::string FrameAssembler::name(int server) const {
+  return fmt::format("pipeserver {}", server);
+}
+
+bool FrameAssembler::waits_for(const Server& s, std::uint32_t frame) const {
+  return !s.last_done || *s.last_done < frame;
+}
+
+std::optional<std::string> FrameAssembler::connect(int server) {
+  if (server < 0 || server >= server_count()) {
+    return fmt::format("pipeserver id {} is outside 0..{}", server, server_count() - 1);
+  }
+  if (servers_[server].connected) return fmt::format("{} is already connected", name(server));
+  servers_[server].connected = true;
+  return std::nullopt;
+}
+
+// A frame another pipeserver starts cannot complete if a pipeserver it waits for has left.
+std::optional<std::string> FrameAssembler::check_new_frame(std::uint32_t frame) const {
+  for (int i = 0; i < server_count(); ++i) {
+    const Server& s = servers_[i];
+    if (!s.closed || !waits_for(s, frame)) continue;
+    return s.last_done ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
+                                     frame, name(i), *s.last_done)
+                       : fmt::format(
+                             "frame {} can never complete: {} disconnected before "
+                             "finishing any frame",
+                             frame, name(i));
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> FrameAssembler::check_order(int server, std::uint32_t frame,
+                                                       const char* what) const {
+  const Server& s = servers_[server];
+  if (s.last_done && frame <= *s.last_done) {
+    return fmt::format(
+        "{}: {} for frame {} after its FRAME_DONE for frame {} (frame numbers "
+        "must increase)",
+        name(server), what, frame, *s.last_done);
+  }
+  if (s.open_frame && frame != *s.open_frame) {
+    return fmt::format("{}: {} for frame {} while frame {} has no FRAME_DONE", name(server), what,
+                       frame, *s.open_frame);
+  }
+  return std::nullopt;
+}
+
+FrameAssembler::Frame& FrameAssembler::frame_entry(std::uint32_t frame) {
+  Frame& f = frames_[frame];
+  if (f.tiles.empty()) f.tiles.resize(servers_.size());
+  return f;
+}
+
+std::optional<std::string> FrameAssembler::add_tile(int server, ReceivedTile tile) {
+  const std::uint32_t number = tile.header.frame;
+  if (auto e = check_order(server, number, "TILE")) return e;
+  if (!frames_.contains(number)) {
+    if (auto e = check_new_frame(number)) return e;
+  }
+  if (buffered_bytes_ + tile.pixels.size() > max_buffered_bytes_) {
+    return fmt::format(
+        "{}: more than {} MiB of tiles buffered waiting for frame {} (is a "
+        "pipeserver behind?)",
+        name(server), max_buffered_bytes_ >> 20, frames_.begin()->first);
+  }
+  buffered_bytes_ += tile.pixels.size();
+  frame_entry(number).tiles[server].push_back(std::move(tile));
+  servers_[server].open_frame = number;
+  return std::nullopt;
+}
+
+std::optional<std::string> FrameAssembler::finish(int server, const FrameDone& done) {
+  if (done.server_id != static_cast<std::uint32_t>(server)) {
+    return fmt::format("{}: FRAME_DONE names pipeserver {}", name(server), done.server_id);
+  }
+  if (auto e = check_order(server, done.frame, "FRAME_DONE")) return e;
+  if (!frames_.contains(done.frame)) {
+    if (auto e = check_new_frame(done.frame)) return e;
+  }
+  const std::size_t arrived = frame_entry(done.frame).tiles[server].size();
+  if (arrived != done.tile_count) {
+    return fmt::format("{}: FRAME_DONE for frame {} announces {} tiles, {} arrived", name(server),
+                       done.frame, done.tile_count, arrived);
+  }
+  servers_[server].last_done = done.frame;
+  servers_[server].open_frame.reset();
+  return std::nullopt;
+}
+
+std::optional<std::string> FrameAssembler::disconnect(int server) {
+  Server& s = servers_[server];
+  s.closed = true;
+  if (s.open_frame) {
+    return fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
+                       name(server), *s.open_frame, frames_[*s.open_frame].tiles[server].size());
+  }
+  if (auto f = frame_waiting_for(server)) {
+    return s.last_done ? fmt::format("{} disconnected after frame {}; frame {} is waiting for it",
+                                     name(server), *s.last_done, *f)
+                       : fmt::format(
+                             "{} disconnected before finishing any frame; frame {} is "
+                             "waiting for it",
+                             name(server), *f);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int server) const {
+  for (const auto& entry : frames_) {
+    if (waits_for(servers_[server], entry.first)) return entry.first;
+  }
+  return std::nullopt;
+}
+
+bool FrameAssembler::all_done() const {
+  for (const Server& s : servers_) {
+    if (!s.connected || !s.closed) return false;
+  }
+  return frames_.empty();
+}
+
+std::vector<ComposedFrame> FrameAssembler::take_complete() {
+  std::vector<ComposedFrame> out;
+  while (!frames_.empty()) {
+    auto it = frames_.begin();
+    for (const Server& s : servers_) {
+      if (waits_for(s, it->first)) return out;
+    }
+    out.push_back(compose(it->first, it->second));
+    for (const auto& server_tiles : it->second.tiles) {
+      for (const ReceivedTile& t : server_tiles) buffered_bytes_ -= t.pixels.size();
+    }
+    last_composed_ = it->first;
+    frames_.erase(it);
+  }
+  return out;
+}
+
+ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) const {
+  ComposedFrame out;
+  out.frame = number;
+  out.displays.reserve(sizes_.size());
+  for (const auto& [w, h] : sizes_) out.displays.emplace_back(w, h, background_);
+  // Lower pipeservers first, each in arrival order: later writes win, as on the pixel bus.
+  for (auto& server_tiles : frame.tiles) {
+    for (ReceivedTile& t : server_tiles) {
+      compose_tile(out.displays, t.header, t.pixels.data(), std::size_t{t.header.w} * 3,
+                   out.counts);
+      ++out.tiles;
+    }
+  }
+  return out;
+}
+
+}  // namespace l2::viz

@@ -1,0 +1,384 @@
+#include "server_loop.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace l2::viz {
+namespace {
+
+constexpr int kTickMs = 50;                    // timers are checked at least this often
+constexpr std::size_t kReadBudget = 8u << 20;  // per connection per round: fairness
+
+double seconds(std::chrono::milliseconds ms) {
+  return static_cast<double>(ms.count()) / 1000.0;
+}
+
+}  // namespace
+
+ServerLoop::ServerLoop(const ServerOptions& options, Fd listener, std::uint16_t port,
+                       std::shared_ptr<ServerShared> shared,
+                       std::function<void(const FramePtr&)> on_swap)
+    : options_(options),
+      listener_(std::move(listener)),
+      port_(port),
+      shared_(std::move(shared)),
+      on_swap_(std::move(on_swap)),
+      assembler_(options.display_sizes, options.servers, options.background,
+                 options.max_buffered_bytes) {
+  int fds[2];
+  if (::pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) {
+    throw VizError(fmt::format("vizserver: pipe failed: {}", std::strerror(errno)));
+  }
+  wake_read_ = Fd(fds[0]);
+  wake_write_ = Fd(fds[1]);
+  started_ = Clock::now();
+  thread_ = std::thread([this] { run(); });
+}
+
+ServerLoop::~ServerLoop() {
+  stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+void ServerLoop::stop() {
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t n = ::write(wake_write_.get(), &byte, 1);
+}
+
+void ServerLoop::run() {
+  std::vector<pollfd> fds;
+  for (;;) {
+    fds.clear();
+    fds.push_back({wake_read_.get(), POLLIN, 0});
+    fds.push_back({listener_.get(), POLLIN, 0});
+    for (const auto& c : conns_) {
+      const short events = static_cast<short>(POLLIN | (c->out_sent < c->out.size() ? POLLOUT : 0));
+      fds.push_back({c->fd.get(), events, 0});
+    }
+    const int rc = ::poll(fds.data(), fds.size(), kTickMs);
+    if (rc < 0 && errno != EINTR) {
+      fail(fmt::format("vizserver: poll failed: {}", std::strerror(errno)));
+    }
+    if (rc > 0 && (fds[0].revents & POLLIN)) break;  // stop()
+    if (rc > 0 && (fds[1].revents & POLLIN)) accept_all();
+    // conns_ may have grown in accept_all; only the ones polled have revents.
+    for (std::size_t i = 2; i < fds.size() && !failure_; ++i) {
+      Connection& c = *conns_[i - 2];
+      const short ev = fds[i].revents;
+      if (!c.dead && (ev & POLLOUT)) flush(c);
+      if (!c.dead && (ev & (POLLIN | POLLHUP | POLLERR))) read_some(c);
+    }
+    if (!failure_) publish_swaps();
+    if (!failure_) check_timers(Clock::now());
+    std::erase_if(conns_, [](const auto& c) { return c->dead; });
+    if (failure_) break;
+    if (assembler_.all_done()) {
+      std::lock_guard lock(shared_->mutex);
+      shared_->all_left = true;
+      break;
+    }
+  }
+  shut_down();
+}
+
+void ServerLoop::accept_all() {
+  for (;;) {
+    Fd fd(::accept4(listener_.get(), nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC));
+    if (!fd) {
+      if (errno == EINTR) continue;
+      return;  // EAGAIN, or a connection that vanished before we took it
+    }
+    set_nodelay(fd.get());
+    auto c = std::make_unique<Connection>();
+    c->peer = peer_name(fd.get());
+    c->fd = std::move(fd);
+    c->last_activity = Clock::now();
+    conns_.push_back(std::move(c));
+  }
+}
+
+std::string ServerLoop::who(const Connection& c) const {
+  return c.server >= 0 ? fmt::format("pipeserver {} ({})", c.server, c.peer)
+                       : fmt::format("connection from {}", c.peer);
+}
+
+void ServerLoop::read_some(Connection& c) {
+  std::size_t budget = kReadBudget;
+  while (!c.dead && budget > 0) {
+    std::uint8_t* dst;
+    std::size_t want;
+    if (c.head_got < c.head_need) {
+      dst = c.head.data() + c.head_got;
+      want = c.head_need - c.head_got;
+    } else {
+      dst = c.body.data() + c.body_got;
+      want = c.body.size() - c.body_got;
+    }
+    const ssize_t n = ::recv(c.fd.get(), dst, std::min(want, budget), 0);
+    if (n == 0 || (n < 0 && errno == ECONNRESET)) {
+      close(c, c.header ? std::optional<std::string>(
+                              fmt::format("{} closed the connection in the middle of a {} "
+                                          "message",
+                                          who(c), kind_name(c.header->kind)))
+                        : std::nullopt);
+      return;
+    }
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) return;
+      close(c, fmt::format("{}: receive failed: {}", who(c), std::strerror(errno)));
+      return;
+    }
+    c.last_activity = Clock::now();
+    budget -= static_cast<std::size_t>(n);
+    if (c.head_got < c.head_need) {
+      c.head_got += static_cast<std::size_t>(n);
+    } else {
+      c.body_got += static_cast<std::size_t>(n);
+    }
+    if (!advance(c)) return;
+  }
+}
+
+bool ServerLoop::advance(Connection& c) {
+  for (;;) {
+    if (!c.header) {
+      if (c.head_got < kHeaderBytes) return true;
+      auto decoded =
+          decode_header(std::span<const std::uint8_t, kHeaderBytes>(c.head.data(), kHeaderBytes));
+      if (auto* bad = std::get_if<std::string>(&decoded)) {
+        close(c, fmt::format("{}: {}", who(c), *bad));
+        return false;
+      }
+      c.header = std::get<Header>(decoded);
+      c.head_need = kHeaderBytes + fixed_bytes(c.header->kind);
+    }
+    if (c.head_got < c.head_need) return true;
+    if (!c.body_ready) {
+      // The fixed part is in: size the variable part from it, checked before allocating.
+      const std::span<const std::uint8_t> fixed(c.head.data() + kHeaderBytes,
+                                                c.head_need - kHeaderBytes);
+      std::size_t variable = 0;
+      if (c.header->kind == Kind::Tile) {
+        c.tile = decode_tile(fixed);
+        if (auto bad = validate(*c.tile, c.header->payload_bytes)) {
+          close(c, fmt::format("{}: {}", who(c), *bad));
+          return false;
+        }
+        variable = c.tile->pixel_bytes();
+      } else if (c.header->kind == Kind::Error) {
+        variable = c.header->payload_bytes;
+      }
+      c.body.resize(variable);
+      c.body_got = 0;
+      c.body_ready = true;
+    }
+    if (c.body_got < c.body.size()) return true;
+    dispatch(c);
+    if (c.dead) return false;
+    c.header.reset();
+    c.tile.reset();
+    c.head_got = 0;
+    c.head_need = kHeaderBytes;
+    c.body_ready = false;
+    c.body.clear();  // a moved-from tile buffer is left empty; clear() keeps it valid
+  }
+}
+
+void ServerLoop::dispatch(Connection& c) {
+  const Kind kind = c.header->kind;
+  const std::span<const std::uint8_t> fixed(c.head.data() + kHeaderBytes,
+                                            c.head_need - kHeaderBytes);
+  if (kind == Kind::Hello) return on_hello(c);
+  if (kind == Kind::Error) {
+    close(c, fmt::format("{} gave up: {}", who(c), std::string(c.body.begin(), c.body.end())));
+    return;
+  }
+  if (c.server < 0) {
+    close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(kind)));
+    return;
+  }
+  std::optional<std::string> error;
+  if (kind == Kind::Tile) {
+    error = assembler_.add_tile(c.server, ReceivedTile{*c.tile, std::move(c.body)});
+  } else if (kind == Kind::FrameDone) {
+    error = assembler_.finish(c.server, decode_frame_done(fixed));
+  } else {
+    error = fmt::format("unexpected {} from a pipeserver", kind_name(kind));
+  }
+  if (error) close(c, fmt::format("{} ({})", *error, c.peer));
+}
+
+void ServerLoop::on_hello(Connection& c) {
+  if (c.server >= 0) {
+    close(c, fmt::format("{}: second HELLO", who(c)));
+    return;
+  }
+  const Hello hello = decode_hello(
+      std::span<const std::uint8_t>(c.head.data() + kHeaderBytes, fixed_bytes(Kind::Hello)));
+  std::optional<std::string> refusal;
+  if (hello.display_count != static_cast<std::uint32_t>(assembler_.display_count())) {
+    refusal = fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
+                          hello.server_id, hello.display_count, assembler_.display_count());
+  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.server_count())) {
+    refusal = fmt::format("pipeserver id {} is outside 0..{}", hello.server_id,
+                          assembler_.server_count() - 1);
+  } else {
+    refusal = assembler_.connect(static_cast<int>(hello.server_id));
+  }
+  if (refusal) {
+    // A stray or misconfigured peer is turned away with the reason; the run goes on.
+    const std::string line = fmt::format("{}: refused: {}", who(c), *refusal);
+    send_error(c, *refusal);
+    log_error(line);
+    close(c, std::nullopt);
+    return;
+  }
+  c.server = static_cast<int>(hello.server_id);
+  ++hellos_;
+  const auto welcome = encode(Welcome{hello.server_id, hello.display_count,
+                                      static_cast<std::uint32_t>(assembler_.server_count())});
+  queue(c, welcome);
+}
+
+void ServerLoop::queue(Connection& c, std::span<const std::uint8_t> bytes) {
+  if (c.out_sent == c.out.size()) {
+    c.out.clear();
+    c.out_sent = 0;
+  }
+  c.out.append(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  flush(c);
+}
+
+void ServerLoop::flush(Connection& c) {
+  while (c.out_sent < c.out.size()) {
+    const ssize_t n =
+        ::send(c.fd.get(), c.out.data() + c.out_sent, c.out.size() - c.out_sent, MSG_NOSIGNAL);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) return;
+      // The peer is gone; reading will see it and report with the frame in question.
+      c.out.clear();
+      c.out_sent = 0;
+      return;
+    }
+    c.out_sent += static_cast<std::size_t>(n);
+  }
+}
+
+// Best effort, never blocks: the peer gets the reason if its socket has room.
+void ServerLoop::send_error(Connection& c, const std::string& text) {
+  const std::string body = text.substr(0, kMaxErrorText);
+  const auto head = encode_error_header(body.size());
+  queue(c, head);
+  queue(c, std::span(reinterpret_cast<const std::uint8_t*>(body.data()), body.size()));
+}
+
+void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) {
+  if (c.dead) return;
+  if (reason) {
+    send_error(c, *reason);
+    // Closing with unread input makes the kernel send RST, which can overtake the ERROR just
+    // queued; finish our side and swallow what is already here first (bounded).
+    ::shutdown(c.fd.get(), SHUT_WR);
+    std::uint8_t scratch[4096];
+    for (int i = 0; i < 256 && ::recv(c.fd.get(), scratch, sizeof scratch, MSG_DONTWAIT) > 0; ++i) {
+    }
+  }
+  c.dead = true;
+  c.fd.reset();
+  if (c.server >= 0) {
+    auto waiting = assembler_.disconnect(c.server);
+    if (reason) {
+      fail(*reason);
+    } else if (waiting) {
+      fail(fmt::format("{} ({})", *waiting, c.peer));
+    }
+  } else if (reason) {
+    log_error(*reason);  // never said HELLO: not one of ours, the run goes on
+  }
+}
+
+void ServerLoop::log_error(const std::string& line) {
+  std::lock_guard lock(shared_->mutex);
+  shared_->errors.push_back(line);
+}
+
+void ServerLoop::fail(const std::string& line) {
+  if (failure_) return;
+  failure_ = line;
+  log_error(line);
+}
+
+void ServerLoop::publish_swaps() {
+  for (ComposedFrame& composed : assembler_.take_complete()) {
+    auto frame = std::make_shared<const ComposedFrame>(std::move(composed));
+    {
+      std::lock_guard lock(shared_->mutex);
+      shared_->counts += frame->counts;
+      shared_->last_swapped = frame->frame;
+      shared_->kept.push_back(frame);
+      while (shared_->kept.size() > std::max<std::size_t>(options_.keep_frames, 1)) {
+        shared_->kept.pop_front();
+      }
+    }
+    shared_->changed.notify_all();
+    const auto ack = encode(Swapped{frame->frame});
+    for (auto& c : conns_) {
+      if (!c->dead && c->server >= 0) queue(*c, ack);
+    }
+    if (on_swap_) on_swap_(frame);
+  }
+}
+
+void ServerLoop::check_timers(Clock::time_point now) {
+  if (hellos_ < assembler_.server_count() && options_.accept_timeout.count() > 0 &&
+      now - started_ > options_.accept_timeout) {
+    fail(fmt::format("only {} of {} pipeservers said HELLO within {:.1f} s (listening on {}:{})",
+                     hellos_, assembler_.server_count(), seconds(options_.accept_timeout),
+                     options_.host, port_));
+    return;
+  }
+  if (options_.stall_timeout.count() <= 0) return;
+  for (auto& c : conns_) {
+    if (c->dead || c->server < 0) continue;
+    const auto waiting = assembler_.frame_waiting_for(c->server);
+    if (waiting != c->waiting_frame) {
+      c->waiting_frame = waiting;
+      c->waiting_since = now;
+    }
+    if (!waiting) continue;
+    const auto quiet_since = std::max(c->waiting_since, c->last_activity);
+    if (now - quiet_since > options_.stall_timeout) {
+      fail(fmt::format("{} sent nothing for {:.1f} s while frame {} waits for it", who(*c),
+                       seconds(options_.stall_timeout), *waiting));
+      return;
+    }
+  }
+}
+
+void ServerLoop::shut_down() {
+  for (auto& c : conns_) {
+    if (c->dead) continue;
+    if (failure_) send_error(*c, *failure_);
+    ::shutdown(c->fd.get(), SHUT_WR);  // deliver what is queued, then FIN
+    c->fd.reset();
+  }
+  conns_.clear();
+  listener_.reset();
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->failure = failure_;
+    shared_->ended = true;
+  }
+  shared_->changed.notify_all();
+}
+
+}  // namespace l2::viz

@@ -1,0 +1,97 @@
+// The compositing server's network loop: one thread, one poll() over the listening socket, a
+// wake-up pipe and every connection. It owns all sockets and the FrameAssembler; what callers
+// may see goes through ServerShared under its mutex.
+#pragma once
+
+#include <array>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "vizserver/compositing_server.hpp"
+#include "vizserver/frame_assembler.hpp"
+#include "vizserver/socket.hpp"
+#include "vizserver/wire.hpp"
+
+namespace l2::viz {
+
+struct ServerShared {
+  mutable std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<FramePtr> kept;  // the last keep_frames swapped frames
+  std::optional<std::uint32_t> last_swapped;
+  std::optional<std::string> failure;
+  std::vector<std::string> errors;
+  StripErrorCounts counts;
+  bool ended = false;     // the loop has returned
+  bool all_left = false;  // ... because every pipeserver finished and disconnected
+};
+
+class ServerLoop {
+ public:
+  ServerLoop(const ServerOptions& options, Fd listener, std::uint16_t port,
+             std::shared_ptr<ServerShared> shared, std::function<void(const FramePtr&)> on_swap);
+  ~ServerLoop();  // stops and joins
+
+  void stop();
+
+ private:
+  // One peer. Reads go header (12 bytes) -> fixed part -> variable part (pixels, text), each
+  // into its final buffer, so a tile's pixels are received once and never copied again.
+  struct Connection {
+    Fd fd;
+    std::string peer;
+    int server = -1;  // pipeserver id once HELLO was accepted
+    std::array<std::uint8_t, kHeaderBytes + kMaxFixedBytes> head{};
+    std::size_t head_got = 0, head_need = kHeaderBytes;
+    std::optional<Header> header;
+    std::optional<TileHeader> tile;
+    std::vector<std::uint8_t> body;
+    std::size_t body_got = 0;
+    bool body_ready = false;
+    std::string out;  // queued server -> peer bytes
+    std::size_t out_sent = 0;
+    Clock::time_point last_activity;
+    std::optional<std::uint32_t> waiting_frame;  // the frame last seen waiting for it
+    Clock::time_point waiting_since;
+    bool dead = false;
+  };
+
+  void run();
+  void accept_all();
+  void read_some(Connection& c);
+  bool advance(Connection& c);  // parse what arrived; false when the connection was closed
+  void dispatch(Connection& c);
+  void on_hello(Connection& c);
+  void flush(Connection& c);
+  void queue(Connection& c, std::span<const std::uint8_t> bytes);
+  void send_error(Connection& c, const std::string& text);
+  // Closes c. With a reason: a protocol error (ends the run if c is a pipeserver).
+  void close(Connection& c, const std::optional<std::string>& reason);
+  void fail(const std::string& line);
+  void log_error(const std::string& line);
+  std::string who(const Connection& c) const;
+  void publish_swaps();
+  void check_timers(Clock::time_point now);
+  void shut_down();
+
+  ServerOptions options_;
+  Fd listener_;
+  std::uint16_t port_;
+  std::shared_ptr<ServerShared> shared_;
+  std::function<void(const FramePtr&)> on_swap_;
+  FrameAssembler assembler_;
+  std::vector<std::unique_ptr<Connection>> conns_;
+  int hellos_ = 0;
+  std::optional<std::string> failure_;
+  Clock::time_point started_;
+  Fd wake_read_, wake_write_;
+  std::thread thread_;
+};
+
+}  // namespace l2::viz

@@ -1,0 +1,122 @@
+#include "vizserver/tile_sender.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vizserver/wire.hpp"
+
+namespace l2::viz {
+namespace {
+
+iovec part(const void* p, std::size_t n) {
+  return {const_cast<void*>(p), n};
+}
+
+}  // namespace
+
+TileSender::TileSender(Fd fd, std::string peer, int server_id, SenderOptions options)
+    : fd_(std::move(fd)), peer_(std::move(peer)), server_id_(server_id), options_(options) {}
+
+TileSender TileSender::connect(const std::string& host, std::uint16_t port, int server_id,
+                               int display_count, SenderOptions options) {
+  if (server_id < 0 || display_count < 0) {
+    throw std::invalid_argument("TileSender: negative pipeserver id or display count");
+  }
+  Fd fd = connect_tcp(host, port, options.connect_timeout);
+  TileSender s(std::move(fd), fmt::format("compositing server {}:{}", host, port), server_id,
+               options);
+  const auto hello = encode(
+      Hello{static_cast<std::uint32_t>(server_id), static_cast<std::uint32_t>(display_count)});
+  const iovec parts[] = {part(hello.data(), hello.size())};
+  s.send(parts);
+  const auto deadline = Clock::now() + options.io_timeout;
+  while (!s.welcomed_) s.read_message(deadline, "WELCOME");
+  return s;
+}
+
+void TileSender::send(std::span<const iovec> parts) {
+  try {
+    send_all(fd_.get(), parts, Clock::now() + options_.io_timeout, peer_);
+  } catch (const VizError&) {
+    // The server may have said why it closed us before it did: prefer its words.
+    try {
+      while (server_error_.empty()) {
+        read_message(Clock::now() + std::chrono::milliseconds(200), "its reason");
+      }
+    } catch (const VizError&) {
+    }
+    if (!server_error_.empty()) throw VizError(fmt::format("{}: {}", peer_, server_error_));
+    throw;
+  }
+}
+
+void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::uint8_t* rgb,
+                           std::size_t stride) {
+  if (t.w < 1 || t.w > kMaxTileSide || t.h < 1 || t.h > kMaxTileSide || t.display < 0) {
+    throw std::invalid_argument(
+        fmt::format("send_tile: tile {}x{} on display {}: sides must "
+                    "be 1..{}",
+                    t.w, t.h, t.display, kMaxTileSide));
+  }
+  const TileHeader h{frame, static_cast<std::uint32_t>(t.display), t.x,
+                     t.y,   static_cast<std::uint32_t>(t.w),       static_cast<std::uint32_t>(t.h)};
+  const auto head = encode(h);
+  const std::size_t row_bytes = static_cast<std::size_t>(t.w) * 3;
+  std::vector<iovec> parts;
+  parts.push_back(part(head.data(), head.size()));
+  if (stride == row_bytes) {
+    parts.push_back(part(rgb, row_bytes * static_cast<std::size_t>(t.h)));
+  } else {
+    parts.reserve(1 + static_cast<std::size_t>(t.h));
+    for (int r = 0; r < t.h; ++r) parts.push_back(part(rgb + r * stride, row_bytes));
+  }
+  send(parts);
+}
+
+void TileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) {
+  const auto msg = encode(FrameDone{static_cast<std::uint32_t>(server_id_), frame, tiles_sent});
+  const iovec parts[] = {part(msg.data(), msg.size())};
+  send(parts);
+}
+
+void TileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  const std::string what = fmt::format("SWAPPED for frame {}", frame);
+  while (!last_swapped_ || *last_swapped_ < frame) read_message(deadline, what.c_str());
+}
+
+void TileSender::read_message(Clock::time_point deadline, const char* waiting_for) {
+  std::uint8_t buf[kHeaderBytes + kMaxFixedBytes];
+  try {
+    recv_all(fd_.get(), buf, kHeaderBytes, deadline, peer_);
+  } catch (const VizError& e) {
+    throw VizError(fmt::format("{} (waiting for {})", e.what(), waiting_for));
+  }
+  const auto decoded =
+      decode_header(std::span<const std::uint8_t, kHeaderBytes>(buf, kHeaderBytes));
+  if (const auto* bad = std::get_if<std::string>(&decoded)) {
+    throw VizError(fmt::format("{}: {}", peer_, *bad));
+  }
+  const Header header = std::get<Header>(decoded);
+  if (header.kind == Kind::Error) {
+    std::string text(header.payload_bytes, '\0');
+    recv_all(fd_.get(), reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer_);
+    server_error_ = text;
+    throw VizError(fmt::format("{}: {}", peer_, text));
+  }
+  const std::size_t fixed = fixed_bytes(header.kind);
+  recv_all(fd_.get(), buf + kHeaderBytes, fixed, deadline, peer_);
+  const std::span<const std::uint8_t> body(buf + kHeaderBytes, fixed);
+  if (header.kind == Kind::Swapped) {
+    last_swapped_ = decode_swapped(body).frame;
+  } else if (header.kind == Kind::Welcome && !welcomed_) {
+    welcomed_ = true;
+  } else {
+    throw VizError(fmt::format("{}: unexpected {} message", peer_, kind_name(header.kind)));
+  }
+}
+
+}  // namespace l2::viz

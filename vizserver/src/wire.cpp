@@ -1,0 +1,184 @@
+#include "vizserver/wire.hpp"
+
+#include <fmt/format.h>
+
+namespace l2::viz {
+namespace {
+
+constexpr std::size_t kMaxTilePayload =
+    24 + std::size_t{kMaxTileSide} * kMaxTileSide * 3;  // about 48 MiB: one 4095x4095 tile
+
+void put_header(std::uint8_t* p, Kind kind, std::size_t payload_bytes) {
+  put_u32(p, kMagic);
+  put_u16(p + 4, kVersion);
+  put_u16(p + 6, static_cast<std::uint16_t>(kind));
+  put_u32(p + 8, static_cast<std::uint32_t>(payload_bytes));
+}
+
+template <std::size_t Fixed>
+std::array<std::uint8_t, kHeaderBytes + Fixed> start(Kind kind, std::size_t extra = 0) {
+  std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
+  put_header(out.data(), kind, Fixed + extra);
+  return out;
+}
+
+bool known_kind(std::uint16_t k) {
+  return k >= 1 && k <= 6;
+}
+
+}  // namespace
+
+void put_u16(std::uint8_t* p, std::uint16_t v) {
+  p[0] = static_cast<std::uint8_t>(v);
+  p[1] = static_cast<std::uint8_t>(v >> 8);
+}
+void put_u32(std::uint8_t* p, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+std::uint16_t get_u16(const std::uint8_t* p) {
+  return static_cast<std::uint16_t>(p[0] | (p[1] << 8));
+}
+std::uint32_t get_u32(const std::uint8_t* p) {
+  return std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+         std::uint32_t{p[3]} << 24;
+}
+
+std::size_t fixed_bytes(Kind kind) {
+  switch (kind) {
+    case Kind::Hello:
+      return 8;
+    case Kind::Welcome:
+      return 12;
+    case Kind::Tile:
+      return 24;
+    case Kind::FrameDone:
+      return 12;
+    case Kind::Swapped:
+      return 4;
+    case Kind::Error:
+      return 0;
+  }
+  return 0;
+}
+
+const char* kind_name(Kind kind) {
+  switch (kind) {
+    case Kind::Hello:
+      return "HELLO";
+    case Kind::Welcome:
+      return "WELCOME";
+    case Kind::Tile:
+      return "TILE";
+    case Kind::FrameDone:
+      return "FRAME_DONE";
+    case Kind::Swapped:
+      return "SWAPPED";
+    case Kind::Error:
+      return "ERROR";
+  }
+  return "?";
+}
+
+std::array<std::uint8_t, kHeaderBytes + 8> encode(const Hello& m) {
+  auto out = start<8>(Kind::Hello);
+  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 16, m.display_count);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m) {
+  auto out = start<12>(Kind::Welcome);
+  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 16, m.display_count);
+  put_u32(out.data() + 20, m.server_count);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m) {
+  auto out = start<24>(Kind::Tile, m.pixel_bytes());
+  std::uint8_t* p = out.data() + 12;
+  put_u32(p, m.frame);
+  put_u32(p + 4, m.display);
+  put_u32(p + 8, static_cast<std::uint32_t>(m.dx));
+  put_u32(p + 12, static_cast<std::uint32_t>(m.dy));
+  put_u32(p + 16, m.w);
+  put_u32(p + 20, m.h);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m) {
+  auto out = start<12>(Kind::FrameDone);
+  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 16, m.frame);
+  put_u32(out.data() + 20, m.tile_count);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 4> encode(const Swapped& m) {
+  auto out = start<4>(Kind::Swapped);
+  put_u32(out.data() + 12, m.frame);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes> encode_error_header(std::size_t text_bytes) {
+  return start<0>(Kind::Error, std::min(text_bytes, kMaxErrorText));
+}
+
+std::variant<Header, std::string> decode_header(std::span<const std::uint8_t, kHeaderBytes> b) {
+  const std::uint32_t magic = get_u32(b.data());
+  if (magic != kMagic) {
+    return fmt::format("bad magic 0x{:08x}, expected 0x{:08x} (not a vizserver peer?)", magic,
+                       kMagic);
+  }
+  const std::uint16_t version = get_u16(b.data() + 4);
+  if (version != kVersion) {
+    return fmt::format("protocol version {}, this build speaks {}", version, kVersion);
+  }
+  const std::uint16_t raw_kind = get_u16(b.data() + 6);
+  if (!known_kind(raw_kind)) return fmt::format("unknown message kind {}", raw_kind);
+  const Header h{static_cast<Kind>(raw_kind), get_u32(b.data() + 8)};
+  const std::size_t fixed = fixed_bytes(h.kind);
+  const std::size_t max = h.kind == Kind::Tile    ? kMaxTilePayload
+                          : h.kind == Kind::Error ? kMaxErrorText
+                                                  : fixed;
+  if (h.payload_bytes < fixed || h.payload_bytes > max) {
+    return fmt::format("{} payload of {} bytes, allowed {}..{}", kind_name(h.kind), h.payload_bytes,
+                       fixed, max);
+  }
+  return h;
+}
+
+Hello decode_hello(std::span<const std::uint8_t> f) {
+  return {get_u32(f.data()), get_u32(f.data() + 4)};
+}
+Welcome decode_welcome(std::span<const std::uint8_t> f) {
+  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
+}
+TileHeader decode_tile(std::span<const std::uint8_t> f) {
+  const std::uint8_t* p = f.data();
+  return {get_u32(p),
+          get_u32(p + 4),
+          static_cast<std::int32_t>(get_u32(p + 8)),
+          static_cast<std::int32_t>(get_u32(p + 12)),
+          get_u32(p + 16),
+          get_u32(p + 20)};
+}
+FrameDone decode_frame_done(std::span<const std::uint8_t> f) {
+  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
+}
+Swapped decode_swapped(std::span<const std::uint8_t> f) {
+  return {get_u32(f.data())};
+}
+
+std::optional<std::string> validate(const TileHeader& t, std::uint32_t payload_bytes) {
+  if (t.w < 1 || t.w > kMaxTileSide || t.h < 1 || t.h > kMaxTileSide) {
+    return fmt::format("TILE of {}x{} pixels, each side must be 1..{}", t.w, t.h, kMaxTileSide);
+  }
+  if (payload_bytes != 24 + t.pixel_bytes()) {
+    return fmt::format("TILE {}x{} needs a payload of {} bytes, header says {}", t.w, t.h,
+                       24 + t.pixel_bytes(), payload_bytes);
+  }
+  return std::nullopt;
+}
+
+}  // namespace l2::viz

@@ -1,0 +1,146 @@
+#include "vizserver/frame_assembler.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace l2::viz {
+namespace {
+
+using ::testing::HasSubstr;
+
+ReceivedTile solid(std::uint32_t frame, int display, int x, int y, int w, int h, Rgb c) {
+  ReceivedTile t{TileHeader{frame, static_cast<std::uint32_t>(display), x, y,
+                            static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)},
+                 {}};
+  for (int i = 0; i < w * h; ++i) t.pixels.insert(t.pixels.end(), {c.r, c.g, c.b});
+  return t;
+}
+
+constexpr Rgb kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255};
+
+class Assembler : public ::testing::Test {
+ protected:
+  FrameAssembler a{{{8, 4}, {4, 4}}, 2};
+  void SetUp() override {
+    ASSERT_FALSE(a.connect(0));
+    ASSERT_FALSE(a.connect(1));
+  }
+};
+
+TEST_F(Assembler, HigherPipeserverWinsWhateverTheArrivalOrder) {
+  // Pipeserver 1's tile arrives first and is finished first; 0's arrives later over it.
+  ASSERT_FALSE(a.add_tile(1, solid(0, 0, 2, 0, 4, 2, kRed)));
+  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 1}));
+  EXPECT_TRUE(a.take_complete().empty());  // 0 has not finished
+  ASSERT_FALSE(a.add_tile(0, solid(0, 0, 0, 0, 4, 4, kGreen)));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 1}));
+  const auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  const RgbImage& d = frames[0].displays[0];
+  EXPECT_EQ(d.at(1, 1), kGreen);  // only 0 covers it
+  EXPECT_EQ(d.at(2, 0), kRed);    // overlap: 1 wins
+  EXPECT_EQ(d.at(3, 1), kRed);
+  EXPECT_EQ(d.at(3, 2), kGreen);  // below 1's tile
+  EXPECT_EQ(d.at(5, 1), kRed);
+  EXPECT_EQ(d.at(6, 0), (Rgb{}));  // nobody: black background
+  EXPECT_EQ(frames[0].tiles, 2u);
+  EXPECT_EQ(frames[0].displays[1], RgbImage(4, 4));
+}
+
+TEST_F(Assembler, WithinOnePipeserverTheLaterTileWins) {
+  ASSERT_FALSE(a.add_tile(0, solid(0, 1, 0, 0, 2, 2, kRed)));
+  ASSERT_FALSE(a.add_tile(0, solid(0, 1, 1, 1, 2, 2, kBlue)));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 2}));
+  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 0}));
+  const auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].displays[1].at(0, 0), kRed);
+  EXPECT_EQ(frames[0].displays[1].at(1, 1), kBlue);
+  EXPECT_EQ(frames[0].displays[1].at(2, 2), kBlue);
+}
+
+TEST_F(Assembler, ClipsAndMissingDisplaysAreCountedPerFrame) {
+  ASSERT_FALSE(a.add_tile(0, solid(3, 1, 2, 3, 4, 2, kRed)));  // 2 of 4 columns, 1 of 2 rows
+  ASSERT_FALSE(a.add_tile(0, solid(3, 9, 0, 0, 1, 5, kRed)));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 3, 2}));
+  ASSERT_FALSE(a.finish(1, FrameDone{1, 3, 0}));
+  const auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].frame, 3u);
+  EXPECT_EQ(frames[0].counts.clips, 2u);
+  EXPECT_EQ(frames[0].counts.missing_display, 5u);
+  EXPECT_EQ(frames[0].displays[1].at(3, 3), kRed);
+  EXPECT_EQ(a.buffered_bytes(), 0u);
+}
+
+TEST_F(Assembler, FramesCompleteInOrderAndASkippedNumberMeansNoTiles) {
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
+  ASSERT_FALSE(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 1, 1}));
+  ASSERT_FALSE(a.finish(1, FrameDone{1, 1, 0}));  // 1 skipped frame 0
+  const auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].frame, 0u);
+  EXPECT_EQ(frames[1].frame, 1u);
+  EXPECT_EQ(frames[1].displays[0].at(0, 0), kRed);
+  EXPECT_EQ(a.last_composed(), 1u);
+}
+
+TEST_F(Assembler, ProtocolViolationsAreNamed) {
+  EXPECT_THAT(a.finish(0, FrameDone{0, 0, 2}).value_or(""),
+              HasSubstr("pipeserver 0: FRAME_DONE for frame 0 announces 2 tiles, 0 arrived"));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 5, 0}));
+  EXPECT_THAT(a.add_tile(0, solid(4, 0, 0, 0, 1, 1, kRed)).value_or(""),
+              HasSubstr("pipeserver 0: TILE for frame 4 after its FRAME_DONE for frame 5"));
+  ASSERT_FALSE(a.add_tile(1, solid(6, 0, 0, 0, 1, 1, kRed)));
+  EXPECT_THAT(a.add_tile(1, solid(7, 0, 0, 0, 1, 1, kRed)).value_or(""),
+              HasSubstr("pipeserver 1: TILE for frame 7 while frame 6 has no FRAME_DONE"));
+  EXPECT_THAT(a.finish(1, FrameDone{0, 6, 1}).value_or(""),
+              HasSubstr("pipeserver 1: FRAME_DONE names pipeserver 0"));
+  EXPECT_THAT(a.connect(1).value_or(""), HasSubstr("pipeserver 1 is already connected"));
+  EXPECT_THAT(a.connect(2).value_or(""), HasSubstr("outside 0..1"));
+}
+
+TEST_F(Assembler, DisconnectDuringAFrameNamesServerAndFrame) {
+  ASSERT_FALSE(a.add_tile(1, solid(2, 0, 0, 0, 1, 1, kRed)));
+  EXPECT_EQ(a.frame_waiting_for(0), 2u);
+  EXPECT_EQ(a.disconnect(1).value_or(""),
+            "pipeserver 1 disconnected during frame 2 (1 tiles received, no FRAME_DONE)");
+}
+
+TEST_F(Assembler, DisconnectBetweenFramesFailsOnlyWhenAFrameNeedsIt) {
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
+  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 0}));
+  EXPECT_EQ(a.take_complete().size(), 1u);
+  EXPECT_FALSE(a.disconnect(1));
+  EXPECT_THAT(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)).value_or(""),
+              HasSubstr("frame 1 can never complete: pipeserver 1 disconnected after frame 0"));
+  EXPECT_FALSE(a.disconnect(0));
+  EXPECT_TRUE(a.all_done());
+}
+
+TEST_F(Assembler, DisconnectWhileAnotherFrameWaitsIsAnError) {
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
+  EXPECT_EQ(a.disconnect(1).value_or(""),
+            "pipeserver 1 disconnected before finishing any frame; frame 0 is waiting for it");
+}
+
+TEST(AssemblerLimits, BufferedBytesAreBounded) {
+  FrameAssembler a({{8, 8}}, 2, {}, 100);
+  ASSERT_FALSE(a.connect(0));
+  ASSERT_FALSE(a.add_tile(0, solid(0, 0, 0, 0, 5, 5, kRed)));  // 75 bytes
+  EXPECT_THAT(a.add_tile(0, solid(0, 0, 0, 0, 3, 3, kRed)).value_or(""),
+              HasSubstr("tiles buffered waiting for frame 0"));
+}
+
+TEST(AssemblerLimits, BackgroundColourFillsUnwrittenPixels) {
+  FrameAssembler a({{2, 2}}, 1, Rgb{1, 2, 3});
+  ASSERT_FALSE(a.connect(0));
+  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
+  const auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].displays[0], RgbImage(2, 2, Rgb{1, 2, 3}));
+}
+
+}  // namespace
+}  // namespace l2::viz

@@ -1,0 +1,159 @@
+// Pipeservers and the server as real processes: one killed with SIGKILL mid-frame, two
+// composing one frame, and the vizserver executable writing PNGs.
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "child_process.hpp"
+#include "image/png_io.hpp"
+#include "vizserver/compositing_server.hpp"
+#include "vizserver/tile_sender.hpp"
+
+namespace l2::viz {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::ChildProcess;
+using ::testing::HasSubstr;
+
+ServerOptions options(std::vector<std::pair<int, int>> sizes, int servers) {
+  ServerOptions o;
+  o.display_sizes = std::move(sizes);
+  o.servers = servers;
+  o.accept_timeout = 5000ms;
+  o.stall_timeout = 5000ms;
+  return o;
+}
+
+std::vector<std::string> client(std::uint16_t port, int id, int displays, int frame,
+                                std::vector<std::string> rest) {
+  std::vector<std::string> args = {VIZSERVER_TEST_CLIENT, std::to_string(port), std::to_string(id),
+                                   std::to_string(displays), std::to_string(frame)};
+  args.insert(args.end(), rest.begin(), rest.end());
+  return args;
+}
+
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / fmt::format("vizserver-{}-{}", name, ::getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
+  CompositingServer server(options({{16, 16}}, 2));
+  server.start();
+  auto s0 = TileSender::connect("127.0.0.1", server.port(), 0, 1);
+  ChildProcess child(client(server.port(), 1, 1, 0, {"--hang", "0,0,0,4,4,ff0000"}));
+  ASSERT_EQ(child.read_line(5000ms), "sent");
+  child.kill(SIGKILL);
+  ASSERT_EQ(child.wait(2000ms), 128 + SIGKILL);
+  const auto t0 = Clock::now();
+  try {
+    server.wait_frame(0, 5000ms);
+    FAIL() << "frame 0 swapped";
+  } catch (const VizError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 disconnected during frame 0 (1 tiles "
+                                    "received, no FRAME_DONE) (127.0.0.1:"));
+  }
+  EXPECT_LT(Clock::now() - t0, 1000ms);
+  // The surviving pipeserver learns why instead of waiting out its timeout.
+  try {
+    s0.wait_swapped(0, 3000ms);
+    FAIL() << "frame 0 swapped";
+  } catch (const VizError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 disconnected during frame 0"));
+  }
+}
+
+TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
+  CompositingServer server(options({{8, 4}, {4, 4}}, 2));
+  server.start();
+  ChildProcess c0(client(server.port(), 0, 2, 7, {"0,0,0,6,4,102030", "1,0,0,4,4,405060"}));
+  ChildProcess c1(client(server.port(), 1, 2, 7, {"0,4,0,4,2,708090"}));
+  EXPECT_EQ(c0.read_line(5000ms), "swapped 7");
+  EXPECT_EQ(c1.read_line(5000ms), "swapped 7");
+  EXPECT_EQ(c0.wait(2000ms), 0);
+  EXPECT_EQ(c1.wait(2000ms), 0);
+  const FramePtr f = server.wait_frame(7, 1000ms);
+  RgbImage want0(8, 4), want1(4, 4, Rgb{0x40, 0x50, 0x60});
+  want0.fill_rect(0, 0, 6, 4, Rgb{0x10, 0x20, 0x30});
+  want0.fill_rect(4, 0, 4, 2, Rgb{0x70, 0x80, 0x90});  // pipeserver 1 wins the overlap
+  EXPECT_EQ(f->displays[0], want0);
+  EXPECT_EQ(f->displays[1], want1);
+}
+
+TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
+  const auto dir = fresh_dir("exe");
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--port", "0",
+                    "--frames", "1", "--out", dir.string()});
+  const auto line = exe.read_line(5000ms).value_or("");
+  ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
+  const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
+  auto s = TileSender::connect("127.0.0.1", port, 0, 2);
+  // A 3x2 gradient tile on display 0 taken from inside a 5-pixel-wide framebuffer row.
+  std::vector<std::uint8_t> fb(5 * 2 * 3, 0xEE);
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      std::uint8_t* p = fb.data() + (r * 5 + 1 + c) * 3;
+      p[0] = static_cast<std::uint8_t>(10 * c);
+      p[1] = static_cast<std::uint8_t>(100 + r);
+      p[2] = 5;
+    }
+  }
+  s.send_tile(0, {0, 13, 6, 3, 2}, fb.data() + 3, 15);
+  const std::vector<std::uint8_t> grey(8 * 8 * 3, 128);
+  s.send_tile(0, {1, 0, 0, 8, 8}, grey.data(), 24);
+  s.finish_frame(0, 2);
+  s.wait_swapped(0, 5000ms);
+  EXPECT_EQ(exe.read_line(5000ms),
+            "swapped frame 0: 2 tiles, 0 clipped rows, 0 rows for missing displays");
+  EXPECT_EQ(exe.wait(5000ms), 0);
+  RgbImage want0(16, 8);
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      want0.set(13 + c, 6 + r,
+                Rgb{static_cast<std::uint8_t>(10 * c), static_cast<std::uint8_t>(100 + r), 5});
+    }
+  }
+  EXPECT_EQ(read_png(dir / "display-0-frame-0.png"), want0);
+  EXPECT_EQ(read_png(dir / "display-1-frame-0.png"), RgbImage(8, 8, Rgb{128, 128, 128}));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
+  const auto dir = fresh_dir("dies");
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x8", "--servers", "1", "--frames", "1", "--out",
+                    dir.string()});
+  const auto line = exe.read_line(5000ms).value_or("");
+  ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
+  const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
+  ChildProcess pipeserver(client(port, 0, 1, 0, {"--hang", "0,0,0,2,2,ffffff"}));
+  ASSERT_EQ(pipeserver.read_line(5000ms), "sent");
+  pipeserver.kill(SIGKILL);
+  EXPECT_EQ(exe.wait(3000ms), 1);
+  EXPECT_FALSE(std::filesystem::exists(dir / "display-0-frame-0.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
+  ChildProcess help({VIZSERVER_EXE, "--help"});
+  std::string text;
+  while (auto l = help.read_line(5000ms)) text += *l + "\n";
+  EXPECT_EQ(help.wait(5000ms), 0);
+  for (const char* opt : {"--displays", "--servers", "--port", "--host", "--frames", "--out",
+                          "--accept-timeout", "--stall-timeout"}) {
+    EXPECT_THAT(text, HasSubstr(opt));
+  }
+  ChildProcess bad({VIZSERVER_EXE, "--displays", "16y8", "--servers", "1", "--out", "/tmp/x"});
+  EXPECT_EQ(bad.wait(5000ms), 2);
+}
+
+}  // namespace
+}  // namespace l2::viz

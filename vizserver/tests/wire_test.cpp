@@ -1,0 +1,101 @@
+#include "vizserver/wire.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace l2::viz {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::span<const std::uint8_t, kHeaderBytes> head_of(const std::uint8_t* p) {
+  return std::span<const std::uint8_t, kHeaderBytes>(p, kHeaderBytes);
+}
+
+TEST(Wire, HelloBytesAreLittleEndianWithMagicVersionKindLength) {
+  const auto bytes = encode(Hello{3, 0x01020304});
+  const std::vector<std::uint8_t> expected = {'L', '2', 'V', 'Z', 1, 0, 1,    0,    8,    0,
+                                              0,   0,   3,   0,   0, 0, 0x04, 0x03, 0x02, 0x01};
+  EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), expected);
+}
+
+TEST(Wire, TileHeaderRoundTripsIncludingNegativeOffsets) {
+  const TileHeader t{7, 2, -5, 1200, 640, 3};
+  const auto bytes = encode(t);
+  const auto h = decode_header(head_of(bytes.data()));
+  ASSERT_TRUE(std::holds_alternative<Header>(h));
+  EXPECT_EQ(std::get<Header>(h).kind, Kind::Tile);
+  EXPECT_EQ(std::get<Header>(h).payload_bytes, 24u + 640u * 3u * 3u);
+  const TileHeader back = decode_tile(std::span(bytes).subspan(kHeaderBytes));
+  EXPECT_EQ(back.frame, 7u);
+  EXPECT_EQ(back.display, 2u);
+  EXPECT_EQ(back.dx, -5);
+  EXPECT_EQ(back.dy, 1200);
+  EXPECT_EQ(back.w, 640u);
+  EXPECT_EQ(back.h, 3u);
+  // dx = -5 is 0xFFFFFFFB little-endian at payload offset 8.
+  EXPECT_EQ(bytes[kHeaderBytes + 8], 0xFB);
+  EXPECT_EQ(bytes[kHeaderBytes + 11], 0xFF);
+}
+
+TEST(Wire, FrameDoneAndSwappedRoundTrip) {
+  const auto done = encode(FrameDone{1, 99, 12});
+  const FrameDone d = decode_frame_done(std::span(done).subspan(kHeaderBytes));
+  EXPECT_EQ(d.server_id, 1u);
+  EXPECT_EQ(d.frame, 99u);
+  EXPECT_EQ(d.tile_count, 12u);
+  const auto sw = encode(Swapped{42});
+  EXPECT_EQ(decode_swapped(std::span(sw).subspan(kHeaderBytes)).frame, 42u);
+  const auto w = encode(Welcome{2, 4, 3});
+  const Welcome back = decode_welcome(std::span(w).subspan(kHeaderBytes));
+  EXPECT_EQ(back.server_count, 3u);
+}
+
+TEST(Wire, BadMagicIsNamed) {
+  const std::uint8_t http[kHeaderBytes] = {'G', 'E', 'T', ' ', '/', ' ',
+                                           'H', 'T', 'T', 'P', '/', '1'};
+  const auto h = decode_header(head_of(http));
+  ASSERT_TRUE(std::holds_alternative<std::string>(h));
+  EXPECT_THAT(std::get<std::string>(h), HasSubstr("bad magic 0x20544547"));
+}
+
+TEST(Wire, WrongVersionAndUnknownKindAreRefused) {
+  auto bytes = encode(Swapped{1});
+  bytes[4] = 2;
+  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
+              HasSubstr("protocol version 2"));
+  bytes = encode(Swapped{1});
+  bytes[6] = 9;
+  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
+              HasSubstr("unknown message kind 9"));
+}
+
+TEST(Wire, LengthsAreBoundedPerKindBeforeAnyAllocation) {
+  auto bytes = encode(FrameDone{0, 0, 0});
+  put_u32(bytes.data() + 8, 13);  // FRAME_DONE is exactly 12
+  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
+              HasSubstr("FRAME_DONE payload of 13 bytes, allowed 12..12"));
+  auto tile = encode(TileHeader{0, 0, 0, 0, 1, 1});
+  put_u32(tile.data() + 8, 0xFFFFFFFF);
+  EXPECT_THAT(std::get<std::string>(decode_header(head_of(tile.data()))),
+              HasSubstr("TILE payload of 4294967295 bytes, allowed 24..50307099"));
+  put_u32(tile.data() + 8, 50307099);  // 24 + 4095*4095*3: the largest tile is allowed
+  EXPECT_TRUE(std::holds_alternative<Header>(decode_header(head_of(tile.data()))));
+  const auto err = encode_error_header(5000);
+  EXPECT_EQ(get_u32(err.data() + 8), kMaxErrorText);
+}
+
+TEST(Wire, TilePayloadMustMatchItsSides) {
+  EXPECT_FALSE(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 18).has_value());
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 17).value_or(""),
+              HasSubstr("TILE 2x3 needs a payload of 42 bytes, header says 41"));
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 0, 3}, 24).value_or(""),
+              HasSubstr("each side must be 1..4095"));
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 4096, 1}, 24 + 4096 * 3).value_or(""),
+              HasSubstr("4096x1"));
+}
+
+}  // namespace
+}  // namespace l2::viz
