@@ -1,0 +1,149 @@
+// The DVI link on one machine: a pipeserver's scanned-out frame travels to the emulator through
+// a named POSIX shared-memory segment. One writer (the pipeserver) and one reader (the emulator
+// input) per link. Frames are 24-bit RGB, rows top to bottom (spec §1).
+//
+// Three frame slots form a lock-free triple buffer: the writer owns one slot (the back frame),
+// the reader owns one (the frame it is looking at), and the third holds the latest published
+// frame. publish() and latest() swap slots with one atomic exchange, so the writer never waits
+// and never touches the slot the reader holds: a reader can look at a frame in place, without
+// copying, and it can never be torn. (Two slots cannot give both: the writer would have to wait
+// for the reader, or overwrite the frame under it.)
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace l2 {
+
+class DviLinkError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+inline constexpr int kDviBytesPerPixel = 3;
+inline constexpr int kDviMaxDimension = 8192;
+
+// "/l2-<pid>-<suffix>": segment names owned by this process, so parallel runs and tests never
+// collide. `suffix` must not contain '/'.
+std::string dvi_link_name(std::string_view suffix);
+
+// Removes a segment left behind by a process that died (shm_unlink). Returns true when there
+// was one. Throws DviLinkError for an invalid name or when unlinking fails for another reason
+// than "does not exist".
+bool remove_stale(const std::string& name);
+
+namespace detail {
+struct LinkHeader;
+// A mapping of a whole segment; unmaps on destruction.
+class Mapping {
+ public:
+  Mapping() = default;
+  Mapping(void* base, std::size_t size) : base_(base), size_(size) {}
+  Mapping(Mapping&& other) noexcept;
+  Mapping& operator=(Mapping&& other) noexcept;
+  Mapping(const Mapping&) = delete;
+  Mapping& operator=(const Mapping&) = delete;
+  ~Mapping();
+  LinkHeader& header() const { return *static_cast<LinkHeader*>(base_); }
+  std::uint8_t* bytes() const { return static_cast<std::uint8_t*>(base_); }
+
+ private:
+  void* base_ = nullptr;
+  std::size_t size_ = 0;
+};
+}  // namespace detail
+
+// Pipeserver side. Creates the segment and unlinks it again on destruction.
+class DviLinkWriter {
+ public:
+  // Creates segment `name` for width x height frames, all slots black. If a segment of that
+  // name exists and the process that created it is dead, it is replaced; if that process is
+  // alive this is an error. Errors: DviLinkError "DVI link <name>: ...".
+  static DviLinkWriter create(const std::string& name, int width, int height);
+
+  DviLinkWriter(DviLinkWriter&& other) noexcept;
+  DviLinkWriter& operator=(DviLinkWriter&& other) noexcept;
+  DviLinkWriter(const DviLinkWriter&) = delete;
+  DviLinkWriter& operator=(const DviLinkWriter&) = delete;
+  ~DviLinkWriter();
+
+  // The frame being drawn: height rows of width * 3 bytes, row 0 on top. It keeps the contents
+  // of an older frame (not the one just published), so draw every pixel.
+  std::span<std::uint8_t> back_frame();
+  std::span<std::uint8_t> back_row(int y);
+  // Hands the back frame to the reader and returns its sequence number (1, 2, ...).
+  std::uint64_t publish();
+
+  const std::string& name() const { return name_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t stride() const { return static_cast<std::size_t>(width_) * kDviBytesPerPixel; }
+
+ private:
+  DviLinkWriter() = default;
+  void unlink() noexcept;
+
+  detail::Mapping map_;
+  std::string name_;
+  int width_ = 0;
+  int height_ = 0;
+  int back_ = 0;
+  std::uint64_t sequence_ = 0;
+};
+
+// A published frame, in place in shared memory. Valid until the next latest() or until the
+// reader goes away.
+struct FrameView {
+  const std::uint8_t* pixels = nullptr;
+  std::size_t stride = 0;  // bytes from one row to the next
+  int width = 0;
+  int height = 0;
+  std::uint64_t sequence = 0;  // 1 for the first frame published, then +1 per publish()
+
+  std::span<const std::uint8_t> row(int y) const {
+    return {pixels + static_cast<std::size_t>(y) * stride,
+            static_cast<std::size_t>(width) * kDviBytesPerPixel};
+  }
+};
+
+// Emulator side. One reader per segment at a time.
+class DviLinkReader {
+ public:
+  // Opens an existing segment and checks its header and size. Errors: DviLinkError
+  // "DVI link <name>: ..." (no such segment, not a DVI link, version, size, already has a
+  // live reader).
+  static DviLinkReader open(const std::string& name);
+
+  DviLinkReader(DviLinkReader&& other) noexcept;
+  DviLinkReader& operator=(DviLinkReader&& other) noexcept;
+  DviLinkReader(const DviLinkReader&) = delete;
+  DviLinkReader& operator=(const DviLinkReader&) = delete;
+  ~DviLinkReader();
+
+  // The newest published frame; nullopt before the first publish(). Calling it again without a
+  // new publish returns the same frame (same sequence number).
+  std::optional<FrameView> latest();
+  // Whether the process that created the segment still runs.
+  bool writer_alive() const;
+
+  const std::string& name() const { return name_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  DviLinkReader() = default;
+  void detach() noexcept;
+
+  detail::Mapping map_;
+  std::string name_;
+  int width_ = 0;
+  int height_ = 0;
+  int front_ = 0;
+};
+
+}  // namespace l2

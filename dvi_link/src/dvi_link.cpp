@@ -1,0 +1,372 @@
+#include "dvi_link/dvi_link.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace l2 {
+namespace detail {
+
+// The segment starts with this header, then three frame slots. Only lock-free atomics live in
+// shared memory: a lock-based std::atomic would hide a process-local lock.
+struct LinkHeader {
+  std::atomic<std::uint32_t> magic;  // stored last by the creator: the header is complete
+  std::uint32_t version;
+  std::int32_t width;
+  std::int32_t height;
+  std::int32_t bytes_per_pixel;
+  std::uint32_t writer_slot;  // slot the writer draws into (owned by the writer)
+  std::uint64_t stride;
+  std::uint64_t frame_bytes;
+  std::uint64_t slot_offset;  // of slot 0; slot i at slot_offset + i * slot_pitch
+  std::uint64_t slot_pitch;
+  std::uint64_t total_bytes;
+  std::atomic<std::int32_t> writer_pid;
+  std::atomic<std::int32_t> reader_pid;  // 0: no reader attached
+  // Index of the latest published slot, plus kFresh while the reader has not taken it.
+  std::atomic<std::uint32_t> middle;
+  std::uint32_t reader_slot;             // slot the reader holds (owned by the attached reader)
+  std::atomic<std::uint64_t> published;  // frames published so far
+  // Sequence number of the frame in each slot, written by whoever owns the slot's pixels.
+  std::uint64_t slot_sequence[3];
+};
+
+}  // namespace detail
+
+namespace {
+
+using detail::LinkHeader;
+using detail::Mapping;
+
+static_assert(std::atomic<std::uint32_t>::is_always_lock_free);
+static_assert(std::atomic<std::int32_t>::is_always_lock_free);
+static_assert(std::atomic<std::uint64_t>::is_always_lock_free);
+
+constexpr std::uint32_t kMagic = 0x4C32'4456;  // "L2DV"
+constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kFresh = 4;
+constexpr std::uint32_t kSlotMask = 3;
+constexpr std::uint64_t kHeaderBytes = 4096;  // one page, so slot 0 starts page-aligned
+constexpr std::uint64_t kSlotAlign = 64;
+static_assert(sizeof(LinkHeader) <= kHeaderBytes);
+
+[[noreturn]] void fail(const std::string& name, std::string_view what) {
+  throw DviLinkError(fmt::format("DVI link {}: {}", name, what));
+}
+[[noreturn]] void fail_errno(const std::string& name, std::string_view what, int error) {
+  fail(name, fmt::format("{}: {}", what, std::strerror(error)));
+}
+
+void check_name(const std::string& name) {
+  if (name.size() < 2 || name.size() > 255 || name[0] != '/' ||
+      name.find('/', 1) != std::string::npos) {
+    throw DviLinkError(fmt::format(
+        "DVI link name \"{}\" is invalid: it must be '/' followed by 1 to 254 characters "
+        "without '/'",
+        name));
+  }
+}
+
+bool process_alive(std::int32_t pid) {
+  return pid > 0 && (::kill(pid, 0) == 0 || errno == EPERM);
+}
+
+std::uint64_t slot_pitch(std::uint64_t frame_bytes) {
+  return (frame_bytes + kSlotAlign - 1) / kSlotAlign * kSlotAlign;
+}
+
+Mapping map_fd(const std::string& name, int fd, std::size_t size) {
+  void* base = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  if (base == MAP_FAILED) fail_errno(name, "cannot map", errno);
+  return Mapping(base, size);
+}
+
+// A descriptor closed on every path; the mapping outlives it.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// Pid of the writer of an existing segment, or 0 when it holds no complete DVI link header.
+std::int32_t existing_writer(const std::string& name) {
+  Fd fd{::shm_open(name.c_str(), O_RDWR, 0)};
+  struct stat st {};
+  if (fd.fd < 0 || ::fstat(fd.fd, &st) != 0 ||
+      static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
+    return 0;
+  }
+  Mapping map = map_fd(name, fd.fd, kHeaderBytes);
+  if (map.header().magic.load(std::memory_order_acquire) != kMagic) return 0;
+  return map.header().writer_pid.load();
+}
+
+// Creates the segment exclusively; replaces one whose creator is dead.
+int create_segment(const std::string& name) {
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const int fd = ::shm_open(name.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd >= 0) return fd;
+    if (errno != EEXIST) fail_errno(name, "cannot create shared-memory segment", errno);
+    const std::int32_t pid = existing_writer(name);
+    if (process_alive(pid)) {
+      fail(name, fmt::format("already exists and is in use by process {}", pid));
+    }
+    remove_stale(name);
+  }
+  fail(name, "cannot create shared-memory segment: it keeps reappearing");
+}
+
+}  // namespace
+
+namespace detail {
+
+Mapping::Mapping(Mapping&& other) noexcept
+    : base_(std::exchange(other.base_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+
+Mapping& Mapping::operator=(Mapping&& other) noexcept {
+  if (this != &other) {
+    if (base_ != nullptr) ::munmap(base_, size_);
+    base_ = std::exchange(other.base_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+Mapping::~Mapping() {
+  if (base_ != nullptr) ::munmap(base_, size_);
+}
+
+}  // namespace detail
+
+std::string dvi_link_name(std::string_view suffix) {
+  std::string name = fmt::format("/l2-{}-{}", ::getpid(), suffix);
+  check_name(name);
+  return name;
+}
+
+bool remove_stale(const std::string& name) {
+  check_name(name);
+  if (::shm_unlink(name.c_str()) == 0) return true;
+  if (errno == ENOENT) return false;
+  fail_errno(name, "cannot remove", errno);
+}
+
+// ---- writer ----------------------------------------------------------------------------------
+
+DviLinkWriter DviLinkWriter::create(const std::string& name, int width, int height) {
+  check_name(name);
+  if (width < 1 || height < 1 || width > kDviMaxDimension || height > kDviMaxDimension) {
+    fail(name, fmt::format("frame size {}x{} is outside 1x1 .. {}x{}", width, height,
+                           kDviMaxDimension, kDviMaxDimension));
+  }
+  const std::uint64_t stride = static_cast<std::uint64_t>(width) * kDviBytesPerPixel;
+  const std::uint64_t frame_bytes = stride * static_cast<std::uint64_t>(height);
+  const std::uint64_t pitch = slot_pitch(frame_bytes);
+  const std::uint64_t total = kHeaderBytes + 3 * pitch;
+
+  Fd fd{create_segment(name)};
+  DviLinkWriter writer;
+  writer.name_ = name;  // from here on the destructor unlinks the segment on any error
+  if (::ftruncate(fd.fd, static_cast<off_t>(total)) != 0) {
+    const int error = errno;
+    writer.unlink();
+    fail_errno(name, fmt::format("cannot size to {} bytes", total), error);
+  }
+  try {
+    writer.map_ = map_fd(name, fd.fd, total);
+  } catch (...) {
+    writer.unlink();
+    throw;
+  }
+  // ftruncate zero-filled everything: all slots are black, all counters 0.
+  LinkHeader& h = writer.map_.header();
+  h.version = kVersion;
+  h.width = width;
+  h.height = height;
+  h.bytes_per_pixel = kDviBytesPerPixel;
+  h.stride = stride;
+  h.frame_bytes = frame_bytes;
+  h.slot_offset = kHeaderBytes;
+  h.slot_pitch = pitch;
+  h.total_bytes = total;
+  h.writer_slot = 0;
+  h.middle.store(1, std::memory_order_relaxed);
+  h.reader_slot = 2;
+  h.writer_pid.store(::getpid(), std::memory_order_relaxed);
+  h.magic.store(kMagic, std::memory_order_release);
+  writer.width_ = width;
+  writer.height_ = height;
+  writer.back_ = 0;
+  return writer;
+}
+
+DviLinkWriter::DviLinkWriter(DviLinkWriter&& other) noexcept
+    : map_(std::move(other.map_)),
+      name_(std::exchange(other.name_, {})),
+      width_(other.width_),
+      height_(other.height_),
+      back_(other.back_),
+      sequence_(other.sequence_) {}
+
+DviLinkWriter& DviLinkWriter::operator=(DviLinkWriter&& other) noexcept {
+  if (this != &other) {
+    unlink();
+    map_ = std::move(other.map_);
+    name_ = std::exchange(other.name_, {});
+    width_ = other.width_;
+    height_ = other.height_;
+    back_ = other.back_;
+    sequence_ = other.sequence_;
+  }
+  return *this;
+}
+
+DviLinkWriter::~DviLinkWriter() {
+  unlink();
+}
+
+// Readers that still have the segment mapped keep reading it; the name is gone at once.
+void DviLinkWriter::unlink() noexcept {
+  if (!name_.empty()) ::shm_unlink(name_.c_str());
+  name_.clear();
+}
+
+std::span<std::uint8_t> DviLinkWriter::back_frame() {
+  const LinkHeader& h = map_.header();
+  return {map_.bytes() + h.slot_offset + static_cast<std::uint64_t>(back_) * h.slot_pitch,
+          h.frame_bytes};
+}
+
+std::span<std::uint8_t> DviLinkWriter::back_row(int y) {
+  if (y < 0 || y >= height_) {
+    fail(name_, fmt::format("row {} is outside the frame (height {})", y, height_));
+  }
+  return back_frame().subspan(static_cast<std::size_t>(y) * stride(), stride());
+}
+
+std::uint64_t DviLinkWriter::publish() {
+  LinkHeader& h = map_.header();
+  h.slot_sequence[back_] = ++sequence_;
+  // Release: the pixels and sequence above become visible to the reader that takes this slot.
+  // Acquire: the slot we get back was released by the reader, which no longer looks at it.
+  const std::uint32_t old =
+      h.middle.exchange(static_cast<std::uint32_t>(back_) | kFresh, std::memory_order_acq_rel);
+  back_ = static_cast<int>(old & kSlotMask);
+  h.writer_slot = static_cast<std::uint32_t>(back_);
+  h.published.store(sequence_, std::memory_order_release);
+  return sequence_;
+}
+
+// ---- reader ----------------------------------------------------------------------------------
+
+DviLinkReader DviLinkReader::open(const std::string& name) {
+  check_name(name);
+  Fd fd{::shm_open(name.c_str(), O_RDWR | O_CLOEXEC, 0)};
+  if (fd.fd < 0) fail_errno(name, "cannot open shared-memory segment", errno);
+  struct stat st {};
+  if (::fstat(fd.fd, &st) != 0) fail_errno(name, "cannot stat", errno);
+  const auto size = static_cast<std::uint64_t>(st.st_size);
+  if (size < kHeaderBytes) {
+    fail(name, fmt::format("segment is {} bytes, too small for a DVI link header", size));
+  }
+  DviLinkReader reader;
+  reader.map_ = map_fd(name, fd.fd, size);
+  const LinkHeader& h = reader.map_.header();
+  const std::uint32_t magic = h.magic.load(std::memory_order_acquire);
+  if (magic != kMagic) fail(name, fmt::format("not a DVI link (magic {:#010x})", magic));
+  if (h.version != kVersion) {
+    fail(name, fmt::format("version {} is not the supported version {}", h.version, kVersion));
+  }
+  // Everything the reader will use to address memory is checked against the real size.
+  const bool dims_ok = h.width >= 1 && h.height >= 1 && h.width <= kDviMaxDimension &&
+                       h.height <= kDviMaxDimension && h.bytes_per_pixel == kDviBytesPerPixel;
+  const std::uint64_t stride = static_cast<std::uint64_t>(h.width) * kDviBytesPerPixel;
+  if (!dims_ok || h.stride != stride || h.frame_bytes != stride * h.height ||
+      h.slot_offset != kHeaderBytes || h.slot_pitch < h.frame_bytes ||
+      h.total_bytes != kHeaderBytes + 3 * h.slot_pitch) {
+    fail(name, "corrupt header");
+  }
+  if (h.total_bytes != size) {
+    fail(name,
+         fmt::format("header declares {} bytes but the segment is {} bytes", h.total_bytes, size));
+  }
+  reader.name_ = name;
+  reader.width_ = h.width;
+  reader.height_ = h.height;
+
+  // Attach as the one reader; a reader that died does not block a new one.
+  LinkHeader& hw = reader.map_.header();
+  std::int32_t current = hw.reader_pid.load(std::memory_order_acquire);
+  for (;;) {
+    if (current != 0 && process_alive(current)) {
+      reader.name_.clear();  // not attached: do not detach on the way out
+      fail(name, fmt::format("already has a reader (process {})", current));
+    }
+    if (hw.reader_pid.compare_exchange_weak(current, ::getpid(), std::memory_order_acq_rel)) {
+      break;
+    }
+  }
+  reader.front_ = static_cast<int>(hw.reader_slot & kSlotMask);
+  return reader;
+}
+
+DviLinkReader::DviLinkReader(DviLinkReader&& other) noexcept
+    : map_(std::move(other.map_)),
+      name_(std::exchange(other.name_, {})),
+      width_(other.width_),
+      height_(other.height_),
+      front_(other.front_) {}
+
+DviLinkReader& DviLinkReader::operator=(DviLinkReader&& other) noexcept {
+  if (this != &other) {
+    detach();
+    map_ = std::move(other.map_);
+    name_ = std::exchange(other.name_, {});
+    width_ = other.width_;
+    height_ = other.height_;
+    front_ = other.front_;
+  }
+  return *this;
+}
+
+DviLinkReader::~DviLinkReader() {
+  detach();
+}
+
+void DviLinkReader::detach() noexcept {
+  if (name_.empty()) return;
+  // Release: a later reader sees reader_slot as we left it.
+  map_.header().reader_pid.store(0, std::memory_order_release);
+  name_.clear();
+}
+
+std::optional<FrameView> DviLinkReader::latest() {
+  LinkHeader& h = map_.header();
+  if (h.middle.load(std::memory_order_relaxed) & kFresh) {
+    // Hand back the slot we held and take the newest; see publish() for the ordering.
+    const std::uint32_t old =
+        h.middle.exchange(static_cast<std::uint32_t>(front_), std::memory_order_acq_rel);
+    front_ = static_cast<int>(old & kSlotMask);
+    h.reader_slot = static_cast<std::uint32_t>(front_);
+  }
+  const std::uint64_t sequence = h.slot_sequence[front_];
+  if (sequence == 0) return std::nullopt;
+  return FrameView{map_.bytes() + h.slot_offset + static_cast<std::uint64_t>(front_) * h.slot_pitch,
+                   static_cast<std::size_t>(h.stride), width_, height_, sequence};
+}
+
+bool DviLinkReader::writer_alive() const {
+  return process_alive(map_.header().writer_pid.load(std::memory_order_relaxed));
+}
+
+}  // namespace l2

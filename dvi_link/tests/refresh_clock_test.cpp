@@ -1,0 +1,54 @@
+#include "dvi_link/refresh_clock.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+namespace l2 {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+TEST(RefreshClock, TicksAtTheConfiguredRate) {
+  const auto start = Clock::now();
+  RefreshClock clock(100.0);
+  for (int i = 0; i < 10; ++i) clock.wait_next();
+  const auto took = Clock::now() - start;
+  EXPECT_GE(took, 99ms);  // the tenth tick is 100 ms after construction
+  EXPECT_LT(took, 400ms);
+  EXPECT_EQ(clock.missed(), 0);
+}
+
+TEST(RefreshClock, RateZeroNeverWaits) {
+  const auto start = Clock::now();
+  RefreshClock clock(0.0);
+  for (int i = 0; i < 100000; ++i) clock.wait_next();
+  EXPECT_LT(Clock::now() - start, 100ms);
+}
+
+TEST(RefreshClock, ALateCallerSkipsMissedTicksInsteadOfBursting) {
+  RefreshClock clock(100.0);
+  std::this_thread::sleep_for(55ms);  // five ticks late
+  clock.wait_next();
+  EXPECT_GE(clock.missed(), 4);
+  // Without the skip, the next four waits would return at once to catch up.
+  const auto start = Clock::now();
+  for (int i = 0; i < 4; ++i) clock.wait_next();
+  EXPECT_GE(Clock::now() - start, 25ms);
+}
+
+TEST(RefreshClock, RejectsRatesOutsideItsRange) {
+  try {
+    RefreshClock clock(-1.0);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "refresh rate -1 Hz is outside 0 (as fast as possible) .. 1000 Hz");
+  }
+  EXPECT_THROW(RefreshClock(5000.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace l2
