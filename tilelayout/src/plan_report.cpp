@@ -18,9 +18,9 @@ void servers(const TileLayout& layout, std::string& out) {
     for (const PackedTile& p : s.tiles) used += p.tile.on_display.area();
     const double total = double(s.fb_width) * s.fb_height;
     out += fmt::format(
-        "pipeserver {}: {} tiles in {} rows, {} of {} rows used, framebuffer use {:.1f}%\n",
-        s.server, s.tiles.size(), s.rows.size(), s.used_height(), s.fb_height,
-        100.0 * double(used) / total);
+        "pipeserver {}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
+        s.server, s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s", s.used_height(),
+        s.fb_height, 100.0 * double(used) / total);
     for (const PackedTile& p : s.tiles) {
       const DisplayTile& t = p.tile;
       out += fmt::format(

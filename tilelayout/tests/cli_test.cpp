@@ -1,0 +1,191 @@
+// The real tilelayout executable, run as a child process: exit status, the one-line errors for
+// broken walls, and the files --png and --scanout write.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "image/png_io.hpp"
+#include "routing_check.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ChildRun {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tilelayout_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+
+  ChildRun run(const std::string& args) {
+    const std::string cmd = std::string("'") + TILELAYOUT_EXE + "' " + args + " >'" +
+                            (dir_ / "out").string() + "' 2>'" + (dir_ / "err").string() + "'";
+    const int raw = std::system(cmd.c_str());
+    ChildRun r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir_ / "out");
+    r.err = slurp(dir_ / "err");
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+const std::string kGood =
+    "[display_grid]\ncolumns = 2\nrows = 1\nwidth = 100\nheight = 80\nmullion_x = 10\n"
+    "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 40\n"
+    "[pipeservers]\ncount = 2\nframebuffer_width = 300\nframebuffer_height = 200\n";
+
+std::string replaced(const std::string& from, const std::string& to) {
+  std::string t = kGood;
+  t.replace(t.find(from), from.size(), to);
+  return t;
+}
+
+TEST_F(Cli, PrintsThePlan) {
+  const ChildRun r = run("'" + write("good.toml", kGood).string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("pipeserver 0: 5 tiles in 1 row, 40 of 200 rows used, framebuffer use "
+                       "13.3%"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("display 1: 100x80 at canvas 110,0, swap group 0: 100.0% covered "
+                       "(8000 of 8000 pixels)"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
+  struct Case {
+    std::string text, error;
+  };
+  const std::vector<Case> cases = {
+      {replaced("[tiling]", "[tiling"), ":7: malformed TOML: "},
+      {replaced("tile_height = 40\n", "tile_height = 40\ntile_hieght = 4\n"),
+       ":11: tiling.tile_hieght: unknown key"},
+      {replaced("columns = 2", "columns = 65"), ":2: display_grid.columns: must be 1..64, got 65"},
+      {replaced("width = 100", "width = 5000"),
+       ":4: display_grid.width: must be 1..4095, got 5000"},
+      {replaced("kind = \"grid\"\ntile_width = 50\ntile_height = 40",
+                "kind = \"list\"\ntiles = [[0, 0, 100, 80], [200, 0, 20, 80]]"),
+       ":9: tiling.tiles[1]: tile 20x80 at 200,0 lies outside the 210x80 canvas"},
+      {replaced("kind = \"grid\"\ntile_width = 50\ntile_height = 40",
+                "kind = \"list\"\ntiles = [[0, 0, 100, 80], [50, 0, 100, 80]]"),
+       ":9: tiling.tiles[1]: tile 100x80 at 50,0 overlaps tiles[0] (100x80 at 0,0) in 50x80 "
+       "at 50,0"},
+      // Tiles 0, 2, 4 fill row 0 (52 + 42 + 12 columns); tile 6, fourth in the list, opens a
+      // second row that ends at 80.
+      {replaced("framebuffer_width = 300\nframebuffer_height = 200",
+                "framebuffer_width = 150\nframebuffer_height = 60"),
+       ":14: pipeserver 0: tile 3 (display 0, 50x40 at 50,40) does not fit the 150x60 "
+       "framebuffer: needs 80 rows, 20 too many"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const fs::path wall = write("bad" + std::to_string(i) + ".toml", cases[i].text);
+    const ChildRun r = run("'" + wall.string() + "'");
+    EXPECT_EQ(r.status, 1) << i;
+    EXPECT_EQ(r.out, "") << i;
+    const std::string prefix = "tilelayout: " + wall.string() + cases[i].error;
+    EXPECT_EQ(r.err.rfind(prefix, 0), 0u) << i << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << i << ": " << r.err;
+  }
+}
+
+TEST_F(Cli, UncoveredCanvasIsAWarningNotAnError) {
+  const fs::path wall = write(
+      "holes.toml", replaced("kind = \"grid\"\ntile_width = 50\ntile_height = 40",
+                             "kind = \"list\"\ntiles = [[0, 0, 100, 80], [110, 0, 100, 40]]"));
+  const ChildRun r = run("'" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(wall.string() + ": warning: canvas area 100x40 at 110,40 (display 1: "
+                                       "4000 pixels) is not covered by any tile"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(Cli, MissingFileAndBadOptions) {
+  ChildRun r = run("'" + (dir_ / "none.toml").string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout: " + (dir_ / "none.toml").string() +
+                       ": cannot read: No such file or directory\n");
+  r = run("--parity 2");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.status, 1);
+}
+
+TEST_F(Cli, HelpAndDefault) {
+  ChildRun r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("--scanout"), std::string::npos);
+  r = run("--print-default");
+  EXPECT_EQ(r.out, std::string(default_wall_toml()));
+  r = run("");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out.rfind("wall \"2x2 k-d wall\"", 0), 0u) << r.out;
+}
+
+// The --scanout frames of every example wall, read back from the PNG files the executable
+// wrote, route every visible display pixel exactly once. --png writes its pictures too.
+TEST_F(Cli, ScanoutFramesOfEveryExampleWallRouteEachPixelOnce) {
+  for (const auto& e : fs::directory_iterator(L2_WALLS_DIR)) {
+    if (e.path().extension() != ".toml") continue;
+    SCOPED_TRACE(e.path().string());
+    const fs::path out = dir_ / e.path().stem();
+    const ChildRun r = run("'" + e.path().string() + "' --parity 1 --scanout '" +
+                           (out / "scan").string() + "' --png '" + (out / "png").string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Wall wall = load_wall(e.path());
+    std::vector<RgbImage> frames;
+    for (int s = 0; s < wall.server_count; ++s) {
+      frames.push_back(read_png(out / "scan" / ("scanout-" + std::to_string(s) + ".png")));
+      EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
+      EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
+      const RgbImage pic = read_png(out / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
+      EXPECT_EQ(pic.width(), wall.framebuffer_width);
+    }
+    const RgbImage wall_png = read_png(out / "png" / "wall.png");
+    EXPECT_EQ(wall_png.width(), wall.canvas_width);
+    EXPECT_EQ(wall_png.height(), wall.canvas_height);
+    const RoutingCheck c = check_routing(wall, frames, true);
+    long long visible = 0;
+    for (const Display& d : wall.displays) visible += 1LL * d.width * d.height;
+    EXPECT_EQ(c.errors.total(), 0u);
+    EXPECT_EQ(c.copied, visible);
+    EXPECT_EQ(c.wrong_colour + c.wrong_parity + c.outside, 0);
+    EXPECT_EQ(c.uncovered, 0);
+    EXPECT_EQ(c.covered_twice, 0);
+    fs::remove_all(out);
+  }
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,203 @@
+#include "tilelayout/planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tilelayout/coverage.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+Display display(int id, int x, int y, int w, int h) {
+  Display d;
+  d.id = id;
+  d.canvas_x = x;
+  d.canvas_y = y;
+  d.width = w;
+  d.height = h;
+  return d;
+}
+
+Wall wall_of(std::vector<Display> displays, int canvas_w, int canvas_h) {
+  Wall w;
+  w.displays = std::move(displays);
+  w.canvas_width = canvas_w;
+  w.canvas_height = canvas_h;
+  return w;
+}
+
+TEST(Tiling, GridClipsTheLastColumnAndRow) {
+  Wall w = wall_of({display(0, 0, 0, 210, 80)}, 210, 80);
+  w.tiling.kind = TilingKind::Grid;
+  w.tiling.tile_width = 50;
+  w.tiling.tile_height = 40;
+  const auto tiles = make_logical_tiles(w);
+  ASSERT_EQ(tiles.size(), 10u);
+  EXPECT_EQ(tiles[0], (Rect{0, 0, 50, 40}));
+  EXPECT_EQ(tiles[4], (Rect{200, 0, 10, 40}));
+  EXPECT_EQ(tiles[5], (Rect{0, 40, 50, 40}));
+  EXPECT_EQ(tiles[9], (Rect{200, 40, 10, 40}));
+}
+
+TEST(Tiling, StripsAreHorizontalBandsCutIntoColumns) {
+  Wall w = wall_of({display(0, 0, 0, 10, 7)}, 10, 7);
+  w.tiling.kind = TilingKind::Strips;
+  w.tiling.strip_count = 2;
+  w.tiling.substrip_count = 3;
+  EXPECT_EQ(
+      make_logical_tiles(w),
+      (std::vector<Rect>{
+          {0, 0, 3, 3}, {3, 0, 3, 3}, {6, 0, 4, 3}, {0, 3, 3, 4}, {3, 3, 3, 4}, {6, 3, 4, 4}}));
+}
+
+TEST(Tiling, KdUniformCutsLongerSideInHalves) {
+  Wall w = wall_of({display(0, 0, 0, 400, 300)}, 400, 300);
+  w.tiling.kind = TilingKind::KdSplit;
+  w.tiling.tile_count = 4;
+  EXPECT_EQ(make_logical_tiles(w),
+            (std::vector<Rect>{
+                {0, 0, 200, 150}, {0, 150, 200, 150}, {200, 0, 200, 150}, {200, 150, 200, 150}}));
+}
+
+TEST(Tiling, KdFollowsTheCostGrid) {
+  // Cost 1 on the left half, 3 on the right: total 80000, half of it is reached 66.7 columns
+  // into the right half.
+  Wall w = wall_of({display(0, 0, 0, 400, 100)}, 400, 100);
+  w.tiling.kind = TilingKind::KdSplit;
+  w.tiling.tile_count = 2;
+  w.tiling.cost = {{1, 3}};
+  EXPECT_EQ(make_logical_tiles(w), (std::vector<Rect>{{0, 0, 267, 100}, {267, 0, 133, 100}}));
+}
+
+TEST(Tiling, KdIgnoresWhatMullionsHide) {
+  // Two 100x100 displays, 50 pixels apart: half the visible cost is all of display 0.
+  Wall w = wall_of({display(0, 0, 0, 100, 100), display(1, 150, 0, 100, 100)}, 250, 100);
+  w.tiling.kind = TilingKind::KdSplit;
+  w.tiling.tile_count = 2;
+  const auto tiles = make_logical_tiles(w);
+  EXPECT_EQ(tiles, (std::vector<Rect>{{0, 0, 100, 100}, {100, 0, 150, 100}}));
+  const auto parts = split_at_displays(w, tiles);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[1].display, 1);
+  EXPECT_EQ(parts[1].on_display, (Rect{0, 0, 100, 100}));
+  EXPECT_EQ(parts[1].on_canvas, (Rect{150, 0, 100, 100}));
+  EXPECT_EQ(parts[1].logical_tile, 1);
+}
+
+TEST(Tiling, KdReportsTileCountsThatCannotBeCut) {
+  Wall w = wall_of({display(0, 0, 0, 3, 3)}, 3, 3);
+  w.source = "k.toml";
+  w.tiling_line = 7;
+  w.tiling.kind = TilingKind::KdSplit;
+  w.tiling.tile_count = 9;
+  try {
+    make_logical_tiles(w);
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(), "k.toml:7: tiling.tile_count: cannot cut 9 tiles out of 3x3 at 0,0");
+  }
+}
+
+TEST(SplitAtDisplays, DropsMullionsAndDuplicatesProjectorOverlap) {
+  // Display 1 starts 10 pixels right of display 0 (a mullion); display 2 overlaps display 1.
+  const Wall w =
+      wall_of({display(0, 0, 0, 100, 50), display(1, 110, 0, 100, 50), display(2, 190, 0, 100, 50)},
+              290, 50);
+  const auto parts = split_at_displays(w, {{90, 10, 120, 20}});
+  ASSERT_EQ(parts.size(), 3u);
+  EXPECT_EQ(parts[0].display, 0);
+  EXPECT_EQ(parts[0].on_display, (Rect{90, 10, 10, 20}));
+  EXPECT_EQ(parts[1].display, 1);
+  EXPECT_EQ(parts[1].on_display, (Rect{0, 10, 100, 20}));
+  EXPECT_EQ(parts[2].display, 2);
+  EXPECT_EQ(parts[2].on_display, (Rect{0, 10, 20, 20}));
+  EXPECT_EQ(parts[2].on_canvas, (Rect{190, 10, 20, 20}));
+  EXPECT_TRUE(split_at_displays(w, {{100, 0, 10, 50}}).empty());  // all behind the mullion
+}
+
+std::vector<Rect> grid(int columns, int rows) {
+  std::vector<Rect> out;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < columns; ++c) out.push_back({c * 10, r * 10, 10, 10});
+  }
+  return out;
+}
+
+std::vector<int> assign(AssignmentPolicy p, const std::vector<Rect>& tiles, int servers,
+                        std::vector<long long> weights = {}) {
+  if (weights.empty()) weights.assign(tiles.size(), 100);
+  const Rect canvas{0, 0, tiles.back().right(), tiles.back().bottom()};
+  return assign_servers(p, tiles, weights, servers, canvas);
+}
+
+TEST(Assignment, RoundRobinZigZagBlocks) {
+  const auto tiles = grid(4, 2);
+  EXPECT_EQ(assign(AssignmentPolicy::RoundRobin, tiles, 3),
+            (std::vector<int>{0, 1, 2, 0, 1, 2, 0, 1}));
+  // Row 0 left to right: 0 1 2 0; row 1 right to left continues 1 2 0 1 from tile 7.
+  EXPECT_EQ(assign(AssignmentPolicy::ZigZag, tiles, 3), (std::vector<int>{0, 1, 2, 0, 1, 0, 2, 1}));
+  EXPECT_EQ(assign(AssignmentPolicy::Blocks, tiles, 3), (std::vector<int>{0, 0, 0, 1, 1, 1, 2, 2}));
+}
+
+TEST(Assignment, SpiralStartsInTheCentreAndTurnsClockwise) {
+  // 3x3 grid, 9 servers: the server number is the position in the spiral.
+  EXPECT_EQ(assign(AssignmentPolicy::Spiral, grid(3, 3), 9),
+            (std::vector<int>{1, 2, 3, 8, 0, 4, 7, 6, 5}));
+}
+
+TEST(Assignment, AreaBalancedGivesTheLargestTileToTheLeastLoaded) {
+  // Largest first: t5(6)->s0, t0(5)->s1, t2(4)->s2, t3(3)->s2, t4(2)->s1, t1(1)->s0,
+  // then loads are 7,7,7: t6->s0, t7->s1.
+  EXPECT_EQ(assign(AssignmentPolicy::AreaBalanced, grid(4, 2), 3, {5, 1, 4, 3, 2, 6, 1, 1}),
+            (std::vector<int>{1, 0, 2, 2, 1, 0, 0, 1}));
+}
+
+const std::string kListWall =
+    "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+    "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 100, 20], [0, 20, 60, 60]]\n"
+    "[pipeservers]\ncount = 2\nframebuffer_width = 200\nframebuffer_height = 100\n";
+
+TEST(Planner, WarnsAboutUncoveredCanvasWithTheArea) {
+  const TileLayout layout = plan_layout(parse_wall(kListWall, "walls/t.toml"));
+  EXPECT_EQ(layout.warnings, (std::vector<std::string>{
+                                 "walls/t.toml: warning: canvas area 40x60 at 60,20 (display 0: "
+                                 "2400 pixels) is not covered by any tile"}));
+  const auto cov = display_coverage(layout.wall, layout.tiles);
+  EXPECT_EQ(cov[0].covered, 2000 + 3600);
+  EXPECT_EQ(cov[0].overlapped, 0);
+}
+
+TEST(Planner, PacksEachServersTilesTallestFirst) {
+  const TileLayout layout = plan_layout(parse_wall(
+      "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+      "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 50, 10], [50, 0, 50, 80], [0, 10, 50, 70]]\n"
+      "[pipeservers]\ncount = 1\nframebuffer_width = 200\nframebuffer_height = 100\n",
+      "p.toml"));
+  ASSERT_EQ(layout.servers.size(), 1u);
+  const ServerPlan& s = layout.servers[0];
+  ASSERT_EQ(s.tiles.size(), 3u);
+  EXPECT_EQ(s.tiles[0].tile.logical_tile, 1);  // 80 tall
+  EXPECT_EQ(s.tiles[1].tile.logical_tile, 2);  // 70 tall
+  EXPECT_EQ(s.tiles[2].tile.logical_tile, 0);  // 10 tall
+  EXPECT_EQ(s.tiles[2].fb_x, 2 + 50 + 2 + 50 + 2);
+  EXPECT_EQ(layout.tile_server, (std::vector<int>{0, 0, 0}));
+  EXPECT_TRUE(layout.warnings.empty());
+}
+
+TEST(Planner, PackingErrorsNameFileLineServerAndTile) {
+  try {
+    plan_layout(
+        parse_wall("[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+                   "[tiling]\nkind = \"grid\"\ntile_width = 100\ntile_height = 40\n"
+                   "[pipeservers]\ncount = 1\nframebuffer_width = 200\nframebuffer_height = 60\n",
+                   "walls/small.toml"));
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "walls/small.toml:13: pipeserver 0: tile 1 (display 0, 100x40 at 0,40) does not "
+                 "fit the 200x60 framebuffer: needs 80 rows, 20 too many");
+  }
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,66 @@
+// Every example wall, planned and scanned out with the test pattern, must route every visible
+// display pixel exactly once with nothing but valid headers.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "routing_check.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/test_frame.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+std::vector<std::filesystem::path> example_walls() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& e : std::filesystem::directory_iterator(L2_WALLS_DIR)) {
+    if (e.path().extension() == ".toml") out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(Scanout, ThereAreExampleWalls) {
+  EXPECT_GE(example_walls().size(), 4u);
+}
+
+TEST(Scanout, EveryExampleWallRoutesEveryDisplayPixelExactlyOnce) {
+  for (const auto& path : example_walls()) {
+    SCOPED_TRACE(path.string());
+    const TileLayout layout = plan_layout(load_wall(path));
+    EXPECT_TRUE(layout.warnings.empty());
+    for (bool parity : {false, true}) {
+      std::vector<RgbImage> frames;
+      for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, parity));
+      const RoutingCheck c = check_routing(layout.wall, frames, parity);
+      long long visible = 0;
+      for (const Display& d : layout.wall.displays) visible += 1LL * d.width * d.height;
+      EXPECT_EQ(c.errors.total(), 0u);
+      EXPECT_EQ(c.copied, visible);
+      EXPECT_EQ(c.outside, 0);
+      EXPECT_EQ(c.wrong_colour, 0);
+      EXPECT_EQ(c.wrong_parity, 0);
+      EXPECT_EQ(c.uncovered, 0);
+      EXPECT_EQ(c.covered_twice, 0);
+    }
+  }
+}
+
+TEST(Scanout, TheCheckCatchesAMisroutedStrip) {
+  // Guards the guard: a frame with one header pointing a row lower must fail the check.
+  const TileLayout layout = plan_layout(default_wall());
+  std::vector<RgbImage> frames;
+  for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, false));
+  const PackedTile& p = layout.servers[0].tiles[0];
+  const Rect& d = p.tile.on_display;
+  write_header_pixels(encode(StripHeader::copy(false, p.tile.display, d.x, d.y + 1, d.w)),
+                      frames[0].row(p.fb_y).data() + (p.fb_x - 2) * 3, 3);
+  const RoutingCheck c = check_routing(layout.wall, frames, false);
+  EXPECT_EQ(c.wrong_colour, d.w);
+  EXPECT_EQ(c.covered_twice, d.w);
+  EXPECT_EQ(c.uncovered, d.w);
+}
+
+}  // namespace
+}  // namespace l2

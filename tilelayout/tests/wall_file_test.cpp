@@ -1,0 +1,225 @@
+#include "tilelayout/wall_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+namespace {
+
+// Line numbers matter: errors below name them.
+const std::string kBase =
+    "name = \"t\"\n"               // 1
+    "[display_grid]\n"             // 2
+    "columns = 2\n"                // 3
+    "rows = 1\n"                   // 4
+    "width = 100\n"                // 5
+    "height = 80\n"                // 6
+    "mullion_x = 10\n"             // 7
+    "[tiling]\n"                   // 8
+    "kind = \"grid\"\n"            // 9
+    "tile_width = 50\n"            // 10
+    "tile_height = 40\n"           // 11
+    "[pipeservers]\n"              // 12
+    "count = 2\n"                  // 13
+    "framebuffer_width = 300\n"    // 14
+    "framebuffer_height = 200\n";  // 15
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_wall(text, "walls/t.toml");
+  } catch (const LayoutError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(WallFile, ReadsAGridWall) {
+  const Wall w = parse_wall(kBase, "walls/t.toml");
+  EXPECT_EQ(w.name, "t");
+  EXPECT_EQ(w.source, "walls/t.toml");
+  ASSERT_EQ(w.displays.size(), 2u);
+  EXPECT_EQ(w.displays[1].id, 1);
+  EXPECT_EQ(w.displays[1].on_canvas(), (Rect{110, 0, 100, 80}));
+  EXPECT_EQ(w.canvas_width, 210);
+  EXPECT_EQ(w.canvas_height, 80);
+  EXPECT_EQ(w.tiling.kind, TilingKind::Grid);
+  EXPECT_EQ(w.tiling.tile_width, 50);
+  EXPECT_EQ(w.server_count, 2);
+  EXPECT_EQ(w.framebuffer_width, 300);
+  EXPECT_EQ(w.framebuffer_height, 200);
+  EXPECT_EQ(w.framebuffer_line, 15);
+  EXPECT_EQ(w.assignment, AssignmentPolicy::RoundRobin);
+  EXPECT_EQ(w.board_max_width, 1280);
+  EXPECT_EQ(w.board_max_height, 1024);
+  EXPECT_EQ(w.refresh_hz, 60);
+}
+
+TEST(WallFile, GridWithOverlapSwapGroupsAndMesh) {
+  const Wall w = parse_wall(
+      replace(kBase, "mullion_x = 10\n",
+              "mullion_x = -20\nmullion_y = 5\nswap_groups = [1, 2]\nmonitors = [\"a\", \"b\"]\n") +
+          "assignment = \"area-balanced\"\n[mesh]\nboard_max_width = 640\nboard_max_height = "
+          "480\nrefresh_hz = 30\n",
+      "w.toml");
+  EXPECT_EQ(w.displays[1].canvas_x, 80);
+  EXPECT_EQ(w.displays[1].swap_group, 2);
+  EXPECT_EQ(w.displays[0].monitor, "a");
+  EXPECT_EQ(w.canvas_width, 180);
+  EXPECT_EQ(w.assignment, AssignmentPolicy::AreaBalanced);
+  EXPECT_EQ(w.board_max_width, 640);
+  EXPECT_EQ(w.refresh_hz, 30);
+}
+
+TEST(WallFile, ExplicitDisplaysInAnyIdOrder) {
+  const std::string text =
+      "[[display]]\nid = 1\nwidth = 50\nheight = 40\nx = 60\ny = 0\nswap_group = 3\n"
+      "[[display]]\nid = 0\nwidth = 50\nheight = 40\nx = 0\ny = 10\n"
+      "[canvas]\nwidth = 200\nheight = 100\n"
+      "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 100, 50], [100, 0, 100, 50]]\n"
+      "[pipeservers]\ncount = 1\n";
+  const Wall w = parse_wall(text, "e.toml");
+  ASSERT_EQ(w.displays.size(), 2u);
+  EXPECT_EQ(w.displays[0].on_canvas(), (Rect{0, 10, 50, 40}));
+  EXPECT_EQ(w.displays[1].swap_group, 3);
+  EXPECT_EQ(w.canvas_width, 200);
+  EXPECT_EQ(w.tiling.rects, (std::vector<Rect>{{0, 0, 100, 50}, {100, 0, 100, 50}}));
+}
+
+TEST(WallFile, KdAndStripsTilings) {
+  Wall w = parse_wall(replace(kBase, "kind = \"grid\"\ntile_width = 50\ntile_height = 40\n",
+                              "kind = \"kd\"\ntile_count = 7\ncost = [[1, 2.5], [0, 1]]\n"),
+                      "k.toml");
+  EXPECT_EQ(w.tiling.kind, TilingKind::KdSplit);
+  EXPECT_EQ(w.tiling.tile_count, 7);
+  EXPECT_EQ(w.tiling.cost, (std::vector<std::vector<double>>{{1, 2.5}, {0, 1}}));
+  w = parse_wall(replace(kBase, "kind = \"grid\"\ntile_width = 50\ntile_height = 40\n",
+                         "kind = \"strips\"\nstrips = 3\nsubstrips = 4\n"),
+                 "s.toml");
+  EXPECT_EQ(w.tiling.strip_count, 3);
+  EXPECT_EQ(w.tiling.substrip_count, 4);
+}
+
+TEST(WallFile, MalformedTomlNamesTheLine) {
+  const std::string e = error_of(replace(kBase, "[tiling]", "[tiling"));
+  EXPECT_EQ(e.rfind("walls/t.toml:8: malformed TOML: ", 0), 0u) << e;
+}
+
+TEST(WallFile, UnknownKeysAreErrors) {
+  EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_widht = 5\n")),
+            "walls/t.toml:12: tiling.tile_widht: unknown key");
+  EXPECT_EQ(error_of("colour = 1\n" + kBase), "walls/t.toml:1: colour: unknown key");
+  EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 2\nfb_width = 3\n")),
+            "walls/t.toml:14: pipeservers.fb_width: unknown key");
+  EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_count = 5\n")),
+            "walls/t.toml:12: tiling.tile_count: belongs to kind \"kd\", not \"grid\"");
+}
+
+TEST(WallFile, FieldRangesAndTypes) {
+  EXPECT_EQ(error_of(replace(kBase, "tile_width = 50", "tile_width = 0")),
+            "walls/t.toml:10: tiling.tile_width: must be 1..4095, got 0");
+  EXPECT_EQ(error_of(replace(kBase, "width = 100", "width = 4096")),
+            "walls/t.toml:5: display_grid.width: must be 1..4095, got 4096");
+  EXPECT_EQ(error_of(replace(kBase, "tile_width = 50", "tile_width = \"50\"")),
+            "walls/t.toml:10: tiling.tile_width: must be an integer, got a string");
+  EXPECT_EQ(error_of(replace(kBase, "mullion_x = 10", "mullion_x = -100")),
+            "walls/t.toml:7: display_grid.mullion_x: must be -99..4095, got -100");
+  EXPECT_EQ(error_of(replace(kBase, "kind = \"grid\"", "kind = \"hex\"")),
+            "walls/t.toml:9: tiling.kind: must be one of grid, list, kd, strips, got \"hex\"");
+  EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "")),
+            "walls/t.toml:8: tiling.tile_height: missing (required)");
+  EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 2\nassignment = \"random\"\n")),
+            "walls/t.toml:14: pipeservers.assignment: must be one of round-robin, zig-zag, "
+            "spiral, blocks, area-balanced, got \"random\"");
+}
+
+TEST(WallFile, DisplayIdsBeyond63) {
+  EXPECT_EQ(error_of(replace(replace(kBase, "columns = 2", "columns = 9"), "rows = 1", "rows = 8")),
+            "walls/t.toml:4: display_grid.rows: 9x8 displays need ids up to 71, beyond the last "
+            "id 63");
+  const std::string list =
+      "[[display]]\nid = 64\nwidth = 50\nheight = 40\nx = 0\ny = 0\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 10\ntile_height = 10\n[pipeservers]\ncount = 1\n";
+  EXPECT_EQ(error_of(list), "walls/t.toml:2: display[0].id: must be 0..63, got 64");
+  EXPECT_EQ(error_of(replace(list, "id = 64", "id = 1")),
+            "walls/t.toml:1: display: ids must run 0..0 without gaps; id 0 is missing");
+}
+
+TEST(WallFile, ListTilesOutsideTheCanvasOrOverlapping) {
+  const std::string list = replace(kBase, "kind = \"grid\"\ntile_width = 50\ntile_height = 40\n",
+                                   "kind = \"list\"\ntiles = [\n  [0, 0, 100, 80],\n  TILE,\n]\n");
+  EXPECT_EQ(error_of(replace(list, "TILE", "[150, 0, 100, 10]")),
+            "walls/t.toml:12: tiling.tiles[1]: tile 100x10 at 150,0 lies outside the 210x80 "
+            "canvas");
+  EXPECT_EQ(error_of(replace(list, "TILE", "[90, 70, 20, 20]")),
+            "walls/t.toml:12: tiling.tiles[1]: tile 20x20 at 90,70 lies outside the 210x80 "
+            "canvas");
+  EXPECT_EQ(error_of(replace(list, "TILE", "[90, 60, 20, 20]")),
+            "walls/t.toml:12: tiling.tiles[1]: tile 20x20 at 90,60 overlaps tiles[0] (100x80 at "
+            "0,0) in 10x20 at 90,60");
+  EXPECT_EQ(error_of(replace(list, "TILE", "[90, 60, 0, 20]")),
+            "walls/t.toml:12: tiling.tiles[1].width: must be 1..4095, got 0");
+  EXPECT_EQ(error_of(replace(list, "TILE", "[90, 60, 20]")),
+            "walls/t.toml:12: tiling.tiles[1]: must be [x, y, width, height]");
+}
+
+TEST(WallFile, FramebufferAboveTheBoardLimit) {
+  EXPECT_EQ(error_of(replace(kBase, "framebuffer_width = 300", "framebuffer_width = 2048")),
+            "walls/t.toml:14: pipeservers.framebuffer_width: 2048 is more than the board input "
+            "limit 1280 (raise mesh.board_max_width)");
+  EXPECT_EQ(error_of(kBase + "[mesh]\nboard_max_height = 100\n"),
+            "walls/t.toml:15: pipeservers.framebuffer_height: 200 is more than the board input "
+            "limit 100 (raise mesh.board_max_height)");
+}
+
+TEST(WallFile, MissingSectionsAndOtherShapes) {
+  EXPECT_EQ(error_of("[tiling]\nkind = \"grid\"\n"),
+            "walls/t.toml: display_grid: the wall has no displays ([display_grid] or [[display]])");
+  EXPECT_EQ(error_of(kBase.substr(0, kBase.find("[tiling]"))),
+            "walls/t.toml: tiling: missing (required)");
+  EXPECT_EQ(
+      error_of(replace(kBase, "[tiling]\n", "[canvas]\nwidth = 200\nheight = 80\n[tiling]\n")),
+      "walls/t.toml:9: canvas.width: display 1 (100x80 at 110,0) extends past the 200x80 "
+      "canvas");
+  const std::string kd = replace(kBase, "kind = \"grid\"\ntile_width = 50\ntile_height = 40\n",
+                                 "kind = \"kd\"\ntile_count = 4\ncost = [[1, 2], [3]]\n");
+  EXPECT_EQ(error_of(kd),
+            "walls/t.toml:11: tiling.cost[1]: has 1 numbers, but tiling.cost[0] has 2");
+  EXPECT_EQ(error_of(replace(kd, "[[1, 2], [3]]", "[[0, 0]]")),
+            "walls/t.toml:11: tiling.cost: needs at least one cell above 0");
+}
+
+TEST(WallFile, LoadWallNamesAFileItCannotRead) {
+  try {
+    load_wall("/nonexistent/wall.toml");
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "/nonexistent/wall.toml: cannot read: No such file or directory");
+  }
+}
+
+TEST(WallFile, DefaultWallIsTheFileInWalls) {
+  std::ifstream in(std::string(L2_WALLS_DIR) + "/kd-2x2.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  ASSERT_FALSE(text.str().empty());
+  EXPECT_EQ(default_wall_toml(), text.str());
+  const Wall w = default_wall();
+  EXPECT_EQ(w.displays.size(), 4u);
+  EXPECT_EQ(w.tiling.kind, TilingKind::KdSplit);
+  EXPECT_EQ(w.server_count, 4);
+}
+
+}  // namespace
+}  // namespace l2
