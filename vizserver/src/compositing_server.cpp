@@ -44,7 +44,8 @@ FramePtr CompositingServer::wait_frame(std::uint32_t frame, std::chrono::millise
     return nullptr;
   };
   shared_->changed.wait_for(lock, timeout, [&] {
-    return find() || shared_->ended || (shared_->last_swapped && *shared_->last_swapped >= frame);
+    return find() || shared_->ended || shared_->failure ||
+           (shared_->last_swapped && *shared_->last_swapped >= frame);
   });
   if (FramePtr f = find()) return f;
   if (shared_->failure) throw VizError(*shared_->failure);

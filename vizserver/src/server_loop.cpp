@@ -236,8 +236,8 @@ void ServerLoop::on_hello(Connection& c) {
   if (refusal) {
     // A stray or misconfigured peer is turned away with the reason; the run goes on.
     const std::string line = fmt::format("{}: refused: {}", who(c), *refusal);
-    send_error(c, *refusal);
     log_error(line);
+    send_error(c, *refusal);
     close(c, std::nullopt);
     return;
   }
@@ -283,6 +283,17 @@ void ServerLoop::send_error(Connection& c, const std::string& text) {
 
 void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) {
   if (c.dead) return;
+  // Record first, tell the peer second: whoever hears the ERROR can already read the record.
+  if (c.server >= 0) {
+    auto waiting = assembler_.disconnect(c.server);
+    if (reason) {
+      fail(*reason);
+    } else if (waiting) {
+      fail(fmt::format("{} ({})", *waiting, c.peer));
+    }
+  } else if (reason) {
+    log_error(*reason);  // never said HELLO: not one of ours, the run goes on
+  }
   if (reason) {
     send_error(c, *reason);
     // Closing with unread input makes the kernel send RST, which can overtake the ERROR just
@@ -294,16 +305,6 @@ void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) 
   }
   c.dead = true;
   c.fd.reset();
-  if (c.server >= 0) {
-    auto waiting = assembler_.disconnect(c.server);
-    if (reason) {
-      fail(*reason);
-    } else if (waiting) {
-      fail(fmt::format("{} ({})", *waiting, c.peer));
-    }
-  } else if (reason) {
-    log_error(*reason);  // never said HELLO: not one of ours, the run goes on
-  }
 }
 
 void ServerLoop::log_error(const std::string& line) {
@@ -314,7 +315,12 @@ void ServerLoop::log_error(const std::string& line) {
 void ServerLoop::fail(const std::string& line) {
   if (failure_) return;
   failure_ = line;
-  log_error(line);
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->errors.push_back(line);
+    shared_->failure = line;  // published now, before any peer is told
+  }
+  shared_->changed.notify_all();
 }
 
 void ServerLoop::publish_swaps() {
