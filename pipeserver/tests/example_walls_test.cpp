@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <string>
 
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
@@ -12,6 +14,13 @@
 
 namespace l2 {
 namespace {
+
+// The documented tolerance (README.md, "Reassembly tolerance"): llvmpipe rounds vertex positions
+// and interpolants differently when the same triangle is projected for a different tile, so a
+// few pixels per million differ. Measured worst case over all walls, scenes and frames:
+// 0.0033% of pixels differing at all, 0.0011% by more than one level. Allowed: three times that.
+constexpr double kMaxDifferingFraction = 1e-4;
+constexpr double kMaxBeyondOneFraction = 3e-5;
 
 std::vector<std::filesystem::path> example_walls() {
   std::vector<std::filesystem::path> out;
@@ -23,10 +32,15 @@ std::vector<std::filesystem::path> example_walls() {
   return out;
 }
 
-TEST(ExampleWalls, EverySceneReassemblesToTheReference) {
-  const auto walls = example_walls();
-  ASSERT_FALSE(walls.empty());
-  for (const auto& path : walls) {
+TEST(ExampleWalls, ThereAreSome) {
+  EXPECT_GE(example_walls().size(), 3u);
+}
+
+class ExampleWall : public ::testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(ExampleWall, EverySceneReassemblesToTheReference) {
+  {
+    const auto& path = GetParam();
     const TileLayout layout = plan_layout(load_wall(path));
     for (const auto& name : scene_names()) {
       auto scene = make_scene(name, test::small_options());
@@ -35,13 +49,25 @@ TEST(ExampleWalls, EverySceneReassemblesToTheReference) {
       SCOPED_TRACE(path.filename().string() + " " + name);
       EXPECT_EQ(check.reassembly.errors.total(), 0u);
       EXPECT_EQ(check.reassembly.parities_seen, std::vector<int>{frame % 2});
-      for (std::size_t d = 0; d < check.diffs.size(); ++d) {
-        EXPECT_EQ(check.diffs[d].pixels_differing, 0)
-            << "display " << d << " max channel diff " << check.diffs[d].max_channel_diff;
-      }
+      test::ImageDiff all;
+      for (const auto& d : check.diffs) all += d;
+      const double n = static_cast<double>(check.display_pixels);
+      EXPECT_LE(all.pixels_differing, static_cast<long>(n * kMaxDifferingFraction));
+      EXPECT_LE(all.pixels_beyond_one, static_cast<long>(n * kMaxBeyondOneFraction))
+          << "max channel diff " << all.max_channel_diff;
+      // Every display pixel arrives, exactly once (tiles cover every display).
+      EXPECT_EQ(check.reassembly.copied_pixels, check.display_pixels);
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Walls, ExampleWall, ::testing::ValuesIn(example_walls()),
+                         [](const auto& param_info) {
+                           std::string n = param_info.param.stem().string();
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
 
 }  // namespace
 }  // namespace l2

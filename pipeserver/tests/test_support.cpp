@@ -77,6 +77,14 @@ Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames) {
   return out;
 }
 
+ImageDiff& ImageDiff::operator+=(const ImageDiff& o) {
+  pixels_differing += o.pixels_differing;
+  pixels_beyond_one += o.pixels_beyond_one;
+  max_channel_diff = std::max(max_channel_diff, o.max_channel_diff);
+  at_tile_edges += o.at_tile_edges;
+  return *this;
+}
+
 ImageDiff compare(const RgbImage& a, const RgbImage& b) {
   if (a.width() != b.width() || a.height() != b.height()) {
     throw std::invalid_argument("compare: images differ in size");
@@ -87,12 +95,31 @@ ImageDiff compare(const RgbImage& a, const RgbImage& b) {
     int worst = 0;
     for (std::size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[i + c] - pb[i + c]));
     if (worst > 0) ++d.pixels_differing;
+    if (worst > 1) ++d.pixels_beyond_one;
     d.max_channel_diff = std::max(d.max_channel_diff, worst);
   }
   return d;
 }
 
-WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame) {
+ImageDiff compare(const RgbImage& a, const RgbImage& b, const TileLayout& layout, int display) {
+  ImageDiff d = compare(a, b);
+  std::vector<bool> edge(static_cast<std::size_t>(a.width()) * a.height(), false);
+  for (const DisplayTile& t : layout.tiles) {
+    if (t.display != display) continue;
+    const Rect& r = t.on_display;
+    for (int y = r.y; y < r.bottom(); ++y)
+      for (int x = r.x; x < r.right(); ++x)
+        if (x == r.x || y == r.y || x == r.right() - 1 || y == r.bottom() - 1)
+          edge[static_cast<std::size_t>(y) * a.width() + x] = true;
+  }
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.at(x, y) != b.at(x, y) && edge[static_cast<std::size_t>(y) * a.width() + x])
+        ++d.at_tile_edges;
+  return d;
+}
+
+WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame, bool locate_edges) {
   std::vector<RgbImage> frames;
   for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
     Pipeserver ps(layout, s);
@@ -101,8 +128,9 @@ WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame) {
   WallCheck out;
   out.reassembly = reassemble(layout.wall, frames);
   for (const Display& d : layout.wall.displays) {
-    out.diffs.push_back(compare(out.reassembly.displays[static_cast<std::size_t>(d.id)],
-                                render_reference(layout, d.id, scene, frame)));
+    const RgbImage& got = out.reassembly.displays[static_cast<std::size_t>(d.id)];
+    const RgbImage want = render_reference(layout, d.id, scene, frame);
+    out.diffs.push_back(locate_edges ? compare(got, want, layout, d.id) : compare(got, want));
     out.display_pixels += static_cast<long>(d.width) * d.height;
   }
   return out;

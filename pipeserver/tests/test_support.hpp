@@ -28,10 +28,15 @@ struct Reassembly {
 Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames);
 
 struct ImageDiff {
-  long pixels_differing = 0;
+  long pixels_differing = 0;   // any channel differs
+  long pixels_beyond_one = 0;  // some channel differs by more than 1 (coverage or depth order)
   int max_channel_diff = 0;
+  long at_tile_edges = 0;  // differing pixels on the first or last row/column of a tile
+  ImageDiff& operator+=(const ImageDiff& o);
 };
 ImageDiff compare(const RgbImage& a, const RgbImage& b);
+// Also counts differing pixels on the border rows/columns of the display's tiles.
+ImageDiff compare(const RgbImage& a, const RgbImage& b, const TileLayout& layout, int display);
 
 // Renders `frame` on every pipeserver of the layout, routes the frames and compares every
 // display with its reference render.
@@ -40,7 +45,8 @@ struct WallCheck {
   std::vector<ImageDiff> diffs;  // per display
   long display_pixels = 0;       // sum of display areas
 };
-WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame);
+// locate_edges also fills ImageDiff::at_tile_edges (slower; for the measurement tool).
+WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame, bool locate_edges = false);
 
 // Small, quick versions of every scene.
 SceneOptions small_options();

@@ -1,0 +1,42 @@
+// Measures how far reassembled displays are from the reference render, for the tolerance
+// documented in pipeserver/README.md: every example wall (or the given ones) x every scene at
+// the scenes' default sizes, a few frames each.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "test_support.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+int main(int argc, char** argv) {
+  std::vector<std::filesystem::path> walls;
+  for (int i = 1; i < argc; ++i) walls.emplace_back(argv[i]);
+  if (walls.empty()) {
+    for (const auto& e :
+         std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
+      if (e.path().extension() == ".toml") walls.push_back(e.path());
+  }
+  std::printf("%-24s %-11s %5s %10s %9s %9s %9s %6s %4s %6s\n", "wall", "scene", "frame", "pixels",
+              "differ", "%", ">1", ">1 %", "max", "@edge");
+  for (const auto& path : walls) {
+    const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
+    for (const auto& name : l2::scene_names()) {
+      auto scene = l2::make_scene(name);
+      for (int frame : {0, 17, 40}) {
+        const auto check = l2::test::check_wall(layout, *scene, frame, true);
+        l2::test::ImageDiff all;
+        for (const auto& d : check.diffs) all += d;
+        const double n = static_cast<double>(check.display_pixels);
+        std::printf("%-24s %-11s %5d %10ld %9ld %9.4f %9ld %6.4f %4d %6ld%s\n",
+                    path.filename().string().c_str(), name.c_str(), frame, check.display_pixels,
+                    all.pixels_differing, 100.0 * static_cast<double>(all.pixels_differing) / n,
+                    all.pixels_beyond_one, 100.0 * static_cast<double>(all.pixels_beyond_one) / n,
+                    all.max_channel_diff, all.at_tile_edges,
+                    check.reassembly.errors.total() ? "  DECODE ERRORS" : "");
+        std::fflush(stdout);
+      }
+    }
+  }
+}
