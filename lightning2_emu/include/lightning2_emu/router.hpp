@@ -61,25 +61,35 @@ class Router {
     std::int32_t src_x, src_y;
     std::uint16_t dst_x, dst_y, length;
   };
-  // Columns x0..x1-1 of one display row written by `input` during the current frame.
+  // Columns x0..x1-1 of display row `row` written by `input` during the current frame.
   struct Span {
-    std::uint16_t x0, x1, input;
+    std::uint16_t row, x0, x1, input;
   };
   struct InputState {
     InputFrame frame;
     InputFrameStats stats;
     std::vector<std::vector<RoutedStrip>> bands;  // [band_offset[d] + band]
   };
+  // A band of display rows: one task's share. Spans go into one flat list per band (appending
+  // is all the hot path does); they are grouped by row only when the frame is finished.
+  struct BandState {
+    std::vector<Span> spans;               // in write order
+    std::vector<Span> by_row;              // spans grouped by row (scratch)
+    std::vector<std::uint32_t> row_start;  // by_row index of each row of the band, + end
+  };
   struct DisplayState {
-    int band_rows = 1, band_count = 1, band_offset = 0;
-    int highest_input_written = -1;       // over earlier write() calls of this frame
-    std::vector<std::vector<Span>> rows;  // per display row
+    int band_shift = 0, band_rows = 1, band_count = 1, band_offset = 0;
+    int highest_input_written = -1;  // over earlier write() calls of this frame
+    std::vector<BandState> bands;
   };
   struct BandTask {
     int display, band;
   };
 
   void scan_input(int input);
+  void group_by_row(BandState& band, int first_row, int rows) const;
+  static void copy_visible(std::uint8_t* dst, const std::uint8_t* src, int x0, int x1, int bpp,
+                           int input, const BandState& band, int band_row);
   void write_band(int display, int band, std::span<const std::uint8_t> route_input);
   DisplayFrameStats finish_band(int display, int band);
 
