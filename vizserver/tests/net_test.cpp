@@ -120,6 +120,43 @@ TEST(VizServerNet, ThreePipeserverThreadsComposeEveryPixelOfEveryFrame) {
   EXPECT_EQ(server.failure(), std::nullopt);
 }
 
+TEST(VizServerNet, LargeStridedTilesSurvivePartialSendsAndReceives) {
+  // 1000x1100 tiles (3.3 MB each, 1100 row spans: more than IOV_MAX per sendmsg) cut out of a
+  // wider framebuffer, from two threads at once: far more than a socket buffer holds, so
+  // both ends go through partial transfers.
+  constexpr int kW = 1000, kH = 1100, kFbWidth = kW + 37;
+  CompositingServer server(options({{kW, kH}, {kW, kH}}, 2));
+  server.start();
+  std::vector<std::string> thread_errors(2);
+  std::vector<std::thread> threads;
+  for (int id = 0; id < 2; ++id) {
+    threads.emplace_back([&, id] {
+      try {
+        RgbImage fb(kFbWidth, kH, Rgb{1, 2, 3});
+        for (int y = 0; y < kH; ++y) {
+          for (int x = 0; x < kW; ++x) fb.set(x + 37, y, pattern(id, x, y, 0));
+        }
+        auto sender = TileSender::connect("127.0.0.1", server.port(), id, 2);
+        sender.send_tile(0, {id, 0, 0, kW, kH}, fb.data() + 37 * 3, fb.stride());
+        sender.finish_frame(0, 1);
+        sender.wait_swapped(0, 10000ms);
+      } catch (const std::exception& e) {
+        thread_errors[id] = e.what();
+      }
+    });
+  }
+  const FramePtr f = server.wait_frame(0, 10000ms);
+  for (auto& t : threads) t.join();
+  for (const auto& e : thread_errors) EXPECT_EQ(e, "");
+  for (int d = 0; d < 2; ++d) {
+    RgbImage want(kW, kH);
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) want.set(x, y, pattern(d, x, y, 0));
+    }
+    EXPECT_EQ(first_difference(f->displays[d], want), "") << "display " << d;
+  }
+}
+
 TEST(VizServerNet, OverlapFollowsPipeserverNumberNotArrivalTime) {
   CompositingServer server(options({{16, 8}}, 2));
   server.start();
