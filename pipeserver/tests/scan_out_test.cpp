@@ -24,6 +24,23 @@ TEST(ScanOut, FlipsRowsAndDropsAlpha) {
   EXPECT_EQ(rgb, expected);
 }
 
+TEST(ScanOut, WideRowsTakeTheVectorPathAndTheTail) {
+  // 37 pixels: two 16-pixel blocks and a 5-pixel tail. Every byte distinct within a row.
+  const int w = 37, h = 3;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w * h * 4));
+  for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 7 + 3);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w * h * 3) + 16, 0xEE);
+  scan_out(rgba.data(), w, h, rgb);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const auto want = rgba[static_cast<std::size_t>(((h - 1 - y) * w + x) * 4 + c)];
+        ASSERT_EQ(rgb[static_cast<std::size_t>((y * w + x) * 3 + c)], want) << x << "," << y;
+      }
+  for (std::size_t i = static_cast<std::size_t>(w * h * 3); i < rgb.size(); ++i)
+    EXPECT_EQ(rgb[i], 0xEE);
+}
+
 TEST(ScanOut, WritesNothingPastTheFrame) {
   std::vector<std::uint8_t> rgba(3 * 3 * 4, 9);
   std::vector<std::uint8_t> rgb(3 * 3 * 3 + 4, 0xEE);
