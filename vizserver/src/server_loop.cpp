@@ -352,6 +352,14 @@ void ServerLoop::check_timers(Clock::time_point now) {
                      options_.host, port_));
     return;
   }
+  for (auto& c : conns_) {
+    // A peer that connects and never says HELLO would hold a slot forever: same limit.
+    if (!c->dead && c->server < 0 && options_.accept_timeout.count() > 0 &&
+        now - c->last_activity > options_.accept_timeout) {
+      close(*c, fmt::format("{}: no complete HELLO within {:.1f} s", who(*c),
+                            seconds(options_.accept_timeout)));
+    }
+  }
   if (options_.stall_timeout.count() <= 0) return;
   for (auto& c : conns_) {
     if (c->dead || c->server < 0) continue;

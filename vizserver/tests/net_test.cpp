@@ -343,6 +343,26 @@ TEST(VizServerNet, MissingPipeserverEndsTheRunAtTheAcceptTimeout) {
   }
 }
 
+TEST(VizServerNet, PeerThatNeverSaysHelloIsClosedAtTheAcceptTimeout) {
+  auto o = options({{4, 4}}, 1);
+  o.accept_timeout = 200ms;
+  CompositingServer server(o);
+  server.start();
+  auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1);
+  Fd idle = connect_tcp("127.0.0.1", server.port(), 1000ms);
+  const std::uint16_t idle_port = local_port(idle.get());
+  std::uint8_t head[kHeaderBytes];
+  const auto t0 = Clock::now();
+  recv_all(idle.get(), head, kHeaderBytes, Clock::now() + 2000ms, "server");  // its ERROR
+  EXPECT_LT(Clock::now() - t0, 1500ms);
+  ASSERT_EQ(server.errors().size(), 1u);
+  EXPECT_EQ(server.errors()[0], fmt::format("connection from 127.0.0.1:{}: no complete HELLO "
+                                            "within 0.2 s",
+                                            idle_port));
+  s.finish_frame(0, 0);  // the pipeserver is unaffected
+  s.wait_swapped(0, 2000ms);
+}
+
 TEST(VizServerNet, WaitingForAFrameNobodySendsEndsWhenEveryoneLeft) {
   CompositingServer server(options({{4, 4}}, 1));
   server.start();
