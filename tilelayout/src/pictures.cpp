@@ -78,17 +78,26 @@ RgbImage framebuffer_picture(const ServerPlan& plan) {
 
 RgbImage wall_picture(const TileLayout& layout) {
   const Wall& wall = layout.wall;
-  RgbImage img(wall.canvas_width, wall.canvas_height, kUnused);
+  // Large canvases are drawn smaller, by a whole factor, so the picture stays at most 4096
+  // pixels on its longer side.
+  const int scale = std::max(1, (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096);
+  const auto shrink = [scale](const Rect& r) {
+    const int x0 = r.x / scale, y0 = r.y / scale;
+    return Rect{x0, y0, (r.right() + scale - 1) / scale - x0,
+                (r.bottom() + scale - 1) / scale - y0};
+  };
+  RgbImage img((wall.canvas_width + scale - 1) / scale, (wall.canvas_height + scale - 1) / scale,
+               kUnused);
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
-    const Rect& r = layout.tiles[i].on_canvas;
+    const Rect r = shrink(layout.tiles[i].on_canvas);
     img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(layout.tile_server[i]));
   }
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
-    const Rect& r = layout.tiles[i].on_canvas;
+    const Rect r = shrink(layout.tiles[i].on_canvas);
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
     label(img, r, layout.tile_server[i]);
   }
-  for (const Display& d : wall.displays) outline(img, d.on_canvas(), {255, 255, 255}, 2);
+  for (const Display& d : wall.displays) outline(img, shrink(d.on_canvas()), {255, 255, 255}, 2);
   return img;
 }
 

@@ -10,6 +10,10 @@
 namespace l2 {
 namespace {
 
+// Bounds the work of planning and the size of plans: a wall with more tiles is a mistake.
+constexpr long long kMaxTiles = 65536;
+constexpr std::size_t kMaxListTiles = 4096;  // checked pairwise for overlaps
+
 const std::vector<std::string_view> kKinds = {"grid", "list", "kd", "strips"};
 
 // Keys of [tiling] that belong to each kind, in kKinds order.
@@ -22,7 +26,9 @@ std::string rect_text(const Rect& r) {
 
 void read_rects(const TomlFields& f, Wall& wall) {
   const toml::array* tiles = f.array("tiles");
-  if (!tiles || tiles->empty()) f.fail("tiles", "needs at least one [x, y, width, height]");
+  if (!tiles || tiles->empty() || tiles->size() > kMaxListTiles) {
+    f.fail("tiles", "needs 1..4096 tiles [x, y, width, height]");
+  }
   std::vector<int> lines;
   for (std::size_t i = 0; i < tiles->size(); ++i) {
     const toml::node& node = *tiles->get(i);
@@ -86,6 +92,12 @@ void read_cost(const TomlFields& f, Wall& wall) {
   if (total <= 0) f.fail("cost", "needs at least one cell above 0");
 }
 
+void check_count(const TomlFields& f, std::string_view key, long long tiles) {
+  if (tiles > kMaxTiles) {
+    f.fail(key, fmt::format("makes {} tiles, more than {}", tiles, kMaxTiles));
+  }
+}
+
 }  // namespace
 
 void read_tiling(const TomlFields& top, Wall& wall) {
@@ -112,6 +124,9 @@ void read_tiling(const TomlFields& top, Wall& wall) {
     case TilingKind::Grid:
       t.tile_width = f.required_integer("tile_width", 1, kMaxCoordinate);
       t.tile_height = f.required_integer("tile_height", 1, kMaxCoordinate);
+      check_count(f, "tile_width",
+                  1LL * ((wall.canvas_width + t.tile_width - 1) / t.tile_width) *
+                      ((wall.canvas_height + t.tile_height - 1) / t.tile_height));
       break;
     case TilingKind::List:
       read_rects(f, wall);
@@ -125,6 +140,7 @@ void read_tiling(const TomlFields& top, Wall& wall) {
     case TilingKind::Strips:
       t.strip_count = f.required_integer("strips", 1, wall.canvas_height);
       t.substrip_count = f.required_integer("substrips", 1, wall.canvas_width);
+      check_count(f, "substrips", 1LL * t.strip_count * t.substrip_count);
       break;
   }
 }

@@ -199,6 +199,15 @@ TEST(WallFile, MissingSectionsAndOtherShapes) {
             "walls/t.toml:11: tiling.cost: needs at least one cell above 0");
 }
 
+// Canvas (2 x 4095 + 10) x 4095 in 1x1 tiles: 8200 x 4095 = 33579000.
+TEST(WallFile, TooManyTiles) {
+  const std::string big =
+      replace(replace(kBase, "width = 100", "width = 4095"), "height = 80", "height = 4095");
+  EXPECT_EQ(error_of(replace(replace(big, "tile_width = 50", "tile_width = 1"), "tile_height = 40",
+                             "tile_height = 1")),
+            "walls/t.toml:10: tiling.tile_width: makes 33579000 tiles, more than 65536");
+}
+
 TEST(WallFile, LoadWallNamesAFileItCannotRead) {
   try {
     load_wall("/nonexistent/wall.toml");

@@ -14,8 +14,9 @@ Rgb palette_colour(int i);
 // and labelled with the display number, unused space dark grey.
 RgbImage framebuffer_picture(const ServerPlan& plan);
 
-// The canvas: mullions and hidden areas dark grey, display edges outlined, each display tile
-// in its pipeserver's colour with a dark outline and labelled with the pipeserver number.
+// The canvas (shrunk by a whole factor when longer than 4096 pixels): mullions dark grey, display
+// edges outlined, each display tile in its pipeserver's colour with a dark outline and labelled
+// with the pipeserver number.
 RgbImage wall_picture(const TileLayout& layout);
 
 }  // namespace l2

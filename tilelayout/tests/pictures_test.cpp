@@ -1,0 +1,78 @@
+#include "tilelayout/pictures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "tilelayout/planner.hpp"
+#include "tilelayout/test_frame.hpp"
+#include "tilelayout/test_pattern.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+constexpr Rgb kUnused{40, 40, 40};
+
+DisplayTile tile(int display, int w, int h) {
+  DisplayTile t;
+  t.display = display;
+  t.on_display = {0, 0, w, h};
+  return t;
+}
+
+TEST(Pictures, PaletteColoursAreDistinct) {
+  std::set<std::tuple<int, int, int>> seen;
+  for (int i = 0; i < 64; ++i) {
+    const Rgb c = palette_colour(i);
+    seen.insert({c.r, c.g, c.b});
+    EXPECT_NE(c, kUnused);
+  }
+  EXPECT_EQ(seen.size(), 64u);
+}
+
+TEST(Pictures, FramebufferShowsGapsTilesByDisplayAndUnusedSpace) {
+  // Tile 0 (display 3, 40x30) at x 2..41, tile 1 (display 5, 20x10) at 44..63, W = 100.
+  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30), tile(5, 20, 10)});
+  const RgbImage pic = framebuffer_picture(plan);
+  ASSERT_EQ(pic.width(), 100);
+  ASSERT_EQ(pic.height(), 50);
+  EXPECT_EQ(pic.at(0, 5), (Rgb{255, 255, 255}));    // header gap of tile 0
+  EXPECT_EQ(pic.at(43, 20), (Rgb{255, 255, 255}));  // gap of tile 1, below the tile too
+  EXPECT_EQ(pic.at(4, 3), palette_colour(3));
+  EXPECT_EQ(pic.at(46, 3), palette_colour(5));
+  EXPECT_EQ(pic.at(50, 20), kUnused);  // below the shorter tile
+  EXPECT_EQ(pic.at(80, 5), kUnused);   // after the END
+  EXPECT_EQ(pic.at(10, 40), kUnused);  // below the last row
+}
+
+TEST(Pictures, WallIsColouredByPipeserverAndShrunkWhenHuge) {
+  const TileLayout small = plan_layout(default_wall());
+  RgbImage pic = wall_picture(small);
+  EXPECT_EQ(pic.width(), 1300);
+  EXPECT_EQ(pic.height(), 980);
+  EXPECT_EQ(pic.at(650, 200), kUnused);  // the vertical mullion
+  const DisplayTile& t = small.tiles[0];
+  EXPECT_EQ(pic.at(t.on_canvas.x + 3, t.on_canvas.y + 3), palette_colour(small.tile_server[0]));
+
+  const TileLayout big = plan_layout(load_wall(std::string(L2_WALLS_DIR) + "/monitors-4x3.toml"));
+  pic = wall_picture(big);  // 5240x3152 canvas, drawn at half size
+  EXPECT_EQ(pic.width(), 2620);
+  EXPECT_EQ(pic.height(), 1576);
+  EXPECT_EQ(pic.at(650, 300), kUnused);  // canvas column 1300: mullion 1280..1319
+  EXPECT_EQ(pic.at(100, 100), palette_colour(big.tile_server[0]));
+}
+
+TEST(TestFrame, TilesCarryThePatternAndEverythingElseIsBlackOrHeader) {
+  const ServerPlan plan = pack_tiles(0, 30, 12, {tile(2, 10, 8), tile(4, 5, 3)});
+  const RgbImage f = test_frame(plan, true);
+  EXPECT_EQ(f.at(2, 0), test_pattern(2, 0, 0));
+  EXPECT_EQ(f.at(11, 7), test_pattern(2, 9, 7));
+  EXPECT_EQ(f.at(14, 2), test_pattern(4, 0, 2));
+  EXPECT_EQ(f.at(14, 3), Rgb{});  // below the shorter tile
+  EXPECT_EQ(f.at(25, 5), Rgb{});  // after END
+  EXPECT_EQ(f.at(5, 10), Rgb{});  // below the last row
+}
+
+}  // namespace
+}  // namespace l2
