@@ -33,12 +33,9 @@ int run_pty(int interval_ms, long long count, long long start) {
   std::cout << pty.slave_path() << std::endl;  // first line: where the host connects
   l2::BackChannel channel(pty.master());
   for (long long sent = 0; !g_stop && (count == 0 || sent < count); ++sent) {
-    try {
-      channel.send_ready(static_cast<std::uint64_t>(start + sent));
-    } catch (const l2::SerialError& e) {
-      // A host that is not reading fills the line; the protocol recovers through SYNC?.
-      std::cerr << "sync_backchannel: " << e.what() << '\n';
-    }
+    // A host that is not reading fills the line; the READY is dropped and counted, and the
+    // host recovers through SYNC? when it reads again.
+    channel.send_ready(static_cast<std::uint64_t>(start + sent));
     channel.serve(std::chrono::milliseconds(interval_ms));
   }
   std::cerr << "sync_backchannel pty: " << l2::to_string(channel.counts()) << '\n';
@@ -47,7 +44,10 @@ int run_pty(int interval_ms, long long count, long long start) {
 
 int run_send_ready(const std::string& device, int baud, long long frame) {
   l2::SerialPort port = l2::SerialPort::open(device, baud);
-  l2::BackChannel(port).send_ready(static_cast<std::uint64_t>(frame));
+  if (!l2::BackChannel(port).send_ready(static_cast<std::uint64_t>(frame))) {
+    std::cerr << "sync_backchannel: " << device << " is full (nobody reads it); READY dropped\n";
+    return 1;
+  }
   return 0;
 }
 
@@ -67,7 +67,7 @@ int run_wait_ready(const std::string& device, int baud, long long frame, int tim
   return 0;
 }
 
-int run_watch(const std::string& device, int baud, int duration_ms) {
+int run_watch(const std::string& device, int baud, int duration_ms, long long count) {
   stop_on_signals();
   l2::SerialPort port = l2::SerialPort::open(device, baud);
   // Only after opening: bytes that arrived earlier were discarded by the open.
@@ -75,10 +75,14 @@ int run_watch(const std::string& device, int baud, int duration_ms) {
   l2::MessageParser parser;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
   std::uint8_t buffer[256];
-  while (!g_stop && (duration_ms == 0 || std::chrono::steady_clock::now() < deadline)) {
+  long long decoded = 0;
+  while (!g_stop && (duration_ms == 0 || std::chrono::steady_clock::now() < deadline) &&
+         (count == 0 || decoded < count)) {
     const std::size_t n = port.read(buffer, std::chrono::milliseconds(50));
-    parser.feed(std::span<const std::uint8_t>(buffer, n),
-                [](const l2::Message& m) { std::cout << l2::to_string(m) << std::endl; });
+    parser.feed(std::span<const std::uint8_t>(buffer, n), [&](const l2::Message& m) {
+      std::cout << l2::to_string(m) << std::endl;
+      ++decoded;
+    });
   }
   const l2::ParserCounts& c = parser.counts();
   std::cout << fmt::format("decoded {}, noise bytes {}, resyncs {}, bad checksums {}\n", c.messages,
@@ -152,13 +156,17 @@ int main(int argc, char** argv) {
   watch->add_option("--duration", duration_ms, "Stop after this many milliseconds (0: SIGINT)")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
+  long long watch_count = 0;
+  watch->add_option("--count", watch_count, "Stop after this many decoded messages (0: no limit)")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (*pty) return run_pty(interval_ms, count, frame);
     if (*send) return run_send_ready(device, baud, frame);
     if (*wait) return run_wait_ready(device, baud, frame, timeout_ms, retries);
-    if (*watch) return run_watch(device, baud, duration_ms);
+    if (*watch) return run_watch(device, baud, duration_ms, watch_count);
   } catch (const l2::SerialError& e) {
     std::cerr << "sync_backchannel: " << e.what() << '\n';
     return 1;

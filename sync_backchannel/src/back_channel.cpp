@@ -22,12 +22,13 @@ std::chrono::milliseconds left_until(Clock::time_point deadline) {
 
 std::string to_string(const BackChannelCounts& c) {
   return fmt::format(
-      "decoded {}, noise bytes {}, resyncs {}, bad checksums {}, READY sent {}, SYNC? sent {}, "
+      "decoded {}, noise bytes {}, resyncs {}, bad checksums {}, READY sent {}, READY dropped {}, "
+      "SYNC? sent {}, "
       "SYNC? answered {}, SYNC? unanswered {}, wait timeouts {}, stale {}, duplicates {}, "
       "ahead {}, unexpected {}",
       c.parser.messages, c.parser.noise_bytes, c.parser.resyncs, c.parser.bad_checksums,
-      c.ready_sent, c.sync_sent, c.sync_answered, c.sync_unanswered, c.wait_timeouts, c.stale,
-      c.duplicates, c.ahead, c.unexpected);
+      c.ready_sent, c.ready_dropped, c.sync_sent, c.sync_answered, c.sync_unanswered,
+      c.wait_timeouts, c.stale, c.duplicates, c.ahead, c.unexpected);
 }
 
 const BackChannelCounts& BackChannel::counts() const {
@@ -35,11 +36,14 @@ const BackChannelCounts& BackChannel::counts() const {
   return counts_;
 }
 
-void BackChannel::send_ready(std::uint64_t frame) {
-  // Remembered before writing: if the write times out, SYNC? can still repeat it later.
+bool BackChannel::send_ready(std::uint64_t frame) {
+  // Remembered even when dropped: SYNC? repeats it once the host reads again.
   last_sent_ = reduce(frame);
   ++counts_.ready_sent;
-  port_.write_all(format_message(MessageKind::Ready, frame), kWriteTimeout);
+  const std::string line = format_message(MessageKind::Ready, frame);
+  if (port_.write_some(line) == line.size()) return true;
+  ++counts_.ready_dropped;
+  return false;
 }
 
 void BackChannel::send_sync_request(std::uint64_t expected) {

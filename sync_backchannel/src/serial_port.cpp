@@ -171,6 +171,26 @@ void SerialPort::write_all(std::span<const std::uint8_t> bytes, std::chrono::mil
   }
 }
 
+std::size_t SerialPort::write_some(std::span<const std::uint8_t> bytes) {
+  if (fd_ < 0) throw SerialError(fmt::format("{} is closed", name_));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+    } else if (n == 0 || errno == EAGAIN) {
+      break;
+    } else if (errno != EINTR) {
+      fail("cannot write to", errno);
+    }
+  }
+  return done;
+}
+
+std::size_t SerialPort::write_some(std::string_view text) {
+  return write_some(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
 void SerialPort::write_all(std::string_view text, std::chrono::milliseconds timeout) {
   write_all(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), timeout);
 }

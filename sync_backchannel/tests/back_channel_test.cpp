@@ -192,13 +192,36 @@ TEST(BackChannel, SlowByteByByteWriterStillDelivers) {
   EXPECT_EQ(line.host->counts().parser.noise_bytes, 0u);
 }
 
+// A host that stops reading fills its line. The emulator must not wait for it (it would hold
+// up every display); READYs are dropped and counted, and the host recovers with SYNC?.
+TEST(BackChannel, AHostThatStoppedReadingNeitherStallsTheEmulatorNorGetsLost) {
+  Line line;
+  constexpr int kFrames = 3000;  // about 51 KB: more than a pty line holds
+  const auto start = Clock::now();
+  int dropped = 0;
+  for (int frame = 0; frame < kFrames; ++frame) dropped += !line.emulator.send_ready(frame);
+  EXPECT_LT(Clock::now() - start, 500ms);
+  EXPECT_GT(dropped, 0);
+  EXPECT_EQ(line.emulator.counts().ready_dropped, static_cast<std::uint64_t>(dropped));
+  EXPECT_EQ(line.emulator.counts().ready_sent, static_cast<std::uint64_t>(kFrames));
+  // The host reads again: the backlog is stale, the last READY was dropped, SYNC? brings it.
+  std::thread emulator([&] { serve_until_answered(line.emulator, 3s); });
+  const WaitResult r = line.host->wait_ready(kFrames - 1, 150ms, 5);
+  emulator.join();
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.frame, static_cast<std::uint32_t>(kFrames - 1));
+  EXPECT_GE(r.retries, 1);
+  EXPECT_GT(line.host->counts().stale, 0u);
+}
+
 TEST(BackChannel, CountsReadAsOneLine) {
   BackChannelCounts c;
   c.parser.messages = 3;
   c.parser.noise_bytes = 2;
   c.duplicates = 1;
   EXPECT_EQ(to_string(c),
-            "decoded 3, noise bytes 2, resyncs 0, bad checksums 0, READY sent 0, SYNC? sent 0, "
+            "decoded 3, noise bytes 2, resyncs 0, bad checksums 0, READY sent 0, READY dropped 0, "
+            "SYNC? sent 0, "
             "SYNC? answered 0, SYNC? unanswered 0, wait timeouts 0, stale 0, duplicates 1, "
             "ahead 0, unexpected 0");
 }

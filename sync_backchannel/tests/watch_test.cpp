@@ -97,7 +97,7 @@ TEST(SyncBackchannelExe, BadDeviceIsOneErrorLine) {
 
 TEST(SyncBackchannelExe, WatchPrintsDecodedMessagesAndCounts) {
   PtyPair pty = PtyPair::open();
-  ChildProcess watch({kExe, "watch", pty.slave_path(), "--duration", "600"});
+  ChildProcess watch({kExe, "watch", pty.slave_path(), "--count", "2", "--duration", "5000"});
   ASSERT_EQ(watch.read_err_line(5s), "watching " + pty.slave_path());
   pty.master().write_all("READY 000001 21\r\n#noise#READ\x01SYNC? 000000 EE\r\n", 100ms);
   const ChildResult r = watch.wait(5s);
@@ -122,10 +122,10 @@ TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
   ChildProcess emulator({kExe, "pty", "--interval", "30"});
   const std::string slave = emulator.read_out_line(5s);
   ASSERT_THAT(slave, StartsWith("/dev/pts/"));
-  // A person watching the line sees whole READY lines from frame 0 on.
+  // A person watching the line sees whole READY lines from frame 0 on (queued on the line
+  // since the emulator started; socat, unlike a host, does not discard them).
   const ChildResult seen = test::run(
-      {"timeout", "-s", "INT", "0.4", "socat", "-u", "FILE:" + slave + ",raw,echo=0", "STDOUT"},
-      5s);
+      {"timeout", "-s", "INT", "1", "socat", "-u", "FILE:" + slave + ",raw,echo=0", "STDOUT"}, 5s);
   EXPECT_THAT(seen.out, StartsWith("READY 000000 26\r\nREADY 000001 21\r\n"));
   // A host joining late takes the next READY, whatever frame the emulator has reached.
   SerialPort port = SerialPort::open(slave, 115200);

@@ -17,12 +17,13 @@ namespace l2 {
 
 inline constexpr std::chrono::milliseconds kDefaultReadyTimeout{200};
 inline constexpr int kDefaultReadyRetries = 3;
-// Bounds a write on a line nobody drains, so the emulator never hangs on a stuck host.
+// Bounds the host's SYNC? write; the emulator end never waits (see send_ready).
 inline constexpr std::chrono::milliseconds kWriteTimeout{100};
 
 struct BackChannelCounts {
   ParserCounts parser;                // decoded, noise bytes, resyncs, bad checksums
-  std::uint64_t ready_sent = 0;       // READY lines written (including answers to SYNC?)
+  std::uint64_t ready_sent = 0;       // READY lines sent (including answers to SYNC?)
+  std::uint64_t ready_dropped = 0;    // of those, not (wholly) taken by a full line
   std::uint64_t sync_sent = 0;        // SYNC? requests written (host retries)
   std::uint64_t sync_answered = 0;    // SYNC? requests answered with the last READY
   std::uint64_t sync_unanswered = 0;  // SYNC? requests before any READY existed
@@ -50,8 +51,11 @@ class BackChannel {
  public:
   explicit BackChannel(SerialPort& port) : port_(port) {}
 
-  // Emulator end: announces that `frame` (taken modulo 10^6) is on the displays.
-  void send_ready(std::uint64_t frame);
+  // Emulator end: announces that `frame` (taken modulo 10^6) is on the displays. Never waits:
+  // when the line is full because the host stopped reading, the READY (or its tail) is dropped
+  // and counted, and false is returned; the host recovers through SYNC?. A stuck host must not
+  // hold up the swap of every display.
+  bool send_ready(std::uint64_t frame);
 
   // Emulator end: reads for `duration`, answering every SYNC? with the last READY sent.
   // Returns how many requests were answered.

@@ -53,6 +53,11 @@ class SerialPort {
   void write_all(std::span<const std::uint8_t> bytes, std::chrono::milliseconds timeout);
   void write_all(std::string_view text, std::chrono::milliseconds timeout);
 
+  // Writes what the line accepts right now, without waiting; returns how many bytes that was
+  // (fewer than asked when the line is full). Throws SerialError when the write fails.
+  std::size_t write_some(std::span<const std::uint8_t> bytes);
+  std::size_t write_some(std::string_view text);
+
   void close() noexcept;
   bool is_open() const { return fd_ >= 0; }
   const std::string& name() const { return name_; }
