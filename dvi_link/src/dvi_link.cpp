@@ -98,16 +98,17 @@ struct Fd {
   }
 };
 
-// Pid of the writer of an existing segment, or 0 when it holds no complete DVI link header.
+// Pid of the writer of an existing segment; -1 when it holds no complete DVI link header
+// (another creator may be half-way through, or it is not ours), 0 when it has vanished since.
 std::int32_t existing_writer(const std::string& name) {
   Fd fd{::shm_open(name.c_str(), O_RDWR, 0)};
+  if (fd.fd < 0) return 0;
   struct stat st {};
-  if (fd.fd < 0 || ::fstat(fd.fd, &st) != 0 ||
-      static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
-    return 0;
+  if (::fstat(fd.fd, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
+    return -1;
   }
   Mapping map = map_fd(name, fd.fd, kHeaderBytes);
-  if (map.header().magic.load(std::memory_order_acquire) != kMagic) return 0;
+  if (map.header().magic.load(std::memory_order_acquire) != kMagic) return -1;
   return map.header().writer_pid.load();
 }
 
@@ -118,6 +119,11 @@ int create_segment(const std::string& name) {
     if (fd >= 0) return fd;
     if (errno != EEXIST) fail_errno(name, "cannot create shared-memory segment", errno);
     const std::int32_t pid = existing_writer(name);
+    if (pid < 0) {
+      fail(name,
+           "already exists and is not a complete DVI link (if it was left behind, "
+           "remove it with remove_stale)");
+    }
     if (process_alive(pid)) {
       fail(name, fmt::format("already exists and is in use by process {}", pid));
     }

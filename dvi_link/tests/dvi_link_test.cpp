@@ -266,6 +266,10 @@ TEST(DviLink, SegmentsThatAreNotDviLinksAreRefused) {
   EXPECT_EQ(error_of([&] { DviLinkReader::open(name); }),
             "DVI link " + name + ": not a DVI link (magic 0x00000000)");
   // A segment without a valid header is not taken over by create(): it may be mid-creation.
+  EXPECT_EQ(error_of([&] { DviLinkWriter::create(name, 4, 4); }),
+            "DVI link " + name +
+                ": already exists and is not a complete DVI link (if it was left behind, remove "
+                "it with remove_stale)");
   ::close(fd);
   EXPECT_TRUE(remove_stale(name));
 }

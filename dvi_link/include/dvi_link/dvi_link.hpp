@@ -63,7 +63,9 @@ class DviLinkWriter {
  public:
   // Creates segment `name` for width x height frames, all slots black. If a segment of that
   // name exists and the process that created it is dead, it is replaced; if that process is
-  // alive this is an error. Errors: DviLinkError "DVI link <name>: ...".
+  // alive, or the segment has no complete DVI link header, this is an error (a process that
+  // died but was not yet reaped by its parent still counts as alive).
+  // Errors: DviLinkError "DVI link <name>: ...".
   static DviLinkWriter create(const std::string& name, int width, int height);
 
   DviLinkWriter(DviLinkWriter&& other) noexcept;
