@@ -2,15 +2,47 @@
 // documented in pipeserver/README.md: every example wall (or the given ones) x every scene at
 // the scenes' default sizes, a few frames each.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "image/png_io.hpp"
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 
+namespace {
+
+// The wall as a viewer sees it: every display reassembled from the pipeservers' frames, placed
+// at its canvas position, mullions dark grey.
+int write_picture(const std::filesystem::path& out, const std::filesystem::path& wall_file,
+                  const std::string& scene_name, int frame) {
+  const l2::TileLayout layout = l2::plan_layout(l2::load_wall(wall_file));
+  auto scene = l2::make_scene(scene_name);
+  const auto check = l2::test::check_wall(layout, *scene, frame);
+  l2::RgbImage canvas(layout.wall.canvas_width, layout.wall.canvas_height, {40, 40, 40});
+  for (const auto& d : layout.wall.displays) {
+    const auto& img = check.reassembly.displays[static_cast<std::size_t>(d.id)];
+    for (int y = 0; y < d.height; ++y)
+      for (int x = 0; x < d.width; ++x) canvas.set(d.canvas_x + x, d.canvas_y + y, img.at(x, y));
+  }
+  l2::write_png(out, canvas);
+  std::printf("wrote %s: %s, scene %s, frame %d, %ld decode errors\n", out.c_str(),
+              wall_file.filename().c_str(), scene_name.c_str(), frame,
+              static_cast<long>(check.reassembly.errors.total()));
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  // pipeserver_verify --picture OUT.png WALL.toml [SCENE [FRAME]]: a picture of a reassembled wall.
+  if (argc >= 4 && std::string(argv[1]) == "--picture") {
+    return write_picture(argv[2], argv[3], argc > 4 ? argv[4] : "mesh",
+                         argc > 5 ? std::atoi(argv[5]) : 0);
+  }
+  // pipeserver_verify [WALL.toml...]: the tolerance table (default: every wall in walls/).
   std::vector<std::filesystem::path> walls;
   for (int i = 1; i < argc; ++i) walls.emplace_back(argv[i]);
   if (walls.empty()) {
