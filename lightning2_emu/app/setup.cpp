@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "tilelayout/wall_file.hpp"
 
 namespace l2 {
 
@@ -13,24 +14,41 @@ Setup make_setup(const CommonOptions& o) {
     throw std::invalid_argument("give either --displays WxH[,WxH...] or --wall W.toml");
   }
   Setup setup;
-  const InputLimit limit = parse_size(o.board_max, "--board-max");
+  InputLimit limit = parse_size(o.board_max, "--board-max");
   setup.config.background = parse_colour(o.background, "--background");
   setup.config.workers = o.threads;
-  if (!o.wall.empty()) {
-    throw std::invalid_argument("--wall: wall files are not supported by this build yet");
-  }
-  setup.config.displays = parse_display_list(o.displays);
-  if (!o.groups.empty()) apply_group_list(o.groups, setup.config.displays);
   const int inputs = static_cast<int>(o.inputs.size());
+  int mesh_inputs = inputs;
+  if (!o.wall.empty()) {
+    // The wall decides displays, swap groups, board limit and, through its pipeserver count,
+    // how many board rows the mesh has.
+    const Wall wall = load_wall(o.wall);
+    if (!o.groups.empty()) {
+      throw std::invalid_argument("--groups: with --wall the swap groups come from the wall");
+    }
+    setup.from_wall = true;
+    setup.canvas_width = wall.canvas_width;
+    setup.canvas_height = wall.canvas_height;
+    for (const Display& d : wall.displays) {
+      setup.config.displays.push_back({d.id, d.width, d.height, d.swap_group});
+      setup.placements.push_back({d.id, d.canvas_x, d.canvas_y});
+    }
+    limit = {wall.board_max_width, wall.board_max_height};
+    mesh_inputs = wall.server_count;
+  } else {
+    setup.config.displays = parse_display_list(o.displays);
+    if (!o.groups.empty()) apply_group_list(o.groups, setup.config.displays);
+  }
+  const int displays = static_cast<int>(setup.config.displays.size());
   if (o.mesh.empty()) {
-    setup.config.mesh = Mesh::fit(inputs, static_cast<int>(setup.config.displays.size()), limit);
+    setup.config.mesh = Mesh::fit(mesh_inputs, displays, limit);
   } else {
     const InputLimit rc = parse_size(o.mesh, "--mesh");
     setup.config.mesh = Mesh(rc.width, rc.height, limit);
-    if (inputs > setup.config.mesh.input_count()) {
-      throw MeshError(fmt::format("{} inputs given, the mesh ({}) has {}", inputs,
-                                  setup.config.mesh.describe(), setup.config.mesh.input_count()));
-    }
+  }
+  if (inputs > setup.config.mesh.input_count()) {
+    throw MeshError(fmt::format("{} inputs given, the mesh ({}) has {}", inputs,
+                                setup.config.mesh.describe(), setup.config.mesh.input_count()));
   }
   return setup;
 }

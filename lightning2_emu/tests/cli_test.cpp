@@ -8,6 +8,9 @@
 
 #include "frame_builder.hpp"
 #include "image/png_io.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/test_pattern.hpp"
+#include "tilelayout/wall_file.hpp"
 
 namespace l2 {
 namespace {
@@ -137,6 +140,54 @@ TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
   EXPECT_EQ(report["frames_torn"], 1);
   EXPECT_EQ(report["groups"][0]["swaps"], 2);
   EXPECT_EQ(report["tick_log"][1]["frames"][1], "torn");
+}
+
+// tilelayout --scanout, then route --wall: every display shows the test pattern where the plan
+// put tiles, and wall.png places the displays as on the wall.
+TEST_F(Cli, RouteWithAWallRebuildsTheTilelayoutScanout) {
+  const std::string wall_file = std::string(L2_WALLS_DIR) + "/kd-2x2.toml";
+  const std::string scan_dir = (dir / "scan").string();
+  ASSERT_EQ(std::system((std::string(TILELAYOUT_EXE) + " " + wall_file + " --scanout " + scan_dir +
+                         " > /dev/null")
+                            .c_str()),
+            0);
+  const Wall wall = load_wall(wall_file);
+  const TileLayout layout = plan_layout(wall);
+  std::string inputs;
+  for (int s = 0; s < wall.server_count; ++s) {
+    inputs += " " + scan_dir + "/scanout-" + std::to_string(s) + ".png";
+  }
+  const Result r = run("route --wall " + wall_file + " --out " + (dir / "out").string() + inputs);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::vector<RgbImage> expected;
+  for (const Display& d : wall.displays) expected.emplace_back(d.width, d.height);
+  for (const DisplayTile& t : layout.tiles) {
+    for (int y = t.on_display.y; y < t.on_display.bottom(); ++y) {
+      for (int x = t.on_display.x; x < t.on_display.right(); ++x) {
+        expected[t.display].set(x, y, test_pattern(t.display, x, y));
+      }
+    }
+  }
+  for (const Display& d : wall.displays) {
+    const RgbImage shown = read_png(dir / "out" / ("display-" + std::to_string(d.id) + ".png"));
+    EXPECT_EQ(shown, expected[d.id]) << "display " << d.id;
+  }
+  const RgbImage picture = read_png(dir / "out/wall.png");
+  EXPECT_GE(picture.width(), wall.canvas_width);
+  EXPECT_GE(picture.height(), wall.canvas_height);
+  for (const Display& d : wall.displays) {
+    EXPECT_EQ(picture.at(d.canvas_x + d.width / 2, d.canvas_y + d.height / 3),
+              expected[d.id].at(d.width / 2, d.height / 3));
+  }
+  const auto report = read_json(dir / "out/report.json");
+  EXPECT_EQ(report["errors"]["total"], 0);
+}
+
+TEST_F(Cli, HelpNamesBothCommands) {
+  const Result r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.output.find("route"), std::string::npos);
+  EXPECT_NE(r.output.find("sequence"), std::string::npos);
 }
 
 }  // namespace
