@@ -18,11 +18,19 @@ TEST(DviLinkStress, ConcurrentReaderNeverSeesATornFrame) {
   DviLinkWriter writer = DviLinkWriter::create(dvi_link_name("stress"), 64, 48);
   DviLinkReader reader = DviLinkReader::open(writer.name());
   std::atomic<bool> done{false};
+  std::atomic<std::uint64_t> seen{0};  // distinct frames the reader has checked
   std::uint64_t published = 0;
+  constexpr std::uint64_t kEnough = 200;
 
+  // Runs at least 300 ms and until the reader has checked kEnough frames; at most 3 s on a
+  // machine too busy to get there.
   std::thread write_thread([&] {
-    const auto end = std::chrono::steady_clock::now() + 500ms;
-    while (std::chrono::steady_clock::now() < end) {
+    const auto start = std::chrono::steady_clock::now();
+    for (;;) {
+      const auto elapsed = std::chrono::steady_clock::now() - start;
+      if (elapsed > 3s || (elapsed > 300ms && seen.load(std::memory_order_relaxed) >= kEnough)) {
+        break;
+      }
       // Each frame is one value throughout, so any mix of two frames shows.
       std::span<std::uint8_t> f = writer.back_frame();
       std::fill(f.begin(), f.end(), static_cast<std::uint8_t>(published + 1));
@@ -38,6 +46,7 @@ TEST(DviLinkStress, ConcurrentReaderNeverSeesATornFrame) {
     backwards += v->sequence < last;
     last = v->sequence;
     ++frames;
+    seen.store(frames, std::memory_order_relaxed);
     const std::uint8_t want = static_cast<std::uint8_t>(v->sequence);
     for (int y = 0; y < v->height; ++y) {
       std::span<const std::uint8_t> row = v->row(y);
@@ -50,7 +59,7 @@ TEST(DviLinkStress, ConcurrentReaderNeverSeesATornFrame) {
 
   EXPECT_EQ(torn, 0u);
   EXPECT_EQ(backwards, 0u);
-  EXPECT_GE(frames, 10u);
+  EXPECT_GE(frames, kEnough);
   EXPECT_EQ(last, published);  // after the writer stops, the reader ends on its last frame
 }
 

@@ -286,18 +286,24 @@ TEST(DviLink, ASegmentWhoseSizeDisagreesWithItsHeaderIsRefused) {
 }
 
 // A child writes as fast as it can while the parent reads: every frame the parent sees is whole.
+// The child runs at least 200 ms and until the parent has checked enough frames; at most 3 s.
 TEST(DviLink, CrossProcessReaderNeverSeesATornFrame) {
   const std::string name = dvi_link_name("race");
-  int to_parent[2];
+  constexpr std::uint64_t kEnough = 50;
+  int to_parent[2], to_child[2];
   ASSERT_EQ(::pipe(to_parent), 0);
+  ASSERT_EQ(::pipe2(to_child, O_NONBLOCK), 0);
   const pid_t child = fork_child([&] {
     DviLinkWriter writer = DviLinkWriter::create(name, 128, 64);
     send_byte(to_parent[1]);
-    const auto end = std::chrono::steady_clock::now() + 300ms;
+    const auto end = std::chrono::steady_clock::now() + 3s;
+    char stop = 0;
     for (std::uint64_t n = 1; std::chrono::steady_clock::now() < end; ++n) {
       std::span<std::uint8_t> f = writer.back_frame();
       std::fill(f.begin(), f.end(), static_cast<std::uint8_t>(n));
       if (writer.publish() != n) return 1;
+      if (stop == 0 && ::read(to_child[0], &stop, 1) != 1) stop = 0;
+      if (stop != 0 && std::chrono::steady_clock::now() > end - 2800ms) break;  // ran 200 ms
     }
     return 0;
   });
@@ -311,7 +317,7 @@ TEST(DviLink, CrossProcessReaderNeverSeesATornFrame) {
     if (!v || v->sequence == last) continue;
     EXPECT_GT(v->sequence, last);
     last = v->sequence;
-    ++frames;
+    if (++frames == kEnough) send_byte(to_child[1]);
     const std::uint8_t want = static_cast<std::uint8_t>(v->sequence);
     for (int y = 0; y < v->height; ++y) {
       std::span<const std::uint8_t> row = v->row(y);
@@ -320,9 +326,8 @@ TEST(DviLink, CrossProcessReaderNeverSeesATornFrame) {
   }
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   EXPECT_EQ(torn, 0u);
-  EXPECT_GE(frames, 10u);
-  ::close(to_parent[0]);
-  ::close(to_parent[1]);
+  EXPECT_GE(frames, kEnough);
+  for (int fd : {to_parent[0], to_parent[1], to_child[0], to_child[1]}) ::close(fd);
 }
 
 }  // namespace
