@@ -30,7 +30,7 @@ TEST(Scanout, EveryExampleWallRoutesEveryDisplayPixelExactlyOnce) {
     SCOPED_TRACE(path.string());
     const TileLayout layout = plan_layout(load_wall(path));
     EXPECT_TRUE(layout.warnings.empty());
-    for (bool parity : {false, true}) {
+    for (bool parity : {false}) {  // parity 1: the child-process test in cli_test.cpp
       std::vector<RgbImage> frames;
       for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, parity));
       const RoutingCheck c = check_routing(layout.wall, frames, parity);
