@@ -7,6 +7,7 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
@@ -36,13 +37,15 @@ TEST(ExampleWalls, ThereAreSome) {
   EXPECT_GE(example_walls().size(), 3u);
 }
 
-class ExampleWall : public ::testing::TestWithParam<std::filesystem::path> {};
+// One test per wall and scene, so ctest can spread them over cores.
+class ExampleWall
+    : public ::testing::TestWithParam<std::tuple<std::filesystem::path, std::string>> {};
 
-TEST_P(ExampleWall, EverySceneReassemblesToTheReference) {
+TEST_P(ExampleWall, ReassemblesToTheReference) {
   {
-    const auto& path = GetParam();
+    const auto& [path, name] = GetParam();
     const TileLayout layout = plan_layout(load_wall(path));
-    for (const auto& name : scene_names()) {
+    {
       auto scene = make_scene(name, test::small_options());
       const int frame = 3;
       const auto check = test::check_wall(layout, *scene, frame);
@@ -61,9 +64,12 @@ TEST_P(ExampleWall, EverySceneReassemblesToTheReference) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Walls, ExampleWall, ::testing::ValuesIn(example_walls()),
+INSTANTIATE_TEST_SUITE_P(Walls, ExampleWall,
+                         ::testing::Combine(::testing::ValuesIn(example_walls()),
+                                            ::testing::ValuesIn(scene_names())),
                          [](const auto& param_info) {
-                           std::string n = param_info.param.stem().string();
+                           std::string n = std::get<0>(param_info.param).stem().string() + "_" +
+                                           std::get<1>(param_info.param);
                            for (char& c : n)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
