@@ -45,17 +45,24 @@ int main(int argc, char** argv) {
   std::string png_dir, scanout_dir;
   int parity = 0;
   bool print_default = false;
-  app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md");
+  app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
+      ->type_name("WALL.toml");
   app.add_option("--png", png_dir,
                  "write pictures to DIR: pipeserver-N.png (framebuffer: header gaps white, "
                  "tiles coloured by display) and wall.png (tiles coloured and labelled by "
-                 "pipeserver)");
+                 "pipeserver)")
+      ->type_name("DIR");
   app.add_option("--scanout", scanout_dir,
                  "write scanout-N.png to DIR: the 24-bit frame each pipeserver would scan out, "
-                 "every header drawn, every tile filled with the routing test pattern");
+                 "every header drawn, every tile filled with the routing test pattern")
+      ->type_name("DIR");
   app.add_option("--parity", parity, "frame parity for --scanout headers")->check(CLI::Range(0, 1));
   app.add_flag("--print-default", print_default, "print the built-in default wall file, exit");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0
+  }
 
   if (print_default) {
     std::cout << l2::default_wall_toml();

@@ -138,8 +138,10 @@ TEST_F(Cli, MissingFileAndBadOptions) {
   EXPECT_EQ(r.err, "tilelayout: " + (dir_ / "none.toml").string() +
                        ": cannot read: No such file or directory\n");
   r = run("--parity 2");
-  EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.status, 1);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--parity"), std::string::npos) << r.err;
+  r = run("a.toml b.toml");
+  EXPECT_EQ(r.status, 2);
 }
 
 TEST_F(Cli, HelpAndDefault) {

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <random>
 #include <sstream>
 
+#include "tilelayout/planner.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -206,6 +208,41 @@ TEST(WallFile, TooManyTiles) {
   EXPECT_EQ(error_of(replace(replace(big, "tile_width = 50", "tile_width = 1"), "tile_height = 40",
                              "tile_height = 1")),
             "walls/t.toml:10: tiling.tile_width: makes 33579000 tiles, more than 65536");
+}
+
+// Whatever the bytes, loading and planning end in a Wall or a one-line LayoutError: no other
+// exception, no crash (the ASan run watches for out-of-bounds access).
+TEST(WallFile, MutatedFilesFailCleanly) {
+  std::mt19937 rng(12345);
+  const std::string alphabet = "0123456789-=[]\",.\n #abkxyz";
+  int errors = 0;
+  for (int i = 0; i < 3000; ++i) {
+    std::string text = kBase;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0:
+          text[at] = alphabet[rng() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + rng() % 3);
+          break;
+        default:
+          text.insert(at, 1, alphabet[rng() % alphabet.size()]);
+          break;
+      }
+    }
+    try {
+      plan_layout(parse_wall(text, "m.toml"));
+    } catch (const LayoutError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("m.toml", 0), 0u) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      ++errors;
+    }
+  }
+  EXPECT_GT(errors, 1000);  // most mutations break the file
 }
 
 TEST(WallFile, LoadWallNamesAFileItCannotRead) {
