@@ -21,13 +21,15 @@ void servers(const TileLayout& layout, std::string& out) {
         "pipeserver {}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
         s.server, s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s", s.used_height(),
         s.fb_height, 100.0 * double(used) / total);
-    for (const PackedTile& p : s.tiles) {
+    // Tiles are numbered in packing order, as packing errors number them.
+    for (std::size_t i = 0; i < s.tiles.size(); ++i) {
+      const PackedTile& p = s.tiles[i];
       const DisplayTile& t = p.tile;
       out += fmt::format(
-          "  tile {:>4} -> display {:>2} {:>4}x{:<4} at {:>4},{:<4}  packed at {:>4},{:<4}  "
-          "canvas {},{}\n",
-          t.logical_tile, t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y,
-          p.fb_x, p.fb_y, t.on_canvas.x, t.on_canvas.y);
+          "  tile {:>3}: display {:>2} {:>4}x{:<4} at {:>4},{:<4}  packed at {:>4},{:<4}  "
+          "canvas {},{} (logical tile {})\n",
+          i, t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y, p.fb_x,
+          p.fb_y, t.on_canvas.x, t.on_canvas.y, t.logical_tile);
     }
   }
 }

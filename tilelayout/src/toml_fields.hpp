@@ -28,6 +28,7 @@ class TomlFields {
              std::initializer_list<std::string_view> allowed);
 
   bool has(std::string_view key) const { return table_.contains(key); }
+  const toml::node* node(std::string_view key) const { return table_.get(key); }
   int line() const;  // the table's own line (for fields that are missing)
   int line_of(std::string_view key) const;
   std::string field(std::string_view key) const;  // "prefix.key"

@@ -115,7 +115,12 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
 
 void read_displays(const TomlFields& top, Wall& wall) {
   const toml::table* grid = top.table("display_grid");
-  const toml::array* list = top.array("display");
+  const toml::node* entries = top.node("display");
+  if (entries && !entries->is_array()) {
+    top.fail("display", fmt::format("must be [[display]] entries (an array of tables), got {}",
+                                    type_name(*entries)));
+  }
+  const toml::array* list = entries ? entries->as_array() : nullptr;
   if (grid && list) {
     top.fail("display", "use either [display_grid] or [[display]], not both");
   }

@@ -187,6 +187,9 @@ TEST(WallFile, FramebufferAboveTheBoardLimit) {
 TEST(WallFile, MissingSectionsAndOtherShapes) {
   EXPECT_EQ(error_of("[tiling]\nkind = \"grid\"\n"),
             "walls/t.toml: display_grid: the wall has no displays ([display_grid] or [[display]])");
+  EXPECT_EQ(error_of("[display]\nwidth = 5\n"),
+            "walls/t.toml:1: display: must be [[display]] entries (an array of tables), got a "
+            "table");
   EXPECT_EQ(error_of(kBase.substr(0, kBase.find("[tiling]"))),
             "walls/t.toml: tiling: missing (required)");
   EXPECT_EQ(
