@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   Options o;
   app.add_option("--wall", o.wall, "wall file (TOML); default: the built-in default wall")
       ->check(CLI::ExistingFile);
-  app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::NonNegativeNumber);
+  app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::Range(0, 4095));
   app.add_option("--frame", o.frame, "application frame number (animation, header parity k mod 2)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--count", o.count,
