@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -32,9 +33,11 @@ std::string slurp(const fs::path& p) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tilelayout_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    // Parameterised test names hold '/'; one folder per test and process.
+    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    dir_ =
+        fs::temp_directory_path() / ("tilelayout_cli_" + std::to_string(::getpid()) + "_" + name);
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -155,41 +158,55 @@ TEST_F(Cli, HelpAndDefault) {
   EXPECT_EQ(r.out.rfind("wall \"2x2 k-d wall\"", 0), 0u) << r.out;
 }
 
-// The --scanout frames of every example wall, read back from the PNG files the executable
-// wrote, route every visible display pixel exactly once. --png writes its pictures too.
-TEST_F(Cli, ScanoutFramesOfEveryExampleWallRouteEachPixelOnce) {
+std::vector<fs::path> example_walls() {
+  std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(L2_WALLS_DIR)) {
-    if (e.path().extension() != ".toml") continue;
-    SCOPED_TRACE(e.path().string());
-    const fs::path out = dir_ / e.path().stem();
-    const ChildRun r = run("'" + e.path().string() + "' --parity 1 --scanout '" +
-                           (out / "scan").string() + "' --png '" + (out / "png").string() + "'");
-    ASSERT_EQ(r.status, 0) << r.err;
-    const Wall wall = load_wall(e.path());
-    std::vector<RgbImage> frames;
-    for (int s = 0; s < wall.server_count; ++s) {
-      frames.push_back(read_png(out / "scan" / ("scanout-" + std::to_string(s) + ".png")));
-      EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
-      EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
-      const RgbImage pic = read_png(out / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
-      EXPECT_EQ(pic.width(), wall.framebuffer_width);
-    }
-    const RgbImage wall_png = read_png(out / "png" / "wall.png");
-    // Canvases longer than 4096 pixels are drawn shrunk by a whole factor.
-    const int scale = (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096;
-    EXPECT_EQ(wall_png.width(), (wall.canvas_width + scale - 1) / scale);
-    EXPECT_EQ(wall_png.height(), (wall.canvas_height + scale - 1) / scale);
-    const RoutingCheck c = check_routing(wall, frames, true);
-    long long visible = 0;
-    for (const Display& d : wall.displays) visible += 1LL * d.width * d.height;
-    EXPECT_EQ(c.errors.total(), 0u);
-    EXPECT_EQ(c.copied, visible);
-    EXPECT_EQ(c.wrong_colour + c.wrong_parity + c.outside, 0);
-    EXPECT_EQ(c.uncovered, 0);
-    EXPECT_EQ(c.covered_twice, 0);
-    fs::remove_all(out);
+    if (e.path().extension() == ".toml") out.push_back(e.path());
   }
+  std::sort(out.begin(), out.end());
+  return out;
 }
+
+// One test per example wall, so CTest can run them side by side.
+class CliWall : public Cli, public ::testing::WithParamInterface<fs::path> {};
+
+// The --scanout frames of the wall, read back from the PNG files the executable wrote, route
+// every visible display pixel exactly once. --png writes its pictures too.
+TEST_P(CliWall, ScanoutFramesRouteEveryDisplayPixelOnce) {
+  const fs::path& path = GetParam();
+  const ChildRun r = run("'" + path.string() + "' --parity 1 --scanout '" +
+                         (dir_ / "scan").string() + "' --png '" + (dir_ / "png").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Wall wall = load_wall(path);
+  std::vector<RgbImage> frames;
+  for (int s = 0; s < wall.server_count; ++s) {
+    frames.push_back(read_png(dir_ / "scan" / ("scanout-" + std::to_string(s) + ".png")));
+    EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
+    EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
+    const RgbImage pic = read_png(dir_ / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
+    EXPECT_EQ(pic.width(), wall.framebuffer_width);
+  }
+  const RgbImage wall_png = read_png(dir_ / "png" / "wall.png");
+  // Canvases longer than 4096 pixels are drawn shrunk by a whole factor.
+  const int scale = (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096;
+  EXPECT_EQ(wall_png.width(), (wall.canvas_width + scale - 1) / scale);
+  EXPECT_EQ(wall_png.height(), (wall.canvas_height + scale - 1) / scale);
+  const RoutingCheck c = check_routing(wall, frames, true);
+  long long visible = 0;
+  for (const Display& d : wall.displays) visible += 1LL * d.width * d.height;
+  EXPECT_EQ(c.errors.total(), 0u);
+  EXPECT_EQ(c.copied, visible);
+  EXPECT_EQ(c.wrong_colour + c.wrong_parity + c.outside, 0);
+  EXPECT_EQ(c.uncovered, 0);
+  EXPECT_EQ(c.covered_twice, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(ExampleWalls, CliWall, ::testing::ValuesIn(example_walls()),
+                         [](const auto& wall_info) {
+                           std::string name = wall_info.param.stem().string();
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace l2
