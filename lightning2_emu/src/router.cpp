@@ -27,14 +27,8 @@ inline void copy_pixels(std::uint8_t* dst, const std::uint8_t* src, int pixels, 
 constexpr std::size_t kPrefetchStrips = 4;
 constexpr int kCacheLine = 64;
 
-inline void prefetch_span(const std::uint8_t* p, int bytes, bool for_write) {
-  for (int off = 0; off < bytes; off += kCacheLine) {
-    if (for_write) {
-      __builtin_prefetch(p + off, 1, 0);
-    } else {
-      __builtin_prefetch(p + off, 0, 0);
-    }
-  }
+inline void prefetch_span(const std::uint8_t* p, int bytes) {
+  for (int off = 0; off < bytes; off += kCacheLine) __builtin_prefetch(p + off, 0, 0);
 }
 
 inline void fill_pixels(std::uint8_t* dst, int pixels, Rgb c) {
@@ -254,8 +248,7 @@ void Router::write_band(int display, int band, std::span<const std::uint8_t> rou
       // lines of a strip a few strips ahead, so its reads overlap this copy.
       if (k + kPrefetchStrips < count) {
         const RoutedStrip& a = strips[k + kPrefetchStrips];
-        prefetch_span(in.frame.row(a.src_y) + a.src_x * bpp, a.length * bpp, false);
-        prefetch_span(pixels + a.dst_y * stride + a.dst_x * 3, a.length * 3, true);
+        prefetch_span(in.frame.row(a.src_y) + a.src_x * bpp, a.length * bpp);
       }
       std::uint8_t* dst = pixels + s.dst_y * stride + s.dst_x * 3;
       const std::uint8_t* src = in.frame.row(s.src_y) + s.src_x * bpp;
