@@ -126,8 +126,7 @@ void Router::scan(std::span<const InputFrame> frames) {
 void Router::scan_input(int input) {
   InputState& in = inputs_[input];
   for (auto& band : in.bands) band.clear();
-  InputFrameStats& st = in.stats;
-  st = InputFrameStats{};
+  InputFrameStats st;  // counted locally, stored once at the end
   st.input = input;
   st.present = true;
   const InputFrame& f = in.frame;
@@ -185,6 +184,7 @@ void Router::scan_input(int input) {
       }
     }
   }
+  in.stats = st;
 }
 
 void Router::write(std::span<const std::uint8_t> route_input) {

@@ -65,14 +65,16 @@ class Router {
   struct Span {
     std::uint16_t row, x0, x1, input;
   };
-  struct InputState {
+  // Each worker appends to its own input's and band's lists strip by strip: cache-line
+  // alignment keeps neighbours, worked on by other workers, off the same line.
+  struct alignas(64) InputState {
     InputFrame frame;
     InputFrameStats stats;
     std::vector<std::vector<RoutedStrip>> bands;  // [band_offset[d] + band]
   };
   // A band of display rows: one task's share. Spans go into one flat list per band (appending
   // is all the hot path does); they are grouped by row only when the frame is finished.
-  struct BandState {
+  struct alignas(64) BandState {
     std::vector<Span> spans;               // in write order
     std::vector<Span> by_row;              // spans grouped by row (scratch)
     std::vector<std::uint32_t> row_start;  // by_row index of each row of the band, + end
