@@ -14,7 +14,11 @@ function(l2_gtest name)
   add_executable(${name} ${ARG_SOURCES})
   l2_warnings(${name})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest_main GTest::gmock)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-                       PROPERTIES LABELS "${ARG_LABELS}"
+  # CMake 3.25 flattens discovered tests' properties, so a label list "asan;tsan" loses its
+  # second label. Join the labels into one ("asan-tsan"): CTest's -L takes a regular
+  # expression, so both "-L asan" and "-L tsan" still select the test.
+  list(JOIN ARG_LABELS "-" labels)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE PRE_TEST
+                       PROPERTIES LABELS "${labels}"
                        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endfunction()
