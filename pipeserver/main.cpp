@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "image/png_io.hpp"
+#include "live_host.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -103,7 +104,48 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   app.add_option("--patches", o.scene_options.patches, "patches scene: patches per side")
       ->check(CLI::Range(1, 64));
+  // Live host mode: the run (l2wall run) starts one of these per pipeserver.
+  bool live = false;
+  l2::LiveHostOptions live_options;
+  auto* group = app.add_option_group(
+      "live",
+      "live host mode, as started by `l2wall run` (DVI link in shared memory, READY on "
+      "a serial back-channel)");
+  group->add_flag("--live", live,
+                  "render --frames frames into the DVI link --link, waiting for READY k-1 on "
+                  "--backchannel before publishing frame k");
+  group->add_option("--frames", live_options.frames, "live: number of frames")
+      ->check(CLI::Range(1, 1 << 30));
+  group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)");
+  group->add_option("--backchannel", live_options.backchannel,
+                    "live: serial device of the back-channel (for example a pty slave)");
+  group->add_option("--report", live_options.report,
+                    "live: file receiving one line per frame (render and READY wait times)");
+  group
+      ->add_option("--ready-timeout", live_options.ready_timeout_ms,
+                   "live: ms per READY wait before asking again with SYNC?")
+      ->check(CLI::Range(1, 600000));
+  group
+      ->add_option("--ready-retries", live_options.ready_retries,
+                   "live: SYNC? retries before giving up")
+      ->check(CLI::Range(0, 1000));
   CLI11_PARSE(app, argc, argv);
+  if (live) {
+    if (live_options.link.empty() || live_options.backchannel.empty()) {
+      std::fprintf(stderr, "pipeserver: --live needs --link and --backchannel\n");
+      return 2;
+    }
+    live_options.wall = o.wall;
+    live_options.server = o.server;
+    live_options.scene = o.scene;
+    live_options.scene_options = o.scene_options;
+    try {
+      return l2::run_live_host(live_options);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+      return 1;
+    }
+  }
   if (o.out.empty() && o.reference.empty()) {
     std::fprintf(stderr, "pipeserver: nothing to do: give --out and/or --reference\n");
     return 2;

@@ -1,0 +1,76 @@
+// l2wall: the command that runs a Lightning-2 wall on one machine.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "live_run.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "l2wall: a Lightning-2 wall on one machine. `l2wall run` starts one pipeserver process per\n"
+      "input of the wall and emulates the Lightning-2 mesh in this process: the pipeservers'\n"
+      "scanned-out frames travel through POSIX shared memory (the DVI links), READY goes back\n"
+      "over one pty per host (the serial back-channels)."};
+  app.require_subcommand(1);
+  l2::RunOptions o;
+  o.pipeserver = L2_PIPESERVER_PATH;
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "render --frames frames on the wall and write the displays, a per-frame report and a "
+      "summary to --out");
+  run->add_option("wall", o.wall,
+                  "wall file (TOML); default: the built-in default wall "
+                  "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
+      ->check(CLI::ExistingFile);
+  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches")
+      ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches"}))
+      ->capture_default_str();
+  run->add_option("--frames", o.frames, "application frames to render")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  run->add_option("--out", o.out,
+                  "output folder: frame-<k>/display-<id>.png and wall.png for kept frames, "
+                  "report.csv (one row per frame), summary.txt, host-<i>.log")
+      ->capture_default_str();
+  run->add_option("--keep", o.keep,
+                  "frames whose displays are written: every | last | none | K,L,...")
+      ->capture_default_str();
+  run->add_option("--refresh", o.refresh_hz,
+                  "emulator input refresh rate in Hz; 0 = as fast as possible")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  run->add_option("--pipeserver", o.pipeserver, "the pipeserver executable")->capture_default_str();
+  run->add_option("--threads", o.threads, "emulator routing threads (0: one per core)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  run->add_option("--start-timeout", o.start_timeout_ms,
+                  "ms until every pipeserver must have published its first frame")
+      ->check(CLI::Range(1, 600000))
+      ->capture_default_str();
+  run->add_option("--stall-timeout", o.stall_timeout_ms,
+                  "ms without a display swap after which the run names the hung pipeserver "
+                  "and stops")
+      ->check(CLI::Range(1, 600000))
+      ->capture_default_str();
+  run->add_option("--ready-timeout", o.ready_timeout_ms,
+                  "ms a pipeserver waits for READY before asking again with SYNC?")
+      ->check(CLI::Range(1, 600000))
+      ->capture_default_str();
+  run->add_flag("!--no-progress", o.progress, "no progress line on stderr");
+  run->add_option("--inject-noise", o.noise_after,
+                  "fault injection: after frame K reaches the displays, write line noise to "
+                  "every back-channel")
+      ->check(CLI::Range(0, 1000000));
+  run->add_option("--drop-ready", o.drop_ready,
+                  "fault injection: hold back the READY of frame K to pipeserver 0 until it "
+                  "asks with SYNC?")
+      ->check(CLI::Range(0, 1000000));
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return l2::run_wall(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,44 @@
+// `l2wall run`: the live run on one machine. One pipeserver process per input renders into its
+// DVI link (shared memory) and waits for READY on its own pty back-channel; this process is the
+// Lightning-2: it takes in every link at the refresh rate, routes, swaps, sends READY, writes
+// the displays it was asked to keep and a per-frame report, and proves the one-frame latency
+// from frame numbers stamped into the pixels.
+#pragma once
+
+#include <set>
+#include <string>
+
+namespace l2 {
+
+struct RunOptions {
+  std::string wall;  // empty: the built-in default wall
+  std::string scene = "mesh";
+  int frames = 10;
+  std::string out = "l2wall-out";
+  std::string keep = "last";     // every | last | none | K,L,...
+  double refresh_hz = 60.0;      // 0: as fast as possible
+  std::string pipeserver;        // the pipeserver executable
+  int threads = 1;               // emulator routing threads
+  int start_timeout_ms = 60000;  // until every link carries its first frame
+  int stall_timeout_ms = 5000;   // no display swap for this long: a host hangs
+  int ready_timeout_ms = 200;    // passed to the hosts
+  bool progress = true;
+  // Fault injection, for tests and demonstrations.
+  int noise_after = -1;  // after swapping this frame, write line noise to every host
+  int drop_ready = -1;   // do not send READY for this frame to host 0 (it asks SYNC?)
+};
+
+// Parses --keep; throws std::invalid_argument naming the bad item.
+struct KeepSet {
+  bool every = false, last = false;
+  std::set<int> frames;
+  bool keeps(int frame, int frame_count) const {
+    return every || (last && frame == frame_count - 1) || frames.count(frame) > 0;
+  }
+};
+KeepSet parse_keep(const std::string& text);
+
+// Returns the exit code: 0 when every frame reached the displays with one frame of latency.
+int run_wall(const RunOptions& options);
+
+}  // namespace l2

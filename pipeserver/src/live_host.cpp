@@ -1,0 +1,111 @@
+#include "live_host.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+
+#include "dvi_link/dvi_link.hpp"
+#include "pipeserver/pipeserver.hpp"
+#include "sync_backchannel/back_channel.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// The frame number goes into the first pixel of the first tile, where the strip header's COPY
+// sends it to a known display pixel: the run decodes it there (latency proof).
+void stamp_frame(std::span<std::uint8_t> fb, std::size_t stride, const ServerPlan& plan,
+                 int frame) {
+  if (plan.tiles.empty()) return;
+  const PackedTile& t = plan.tiles.front();
+  std::uint8_t* p =
+      fb.data() + static_cast<std::size_t>(t.fb_y) * stride + static_cast<std::size_t>(t.fb_x) * 3;
+  p[0] = static_cast<std::uint8_t>(frame & 0xFF);
+  p[1] = static_cast<std::uint8_t>((frame >> 8) & 0xFF);
+  p[2] = static_cast<std::uint8_t>((frame >> 16) & 0xFF);
+}
+
+struct Report {
+  std::FILE* file = nullptr;
+  explicit Report(const std::string& path) {
+    if (path.empty()) return;
+    file = std::fopen(path.c_str(), "w");
+    if (!file) throw std::runtime_error(fmt::format("cannot write report {}", path));
+  }
+  ~Report() {
+    if (file) std::fclose(file);
+  }
+  void line(const std::string& text) {
+    if (!file) return;
+    std::fputs(text.c_str(), file);
+    std::fflush(file);  // the run reads it even when we die later
+  }
+};
+
+}  // namespace
+
+int run_live_host(const LiveHostOptions& o) {
+  const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
+  const TileLayout layout = plan_layout(wall);
+  auto scene = make_scene(o.scene, o.scene_options);
+  Pipeserver ps(layout, o.server);
+  const ServerPlan& plan = ps.plan();
+  DviLinkWriter link = DviLinkWriter::create(o.link, plan.fb_width, plan.fb_height);
+  SerialPort port = SerialPort::open(o.backchannel);
+  BackChannel channel(port);
+  Report report(o.report);
+  const std::chrono::milliseconds timeout(o.ready_timeout_ms);
+
+  for (int k = 0; k < o.frames; ++k) {
+    const auto t0 = Clock::now();
+    const RgbImage& img = ps.render_frame(k, *scene);
+    auto back = link.back_frame();
+    for (int y = 0; y < img.height(); ++y)
+      std::memcpy(back.data() + static_cast<std::size_t>(y) * link.stride(), img.row(y).data(),
+                  link.stride());
+    stamp_frame(back, link.stride(), plan, k);
+    const double render_ms = ms_since(t0);
+    const auto t1 = Clock::now();
+    int retries = 0;
+    if (k > 0) {  // spec §6.1: the first swap does not wait
+      const WaitResult r =
+          channel.wait_ready(static_cast<std::uint64_t>(k - 1), timeout, o.ready_retries);
+      retries = r.retries;
+      if (!r.ok()) {
+        std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
+        return 3;
+      }
+    }
+    const double wait_ms = ms_since(t1);
+    link.publish();
+    report.line(fmt::format("frame {} render_ms {:.3f} wait_ms {:.3f} retries {}\n", k, render_ms,
+                            wait_ms, retries));
+  }
+  // Stay until the last frame is on the displays: the run still reads our link until then.
+  if (o.frames > 0) {
+    const WaitResult r =
+        channel.wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, o.ready_retries);
+    if (!r.ok()) {
+      std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.server, o.frames - 1,
+                   r.error.c_str());
+      return 3;
+    }
+  }
+  const BackChannelCounts& c = channel.counts();
+  report.line(fmt::format("done resyncs {} noise_bytes {} sync_sent {} timeouts {}\n",
+                          c.parser.resyncs, c.parser.noise_bytes, c.sync_sent, c.wait_timeouts));
+  return 0;
+}
+
+}  // namespace l2
