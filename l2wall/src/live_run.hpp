@@ -21,7 +21,7 @@ struct RunOptions {
   int threads = 1;               // emulator routing threads
   int start_timeout_ms = 60000;  // until every link carries its first frame
   int stall_timeout_ms = 5000;   // no display swap for this long: a host hangs
-  int ready_timeout_ms = 200;    // passed to the hosts
+  int ready_timeout_ms = 1000;   // passed to the hosts (first frames can be slow)
   bool progress = true;
   // Fault injection, for tests and demonstrations.
   int noise_after = -1;  // after swapping this frame, write line noise to every host
