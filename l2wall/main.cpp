@@ -40,6 +40,15 @@ int main(int argc, char** argv) {
                   "emulator input refresh rate in Hz; 0 = as fast as possible")
       ->check(CLI::Range(0.0, 1000.0))
       ->capture_default_str();
+  run->add_option("--path", o.path,
+                  "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
+                  "tiles read back and sent over TCP to a compositing server; both: both at once")
+      ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
+      ->capture_default_str();
+  run->add_flag("--compare", o.compare,
+                "with --path both: every display must be identical byte for byte on both paths; "
+                "a mismatch writes both pictures and a diff picture to "
+                "DIR/mismatch-frame-<k>/ and fails the run");
   run->add_option("--pipeserver", o.pipeserver, "the pipeserver executable")->capture_default_str();
   run->add_option("--threads", o.threads, "emulator routing threads (0: one per core)")
       ->check(CLI::Range(0, 64))

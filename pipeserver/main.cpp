@@ -119,6 +119,8 @@ int main(int argc, char** argv) {
   group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)");
   group->add_option("--backchannel", live_options.backchannel,
                     "live: serial device of the back-channel (for example a pty slave)");
+  group->add_option("--viz", live_options.viz,
+                    "live: host:port of a compositing server; every tile is also sent there");
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");
   group
@@ -131,8 +133,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1000));
   CLI11_PARSE(app, argc, argv);
   if (live) {
-    if (live_options.link.empty() || live_options.backchannel.empty()) {
-      std::fprintf(stderr, "pipeserver: --live needs --link and --backchannel\n");
+    const bool dvi = !live_options.link.empty() && !live_options.backchannel.empty();
+    const bool half_dvi = live_options.link.empty() != live_options.backchannel.empty();
+    if (half_dvi || (!dvi && live_options.viz.empty())) {
+      std::fprintf(stderr, "pipeserver: --live needs --link with --backchannel, or --viz\n");
       return 2;
     }
     live_options.wall = o.wall;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "display_compare.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "dvi_link/refresh_clock.hpp"
 #include "frame_stamp.hpp"
@@ -25,6 +26,7 @@
 #include "sync_backchannel/pty_pair.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "vizserver/compositing_server.hpp"
 #include "wall_picture.hpp"
 
 namespace l2 {
@@ -138,11 +140,23 @@ class LiveRun {
   ~LiveRun() { shut_down(); }
 
   int run() {
+    if (o_.path != "dvi" && o_.path != "vizserver" && o_.path != "both")
+      throw std::invalid_argument("--path: expected dvi, vizserver or both, got " + o_.path);
+    if (o_.compare && o_.path != "both") throw std::invalid_argument("--compare needs --path both");
     std::filesystem::create_directories(o_.out);
+    start_viz();
     start_hosts();
-    open_links();
-    loop();
+    if (dvi()) {
+      open_links();
+      loop();
+    } else {
+      viz_loop();
+    }
     finish_hosts();
+    if (viz_) {
+      viz_->wait_finished(milliseconds(5000));
+      viz_->stop();
+    }
     write_report();
     return latency_ok_ ? 0 : 1;
   }
@@ -159,6 +173,7 @@ class LiveRun {
 
   // Ends every host (SIGTERM, then SIGKILL), reaps it, and removes links a dead host left.
   void shut_down() {
+    if (viz_) viz_->stop();
     for (Host& h : hosts_) {
       if (h.process && !h.exit) h.exit = h.process->terminate(milliseconds(500));
       h.process.reset();
@@ -182,6 +197,89 @@ class LiveRun {
     return config;
   }
 
+  bool dvi() const { return o_.path != "vizserver"; }
+
+  // The compositing server of the vizserver path runs in this process, on its own thread.
+  void start_viz() {
+    if (o_.path == "dvi") return;
+    viz::ServerOptions options;
+    for (const Display& d : wall_.displays) options.display_sizes.emplace_back(d.width, d.height);
+    options.servers = wall_.server_count;
+    options.accept_timeout = milliseconds(o_.start_timeout_ms);
+    options.stall_timeout = milliseconds(0);  // a hang is ours to name (check_stall)
+    options.keep_frames = 16;
+    viz_ = std::make_unique<viz::CompositingServer>(options);
+    viz_->start();
+  }
+
+  // The frame `frame` of the vizserver path; polls so that a dead host is still noticed.
+  viz::FramePtr viz_frame(int frame) {
+    for (;;) {
+      try {
+        return viz_->wait_frame(static_cast<std::uint32_t>(frame), milliseconds(20));
+      } catch (const viz::VizError& e) {
+        if (const auto failure = viz_->failure()) throw RunFault("vizserver path: " + *failure);
+        if (viz_->last_swapped() && *viz_->last_swapped() >= static_cast<std::uint32_t>(frame))
+          throw RunFault(fmt::format("vizserver path: frame {}: {}", frame, e.what()));
+      }
+      check_hosts();
+      check_stall();
+      serve_channels();
+    }
+  }
+
+  // --path vizserver: the compositing server's swaps are the display frames.
+  void viz_loop() {
+    start_ = Clock::now();
+    last_swap_ = start_;
+    latency_measured_ = false;
+    while (shown_ < o_.frames) {
+      const viz::FramePtr f = viz_frame(shown_);
+      const auto now = Clock::now();
+      FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
+      r.shown = true;
+      r.swap_time = now;
+      r.in_time = now;
+      if (keep_.keeps(shown_, o_.frames))
+        write_viz_displays(std::filesystem::path(o_.out) / fmt::format("frame-{}", shown_), *f, "");
+      ++shown_;
+      last_swap_ = now;
+      progress(now);
+    }
+  }
+
+  void write_viz_displays(const std::filesystem::path& dir, const viz::ComposedFrame& f,
+                          const std::string& suffix) {
+    std::filesystem::create_directories(dir);
+    for (std::size_t i = 0; i < f.displays.size(); ++i)
+      write_png(dir / fmt::format("display-{}{}.png", i, suffix), f.displays[i]);
+    write_png(dir / fmt::format("wall{}.png", suffix),
+              compose_wall_picture(wall_, [&f](int id) -> const RgbImage& {
+                return f.displays.at(static_cast<std::size_t>(id));
+              }));
+  }
+
+  // --path both --compare: the two paths must give the same displays, byte for byte.
+  void compare_paths(int frame) {
+    const viz::FramePtr f = viz_frame(frame);
+    for (const Display& d : wall_.displays) {
+      const RgbImage& via_dvi = emulator_.shown(d.id);
+      const RgbImage& via_viz = f->displays.at(static_cast<std::size_t>(d.id));
+      const DisplayDiff diff = compare_displays(via_dvi, via_viz);
+      ++compared_displays_;
+      if (diff.identical()) continue;
+      const auto dir = std::filesystem::path(o_.out) / fmt::format("mismatch-frame-{}", frame);
+      std::filesystem::create_directories(dir);
+      write_png(dir / fmt::format("display-{}-dvi.png", d.id), via_dvi);
+      write_png(dir / fmt::format("display-{}-vizserver.png", d.id), via_viz);
+      write_png(dir / fmt::format("display-{}-diff.png", d.id), diff.picture);
+      throw RunFault(fmt::format(
+          "frame {}: display {} differs between the DVI and vizserver paths in {} pixels; "
+          "both pictures and the difference are in {}",
+          frame, d.id, diff.differing_pixels, dir.string()));
+    }
+  }
+
   void start_hosts() {
     hosts_.resize(static_cast<std::size_t>(wall_.server_count));
     for (int i = 0; i < wall_.server_count; ++i) {
@@ -201,14 +299,20 @@ class LiveRun {
         h.dx = t.tile.on_display.x;
         h.dy = t.tile.on_display.y;
       }
-      std::vector<std::string> argv{o_.pipeserver,     "--live",
-                                    "--server",        std::to_string(i),
-                                    "--frames",        std::to_string(o_.frames),
-                                    "--scene",         o_.scene,
-                                    "--link",          h.link_name,
-                                    "--backchannel",   h.pty->slave_path(),
-                                    "--report",        h.report_path,
-                                    "--ready-timeout", std::to_string(o_.ready_timeout_ms)};
+      std::vector<std::string> argv{
+          o_.pipeserver,     "--live",          "--server",
+          std::to_string(i), "--frames",        std::to_string(o_.frames),
+          "--scene",         o_.scene,          "--report",
+          h.report_path,     "--ready-timeout", std::to_string(o_.ready_timeout_ms)};
+      if (dvi()) {
+        for (const std::string& a : {std::string("--link"), h.link_name,
+                                     std::string("--backchannel"), h.pty->slave_path()})
+          argv.push_back(a);
+      }
+      if (viz_) {
+        argv.push_back("--viz");
+        argv.push_back(fmt::format("127.0.0.1:{}", viz_->port()));
+      }
       if (!o_.wall.empty()) {
         argv.push_back("--wall");
         argv.push_back(o_.wall);
@@ -351,18 +455,25 @@ class LiveRun {
         std::fprintf(stderr, "\nl2wall: frame %d: latency %ld refreshes, expected 1\n", shown_,
                      latency);
       }
-      if (keep_.keeps(shown_, o_.frames))
-        write_displays(std::filesystem::path(o_.out) / fmt::format("frame-{}", shown_));
+      if (o_.compare) compare_paths(shown_);
+      if (keep_.keeps(shown_, o_.frames)) {
+        const auto dir = std::filesystem::path(o_.out) / fmt::format("frame-{}", shown_);
+        write_displays(dir);
+        if (viz_) write_viz_displays(dir, *viz_frame(shown_), "-vizserver");
+      }
       if (shown_ == o_.noise_after) inject_noise();
       ++shown_;
       last_swap_ = now;
     }
-    if (o_.progress) {
-      const double s = ms_between(start_, now) / 1000.0;
-      std::fprintf(stderr, "\rl2wall: frame %d/%d on the displays, %.1f fps", shown_, o_.frames,
-                   s > 0 ? shown_ / s : 0.0);
-      std::fflush(stderr);
-    }
+    progress(now);
+  }
+
+  void progress(Clock::time_point now) const {
+    if (!o_.progress) return;
+    const double s = ms_between(start_, now) / 1000.0;
+    std::fprintf(stderr, "\rl2wall: frame %d/%d on the displays, %.1f fps", shown_, o_.frames,
+                 s > 0 ? shown_ / s : 0.0);
+    std::fflush(stderr);
   }
 
   void inject_noise() {
@@ -375,6 +486,7 @@ class LiveRun {
   }
 
   void serve_channels() {
+    if (!dvi()) return;
     for (Host& h : hosts_) {
       const auto& c = h.channel->counts();
       const auto asked = c.sync_answered + c.sync_unanswered;
@@ -423,6 +535,7 @@ class LiveRun {
   }
 
   void write_displays(const std::filesystem::path& dir) {
+    if (!dvi()) return;  // the vizserver-only path keeps its frames as it goes
     std::filesystem::create_directories(dir);
     for (const Display& d : wall_.displays)
       write_png(dir / fmt::format("display-{}.png", d.id), emulator_.shown(d.id));
@@ -465,6 +578,17 @@ class LiveRun {
         seconds > 0 ? o_.frames / seconds : 0.0, refreshes_,
         o_.refresh_hz > 0 ? fmt::format("{:g} Hz", o_.refresh_hz) : std::string("full speed"),
         max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
+    if (!latency_measured_) {
+      summary = summary.substr(0, summary.find("latency: ")) +
+                "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
+    }
+    if (o_.path != "dvi") summary += fmt::format("paths: {}\n", o_.path);
+    if (o_.compare) {
+      summary += fmt::format(
+          "compare: {} display pictures identical byte for byte on the DVI and vizserver "
+          "paths\n",
+          compared_displays_);
+    }
     if (noise_bytes_ || dropped_readies_) {
       summary += fmt::format("faults injected: {} noise bytes, {} READY dropped\n", noise_bytes_,
                              dropped_readies_);
@@ -489,7 +613,9 @@ class LiveRun {
   int shown_ = 0;  // frames 0 .. shown_-1 have reached every display
   std::uint64_t refreshes_ = 0;
   bool latency_ok_ = true;
-  std::uint64_t noise_bytes_ = 0, dropped_readies_ = 0;
+  std::uint64_t noise_bytes_ = 0, dropped_readies_ = 0, compared_displays_ = 0;
+  bool latency_measured_ = true;
+  std::unique_ptr<viz::CompositingServer> viz_;  // the vizserver path, when asked for
   Clock::time_point start_{}, last_swap_{};
 };
 

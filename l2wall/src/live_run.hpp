@@ -18,6 +18,8 @@ struct RunOptions {
   std::string keep = "last";     // every | last | none | K,L,...
   double refresh_hz = 60.0;      // 0: as fast as possible
   std::string pipeserver;        // the pipeserver executable
+  std::string path = "dvi";      // dvi | vizserver | both
+  bool compare = false;          // both: every display identical byte for byte on both paths
   int threads = 1;               // emulator routing threads
   int start_timeout_ms = 60000;  // until every link carries its first frame
   int stall_timeout_ms = 5000;   // no display swap for this long: a host hangs

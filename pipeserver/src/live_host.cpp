@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "dvi_link/dvi_link.hpp"
@@ -13,6 +14,7 @@
 #include "sync_backchannel/back_channel.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "vizserver/tile_sender.hpp"
 
 namespace l2 {
 namespace {
@@ -25,12 +27,10 @@ double ms_since(Clock::time_point t0) {
 
 // The frame number goes into the first pixel of the first tile, where the strip header's COPY
 // sends it to a known display pixel: the run decodes it there (latency proof).
-void stamp_frame(std::span<std::uint8_t> fb, std::size_t stride, const ServerPlan& plan,
-                 int frame) {
+void stamp_frame(RgbImage& fb, const ServerPlan& plan, int frame) {
   if (plan.tiles.empty()) return;
   const PackedTile& t = plan.tiles.front();
-  std::uint8_t* p =
-      fb.data() + static_cast<std::size_t>(t.fb_y) * stride + static_cast<std::size_t>(t.fb_x) * 3;
+  std::uint8_t* p = fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3;
   p[0] = static_cast<std::uint8_t>(frame & 0xFF);
   p[1] = static_cast<std::uint8_t>((frame >> 8) & 0xFF);
   p[2] = static_cast<std::uint8_t>((frame >> 16) & 0xFF);
@@ -53,6 +53,30 @@ struct Report {
   }
 };
 
+// The visualization-server path: every tile of the frame, read back from the framebuffer, goes
+// to the compositing server over TCP.
+void send_tiles(viz::TileSender& sender, const RgbImage& fb, const ServerPlan& plan, int frame) {
+  for (const PackedTile& t : plan.tiles) {
+    const Rect& r = t.tile.on_display;
+    const viz::TileTarget target{t.tile.display, r.x, r.y, r.w, r.h};
+    sender.send_tile(static_cast<std::uint32_t>(frame), target,
+                     fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3, fb.stride());
+  }
+  sender.finish_frame(static_cast<std::uint32_t>(frame),
+                      static_cast<std::uint32_t>(plan.tiles.size()));
+}
+
+std::optional<viz::TileSender> connect_viz(const std::string& address, int server,
+                                           int display_count) {
+  if (address.empty()) return std::nullopt;
+  const auto colon = address.rfind(':');
+  if (colon == std::string::npos)
+    throw std::invalid_argument(fmt::format("--viz {}: expected host:port", address));
+  const int port = std::stoi(address.substr(colon + 1));
+  return viz::TileSender::connect(address.substr(0, colon), static_cast<std::uint16_t>(port),
+                                  server, display_count);
+}
+
 }  // namespace
 
 int run_live_host(const LiveHostOptions& o) {
@@ -61,50 +85,70 @@ int run_live_host(const LiveHostOptions& o) {
   auto scene = make_scene(o.scene, o.scene_options);
   Pipeserver ps(layout, o.server);
   const ServerPlan& plan = ps.plan();
-  DviLinkWriter link = DviLinkWriter::create(o.link, plan.fb_width, plan.fb_height);
-  SerialPort port = SerialPort::open(o.backchannel);
-  BackChannel channel(port);
+  std::optional<DviLinkWriter> link;
+  std::optional<SerialPort> port;
+  std::optional<BackChannel> channel;
+  if (!o.link.empty()) {
+    link.emplace(DviLinkWriter::create(o.link, plan.fb_width, plan.fb_height));
+    port.emplace(SerialPort::open(o.backchannel));
+    channel.emplace(*port);
+  }
+  std::optional<viz::TileSender> sender =
+      connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
+  RgbImage fb;
 
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
-    const RgbImage& img = ps.render_frame(k, *scene);
-    auto back = link.back_frame();
-    for (int y = 0; y < img.height(); ++y)
-      std::memcpy(back.data() + static_cast<std::size_t>(y) * link.stride(), img.row(y).data(),
-                  link.stride());
-    stamp_frame(back, link.stride(), plan, k);
+    fb = ps.render_frame(k, *scene);
+    stamp_frame(fb, plan, k);
+    if (sender) send_tiles(*sender, fb, plan, k);
+    if (link) {
+      auto back = link->back_frame();
+      for (int y = 0; y < fb.height(); ++y)
+        std::memcpy(back.data() + static_cast<std::size_t>(y) * link->stride(), fb.row(y).data(),
+                    link->stride());
+    }
     const double render_ms = ms_since(t0);
     const auto t1 = Clock::now();
     int retries = 0;
-    if (k > 0) {  // spec §6.1: the first swap does not wait
+    if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
       const WaitResult r =
-          channel.wait_ready(static_cast<std::uint64_t>(k - 1), timeout, o.ready_retries);
+          channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, o.ready_retries);
       retries = r.retries;
       if (!r.ok()) {
         std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
         return 3;
       }
+    } else if (k > 0 && sender) {
+      // Without a DVI link the compositing server's SWAPPED paces us instead of READY.
+      sender->wait_swapped(static_cast<std::uint32_t>(k - 1), timeout * (o.ready_retries + 1));
     }
     const double wait_ms = ms_since(t1);
-    link.publish();
+    if (link) link->publish();
     report.line(fmt::format("frame {} render_ms {:.3f} wait_ms {:.3f} retries {}\n", k, render_ms,
                             wait_ms, retries));
   }
   // Stay until the last frame is on the displays: the run still reads our link until then.
-  if (o.frames > 0) {
+  if (o.frames > 0 && channel) {
     const WaitResult r =
-        channel.wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, o.ready_retries);
+        channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, o.ready_retries);
     if (!r.ok()) {
       std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.server, o.frames - 1,
                    r.error.c_str());
       return 3;
     }
+  } else if (o.frames > 0 && sender) {
+    sender->wait_swapped(static_cast<std::uint32_t>(o.frames - 1), timeout * (o.ready_retries + 1));
   }
-  const BackChannelCounts& c = channel.counts();
-  report.line(fmt::format("done resyncs {} noise_bytes {} sync_sent {} timeouts {}\n",
-                          c.parser.resyncs, c.parser.noise_bytes, c.sync_sent, c.wait_timeouts));
+  if (channel) {
+    const BackChannelCounts& c = channel->counts();
+    report.line(fmt::format("done resyncs {} noise_bytes {} sync_sent {} timeouts {}\n",
+                            c.parser.resyncs, c.parser.noise_bytes, c.sync_sent, c.wait_timeouts));
+  } else {
+    report.line("done (vizserver path only, no back-channel)\n");
+  }
   return 0;
 }
 

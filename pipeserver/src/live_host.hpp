@@ -15,8 +15,9 @@ struct LiveHostOptions {
   std::string scene = "mesh";
   SceneOptions scene_options;
   int frames = 10;
-  std::string link;         // shared-memory name this host creates ("/l2-...")
-  std::string backchannel;  // serial device (a pty slave) the READYs arrive on
+  std::string link;         // shared-memory name this host creates ("/l2-..."); empty: none
+  std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
+  std::string viz;          // "host:port" of a compositing server to send tiles to; empty: none
   std::string report;       // file: one line per frame (render and wait times)
   int ready_timeout_ms = 200;
   int ready_retries = 3;
