@@ -95,7 +95,8 @@ struct FrameRecord {
   std::uint64_t in_refresh = 0;    // refresh at which its last input was taken in
   std::uint64_t swap_refresh = 0;  // refresh at which it reached every display
   Clock::time_point in_time{}, swap_time{};
-  double route_ms = 0;  // emulator time of the refreshes that routed this frame
+  double route_ms = 0;    // emulator time of the refreshes that routed this frame
+  double writing_ms = 0;  // picture writing of the run up to this frame's swap
   bool shown = false;
 };
 
@@ -126,6 +127,16 @@ HostLog read_host_log(const std::string& path, int frames) {
   }
   return log;
 }
+
+// Adds the time of a scope to a total: PNG writing is not part of the frame rate.
+struct Timed {
+  double& total;
+  Clock::time_point t0 = Clock::now();
+  explicit Timed(double& sum) : total(sum) {}
+  ~Timed() { total += ms_between(t0, Clock::now()); }
+  Timed(const Timed&) = delete;
+  Timed& operator=(const Timed&) = delete;
+};
 
 class LiveRun {
  public:
@@ -236,10 +247,13 @@ class LiveRun {
     while (shown_ < o_.frames) {
       const viz::FramePtr f = viz_frame(shown_);
       const auto now = Clock::now();
+      // Like the DVI path, the clock starts once every host has delivered its first frame.
+      if (shown_ == 0) start_ = now;
       FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
       r.shown = true;
       r.swap_time = now;
       r.in_time = now;
+      r.writing_ms = writing_ms_;
       if (keep_.keeps(shown_, o_.frames))
         write_viz_displays(std::filesystem::path(o_.out) / fmt::format("frame-{}", shown_), *f, "");
       ++shown_;
@@ -250,6 +264,7 @@ class LiveRun {
 
   void write_viz_displays(const std::filesystem::path& dir, const viz::ComposedFrame& f,
                           const std::string& suffix) {
+    const Timed timed(writing_ms_);
     std::filesystem::create_directories(dir);
     for (std::size_t i = 0; i < f.displays.size(); ++i)
       write_png(dir / fmt::format("display-{}{}.png", i, suffix), f.displays[i]);
@@ -449,6 +464,7 @@ class LiveRun {
       r.shown = true;
       r.swap_refresh = tick.index;
       r.swap_time = now;
+      r.writing_ms = writing_ms_;
       const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
       if (latency != 1) {
         latency_ok_ = false;
@@ -536,6 +552,7 @@ class LiveRun {
 
   void write_displays(const std::filesystem::path& dir) {
     if (!dvi()) return;  // the vizserver-only path keeps its frames as it goes
+    const Timed timed(writing_ms_);
     std::filesystem::create_directories(dir);
     for (const Display& d : wall_.displays)
       write_png(dir / fmt::format("display-{}.png", d.id), emulator_.shown(d.id));
@@ -568,7 +585,8 @@ class LiveRun {
       csv << "\n";
     }
     // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate.
-    const double seconds = ms_between(start_, records_.back().swap_time) / 1000.0;
+    const double seconds =
+        (ms_between(start_, records_.back().swap_time) - records_.back().writing_ms) / 1000.0;
     std::string summary = fmt::format(
         "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps "
         "({} refreshes at {})\n"
@@ -615,6 +633,7 @@ class LiveRun {
   bool latency_ok_ = true;
   std::uint64_t noise_bytes_ = 0, dropped_readies_ = 0, compared_displays_ = 0;
   bool latency_measured_ = true;
+  double writing_ms_ = 0;                        // spent writing kept pictures during the run
   std::unique_ptr<viz::CompositingServer> viz_;  // the vizserver path, when asked for
   Clock::time_point start_{}, last_swap_{};
 };

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -148,15 +149,62 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
   expect_clean(run);
 }
 
-TEST(LiveRun, RunsAnotherExampleWall) {
-  WallRun run("projectors", {fmt::format("{}/walls/projectors-2x1.toml", L2_SOURCE_DIR), "--frames",
-                             "10", "--refresh", "0"});
+// The DVI path (shared memory, emulated Lightning-2) and the vizserver path (tiles over TCP to
+// a compositing server) give the same displays, byte for byte, on two example walls.
+struct WallCase {
+  const char* file;
+  int displays, servers;
+};
+class BothPaths : public ::testing::TestWithParam<WallCase> {};
+
+TEST_P(BothPaths, GiveIdenticalDisplays) {
+  const WallCase& c = GetParam();
+  WallRun run(fmt::format("both-{}", c.servers),
+              {fmt::format("{}/walls/{}", L2_SOURCE_DIR, c.file), "--frames", "10", "--refresh",
+               "0", "--path", "both", "--compare"});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
-  EXPECT_NE(output.find("10 frames on 2 displays from 3 pipeservers"), std::string::npos) << output;
+  EXPECT_NE(output.find(
+                fmt::format("10 frames on {} displays from {} pipeservers", c.displays, c.servers)),
+            std::string::npos)
+      << output;
+  EXPECT_NE(output.find(fmt::format("compare: {} display pictures identical byte for byte",
+                                    10 * c.displays)),
+            std::string::npos)
+      << output;
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
-  EXPECT_TRUE(fs::exists(run.out() / "frame-9" / "display-1.png"));
+  // The kept pictures of both paths are there and equal, read back from the files.
+  for (int d = 0; d < c.displays; ++d) {
+    const RgbImage dvi = read_png(run.out() / "frame-9" / fmt::format("display-{}.png", d));
+    const RgbImage viz =
+        read_png(run.out() / "frame-9" / fmt::format("display-{}-vizserver.png", d));
+    EXPECT_TRUE(dvi.width() == viz.width() && dvi.height() == viz.height() &&
+                std::equal(dvi.data(), dvi.data() + dvi.stride() * dvi.height(), viz.data()))
+        << "display " << d;
+  }
+  EXPECT_FALSE(fs::exists(run.out() / "mismatch-frame-0"));
+  expect_clean(run);
+}
+
+INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
+                         ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
+                                           WallCase{"projectors-2x1.toml", 2, 3}));
+
+TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
+  WallRun run("viz", {"--frames", "4", "--path", "vizserver", "--keep", "every"});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  const TileLayout layout = plan_layout(default_wall());
+  for (int k = 0; k < 4; ++k) {
+    const DisplayTile& t = layout.servers.front().tiles.front().tile;
+    const RgbImage shown =
+        read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", t.display));
+    const Rgb px = shown.at(t.on_display.x, t.on_display.y);
+    const std::uint8_t bytes[3] = {px.r, px.g, px.b};
+    EXPECT_EQ(decode_stamp(bytes), k);
+  }
   expect_clean(run);
 }
 

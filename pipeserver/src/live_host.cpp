@@ -121,8 +121,11 @@ int run_live_host(const LiveHostOptions& o) {
         std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
         return 3;
       }
-    } else if (k > 0 && sender) {
-      // Without a DVI link the compositing server's SWAPPED paces us instead of READY.
+    }
+    // The compositing server's SWAPPED paces the vizserver path (alone, instead of READY). With
+    // both paths it is read too: a host that exits with SWAPPED unread resets the connection,
+    // and the server could lose tiles it had not read yet.
+    if (k > 0 && sender) {
       sender->wait_swapped(static_cast<std::uint32_t>(k - 1), timeout * (o.ready_retries + 1));
     }
     const double wait_ms = ms_since(t1);
@@ -139,7 +142,8 @@ int run_live_host(const LiveHostOptions& o) {
                    r.error.c_str());
       return 3;
     }
-  } else if (o.frames > 0 && sender) {
+  }
+  if (o.frames > 0 && sender) {
     sender->wait_swapped(static_cast<std::uint32_t>(o.frames - 1), timeout * (o.ready_retries + 1));
   }
   if (channel) {
