@@ -1,10 +1,12 @@
 #include "live_run.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -60,6 +62,20 @@ KeepSet parse_keep(const std::string& text) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Ctrl-C or SIGTERM: the run stops through its normal fault path, so the hosts are ended and
+// their shared memory removed instead of left behind.
+volatile sig_atomic_t g_stop_signal = 0;
+extern "C" void on_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
+void catch_stop_signals() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
 using std::chrono::milliseconds;
 
 double ms_between(Clock::time_point a, Clock::time_point b) {
@@ -338,6 +354,11 @@ class LiveRun {
 
   // A host that ended: fine once every frame is on the displays, a fault before that.
   void check_hosts() {
+    if (g_stop_signal) {
+      throw RunFault(fmt::format(
+          "stopped by signal {} ({}) at frame {}; the displays keep frame {}",
+          static_cast<int>(g_stop_signal), strsignal(g_stop_signal), shown_, shown_ - 1));
+    }
     for (Host& h : hosts_) {
       if (h.exit || !h.process) continue;
       if (auto status = h.process->poll()) {
@@ -641,6 +662,7 @@ class LiveRun {
 }  // namespace
 
 int run_wall(const RunOptions& options) {
+  catch_stop_signals();
   std::unique_ptr<LiveRun> run;
   try {
     run = std::make_unique<LiveRun>(options);

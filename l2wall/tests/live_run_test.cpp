@@ -253,6 +253,17 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   expect_clean(run);
 }
 
+TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
+  WallRun run("sigterm", {"--frames", "100000", "--refresh", "60"});
+  ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
+  ASSERT_EQ(kill(run.pid(), SIGTERM), 0);
+  const ExitStatus status = run.wait(10s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find("stopped by signal 15"), std::string::npos) << output;
+  expect_clean(run);
+}
+
 TEST(LiveRun, LineNoiseAndADroppedReadyAreRecovered) {
   WallRun run("noise", {"--frames", "6", "--refresh", "0", "--inject-noise", "1", "--drop-ready",
                         "3", "--ready-timeout", "200"});
