@@ -597,8 +597,12 @@ class LiveRun {
       const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
       min_latency = std::min(min_latency, latency);
       max_latency = std::max(max_latency, latency);
-      csv << fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh, latency,
-                         r.route_ms, ms_between(r.in_time, r.swap_time));
+      if (dvi()) {
+        csv << fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh, latency,
+                           r.route_ms, ms_between(r.in_time, r.swap_time));
+      } else {
+        csv << fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
+      }
       for (const HostLog& log : logs) {
         const HostFrame& f = log.frames[static_cast<std::size_t>(k)];
         csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
@@ -608,15 +612,18 @@ class LiveRun {
     // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate.
     const double seconds =
         (ms_between(start_, records_.back().swap_time) - records_.back().writing_ms) / 1000.0;
+    const std::string pace =
+        !dvi() ? std::string("no emulator refresh: the compositing server swaps")
+               : fmt::format("{} refreshes at {}", refreshes_,
+                             o_.refresh_hz > 0 ? fmt::format("{:g} Hz", o_.refresh_hz)
+                                               : std::string("full speed"));
     std::string summary = fmt::format(
-        "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps "
-        "({} refreshes at {})\n"
+        "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n"
         "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
         "measured from the frame stamps on the displays: min {}, max {}\n",
         o_.frames, wall_.displays.size(), hosts_.size(), seconds,
-        seconds > 0 ? o_.frames / seconds : 0.0, refreshes_,
-        o_.refresh_hz > 0 ? fmt::format("{:g} Hz", o_.refresh_hz) : std::string("full speed"),
-        max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
+        seconds > 0 ? o_.frames / seconds : 0.0, pace, max_latency, max_latency == 1 ? "" : "s",
+        min_latency, max_latency);
     if (!latency_measured_) {
       summary = summary.substr(0, summary.find("latency: ")) +
                 "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
