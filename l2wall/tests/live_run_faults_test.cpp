@@ -1,0 +1,96 @@
+// `l2wall run` when things go wrong: a killed or hung pipeserver, a terminated run, line noise
+// and a lost READY on the back-channel. Real processes, real ptys.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "frame_stamp.hpp"
+#include "image/png_io.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using namespace testing_support;
+
+TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
+  WallRun run("killed", {"--frames", "100000", "--refresh", "60"});
+  const pid_t victim = running_pipeserver(run, 1);
+  ASSERT_GT(victim, 0) << run.output();
+  ASSERT_EQ(kill(victim, SIGKILL), 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExitStatus status = run.wait(10s);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const std::string output = run.output();
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(output.find(fmt::format("pipeserver 1 (pid {}) killed by signal 9", victim)),
+            std::string::npos)
+      << output;
+  EXPECT_NE(output.find("while rendering frame "), std::string::npos) << output;
+  EXPECT_TRUE(fs::exists(run.out() / "fault" / "display-0.png")) << output;
+  expect_clean(run);
+}
+
+TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
+  WallRun run("hung", {"--frames", "100000", "--refresh", "60", "--stall-timeout", "1000"});
+  const pid_t victim = running_pipeserver(run, 2);
+  ASSERT_GT(victim, 0) << run.output();
+  ASSERT_EQ(kill(victim, SIGSTOP), 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExitStatus status = run.wait(10s);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find(fmt::format("pipeserver 2 (pid {}) did not deliver frame", victim)),
+            std::string::npos)
+      << output;
+  expect_clean(run);
+}
+
+TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
+  WallRun run("sigterm", {"--frames", "100000", "--refresh", "60"});
+  ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
+  ASSERT_EQ(kill(run.pid(), SIGTERM), 0);
+  const ExitStatus status = run.wait(10s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find("stopped by signal 15"), std::string::npos) << output;
+  expect_clean(run);
+}
+
+TEST(LiveRun, LineNoiseAndADroppedReadyAreRecovered) {
+  WallRun run("noise", {"--frames", "6", "--refresh", "0", "--inject-noise", "1", "--drop-ready",
+                        "3", "--ready-timeout", "200"});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_NE(output.find("1 READY dropped"), std::string::npos) << output;
+  EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
+  for (int i = 0; i < 4; ++i) {
+    const auto at = output.find(fmt::format("back-channel host {}: resyncs ", i));
+    ASSERT_NE(at, std::string::npos) << output;
+    int resyncs = 0, noise = 0, sync_sent = 0;
+    ASSERT_EQ(std::sscanf(output.c_str() + at,
+                          "back-channel host %*d: resyncs %d noise_bytes %d sync_sent %d", &resyncs,
+                          &noise, &sync_sent),
+              3)
+        << output.substr(at, 80);
+    EXPECT_GT(resyncs, 0) << "host " << i;
+    EXPECT_GT(noise, 0) << "host " << i;
+    if (i == 0) {
+      EXPECT_GE(sync_sent, 1);
+    }
+  }
+  expect_clean(run);
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,129 @@
+// A live `l2wall run` driven by a test: its own folder, output captured, and what it must
+// leave behind checked (shm segments, pipeserver processes).
+#pragma once
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+#include "child_process.hpp"
+#include "frame_stamp.hpp"
+#include "image/png_io.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2::testing_support {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+inline std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// One l2wall run in its own folder; its output goes to DIR/output.txt.
+class WallRun {
+ public:
+  WallRun(const std::string& name, const std::vector<std::string>& args)
+      : dir_(fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name)) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::string command =
+        fmt::format("exec '{}' run --out '{}' --no-progress", L2WALL_PATH, (dir_ / "out").string());
+    for (const auto& a : args) command += " '" + a + "'";
+    command += fmt::format(" > '{}' 2>&1", (dir_ / "output.txt").string());
+    // exec: the shell becomes l2wall, so pid() is l2wall's and names its shm segments.
+    process_.emplace(std::vector<std::string>{"/bin/sh", "-c", command});
+  }
+  ~WallRun() {
+    process_.reset();
+    fs::remove_all(dir_);
+  }
+  ExitStatus wait(std::chrono::milliseconds timeout) {
+    auto status = process_->wait_for(timeout);
+    if (!status) {
+      ADD_FAILURE() << "l2wall did not end within " << timeout.count() << " ms";
+      status = process_->terminate();
+    }
+    return *status;
+  }
+  std::string output() const { return slurp(dir_ / "output.txt"); }
+  fs::path out() const { return dir_ / "out"; }
+  pid_t pid() const { return process_->pid(); }
+  std::string link_prefix() const { return fmt::format("l2-{}-in", pid()); }
+
+  // Shared-memory segments of this run still in /dev/shm.
+  std::vector<std::string> leftover_segments() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator("/dev/shm")) {
+      const std::string n = e.path().filename().string();
+      if (n.rfind(link_prefix(), 0) == 0) names.push_back(n);
+    }
+    return names;
+  }
+  // Processes whose command line names one of this run's links: its pipeservers.
+  std::vector<pid_t> pipeservers(int server = -1) const {
+    std::vector<pid_t> pids;
+    const std::string needle =
+        "/" + link_prefix() + (server >= 0 ? fmt::format("{}", server) + '\0' : "");
+    for (const auto& e : fs::directory_iterator("/proc")) {
+      const std::string n = e.path().filename().string();
+      if (n.find_first_not_of("0123456789") != std::string::npos) continue;
+      const std::string cmdline = slurp(e.path() / "cmdline");
+      if (cmdline.find(needle) != std::string::npos) pids.push_back(std::stoi(n));
+    }
+    return pids;
+  }
+  int host_log_lines(int server) const {
+    std::ifstream in(out() / fmt::format("host-{}.log", server));
+    int lines = 0;
+    for (std::string l; std::getline(in, l);) ++lines;
+    return lines;
+  }
+
+ private:
+  fs::path dir_;
+  std::optional<ChildProcess> process_;
+};
+
+inline std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+inline void expect_clean(const WallRun& run) {
+  EXPECT_TRUE(run.leftover_segments().empty())
+      << "shm segment left: " << run.leftover_segments().front();
+  EXPECT_TRUE(run.pipeservers().empty()) << "orphan pipeserver pid " << run.pipeservers().front();
+}
+
+// Waits until pipeserver `server` has published a few frames; returns its pid.
+inline pid_t running_pipeserver(const WallRun& run, int server) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const auto pids = run.pipeservers(server);
+    if (pids.size() == 1 && run.host_log_lines(server) >= 3) return pids.front();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return -1;
+}
+
+}  // namespace l2::testing_support
