@@ -40,6 +40,8 @@ KeepSet parse_keep(const std::string& text) {
   } else if (text == "last") {
     keep.last = true;
   } else if (text != "none") {
+    if (text.empty() || text.back() == ',')
+      throw std::invalid_argument(fmt::format("--keep: '{}' ends without a frame number", text));
     std::stringstream items(text);
     std::string item;
     while (std::getline(items, item, ',')) {
@@ -153,6 +155,13 @@ struct Timed {
   Timed(const Timed&) = delete;
   Timed& operator=(const Timed&) = delete;
 };
+
+int frames_reported(const std::string& host_log) {
+  std::ifstream in(host_log);
+  int frames = 0;
+  for (std::string line; std::getline(in, line);) frames += line.rfind("frame ", 0) == 0;
+  return frames;
+}
 
 class LiveRun {
  public:
@@ -537,18 +546,23 @@ class LiveRun {
 
   void check_stall() {
     const auto now = Clock::now();
-    if (ms_between(last_swap_, now) < o_.stall_timeout_ms) return;
+    // Before the first swap the hosts may still be starting (GL context, first render).
+    const int limit_ms = shown_ == 0 ? o_.start_timeout_ms : o_.stall_timeout_ms;
+    if (ms_between(last_swap_, now) < limit_ms) return;
     std::string culprits;
     for (const Host& h : hosts_) {
-      // A host that has not published the frame the displays wait for is the one that hangs.
-      if (h.sequence < static_cast<std::uint64_t>(shown_) + 1)
+      // A host that has not delivered the frame the displays wait for is the one that hangs:
+      // on the DVI path its link says so, on the vizserver path its report (one line per frame).
+      const std::uint64_t delivered =
+          dvi() ? h.sequence : static_cast<std::uint64_t>(frames_reported(h.report_path));
+      if (delivered < static_cast<std::uint64_t>(shown_) + 1)
         culprits += fmt::format("{}pipeserver {} (pid {})", culprits.empty() ? "" : ", ", h.server,
                                 h.process ? h.process->pid() : -1);
     }
-    throw RunFault(fmt::format(
-        "no display swap for {} ms: {} did not deliver frame {}; the "
-        "displays keep frame {}",
-        o_.stall_timeout_ms, culprits.empty() ? "no host" : culprits, shown_, shown_ - 1));
+    throw RunFault(
+        fmt::format("no display swap for {} ms: {} did not deliver frame {}; the "
+                    "displays keep frame {}",
+                    limit_ms, culprits.empty() ? "no host" : culprits, shown_, shown_ - 1));
   }
 
   void finish_hosts() {
