@@ -30,8 +30,46 @@ struct StripHeader {
   static StripHeader skip(bool frame, int width);
 };
 
+namespace header_bits {
+inline constexpr int kOpShift = 46;
+inline constexpr int kFrameShift = 45;
+inline constexpr int kDisplayShift = 39;
+inline constexpr int kXShift = 27;
+inline constexpr int kYShift = 15;
+inline constexpr int kWidthShift = 3;
+inline constexpr std::uint64_t k12Bits = 0xFFF;
+inline constexpr std::uint64_t kMask48 = (std::uint64_t{1} << 48) - 1;
+
+// The CRC remainder is linear in the message, so it is the XOR of the remainders of each byte
+// of M(x)·x^3 in its place: six 256-entry tables built at compile time. Decoding a header is
+// then a handful of loads, inline in the router's per-strip loop.
+constexpr std::uint8_t remainder_bitwise(std::uint64_t value48) {
+  constexpr std::uint64_t kGenerator = 0b1011;  // x^3 + x + 1
+  for (int bit = 47; bit >= 3; --bit) {
+    if (value48 >> bit & 1) value48 ^= kGenerator << (bit - 3);
+  }
+  return static_cast<std::uint8_t>(value48 & 0b111);
+}
+
+struct Crc3Tables {
+  std::uint8_t byte[6][256]{};
+  constexpr Crc3Tables() {
+    for (int i = 0; i < 6; ++i) {
+      for (std::uint64_t b = 0; b < 256; ++b) byte[i][b] = remainder_bitwise(b << (8 * i));
+    }
+  }
+};
+inline constexpr Crc3Tables kCrc3;
+}  // namespace header_bits
+
 // CRC-3 (generator x^3 + x + 1) of header bits 47..3, given the 45 message bits right-aligned.
-std::uint8_t crc3(std::uint64_t message45);
+inline std::uint8_t crc3(std::uint64_t message45) {
+  using header_bits::kCrc3;
+  const std::uint64_t v = (message45 << 3) & header_bits::kMask48;
+  return kCrc3.byte[0][v & 0xFF] ^ kCrc3.byte[1][v >> 8 & 0xFF] ^ kCrc3.byte[2][v >> 16 & 0xFF] ^
+         kCrc3.byte[3][v >> 24 & 0xFF] ^ kCrc3.byte[4][v >> 32 & 0xFF] ^
+         kCrc3.byte[5][v >> 40 & 0xFF];
+}
 
 // The 48-bit value H, check bits included. Throws std::out_of_range when a field does not fit
 // its width (display > 63, x/y/width > 4095), because a silently masked field routes a strip to
@@ -39,7 +77,19 @@ std::uint8_t crc3(std::uint64_t message45);
 std::uint64_t encode(const StripHeader& header);
 
 // Decodes H; nullopt when the check bits do not match. Bits above 47 are ignored.
-std::optional<StripHeader> decode(std::uint64_t value);
+inline std::optional<StripHeader> decode(std::uint64_t value) {
+  using namespace header_bits;
+  value &= kMask48;
+  if (crc3(value >> 3) != (value & 0b111)) return std::nullopt;
+  StripHeader h;
+  h.op = static_cast<StripOp>(value >> kOpShift & 0b11);
+  h.frame = (value >> kFrameShift & 1) != 0;
+  h.display = static_cast<std::uint8_t>(value >> kDisplayShift & 0x3F);
+  h.x = static_cast<std::uint16_t>(value >> kXShift & k12Bits);
+  h.y = static_cast<std::uint16_t>(value >> kYShift & k12Bits);
+  h.width = static_cast<std::uint16_t>(value >> kWidthShift & k12Bits);
+  return h;
+}
 
 // H from two pixels whose first three bytes are R, G, B (RGB or RGBA layout alike).
 inline std::uint64_t header_value(const std::uint8_t* p0, const std::uint8_t* p1) {
