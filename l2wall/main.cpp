@@ -71,6 +71,10 @@ int main(int argc, char** argv) {
                   "fault injection: after frame K reaches the displays, write line noise to "
                   "every back-channel")
       ->check(CLI::Range(0, 1000000));
+  run->add_option("--inject-mismatch", o.inject_mismatch,
+                  "fault injection: with --compare, change one pixel of display 0 of frame K on "
+                  "the vizserver side before comparing")
+      ->check(CLI::Range(0, 1000000));
   run->add_option("--drop-ready", o.drop_ready,
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")

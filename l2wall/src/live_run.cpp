@@ -304,7 +304,17 @@ class LiveRun {
     const viz::FramePtr f = viz_frame(frame);
     for (const Display& d : wall_.displays) {
       const RgbImage& via_dvi = emulator_.shown(d.id);
-      const RgbImage& via_viz = f->displays.at(static_cast<std::size_t>(d.id));
+      RgbImage tampered;
+      const RgbImage* via_viz_ptr = &f->displays.at(static_cast<std::size_t>(d.id));
+      if (frame == o_.inject_mismatch && d.id == 0) {
+        // Fault injection: one pixel off, to show what a mismatch looks like.
+        tampered = *via_viz_ptr;
+        const Rgb p = tampered.at(tampered.width() / 2, tampered.height() / 2);
+        tampered.set(tampered.width() / 2, tampered.height() / 2,
+                     Rgb{static_cast<std::uint8_t>(p.r ^ 0x80), p.g, p.b});
+        via_viz_ptr = &tampered;
+      }
+      const RgbImage& via_viz = *via_viz_ptr;
       const DisplayDiff diff = compare_displays(via_dvi, via_viz);
       ++compared_displays_;
       if (diff.identical()) continue;

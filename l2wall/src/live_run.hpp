@@ -26,8 +26,10 @@ struct RunOptions {
   int ready_timeout_ms = 1000;   // passed to the hosts (first frames can be slow)
   bool progress = true;
   // Fault injection, for tests and demonstrations.
-  int noise_after = -1;  // after swapping this frame, write line noise to every host
-  int drop_ready = -1;   // do not send READY for this frame to host 0 (it asks SYNC?)
+  int noise_after = -1;      // after swapping this frame, write line noise to every host
+  int inject_mismatch = -1;  // --compare: one pixel of display 0 of this frame changed on the
+                             // vizserver side before comparing
+  int drop_ready = -1;       // do not send READY for this frame to host 0 (it asks SYNC?)
 };
 
 // Parses --keep; throws std::invalid_argument naming the bad item.

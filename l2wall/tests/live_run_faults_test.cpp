@@ -66,6 +66,33 @@ TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
   expect_clean(run);
 }
 
+TEST(LiveRun, PathMismatchWritesBothPicturesAndADiffAndFails) {
+  WallRun run("mismatch", {"--frames", "5", "--refresh", "0", "--path", "both", "--compare",
+                           "--inject-mismatch", "2"});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find("frame 2: display 0 differs between the DVI and vizserver paths in 1 "
+                        "pixels"),
+            std::string::npos)
+      << output;
+  const fs::path dir = run.out() / "mismatch-frame-2";
+  const RgbImage dvi = read_png(dir / "display-0-dvi.png");
+  const RgbImage viz = read_png(dir / "display-0-vizserver.png");
+  const RgbImage diff = read_png(dir / "display-0-diff.png");
+  int differing = 0, marked = 0;
+  for (int y = 0; y < dvi.height(); ++y) {
+    for (int x = 0; x < dvi.width(); ++x) {
+      differing += !(dvi.at(x, y) == viz.at(x, y));
+      marked += !(diff.at(x, y) == Rgb{});
+    }
+  }
+  EXPECT_EQ(differing, 1);
+  EXPECT_EQ(marked, 1);
+  EXPECT_EQ(diff.at(dvi.width() / 2, dvi.height() / 2), (Rgb{128, 0, 0}));
+  expect_clean(run);
+}
+
 TEST(LiveRun, LineNoiseAndADroppedReadyAreRecovered) {
   WallRun run("noise", {"--frames", "6", "--refresh", "0", "--inject-noise", "1", "--drop-ready",
                         "3", "--ready-timeout", "200"});
