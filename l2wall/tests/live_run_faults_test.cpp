@@ -40,7 +40,7 @@ TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
 }
 
 TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
-  WallRun run("hung", {"--frames", "100000", "--refresh", "60", "--stall-timeout", "1000"});
+  WallRun run("hung", {"--frames", "100000", "--refresh", "60", "--stall-timeout", "2000"});
   const pid_t victim = running_pipeserver(run, 2);
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGSTOP), 0);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -114,8 +115,11 @@ int run_live_host(const LiveHostOptions& o) {
     const auto t1 = Clock::now();
     int retries = 0;
     if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
+      // READY 0 also waits for every other host's start-up (GL context, first render), which
+      // on a loaded machine can take seconds: that first wait gets more retries.
+      const int retries_allowed = k == 1 ? std::max(o.ready_retries, 30) : o.ready_retries;
       const WaitResult r =
-          channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, o.ready_retries);
+          channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, retries_allowed);
       retries = r.retries;
       if (!r.ok()) {
         std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
