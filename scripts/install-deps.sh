@@ -9,7 +9,7 @@ PACKAGES=(
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
-  socat xvfb xauth
+  socat xvfb xauth libx11-dev libxrandr-dev libxtst-dev
 )
 
 missing=()
