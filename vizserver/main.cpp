@@ -4,18 +4,24 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
-#include <condition_variable>
+#include <cerrno>
 #include <cstdio>
-#include <deque>
-#include <mutex>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
+#include "vizserver/display_sender.hpp"
+#include "vizserver/swap_queue.hpp"
 
 namespace {
+
+// Swapped frames waiting to be written or streamed; a slower writer holds the swaps back.
+constexpr std::size_t kQueuedFrames = 4;
 
 // "1280x1024,640x480" -> sizes; throws CLI::ValidationError naming the bad item.
 std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
@@ -37,12 +43,71 @@ std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
   return sizes;
 }
 
-// Frames handed over by the server thread, written by the main thread: no frame is lost
-// however slowly PNGs are written.
-struct FrameQueue {
-  std::mutex mutex;
-  std::condition_variable ready;
-  std::deque<l2::viz::FramePtr> frames;
+// "HOST:PORT" of --display-stream; throws CLI::ValidationError.
+std::pair<std::string, std::uint16_t> parse_address(const std::string& text) {
+  const auto colon = text.rfind(':');
+  int port = -1;
+  char extra = 0;
+  if (colon == std::string::npos || colon == 0 ||
+      std::sscanf(text.c_str() + colon + 1, "%d%c", &port, &extra) != 1 || port < 1 ||
+      port > 65535) {
+    throw CLI::ValidationError("--display-stream",
+                               fmt::format("'{}' is not HOST:PORT (port 1..65535)", text));
+  }
+  return {text.substr(0, colon), static_cast<std::uint16_t>(port)};
+}
+
+// Where each swapped frame goes: PNG files, the display stream, a line in the log.
+struct Outputs {
+  std::string png_dir;                           // empty: no PNGs
+  std::optional<l2::viz::DisplaySender> stream;  // --display-stream
+  std::FILE* log = stdout;
+};
+
+void put_frame(Outputs& out, const l2::viz::ComposedFrame& frame) {
+  if (!out.png_dir.empty()) {
+    for (std::size_t d = 0; d < frame.displays.size(); ++d) {
+      l2::write_png(fmt::format("{}/display-{}-frame-{}.png", out.png_dir, d, frame.frame),
+                    frame.displays[d]);
+    }
+  }
+  if (out.stream) out.stream->send_frame(frame);
+  fmt::print(out.log, "swapped frame {}: {} tiles, {} clipped rows, {} rows for missing displays\n",
+             frame.frame, frame.tiles, frame.counts.clips, frame.counts.missing_display);
+  std::fflush(out.log);
+}
+
+// Hands `frames` swapped frames to `out`, in order. Throws VizError when the run fails first
+// (the server's failure line), every pipeserver leaves early, or the watcher goes away.
+void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Outputs& out,
+           int frames) {
+  for (int written = 0; written < frames;) {
+    const l2::viz::FramePtr frame = queue.pop(std::chrono::milliseconds(100));
+    if (frame) {
+      put_frame(out, *frame);
+      ++written;
+      continue;
+    }
+    // Whoever watches our displays has gone (l2wall ended): there is no one to compose for.
+    if (out.stream && out.stream->watcher_gone()) {
+      throw l2::viz::VizError(
+          fmt::format("{}: the watcher closed the connection after {} of {} frames",
+                      out.stream->peer(), written, frames));
+    }
+    // The loop hands over its last frames before it ends: look again once it has ended.
+    if (server.wait_finished(std::chrono::milliseconds(0)) && queue.empty()) {
+      if (auto failure = server.failure()) throw l2::viz::VizError(*failure);
+      throw l2::viz::VizError(
+          fmt::format("every pipeserver disconnected after {} of {} frames", written, frames));
+    }
+  }
+}
+
+// Closes the queue when it goes out of scope: declared after the server, so it runs first
+// and a server thread waiting in push() can always be stopped and joined.
+struct QueueCloser {
+  l2::viz::SwapQueue& queue;
+  ~QueueCloser() { queue.close(); }
 };
 
 }  // namespace
@@ -53,11 +118,13 @@ int main(int argc, char** argv) {
       "Pipeservers connect over TCP (docs/vizserver-protocol.md), send the tiles they rendered "
       "and FRAME_DONE; when every pipeserver has finished a frame it is composed (higher "
       "pipeserver wins where tiles overlap, black background), written as "
-      "DIR/display-<d>-frame-<k>.png, and SWAPPED goes back to every pipeserver.\n"
-      "Prints 'listening on HOST:PORT' first, then one line per swap. Exits 0 after --frames "
-      "frames, 1 when the run fails (a pipeserver broke the protocol, died or went silent "
-      "while a frame waited for it), 2 on bad arguments."};
-  std::string displays_text, host = "127.0.0.1", out_dir;
+      "DIR/display-<d>-frame-<k>.png and/or sent on the display stream, and SWAPPED goes back "
+      "to every pipeserver.\n"
+      "Prints 'listening on HOST:PORT' first (to --log FILE if given), then one line per swap. "
+      "Exits 0 after --frames frames, 1 when the run fails (a pipeserver broke the protocol, "
+      "died or went silent while a frame waited for it; the display stream's watcher went "
+      "away), 2 on bad arguments."};
+  std::string displays_text, host = "127.0.0.1", out_dir, stream_address, log_path;
   int servers = 1, frames = 1;
   int port = 0;
   double accept_timeout = 30, stall_timeout = 10;
@@ -74,7 +141,12 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "Frames to compose and write before exiting")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
-  app.add_option("--out", out_dir, "Folder for display-<d>-frame-<k>.png")->required();
+  app.add_option("--out", out_dir, "Folder for display-<d>-frame-<k>.png");
+  app.add_option("--display-stream", stream_address,
+                 "HOST:PORT of a watcher (l2wall run) to connect to: LISTENING with the bound "
+                 "port first, then every swapped frame's display pictures, ERROR before a "
+                 "failed run exits (docs/vizserver-protocol.md)");
+  app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
   app.add_option("--accept-timeout", accept_timeout,
                  "Seconds for all pipeservers to connect; 0 waits forever")
       ->check(CLI::NonNegativeNumber)
@@ -87,6 +159,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     sizes = parse_displays(displays_text);
+    if (out_dir.empty() && stream_address.empty()) {
+      throw CLI::ValidationError("--out", "give --out, --display-stream or both");
+    }
+    if (!stream_address.empty()) parse_address(stream_address);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
@@ -98,56 +174,37 @@ int main(int argc, char** argv) {
   options.port = static_cast<std::uint16_t>(port);
   options.accept_timeout = std::chrono::milliseconds(static_cast<long long>(accept_timeout * 1000));
   options.stall_timeout = std::chrono::milliseconds(static_cast<long long>(stall_timeout * 1000));
+  Outputs out;
+  out.png_dir = out_dir;
   try {
-    l2::viz::CompositingServer server(options);
-    FrameQueue queue;
-    server.on_swap([&queue](const l2::viz::FramePtr& f) {
-      {
-        std::lock_guard lock(queue.mutex);
-        queue.frames.push_back(f);
+    if (!log_path.empty()) {
+      out.log = std::fopen(log_path.c_str(), "w");
+      if (!out.log) {
+        throw std::runtime_error(
+            fmt::format("--log {}: cannot write: {}", log_path, std::strerror(errno)));
       }
-      queue.ready.notify_one();
-    });
-    server.start();
-    fmt::print("listening on {}:{}\n", host, server.port());
-    std::fflush(stdout);
-    for (int written = 0; written < frames;) {
-      l2::viz::FramePtr frame;
-      {
-        std::unique_lock lock(queue.mutex);
-        queue.ready.wait_for(lock, std::chrono::milliseconds(100),
-                             [&] { return !queue.frames.empty(); });
-        if (!queue.frames.empty()) {
-          frame = queue.frames.front();
-          queue.frames.pop_front();
-        }
-      }
-      if (!frame) {
-        // The loop hands over its last frames before it ends: look again once it has ended.
-        const bool ended = server.wait_finished(std::chrono::milliseconds(0));
-        const bool more = [&] {
-          std::lock_guard lock(queue.mutex);
-          return !queue.frames.empty();
-        }();
-        if (ended && !more) {
-          if (auto failure = server.failure()) throw l2::viz::VizError(*failure);
-          throw l2::viz::VizError(
-              fmt::format("every pipeserver disconnected after {} of {} frames", written, frames));
-        }
-        continue;
-      }
-      for (std::size_t d = 0; d < frame->displays.size(); ++d) {
-        l2::write_png(fmt::format("{}/display-{}-frame-{}.png", out_dir, d, frame->frame),
-                      frame->displays[d]);
-      }
-      fmt::print("swapped frame {}: {} tiles, {} clipped rows, {} rows for missing displays\n",
-                 frame->frame, frame->tiles, frame->counts.clips, frame->counts.missing_display);
-      std::fflush(stdout);
-      ++written;
     }
+    // The stream first, so that even a port we cannot bind reaches the watcher as ERROR.
+    if (!stream_address.empty()) {
+      const auto [stream_host, stream_port] = parse_address(stream_address);
+      out.stream.emplace(l2::viz::DisplaySender::connect(stream_host, stream_port));
+    }
+    l2::viz::CompositingServer server(options);
+    l2::viz::SwapQueue queue(kQueuedFrames);
+    const QueueCloser closer{queue};
+    server.on_swap([&queue](const l2::viz::FramePtr& f) { queue.push(f); });
+    server.start();
+    if (out.stream) {
+      out.stream->send_listening({server.port(), static_cast<std::uint32_t>(sizes.size()),
+                                  static_cast<std::uint32_t>(servers)});
+    }
+    fmt::print(out.log, "listening on {}:{}\n", host, server.port());
+    std::fflush(out.log);
+    serve(server, queue, out, frames);
     for (const std::string& e : server.errors()) fmt::print(stderr, "vizserver: note: {}\n", e);
     return 0;
   } catch (const std::exception& e) {
+    if (out.stream) out.stream->send_error(e.what());
     fmt::print(stderr, "vizserver: error: {}\n", e.what());
     return 1;
   }

@@ -7,11 +7,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "child_process.hpp"
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
+#include "vizserver/display_watcher.hpp"
 #include "vizserver/tile_sender.hpp"
 
 namespace l2::viz {
@@ -142,17 +144,88 @@ TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
   std::filesystem::remove_all(dir);
 }
 
+// The way l2wall runs it: no PNGs, the displays streamed back to whoever started it, and the
+// port it bound told on the stream before any pipeserver connects.
+TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
+  const auto dir = fresh_dir("stream");
+  const Fd listener = listen_tcp("127.0.0.1", 0);
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--frames", "2",
+                    "--display-stream", fmt::format("127.0.0.1:{}", local_port(listener.get())),
+                    "--log", (dir / "log.txt").string()});
+  Fd stream = accept_within(listener, 5000ms);
+  ASSERT_TRUE(stream);
+  const Listening l = read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+  EXPECT_EQ(l.display_count, 1u);
+  EXPECT_EQ(l.server_count, 1u);
+  DisplayWatcher watcher(std::move(stream), "vizserver");
+  auto s = TileSender::connect("127.0.0.1", static_cast<std::uint16_t>(l.port), 0, 1);
+  for (std::uint32_t k = 0; k < 2; ++k) {
+    const std::vector<std::uint8_t> tile(4 * 4 * 3, static_cast<std::uint8_t>(0x40 + k));
+    s.send_tile(k, {0, 2, 0, 4, 4}, tile.data(), 12);
+    s.finish_frame(k, 1);
+    s.wait_swapped(k, 5000ms);
+    const FramePtr f = watcher.take(k, 5000ms);
+    ASSERT_TRUE(f) << "frame " << k;
+    RgbImage want(8, 4);
+    want.fill_rect(2, 0, 4, 4,
+                   Rgb{static_cast<std::uint8_t>(0x40 + k), static_cast<std::uint8_t>(0x40 + k),
+                       static_cast<std::uint8_t>(0x40 + k)});
+    EXPECT_EQ(f->displays.at(0), want) << "frame " << k;
+  }
+  EXPECT_EQ(exe.wait(5000ms), 0);
+  EXPECT_EQ(exe.read_line(100ms), std::nullopt) << "lines go to --log, not stdout";
+  std::ifstream log(dir / "log.txt");
+  std::string first;
+  std::getline(log, first);
+  EXPECT_EQ(first, fmt::format("listening on 127.0.0.1:{}", l.port));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
+  const Fd taken = listen_tcp("127.0.0.1", 0);
+  const Fd listener = listen_tcp("127.0.0.1", 0);
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--port",
+                    std::to_string(local_port(taken.get())), "--display-stream",
+                    fmt::format("127.0.0.1:{}", local_port(listener.get()))});
+  Fd stream = accept_within(listener, 5000ms);
+  ASSERT_TRUE(stream);
+  try {
+    read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+    FAIL() << "it listened on a taken port";
+  } catch (const VizError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(fmt::format("vizserver: cannot listen on 127.0.0.1:{}: ",
+                                                local_port(taken.get()))));
+  }
+  EXPECT_EQ(exe.wait(5000ms), 1);
+}
+
+TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
+  Fd listener = listen_tcp("127.0.0.1", 0);
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--display-stream",
+                    fmt::format("127.0.0.1:{}", local_port(listener.get()))});
+  Fd stream = accept_within(listener, 5000ms);
+  ASSERT_TRUE(stream);
+  read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+  stream.reset();  // l2wall died: no one is left to compose for
+  EXPECT_EQ(exe.wait(3000ms), 1);
+}
+
 TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   ChildProcess help({VIZSERVER_EXE, "--help"});
   std::string text;
   while (auto l = help.read_line(5000ms)) text += *l + "\n";
   EXPECT_EQ(help.wait(5000ms), 0);
   for (const char* opt : {"--displays", "--servers", "--port", "--host", "--frames", "--out",
-                          "--accept-timeout", "--stall-timeout"}) {
+                          "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
     EXPECT_THAT(text, HasSubstr(opt));
   }
   ChildProcess bad({VIZSERVER_EXE, "--displays", "16y8", "--servers", "1", "--out", "/tmp/x"});
   EXPECT_EQ(bad.wait(5000ms), 2);
+  ChildProcess nowhere({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1"});
+  EXPECT_EQ(nowhere.wait(5000ms), 2);  // neither --out nor --display-stream
+  ChildProcess bad_stream(
+      {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--display-stream", "localhost"});
+  EXPECT_EQ(bad_stream.wait(5000ms), 2);
 }
 
 }  // namespace

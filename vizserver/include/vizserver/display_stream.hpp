@@ -1,0 +1,81 @@
+// The display stream (docs/vizserver-protocol.md): the compositing server, running as its own
+// process, hands every swapped frame's display pictures to one watcher (l2wall) over TCP, so
+// the run can keep frames and compare them byte for byte with the DVI path. Same 12-byte header
+// as the pipeserver protocol (magic, version, kind, length; little-endian), its own kinds:
+//
+//   LISTENING  server -> watcher, first: the port pipeservers connect to (no race on port 0)
+//   DISPLAY    server -> watcher: one display picture of one frame
+//   SHOWN      server -> watcher: every DISPLAY of that frame was sent (counts of the frame)
+//   ERROR      server -> watcher: why the server ends (its failure line), then it closes
+//
+// Pure encoding and validation here; DisplaySender and DisplayWatcher do the I/O.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+
+#include "vizserver/wire.hpp"
+
+namespace l2::viz {
+
+inline constexpr int kMaxDisplaySide = 16384;  // the vizserver's --displays limit
+
+enum class StreamKind : std::uint16_t {
+  Listening = 16,
+  Display = 17,
+  Shown = 18,
+  Error = 6,  // the same ERROR as the pipeserver protocol
+};
+
+struct Listening {
+  std::uint32_t port = 0;
+  std::uint32_t display_count = 0;
+  std::uint32_t server_count = 0;
+};
+
+// One display picture: width*height RGB pixels follow, rows top to bottom, no padding.
+struct DisplayHeader {
+  std::uint32_t frame = 0;
+  std::uint32_t display = 0;
+  std::uint32_t width = 0, height = 0;
+  std::size_t pixel_bytes() const { return std::size_t{width} * height * 3; }
+};
+
+struct Shown {
+  std::uint32_t frame = 0;
+  std::uint32_t display_count = 0;  // DISPLAY messages sent for this frame, one per display
+  std::uint32_t tiles = 0;
+  std::uint32_t clipped_rows = 0;          // spec §3 clips of the frame
+  std::uint32_t missing_display_rows = 0;  // rows for displays that do not exist
+};
+
+struct StreamHeader {
+  StreamKind kind{};
+  std::uint32_t payload_bytes = 0;
+};
+
+std::size_t fixed_bytes(StreamKind kind);
+const char* kind_name(StreamKind kind);
+
+std::array<std::uint8_t, kHeaderBytes + 12> encode(const Listening& m);
+std::array<std::uint8_t, kHeaderBytes + 16> encode(const DisplayHeader& m);
+std::array<std::uint8_t, kHeaderBytes + 20> encode(const Shown& m);
+
+// Checks magic, version, a display-stream kind and a length possible for it (DISPLAY: its
+// sides 1..kMaxDisplaySide, checked again with the fixed part by validate()) before anything
+// is allocated. Returns the header or a one-line reason.
+std::variant<StreamHeader, std::string> decode_stream_header(
+    std::span<const std::uint8_t, kHeaderBytes> bytes);
+
+Listening decode_listening(std::span<const std::uint8_t> fixed);
+DisplayHeader decode_display(std::span<const std::uint8_t> fixed);
+Shown decode_shown(std::span<const std::uint8_t> fixed);
+// A DISPLAY whose sides are outside 1..kMaxDisplaySide or whose length is not 16 + w*h*3.
+std::optional<std::string> validate(const DisplayHeader& d, std::uint32_t payload_bytes);
+
+}  // namespace l2::viz

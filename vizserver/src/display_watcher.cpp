@@ -1,0 +1,229 @@
+#include "vizserver/display_watcher.hpp"
+
+#include <poll.h>
+#include <sys/socket.h>
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+
+namespace l2::viz {
+namespace {
+
+constexpr int kPollSliceMs = 20;  // how soon the reader sees stop_
+
+}  // namespace
+
+Fd accept_within(const Fd& listener, std::chrono::milliseconds timeout) {
+  pollfd p{listener.get(), POLLIN, 0};
+  if (::poll(&p, 1, static_cast<int>(timeout.count())) <= 0) return Fd();
+  Fd fd(::accept4(listener.get(), nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC));
+  if (fd) set_nodelay(fd.get());
+  return fd;
+}
+
+Listening read_listening(int fd, Clock::time_point deadline, const std::string& peer) {
+  std::array<std::uint8_t, kHeaderBytes + 12> buf{};
+  recv_all(fd, buf.data(), kHeaderBytes, deadline, peer);
+  const auto decoded =
+      decode_stream_header(std::span<const std::uint8_t, kHeaderBytes>(buf.data(), kHeaderBytes));
+  if (const auto* bad = std::get_if<std::string>(&decoded)) {
+    throw VizError(fmt::format("{}: {}", peer, *bad));
+  }
+  const StreamHeader h = std::get<StreamHeader>(decoded);
+  if (h.kind == StreamKind::Error) {
+    std::string text(h.payload_bytes, '\0');
+    recv_all(fd, reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer);
+    throw VizError(fmt::format("{}: {}", peer, text));
+  }
+  if (h.kind != StreamKind::Listening) {
+    throw VizError(fmt::format("{}: {} before LISTENING", peer, kind_name(h.kind)));
+  }
+  recv_all(fd, buf.data() + kHeaderBytes, 12, deadline, peer);
+  return decode_listening(std::span<const std::uint8_t>(buf.data() + kHeaderBytes, 12));
+}
+
+DisplayWatcher::DisplayWatcher(Fd fd, std::string peer, std::size_t max_held,
+                               std::chrono::milliseconds io_timeout)
+    : fd_(std::move(fd)),
+      peer_(std::move(peer)),
+      max_held_(std::max<std::size_t>(max_held, 1)),
+      io_timeout_(io_timeout) {
+  thread_ = std::thread([this] { run(); });
+}
+
+DisplayWatcher::~DisplayWatcher() {
+  stop_ = true;
+  changed_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+FramePtr DisplayWatcher::take(std::uint32_t frame, std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  // The caller goes forward: older frames are of no use any more, and would hold room.
+  held_.erase(held_.begin(), held_.lower_bound(frame));
+  changed_.notify_all();
+  changed_.wait_for(lock, timeout, [&] {
+    return held_.count(frame) > 0 || ended_ || (last_arrived_ && *last_arrived_ >= frame);
+  });
+  if (const auto it = held_.find(frame); it != held_.end()) {
+    FramePtr f = it->second;
+    held_.erase(held_.begin(), std::next(it));
+    changed_.notify_all();
+    return f;
+  }
+  if (last_arrived_ && *last_arrived_ >= frame) {
+    throw VizError(fmt::format("{}: frame {} is not in the stream (it went on to frame {})", peer_,
+                               frame, *last_arrived_));
+  }
+  if (ended_) throw VizError(*ended_);
+  return nullptr;
+}
+
+std::optional<std::string> DisplayWatcher::ended() const {
+  std::lock_guard lock(mutex_);
+  return ended_;
+}
+
+bool DisplayWatcher::ended_with_error_message() const {
+  std::lock_guard lock(mutex_);
+  return error_message_;
+}
+
+void DisplayWatcher::run() {
+  try {
+    read_stream();
+  } catch (const std::exception& e) {
+    finish(e.what(), false);
+  }
+}
+
+bool DisplayWatcher::read_exact(std::uint8_t* data, std::size_t n, bool at_boundary,
+                                const char* what) {
+  const auto deadline = Clock::now() + io_timeout_;
+  std::size_t got = 0;
+  while (got < n) {
+    const ssize_t r = ::recv(fd_.get(), data + got, n - got, 0);
+    if (r > 0) {
+      got += static_cast<std::size_t>(r);
+      continue;
+    }
+    if (r < 0 && errno == EINTR) continue;
+    const bool closed = r == 0 || errno == ECONNRESET;
+    if (closed && at_boundary && got == 0) return false;
+    if (closed) {
+      throw VizError(
+          fmt::format("{} closed the connection in the middle of a {} message", peer_, what));
+    }
+    if (errno != EAGAIN && errno != EWOULDBLOCK) {
+      throw VizError(fmt::format("{}: receive failed: {}", peer_, std::strerror(errno)));
+    }
+    // Between messages the server may be quiet as long as it likes (the run judges stalls);
+    // inside a message the rest must follow within io_timeout.
+    if ((!at_boundary || got > 0) && Clock::now() > deadline) {
+      throw VizError(fmt::format("{}: the rest of a {} message did not arrive within {} ms", peer_,
+                                 what, io_timeout_.count()));
+    }
+    pollfd p{fd_.get(), POLLIN, 0};
+    ::poll(&p, 1, kPollSliceMs);
+    if (stop_) return false;
+  }
+  return true;
+}
+
+void DisplayWatcher::read_stream() {
+  ComposedFrame building;
+  bool open = false;  // DISPLAYs of `building` arrived, its SHOWN not yet
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return held_.size() < max_held_ || stop_; });
+    }
+    std::array<std::uint8_t, kHeaderBytes + 20> head{};
+    if (!read_exact(head.data(), kHeaderBytes, true, "message")) {
+      if (stop_) return finish(fmt::format("{}: no longer watched", peer_), false);
+      return finish(open ? fmt::format("{} closed the connection in the middle of frame {} ({} "
+                                       "displays sent, no SHOWN)",
+                                       peer_, building.frame, building.displays.size())
+                         : fmt::format("{} closed the connection", peer_),
+                    false);
+    }
+    const auto decoded = decode_stream_header(
+        std::span<const std::uint8_t, kHeaderBytes>(head.data(), kHeaderBytes));
+    if (const auto* bad = std::get_if<std::string>(&decoded)) {
+      throw VizError(fmt::format("{}: {}", peer_, *bad));
+    }
+    const StreamHeader h = std::get<StreamHeader>(decoded);
+    const std::size_t fixed = fixed_bytes(h.kind);
+    if (!read_exact(head.data() + kHeaderBytes, fixed, false, kind_name(h.kind))) return;
+    const std::span<const std::uint8_t> fixed_part(head.data() + kHeaderBytes, fixed);
+    if (h.kind == StreamKind::Error) {
+      std::string text(h.payload_bytes, '\0');
+      if (!read_exact(reinterpret_cast<std::uint8_t*>(text.data()), text.size(), false, "ERROR"))
+        return;
+      return finish(text, true);
+    }
+    if (h.kind == StreamKind::Display) {
+      const DisplayHeader d = decode_display(fixed_part);
+      if (auto bad = validate(d, h.payload_bytes)) throw VizError(peer_ + ": " + *bad);
+      if (!open) {
+        if (last_arrived_ && d.frame <= *last_arrived_) {
+          throw VizError(
+              fmt::format("{}: frame {} after frame {}", peer_, d.frame, *last_arrived_));
+        }
+        building = ComposedFrame{};
+        building.frame = d.frame;
+        open = true;
+      }
+      if (d.frame != building.frame || d.display != building.displays.size()) {
+        throw VizError(
+            fmt::format("{}: DISPLAY {} of frame {} where display {} of frame {} was due", peer_,
+                        d.display, d.frame, building.displays.size(), building.frame));
+      }
+      RgbImage image(static_cast<int>(d.width), static_cast<int>(d.height));
+      if (!read_exact(image.data(), d.pixel_bytes(), false, "DISPLAY")) return;
+      building.displays.push_back(std::move(image));
+    } else if (h.kind == StreamKind::Shown) {
+      const Shown s = decode_shown(fixed_part);
+      if (!open || s.frame != building.frame || s.display_count != building.displays.size()) {
+        throw VizError(fmt::format(
+            "{}: SHOWN for frame {} with {} displays, but {} displays of "
+            "frame {} arrived",
+            peer_, s.frame, s.display_count, open ? building.displays.size() : 0, building.frame));
+      }
+      building.tiles = s.tiles;
+      building.counts.clips = s.clipped_rows;
+      building.counts.missing_display = s.missing_display_rows;
+      publish(std::move(building));
+      open = false;
+    } else {
+      throw VizError(fmt::format("{}: a second {}", peer_, kind_name(h.kind)));
+    }
+  }
+}
+
+void DisplayWatcher::publish(ComposedFrame frame) {
+  const std::uint32_t number = frame.frame;
+  auto ptr = std::make_shared<const ComposedFrame>(std::move(frame));
+  {
+    std::lock_guard lock(mutex_);
+    held_[number] = std::move(ptr);
+    last_arrived_ = number;
+  }
+  changed_.notify_all();
+}
+
+void DisplayWatcher::finish(std::string reason, bool error_message) {
+  {
+    std::lock_guard lock(mutex_);
+    if (!ended_) {
+      ended_ = std::move(reason);
+      error_message_ = error_message;
+    }
+  }
+  changed_.notify_all();
+}
+
+}  // namespace l2::viz

@@ -1,0 +1,246 @@
+// The display stream (compositing server -> l2wall): its bytes, and DisplaySender against
+// DisplayWatcher over real sockets on 127.0.0.1 with the sender on its own thread — every pixel
+// of every frame arrives, a slow watcher holds the sender back, and every way the stream can
+// end is reported. Also the SwapQueue between the server thread and its writer. In the TSan
+// run: the watcher's reader thread and the queue are what l2wall and vizserver share threads by.
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "vizserver/display_sender.hpp"
+#include "vizserver/display_stream.hpp"
+#include "vizserver/display_watcher.hpp"
+#include "vizserver/swap_queue.hpp"
+
+namespace l2::viz {
+namespace {
+
+using namespace std::chrono_literals;
+using ::testing::HasSubstr;
+
+// The colour the test expects at (x, y) of `display` in `frame`, chosen here.
+Rgb pattern(int display, int x, int y, std::uint32_t frame) {
+  return {static_cast<std::uint8_t>(x * 5 + display * 70), static_cast<std::uint8_t>(y * 3 + 7),
+          static_cast<std::uint8_t>(frame * 11 + 1)};
+}
+
+ComposedFrame make_frame(std::uint32_t number, const std::vector<std::pair<int, int>>& sizes) {
+  ComposedFrame f;
+  f.frame = number;
+  f.tiles = 3 + number;
+  f.counts.clips = 2;
+  f.counts.missing_display = 1;
+  for (std::size_t d = 0; d < sizes.size(); ++d) {
+    RgbImage image(sizes[d].first, sizes[d].second);
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x)
+        image.set(x, y, pattern(static_cast<int>(d), x, y, number));
+    f.displays.push_back(std::move(image));
+  }
+  return f;
+}
+
+// Both ends of one stream: the sender's end is connected (on this thread, as the server would
+// from its own process), the watcher's accepted and its LISTENING read.
+struct StreamPair {
+  Fd listener = listen_tcp("127.0.0.1", 0);
+  std::optional<DisplaySender> sender;
+  Fd accepted;
+  Listening listening;
+
+  StreamPair() {
+    sender.emplace(DisplaySender::connect("127.0.0.1", local_port(listener.get())));
+    sender->send_listening({4321, 2, 3});
+    accepted = accept_within(listener, 5000ms);
+    listening = read_listening(accepted.get(), Clock::now() + 5000ms, "test stream");
+  }
+};
+
+TEST(DisplayStreamWire, ListeningDisplayAndShownBytes) {
+  const auto l = encode(Listening{0x1234, 2, 3});
+  // "L2VZ", version 1, kind 16, payload 12, then the three u32s, all little-endian.
+  const std::vector<std::uint8_t> want{'L',  '2',  'V', 'Z', 1, 0, 16, 0, 12, 0, 0, 0,
+                                       0x34, 0x12, 0,   0,   2, 0, 0,  0, 3,  0, 0, 0};
+  EXPECT_EQ(std::vector<std::uint8_t>(l.begin(), l.end()), want);
+  const auto d = encode(DisplayHeader{7, 1, 640, 480});
+  EXPECT_EQ(d[6], 17);
+  EXPECT_EQ(get_u32(d.data() + 8), 16u + 640 * 480 * 3);
+  const auto s = encode(Shown{7, 4, 16, 2, 1});
+  EXPECT_EQ(s[6], 18);
+  EXPECT_EQ(get_u32(s.data() + 8), 20u);
+  EXPECT_EQ(get_u32(s.data() + 24), 2u);
+}
+
+TEST(DisplayStreamWire, RefusesOtherKindsAndImpossibleSizes) {
+  auto header = encode(DisplayHeader{0, 0, 4, 4});
+  put_u16(header.data() + 6, 3);  // a TILE of the pipeserver protocol
+  const auto tile = decode_stream_header(
+      std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes));
+  ASSERT_TRUE(std::holds_alternative<std::string>(tile));
+  EXPECT_EQ(std::get<std::string>(tile), "message kind 3 is not one of the display stream");
+  put_u16(header.data() + 6, 18);  // SHOWN claiming more than its fixed 20 bytes
+  put_u32(header.data() + 8, 21);
+  const auto shown = decode_stream_header(
+      std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes));
+  ASSERT_TRUE(std::holds_alternative<std::string>(shown));
+  EXPECT_EQ(std::get<std::string>(shown), "SHOWN payload of 21 bytes, allowed 20..20");
+  EXPECT_EQ(validate(DisplayHeader{0, 0, 0, 4}, 16).value_or(""),
+            "DISPLAY of 0x4 pixels, each side must be 1..16384");
+  EXPECT_EQ(validate(DisplayHeader{0, 0, 2, 2}, 16 + 11).value_or(""),
+            "DISPLAY 2x2 needs a payload of 28 bytes, header says 27");
+  EXPECT_FALSE(validate(DisplayHeader{0, 0, 2, 2}, 28));
+}
+
+TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {
+  const std::vector<std::pair<int, int>> sizes{{16, 8}, {8, 4}};
+  StreamPair p;
+  EXPECT_EQ(p.listening.port, 4321u);
+  EXPECT_EQ(p.listening.display_count, 2u);
+  EXPECT_EQ(p.listening.server_count, 3u);
+  std::thread server([&] {
+    for (std::uint32_t k = 0; k < 5; ++k) p.sender->send_frame(make_frame(k, sizes));
+    p.sender.reset();  // closes: the end of the stream
+  });
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", 2);
+  for (std::uint32_t k = 0; k < 5; ++k) {
+    const FramePtr f = watcher.take(k, 5000ms);
+    ASSERT_TRUE(f) << "frame " << k;
+    EXPECT_EQ(f->frame, k);
+    EXPECT_EQ(f->tiles, 3 + k);
+    EXPECT_EQ(f->counts.clips, 2u);
+    EXPECT_EQ(f->counts.missing_display, 1u);
+    ASSERT_EQ(f->displays.size(), 2u);
+    for (int d = 0; d < 2; ++d) {
+      const RgbImage& image = f->displays[static_cast<std::size_t>(d)];
+      ASSERT_EQ(image.width(), sizes[static_cast<std::size_t>(d)].first);
+      ASSERT_EQ(image.height(), sizes[static_cast<std::size_t>(d)].second);
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+          ASSERT_EQ(image.at(x, y), pattern(d, x, y, k)) << "frame " << k << " display " << d;
+    }
+  }
+  server.join();
+  try {
+    watcher.take(5, 2000ms);
+    FAIL() << "frame 5 arrived";
+  } catch (const VizError& e) {
+    EXPECT_STREQ(e.what(), "test stream closed the connection");
+  }
+  EXPECT_FALSE(watcher.ended_with_error_message());
+}
+
+TEST(DisplayStream, ASlowWatcherHoldsTheSenderBack) {
+  // 3 MB frames: more than the socket buffers can hide, so only flow control explains a
+  // sender that stays a few frames ahead.
+  const std::vector<std::pair<int, int>> sizes{{1024, 1024}};
+  StreamPair p;
+  std::atomic<int> sent{0};
+  std::thread server([&] {
+    const ComposedFrame f = make_frame(0, sizes);
+    for (std::uint32_t k = 0; k < 12; ++k) {
+      ComposedFrame next = f;
+      next.frame = k;
+      p.sender->send_frame(next);
+      ++sent;
+    }
+  });
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", 2);
+  std::this_thread::sleep_for(500ms);
+  const int ahead = sent.load();
+  EXPECT_GE(ahead, 2);
+  EXPECT_LE(ahead, 6) << "the watcher holds 2 frames; the rest must wait for it";
+  for (std::uint32_t k = 0; k < 12; ++k) ASSERT_TRUE(watcher.take(k, 5000ms)) << "frame " << k;
+  server.join();
+  EXPECT_EQ(sent.load(), 12);
+}
+
+TEST(DisplayStream, TheServersErrorLineEndsTheStream) {
+  StreamPair p;
+  p.sender->send_frame(make_frame(0, {{4, 4}}));
+  p.sender->send_error("pipeserver 2 disconnected during frame 1");
+  DisplayWatcher watcher(std::move(p.accepted), "test stream");
+  EXPECT_TRUE(watcher.take(0, 5000ms));
+  try {
+    watcher.take(1, 5000ms);
+    FAIL() << "frame 1 arrived";
+  } catch (const VizError& e) {
+    EXPECT_STREQ(e.what(), "pipeserver 2 disconnected during frame 1");
+  }
+  EXPECT_TRUE(watcher.ended_with_error_message());
+}
+
+TEST(DisplayStream, ASkippedFrameIsNamed) {
+  StreamPair p;
+  p.sender->send_frame(make_frame(0, {{4, 4}}));
+  p.sender->send_frame(make_frame(2, {{4, 4}}));
+  DisplayWatcher watcher(std::move(p.accepted), "test stream");
+  EXPECT_TRUE(watcher.take(0, 5000ms));
+  try {
+    watcher.take(1, 5000ms);
+    FAIL() << "frame 1 arrived";
+  } catch (const VizError& e) {
+    EXPECT_STREQ(e.what(), "test stream: frame 1 is not in the stream (it went on to frame 2)");
+  }
+  EXPECT_TRUE(watcher.take(2, 5000ms));
+}
+
+TEST(DisplayStream, AMessageCutOffByTheServersDeathIsNamed) {
+  Fd listener = listen_tcp("127.0.0.1", 0);
+  Fd raw = connect_tcp("127.0.0.1", local_port(listener.get()), 5000ms);
+  Fd accepted = accept_within(listener, 5000ms);
+  const auto head = encode(DisplayHeader{0, 0, 4, 4});
+  const std::uint8_t some_pixels[10] = {};
+  const iovec parts[] = {{const_cast<std::uint8_t*>(head.data()), head.size()},
+                         {const_cast<std::uint8_t*>(some_pixels), sizeof some_pixels}};
+  send_all(raw.get(), parts, Clock::now() + 5000ms, "test");
+  raw.reset();
+  DisplayWatcher watcher(std::move(accepted), "test stream");
+  try {
+    watcher.take(0, 5000ms);
+    FAIL() << "frame 0 arrived";
+  } catch (const VizError& e) {
+    EXPECT_STREQ(e.what(), "test stream closed the connection in the middle of a DISPLAY message");
+  }
+  EXPECT_FALSE(watcher.ended_with_error_message());
+}
+
+TEST(SwapQueue, AFullQueueHoldsTheServerThreadUntilTakenOrClosed) {
+  SwapQueue queue(2);
+  std::atomic<int> pushed{0};
+  std::thread server([&] {
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      auto f = std::make_shared<ComposedFrame>();
+      f->frame = k;
+      queue.push(f);
+      ++pushed;
+    }
+  });
+  std::this_thread::sleep_for(200ms);
+  EXPECT_EQ(pushed.load(), 2);
+  for (std::uint32_t k = 0; k < 3; ++k) {
+    const FramePtr f = queue.pop(5000ms);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, k);
+  }
+  server.join();  // the fourth went in once there was room
+  EXPECT_EQ(queue.pop(5000ms)->frame, 3u);
+  EXPECT_FALSE(queue.pop(10ms));
+
+  // Closed: a push into a full queue no longer waits, so the server thread can always stop.
+  SwapQueue full(1);
+  full.push(std::make_shared<ComposedFrame>());
+  std::thread stuck([&] { full.push(std::make_shared<ComposedFrame>()); });
+  std::this_thread::sleep_for(50ms);
+  full.close();
+  stuck.join();
+}
+
+}  // namespace
+}  // namespace l2::viz
