@@ -1,0 +1,86 @@
+// `l2wall run --show` end to end on a private Xvfb: real pipeserver processes, the wall window
+// read back from the X server against the displays the run wrote, and the refusals.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "image/png_io.hpp"
+#include "show_run.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using namespace testing_support;
+
+TEST(Show, WallWindowShowsTheWrittenDisplaysPixelForPixel) {
+  L2_START_XVFB(xvfb, kScreenW, kScreenH);
+  const int frames = 5;
+  const fs::path readback = fs::temp_directory_path() / fmt::format("l2wall-readback-{}", getpid());
+  fs::remove_all(readback);
+  WallRun run("show-window", {"--show", "window", "--frames", std::to_string(frames), "--keep",
+                              "every", "--refresh", "0", "--show-readback", readback.string()});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_NE(output.find("show: window, 5 frames presented"), std::string::npos) << output;
+  EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
+  for (int k = 0; k < frames; ++k) {
+    for (int d = 0; d < 4; ++d) {
+      const RgbImage written = display_png(run.out(), k, d);
+      ASSERT_EQ(written.width(), 640);
+      EXPECT_TRUE(display_png(readback, k, d) == written) << "frame " << k << " display " << d;
+    }
+  }
+  // The whole window: displays where the wall file puts them, mullions dark, overlay below.
+  const RgbImage window = read_png(readback / "frame-4" / "window-0.png");
+  ASSERT_EQ(window.width(), 1300);
+  ASSERT_GT(window.height(), 980);
+  const RgbImage d3 = display_png(run.out(), 4, 3);
+  for (int y = 0; y < 480; y += 7) {
+    EXPECT_EQ(window.at(650, y), kMullion) << y;
+    EXPECT_EQ(window.at(660 + y % 640, 500 + y), d3.at(y % 640, y)) << y;
+  }
+  fs::remove_all(readback);
+  expect_clean(run);
+}
+
+TEST(Show, MonitorsWithFewerMonitorsThanDisplaysIsRefusedListingThem) {
+  L2_START_XVFB(xvfb, 800, 600);
+  WallRun run("show-monitors", {"--show", "monitors", "--frames", "3"});
+  const ExitStatus status = run.wait(20s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  // One line: what is wrong, and the monitors there are.
+  EXPECT_EQ(output,
+            "l2wall: walls/kd-2x2.toml (built in): --show monitors needs one monitor per display: "
+            "4 displays, but GLFW sees 1 monitor: [0] \"screen\" 800x600 at (0,0)\n");
+  // Refused before any host started.
+  EXPECT_FALSE(fs::exists(run.out() / "host-0.log"));
+  expect_clean(run);
+}
+
+TEST(Show, WithoutAScreenTheErrorIsOneLine) {
+  const char* saved = std::getenv("DISPLAY");
+  const std::string keep = saved ? saved : "";
+  unsetenv("DISPLAY");
+  WallRun run("show-noscreen", {"--show", "window", "--frames", "3"});
+  const ExitStatus status = run.wait(20s);
+  if (saved) setenv("DISPLAY", keep.c_str(), 1);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_EQ(output.rfind("l2wall: cannot open the screen: ", 0), 0u) << output;
+  EXPECT_NE(output.find("DISPLAY=unset"), std::string::npos) << output;
+  EXPECT_NE(output.find("xvfb-run"), std::string::npos) << output;
+  EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+  expect_clean(run);
+}
+}  // namespace
+}  // namespace l2
