@@ -38,7 +38,14 @@ Setup make_setup(const CommonOptions& options);
 // shown_by_id[d] is what display d shows (nullptr: not configured).
 RgbImage compose_wall(const Setup& setup, const std::vector<const RgbImage*>& shown_by_id);
 
+// sequence --show (sequence_show.hpp): the displays on screen, refresh by refresh.
+struct ShowOptions {
+  std::string mode;                // window | monitors; empty: not shown
+  double refresh_hz = -1;          // below 0: the wall's rate (60 without --wall); 0: no wait
+  std::filesystem::path readback;  // verification aid: what the screen shows, per refresh
+};
+
 int run_route(const CommonOptions& options);
-int run_sequence(const CommonOptions& options, int ticks);
+int run_sequence(const CommonOptions& options, int ticks, const ShowOptions& show = {});
 
 }  // namespace l2

@@ -56,11 +56,34 @@ int main(int argc, char** argv) {
                        "Refreshes to run (default: the longest input's frame count + 1; an "
                        "input past its last frame keeps scanning it out)");
   sequence->add_option("inputs", seq_options.inputs, "Input folders IN0/ IN1/ ...")->required();
+  l2::ShowOptions show;
+  sequence
+      ->add_option("--show", show.mode,
+                   "Play the sequence on screen, one refresh per 1/--refresh s (what the displays "
+                   "show during each refresh: spec §6). window: one window laying out the wall "
+                   "(--wall; --displays: in a row) and an overlay line with the refresh number, "
+                   "fps and latency. "
+                   "monitors: each display fullscreen on the monitor its wall-file `monitor` "
+                   "names (--displays: display i on monitor i). Keys: space pauses, s saves "
+                   "screenshots to OUT/screenshots/, q or Esc stop the sequence there. Needs an "
+                   "X display (without one, run under Xvfb)")
+      ->check(CLI::IsMember({"window", "monitors"}));
+  sequence
+      ->add_option("--refresh", show.refresh_hz,
+                   "With --show: refreshes per second on screen (default: the wall's "
+                   "refresh_hz, 60 with --displays); 0 = as fast as possible")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->needs("--show");
+  sequence
+      ->add_option("--show-readback", show.readback,
+                   "Verification aid for --show: after every refresh, read the windows back "
+                   "from the X server into DIR/frame-<t>/display-<d>.png and window-<i>.png")
+      ->needs("--show");
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (*route) return l2::run_route(route_options);
-    return l2::run_sequence(seq_options, ticks);
+    return l2::run_sequence(seq_options, ticks, show);
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightning2_emu: {}\n", e.what());
     return 1;

@@ -3,15 +3,17 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "commands.hpp"
 #include "frame_files.hpp"
 #include "image/png_io.hpp"
 #include "report_json.hpp"
+#include "sequence_show.hpp"
 
 namespace l2 {
 
-int run_sequence(const CommonOptions& o, int ticks) {
+int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   const Setup setup = make_setup(o);
   const Mesh& mesh = setup.config.mesh;
   std::vector<std::vector<std::filesystem::path>> inputs;
@@ -24,6 +26,8 @@ int run_sequence(const CommonOptions& o, int ticks) {
   if (ticks <= 0) ticks = static_cast<int>(longest) + 1;
 
   Emulator emulator(setup.config);
+  std::unique_ptr<SequenceShow> screen;
+  if (!show.mode.empty()) screen = std::make_unique<SequenceShow>(o, setup, show);
   std::vector<RgbImage> images(inputs.size());
   std::vector<InputFrame> frames(inputs.size());
   nlohmann::json log = nlohmann::json::array();
@@ -50,6 +54,7 @@ int run_sequence(const CommonOptions& o, int ticks) {
     if (setup.from_wall) {
       write_png(o.out / "wall" / fmt::format("frame-{:04}.png", t), compose_wall(setup, by_id));
     }
+    if (screen && !screen->play(t, by_id)) break;  // q / Esc: the sequence ends here
   }
   nlohmann::json json = to_json(emulator.report());
   json["tick_log"] = log;
