@@ -62,11 +62,18 @@ struct Samples {
     for (const Time& t : runs) b = std::min(b, t.wall);
     return b;
   }
+  double median_cpu() const;
 };
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
+}
+
+double Samples::median_cpu() const {
+  std::vector<double> cpu;
+  for (const Time& t : runs) cpu.push_back(t.cpu);
+  return median(cpu);
 }
 
 // Median over the repetitions of baseline time / routing time, by wall or CPU time.
@@ -249,10 +256,11 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
       "  {} worker(s): routing {:5.2f} GB/s = {:6.1f} frames/s | memcpy same bytes {:5.2f} GB/s "
       "| routing/memcpy: fastest runs {:.2f}, median of pairs {:.2f}, by CPU time {:.2f}\n"
       "               reused-buffer memcpy {:5.2f} GB/s | scan {:.2f} ms, write {:.2f} ms, "
-      "finish {:.2f} ms\n",
+      "finish {:.2f} ms (median CPU time {:.2f}, {:.2f}, {:.2f} ms)\n",
       workers, gbps(b.routed_bytes, f.route_s), 1.0 / f.route_s, gbps(b.routed_bytes, f.memcpy_s),
       f.memcpy_s / f.route_s, f.wall_ratio, f.cpu_ratio, gbps(b.routed_bytes, copy_reused.best()),
-      scan.best() * 1e3, write.best() * 1e3, finish.best() * 1e3);
+      scan.best() * 1e3, write.best() * 1e3, finish.best() * 1e3, scan.median_cpu() * 1e3,
+      write.median_cpu() * 1e3, finish.median_cpu() * 1e3);
   return f;
 }
 
