@@ -131,7 +131,17 @@ int main(int argc, char** argv) {
       ->add_option("--ready-retries", live_options.ready_retries,
                    "live: SYNC? retries before giving up")
       ->check(CLI::Range(0, 1000));
+  bool print_gl_info = false;
+  app.add_flag("--gl-info", print_gl_info,
+               "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
+               "on them: golden images record them) and exit");
   CLI11_PARSE(app, argc, argv);
+  if (print_gl_info) {
+    const l2::GlInfo gl = l2::gl_info();
+    std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\n", gl.version.c_str(),
+                gl.renderer.c_str(), gl.mesa_version().c_str());
+    return 0;
+  }
   if (live) {
     const bool dvi = !live_options.link.empty() && !live_options.backchannel.empty();
     const bool half_dvi = live_options.link.empty() != live_options.backchannel.empty();

@@ -1,5 +1,6 @@
 #include "pipeserver/gl_context.hpp"
 
+#include <GL/gl.h>
 #include <GL/osmesa.h>
 #include <fmt/format.h>
 
@@ -36,6 +37,27 @@ void GlContext::make_current() {
     throw std::runtime_error(
         fmt::format("GlContext: OSMesaMakeCurrent failed for {}x{}", width_, height_));
   }
+}
+
+std::string GlInfo::mesa_version() const {
+  const std::string marker = "Mesa ";
+  const auto at = version.find(marker);
+  if (at == std::string::npos) return {};
+  const auto start = at + marker.size();
+  return version.substr(start, version.find(' ', start) - start);
+}
+
+GlInfo gl_info() {
+  GlContext context(1, 1);
+  // Through OSMesa's own entry point: in a process that also links libGL (a GLFW window), the
+  // plain glGetString symbol may resolve to libGL's, which knows no OSMesa context.
+  const auto get_string =
+      reinterpret_cast<const GLubyte* (*)(GLenum)>(OSMesaGetProcAddress("glGetString"));
+  const auto text = [get_string](GLenum name) {
+    const auto* s = get_string ? reinterpret_cast<const char*>(get_string(name)) : nullptr;
+    return std::string(s ? s : "");
+  };
+  return {text(GL_VERSION), text(GL_RENDERER)};
 }
 
 }  // namespace l2

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace l2 {
@@ -31,5 +32,18 @@ class GlContext {
   std::vector<std::uint8_t> buffer_;
   std::unique_ptr<Impl> impl_;
 };
+
+// The OpenGL implementation the contexts render with, as it names itself. Rendered pixels
+// depend on it (rasterisation rounding changes between Mesa and LLVM versions, and with the
+// CPU's vector width), so golden images of rendered scenes record it.
+struct GlInfo {
+  std::string version;   // GL_VERSION, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6"
+  std::string renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  // The Mesa release named in `version` ("22.3.6"); empty when it names none.
+  std::string mesa_version() const;
+};
+
+// Asks a 1x1 context of its own. Throws std::runtime_error when OSMesa cannot create one.
+GlInfo gl_info();
 
 }  // namespace l2
