@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "golden_command.hpp"
 #include "live_run.hpp"
 
 int main(int argc, char** argv) {
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
+  l2::add_golden_command(app);  // `l2wall golden check|update`
   CLI11_PARSE(app, argc, argv);
   try {
     return l2::run_wall(o);

@@ -1,0 +1,229 @@
+#include "golden_check.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <chrono>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+#include "golden_rendered.hpp"
+#include "image/png_io.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+
+namespace {
+
+// One comparison of an entry: what is compared with what, and the files a mismatch writes.
+struct Comparison {
+  std::string what;             // "emulator vs golden image"
+  std::string actual_suffix;    // display-<id><suffix>.png: the image found
+  std::string expected_suffix;  // ... the image expected, when it is not in the golden folder
+  std::string diff_suffix;
+};
+
+class EntryCheck {
+ public:
+  EntryCheck(const GoldenEntry& entry, const CheckOptions& options, std::ostream& out)
+      : entry_(entry), out_(out), dir_(options.out / entry.name) {}
+
+  bool passed() const { return passed_; }
+
+  void fail(const std::string& message) {
+    out_ << entry_.name << ": " << message << "\n";
+    passed_ = false;
+  }
+
+  // Compares and, for every display that differs when the set fails, writes the pictures and
+  // prints the summary line. Within the tolerance but not identical: one line with the counts.
+  void compare(const Comparison& c, const std::vector<int>& ids,
+               const std::vector<RgbImage>& expected, const std::vector<RgbImage>& actual,
+               const Tolerance& tolerance) {
+    const SetComparison result = compare_sets(expected, actual, tolerance);
+    if (result.passed) {
+      if (result.differing > 0) {
+        out_ << fmt::format(
+            "{}: {}: {} of {} pixels differ ({} by more than one level), within "
+            "the tolerance ({})\n",
+            entry_.name, c.what, result.differing, result.pixels, result.beyond_one,
+            tolerance.describe());
+      }
+      return;
+    }
+    passed_ = false;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const DisplayDiff& d = result.displays[i];
+      if (d.identical()) continue;
+      const std::string base = fmt::format("display-{}", ids[i]);
+      std::vector<std::string> written{write(base + c.actual_suffix, actual[i])};
+      if (!c.expected_suffix.empty())
+        written.push_back(write(base + c.expected_suffix, expected[i]));
+      written.push_back(write(base + c.diff_suffix, highlight_differences(expected[i], actual[i])));
+      out_ << fmt::format("{} display {}: {}: {}; wrote {}\n", entry_.name, ids[i], c.what,
+                          describe(d, expected[i], actual[i]), fmt::join(written, ", "));
+    }
+    if (!tolerance.exact) {
+      out_ << fmt::format(
+          "{}: {}: {} of {} pixels differ ({} by more than one level), beyond the "
+          "tolerance ({})\n",
+          entry_.name, c.what, result.differing, result.pixels, result.beyond_one,
+          tolerance.describe());
+    }
+  }
+
+  std::string write(const std::string& name, const RgbImage& image) const {
+    const auto path = dir_ / (name + ".png");
+    write_png(path, image);
+    return path.string();
+  }
+
+ private:
+  static std::string describe(const DisplayDiff& d, const RgbImage& expected,
+                              const RgbImage& actual) {
+    if (!d.size_differs) return describe_diff(d);
+    return fmt::format("the size differs: expected {}x{}, got {}x{}", expected.width(),
+                       expected.height(), actual.width(), actual.height());
+  }
+
+  const GoldenEntry& entry_;
+  std::ostream& out_;
+  std::filesystem::path dir_;
+  bool passed_ = true;
+};
+
+const Comparison kAgainstGolden{"emulator vs golden image", "-actual", "", "-diff"};
+const Comparison kVizserver{"vizserver vs emulator", "-vizserver", "-actual", "-vizserver-diff"};
+
+std::vector<RgbImage> load_goldens(const GoldenPaths& paths, const GoldenEntry& entry,
+                                   const std::vector<int>& ids, EntryCheck& check) {
+  std::vector<RgbImage> goldens;
+  for (const int id : ids) {
+    const auto file = paths.image(entry, id);
+    if (!std::filesystem::exists(file)) {
+      check.fail(
+          fmt::format("golden image {} is missing (make it with `l2wall golden update "
+                      "--entry {}`)",
+                      file.string(), entry.name));
+      return {};
+    }
+    goldens.push_back(read_png(file));
+  }
+  return goldens;
+}
+
+// The tolerance for the golden comparison: exact, unless a rendered entry's images come from
+// another GL implementation, whose rounding may differ (said in the output).
+Tolerance golden_tolerance(const GoldenEntry& entry, const GlInfo& gl, std::ostream& out) {
+  if (entry.kind == GoldenKind::RoutingOnly || same_renderer(entry, gl)) return {};
+  out << fmt::format(
+      "{}: golden images made with {}, this is {}: compared within the tolerance ({}), "
+      "not exactly\n",
+      entry.name, describe_renderer(entry.mesa, entry.gl_renderer),
+      describe_renderer(gl.mesa_version(), gl.renderer), entry.tolerance.describe());
+  return entry.tolerance;
+}
+
+EntryDisplays produce(const GoldenEntry& entry, const CheckOptions& o, std::ostream& out) {
+  if (o.inputs.empty()) return produce_entry(entry, o.paths, o.tools, o.out / entry.name / "run");
+  const TileLayout layout = plan_layout(load_wall(o.paths.root / entry.wall));
+  out << fmt::format("{}: frames from {}: DVI path only, against the golden images\n", entry.name,
+                     o.inputs.string());
+  return produce_from_captured(layout, o.inputs);
+}
+
+void report_input_errors(const GoldenEntry& entry, const StripErrorCounts& e, std::ostream& out) {
+  if (e.total() == 0) return;
+  out << fmt::format(
+      "{}: {} strip errors on the inputs (spec §3): {} check, {} EXT, {} zero width, {} "
+      "truncated, {} to missing displays, {} clipped\n",
+      entry.name, e.total(), e.check_errors, e.ext_unsupported, e.zero_width, e.truncations,
+      e.missing_display, e.clips);
+}
+
+// `gl` is asked for (pipeserver --gl-info) the first time a rendered entry needs it.
+bool check_entry(const GoldenEntry& entry, const CheckOptions& o, std::optional<GlInfo>& gl,
+                 std::ostream& out) {
+  EntryCheck check(entry, o, out);
+  std::filesystem::remove_all(o.out / entry.name);
+  try {
+    const EntryDisplays shown = produce(entry, o, out);
+    report_input_errors(entry, shown.input_errors, out);
+    if (o.write_actual) {
+      for (std::size_t i = 0; i < shown.ids.size(); ++i) {
+        check.write(fmt::format("display-{}-actual", shown.ids[i]), shown.emulator[i]);
+      }
+    }
+    const std::vector<RgbImage> goldens = load_goldens(o.paths, entry, shown.ids, check);
+    if (!goldens.empty()) {
+      if (entry.kind == GoldenKind::Rendered && !gl)
+        gl = pipeserver_gl_info(o.tools.pipeserver, o.out);
+      const Tolerance t = gl ? golden_tolerance(entry, *gl, out) : Tolerance{};
+      check.compare(kAgainstGolden, shown.ids, goldens, shown.emulator, t);
+    }
+    if (!shown.vizserver.empty()) {
+      check.compare(kVizserver, shown.ids, shown.emulator, shown.vizserver, {});
+    }
+    if (!shown.reference.empty()) {
+      const Comparison against_reference{"emulator vs " + shown.reference_name, "-actual",
+                                         "-reference", "-reference-diff"};
+      check.compare(against_reference, shown.ids, shown.reference, shown.emulator, entry.tolerance);
+    }
+  } catch (const std::exception& e) {
+    check.fail(e.what());
+  }
+  return check.passed();
+}
+
+std::string describe_entry(const GoldenEntry& e, bool from_inputs) {
+  return fmt::format("{} ({}, {} frame {}, {})", e.name, e.wall, e.scene, e.frame,
+                     from_inputs   ? "captured frames"
+                     : e.vizserver ? "dvi+vizserver"
+                                   : "dvi");
+}
+
+}  // namespace
+
+int run_golden_check(const CheckOptions& o, std::ostream& out) {
+  const GoldenManifest manifest = load_manifest(o.paths.manifest());
+  const std::vector<const GoldenEntry*> entries = select_entries(manifest, o.entries);
+  if (!o.inputs.empty()) {
+    if (o.entries.size() != 1) {
+      throw GoldenError("--inputs: name the one entry the frames belong to with --entry");
+    }
+    if (entries.front()->kind != GoldenKind::RoutingOnly) {
+      throw GoldenError(fmt::format(
+          "--inputs: {} is a rendered entry; captured frames are checked against routing-only "
+          "(test-pattern) entries, whose images do not depend on any renderer",
+          entries.front()->name));
+    }
+  }
+  int failed = 0;
+  std::optional<GlInfo> gl;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const GoldenEntry& e = *entries[i];
+    // One line per entry, finished when its check is; what the check found follows it.
+    out << fmt::format("[{}/{}] {} ... ", i + 1, entries.size(),
+                       describe_entry(e, !o.inputs.empty()))
+        << std::flush;
+    const auto t0 = std::chrono::steady_clock::now();
+    std::ostringstream details;
+    const bool ok = check_entry(e, o, gl, details);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out << fmt::format("{} ({:.1f} s)\n", ok ? "ok" : "FAILED", s) << details.str() << std::flush;
+    if (!ok) ++failed;
+  }
+  if (failed == 0) {
+    out << fmt::format("golden check: all {} entries pass\n", entries.size());
+    return 0;
+  }
+  out << fmt::format(
+      "golden check: {} of {} entries FAILED; actual images and diff pictures in "
+      "{}\n",
+      failed, entries.size(), o.out.string());
+  return 1;
+}
+
+}  // namespace l2

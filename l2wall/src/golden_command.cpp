@@ -1,0 +1,103 @@
+#include "golden_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "golden_check.hpp"
+#include "golden_update.hpp"
+
+namespace l2 {
+
+namespace {
+
+// The source tree this executable was built from: its golden folder and walls are the defaults.
+GoldenPaths default_paths() {
+  return {std::filesystem::path(L2_SOURCE_DIR) / "tests" / "golden_images", L2_SOURCE_DIR};
+}
+
+void add_path_options(CLI::App& cmd, GoldenPaths& paths, std::vector<std::string>& entries) {
+  cmd.add_option("--goldens", paths.goldens,
+                 "golden folder: manifest.toml and <entry>/display-<id>.png")
+      ->capture_default_str();
+  cmd.add_option("--root", paths.root, "where the manifest's wall paths start (the repository)")
+      ->capture_default_str();
+  cmd.add_option("--entry", entries, "only this entry (repeatable); default: every entry");
+}
+
+// Runs `body` and ends the parse with its exit code; errors are one line on stderr, exit 2.
+template <class Body>
+[[noreturn]] void finish(Body body) {
+  int code = 2;
+  try {
+    code = body();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall golden: %s\n", e.what());
+  }
+  std::cout << std::flush;
+  throw CLI::RuntimeError(code);
+}
+
+// This l2wall, and the pipeserver built beside it (as `l2wall run` uses by default).
+GoldenTools tools() {
+  return {std::filesystem::read_symlink("/proc/self/exe").string(), L2_PIPESERVER_PATH};
+}
+
+}  // namespace
+
+void add_golden_command(CLI::App& app) {
+  CLI::App* golden = app.add_subcommand(
+      "golden",
+      "golden-image regression of reassembly: every example wall's test pattern and rendered "
+      "scenes, compared with tests/golden_images/ (see its README.md)");
+  golden->require_subcommand(1);
+
+  auto check = std::make_shared<CheckOptions>();
+  check->paths = default_paths();
+  CLI::App* c = golden->add_subcommand(
+      "check",
+      "reproduce every entry and compare: the emulator's displays with the golden images "
+      "(exactly; within the entry's tolerance when a rendered entry was made by another Mesa), "
+      "the vizserver path with the emulator (exactly), the emulator with the reference "
+      "(test pattern exactly, reference render within the documented tolerance). A mismatch "
+      "writes OUT/<entry>/display-<id>-actual.png and -diff.png (differing pixels magenta on a "
+      "dimmed copy, marked by yellow squares) and prints one line per display. Exit 0 all "
+      "pass, 1 a mismatch, 2 the check could not run");
+  add_path_options(*c, check->paths, check->entries);
+  c->add_option("--out", check->out, "where actual images and diff pictures go")
+      ->capture_default_str();
+  c->add_option("--inputs", check->inputs,
+                "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
+                "`tilelayout WALL --scanout DIR` names them) through the emulator and compare "
+                "the displays with the golden images of the one routing-only --entry")
+      ->check(CLI::ExistingDirectory);
+  c->add_flag("--write-actual", check->write_actual,
+              "write every display's actual image to OUT/<entry>/, also when it passes");
+  c->callback([check] {
+    check->tools = tools();
+    finish([&] { return run_golden_check(*check, std::cout); });
+  });
+
+  auto update = std::make_shared<UpdateOptions>();
+  update->paths = default_paths();
+  CLI::App* u = golden->add_subcommand(
+      "update",
+      "regenerate the golden images of every entry (or --entry) and record the Mesa version of "
+      "rendered ones in the manifest. Writes nothing unless every entry is sound (both paths "
+      "identical, reference within tolerance); refuses to change a routing-only (test-pattern) "
+      "image unless --allow-routing-change");
+  add_path_options(*u, update->paths, update->entries);
+  u->add_option("--out", update->out, "where the runs and pictures of refused changes go")
+      ->capture_default_str();
+  u->add_flag("--allow-routing-change", update->allow_routing_change,
+              "write changed routing-only (test-pattern) images too: only when the routing or "
+              "the test pattern was changed on purpose");
+  u->callback([update] {
+    update->tools = tools();
+    finish([&] { return run_golden_update(*update, std::cout); });
+  });
+}
+
+}  // namespace l2

@@ -1,0 +1,132 @@
+#include "golden_rendered.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "child_process.hpp"
+#include "image/png_io.hpp"
+
+namespace l2 {
+
+namespace {
+
+std::vector<std::string> lines_of(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) lines.push_back(line);
+  }
+  return lines;
+}
+
+// A command as a child process with its output in `log`.
+struct LoggedCommand {
+  std::string what;  // "l2wall run"
+  std::filesystem::path log;
+  ChildProcess child;
+
+  LoggedCommand(const std::vector<std::string>& args, std::filesystem::path log_file)
+      : what(std::filesystem::path(args.at(0)).filename().string() + " " + args.at(1)),
+        log(std::move(log_file)),
+        child(shell_redirect(args, log)) {}
+
+  // Throws when it failed or overstays, with the last line it wrote (usually the reason).
+  void finish(std::chrono::seconds timeout) {
+    const auto status = child.wait_for(timeout);
+    if (!status) {
+      child.terminate();
+      throw std::runtime_error(fmt::format("{} did not finish within {} s (output: {})", what,
+                                           timeout.count(), log.string()));
+    }
+    if (!status->ok()) {
+      const auto lines = lines_of(log);
+      throw std::runtime_error(fmt::format("{} {}: {} (output: {})", what, status->describe(),
+                                           lines.empty() ? "no output" : lines.back(),
+                                           log.string()));
+    }
+  }
+
+  static std::vector<std::string> shell_redirect(const std::vector<std::string>& args,
+                                                 const std::filesystem::path& log) {
+    std::vector<std::string> argv{"/bin/sh", "-c", "log=$1; shift; exec \"$@\" >\"$log\" 2>&1",
+                                  "sh", log.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return argv;
+  }
+};
+
+}  // namespace
+
+void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references) {
+  // 24 bits of the frame number, R the low byte (l2wall/src/frame_stamp.hpp).
+  const Rgb stamp{static_cast<std::uint8_t>(frame & 0xFF),
+                  static_cast<std::uint8_t>((frame >> 8) & 0xFF),
+                  static_cast<std::uint8_t>((frame >> 16) & 0xFF)};
+  for (const ServerPlan& plan : layout.servers) {
+    if (plan.tiles.empty()) continue;
+    const DisplayTile& t = plan.tiles.front().tile;
+    references.at(t.display).set(t.on_display.x, t.on_display.y, stamp);
+  }
+}
+
+EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::path& wall_file,
+                               const GoldenEntry& entry, const RenderedRun& run) {
+  std::filesystem::remove_all(run.work);
+  std::filesystem::create_directories(run.work);
+  std::vector<std::string> live{run.l2wall,
+                                "run",
+                                wall_file.string(),
+                                "--scene",
+                                entry.scene,
+                                "--frames",
+                                std::to_string(entry.frame + 1),
+                                "--keep",
+                                std::to_string(entry.frame),
+                                "--refresh",
+                                "0",
+                                "--no-progress",
+                                "--out",
+                                (run.work / "live").string()};
+  if (entry.vizserver) live.insert(live.end(), {"--path", "both", "--compare"});
+  const auto reference = run.work / "reference";
+  // Both at once: the live run spends most of its time starting its hosts.
+  LoggedCommand rendering(
+      {run.pipeserver, "--wall", wall_file.string(), "--scene", entry.scene, "--frame",
+       std::to_string(entry.frame), "--reference", reference.string()},
+      run.work / "reference.log");
+  LoggedCommand running(live, run.work / "live.log");
+  running.finish(run.timeout);
+  rendering.finish(run.timeout);
+
+  EntryDisplays out;
+  const auto kept = run.work / "live" / fmt::format("frame-{}", entry.frame);
+  for (const Display& d : layout.wall.displays) {
+    const std::string name = fmt::format("display-{}", d.id);
+    out.ids.push_back(d.id);
+    out.emulator.push_back(read_png(kept / (name + ".png")));
+    if (entry.vizserver) out.vizserver.push_back(read_png(kept / (name + "-vizserver.png")));
+    out.reference.push_back(read_png(reference / (name + ".png")));
+  }
+  stamp_references(layout, entry.frame, out.reference);
+  out.reference_name = "reference render";
+  return out;
+}
+
+GlInfo pipeserver_gl_info(const std::string& pipeserver, const std::filesystem::path& work) {
+  std::filesystem::create_directories(work);
+  const auto log = work / "gl-info.txt";
+  LoggedCommand({pipeserver, "--gl-info"}, log).finish(std::chrono::seconds(60));
+  GlInfo gl;
+  for (const std::string& line : lines_of(log)) {
+    if (line.rfind("gl_version: ", 0) == 0) gl.version = line.substr(12);
+    if (line.rfind("gl_renderer: ", 0) == 0) gl.renderer = line.substr(13);
+  }
+  if (gl.version.empty()) {
+    throw std::runtime_error(
+        fmt::format("{} --gl-info named no GL version (output: {})", pipeserver, log.string()));
+  }
+  return gl;
+}
+
+}  // namespace l2

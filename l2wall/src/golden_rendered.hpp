@@ -1,0 +1,40 @@
+// Rendered golden entries: the frame rendered by real pipeserver processes in a live run
+// (`l2wall run --path both --compare`), its displays on both paths read back, and the
+// reference render of every display (`pipeserver --reference`). Rendering stays out of this
+// process: l2wall links libGL for its display windows, whose GL symbols would shadow OSMesa's.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "golden_manifest.hpp"
+#include "golden_routing.hpp"
+#include "pipeserver/gl_context.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+struct RenderedRun {
+  std::string l2wall;          // the executable whose `run` subcommand renders the frame
+  std::string pipeserver;      // renders the reference
+  std::filesystem::path work;  // the run's --out folder, and the commands' logs
+  std::chrono::seconds timeout{180};
+};
+
+// Runs frames 0..entry.frame of entry.scene on the wall, keeping the last, with every frame
+// compared byte for byte on both paths by the run itself (DVI path only when the entry has no
+// vizserver path). Throws std::runtime_error when a command fails, naming its log.
+EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::path& wall_file,
+                               const GoldenEntry& entry, const RenderedRun& run);
+
+// A live host writes the frame number into the first pixel of its first tile
+// (pipeserver/src/live_host.hpp); the reference render has no such pixel, so it is added.
+void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references);
+
+// What `pipeserver --gl-info` reports: the GL implementation the pipeservers render with.
+// Throws std::runtime_error when it cannot be asked.
+GlInfo pipeserver_gl_info(const std::string& pipeserver, const std::filesystem::path& work);
+
+}  // namespace l2

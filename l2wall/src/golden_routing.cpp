@@ -1,0 +1,138 @@
+#include "golden_routing.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <optional>
+
+#include "image/png_io.hpp"
+#include "lightning2_emu/emulator.hpp"
+#include "tilelayout/test_frame.hpp"
+#include "tilelayout/test_pattern.hpp"
+#include "vizserver/compositing_server.hpp"
+#include "vizserver/tile_sender.hpp"
+
+namespace l2 {
+
+namespace {
+
+std::vector<int> display_ids(const Wall& wall) {
+  std::vector<int> ids;
+  for (const Display& d : wall.displays) ids.push_back(d.id);
+  return ids;
+}
+
+// The mesh the live run builds for the wall (l2wall run): as few boards as take its inputs.
+EmulatorConfig emulator_config(const Wall& wall) {
+  EmulatorConfig config;
+  for (const Display& d : wall.displays) {
+    config.displays.push_back({d.id, d.width, d.height, d.swap_group});
+  }
+  config.mesh = Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+                          {wall.board_max_width, wall.board_max_height});
+  config.workers = 1;  // the result does not depend on it; one keeps the check light
+  return config;
+}
+
+}  // namespace
+
+std::vector<RgbImage> emulate_displays(const TileLayout& layout,
+                                       const std::vector<RgbImage>& frames,
+                                       StripErrorCounts& errors,
+                                       const std::vector<std::string>& names) {
+  const EmulatorConfig config = emulator_config(layout.wall);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    config.mesh.check_input(static_cast<int>(i), frames[i].width(), frames[i].height(),
+                            i < names.size() ? names[i] : fmt::format("pipeserver {}", i));
+  }
+  Emulator emulator(config);
+  std::vector<InputFrame> inputs;
+  for (const RgbImage& f : frames) inputs.push_back(InputFrame::of(f));
+  // Spec §6: frames taken in at one refresh are swapped onto the displays at the next.
+  for (const InputFrameStats& input : emulator.tick(inputs).inputs) errors += input.errors;
+  emulator.tick({});
+  std::vector<RgbImage> shown;
+  for (const int id : display_ids(layout.wall)) shown.push_back(emulator.shown(id));
+  return shown;
+}
+
+std::vector<RgbImage> compose_on_vizserver(const TileLayout& layout,
+                                           const std::vector<RgbImage>& frames, int frame) {
+  using std::chrono::milliseconds;
+  viz::ServerOptions options;
+  for (const Display& d : layout.wall.displays)
+    options.display_sizes.emplace_back(d.width, d.height);
+  options.servers = static_cast<int>(layout.servers.size());
+  options.accept_timeout = milliseconds(10000);
+  viz::CompositingServer server(options);
+  server.start();
+  const int display_count = static_cast<int>(layout.wall.displays.size());
+  std::vector<viz::TileSender> senders;
+  for (const ServerPlan& plan : layout.servers) {
+    senders.push_back(
+        viz::TileSender::connect("127.0.0.1", server.port(), plan.server, display_count));
+  }
+  // Each pipeserver sends its tiles straight out of its scanned-out frame, as a live host does.
+  const auto k = static_cast<std::uint32_t>(frame);
+  for (const ServerPlan& plan : layout.servers) {
+    const RgbImage& fb = frames.at(plan.server);
+    for (const PackedTile& t : plan.tiles) {
+      const Rect& r = t.tile.on_display;
+      senders[plan.server].send_tile(k, {t.tile.display, r.x, r.y, r.w, r.h},
+                                     fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3,
+                                     fb.stride());
+    }
+    senders[plan.server].finish_frame(k, static_cast<std::uint32_t>(plan.tiles.size()));
+  }
+  const viz::FramePtr composed = server.wait_frame(k, milliseconds(30000));
+  // Read SWAPPED before closing, so no connection is reset with a message unread.
+  for (viz::TileSender& s : senders) s.wait_swapped(k, milliseconds(10000));
+  return composed->displays;
+}
+
+std::vector<RgbImage> test_pattern_displays(const TileLayout& layout) {
+  std::vector<RgbImage> out;
+  for (const Display& d : layout.wall.displays) out.emplace_back(d.width, d.height);
+  for (const DisplayTile& t : layout.tiles) {
+    RgbImage& image = out.at(t.display);
+    const Rect& r = t.on_display;
+    for (int y = r.y; y < r.bottom(); ++y) {
+      for (int x = r.x; x < r.right(); ++x) image.set(x, y, test_pattern(t.display, x, y));
+    }
+  }
+  return out;
+}
+
+EntryDisplays produce_test_pattern(const TileLayout& layout, int frame, bool vizserver) {
+  EntryDisplays out;
+  out.ids = display_ids(layout.wall);
+  std::vector<RgbImage> frames;
+  for (const ServerPlan& plan : layout.servers) frames.push_back(test_frame(plan, frame % 2 == 1));
+  out.emulator = emulate_displays(layout, frames, out.input_errors);
+  if (vizserver) out.vizserver = compose_on_vizserver(layout, frames, frame);
+  out.reference = test_pattern_displays(layout);
+  out.reference_name = "test pattern";
+  return out;
+}
+
+EntryDisplays produce_from_captured(const TileLayout& layout, const std::filesystem::path& dir) {
+  EntryDisplays out;
+  out.ids = display_ids(layout.wall);
+  std::vector<RgbImage> frames;
+  std::vector<std::string> names;
+  for (const ServerPlan& plan : layout.servers) {
+    const auto file = dir / fmt::format("scanout-{}.png", plan.server);
+    if (!std::filesystem::exists(file)) {
+      throw std::runtime_error(
+          fmt::format("{}: missing: the wall has {} pipeservers, give "
+                      "scanout-0.png .. scanout-{}.png",
+                      file.string(), layout.servers.size(), layout.servers.size() - 1));
+    }
+    frames.push_back(read_png(file));
+    names.push_back(file.string());
+  }
+  out.emulator = emulate_displays(layout, frames, out.input_errors, names);
+  return out;
+}
+
+}  // namespace l2
