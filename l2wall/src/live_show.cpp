@@ -100,7 +100,10 @@ void LiveShow::act(UserAction action) {
       screenshot();
       break;
     case UserAction::Quit:
-      if (!quit_) say(fmt::format("quit: the run ends after frame {}", info_.frame));
+      if (!quit_) {
+        say(presented_ > 0 ? fmt::format("quit: the run ends after frame {}", info_.frame)
+                           : std::string("quit: the run ends after its first frame"));
+      }
       quit_ = true;
       break;
     case UserAction::None:
@@ -112,13 +115,17 @@ void LiveShow::toggle_pause() {
   paused_ = !paused_;
   if (paused_) {
     ++pauses_;
-    say(fmt::format("paused at frame {} (the hosts wait for READY); space resumes", info_.frame));
+    say(fmt::format("paused {} (the hosts wait for READY); space resumes", at_frame()));
   } else {
-    say(fmt::format("resumed at frame {}", info_.frame));
+    say(fmt::format("resumed {}", at_frame()));
   }
   info_.paused = paused_;
   info_.fps = paused_ ? 0.0 : info_.fps;
   presenter_->present(info_, images_);  // the overlay says "paused"
+}
+
+std::string LiveShow::at_frame() const {
+  return presented_ > 0 ? fmt::format("at frame {}", info_.frame) : "before the first frame";
 }
 
 void LiveShow::screenshot() {

@@ -57,6 +57,7 @@ class LiveShow {
   void toggle_pause();
   void screenshot();
   void say(const std::string& line) const;
+  std::string at_frame() const;  // "at frame 12", or "before the first frame"
 
   std::string mode_;
   std::filesystem::path out_, readback_;
