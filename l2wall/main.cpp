@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   l2::RunOptions o;
   o.pipeserver = L2_PIPESERVER_PATH;
+  o.vizserver = L2_VIZSERVER_PATH;
   CLI::App* run = app.add_subcommand(
       "run",
       "render --frames frames on the wall and write the displays, a per-frame report and a "
@@ -32,7 +33,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--out", o.out,
                   "output folder: frame-<k>/display-<id>.png and wall.png for kept frames, "
-                  "report.csv (one row per frame), summary.txt, host-<i>.log")
+                  "report.csv (one row per frame), summary.txt, host-<i>.log, vizserver.log (the "
+                  "compositing server's lines)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")
@@ -43,7 +45,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--path", o.path,
                   "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
-                  "tiles read back and sent over TCP to a compositing server; both: both at once")
+                  "tiles read back and sent over TCP to a compositing server process "
+                  "(--vizserver), which streams the composed displays back to l2wall; both: "
+                  "both at once")
       ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
       ->capture_default_str();
   run->add_flag("--compare", o.compare,
@@ -51,6 +55,20 @@ int main(int argc, char** argv) {
                 "a mismatch writes both pictures and a diff picture to "
                 "DIR/mismatch-frame-<k>/ and fails the run");
   run->add_option("--pipeserver", o.pipeserver, "the pipeserver executable")->capture_default_str();
+  run->add_option("--vizserver", o.vizserver,
+                  "the compositing server executable of --path vizserver|both; l2wall starts "
+                  "it as its own process, and a compositing server that dies ends the run like "
+                  "a pipeserver that dies")
+      ->capture_default_str();
+  run->add_option("--viz-host", o.viz_host,
+                  "address the compositing server listens on for tiles (0.0.0.0: every "
+                  "interface, so pipeservers on other machines can reach it)")
+      ->capture_default_str();
+  run->add_option("--viz-port", o.viz_port,
+                  "TCP port the compositing server listens on; 0 = a free one, which it reports "
+                  "to l2wall before any pipeserver starts")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
   run->add_option("--threads", o.threads, "emulator routing threads (0: one per core)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
@@ -60,7 +78,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--stall-timeout", o.stall_timeout_ms,
                   "ms without a display swap after which the run names the hung pipeserver "
-                  "and stops")
+                  "(or compositing server) and stops")
       ->check(CLI::Range(1, 600000))
       ->capture_default_str();
   run->add_option("--ready-timeout", o.ready_timeout_ms,
@@ -68,6 +86,20 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 600000))
       ->capture_default_str();
   run->add_flag("!--no-progress", o.progress, "no progress line on stderr");
+  run->add_option("--show", o.show,
+                  "put the displays on screen as they swap (needs an X display; without one, "
+                  "run under Xvfb). window: one window laying out the wall as the wall file "
+                  "places it, mullions dark, overlay line with frame, fps and latency. monitors: "
+                  "each display fullscreen on the monitor its wall-file `monitor` names. Keys: "
+                  "space pauses the run (READY is held back, the hosts wait), s saves a "
+                  "screenshot of every display to OUT/screenshots/, q or Esc ends the run as "
+                  "after its last frame")
+      ->check(CLI::IsMember({"window", "monitors"}));
+  run->add_option("--show-readback", o.show_readback,
+                  "verification aid for --show: after every presented frame, read the windows "
+                  "back from the X server and write DIR/frame-<k>/display-<id>.png (what the "
+                  "screen shows of each display) and window-<i>.png; slows the run")
+      ->needs(run->get_option("--show"));
   run->add_option("--inject-noise", o.noise_after,
                   "fault injection: after frame K reaches the displays, write line noise to "
                   "every back-channel")

@@ -70,6 +70,10 @@ std::optional<ExitStatus> ChildProcess::wait_for(std::chrono::milliseconds timeo
   return status_;
 }
 
+void ChildProcess::request_stop() {
+  if (!poll()) kill(pid_, SIGTERM);
+}
+
 ExitStatus ChildProcess::terminate(std::chrono::milliseconds grace) {
   if (poll()) return *status_;
   kill(pid_, SIGTERM);

@@ -36,6 +36,9 @@ class ChildProcess {
   std::optional<ExitStatus> poll();
   // Waits up to `timeout` for the child to end by itself.
   std::optional<ExitStatus> wait_for(std::chrono::milliseconds timeout);
+  // SIGTERM without waiting: a run ending several children asks them all first, then reaps
+  // each (terminate), so their grace periods overlap.
+  void request_stop();
   // SIGTERM, then SIGKILL if it has not ended after `grace`; always reaps.
   ExitStatus terminate(std::chrono::milliseconds grace = std::chrono::milliseconds(500));
 

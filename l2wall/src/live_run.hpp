@@ -2,7 +2,9 @@
 // DVI link (shared memory) and waits for READY on its own pty back-channel; this process is the
 // Lightning-2: it takes in every link at the refresh rate, routes, swaps, sends READY, writes
 // the displays it was asked to keep and a per-frame report, and proves the one-frame latency
-// from frame numbers stamped into the pixels.
+// from frame numbers stamped into the pixels. With --path vizserver or both, the compositing
+// server runs as its own process (`vizserver`): the pipeservers send it their tiles over TCP
+// and it streams the composed displays back to this process (docs/vizserver-protocol.md).
 #pragma once
 
 #include <set>
@@ -15,16 +17,21 @@ struct RunOptions {
   std::string scene = "mesh";
   int frames = 10;
   std::string out = "l2wall-out";
-  std::string keep = "last";     // every | last | none | K,L,...
-  double refresh_hz = 60.0;      // 0: as fast as possible
-  std::string pipeserver;        // the pipeserver executable
-  std::string path = "dvi";      // dvi | vizserver | both
-  bool compare = false;          // both: every display identical byte for byte on both paths
-  int threads = 1;               // emulator routing threads
-  int start_timeout_ms = 60000;  // until every link carries its first frame
-  int stall_timeout_ms = 5000;   // no display swap for this long: a host hangs
-  int ready_timeout_ms = 1000;   // passed to the hosts (first frames can be slow)
+  std::string keep = "last";           // every | last | none | K,L,...
+  double refresh_hz = 60.0;            // 0: as fast as possible
+  std::string pipeserver;              // the pipeserver executable
+  std::string vizserver;               // the vizserver executable (the compositing server)
+  std::string viz_host = "127.0.0.1";  // where the compositing server listens for tiles
+  int viz_port = 0;                    // its port; 0: a free one, which it reports
+  std::string path = "dvi";            // dvi | vizserver | both
+  bool compare = false;                // both: every display identical byte for byte on both paths
+  int threads = 1;                     // emulator routing threads
+  int start_timeout_ms = 60000;        // until every link carries its first frame
+  int stall_timeout_ms = 5000;         // no display swap for this long: a host hangs
+  int ready_timeout_ms = 1000;         // passed to the hosts (first frames can be slow)
   bool progress = true;
+  std::string show;           // --show window | monitors: the displays on screen (live_show.hpp)
+  std::string show_readback;  // --show-readback DIR: what the screen shows, written per frame
   // Fault injection, for tests and demonstrations.
   int noise_after = -1;      // after swapping this frame, write line noise to every host
   int inject_mismatch = -1;  // --compare: one pixel of display 0 of this frame changed on the

@@ -2,9 +2,12 @@
 // leave behind checked (shm segments, pipeserver processes).
 #pragma once
 
+#include <arpa/inet.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <unistd.h>
 #include <algorithm>
 #include <chrono>
@@ -85,6 +88,20 @@ class WallRun {
     }
     return pids;
   }
+  // Processes whose command line names this run's output folder: its pipeservers (--report
+  // OUT/host-<i>.log) and its compositing server (--log OUT/vizserver.log), on every path.
+  std::vector<pid_t> processes_naming(const std::string& what) const {
+    std::vector<pid_t> pids;
+    const std::string needle = (out() / what).string();
+    for (const auto& e : fs::directory_iterator("/proc")) {
+      const std::string n = e.path().filename().string();
+      if (n.find_first_not_of("0123456789") != std::string::npos) continue;
+      if (slurp(e.path() / "cmdline").find(needle) != std::string::npos)
+        pids.push_back(std::stoi(n));
+    }
+    return pids;
+  }
+  std::vector<pid_t> vizservers() const { return processes_naming("vizserver.log"); }
   int host_log_lines(int server) const {
     std::ifstream in(out() / fmt::format("host-{}.log", server));
     int lines = 0;
@@ -95,6 +112,28 @@ class WallRun {
  private:
   fs::path dir_;
   std::optional<ChildProcess> process_;
+};
+
+// A TCP port on 127.0.0.1 held open (bound, listening) until destroyed.
+class HeldPort {
+ public:
+  HeldPort() : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof addr;
+    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+        listen(fd_, 1) != 0 || getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
+      ADD_FAILURE() << "cannot hold a TCP port";
+    port = ntohs(addr.sin_port);
+  }
+  ~HeldPort() { close(fd_); }
+  HeldPort(const HeldPort&) = delete;
+  HeldPort& operator=(const HeldPort&) = delete;
+  int port = 0;
+
+ private:
+  int fd_;
 };
 
 inline std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
@@ -113,6 +152,8 @@ inline void expect_clean(const WallRun& run) {
   EXPECT_TRUE(run.leftover_segments().empty())
       << "shm segment left: " << run.leftover_segments().front();
   EXPECT_TRUE(run.pipeservers().empty()) << "orphan pipeserver pid " << run.pipeservers().front();
+  const auto children = run.processes_naming("");
+  EXPECT_TRUE(children.empty()) << "orphan process pid " << children.front();
 }
 
 // Waits until pipeserver `server` has published a few frames; returns its pid.

@@ -1,0 +1,72 @@
+#include "dvi_side.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "frame_stamp.hpp"
+#include "run_fault.hpp"
+
+namespace l2 {
+namespace {
+
+EmulatorConfig emulator_config(const Wall& wall, int threads) {
+  EmulatorConfig config;
+  for (const Display& d : wall.displays)
+    config.displays.push_back({d.id, d.width, d.height, d.swap_group});
+  config.mesh = Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+                          {wall.board_max_width, wall.board_max_height});
+  config.workers = threads;
+  return config;
+}
+
+}  // namespace
+
+DviSide::DviSide(const Wall& wall, int threads, std::size_t hosts)
+    : emulator_(emulator_config(wall, threads)), inputs_(hosts) {}
+
+const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>& records) {
+  const auto t0 = RunClock::now();
+  const Emulator::Tick& tick = emulator_.tick(inputs_);
+  const double route_ms = ms_between(t0, RunClock::now());
+  ++refreshes_;
+  const int frames = static_cast<int>(records.size());
+  for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
+    if (tick.kinds.size() <= i || tick.kinds[i] != FrameKind::New) continue;
+    Host& h = hosts.hosts()[i];
+    h.accepted = decode_stamp(inputs_[i].row(h.fb_y) + h.fb_x * 3);
+    if (h.accepted < 0 || h.accepted >= frames)
+      throw RunFault(
+          fmt::format("pipeserver {}: frame stamp {} out of range", h.server, h.accepted));
+    FrameRecord& r = records[static_cast<std::size_t>(h.accepted)];
+    r.route_ms += route_ms;
+    r.in_refresh = tick.index;  // the last input taken in decides
+    r.in_time = t0;
+  }
+  return tick;
+}
+
+int DviSide::lowest_frame_shown(const HostSet& hosts) const {
+  int lowest = 1 << 30;
+  for (const Host& h : hosts.hosts()) {
+    const RgbImage& shown = emulator_.shown(h.display);
+    lowest = std::min(lowest, decode_stamp(shown.row(h.dy).data() + h.dx * 3));
+  }
+  return lowest;
+}
+
+int DviSide::send_readies(const Emulator::Tick& tick, HostSet& hosts, int drop_ready) {
+  int held = 0;
+  for (int i : tick.ready_inputs) {
+    Host& h = hosts.hosts()[static_cast<std::size_t>(i)];
+    if (i == 0 && h.accepted == drop_ready) {
+      h.held_ready = h.accepted;  // lost on the line: the host must ask with SYNC?
+      ++held;
+      continue;
+    }
+    h.channel->send_ready(static_cast<std::uint64_t>(h.accepted));
+  }
+  return held;
+}
+
+}  // namespace l2

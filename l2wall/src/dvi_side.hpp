@@ -1,0 +1,43 @@
+// The DVI path of a live run: this process is the Lightning-2. It takes in every host's DVI
+// link, ticks the emulator (routing, swap-lock groups), reads from the pixels which frame each
+// host delivered and which frame the displays show, and sends READY over the back-channels.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "host_set.hpp"
+#include "lightning2_emu/emulator.hpp"
+#include "run_report.hpp"
+#include "tilelayout/wall.hpp"
+
+namespace l2 {
+
+class DviSide {
+ public:
+  DviSide(const Wall& wall, int threads, std::size_t hosts);
+
+  // Takes in every link; true when some link has a frame not seen before.
+  bool take_in(HostSet& hosts) { return hosts.take_in(inputs_); }
+  // One refresh: routes what was taken in, and records for each host's new input the frame its
+  // stamp says (Host::accepted, the record's refresh and route time). Throws RunFault for a
+  // stamp outside 0..frames-1.
+  const Emulator::Tick& refresh(HostSet& hosts, std::vector<FrameRecord>& records);
+  // The lowest frame the displays show, read from every host's stamp on them: measured, not
+  // assumed.
+  int lowest_frame_shown(const HostSet& hosts) const;
+  // READY for the frame the emulator accepted from each host now on the displays. Fault
+  // injection: host 0's READY of frame `drop_ready` is held back until it asks with SYNC?.
+  // Returns how many READYs were held back.
+  int send_readies(const Emulator::Tick& tick, HostSet& hosts, int drop_ready);
+
+  const RgbImage& shown(int display) const { return emulator_.shown(display); }
+  std::uint64_t refreshes() const { return refreshes_; }
+
+ private:
+  Emulator emulator_;
+  std::vector<InputFrame> inputs_;
+  std::uint64_t refreshes_ = 0;
+};
+
+}  // namespace l2

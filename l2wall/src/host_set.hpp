@@ -1,0 +1,107 @@
+// The pipeservers of a live run: one `pipeserver --live` process per input, each with its DVI
+// link (shared memory) and pty back-channel on the DVI path, and its report file. Starts them,
+// watches them without blocking, takes their links in, serves their back-channels, and always
+// ends and reaps them and removes the links a dead host left behind.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "child_process.hpp"
+#include "dvi_link/dvi_link.hpp"
+#include "lightning2_emu/input_frame.hpp"
+#include "sync_backchannel/back_channel.hpp"
+#include "sync_backchannel/pty_pair.hpp"
+#include "tilelayout/planner.hpp"
+
+namespace l2 {
+
+// One pipeserver. Members are destroyed in reverse: the process is ended and reaped before the
+// link reader and the pty go away.
+struct Host {
+  int server = 0;
+  std::string link_name;
+  std::string report_path;
+  std::unique_ptr<PtyPair> pty;
+  std::unique_ptr<BackChannel> channel;
+  std::optional<DviLinkReader> reader;
+  std::optional<ChildProcess> process;
+  std::optional<ExitStatus> exit;
+  std::uint64_t sequence = 0;  // frames published on its link so far
+  int accepted = -1;           // the frame number of the last new frame the emulator took in
+  // Where the frame stamp is: framebuffer pixel and the display pixel it lands on.
+  int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
+  // Fault injection: a READY held back until the host asks with SYNC?.
+  std::optional<int> held_ready;
+};
+
+// What every pipeserver is started with.
+struct HostLaunch {
+  std::string pipeserver;  // the executable
+  std::string wall;        // wall file; empty: the built-in default wall
+  std::string scene;
+  std::filesystem::path out;  // host-<i>.log go here
+  int frames = 0;
+  int ready_timeout_ms = 0;
+  bool dvi = true;                      // DVI link and back-channel
+  std::string viz_address;              // HOST:PORT of the compositing server; empty: none
+  std::vector<std::string> extra_args;  // appended to every host's arguments
+};
+
+class HostSet {
+ public:
+  // Starts one process per pipeserver of the layout.
+  void start(const HostLaunch& launch, const TileLayout& layout);
+
+  std::deque<Host>& hosts() { return hosts_; }
+  const std::deque<Host>& hosts() const { return hosts_; }
+
+  // Polls every host; returns the first that ended while frames were still due (`all_shown`
+  // false) or ended badly. Such an end is a fault, which the caller words with describe_end.
+  Host* poll_ended(bool all_shown);
+  // Polls every host; the first that was killed by a signal (never the effect of another
+  // process's fault, so the cause when several processes ended at once).
+  Host* killed_by_signal();
+  // "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while rendering frame 57; " + kept
+  // (what the displays keep, e.g. "the displays keep frame 56").
+  std::string describe_end(const Host& h, const std::string& kept) const;
+
+  // Opens every host's DVI link and waits until each carries a first frame; `check` runs in
+  // between (it throws for a host that died). Throws RunFault naming the hosts still silent.
+  void open_links(std::chrono::milliseconds timeout, const std::function<void()>& check);
+  // Takes in every link; true when some link has a frame not seen before.
+  bool take_in(std::vector<InputFrame>& inputs);
+  // Answers SYNC? on every back-channel and sends a held-back READY once its host asked.
+  void serve_channels();
+
+  // Fault injection: writes line noise to every back-channel; returns the bytes written.
+  std::uint64_t inject_noise();
+
+  // Hosts that have not delivered frame `shown` (the one the displays wait for), as
+  // "pipeserver 2 (pid 4242), ...": on the DVI path their links say so, otherwise their
+  // reports (one line per frame).
+  std::string late_hosts(int shown) const;
+  // How many frames the host delivered: published on its link, or reported.
+  int delivered(const Host& h) const;
+
+  // After the last frame: waits for every host to end by itself, serving the back-channels.
+  // Throws RunFault for a host that ends badly or not within `timeout`.
+  void finish(std::chrono::milliseconds timeout);
+  // Asks every host still running to end (SIGTERM), without waiting.
+  void request_stop();
+  // Ends every host still running (SIGTERM, then SIGKILL), reaps it, removes its link.
+  void shut_down();
+
+ private:
+  std::deque<Host> hosts_;  // a deque: hosts never move, the back-channels refer to their ptys
+  bool dvi_ = true;
+};
+
+}  // namespace l2

@@ -1,0 +1,39 @@
+// --keep: which frames' displays the run writes (KeepSet, live_run.hpp).
+#include <fmt/format.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "live_run.hpp"
+
+namespace l2 {
+
+KeepSet parse_keep(const std::string& text) {
+  KeepSet keep;
+  if (text == "every") {
+    keep.every = true;
+  } else if (text == "last") {
+    keep.last = true;
+  } else if (text != "none") {
+    if (text.empty() || text.back() == ',')
+      throw std::invalid_argument(fmt::format("--keep: '{}' ends without a frame number", text));
+    std::stringstream items(text);
+    std::string item;
+    while (std::getline(items, item, ',')) {
+      std::size_t used = 0;
+      int k = -1;
+      try {
+        k = std::stoi(item, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != item.size() || item.empty() || k < 0)
+        throw std::invalid_argument(
+            fmt::format("--keep: '{}' is not every, last, none or a frame number", item));
+      keep.frames.insert(k);
+    }
+  }
+  return keep;
+}
+
+}  // namespace l2

@@ -1,0 +1,52 @@
+#include "run_pictures.hpp"
+
+#include <fmt/format.h>
+
+#include "display_compare.hpp"
+#include "image/png_io.hpp"
+#include "run_fault.hpp"
+#include "wall_picture.hpp"
+
+namespace l2 {
+
+void write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
+                            const DisplayPictures& display, const std::string& suffix) {
+  std::filesystem::create_directories(dir);
+  for (const Display& d : wall.displays)
+    write_png(dir / fmt::format("display-{}{}.png", d.id, suffix), display(d.id));
+  write_png(dir / fmt::format("wall{}.png", suffix), compose_wall_picture(wall, display));
+}
+
+int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
+                  const DisplayPictures& via_viz, bool tamper_display_0,
+                  const std::filesystem::path& out) {
+  int compared = 0;
+  for (const Display& d : wall.displays) {
+    const RgbImage& dvi = via_dvi(d.id);
+    RgbImage tampered;
+    const RgbImage* viz = &via_viz(d.id);
+    if (tamper_display_0 && d.id == 0) {
+      // Fault injection: one pixel off, to show what a mismatch looks like.
+      tampered = *viz;
+      const Rgb p = tampered.at(tampered.width() / 2, tampered.height() / 2);
+      tampered.set(tampered.width() / 2, tampered.height() / 2,
+                   Rgb{static_cast<std::uint8_t>(p.r ^ 0x80), p.g, p.b});
+      viz = &tampered;
+    }
+    const DisplayDiff diff = compare_displays(dvi, *viz);
+    ++compared;
+    if (diff.identical()) continue;
+    const auto dir = out / fmt::format("mismatch-frame-{}", frame);
+    std::filesystem::create_directories(dir);
+    write_png(dir / fmt::format("display-{}-dvi.png", d.id), dvi);
+    write_png(dir / fmt::format("display-{}-vizserver.png", d.id), *viz);
+    write_png(dir / fmt::format("display-{}-diff.png", d.id), diff.picture);
+    throw RunFault(fmt::format(
+        "frame {}: display {} differs between the DVI and vizserver paths in {} pixels; "
+        "both pictures and the difference are in {}",
+        frame, d.id, diff.differing_pixels, dir.string()));
+  }
+  return compared;
+}
+
+}  // namespace l2

@@ -1,0 +1,130 @@
+#include "run_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace l2 {
+namespace {
+
+struct HostFrame {
+  double render_ms = 0, wait_ms = 0;
+  int retries = 0;
+};
+struct HostLog {
+  std::vector<HostFrame> frames;
+  std::string done;  // the host's back-channel counts
+};
+
+HostLog read_host_log(const std::string& path, int frames) {
+  HostLog log;
+  log.frames.resize(static_cast<std::size_t>(frames));
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    int k = 0, retries = 0;
+    double render = 0, wait = 0;
+    if (std::sscanf(line.c_str(), "frame %d render_ms %lf wait_ms %lf retries %d", &k, &render,
+                    &wait, &retries) == 4 &&
+        k >= 0 && k < frames) {
+      log.frames[static_cast<std::size_t>(k)] = {render, wait, retries};
+    } else if (line.rfind("done ", 0) == 0) {
+      log.done = line.substr(5);
+    }
+  }
+  return log;
+}
+
+long latency_of(const FrameRecord& r) {
+  return static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
+}
+
+void write_csv(const std::filesystem::path& path, const RunOptions& o,
+               const std::vector<HostLog>& logs, const std::vector<FrameRecord>& records) {
+  const bool dvi = o.path != "vizserver";
+  std::ofstream csv(path);
+  csv << "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
+  for (std::size_t i = 0; i < logs.size(); ++i)
+    csv << fmt::format(",render_ms_{0},ready_wait_ms_{0},sync_retries_{0}", i);
+  csv << "\n";
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const FrameRecord& r = records[k];
+    if (dvi) {
+      csv << fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh,
+                         latency_of(r), r.route_ms, ms_between(r.in_time, r.swap_time));
+    } else {
+      csv << fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
+    }
+    for (const HostLog& log : logs) {
+      const HostFrame& f = log.frames[k];
+      csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
+    }
+    csv << "\n";
+  }
+}
+
+}  // namespace
+
+std::string write_run_report(const RunOptions& o, const Wall& wall,
+                             const std::vector<std::string>& host_logs,
+                             const std::vector<FrameRecord>& records, const RunTotals& totals,
+                             const std::string& extra) {
+  const int frames = static_cast<int>(records.size());
+  std::vector<HostLog> logs;
+  for (const std::string& path : host_logs) logs.push_back(read_host_log(path, frames));
+  const auto csv_path = std::filesystem::path(o.out) / "report.csv";
+  write_csv(csv_path, o, logs, records);
+
+  long min_latency = 1 << 30, max_latency = -1;
+  for (const FrameRecord& r : records) {
+    min_latency = std::min(min_latency, latency_of(r));
+    max_latency = std::max(max_latency, latency_of(r));
+  }
+  // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate.
+  const double seconds =
+      records.empty()
+          ? 0.0
+          : (ms_between(totals.start, records.back().swap_time) - records.back().writing_ms) /
+                1000.0;
+  const std::string pace = o.path == "vizserver"
+                               ? std::string("no emulator refresh: the compositing server swaps")
+                               : fmt::format("{} refreshes at {}", totals.refreshes,
+                                             o.refresh_hz > 0 ? fmt::format("{:g} Hz", o.refresh_hz)
+                                                              : std::string("full speed"));
+  std::string summary = fmt::format(
+      "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
+      frames, wall.displays.size(), host_logs.size(), seconds, seconds > 0 ? frames / seconds : 0.0,
+      pace);
+  if (totals.latency_measured) {
+    summary += fmt::format(
+        "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
+        "measured from the frame stamps on the displays: min {}, max {}\n",
+        max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
+  } else {
+    summary += "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
+  }
+  if (o.path != "dvi") summary += fmt::format("paths: {}\n", o.path);
+  if (o.compare) {
+    summary += fmt::format(
+        "compare: {} display pictures identical byte for byte on the DVI and vizserver "
+        "paths\n",
+        totals.compared_displays);
+  }
+  if (totals.noise_bytes || totals.dropped_readies) {
+    summary += fmt::format("faults injected: {} noise bytes, {} READY dropped\n",
+                           totals.noise_bytes, totals.dropped_readies);
+  }
+  for (std::size_t i = 0; i < logs.size(); ++i) {
+    summary += fmt::format("back-channel host {}: {}\n", i,
+                           logs[i].done.empty() ? "no report" : logs[i].done);
+  }
+  summary += extra;
+  summary += fmt::format("report: {}\n", csv_path.string());
+  std::ofstream(std::filesystem::path(o.out) / "summary.txt") << summary;
+  return summary;
+}
+
+}  // namespace l2

@@ -1,0 +1,41 @@
+// What a live run records per frame, and the report it writes at the end: report.csv (one row
+// per frame: refreshes, latency, route and swap time, per host render time, READY wait, SYNC?
+// retries) and summary.txt (frames per second, measured latency, back-channel counts).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "live_run.hpp"
+#include "run_time.hpp"
+#include "tilelayout/wall.hpp"
+
+namespace l2 {
+
+struct FrameRecord {
+  std::uint64_t in_refresh = 0;    // refresh at which its last input was taken in
+  std::uint64_t swap_refresh = 0;  // refresh at which it reached every display
+  RunClock::time_point in_time{}, swap_time{};
+  double route_ms = 0;    // emulator time of the refreshes that routed this frame
+  double writing_ms = 0;  // picture writing of the run up to this frame's swap
+  bool shown = false;
+};
+
+struct RunTotals {
+  std::uint64_t refreshes = 0;
+  std::uint64_t noise_bytes = 0, dropped_readies = 0;
+  std::uint64_t compared_displays = 0;
+  bool latency_measured = true;  // false on the vizserver path alone: no refresh to count
+  RunClock::time_point start{};  // the clock starts once every host delivered a first frame
+};
+
+// Writes OUT/report.csv and OUT/summary.txt from the records and the hosts' reports
+// (`host_logs`: host-<i>.log, in host order); returns the summary. `extra` lines go into the
+// summary before its last line.
+std::string write_run_report(const RunOptions& o, const Wall& wall,
+                             const std::vector<std::string>& host_logs,
+                             const std::vector<FrameRecord>& records, const RunTotals& totals,
+                             const std::string& extra);
+
+}  // namespace l2

@@ -1,0 +1,36 @@
+#include "stop_signal.hpp"
+
+#include <fmt/format.h>
+#include <signal.h>
+
+#include <cstring>
+
+#include "run_fault.hpp"
+
+namespace l2 {
+namespace {
+
+volatile sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
+
+}  // namespace
+
+void catch_stop_signals() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+void check_stop_signal(int shown, const std::string& kept) {
+  if (!g_stop_signal) return;
+  const int signal = g_stop_signal;
+  throw RunFault(fmt::format("stopped by signal {} ({}) at frame {}; {}", signal, strsignal(signal),
+                             shown, kept));
+}
+
+}  // namespace l2

@@ -1,0 +1,139 @@
+#include "viz_side.hpp"
+
+#include <fmt/format.h>
+
+#include <thread>
+
+#include "run_fault.hpp"
+#include "run_time.hpp"
+
+namespace l2 {
+namespace {
+
+using std::chrono::milliseconds;
+
+// Swapped frames the stream reader holds for us; the server waits (and so do the pipeservers)
+// when we fall further behind, e.g. while writing kept pictures.
+constexpr std::size_t kHeldFrames = 4;
+
+std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream_port) {
+  std::string sizes;
+  for (const auto& [w, h] : l.display_sizes)
+    sizes += fmt::format("{}{}x{}", sizes.empty() ? "" : ",", w, h);
+  return {l.vizserver, "--displays", sizes, "--servers", std::to_string(l.servers), "--host",
+          l.host, "--port", std::to_string(l.port), "--frames", std::to_string(l.frames),
+          "--display-stream", fmt::format("127.0.0.1:{}", stream_port), "--log", l.log.string(),
+          "--accept-timeout",
+          fmt::format("{:g}", static_cast<double>(l.start_timeout.count()) / 1000.0),
+          // A pipeserver that hangs is ours to name (the run's stall timeout), not the server's.
+          "--stall-timeout", "0"};
+}
+
+}  // namespace
+
+VizSide::VizSide(const VizLaunch& launch) : host_(launch.host) {
+  // Our end of the display stream, on loopback: the server is our child on this machine.
+  const viz::Fd listener = viz::listen_tcp("127.0.0.1", 0);
+  process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())));
+  accept_stream(listener, launch);
+}
+
+VizSide::~VizSide() {
+  shut_down();
+}
+
+void VizSide::accept_stream(const viz::Fd& listener, const VizLaunch& launch) {
+  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  const auto deadline = RunClock::now() + launch.start_timeout;
+  viz::Fd stream;
+  while (!stream) {
+    if ((exit_ = process_->poll())) {
+      throw RunFault(fmt::format("{} {} before it listened", who, exit_->describe()));
+    }
+    if (RunClock::now() > deadline) {
+      throw RunFault(fmt::format("{} did not connect its display stream within {} ms", who,
+                                 launch.start_timeout.count()));
+    }
+    stream = viz::accept_within(listener, milliseconds(20));
+  }
+  viz::Listening listening;
+  try {
+    listening = viz::read_listening(stream.get(), deadline, who);
+  } catch (const viz::VizError& e) {
+    throw RunFault(e.what());  // e.g. "...: cannot listen on 127.0.0.1:5000: Address in use"
+  }
+  if (listening.display_count != launch.display_sizes.size() ||
+      listening.server_count != static_cast<std::uint32_t>(launch.servers)) {
+    throw RunFault(fmt::format("{} composes {} displays for {} pipeservers, the wall has {} and {}",
+                               who, listening.display_count, listening.server_count,
+                               launch.display_sizes.size(), launch.servers));
+  }
+  port_ = static_cast<std::uint16_t>(listening.port);
+  watcher_ = std::make_unique<viz::DisplayWatcher>(std::move(stream), who, kHeldFrames);
+}
+
+std::string VizSide::address() const {
+  const std::string host = host_ == "0.0.0.0" ? "127.0.0.1" : host_ == "::" ? "::1" : host_;
+  return fmt::format("{}:{}", host, port_);
+}
+
+viz::FramePtr VizSide::frame(int frame, milliseconds timeout) {
+  if (last_ && last_->frame == static_cast<std::uint32_t>(frame)) return last_;
+  if (stream_error_ || !watcher_) return nullptr;
+  try {
+    viz::FramePtr f = watcher_->take(static_cast<std::uint32_t>(frame), timeout);
+    if (f) last_ = f;
+    return f;
+  } catch (const viz::VizError& e) {
+    stream_error_ = e.what();
+    return nullptr;
+  }
+}
+
+bool VizSide::down() {
+  if (!exit_ && process_) exit_ = process_->poll();
+  // A server that exits 0 has sent every frame: they are still ours to take.
+  return stream_error_.has_value() || (exit_ && !exit_->ok());
+}
+
+void VizSide::settle(milliseconds grace) {
+  // Its stream ended: the process is gone or going, give the kernel a moment to say how.
+  const bool going = stream_error_ || (watcher_ && watcher_->ended());
+  const auto deadline = RunClock::now() + (going ? grace : grace / 3);
+  while (!exit_ && process_ && RunClock::now() < deadline) {
+    exit_ = process_->poll();
+    if (!exit_) std::this_thread::sleep_for(milliseconds(5));
+  }
+}
+
+bool VizSide::said_why() const {
+  return exit_ && exit_->signal == 0 && exit_->code != 0 && watcher_ &&
+         watcher_->ended_with_error_message();
+}
+
+std::string VizSide::describe_down(int shown, const std::string& keep) const {
+  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  if (said_why()) {
+    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(), keep);
+  }
+  if (exit_ && !exit_->ok()) {
+    return fmt::format("{} {} at frame {}; {}", who, exit_->describe(), shown, keep);
+  }
+  return fmt::format("{} at frame {}: {}; {}", who, shown,
+                     stream_error_.value_or("display stream ended"), keep);
+}
+
+void VizSide::finish(milliseconds timeout) {
+  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  if (!exit_) exit_ = process_->wait_for(timeout);
+  if (!exit_) throw RunFault(who + " did not end after the last frame");
+  if (!exit_->ok())
+    throw RunFault(fmt::format("{} {} after the last frame", who, exit_->describe()));
+}
+
+void VizSide::shut_down() {
+  if (process_ && !exit_) exit_ = process_->terminate(milliseconds(500));
+  watcher_.reset();  // after the process: its stream has ended, the reader returns at once
+}
+
+}  // namespace l2

@@ -1,0 +1,109 @@
+// `l2wall run` when the compositing server (its own `vizserver` process) fails: killed with
+// SIGKILL on the vizserver path alone and on both paths, and a --viz-port it cannot bind. Real
+// processes and sockets; the run must name it and the frame, keep the displays it has, leave no
+// process or shm segment behind and exit non-zero.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "frame_stamp.hpp"
+#include "image/png_io.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using namespace testing_support;
+
+// The frame number host 0 stamped into a display picture of the default wall.
+int stamped_frame(const fs::path& picture_dir, const std::string& suffix) {
+  const TileLayout layout = plan_layout(default_wall());
+  const DisplayTile& t = layout.servers.front().tiles.front().tile;
+  const RgbImage shown = read_png(picture_dir / fmt::format("display-{}{}.png", t.display, suffix));
+  const Rgb px = shown.at(t.on_display.x, t.on_display.y);
+  const std::uint8_t bytes[3] = {px.r, px.g, px.b};
+  return decode_stamp(bytes);
+}
+
+// Waits until the run has kept frame `frame` (--keep K: its last picture is written just
+// before the run counts it as shown). Returns the pid of the run's compositing server.
+pid_t vizserver_after(const WallRun& run, int frame, const std::string& last_picture) {
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
+  const fs::path picture = run.out() / fmt::format("frame-{}", frame) / last_picture;
+  while (std::chrono::steady_clock::now() < deadline) {
+    const auto servers = run.vizservers();
+    if (servers.size() == 1 && fs::exists(picture)) return servers.front();
+    std::this_thread::sleep_for(20ms);
+  }
+  return -1;
+}
+
+class KilledVizserver : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(KilledVizserver, IsNamedWithItsFrameAndEverythingIsCleanedUp) {
+  const std::string path = GetParam();
+  WallRun run("viz-killed-" + path, {"--frames", "100000", "--path", path, "--keep", "3"});
+  const pid_t server = vizserver_after(run, 3, path == "both" ? "wall-vizserver.png" : "wall.png");
+  ASSERT_GT(server, 0) << run.output();
+  ASSERT_EQ(kill(server, SIGKILL), 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExitStatus status = run.wait(10s);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  const std::string said = fmt::format(
+      "l2wall: compositing server (vizserver pid {}) killed by signal 9 (Killed) at "
+      "frame ",
+      server);
+  const auto at = output.find(said);
+  ASSERT_NE(at, std::string::npos) << output;
+  int frame = -1, kept = -1, kept_by_viz = -1;
+  const int fields =
+      std::sscanf(output.c_str() + at + said.size(),
+                  "%d; the displays keep frame %d (DVI path) and frame %d (vizserver path)", &frame,
+                  &kept, &kept_by_viz);
+  ASSERT_GE(fields, 2) << output.substr(at);
+  if (fields == 2) kept_by_viz = kept;
+  EXPECT_GE(frame, 3) << "frame 3 was kept before the kill";
+  EXPECT_EQ(kept_by_viz, frame - 1);
+  // The displays it kept show what it said, read from the pixels: the vizserver's own pictures
+  // on its path alone. With both paths the emulator's may be a frame ahead (it swapped frame K
+  // while the run waited for the compositing server's K), and the vizserver's are beside them.
+  const fs::path fault = run.out() / "fault";
+  EXPECT_EQ(stamped_frame(fault, ""), kept) << output;
+  if (path == "both") {
+    EXPECT_TRUE(kept == frame - 1 || kept == frame) << output;
+    EXPECT_EQ(stamped_frame(fault, "-vizserver"), kept_by_viz) << output;
+  }
+  EXPECT_NE(output.find("l2wall: displays as they were: "), std::string::npos) << output;
+  expect_clean(run);
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, KilledVizserver, ::testing::Values("vizserver", "both"));
+
+TEST(LiveRun, AVizPortInUseIsNamedAndNothingIsLeft) {
+  const HeldPort held;  // as another program would
+  const int port = held.port;
+  WallRun run("viz-port",
+              {"--frames", "3", "--path", "vizserver", "--viz-port", std::to_string(port)});
+  const ExitStatus status = run.wait(10s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find(fmt::format("cannot listen on 127.0.0.1:{}: Address already in use", port)),
+            std::string::npos)
+      << output;
+  EXPECT_TRUE(run.vizservers().empty());
+  expect_clean(run);
+}
+
+}  // namespace
+}  // namespace l2
