@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -64,6 +65,49 @@ TEST(Show, MonitorsWithFewerMonitorsThanDisplaysIsRefusedListingThem) {
             "4 displays, but GLFW sees 1 monitor: [0] \"screen\" 800x600 at (0,0)\n");
   // Refused before any host started.
   EXPECT_FALSE(fs::exists(run.out() / "host-0.log"));
+  expect_clean(run);
+}
+
+// A wall whose one display names Xvfb's one monitor ("screen", its RandR output) goes
+// fullscreen there, pixel for pixel.
+TEST(Show, MonitorsShowsADisplayFullscreenOnTheMonitorItsWallFileNames) {
+  L2_START_XVFB(xvfb, 800, 600);
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-monitor-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "one.toml") << R"(name = "one monitor"
+[display_grid]
+columns = 1
+rows = 1
+width = 640
+height = 480
+monitors = ["screen"]
+[tiling]
+kind = "grid"
+tile_width = 320
+tile_height = 240
+[pipeservers]
+count = 2
+framebuffer_width = 800
+framebuffer_height = 600
+)";
+  WallRun run("show-monitor",
+              {(dir / "one.toml").string(), "--show", "monitors", "--frames", "3", "--refresh", "0",
+               "--keep", "every", "--show-readback", (dir / "screen").string()});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_NE(output.find("show: monitors, 3 frames presented"), std::string::npos) << output;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(display_png(dir / "screen", k, 0) == display_png(run.out(), k, 0)) << "frame " << k;
+  }
+  // Fullscreen: the window is the monitor, the display centred in black.
+  const RgbImage window = read_png(dir / "screen" / "frame-2" / "window-0.png");
+  EXPECT_EQ(window.width(), 800);
+  EXPECT_EQ(window.height(), 600);
+  EXPECT_EQ(window.at(0, 0), Rgb{});
+  EXPECT_EQ(window.at(80 + 320, 60 + 240), display_png(run.out(), 2, 0).at(320, 240));
+  fs::remove_all(dir);
   expect_clean(run);
 }
 
