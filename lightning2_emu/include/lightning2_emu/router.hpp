@@ -4,12 +4,14 @@
 //
 // A frame is routed in three steps, so the frame sequencer (§6) can decide between them which
 // inputs count:
-//   scan()   parses every input in parallel into per-input strip lists (headers only: the
-//            pixels are not touched);
-//   write()  copies the strips of the chosen inputs into the back buffers, in parallel over
-//            display row bands, inputs in ascending order so the higher input wins;
-//   finish() fills every pixel no strip wrote with the background, counts coverage and
-//            overdraw, and starts the displays' next frame.
+//   scan()   parses every input in parallel into per-input lists of runs (headers only: the
+//            pixels are not touched). A run is a tile's strips within one band of display rows:
+//            the same source columns on consecutive scanlines going to consecutive rows;
+//   write()  copies the runs of the chosen inputs into the back buffers, in parallel over
+//            display row bands, inputs in ascending order so the higher input wins, and
+//            records one rectangle per run;
+//   finish() fills every pixel no strip wrote with the background and counts coverage and
+//            overdraw from the rectangles, and starts the displays' next frame.
 // Buffers are reused from frame to frame: after the first frames nothing is allocated. The
 // result does not depend on the number of workers.
 #pragma once
@@ -18,6 +20,7 @@
 #include <span>
 #include <vector>
 
+#include "lightning2_emu/band_coverage.hpp"
 #include "lightning2_emu/display_buffers.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "lightning2_emu/mesh.hpp"
@@ -56,31 +59,51 @@ class Router {
   RouteReport route(std::span<const InputFrame> frames);
 
  private:
-  // A COPY strip after clipping to its display: where to read and where to write.
-  struct RoutedStrip {
-    std::int32_t src_x, src_y;
-    std::uint16_t dst_x, dst_y, length;
+  // Where the strips of one display id go: the one table the scan looks up per strip.
+  struct Target {
+    int index = -1;  // display index; -1 when the mesh has no display with this id configured
+    int width = 0, height = 0;
+    int band_shift = 0;   // a strip of row y lies in band y >> band_shift of the display
+    int band_offset = 0;  // its first band among all displays' bands
   };
-  // Columns x0..x1-1 of display row `row` written by `input` during the current frame.
-  struct Span {
-    std::uint16_t row, x0, x1, input;
+  // COPY strips of one input, after clipping, that continue each other: the same source
+  // columns on consecutive scanlines going to the same display columns on consecutive rows of
+  // one band (a tile, or its part in the band). Strip k of the run is read from
+  // src + k * stride and written to row dst_y + k.
+  struct Run {
+    std::int64_t src;  // byte offset of the first strip's first pixel from the frame's row 0
+    std::int32_t src_x;
+    std::int32_t row_lag;  // source row minus display row, the same for every strip of the run
+    std::uint16_t dst_x, dst_y, length, rows;
   };
-  // Each worker appends to its own input's and band's lists strip by strip: cache-line
-  // alignment keeps neighbours, worked on by other workers, off the same line.
+  // A run extended on the last scanline scanned: the next scanline's strip at the same source
+  // column may continue it.
+  struct OpenRun {
+    std::int32_t src_x;
+    std::uint32_t run;       // index in its band list
+    std::uint64_t next_key;  // run_key() of the strip that would continue it
+  };
+  // Each worker appends to its own input's lists: cache-line alignment keeps neighbours, worked
+  // on by other workers, off the same line.
   struct alignas(64) InputState {
     InputFrame frame;
     InputFrameStats stats;
-    std::vector<std::vector<RoutedStrip>> bands;  // [band_offset[d] + band]
+    std::vector<std::vector<Run>> bands;  // [Target::band_offset + band], in write order
+    std::vector<OpenRun> open, opening;   // by source column: last scanline's, this one's
   };
-  // A band of display rows: one task's share. Spans go into one flat list per band (appending
-  // is all the hot path does); they are grouped by row only when the frame is finished.
+  // A band of display rows: one task's share. One area per run written (appending is all the
+  // copy does); coverage is worked out from them when the frame is finished.
   struct alignas(64) BandState {
-    std::vector<Span> spans;               // in write order
-    std::vector<Span> by_row;              // spans grouped by row (scratch)
+    std::vector<Area> areas;  // in write order
+    std::uint64_t strips = 0;
+    struct Written {  // a strip's columns written by an input, for the guard path
+      std::uint16_t x0, x1, input;
+    };
+    std::vector<Written> by_row;           // earlier calls' areas, row by row (scratch)
     std::vector<std::uint32_t> row_start;  // by_row index of each row of the band, + end
   };
   struct DisplayState {
-    int band_shift = 0, band_rows = 1, band_count = 1, band_offset = 0;
+    int band_rows = 1, band_count = 1;
     int highest_input_written = -1;  // over earlier write() calls of this frame
     std::vector<BandState> bands;
   };
@@ -89,23 +112,27 @@ class Router {
   };
 
   void scan_input(int input);
-  void group_by_row(BandState& band, int first_row, int rows) const;
+  static void group_by_row(BandState& band, int first_row, int rows);
   static void copy_visible(std::uint8_t* dst, const std::uint8_t* src, int x0, int x1, int bpp,
                            int input, const BandState& band, int band_row);
   void write_band(int display, int band, std::span<const std::uint8_t> route_input);
-  DisplayFrameStats finish_band(int display, int band);
+  DisplayFrameStats finish_band(int display, int band, CoverageScratch& scratch);
 
   Mesh mesh_;
   WorkerPool& pool_;
   Rgb background_;
   std::vector<DisplayBuffers> displays_;
   std::vector<DisplayState> display_state_;
-  std::vector<int> index_of_id_;  // kMaxDisplays entries
+  std::vector<Target> targets_;  // by display id: kMaxDisplays entries
   std::vector<InputState> inputs_;
   std::vector<BandTask> band_tasks_;
   std::vector<BandTask> finish_tasks_;
   std::vector<DisplayFrameStats> band_stats_;
   std::vector<int> scan_inputs_;
+  struct alignas(64) WorkerScratch {
+    CoverageScratch coverage;
+  };
+  std::vector<WorkerScratch> scratch_;  // one per worker
 };
 
 }  // namespace l2
