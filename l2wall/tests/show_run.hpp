@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <thread>
@@ -28,6 +29,31 @@ constexpr int kScreenW = 1400, kScreenH = 1100;
 inline const std::string kTitle = "l2wall - 2x2 k-d wall";
 constexpr Rgb kMullion{24, 24, 28};  // displays/colours.hpp, written out: the test's own claim
 
+// A small wall for the key tests, cheap to render on a loaded machine: two 320x240 displays
+// side by side, 16 pixels apart, fed by two pipeservers.
+inline const std::string kSmallTitle = "l2wall - two displays";
+inline fs::path write_small_wall(const fs::path& dir) {
+  fs::create_directories(dir);
+  const fs::path file = dir / "two.toml";
+  std::ofstream(file) << R"(name = "two displays"
+[display_grid]
+columns = 2
+rows = 1
+width = 320
+height = 240
+mullion_x = 16
+[tiling]
+kind = "grid"
+tile_width = 160
+tile_height = 120
+[pipeservers]
+count = 2
+framebuffer_width = 400
+framebuffer_height = 300
+)";
+  return file;
+}
+
 inline RgbImage display_png(const fs::path& dir, int frame, int display,
                             const std::string& prefix = "") {
   return read_png(dir / fmt::format("frame-{}", frame) /
@@ -35,9 +61,9 @@ inline RgbImage display_png(const fs::path& dir, int frame, int display,
 }
 
 // Lines the hosts logged so far: one per frame they published.
-inline std::vector<int> host_lines(const WallRun& run) {
+inline std::vector<int> host_lines(const WallRun& run, int hosts) {
   std::vector<int> lines;
-  for (int s = 0; s < 4; ++s) lines.push_back(run.host_log_lines(s));
+  for (int s = 0; s < hosts; ++s) lines.push_back(run.host_log_lines(s));
   return lines;
 }
 
