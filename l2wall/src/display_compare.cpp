@@ -60,9 +60,10 @@ bool pixel_differs(const RgbImage& a, const RgbImage& b, int x, int y) {
   return std::memcmp(a.row(y).data() + x * 3, b.row(y).data() + x * 3, 3) != 0;
 }
 
-// The outline of a square of side 2r+1 around (cx, cy), clipped to the picture.
+// The outline of a square of side 2r+1 around (cx, cy), clipped to the picture: 13 pixels
+// wide, wider on large pictures so it still shows when they are viewed scaled down.
 void draw_marker(RgbImage& picture, int cx, int cy) {
-  constexpr int r = 6;
+  const int r = std::max(6, std::max(picture.width(), picture.height()) / 128);
   for (int i = -r; i <= r; ++i) {
     for (const auto& [x, y] : {std::pair{cx + i, cy - r}, std::pair{cx + i, cy + r},
                                std::pair{cx - r, cy + i}, std::pair{cx + r, cy + i}}) {

@@ -24,7 +24,8 @@ DisplayDiff compare_displays(const RgbImage& a, const RgbImage& b);
 
 // A picture in which even one differing pixel is easy to find: `actual` dimmed to a quarter
 // (so its content still shows where the difference is), every differing pixel magenta, and
-// (while there are at most kMarkedPixels of them) a yellow square around each, 13 pixels wide.
+// (while there are at most kMarkedPixels of them) a yellow square around each, 13 pixels wide
+// (a hundredth of the picture's larger side on large ones).
 // Sizes differ: `actual` dimmed with a magenta border, as nothing can be lined up.
 inline constexpr std::uint64_t kMarkedPixels = 4096;
 inline constexpr Rgb kDiffPixel{255, 0, 255}, kDiffMarker{255, 255, 0};

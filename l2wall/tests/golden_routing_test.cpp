@@ -1,6 +1,7 @@
 // The displays a routing-only golden entry is produced from, in this process: the test pattern
 // through the emulator and through the compositing server, and the GL version of rendered ones.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -71,7 +72,8 @@ TEST(GoldenRouting, AWrongHeaderFieldMovesItsStrip) {
 }
 
 TEST(GoldenRouting, CapturedFramesNeedOneFilePerPipeserver) {
-  const auto dir = std::filesystem::temp_directory_path() / "l2-golden-routing-empty";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("l2-golden-routing-empty-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   try {
     produce_from_captured(example("kd-2x2.toml"), dir);
