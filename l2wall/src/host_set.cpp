@@ -49,6 +49,7 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
 
 void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
   dvi_ = launch.dvi;
+  frames_ = launch.frames;
   for (std::size_t i = 0; i < layout.servers.size(); ++i) {
     Host& h = hosts_.emplace_back();
     h.server = static_cast<int>(i);
@@ -70,18 +71,18 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
   }
 }
 
-Host* HostSet::poll_ended(bool all_shown) {
+Host* HostSet::poll_ended() {
   for (Host& h : hosts_) {
     if (!h.exit && h.process) h.exit = h.process->poll();
   }
   for (Host& h : hosts_) {
-    if (h.exit && (!h.exit->ok() || !all_shown)) return &h;
+    if (h.exit && (!h.exit->ok() || delivered(h) < frames_)) return &h;
   }
   return nullptr;
 }
 
 Host* HostSet::killed_by_signal() {
-  poll_ended(false);
+  poll_ended();
   for (Host& h : hosts_) {
     // Only asked while the run has ended no host itself, so no signal here is ours.
     if (h.exit && h.exit->signal != 0) return &h;

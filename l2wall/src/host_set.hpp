@@ -63,9 +63,11 @@ class HostSet {
   std::deque<Host>& hosts() { return hosts_; }
   const std::deque<Host>& hosts() const { return hosts_; }
 
-  // Polls every host; returns the first that ended while frames were still due (`all_shown`
-  // false) or ended badly. Such an end is a fault, which the caller words with describe_end.
-  Host* poll_ended(bool all_shown);
+  // Polls every host; returns the first whose end is a fault: it ended badly, or before it
+  // delivered every frame. (A host ends well only after its last frame was swapped, which it
+  // may learn from the compositing server before this process has that frame: not a fault.)
+  // The caller words it with describe_end.
+  Host* poll_ended();
   // Polls every host; the first that was killed by a signal (never the effect of another
   // process's fault, so the cause when several processes ended at once).
   Host* killed_by_signal();
@@ -102,6 +104,7 @@ class HostSet {
  private:
   std::deque<Host> hosts_;  // a deque: hosts never move, the back-channels refer to their ptys
   bool dvi_ = true;
+  int frames_ = 0;  // every host renders this many
 };
 
 }  // namespace l2

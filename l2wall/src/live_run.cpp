@@ -251,7 +251,7 @@ class LiveRun {
   // a RunFault naming the cause.
   void check_processes() {
     check_stop_signal(shown_, displays_kept());
-    Host* ended = hosts_.poll_ended(shown_ >= o_.frames);
+    Host* ended = hosts_.poll_ended();
     const bool viz_down = viz_ && viz_->down();
     if (ended || viz_down) throw RunFault(blame());
   }
@@ -266,8 +266,7 @@ class LiveRun {
       return hosts_.describe_end(*killed, displays_kept());
     if (viz_ && viz_->down() && !viz_->said_why())
       return viz_->describe_down(shown_, displays_kept());
-    if (Host* ended = hosts_.poll_ended(shown_ >= o_.frames))
-      return hosts_.describe_end(*ended, displays_kept());
+    if (Host* ended = hosts_.poll_ended()) return hosts_.describe_end(*ended, displays_kept());
     return viz_ ? viz_->describe_down(shown_, displays_kept())
                 : std::string("a process of the run ended");
   }

@@ -1,7 +1,7 @@
-// `l2wall run` when the compositing server (its own `vizserver` process) fails: killed with
-// SIGKILL on the vizserver path alone and on both paths, and a --viz-port it cannot bind. Real
-// processes and sockets; the run must name it and the frame, keep the displays it has, leave no
-// process or shm segment behind and exit non-zero.
+// `l2wall run` and its compositing server, a `vizserver` process of its own: it listens where
+// --viz-host and --viz-port say; killed with SIGKILL on the vizserver path alone and on both
+// paths, or unable to bind --viz-port, it is named with the frame, the run keeps the displays it
+// has, leaves no process or shm segment behind and exits non-zero. Real processes and sockets.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -102,6 +102,25 @@ TEST(LiveRun, AVizPortInUseIsNamedAndNothingIsLeft) {
             std::string::npos)
       << output;
   EXPECT_TRUE(run.vizservers().empty());
+  expect_clean(run);
+}
+
+// The compositing server listens where --viz-host and --viz-port say (here every interface, on
+// a port that was free a moment ago), says so in its log, and the local hosts still reach it.
+TEST(LiveRun, CompositingServerListensOnTheHostAndPortAsked) {
+  int port = 0;
+  {
+    const HeldPort probe;
+    port = probe.port;
+  }
+  WallRun run("viz-where", {"--frames", "2", "--path", "vizserver", "--viz-host", "0.0.0.0",
+                            "--viz-port", std::to_string(port)});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  const std::string log = slurp(run.out() / "vizserver.log");
+  EXPECT_EQ(log.substr(0, log.find('\n')), fmt::format("listening on 0.0.0.0:{}", port)) << log;
+  EXPECT_NE(log.find("swapped frame 1: 16 tiles"), std::string::npos) << log;
   expect_clean(run);
 }
 
