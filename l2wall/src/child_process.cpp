@@ -71,11 +71,13 @@ std::optional<ExitStatus> ChildProcess::wait_for(std::chrono::milliseconds timeo
 }
 
 void ChildProcess::request_stop() {
-  if (!poll()) kill(pid_, SIGTERM);
+  // pid_ <= 0 (moved from): kill(-1) would signal every process we may signal.
+  if (pid_ > 0 && !poll()) kill(pid_, SIGTERM);
 }
 
 ExitStatus ChildProcess::terminate(std::chrono::milliseconds grace) {
   if (poll()) return *status_;
+  if (pid_ <= 0) return ExitStatus{};  // moved from: nothing of ours to end
   kill(pid_, SIGTERM);
   if (wait_for(grace)) return *status_;
   kill(pid_, SIGKILL);

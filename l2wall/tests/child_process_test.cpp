@@ -40,6 +40,17 @@ TEST(ChildProcess, TerminateEndsAndReapsAStubbornChild) {
   EXPECT_FALSE(process_exists(pid));  // reaped: not even a zombie
 }
 
+TEST(ChildProcess, RequestStopAsksWithoutWaiting) {
+  ChildProcess p({"/bin/sleep", "30"});
+  const auto t0 = std::chrono::steady_clock::now();
+  p.request_stop();
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 100ms);
+  const auto status = p.wait_for(5s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(status->signal, SIGTERM);
+  p.request_stop();  // after it ended: no signal to a pid that may be reused
+}
+
 TEST(ChildProcess, DestructorLeavesNoOrphan) {
   pid_t pid = 0;
   {
