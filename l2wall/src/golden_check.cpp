@@ -1,7 +1,6 @@
 #include "golden_check.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include <chrono>
 #include <optional>

@@ -21,10 +21,13 @@ GoldenPaths default_paths() {
 void add_path_options(CLI::App& cmd, GoldenPaths& paths, std::vector<std::string>& entries) {
   cmd.add_option("--goldens", paths.goldens,
                  "golden folder: manifest.toml and <entry>/display-<id>.png")
+      ->type_name("DIR")
       ->capture_default_str();
   cmd.add_option("--root", paths.root, "where the manifest's wall paths start (the repository)")
+      ->type_name("DIR")
       ->capture_default_str();
-  cmd.add_option("--entry", entries, "only this entry (repeatable); default: every entry");
+  cmd.add_option("--entry", entries, "only this entry (repeatable); default: every entry")
+      ->type_name("NAME");
 }
 
 // Runs `body` and ends the parse with its exit code; errors are one line on stderr, exit 2.
@@ -67,11 +70,13 @@ void add_golden_command(CLI::App& app) {
       "pass, 1 a mismatch, 2 the check could not run");
   add_path_options(*c, check->paths, check->entries);
   c->add_option("--out", check->out, "where actual images and diff pictures go")
+      ->type_name("DIR")
       ->capture_default_str();
   c->add_option("--inputs", check->inputs,
                 "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
                 "`tilelayout WALL --scanout DIR` names them) through the emulator and compare "
                 "the displays with the golden images of the one routing-only --entry")
+      ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--write-actual", check->write_actual,
               "write every display's actual image to OUT/<entry>/, also when it passes");
@@ -90,6 +95,7 @@ void add_golden_command(CLI::App& app) {
       "image unless --allow-routing-change");
   add_path_options(*u, update->paths, update->entries);
   u->add_option("--out", update->out, "where the runs and pictures of refused changes go")
+      ->type_name("DIR")
       ->capture_default_str();
   u->add_flag("--allow-routing-change", update->allow_routing_change,
               "write changed routing-only (test-pattern) images too: only when the routing or "
