@@ -6,6 +6,7 @@
 // Bounded to about two seconds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 
@@ -165,6 +166,24 @@ HeldFrame hold(const RgbImage& rgb, int bytes_per_pixel, bool bottom_up, int pad
   return h;
 }
 
+// Strip pixels that differ from input to input and place to place in the frame: where strips
+// overlap on a display, only the right write order gives the right picture.
+void colour_strips(RgbImage& rgb, int input) {
+  for (int y = 0; y < rgb.height(); ++y) {
+    StripErrorCounts ignored;
+    std::uint8_t* row = rgb.row(y).data();
+    parse_scanline(row, rgb.width(), 3, ignored, [&](const ParsedStrip& s) {
+      for (int k = 0; k < s.length; ++k) {
+        const Rgb c = testing::pattern(input + 100, s.source_x + k, y);
+        std::uint8_t* p = row + (s.source_x + k) * 3;
+        p[0] = c.r;
+        p[1] = c.g;
+        p[2] = c.b;
+      }
+    });
+  }
+}
+
 struct Case {
   std::vector<DisplaySpec> displays;
   std::vector<HeldFrame> frames;  // an empty one: no signal
@@ -176,7 +195,9 @@ Case make_case(std::mt19937& rng) {
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   Case c;
   for (int d = uni(1, 3); d > 0; --d) {
-    c.displays.push_back({static_cast<int>(c.displays.size()) * 3, uni(1, 300), uni(1, 40), 0});
+    // Some displays tall enough to have many bands of rows, so runs cross band edges.
+    c.displays.push_back({static_cast<int>(c.displays.size()) * 3, uni(1, 300),
+                          uni(0, 3) ? uni(1, 40) : uni(41, 200), 0});
   }
   for (int i = uni(1, 4); i > 0; --i) {
     if (uni(0, 9) == 0) {
@@ -186,14 +207,25 @@ Case make_case(std::mt19937& rng) {
     std::vector<testing::Tile> tiles;
     for (int t = uni(0, 10); t > 0; --t) {
       const DisplaySpec& d = c.displays[uni(0, static_cast<int>(c.displays.size()) - 1)];
-      tiles.push_back(
-          {uni(0, 12) ? d.id : 1, uni(0, d.width), uni(0, d.height), uni(1, 140), uni(1, 12)});
+      const int id = uni(0, 12) ? d.id : 1;
+      if (uni(0, 3)) {  // inside the display, as tiles mostly are
+        const int x = uni(0, d.width - 1), y = uni(0, d.height - 1);
+        tiles.push_back(
+            {id, x, y, uni(1, std::min(140, d.width - x)), uni(1, std::min(40, d.height - y))});
+      } else {  // anywhere: partly or wholly outside
+        tiles.push_back({id, uni(0, d.width), uni(0, d.height), uni(1, 140), uni(1, 40)});
+      }
     }
-    RgbImage rgb(uni(2, 320), uni(1, 48));
+    RgbImage rgb(uni(2, 320), uni(1, 96));
     testing::pack_frame(tiles, uni(0, 1) != 0, rgb);  // may not all fit
+    colour_strips(rgb, static_cast<int>(c.frames.size()));
     for (int m = uni(0, 3) == 0 ? uni(1, 4) : 0; m > 0; --m) {
-      rgb.row(uni(0, rgb.height() - 1))[uni(0, static_cast<int>(rgb.stride()) - 1)] ^=
-          static_cast<std::uint8_t>(1 << uni(0, 7));
+      const int y = uni(0, rgb.height() - 1), at = uni(0, static_cast<int>(rgb.stride()) - 1);
+      if (uni(0, 1)) {
+        rgb.row(y)[at] ^= static_cast<std::uint8_t>(1 << uni(0, 7));
+      } else {  // the scanline ends early: black from here on reads as END
+        std::fill(rgb.row(y).begin() + at, rgb.row(y).end(), std::uint8_t{0});
+      }
     }
     c.frames.push_back(hold(rgb, uni(0, 1) ? 4 : 3, uni(0, 1) != 0, uni(0, 1) * 8));
   }
@@ -211,7 +243,7 @@ TEST(Reference, RouterMatchesThePixelByPixelReference) {
     const Case c = make_case(rng);
     std::vector<InputFrame> views;
     for (const HeldFrame& f : c.frames) views.push_back(f.bytes.empty() ? InputFrame{} : f.view);
-    Router router(Mesh(1, 1, {320, 48}), c.displays, pool, background);
+    Router router(Mesh(1, 1, {320, 96}), c.displays, pool, background);
     Reference ref(c.displays, background);
     std::vector<int> all_displays(c.displays.size());
     for (std::size_t d = 0; d < all_displays.size(); ++d) all_displays[d] = static_cast<int>(d);

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace l2 {
+namespace l2::router_detail {
 
 // Rows y0..y1-1, columns x0..x1-1 of a display, written by `input` during the current frame.
 struct Area {
@@ -107,4 +107,4 @@ CoverageCounts sweep_coverage(const std::vector<Area>& areas, int row0, int row1
   return total;
 }
 
-}  // namespace l2
+}  // namespace l2::router_detail

@@ -1,0 +1,78 @@
+// The router's working state, kept out of its public header: where strips go, the runs a scan
+// finds, and what each band of display rows wrote.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "band_coverage.hpp"
+#include "lightning2_emu/input_frame.hpp"
+#include "lightning2_emu/route_report.hpp"
+
+namespace l2::router_detail {
+
+// Where the strips of one display id go: the one table the scan looks up per strip.
+struct Target {
+  int index = -1;  // display index; -1 when the mesh has no display with this id configured
+  int width = 0, height = 0;
+  int band_shift = 0;   // a strip of row y lies in band y >> band_shift of the display
+  int band_offset = 0;  // its first band among all displays' bands
+};
+
+// COPY strips of one input, after clipping, that continue each other: the same source columns
+// on consecutive scanlines going to the same display columns on consecutive rows of one band (a
+// tile, or its part in the band). Strip k of the run is read from src + k * stride and written
+// to row dst_y + k.
+struct Run {
+  std::int64_t src;  // byte offset of the first strip's first pixel from the frame's row 0
+  std::int32_t src_x;
+  std::int32_t row_lag;  // source row minus display row, the same for every strip of the run
+  std::uint16_t dst_x, dst_y, length, rows;
+};
+
+// A header of the last scanline scanned, as the next scanline would repeat it.
+struct SeenHeader {
+  std::int32_t x;       // its column
+  std::uint64_t value;  // the raw 48 bits that repeat it one scanline down: a COPY's row plus one
+  std::int32_t list;    // a routed COPY: the band list of its run; otherwise -1
+  std::uint32_t run;    // the run's index in that list
+  std::int32_t next_y;  // a routed COPY: the display row a repeat writes ...
+  std::int32_t last_y;  // ... which must not pass this one (display height, end of the band)
+};
+
+// One input's frame and what scanning it found. Each worker appends to its own input's lists:
+// cache-line alignment keeps neighbours, worked on by other workers, off the same line.
+struct alignas(64) InputScan {
+  InputFrame frame;
+  InputFrameStats stats;
+  std::vector<std::vector<Run>> bands;   // [Target::band_offset + band], in write order
+  std::vector<SeenHeader> seen, seeing;  // the last scanline's headers, this one's
+};
+
+// Parses in.frame (present, checked against the mesh) into in.bands and in.stats.
+void scan_input(InputScan& in, int input, const std::vector<Target>& targets);
+
+// A band of display rows: one task's share. One area per run written (appending is all the
+// copy does); coverage is worked out from them when the frame is finished.
+struct alignas(64) BandState {
+  std::vector<Area> areas;  // in write order
+  std::uint64_t strips = 0;
+  struct Written {  // columns of a row written by an input, for the guard path
+    std::uint16_t x0, x1, input;
+  };
+  std::vector<Written> by_row;           // earlier calls' areas, row by row (scratch)
+  std::vector<std::uint32_t> row_start;  // by_row index of each row of the band, + end
+};
+
+struct DisplayBands {
+  int band_rows = 1, band_count = 1;
+  int highest_input_written = -1;  // over earlier write() calls of this frame
+  std::vector<BandState> bands;
+};
+
+// A worker's scratch, reused from frame to frame.
+struct alignas(64) WorkerScratch {
+  CoverageScratch coverage;
+};
+
+}  // namespace l2::router_detail
