@@ -15,6 +15,7 @@
 // under the same conditions. Each figure is the fastest of its runs (the least disturbed); the
 // median of the per-repetition ratios is printed beside the ratio of the fastest runs.
 #include <fmt/format.h>
+#include <malloc.h>
 #include <sys/resource.h>
 #include <time.h>
 
@@ -182,18 +183,12 @@ class MemcpyReusedBuffers {
   std::vector<std::uint8_t> src_, dst_;
 };
 
-// Resident memory of this process now, from /proc (the high-water mark cannot be taken per
-// object, so the router's share is the growth across its construction and first frames).
-double resident_mb() {
-  std::FILE* f = std::fopen("/proc/self/status", "r");
-  if (!f) return 0;
-  char line[256];
-  long kb = 0;
-  while (std::fgets(line, sizeof line, f)) {
-    if (std::sscanf(line, "VmRSS: %ld kB", &kb) == 1) break;
-  }
-  std::fclose(f);
-  return double(kb) / 1024.0;
+// Heap bytes in use now (malloc's own count, mmapped blocks included). The router's memory is
+// the growth across its construction and first frames: resident size would not show it when it
+// reuses pages an earlier scenario freed.
+double heap_mib() {
+  const struct mallinfo2 m = mallinfo2();
+  return double(m.uordblks + m.hblkhd) / (1 << 20);
 }
 
 double gbps(std::size_t bytes, double seconds) {
@@ -207,10 +202,10 @@ struct Figures {
 Figures run(const Scenario& s, int repetitions, int workers, bool print_header) {
   const Built b = build(s);
   l2::WorkerPool pool(workers);
-  const double before_mb = resident_mb();
+  const double before_mib = heap_mib();
   l2::Router router(l2::Mesh::fit(s.inputs, static_cast<int>(s.displays.size())), s.displays, pool);
   for (int warm = 0; warm < 3; ++warm) router.route(b.views);
-  const double router_mb = resident_mb() - before_mb;
+  const double router_mib = heap_mib() - before_mib;
   MemcpySameBytes memcpy_same(b, pool);
   MemcpyReusedBuffers memcpy_reused(b.routed_bytes, pool);
   // Where the time goes: the three steps of route(), called one after the other on a frame.
@@ -248,7 +243,7 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
         "per frame\n  emulator memory: {:.1f} MiB (two buffers per display: {:.1f} MiB; inputs "
         "are read in place)\n",
         s.name, s.inputs, s.displays.size(), s.tile_w, s.tile_h, double(b.routed_bytes) / 1e6,
-        router_mb, 2.0 * double(b.routed_bytes) / (1 << 20));
+        router_mib, 2.0 * double(b.routed_bytes) / (1 << 20));
   }
   const Figures f{route.best(), copy_same.best(), median_ratio(copy_same, route, &Time::wall),
                   median_ratio(copy_same, route, &Time::cpu)};
