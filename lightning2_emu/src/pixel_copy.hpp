@@ -23,6 +23,38 @@ namespace l2::pixel_copy {
 
 constexpr int kLine = 64;
 
+// N bytes, as one load and one store where the machine has them.
+template <std::size_t N>
+inline void move(std::uint8_t* dst, const std::uint8_t* src) {
+  std::uint8_t bytes[N];
+  std::memcpy(bytes, src, N);
+  std::memcpy(dst, bytes, N);
+}
+
+// Fewer than 64 bytes (the partial lines at a strip's ends): two moves of the largest power of
+// two that fits, overlapping in the middle. Inline and branch-light, where a memcpy call of a
+// size known only at run time costs several times as many instructions.
+inline void copy_short(std::uint8_t* dst, const std::uint8_t* src, std::size_t n) {
+  if (n >= 32) {
+    move<32>(dst, src);
+    move<32>(dst + n - 32, src + n - 32);
+  } else if (n >= 16) {
+    move<16>(dst, src);
+    move<16>(dst + n - 16, src + n - 16);
+  } else if (n >= 8) {
+    move<8>(dst, src);
+    move<8>(dst + n - 8, src + n - 8);
+  } else if (n >= 4) {
+    move<4>(dst, src);
+    move<4>(dst + n - 4, src + n - 4);
+  } else if (n >= 2) {
+    move<2>(dst, src);
+    move<2>(dst + n - 2, src + n - 2);
+  } else if (n == 1) {
+    *dst = *src;
+  }
+}
+
 // `bytes` bytes from src to dst, whole dst lines streamed.
 inline void stream_bytes(std::uint8_t* dst, const std::uint8_t* src, std::size_t bytes) {
 #if defined(__SSE2__)
@@ -31,7 +63,7 @@ inline void stream_bytes(std::uint8_t* dst, const std::uint8_t* src, std::size_t
     std::memcpy(dst, src, bytes);
     return;
   }
-  std::memcpy(dst, src, head);
+  copy_short(dst, src, head);
   std::size_t at = head;
   for (; at + kLine <= bytes; at += kLine) {
     const auto* s = reinterpret_cast<const __m128i*>(src + at);
@@ -43,7 +75,7 @@ inline void stream_bytes(std::uint8_t* dst, const std::uint8_t* src, std::size_t
     _mm_stream_si128(d + 2, c);
     _mm_stream_si128(d + 3, e);
   }
-  std::memcpy(dst + at, src + at, bytes - at);
+  copy_short(dst + at, src + at, bytes - at);
 #else
   std::memcpy(dst, src, bytes);
 #endif
