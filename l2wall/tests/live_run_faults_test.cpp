@@ -21,14 +21,19 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using namespace testing_support;
 
+// How soon after a fault the run must have ended, named it and cleaned up.
+constexpr auto kFaultNoticeBound = 10s;
+
 TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
   WallRun run("killed", {"--frames", "100000", "--refresh", "60"});
   const pid_t victim = running_pipeserver(run, 1);
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGKILL), 0);
   const auto t0 = std::chrono::steady_clock::now();
-  const ExitStatus status = run.wait(10s);
-  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const ExitStatus status = run.wait(20s);
+  // About 0.4 s on a quiet machine; the bound leaves room for a CI machine loaded by two tests
+  // of five processes each (7.9 s was seen with a sanitizer build running beside the suite).
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, kFaultNoticeBound);
   const std::string output = run.output();
   EXPECT_FALSE(status.ok());
   EXPECT_NE(output.find(fmt::format("pipeserver 1 (pid {}) killed by signal 9", victim)),
@@ -45,8 +50,8 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGSTOP), 0);
   const auto t0 = std::chrono::steady_clock::now();
-  const ExitStatus status = run.wait(10s);
-  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const ExitStatus status = run.wait(20s);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 2s + kFaultNoticeBound);  // stall timeout 2 s
   const std::string output = run.output();
   EXPECT_EQ(status.code, 1) << output;
   EXPECT_NE(output.find(fmt::format("pipeserver 2 (pid {}) did not deliver frame", victim)),

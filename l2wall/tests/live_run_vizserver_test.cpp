@@ -56,8 +56,9 @@ TEST_P(KilledVizserver, IsNamedWithItsFrameAndEverythingIsCleanedUp) {
   ASSERT_GT(server, 0) << run.output();
   ASSERT_EQ(kill(server, SIGKILL), 0);
   const auto t0 = std::chrono::steady_clock::now();
-  const ExitStatus status = run.wait(10s);
-  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+  const ExitStatus status = run.wait(20s);
+  // Well under a second on a quiet machine; room for a CI machine running two such tests.
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 10s);
   const std::string output = run.output();
   EXPECT_EQ(status.code, 1) << output;
   const std::string said = fmt::format(
