@@ -11,10 +11,7 @@ constexpr std::size_t kMaxDisplayPayload =
 template <std::size_t Fixed>
 std::array<std::uint8_t, kHeaderBytes + Fixed> start(StreamKind kind, std::size_t extra = 0) {
   std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
-  put_u32(out.data(), kMagic);
-  put_u16(out.data() + 4, kVersion);
-  put_u16(out.data() + 6, static_cast<std::uint16_t>(kind));
-  put_u32(out.data() + 8, static_cast<std::uint32_t>(Fixed + extra));
+  put_message_header(out.data(), static_cast<std::uint16_t>(kind), Fixed + extra);
   return out;
 }
 

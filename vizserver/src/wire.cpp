@@ -8,17 +8,10 @@ namespace {
 constexpr std::size_t kMaxTilePayload =
     24 + std::size_t{kMaxTileSide} * kMaxTileSide * 3;  // about 48 MiB: one 4095x4095 tile
 
-void put_header(std::uint8_t* p, Kind kind, std::size_t payload_bytes) {
-  put_u32(p, kMagic);
-  put_u16(p + 4, kVersion);
-  put_u16(p + 6, static_cast<std::uint16_t>(kind));
-  put_u32(p + 8, static_cast<std::uint32_t>(payload_bytes));
-}
-
 template <std::size_t Fixed>
 std::array<std::uint8_t, kHeaderBytes + Fixed> start(Kind kind, std::size_t extra = 0) {
   std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
-  put_header(out.data(), kind, Fixed + extra);
+  put_message_header(out.data(), static_cast<std::uint16_t>(kind), Fixed + extra);
   return out;
 }
 
@@ -27,6 +20,13 @@ bool known_kind(std::uint16_t k) {
 }
 
 }  // namespace
+
+void put_message_header(std::uint8_t* p, std::uint16_t kind, std::size_t payload_bytes) {
+  put_u32(p, kMagic);
+  put_u16(p + 4, kVersion);
+  put_u16(p + 6, kind);
+  put_u32(p + 8, static_cast<std::uint32_t>(payload_bytes));
+}
 
 void put_u16(std::uint8_t* p, std::uint16_t v) {
   p[0] = static_cast<std::uint8_t>(v);

@@ -102,4 +102,8 @@ void put_u32(std::uint8_t* p, std::uint32_t v);
 std::uint16_t get_u16(const std::uint8_t* p);
 std::uint32_t get_u32(const std::uint8_t* p);
 
+// The 12-byte header every message of both vizserver protocols starts with (magic, version,
+// kind, payload length); the tile protocol and the display stream differ only in their kinds.
+void put_message_header(std::uint8_t* p, std::uint16_t kind, std::size_t payload_bytes);
+
 }  // namespace l2::viz
