@@ -119,7 +119,8 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   }
   for (std::size_t i = 0; i < logs.size(); ++i) {
     summary += fmt::format("back-channel host {}: {}\n", i,
-                           logs[i].done.empty() ? "no report" : logs[i].done);
+                           logs[i].done.empty() ? "no totals (stopped before its last frame)"
+                                               : logs[i].done);
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());

@@ -77,6 +77,10 @@ TEST(Show, SpacePausesTheHostsSSavesScreenshotsQEndsTheRunCleanly) {
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
   const std::string summary = slurp(run.out() / "summary.txt");
   EXPECT_NE(summary.find("quit by the user"), std::string::npos) << summary;
+  // The hosts were stopped while rendering frames past the quit: no totals, and said so.
+  EXPECT_NE(summary.find("back-channel host 0: no totals (stopped before its last frame)"),
+            std::string::npos)
+      << summary;
   EXPECT_EQ(read_csv(run.out() / "report.csv").size(), static_cast<std::size_t>(last + 2));
   expect_clean(run);
   fs::remove_all(wall.parent_path());
