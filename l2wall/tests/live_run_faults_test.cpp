@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <thread>
 
 #include "frame_stamp.hpp"
 #include "image/png_io.hpp"
@@ -68,6 +69,22 @@ TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
   const std::string output = run.output();
   EXPECT_EQ(status.code, 1) << output;
   EXPECT_NE(output.find("stopped by signal 15"), std::string::npos) << output;
+  expect_clean(run);
+}
+
+// l2wall itself killed (no chance to stop anyone): the pipeservers see their back-channel hang
+// up and their compositing-server connection close, the compositing server sees l2wall's display
+// stream close; all end on their own and the pipeservers remove their links.
+TEST(LiveRun, KilledRunLeavesNoProcessAndNoLink) {
+  WallRun run("sigkill", {"--frames", "100000", "--refresh", "60", "--path", "both"});
+  ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
+  ASSERT_EQ(run.vizservers().size(), 1u) << run.output();
+  ASSERT_EQ(kill(run.pid(), SIGKILL), 0);
+  EXPECT_EQ(run.wait(10s).signal, SIGKILL);
+  const auto deadline = std::chrono::steady_clock::now() + kFaultNoticeBound;
+  while ((!run.processes_naming("").empty() || !run.leftover_segments().empty()) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(20ms);
   expect_clean(run);
 }
 
