@@ -118,9 +118,9 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
                            totals.noise_bytes, totals.dropped_readies);
   }
   for (std::size_t i = 0; i < logs.size(); ++i) {
-    summary += fmt::format("back-channel host {}: {}\n", i,
-                           logs[i].done.empty() ? "no totals (stopped before its last frame)"
-                                               : logs[i].done);
+    summary += fmt::format(
+        "back-channel host {}: {}\n", i,
+        logs[i].done.empty() ? "no totals (stopped before its last frame)" : logs[i].done);
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());
