@@ -14,6 +14,7 @@
 #include "pipeserver/pipeserver.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "vizserver/socket.hpp"
 
 namespace {
 
@@ -155,6 +156,9 @@ int main(int argc, char** argv) {
     live_options.scene_options = o.scene_options;
     try {
       return l2::run_live_host(live_options);
+    } catch (const l2::viz::VizError& e) {
+      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+      return l2::kExitLostCompositingServer;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
       return 1;

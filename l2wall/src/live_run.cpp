@@ -20,6 +20,7 @@
 #include "dvi_side.hpp"
 #include "host_set.hpp"
 #include "live_show.hpp"
+#include "pipeserver/live_exit.hpp"
 #include "run_fault.hpp"
 #include "run_pictures.hpp"
 #include "run_report.hpp"
@@ -259,16 +260,32 @@ class LiveRun {
   // When one process fails the others lose their connection to it and end too; name the cause.
   // A process killed by a signal is never such an effect. A compositing server that died
   // without saying why is the cause of the pipeservers losing it; one that said why (a
-  // pipeserver disconnected) is an effect, its words name the host.
+  // pipeserver disconnected) is an effect, its words name the host. One still running that a
+  // pipeserver gave up on hangs: it is named, not the pipeserver.
   std::string blame() {
     if (viz_) viz_->settle(milliseconds(300));
     if (Host* killed = hosts_.killed_by_signal())
       return hosts_.describe_end(*killed, displays_kept());
     if (viz_ && viz_->down() && !viz_->said_why())
       return viz_->describe_down(shown_, displays_kept());
-    if (Host* ended = hosts_.poll_ended()) return hosts_.describe_end(*ended, displays_kept());
+    if (Host* ended = hosts_.poll_ended()) {
+      if (lost_a_running_server(*ended)) {
+        return fmt::format(
+            "the compositing server (vizserver pid {}) stopped answering: pipeserver {} gave up "
+            "waiting for it at frame {}; {}",
+            viz_->pid(), ended->server, shown_, displays_kept());
+      }
+      return hosts_.describe_end(*ended, displays_kept());
+    }
     return viz_ ? viz_->describe_down(shown_, displays_kept())
                 : std::string("a process of the run ended");
+  }
+
+  // A host that gave up on a compositing server which is still running: the server hangs (a
+  // host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout).
+  bool lost_a_running_server(const Host& h) const {
+    return viz_ && !viz_->down() && h.exit && h.exit->signal == 0 &&
+           h.exit->code == kExitLostCompositingServer;
   }
 
   void check_stall() {

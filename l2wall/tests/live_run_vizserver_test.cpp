@@ -1,7 +1,8 @@
 // `l2wall run` and its compositing server, a `vizserver` process of its own: it listens where
 // --viz-host and --viz-port say; killed with SIGKILL on the vizserver path alone and on both
 // paths, or unable to bind --viz-port, it is named with the frame, the run keeps the displays it
-// has, leaves no process or shm segment behind and exits non-zero. Real processes and sockets.
+// has, leaves no process or shm segment behind and exits non-zero; stopped (hung), it is named
+// rather than the pipeservers that gave up on it. Real processes and sockets.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -90,6 +91,28 @@ TEST_P(KilledVizserver, IsNamedWithItsFrameAndEverythingIsCleanedUp) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, KilledVizserver, ::testing::Values("vizserver", "both"));
+
+// A compositing server that hangs (stopped, its socket open): the pipeservers give up waiting
+// for SWAPPED (ready-timeout x retries) and exit with "lost the compositing server"; the run
+// names the server, not them. The stall timeout is set long so that only this can fire.
+TEST(LiveRun, HungCompositingServerIsNamedNotThePipeserversThatGaveUp) {
+  WallRun run("viz-hung", {"--frames", "100000", "--path", "vizserver", "--keep", "3",
+                           "--ready-timeout", "500", "--stall-timeout", "60000"});
+  const pid_t server = vizserver_after(run, 3, "wall.png");
+  ASSERT_GT(server, 0) << run.output();
+  ASSERT_EQ(kill(server, SIGSTOP), 0);
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find(fmt::format("l2wall: the compositing server (vizserver pid {}) stopped "
+                                    "answering: pipeserver ",
+                                    server)),
+            std::string::npos)
+      << output;
+  EXPECT_NE(output.find("gave up waiting for it at frame "), std::string::npos) << output;
+  EXPECT_EQ(output.find("exited with code"), std::string::npos) << output;
+  expect_clean(run);  // a stopped process still ends on SIGKILL
+}
 
 TEST(LiveRun, AVizPortInUseIsNamedAndNothingIsLeft) {
   const HeldPort held;  // as another program would

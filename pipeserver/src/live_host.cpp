@@ -123,7 +123,7 @@ int run_live_host(const LiveHostOptions& o) {
       retries = r.retries;
       if (!r.ok()) {
         std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
-        return 3;
+        return kExitNoReady;
       }
     }
     // The compositing server's SWAPPED paces the vizserver path (alone, instead of READY). With
@@ -144,7 +144,7 @@ int run_live_host(const LiveHostOptions& o) {
     if (!r.ok()) {
       std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.server, o.frames - 1,
                    r.error.c_str());
-      return 3;
+      return kExitNoReady;
     }
   }
   if (o.frames > 0 && sender) {

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "pipeserver/live_exit.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2 {
@@ -27,7 +28,8 @@ struct LiveHostOptions {
 // R low byte), so the run can tell from the displays which frame they show.
 inline constexpr int kStampBits = 24;
 
-// Returns the process exit code: 0 on success, 3 when READY never came (message on stderr).
+// Returns the process exit code: 0 on success, kExitNoReady when READY never came (message on
+// stderr). Throws viz::VizError when the compositing server is lost (kExitLostCompositingServer).
 int run_live_host(const LiveHostOptions& options);
 
 }  // namespace l2

@@ -1,0 +1,13 @@
+// Exit codes of `pipeserver --live` beyond 0 (done), 1 (failed) and 2 (usage). `l2wall run`
+// reads them to tell a cause from an effect when a run fails.
+#pragma once
+
+namespace l2 {
+
+// READY never came on the serial back-channel (after the retries with SYNC?).
+inline constexpr int kExitNoReady = 3;
+// The compositing server could not be reached, closed the connection, reported an error or
+// stopped answering (no SWAPPED in time): the host lost it, it did not fail by itself.
+inline constexpr int kExitLostCompositingServer = 4;
+
+}  // namespace l2
