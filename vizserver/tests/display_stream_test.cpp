@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -136,11 +137,30 @@ TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {
   EXPECT_FALSE(watcher.ended_with_error_message());
 }
 
+// The most a TCP send buffer may grow to here (autotuning's limit, tcp_wmem's third field).
+std::size_t send_buffer_limit() {
+  std::ifstream in("/proc/sys/net/ipv4/tcp_wmem");
+  std::size_t min = 0, initial = 0, max = 0;
+  in >> min >> initial >> max;
+  return max > 0 ? max : 4u << 20;
+}
+
 TEST(DisplayStream, ASlowWatcherHoldsTheSenderBack) {
-  // 3 MB frames: more than the socket buffers can hide, so only flow control explains a
-  // sender that stays a few frames ahead.
+  // 3 MB frames. The receive buffer is fixed small: left to autotuning it may grow to
+  // tcp_rmem's limit (32 MB here, ten frames), which hid the flow control in a CI run.
   const std::vector<std::pair<int, int>> sizes{{1024, 1024}};
+  const std::size_t frame_bytes = 1024u * 1024u * 3u;
   StreamPair p;
+  const int wanted = 256 << 10;
+  ASSERT_EQ(setsockopt(p.accepted.get(), SOL_SOCKET, SO_RCVBUF, &wanted, sizeof wanted), 0);
+  int receive_buffer = 0;
+  socklen_t length = sizeof receive_buffer;
+  ASSERT_EQ(getsockopt(p.accepted.get(), SOL_SOCKET, SO_RCVBUF, &receive_buffer, &length), 0);
+  // What may be ahead of the watcher's takes: the 2 frames it holds, what both socket buffers
+  // can hold (rounded up to whole frames), and the frame the sender is in the middle of.
+  const std::size_t buffered = static_cast<std::size_t>(receive_buffer) + send_buffer_limit();
+  const int bound = 2 + static_cast<int>((buffered + frame_bytes - 1) / frame_bytes) + 1;
+  ASSERT_LT(bound, 12) << "the buffers alone could hold every frame: nothing to show";
   std::atomic<int> sent{0};
   std::thread server([&] {
     const ComposedFrame f = make_frame(0, sizes);
@@ -161,8 +181,8 @@ TEST(DisplayStream, ASlowWatcherHoldsTheSenderBack) {
     if (ahead == before && ahead >= 2) break;
   }
   EXPECT_GE(ahead, 2);
-  EXPECT_LE(ahead, 6) << "the watcher holds 2 frames, the socket buffers a few; the rest must "
-                         "wait for it";
+  EXPECT_LE(ahead, bound) << "the watcher holds 2 frames, the socket buffers " << buffered / 1024
+                          << " KiB; the rest must wait for it";
   for (std::uint32_t k = 0; k < 12; ++k) EXPECT_TRUE(watcher.take(k, 5000ms)) << "frame " << k;
   server.join();
   EXPECT_EQ(sent.load(), 12);
