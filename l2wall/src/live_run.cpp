@@ -271,9 +271,9 @@ class LiveRun {
     if (Host* ended = hosts_.poll_ended()) {
       if (lost_a_running_server(*ended)) {
         return fmt::format(
-            "the compositing server (vizserver pid {}) stopped answering: pipeserver {} gave up "
-            "waiting for it at frame {}; {}",
-            viz_->pid(), ended->server, shown_, displays_kept());
+            "the {} stopped answering: pipeserver {} gave up waiting for it at "
+            "frame {}; {}",
+            viz_->name(), ended->server, shown_, displays_kept());
       }
       return hosts_.describe_end(*ended, displays_kept());
     }
@@ -284,8 +284,7 @@ class LiveRun {
   // A host that gave up on a compositing server which is still running: the server hangs (a
   // host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout).
   bool lost_a_running_server(const Host& h) const {
-    return viz_ && !viz_->down() && h.exit && h.exit->signal == 0 &&
-           h.exit->code == kExitLostCompositingServer;
+    return viz_ && !viz_->down() && h.exit && h.exit->code == kExitLostCompositingServer;
   }
 
   void check_stall() {
@@ -296,8 +295,7 @@ class LiveRun {
     // A host that has not delivered the frame the displays wait for is the one that hangs; if
     // every host delivered it, the compositing server did not.
     std::string culprits = hosts_.late_hosts(shown_);
-    if (culprits.empty() && viz_)
-      culprits = fmt::format("the compositing server (vizserver pid {})", viz_->pid());
+    if (culprits.empty() && viz_) culprits = "the " + viz_->name();
     throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}; {}",
                                limit_ms, culprits.empty() ? "no host" : culprits, shown_,
                                displays_kept()));

@@ -38,12 +38,16 @@ VizSide::VizSide(const VizLaunch& launch) : host_(launch.host) {
   accept_stream(listener, launch);
 }
 
+std::string VizSide::name() const {
+  return fmt::format("compositing server (vizserver pid {})", pid());
+}
+
 VizSide::~VizSide() {
   shut_down();
 }
 
 void VizSide::accept_stream(const viz::Fd& listener, const VizLaunch& launch) {
-  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  const std::string who = name();
   const auto deadline = RunClock::now() + launch.start_timeout;
   viz::Fd stream;
   while (!stream) {
@@ -112,7 +116,7 @@ bool VizSide::said_why() const {
 }
 
 std::string VizSide::describe_down(int shown, const std::string& keep) const {
-  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  const std::string who = name();
   if (said_why()) {
     return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(), keep);
   }
@@ -124,7 +128,7 @@ std::string VizSide::describe_down(int shown, const std::string& keep) const {
 }
 
 void VizSide::finish(milliseconds timeout) {
-  const std::string who = fmt::format("compositing server (vizserver pid {})", pid());
+  const std::string who = name();
   if (!exit_) exit_ = process_->wait_for(timeout);
   if (!exit_) throw RunFault(who + " did not end after the last frame");
   if (!exit_->ok())

@@ -44,6 +44,8 @@ class VizSide {
   // HOST:PORT for the pipeservers (127.0.0.1 when it listens on every interface).
   std::string address() const;
   pid_t pid() const { return process_ ? process_->pid() : -1; }
+  // "compositing server (vizserver pid 4242)": how every message of the run names it.
+  std::string name() const;
 
   // The displays of frame `frame` once the server swapped it; nullptr when not yet within
   // `timeout`, or when the stream ended or broke (then down() is true). Asking again for the

@@ -31,27 +31,16 @@ inline void move(std::uint8_t* dst, const std::uint8_t* src) {
   std::memcpy(dst, bytes, N);
 }
 
-// Fewer than 64 bytes (the partial lines at a strip's ends): two moves of the largest power of
-// two that fits, overlapping in the middle. Inline and branch-light, where a memcpy call of a
-// size known only at run time costs several times as many instructions.
+// Fewer than 2 * N bytes (N = 32: the partial lines at a strip's ends): two moves of the
+// largest power of two that fits, overlapping in the middle. Inline and branch-light, where a
+// memcpy call of a size known only at run time costs several times as many instructions.
+template <std::size_t N = 32>
 inline void copy_short(std::uint8_t* dst, const std::uint8_t* src, std::size_t n) {
-  if (n >= 32) {
-    move<32>(dst, src);
-    move<32>(dst + n - 32, src + n - 32);
-  } else if (n >= 16) {
-    move<16>(dst, src);
-    move<16>(dst + n - 16, src + n - 16);
-  } else if (n >= 8) {
-    move<8>(dst, src);
-    move<8>(dst + n - 8, src + n - 8);
-  } else if (n >= 4) {
-    move<4>(dst, src);
-    move<4>(dst + n - 4, src + n - 4);
-  } else if (n >= 2) {
-    move<2>(dst, src);
-    move<2>(dst + n - 2, src + n - 2);
-  } else if (n == 1) {
-    *dst = *src;
+  if (n >= N) {
+    move<N>(dst, src);
+    move<N>(dst + n - N, src + n - N);
+  } else if constexpr (N > 1) {
+    copy_short<N / 2>(dst, src, n);
   }
 }
 

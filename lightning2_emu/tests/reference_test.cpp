@@ -171,15 +171,9 @@ HeldFrame hold(const RgbImage& rgb, int bytes_per_pixel, bool bottom_up, int pad
 void colour_strips(RgbImage& rgb, int input) {
   for (int y = 0; y < rgb.height(); ++y) {
     StripErrorCounts ignored;
-    std::uint8_t* row = rgb.row(y).data();
-    parse_scanline(row, rgb.width(), 3, ignored, [&](const ParsedStrip& s) {
-      for (int k = 0; k < s.length; ++k) {
-        const Rgb c = testing::pattern(input + 100, s.source_x + k, y);
-        std::uint8_t* p = row + (s.source_x + k) * 3;
-        p[0] = c.r;
-        p[1] = c.g;
-        p[2] = c.b;
-      }
+    parse_scanline(rgb.row(y).data(), rgb.width(), 3, ignored, [&](const ParsedStrip& s) {
+      for (int x = s.source_x; x < s.source_x + s.length; ++x)
+        rgb.set(x, y, testing::pattern(input + 100, x, y));
     });
   }
 }
