@@ -9,6 +9,7 @@
 // every header it repeats is clean (see kNever).
 #include <algorithm>
 
+#include "pixel_copy.hpp"
 #include "router_detail.hpp"
 #include "strip_headers/scanline_parser.hpp"
 
@@ -167,10 +168,10 @@ class Scanner {
   void prefetch_headers(int y) const {
     if (y >= f_.height) return;
     const std::uint8_t* row = f_.row(y);
-    __builtin_prefetch(row, 0, 3);
+    pixel_copy::prefetch_line(row);
     const std::size_t n = std::min<std::size_t>(in_.seen.size(), kTracked);
     for (std::size_t k = 0; k < n; ++k) {
-      __builtin_prefetch(row + in_.seen[k].x * f_.bytes_per_pixel, 0, 3);
+      pixel_copy::prefetch_line(row + in_.seen[k].x * f_.bytes_per_pixel);
     }
   }
 
