@@ -104,9 +104,9 @@ inline void fill_pixels(std::uint8_t* dst, int pixels, Rgb c) {
 
 // Asks for the line holding p, to be read soon, into every cache level: a non-temporal
 // prefetch fills only the first level, whose few miss buffers then cap how many lines are in
-// flight (measured slower). GCC 12 takes a function that does nothing but __builtin_prefetch
-// for one without effect and deletes its calls (it did so to the scanner's header prefetches,
-// which were never executed); a volatile asm statement is never deleted.
+// flight (measured slower). GCC 12 took the scanner's prefetch_headers(), whose only work was
+// __builtin_prefetch in a loop, for a function without effect and deleted its calls: the header
+// prefetches were never executed. A volatile asm statement is never deleted.
 inline void prefetch_line(const std::uint8_t* p) {
 #if defined(__x86_64__) || defined(__i386__)
   asm volatile("prefetcht0 %0" : : "m"(*p));
