@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace l2 {
+namespace {
 
 using nlohmann::json;
 
@@ -103,11 +105,43 @@ json to_json(const RunReport& r) {
           {"groups", groups}};
 }
 
+// Pretty-printed.
 void write_json(const std::filesystem::path& path, const json& j) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path);
   out << j.dump(2) << '\n';
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
+}
+
+}  // namespace
+
+void write_route_report(const std::filesystem::path& path, const RouteReport& report,
+                        const Mesh& mesh, const std::vector<std::string>& input_files) {
+  json j = to_json(report);
+  j["mesh"] = {{"rows", mesh.rows()},
+               {"columns", mesh.columns()},
+               {"inputs", mesh.input_count()},
+               {"displays", mesh.display_count()},
+               {"board_max", fmt::format("{}x{}", mesh.limit().width, mesh.limit().height)}};
+  j["input_files"] = input_files;
+  write_json(path, j);
+}
+
+struct SequenceReport::TickLog {
+  json ticks = json::array();
+};
+
+SequenceReport::SequenceReport() : ticks_(std::make_unique<TickLog>()) {}
+SequenceReport::~SequenceReport() = default;
+
+void SequenceReport::add(const Emulator::Tick& tick) {
+  ticks_->ticks.push_back(to_json(tick));
+}
+
+void SequenceReport::write(const std::filesystem::path& path, const RunReport& run) const {
+  json j = to_json(run);
+  j["tick_log"] = ticks_->ticks;
+  write_json(path, j);
 }
 
 }  // namespace l2

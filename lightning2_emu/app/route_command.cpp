@@ -35,14 +35,7 @@ int run_route(const CommonOptions& o) {
   }
   if (setup.from_wall) write_png(o.out / "wall.png", compose_wall(setup, by_id));
 
-  nlohmann::json json = to_json(report);
-  json["mesh"] = {{"rows", mesh.rows()},
-                  {"columns", mesh.columns()},
-                  {"inputs", mesh.input_count()},
-                  {"displays", mesh.display_count()},
-                  {"board_max", fmt::format("{}x{}", mesh.limit().width, mesh.limit().height)}};
-  json["input_files"] = o.inputs;
-  write_json(o.out / "report.json", json);
+  write_route_report(o.out / "report.json", report, mesh, o.inputs);
 
   const StripErrorCounts errors = report.errors();
   fmt::print("routed {} inputs to {} displays ({}); {} strip errors; wrote {}\n", frames.size(),

@@ -30,7 +30,7 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   if (!show.mode.empty()) screen = std::make_unique<SequenceShow>(o, setup, show);
   std::vector<RgbImage> images(inputs.size());
   std::vector<InputFrame> frames(inputs.size());
-  nlohmann::json log = nlohmann::json::array();
+  SequenceReport log;
   for (int t = 0; t < ticks; ++t) {
     // A DVI link keeps scanning out the last framebuffer: an input past its last file repeats
     // it. Only the current frame of each input is held.
@@ -44,7 +44,7 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
       }
     }
     const Emulator::Tick& tick = emulator.tick(frames);
-    log.push_back(to_json(tick));
+    log.add(tick);
     std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
     for (const DisplaySpec& d : setup.config.displays) {
       by_id[d.id] = &emulator.shown(d.id);
@@ -56,9 +56,7 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
     }
     if (screen && !screen->play(t, by_id)) break;  // q / Esc: the sequence ends here
   }
-  nlohmann::json json = to_json(emulator.report());
-  json["tick_log"] = log;
-  write_json(o.out / "report.json", json);
+  log.write(o.out / "report.json", emulator.report());
   const RunReport& r = emulator.report();
   fmt::print("{} refreshes of {} inputs: {} new, {} repeated, {} torn, {} idle frames; wrote {}\n",
              r.ticks, inputs.size(), r.frames(FrameKind::New), r.frames(FrameKind::Repeat),
