@@ -7,10 +7,10 @@ file(WRITE ${CMAKE_BINARY_DIR}/l2_code_pch.cpp "// the precompiled header's own 
 add_library(l2_code_pch STATIC ${CMAKE_BINARY_DIR}/l2_code_pch.cpp)
 l2_warnings(l2_code_pch)
 target_link_libraries(l2_code_pch PUBLIC fmt::fmt)
-target_precompile_headers(l2_code_pch PRIVATE <fmt/format.h> <algorithm> <array> <chrono>
-                          <cstdint> <cstring> <filesystem> <fstream> <functional> <memory>
-                          <optional> <span> <stdexcept> <string> <string_view> <thread>
-                          <vector>)
+target_precompile_headers(l2_code_pch PRIVATE ${CMAKE_CURRENT_LIST_DIR}/pch_prelude.hpp
+                          <fmt/format.h> <algorithm> <array> <chrono> <cstdint> <cstring>
+                          <filesystem> <fstream> <functional> <memory> <optional> <span>
+                          <stdexcept> <string> <string_view> <thread> <vector>)
 
 # Gives every library and program defined in the listed folders the shared precompiled header
 # (targets with one of their own, the tests, are left as they are).

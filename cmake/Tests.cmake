@@ -11,7 +11,8 @@ add_library(l2_test_pch STATIC ${CMAKE_BINARY_DIR}/l2_test_pch.cpp)
 l2_warnings(l2_test_pch)
 target_compile_options(l2_test_pch PRIVATE ${l2_light_code_flags})
 target_link_libraries(l2_test_pch PUBLIC GTest::gtest GTest::gmock fmt::fmt)
-target_precompile_headers(l2_test_pch PRIVATE <gtest/gtest.h> <gmock/gmock.h> <fmt/format.h>
+target_precompile_headers(l2_test_pch PRIVATE ${CMAKE_CURRENT_LIST_DIR}/pch_prelude.hpp
+                          <gtest/gtest.h> <gmock/gmock.h> <fmt/format.h>
                           <algorithm> <chrono> <cstdint> <cstring> <filesystem> <fstream>
                           <memory> <optional> <stdexcept> <string> <thread> <vector>)
 
