@@ -4,6 +4,8 @@
 #include <signal.h>
 
 #include <chrono>
+#include <fstream>
+#include <string>
 #include <thread>
 
 namespace l2 {
@@ -13,6 +15,29 @@ using namespace std::chrono_literals;
 
 bool process_exists(pid_t pid) {
   return kill(pid, 0) == 0;
+}
+
+// True once the process ignores SIGTERM: bit 15 of the SigIgn mask in /proc/PID/status.
+bool ignores_sigterm(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("SigIgn:", 0) == 0) {
+      return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1) & 1) != 0;
+    }
+  }
+  return false;
+}
+
+// A shell that ignores SIGTERM, returned once it does: a SIGTERM sent before its trap was set
+// would end it, and the test would fail for the wrong reason.
+ChildProcess stubborn_child() {
+  ChildProcess p({"/bin/sh", "-c", "trap '' TERM; while :; do sleep 0.05; done"});
+  const auto give_up = std::chrono::steady_clock::now() + 5s;
+  while (!ignores_sigterm(p.pid()) && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(5ms);
+  }
+  EXPECT_TRUE(ignores_sigterm(p.pid())) << "the shell did not set its trap within 5 s";
+  return p;
 }
 
 TEST(ChildProcess, ReportsExitCode) {
@@ -32,8 +57,7 @@ TEST(ChildProcess, PollDoesNotBlockWhileRunning) {
 
 TEST(ChildProcess, TerminateEndsAndReapsAStubbornChild) {
   // The child ignores SIGTERM, so only the SIGKILL after the grace period ends it.
-  ChildProcess p({"/bin/sh", "-c", "trap '' TERM; while :; do sleep 0.05; done"});
-  std::this_thread::sleep_for(100ms);
+  ChildProcess p = stubborn_child();
   const pid_t pid = p.pid();
   const ExitStatus s = p.terminate(200ms);
   EXPECT_EQ(s.signal, SIGKILL);
@@ -44,8 +68,7 @@ TEST(ChildProcess, TerminateEndsAndReapsAStubbornChild) {
 TEST(ChildProcess, RequestStopAsksWithoutWaiting) {
   // A child that ignores SIGTERM: a request_stop that waited for the end (as terminate does)
   // would return only after a grace period, or leave it ended.
-  ChildProcess p({"/bin/sh", "-c", "trap '' TERM; while :; do sleep 0.05; done"});
-  std::this_thread::sleep_for(100ms);  // the trap is set
+  ChildProcess p = stubborn_child();
   p.request_stop();
   EXPECT_FALSE(p.poll()) << "request_stop waited for, or forced, the end";
   EXPECT_TRUE(process_exists(p.pid()));
