@@ -17,8 +17,8 @@ target_precompile_headers(l2_test_pch PRIVATE ${CMAKE_CURRENT_LIST_DIR}/pch_prel
                           <memory> <optional> <stdexcept> <string> <thread> <vector>)
 
 # A GoogleTest executable registered with CTest as ONE test. Registering every test case as its
-# own process cost about a second each (every binary loads OpenImageIO and its codecs), which
-# tripled the suite; gtest still names each failing case in the output. LABELS ("asan",
+# own process cost about a second each (every binary then loaded OpenImageIO and its codecs at
+# start; now only on its first picture, image/src/png_codec.hpp), which tripled the suite; gtest still names each failing case in the output. LABELS ("asan",
 # "tsan") choose the sanitizer runs the executable takes part in.
 function(l2_gtest name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})

@@ -1,49 +1,51 @@
 #include "image/png_io.hpp"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "png_codec.hpp"
 
 namespace l2 {
 
-namespace OIIO = OIIO_NAMESPACE;
+namespace {
+
+// The codec module, loaded once per process (png_codec.hpp says why it is not linked) from where
+// the build put it. When it cannot be loaded every picture is an error that says why.
+const png_codec::Codec& codec(const std::filesystem::path& picture) {
+  static const auto loaded = []() -> std::pair<const png_codec::Codec*, std::string> {
+    const char* const file = L2_PNG_CODEC_MODULE;
+    void* module = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);  // never closed
+    if (!module) return {nullptr, std::string("cannot load the image codec: ") + ::dlerror()};
+    auto entry = reinterpret_cast<png_codec::EntryPoint>(::dlsym(module, png_codec::kEntryPoint));
+    if (!entry) return {nullptr, std::string(file) + " has no " + png_codec::kEntryPoint};
+    return {entry(), {}};
+  }();
+  if (!loaded.first) throw std::runtime_error(picture.string() + ": " + loaded.second);
+  return *loaded.first;
+}
+
+void check(const std::filesystem::path& path, const std::string& error) {
+  if (!error.empty()) throw std::runtime_error(path.string() + ": " + error);
+}
+
+}  // namespace
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) throw std::runtime_error(path.string() + ": cannot write: " + OIIO::geterror());
-  const OIIO::ImageSpec spec(image.width(), image.height(), RgbImage::kChannels,
-                             OIIO::TypeDesc::UINT8);
-  if (!out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.data()) ||
-      !out->close()) {
-    throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
-  }
+  check(path, codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data()));
 }
 
 RgbImage read_png(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw std::runtime_error(path.string() + ": cannot read: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) {
-    throw std::runtime_error(path.string() + ": not an image with pixels");
-  }
-  const int channels = spec.nchannels;
-  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
-    throw std::runtime_error(path.string() + ": cannot read: " + in->geterror());
-  }
-  RgbImage image(spec.width, spec.height);
-  std::uint8_t* dst = image.data();
-  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint8_t* src = pixels.data() + i * channels;
-    dst[i * 3 + 0] = src[0];
-    dst[i * 3 + 1] = channels >= 3 ? src[1] : src[0];
-    dst[i * 3 + 2] = channels >= 3 ? src[2] : src[0];
-  }
+  RgbImage image;
+  const png_codec::RgbSink sink{&image, [](void* context, int width, int height) {
+                                  auto& out = *static_cast<RgbImage*>(context);
+                                  out = RgbImage(width, height);
+                                  return out.data();
+                                }};
+  check(path, codec(path).read_rgb(path.c_str(), sink));
   return image;
 }
 

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace l2 {
 namespace {
@@ -39,6 +42,37 @@ TEST(PngIo, GarbageFileIsAnErrorNotACrash) {
   const auto path = temp_dir() / "garbage.png";
   std::ofstream(path) << "this is not a png";
   EXPECT_THROW(read_png(path), std::runtime_error);
+}
+
+// Whether a shared library whose file name contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  for (std::string line; std::getline(maps, line);) {
+    if (line.find(name) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// OpenImageIO costs half a second of start-up; a process pays for it on its first picture only.
+// A "threadsafe" death test runs its statement in a fresh process (this binary, executed again),
+// where no picture has been read or written yet.
+TEST(PngIoDeathTest, OpenImageIOIsLoadedOnTheFirstPictureOnly) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto path = temp_dir() / "first.png";
+  EXPECT_EXIT(
+      {
+        if (mapped("libOpenImageIO")) {
+          std::fputs("OpenImageIO was loaded before any picture\n", stderr);
+          std::exit(1);
+        }
+        write_png(path, RgbImage(3, 2, {1, 2, 3}));
+        if (!mapped("libOpenImageIO")) {
+          std::fputs("OpenImageIO not loaded after writing a picture\n", stderr);
+          std::exit(2);
+        }
+        std::exit(read_png(path) == RgbImage(3, 2, {1, 2, 3}) ? 0 : 3);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

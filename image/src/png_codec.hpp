@@ -1,0 +1,33 @@
+// The boundary between png_io.cpp and the image codec module it loads on first use
+// (png_codec_oiio.cpp, built as l2_png_oiio). OpenImageIO pulls in some 260 shared libraries
+// (OpenCV, OpenVDB, FFmpeg, GStreamer...) whose relocations cost every process that links it
+// about half a second of CPU at start, before main(); most runs of our programs (a pipeserver in a
+// live wall, --help, a parse error) never touch an image file. So only the module links
+// OpenImageIO, and a process pays for it when it first reads or writes a picture.
+//
+// The module is built from the same sources with the same compiler, so standard types cross.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace l2::png_codec {
+
+// Where read_rgb() puts the pixels: asked once for a width x height 8-bit RGB buffer with
+// contiguous rows.
+struct RgbSink {
+  void* context;
+  std::uint8_t* (*allocate)(void* context, int width, int height);
+};
+
+// Each returns an empty string on success, otherwise the reason (without the file's name).
+struct Codec {
+  std::string (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
+  std::string (*read_rgb)(const char* path, RgbSink sink);
+};
+
+// The module's one exported symbol: a function returning its Codec.
+inline constexpr const char* kEntryPoint = "l2_png_codec";
+using EntryPoint = const Codec* (*)();
+
+}  // namespace l2::png_codec

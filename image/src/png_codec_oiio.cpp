@@ -1,0 +1,57 @@
+// The image codec module (png_codec.hpp): PNG (and whatever else OpenImageIO reads) to and from
+// 8-bit RGB. Loaded by png_io.cpp; no exception leaves it.
+#include <OpenImageIO/imageio.h>
+
+#include <exception>
+#include <vector>
+
+#include "png_codec.hpp"
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+using l2::png_codec::RgbSink;
+
+std::string write_rgb(const char* path, int width, int height, const std::uint8_t* rgb) try {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return "cannot write: " + OIIO::geterror();
+  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb) || !out->close()) {
+    return "cannot write: " + out->geterror();
+  }
+  return {};
+} catch (const std::exception& e) {
+  return std::string("cannot write: ") + e.what();
+}
+
+// An alpha channel is dropped, as a DVI link drops it (spec §1); grey is expanded to RGB.
+std::string read_rgb(const char* path, RgbSink sink) try {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return "cannot read: " + OIIO::geterror();
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) return "not an image with pixels";
+  const int channels = spec.nchannels;
+  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
+  std::vector<std::uint8_t> pixels(count * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
+    return "cannot read: " + in->geterror();
+  }
+  std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint8_t* src = pixels.data() + i * channels;
+    dst[i * 3 + 0] = src[0];
+    dst[i * 3 + 1] = channels >= 3 ? src[1] : src[0];
+    dst[i * 3 + 2] = channels >= 3 ? src[2] : src[0];
+  }
+  return {};
+} catch (const std::exception& e) {
+  return std::string("cannot read: ") + e.what();
+}
+
+constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec() {
+  return &kCodec;
+}
