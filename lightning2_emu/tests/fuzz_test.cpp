@@ -13,16 +13,16 @@
 namespace l2 {
 namespace {
 
-struct Case {
+struct FuzzCase {
   std::vector<DisplaySpec> displays;
   std::vector<RgbImage> frames;
 };
 
 // Valid packed frames, then mutated: random bytes, valid-looking headers with random fields,
 // and strips redirected outside the displays.
-Case make_case(std::mt19937& rng) {
+FuzzCase make_fuzz_case(std::mt19937& rng) {
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  Case c;
+  FuzzCase c;
   const int displays = uni(1, 4);
   for (int d = 0; d < displays; ++d) {
     c.displays.push_back({d * 2, uni(1, 90), uni(1, 40), uni(0, 1)});
@@ -67,7 +67,7 @@ TEST(Fuzz, RandomAndMutatedFramesAreRoutedSafelyAndIdenticallyInParallel) {
   int cases = 0;
   StripErrorCounts seen;
   for (; cases < 3000 && std::chrono::steady_clock::now() < deadline; ++cases) {
-    const Case c = make_case(rng);
+    const FuzzCase c = make_fuzz_case(rng);
     std::vector<InputFrame> views;
     for (const RgbImage& f : c.frames) views.push_back(InputFrame::of(f));
     Router a(Mesh(1, 1, {160, 48}), c.displays, serial, {7, 8, 9});
@@ -101,7 +101,7 @@ TEST(Fuzz, RandomAndMutatedFramesAreRoutedSafelyAndIdenticallyInParallel) {
 TEST(Fuzz, EmulatorSurvivesRandomSequences) {
   std::mt19937 rng(7);
   for (int run = 0; run < 40; ++run) {
-    Case c = make_case(rng);
+    FuzzCase c = make_fuzz_case(rng);
     EmulatorConfig config;
     config.mesh = Mesh(1, 1, {160, 48});
     config.displays = c.displays;
@@ -111,7 +111,7 @@ TEST(Fuzz, EmulatorSurvivesRandomSequences) {
     for (int t = 0; t < 12; ++t) {
       if (rng() % 3 == 0)
         c = [&] {
-          Case n = make_case(rng);
+          FuzzCase n = make_fuzz_case(rng);
           n.displays = c.displays;
           return n;
         }();

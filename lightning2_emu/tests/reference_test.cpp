@@ -178,16 +178,16 @@ void colour_strips(RgbImage& rgb, int input) {
   }
 }
 
-struct Case {
+struct ReferenceCase {
   std::vector<DisplaySpec> displays;
   std::vector<HeldFrame> frames;  // an empty one: no signal
 };
 
 // Tiles from a few displays, overlapping and sometimes leaving the display, packed per §4 and
 // a few bytes flipped now and then.
-Case make_case(std::mt19937& rng) {
+ReferenceCase make_reference_case(std::mt19937& rng) {
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  Case c;
+  ReferenceCase c;
   for (int d = uni(1, 3); d > 0; --d) {
     // Some displays tall enough to have many bands of rows, so runs cross band edges.
     c.displays.push_back({static_cast<int>(c.displays.size()) * 3, uni(1, 300),
@@ -235,7 +235,7 @@ TEST(Reference, RouterMatchesThePixelByPixelReference) {
   std::uint64_t overdrawn = 0, multi_write_frames = 0;
   // Two seconds' worth of cases, but never fewer than 40 (sanitizer builds on a busy machine).
   for (; cases < 1500 && (cases < 40 || std::chrono::steady_clock::now() < deadline); ++cases) {
-    const Case c = make_case(rng);
+    const ReferenceCase c = make_reference_case(rng);
     std::vector<InputFrame> views;
     for (const HeldFrame& f : c.frames) views.push_back(f.bytes.empty() ? InputFrame{} : f.view);
     Router router(Mesh(1, 1, {320, 96}), c.displays, pool, background);

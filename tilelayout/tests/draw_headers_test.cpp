@@ -7,7 +7,7 @@
 namespace l2 {
 namespace {
 
-DisplayTile tile(int display, int dx, int dy, int w, int h) {
+DisplayTile drawn_tile(int display, int dx, int dy, int w, int h) {
   DisplayTile t;
   t.display = display;
   t.on_display = {dx, dy, w, h};
@@ -26,8 +26,9 @@ constexpr Rgb kPaint{7, 8, 9};
 // W = 20: row 0 holds A (5x3, display 2 at 10,100) at gap 0 and B (4x1, display 5 at 0,7) at
 // gap 7; 7+2+4 = 13 leaves 7 pixels for END. Row 1 (y = 3) holds C (18x2), which fills it.
 struct Fixture {
-  ServerPlan plan =
-      pack_tiles(0, 20, 8, {tile(2, 10, 100, 5, 3), tile(5, 0, 7, 4, 1), tile(1, 3, 4, 18, 2)});
+  ServerPlan plan = pack_tiles(
+      0, 20, 8,
+      {drawn_tile(2, 10, 100, 5, 3), drawn_tile(5, 0, 7, 4, 1), drawn_tile(1, 3, 4, 18, 2)});
   RgbImage fb{20, 8, kPaint};
 };
 
@@ -82,7 +83,7 @@ TEST(DrawHeaders, ParsedScanlinesRouteEveryTileRow) {
 
 TEST(DrawHeaders, OnePixelLeftGetsNoEnd) {
   // 2 + 7 = 9 of W = 10: one pixel remains, too few for a header; it stays untouched.
-  const ServerPlan plan = pack_tiles(0, 10, 1, {tile(0, 0, 0, 7, 1)});
+  const ServerPlan plan = pack_tiles(0, 10, 1, {drawn_tile(0, 0, 0, 7, 1)});
   RgbImage fb(10, 1, kPaint);
   draw_headers(plan, false, fb);
   EXPECT_EQ(fb.at(9, 0), kPaint);
