@@ -98,11 +98,10 @@ int run_live_host(const LiveHostOptions& o) {
       connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
-  RgbImage fb;
 
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
-    fb = ps.render_frame(k, *scene);
+    RgbImage& fb = ps.render_frame(k, *scene);
     stamp_frame(fb, plan, k);
     if (sender) send_tiles(*sender, fb, plan, k);
     if (link) {

@@ -36,7 +36,7 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
       gl_(plan_.fb_width, plan_.fb_height),
       frame_(plan_.fb_width, plan_.fb_height) {}
 
-const RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
+RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
   gl_.make_current();
   scene.set_frame(frame);
 

@@ -1,7 +1,8 @@
 // Scan-out (spec §1): the GL framebuffer (RGBA, rows bottom to top) becomes the 24-bit RGB frame
 // a DVI link carries (rows top to bottom, alpha dropped). A hot path: one pass per row, no
-// per-pixel calls; the destination is the caller's, so the live run can scan out straight into
-// shared memory.
+// per-pixel calls; the destination is the caller's, so it could be shared memory. (The live host
+// still scans out into the pipeserver's own frame and copies that into the DVI link, because
+// the stamp, the vizserver path and the headers work on an RgbImage.)
 #pragma once
 
 #include <cstdint>
