@@ -26,9 +26,10 @@ function(l2_reuse_code_pch)
         target_link_libraries(${target} PRIVATE fmt::fmt)
         # A library's files are compiled together (up to 8 per unit): each unit otherwise
         # re-instantiates what fmt and the standard library leave pending (0.5 s for an empty
-        # file with this header). Not the emulator's l2_emu: its hot-path objects are checked
-        # one by one (lightning2_emu_prefetch_emitted). Edge sources (own flags) stay separate.
-        if(type STREQUAL "STATIC_LIBRARY" AND NOT target STREQUAL "l2_emu")
+        # file with this header). A library that sets UNITY_BUILD itself keeps its choice; edge
+        # sources (own flags) stay separate.
+        get_property(unity_chosen TARGET ${target} PROPERTY UNITY_BUILD SET)
+        if(type STREQUAL "STATIC_LIBRARY" AND NOT unity_chosen)
           set_target_properties(${target} PROPERTIES UNITY_BUILD ON)
         endif()
       endif()
