@@ -1,6 +1,6 @@
 # Links with gold where the toolchain has it (Debian's binutils does): GNU ld took about 3 s to
-# link one of the larger programs with its debug information, gold 0.6 s, and the release build
-# links 43 programs and tests, three times in the suite (release, ASan, TSan). Without gold
+# link one of the larger programs with its debug information, gold 0.6 s; the release build
+# links 43 programs and tests, and the suite links two sanitizer builds besides. Without gold
 # the default linker is used.
 include(CheckLinkerFlag)
 check_linker_flag(CXX "-fuse-ld=gold" L2_HAVE_GOLD)
