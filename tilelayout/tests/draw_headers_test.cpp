@@ -1,18 +1,12 @@
 #include <gtest/gtest.h>
 
+#include "display_tile.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 namespace {
-
-DisplayTile drawn_tile(int display, int dx, int dy, int w, int h) {
-  DisplayTile t;
-  t.display = display;
-  t.on_display = {dx, dy, w, h};
-  return t;
-}
 
 StripHeader header_at(const RgbImage& fb, int x, int y) {
   const std::uint8_t* p = fb.row(y).data() + x * 3;
@@ -28,7 +22,7 @@ constexpr Rgb kPaint{7, 8, 9};
 struct Fixture {
   ServerPlan plan = pack_tiles(
       0, 20, 8,
-      {drawn_tile(2, 10, 100, 5, 3), drawn_tile(5, 0, 7, 4, 1), drawn_tile(1, 3, 4, 18, 2)});
+      {display_tile(2, 10, 100, 5, 3), display_tile(5, 0, 7, 4, 1), display_tile(1, 3, 4, 18, 2)});
   RgbImage fb{20, 8, kPaint};
 };
 
@@ -83,7 +77,7 @@ TEST(DrawHeaders, ParsedScanlinesRouteEveryTileRow) {
 
 TEST(DrawHeaders, OnePixelLeftGetsNoEnd) {
   // 2 + 7 = 9 of W = 10: one pixel remains, too few for a header; it stays untouched.
-  const ServerPlan plan = pack_tiles(0, 10, 1, {drawn_tile(0, 0, 0, 7, 1)});
+  const ServerPlan plan = pack_tiles(0, 10, 1, {display_tile(0, 0, 0, 7, 1)});
   RgbImage fb(10, 1, kPaint);
   draw_headers(plan, false, fb);
   EXPECT_EQ(fb.at(9, 0), kPaint);

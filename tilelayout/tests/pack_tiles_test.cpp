@@ -1,22 +1,15 @@
 #include <gtest/gtest.h>
 
+#include "display_tile.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 namespace {
 
-DisplayTile tile(int display, int dx, int dy, int w, int h) {
-  DisplayTile t;
-  t.display = display;
-  t.on_display = {dx, dy, w, h};
-  t.on_canvas = t.on_display;
-  return t;
-}
-
 // Expected positions worked out by hand from spec §4 rules 1 and 2 for W = 100.
 std::vector<DisplayTile> five_tiles() {
-  return {tile(0, 0, 0, 30, 10), tile(1, 30, 0, 40, 20), tile(2, 0, 8, 20, 5), tile(1, 0, 0, 96, 7),
-          tile(0, 5, 6, 98, 3)};
+  return {display_tile(0, 0, 0, 30, 10), display_tile(1, 30, 0, 40, 20),
+          display_tile(2, 0, 8, 20, 5), display_tile(1, 0, 0, 96, 7), display_tile(0, 5, 6, 98, 3)};
 }
 
 TEST(PackTiles, FillsRowsLeftToRightThenStartsNewRowsBelow) {
@@ -43,8 +36,9 @@ TEST(PackTiles, FillsRowsLeftToRightThenStartsNewRowsBelow) {
 
 TEST(PackTiles, TileEndingExactlyAtTheEdgeStaysInTheRow) {
   // 0+2+3 = 5, 5+2+3 = 10 = W: both fit; the third starts a new row.
-  const ServerPlan plan =
-      pack_tiles(0, 10, 10, {tile(0, 0, 0, 3, 2), tile(0, 3, 0, 3, 4), tile(0, 6, 0, 3, 1)});
+  const ServerPlan plan = pack_tiles(
+      0, 10, 10,
+      {display_tile(0, 0, 0, 3, 2), display_tile(0, 3, 0, 3, 4), display_tile(0, 6, 0, 3, 1)});
   EXPECT_EQ(plan.tiles[1].fb_x, 7);
   EXPECT_EQ(plan.tiles[1].fb_y, 0);
   EXPECT_EQ(plan.tiles[2].fb_x, 2);
@@ -52,9 +46,9 @@ TEST(PackTiles, TileEndingExactlyAtTheEdgeStaysInTheRow) {
 }
 
 TEST(PackTiles, WidestTileIsWMinusTwo) {
-  EXPECT_NO_THROW(pack_tiles(0, 100, 10, {tile(0, 0, 0, 98, 10)}));
+  EXPECT_NO_THROW(pack_tiles(0, 100, 10, {display_tile(0, 0, 0, 98, 10)}));
   try {
-    pack_tiles(2, 100, 10, {tile(0, 0, 0, 10, 1), tile(4, 8, 9, 99, 10)});
+    pack_tiles(2, 100, 10, {display_tile(0, 0, 0, 10, 1), display_tile(4, 8, 9, 99, 10)});
     FAIL() << "expected LayoutError";
   } catch (const LayoutError& e) {
     EXPECT_STREQ(e.what(),
@@ -76,8 +70,8 @@ TEST(PackTiles, TooTallNamesFirstTileCrossingTheBottomAndTheOverflow) {
 }
 
 TEST(PackTiles, ExampleFromTheIssue) {
-  std::vector<DisplayTile> tiles(17, tile(0, 0, 0, 1278, 60));
-  tiles.push_back(tile(2, 0, 0, 400, 300));
+  std::vector<DisplayTile> tiles(17, display_tile(0, 0, 0, 1278, 60));
+  tiles.push_back(display_tile(2, 0, 0, 400, 300));
   // 17 rows of 60 = 1020, then 300 more: 1320 rows, 296 past 1024.
   EXPECT_THROW(
       {
@@ -102,16 +96,16 @@ TEST(PackTiles, RejectsTilesHeadersCannotEncode) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message(tile(64, 0, 0, 10, 10)),
+  EXPECT_EQ(message(display_tile(64, 0, 0, 10, 10)),
             "pipeserver 1: tile 0 (display 64, 10x10 at 0,0): display must be 0..63");
-  EXPECT_EQ(message(tile(0, 0, 0, 0, 10)),
+  EXPECT_EQ(message(display_tile(0, 0, 0, 0, 10)),
             "pipeserver 1: tile 0 (display 0, 0x10 at 0,0): tile is empty");
-  EXPECT_EQ(message(tile(0, 0, 0, 4096, 1)),
+  EXPECT_EQ(message(display_tile(0, 0, 0, 4096, 1)),
             "pipeserver 1: tile 0 (display 0, 4096x1 at 0,0): width must be at most 4095");
-  EXPECT_EQ(message(tile(0, 0, 4090, 10, 7)),
+  EXPECT_EQ(message(display_tile(0, 0, 4090, 10, 7)),
             "pipeserver 1: tile 0 (display 0, 10x7 at 0,4090): display coordinates must be "
             "0..4095");
-  EXPECT_EQ(message(tile(0, 0, 4089, 10, 7)), "no error");
+  EXPECT_EQ(message(display_tile(0, 0, 4089, 10, 7)), "no error");
 }
 
 TEST(PackTiles, EmptyListPacksNothing) {
