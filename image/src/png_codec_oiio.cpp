@@ -24,25 +24,29 @@ std::string write_rgb(const char* path, int width, int height, const std::uint8_
   return std::string("cannot write: ") + e.what();
 }
 
-// An alpha channel is dropped, as a DVI link drops it (spec §1); grey is expanded to RGB.
+// An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
+// stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
+// in a captured RGBA frame). Grey is spread over R, G and B.
 std::string read_rgb(const char* path, RgbSink sink) try {
-  auto in = OIIO::ImageInput::open(path);
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return "cannot read: " + OIIO::geterror();
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) return "not an image with pixels";
-  const int channels = spec.nchannels;
+  std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
+  if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
+    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
+      return "cannot read: " + in->geterror();
+    }
+    return {};
+  }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
-  std::vector<std::uint8_t> pixels(count * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
+  std::vector<std::uint8_t> grey(count);
+  if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
     return "cannot read: " + in->geterror();
   }
-  std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint8_t* src = pixels.data() + i * channels;
-    dst[i * 3 + 0] = src[0];
-    dst[i * 3 + 1] = channels >= 3 ? src[1] : src[0];
-    dst[i * 3 + 2] = channels >= 3 ? src[2] : src[0];
-  }
+  for (std::size_t i = 0; i < count; ++i) dst[i * 3] = dst[i * 3 + 1] = dst[i * 3 + 2] = grey[i];
   return {};
 } catch (const std::exception& e) {
   return std::string("cannot read: ") + e.what();
