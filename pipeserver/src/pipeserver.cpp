@@ -34,6 +34,7 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
     : plan_(plan_of(layout, server)),
       canvas_(canvas_of(layout.wall)),
       gl_(plan_.fb_width, plan_.fb_height),
+      headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       frame_(plan_.fb_width, plan_.fb_height) {}
 
 RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
@@ -51,16 +52,13 @@ RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
   times_.render_ms = ms_since(t0);
   times_.buckets = renderer.stats();
 
+  // Headers go in during scan-out, each scanline's right after it is converted: they are RGB
+  // words, and the render left the gaps black (the scissor keeps tiles out of them).
   t0 = Clock::now();
   scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height,
-           {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())});
+           {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())},
+           headers_[frame_parity(frame) ? 1 : 0]);
   times_.scanout_ms = ms_since(t0);
-
-  // Headers go in after scan-out: they are RGB words, and the gaps were cleared black by the
-  // render (the scissor keeps tiles out of them).
-  t0 = Clock::now();
-  draw_headers(plan_, frame_parity(frame), frame_);
-  times_.header_ms = ms_since(t0);
   return frame_;
 }
 

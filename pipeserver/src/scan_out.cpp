@@ -63,34 +63,57 @@ bool have_ssse3() {
 }
 #endif
 
-template <class RowFn>
-void scan_rows(const std::uint8_t* rgba, int width, int height, std::uint8_t* dst, RowFn row_fn) {
+// `after_row(y, row)` runs on each scanline right after it is converted, while it is in the cache.
+template <class RowFn, class AfterRow>
+void scan_rows(const std::uint8_t* rgba, int width, int height, std::uint8_t* dst, RowFn row_fn,
+               AfterRow after_row) {
   const std::size_t w = static_cast<std::size_t>(width);
   for (int y = 0; y < height; ++y) {
     // GL row 0 is the bottom scanline; scan-out row 0 is the top.
-    row_fn(rgba + static_cast<std::size_t>(height - 1 - y) * w * 4,
-           dst + static_cast<std::size_t>(y) * w * 3, width);
+    std::uint8_t* row = dst + static_cast<std::size_t>(y) * w * 3;
+    row_fn(rgba + static_cast<std::size_t>(height - 1 - y) * w * 4, row, width);
+    after_row(y, std::span<std::uint8_t>(row, w * 3));
   }
 }
 
-}  // namespace
-
-void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb) {
+void check_destination(int width, int height, std::span<std::uint8_t> dst_rgb) {
   if (width < 0 || height < 0) throw std::invalid_argument("scan_out: negative size");
-  const std::size_t w = static_cast<std::size_t>(width);
-  const std::size_t need = w * static_cast<std::size_t>(height) * 3;
+  const std::size_t need = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
   if (dst_rgb.size() < need) {
     throw std::invalid_argument(
         fmt::format("scan_out: destination holds {} bytes, {}x{} RGB needs {}", dst_rgb.size(),
                     width, height, need));
   }
+}
+
+template <class AfterRow>
+void scan_out_rows(const std::uint8_t* rgba, int width, int height, std::uint8_t* dst,
+                   AfterRow after_row) {
 #ifdef L2_SCAN_OUT_SSSE3
   if (have_ssse3()) {
-    scan_rows(rgba, width, height, dst_rgb.data(), rgba_row_to_rgb_ssse3);
+    scan_rows(rgba, width, height, dst, rgba_row_to_rgb_ssse3, after_row);
     return;
   }
 #endif
-  scan_rows(rgba, width, height, dst_rgb.data(), rgba_row_to_rgb);
+  scan_rows(rgba, width, height, dst, rgba_row_to_rgb, after_row);
+}
+
+}  // namespace
+
+void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb) {
+  check_destination(width, height, dst_rgb);
+  scan_out_rows(rgba, width, height, dst_rgb.data(), [](int, std::span<std::uint8_t>) {});
+}
+
+void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb,
+              const FrameHeaders& headers) {
+  check_destination(width, height, dst_rgb);
+  if (headers.width() != width || headers.height() != height) {
+    throw std::invalid_argument(fmt::format("scan_out: headers for {}x{}, the frame is {}x{}",
+                                            headers.width(), headers.height(), width, height));
+  }
+  scan_out_rows(rgba, width, height, dst_rgb.data(),
+                [&headers](int y, std::span<std::uint8_t> row) { headers.draw_row(y, row); });
 }
 
 }  // namespace l2

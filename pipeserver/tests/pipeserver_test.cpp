@@ -2,6 +2,7 @@
 // display from the COPY strips equal to the reference render.
 #include <gtest/gtest.h>
 
+#include "header_at.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "strip_headers/strip_header.hpp"
 #include "test_support.hpp"
@@ -9,12 +10,7 @@
 namespace l2 {
 namespace {
 
-StripHeader header_at(const RgbImage& fb, int x, int y) {
-  const auto* p = fb.row(y).data() + static_cast<std::size_t>(x) * 3;
-  const auto h = decode(header_value(p, p + 3));
-  EXPECT_TRUE(h.has_value()) << "no valid header at " << x << "," << y;
-  return h.value_or(StripHeader{});
-}
+using test::header_at;
 
 TEST(Pipeserver, HeadersSitInTheGapsOfEveryPackedTile) {
   const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
@@ -57,8 +53,7 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
   ps.render_frame(0, *scene);
   const FrameTimes& t = ps.last_times();
   EXPECT_GT(t.render_ms, 0.0);
-  EXPECT_GE(t.scanout_ms, 0.0);
-  EXPECT_GE(t.header_ms, 0.0);
+  EXPECT_GT(t.scanout_ms, 0.0);
   EXPECT_GT(t.buckets.batches, 0);
   EXPECT_GE(t.buckets.tile_draws, t.buckets.batches);
   // Fewer draws than drawing every batch into every tile: bucketing saved something.

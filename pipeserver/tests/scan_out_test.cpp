@@ -1,9 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
+#include "header_at.hpp"
+#include "image/rgb_image.hpp"
 #include "pipeserver/scan_out.hpp"
+#include "strip_headers/strip_header.hpp"
+#include "tilelayout/frame_headers.hpp"
 
 namespace l2 {
 namespace {
@@ -55,6 +60,58 @@ TEST(ScanOut, RefusesASmallDestination) {
     FAIL() << "expected a throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "scan_out: destination holds 23 bytes, 4x2 RGB needs 24");
+  }
+}
+
+// A 40 x 6 framebuffer: tiles 9x4 (display 1 at 20,30) and 17x2 (display 0 at 0,0) side by
+// side, 2 + 9 + 2 + 17 = 30, END at 30.
+ServerPlan two_tile_plan() {
+  DisplayTile a, b;
+  a.display = 1, a.on_display = {20, 30, 9, 4};
+  b.display = 0, b.on_display = {0, 0, 17, 2};
+  a.on_canvas = a.on_display, b.on_canvas = b.on_display;
+  return pack_tiles(0, 40, 6, {a, b});
+}
+
+std::vector<std::uint8_t> numbered_rgba(int w, int h) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w * h * 4));
+  for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 5 + 1);
+  return rgba;
+}
+
+std::span<std::uint8_t> pixels(RgbImage& fb) {
+  return {fb.data(), fb.stride() * static_cast<std::size_t>(fb.height())};
+}
+
+using test::header_at;
+
+TEST(ScanOutWithHeaders, EqualsScanOutThenDrawHeaders) {
+  const ServerPlan plan = two_tile_plan();
+  const auto rgba = numbered_rgba(40, 6);
+  RgbImage fused(40, 6), separate(40, 6);
+  scan_out(rgba.data(), 40, 6, pixels(fused), FrameHeaders(plan, true));
+  scan_out(rgba.data(), 40, 6, pixels(separate));
+  const RgbImage plain = separate;
+  draw_headers(plan, true, separate);
+  EXPECT_TRUE(fused.bytes().size() == separate.bytes().size() &&
+              std::equal(fused.bytes().begin(), fused.bytes().end(), separate.bytes().begin()));
+  // The headers are there (the numbered pixels are not valid headers) and the rest is the plain
+  // scan-out: row 3 holds COPY for tile a, SKIP below tile b, END.
+  EXPECT_EQ(header_at(fused, 0, 3), StripHeader::copy(true, 1, 20, 33, 9));
+  EXPECT_EQ(header_at(fused, 11, 3), StripHeader::skip(true, 17));
+  EXPECT_EQ(header_at(fused, 30, 3), StripHeader::end());
+  EXPECT_EQ(fused.at(5, 3), plain.at(5, 3));
+  EXPECT_EQ(fused.at(32, 3), plain.at(32, 3));
+}
+
+TEST(ScanOutWithHeaders, RefusesHeadersOfAnotherFramebuffer) {
+  const auto rgba = numbered_rgba(40, 6);
+  RgbImage fb(40, 5);
+  try {
+    scan_out(rgba.data(), 40, 5, pixels(fb), FrameHeaders(two_tile_plan(), false));
+    FAIL() << "expected a throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "scan_out: headers for 40x6, the frame is 40x5");
   }
 }
 

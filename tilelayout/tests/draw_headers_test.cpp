@@ -3,6 +3,7 @@
 #include "display_tile.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
+#include "tilelayout/frame_headers.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -88,6 +89,43 @@ TEST(DrawHeaders, RejectsAFramebufferOfTheWrongSize) {
   Fixture f;
   RgbImage small(10, 8);
   EXPECT_THROW(draw_headers(f.plan, false, small), LayoutError);
+}
+
+TEST(FrameHeaders, DrawsOneScanlineAndNoOther) {
+  Fixture f;
+  const FrameHeaders headers(f.plan, true);
+  headers.draw_row(1, f.fb.row(1));
+  EXPECT_EQ(header_at(f.fb, 0, 1), StripHeader::copy(true, 2, 10, 101, 5));
+  EXPECT_EQ(header_at(f.fb, 7, 1), StripHeader::skip(true, 4));
+  EXPECT_EQ(header_at(f.fb, 13, 1), StripHeader::end());
+  int changed = 0;
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 20; ++x) changed += f.fb.at(x, y) != kPaint;
+  }
+  EXPECT_EQ(changed, 3 * 2);  // three headers of scanline 1, nothing else
+}
+
+TEST(FrameHeaders, ScanlinesBelowTheLastRowHaveNone) {
+  Fixture f;
+  const FrameHeaders headers(f.plan, false);
+  for (int y = 5; y < 8; ++y) headers.draw_row(y, f.fb.row(y));
+  for (int y = 5; y < 8; ++y) {
+    for (int x = 0; x < 20; ++x) ASSERT_EQ(f.fb.at(x, y), kPaint) << x << "," << y;
+  }
+}
+
+TEST(FrameHeaders, RefusesAShortScanlineOrOneOutsideTheFramebuffer) {
+  Fixture f;
+  const FrameHeaders headers(f.plan, false);
+  std::vector<std::uint8_t> short_row(59);
+  try {
+    headers.draw_row(0, short_row);
+    FAIL() << "expected a throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "FrameHeaders: scanline 0 of 59 bytes, the framebuffer is 20x8");
+  }
+  EXPECT_THROW(headers.draw_row(8, f.fb.row(7)), std::invalid_argument);
+  EXPECT_THROW(headers.draw_row(-1, f.fb.row(0)), std::invalid_argument);
 }
 
 TEST(ClearOutsideTiles, BlacksEverythingButTilePixelsAndGaps) {

@@ -3,6 +3,7 @@
 // framebuffer out as a 24-bit RGB frame.
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "image/rgb_image.hpp"
@@ -10,16 +11,16 @@
 #include "pipeserver/camera.hpp"
 #include "pipeserver/gl_context.hpp"
 #include "pipeserver/scene.hpp"
+#include "tilelayout/frame_headers.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 
 struct FrameTimes {
   double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
-  double header_ms = 0;   // draw_headers
-  double scanout_ms = 0;  // RGBA bottom-up -> RGB top-down
+  double scanout_ms = 0;  // RGBA bottom-up -> RGB top-down, strip headers drawn in row by row
   BucketStats buckets;
-  double total_ms() const { return render_ms + header_ms + scanout_ms; }
+  double total_ms() const { return render_ms + scanout_ms; }
 };
 
 // The logical canvas of a wall.
@@ -49,6 +50,7 @@ class Pipeserver {
   ServerPlan plan_;
   Canvas canvas_;
   GlContext gl_;
+  std::array<FrameHeaders, 2> headers_;  // encoded once, by frame parity
   RgbImage frame_;
   FrameTimes times_;
 };

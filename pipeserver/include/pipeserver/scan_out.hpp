@@ -8,10 +8,18 @@
 #include <cstdint>
 #include <span>
 
+#include "tilelayout/frame_headers.hpp"
+
 namespace l2 {
 
 // Converts a w x h RGBA bottom-up image into w x h RGB top-down in `dst_rgb` (w*h*3 bytes).
 // Throws std::invalid_argument when dst_rgb is too small.
 void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb);
+
+// The same, and draws the strip headers into each scanline right after converting it, while it
+// is still in the cache (drawn afterwards over the whole frame, each header missed the cache).
+// Throws std::invalid_argument also when `headers` are for another framebuffer size.
+void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb,
+              const FrameHeaders& headers);
 
 }  // namespace l2
