@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -26,12 +25,22 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+// A scanned-out frame: fb_width x fb_height RGB, rows of fb_width * 3 bytes, in the DVI link's
+// back frame or in the pipeserver's own.
+struct FramePixels {
+  std::uint8_t* data;
+  std::size_t stride;
+  std::uint8_t* at(int x, int y) const {
+    return data + static_cast<std::size_t>(y) * stride + static_cast<std::size_t>(x) * 3;
+  }
+};
+
 // The frame number goes into the first pixel of the first tile, where the strip header's COPY
 // sends it to a known display pixel: the run decodes it there (latency proof).
-void stamp_frame(RgbImage& fb, const ServerPlan& plan, int frame) {
+void stamp_frame(FramePixels fb, const ServerPlan& plan, int frame) {
   if (plan.tiles.empty()) return;
   const PackedTile& t = plan.tiles.front();
-  std::uint8_t* p = fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3;
+  std::uint8_t* p = fb.at(t.fb_x, t.fb_y);
   p[0] = static_cast<std::uint8_t>(frame & 0xFF);
   p[1] = static_cast<std::uint8_t>((frame >> 8) & 0xFF);
   p[2] = static_cast<std::uint8_t>((frame >> 16) & 0xFF);
@@ -56,12 +65,11 @@ struct Report {
 
 // The visualization-server path: every tile of the frame, read back from the framebuffer, goes
 // to the compositing server over TCP.
-void send_tiles(viz::TileSender& sender, const RgbImage& fb, const ServerPlan& plan, int frame) {
+void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {
     const Rect& r = t.tile.on_display;
     const viz::TileTarget target{t.tile.display, r.x, r.y, r.w, r.h};
-    sender.send_tile(static_cast<std::uint32_t>(frame), target,
-                     fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3, fb.stride());
+    sender.send_tile(static_cast<std::uint32_t>(frame), target, fb.at(t.fb_x, t.fb_y), fb.stride);
   }
   sender.finish_frame(static_cast<std::uint32_t>(frame),
                       static_cast<std::uint32_t>(plan.tiles.size()));
@@ -101,15 +109,12 @@ int run_live_host(const LiveHostOptions& o) {
 
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
-    RgbImage& fb = ps.render_frame(k, *scene);
+    // With a link the frame is scanned out straight into its back frame: no copy to make.
+    const FramePixels fb{link ? ps.render_frame(k, *scene, link->back_frame()).data()
+                              : ps.render_frame(k, *scene).data(),
+                         static_cast<std::size_t>(plan.fb_width) * 3};
     stamp_frame(fb, plan, k);
     if (sender) send_tiles(*sender, fb, plan, k);
-    if (link) {
-      auto back = link->back_frame();
-      for (int y = 0; y < fb.height(); ++y)
-        std::memcpy(back.data() + static_cast<std::size_t>(y) * link->stride(), fb.row(y).data(),
-                    link->stride());
-    }
     const double render_ms = ms_since(t0);
     const auto t1 = Clock::now();
     int retries = 0;

@@ -38,6 +38,20 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
       frame_(plan_.fb_width, plan_.fb_height) {}
 
 RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
+  render_frame(frame, scene,
+               {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())});
+  return frame_;
+}
+
+std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
+                                                 std::span<std::uint8_t> dst) {
+  const std::size_t bytes =
+      static_cast<std::size_t>(plan_.fb_width) * static_cast<std::size_t>(plan_.fb_height) * 3;
+  if (dst.size() < bytes) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {}: frame buffer of {} bytes, a {}x{} frame needs {}", plan_.server,
+                    dst.size(), plan_.fb_width, plan_.fb_height, bytes));
+  }
   gl_.make_current();
   scene.set_frame(frame);
 
@@ -55,11 +69,9 @@ RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
   // Headers go in during scan-out, each scanline's right after it is converted: they are RGB
   // words, and the render left the gaps black (the scissor keeps tiles out of them).
   t0 = Clock::now();
-  scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height,
-           {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())},
-           headers_[frame_parity(frame) ? 1 : 0]);
+  scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height, dst, headers_[frame_parity(frame) ? 1 : 0]);
   times_.scanout_ms = ms_since(t0);
-  return frame_;
+  return dst.first(bytes);
 }
 
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {

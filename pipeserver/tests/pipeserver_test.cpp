@@ -2,6 +2,9 @@
 // display from the COPY strips equal to the reference render.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "header_at.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "strip_headers/strip_header.hpp"
@@ -59,6 +62,35 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
   // Fewer draws than drawing every batch into every tile: bucketing saved something.
   EXPECT_LT(t.buckets.tile_draws,
             static_cast<long>(scene->batches().size() * ps.plan().tiles.size()));
+}
+
+TEST(Pipeserver, RendersIntoACallersBufferEveryPixelAsIntoItsOwn) {
+  const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
+  Pipeserver ps(layout, 1);
+  auto scene = make_scene("patches", test::small_options());
+  // A buffer holding an older frame's bytes (as a DVI link's back frame does), one byte longer.
+  std::vector<std::uint8_t> buffer(160 * 120 * 3 + 1, 0xA5);
+  const std::span<std::uint8_t> out = ps.render_frame(3, *scene, buffer);
+  EXPECT_EQ(out.data(), buffer.data());
+  ASSERT_EQ(out.size(), 160u * 120u * 3u);
+  EXPECT_EQ(buffer.back(), 0xA5);  // nothing past the frame
+  const RgbImage& own = ps.render_frame(3, *scene);
+  EXPECT_TRUE(std::equal(out.begin(), out.end(), own.bytes().begin()));
+  EXPECT_EQ(test::reassemble(layout.wall, {own}).errors.total(), 0u);
+}
+
+TEST(Pipeserver, RefusesABufferSmallerThanAFrame) {
+  const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
+  Pipeserver ps(layout, 1);
+  auto scene = make_scene("patches", test::small_options());
+  std::vector<std::uint8_t> buffer(160 * 120 * 3 - 1);
+  try {
+    ps.render_frame(0, *scene, buffer);
+    FAIL() << "expected a throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "pipeserver 1: frame buffer of 57599 bytes, a 160x120 frame needs 57600");
+  }
 }
 
 TEST(Pipeserver, UnknownServerIsAClearError) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 
 #include "image/rgb_image.hpp"
 #include "pipeserver/bucketing.hpp"
@@ -39,9 +40,15 @@ class Pipeserver {
   Pipeserver(const TileLayout& layout, int server);
 
   // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
-  // stays valid until the next call, and the caller may mark it (the live host stamps the frame
-  // number in) instead of copying 1.4 MB a frame to do so.
+  // stays valid until the next call, and the caller may mark it (a frame number stamped in)
+  // instead of copying 1.4 MB a frame to do so.
   RgbImage& render_frame(int frame, Scene& scene);
+
+  // The same, scanned out into `dst`: fb_width x fb_height RGB, rows of fb_width * 3 bytes, row
+  // 0 on top, every pixel written (the live host passes its DVI link's back frame, so the frame
+  // is not copied there afterwards). Returns the frame's bytes at the start of `dst`. Throws
+  // std::invalid_argument when `dst` is smaller than a frame.
+  std::span<std::uint8_t> render_frame(int frame, Scene& scene, std::span<std::uint8_t> dst);
 
   const ServerPlan& plan() const { return plan_; }
   const FrameTimes& last_times() const { return times_; }

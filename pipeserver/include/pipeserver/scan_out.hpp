@@ -1,8 +1,7 @@
 // Scan-out (spec §1): the GL framebuffer (RGBA, rows bottom to top) becomes the 24-bit RGB frame
 // a DVI link carries (rows top to bottom, alpha dropped). A hot path: one pass per row, no
-// per-pixel calls; the destination is the caller's, so it could be shared memory. (The live host
-// still scans out into the pipeserver's own frame and copies that into the DVI link, because
-// the stamp, the vizserver path and the headers work on an RgbImage.)
+// per-pixel calls; the destination is the caller's: the live host's is its DVI link's back
+// frame in shared memory.
 #pragma once
 
 #include <cstdint>
