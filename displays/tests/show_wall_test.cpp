@@ -111,10 +111,11 @@ TEST_F(ShowWall, DefaultWallWindowShowsTheWrittenDisplayImagesExactly) {
   const Rect extent = wall_extent(wall);
   L2_START_XVFB(xvfb, extent.w + 16,
                 extent.h + WallWindow::kOverlayHeight + WallWindow::kDecorationAllowance + 16);
-  const ChildRun run = run_show_wall({"--displays-from", (work_ / "displays").string(), "--wall",
-                                 (work_ / "default.toml").string(), "--frames", "5", "--screenshot",
-                                 (work_ / "shots").string(), "--no-vsync", "--rate", "200"},
-                                work_);
+  const ChildRun run =
+      run_show_wall({"--displays-from", (work_ / "displays").string(), "--wall",
+                     (work_ / "default.toml").string(), "--frames", "5", "--screenshot",
+                     (work_ / "shots").string(), "--no-vsync", "--rate", "200"},
+                    work_);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const Display& d : wall.displays) {
     const RgbImage shown = read_png(work_ / "shots" / fmt::format("display-{}.png", d.id));
@@ -130,9 +131,10 @@ TEST_F(ShowWall, DisplaysInARowAreShownExactly) {
     write_png(work_ / "displays" / fmt::format("display-{}.png", d), written.back());
   }
   L2_START_XVFB(xvfb, 1024, 768);
-  const ChildRun run = run_show_wall({"--displays-from", (work_ / "displays").string(), "--frames", "5",
-                                 "--screenshot", (work_ / "shots").string(), "--no-vsync"},
-                                work_);
+  const ChildRun run =
+      run_show_wall({"--displays-from", (work_ / "displays").string(), "--frames", "5",
+                     "--screenshot", (work_ / "shots").string(), "--no-vsync"},
+                    work_);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (int d = 0; d < 3; ++d) {
     EXPECT_TRUE(read_png(work_ / "shots" / fmt::format("display-{}.png", d)) == written[d]);

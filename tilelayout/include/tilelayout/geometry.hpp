@@ -8,11 +8,13 @@ namespace l2 {
 struct Rect {
   int x = 0, y = 0, w = 0, h = 0;
 
-  int right() const { return x + w; }    // one past the last column
-  int bottom() const { return y + h; }   // one past the last row
+  int right() const { return x + w; }   // one past the last column
+  int bottom() const { return y + h; }  // one past the last row
   long long area() const { return static_cast<long long>(w) * h; }
   bool empty() const { return w <= 0 || h <= 0; }
-  bool contains(int px, int py) const { return px >= x && px < right() && py >= y && py < bottom(); }
+  bool contains(int px, int py) const {
+    return px >= x && px < right() && py >= y && py < bottom();
+  }
   friend bool operator==(const Rect&, const Rect&) = default;
 };
 

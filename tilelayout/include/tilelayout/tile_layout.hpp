@@ -18,8 +18,8 @@ class RgbImage;
 // A tile that lies within one display: a logical tile after splitting at display edges.
 struct DisplayTile {
   int display = 0;
-  Rect on_display;    // dx, dy, w, h on the output display
-  Rect on_canvas;     // the same pixels on the logical canvas (what the renderer draws)
+  Rect on_display;       // dx, dy, w, h on the output display
+  Rect on_canvas;        // the same pixels on the logical canvas (what the renderer draws)
   int logical_tile = 0;  // index into TileLayout::logical_tiles
 };
 
@@ -46,11 +46,11 @@ struct ServerPlan {
 
 struct TileLayout {
   Wall wall;
-  std::vector<Rect> logical_tiles;   // canvas rectangles, in tiling order
-  std::vector<DisplayTile> tiles;    // split at display edges; pixels behind mullions dropped
-  std::vector<int> tile_server;      // tiles[i] is rendered by pipeserver tile_server[i]
-  std::vector<ServerPlan> servers;   // one per pipeserver
-  std::vector<std::string> warnings; // for example canvas area left uncovered
+  std::vector<Rect> logical_tiles;    // canvas rectangles, in tiling order
+  std::vector<DisplayTile> tiles;     // split at display edges; pixels behind mullions dropped
+  std::vector<int> tile_server;       // tiles[i] is rendered by pipeserver tile_server[i]
+  std::vector<ServerPlan> servers;    // one per pipeserver
+  std::vector<std::string> warnings;  // for example canvas area left uncovered
 };
 
 // A wall that cannot be used as written. what() is one line naming file, line and field where

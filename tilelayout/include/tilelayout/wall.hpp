@@ -11,11 +11,11 @@
 namespace l2 {
 
 struct Display {
-  int id = 0;               // output display number carried in strip headers, 0..63
+  int id = 0;  // output display number carried in strip headers, 0..63
   int width = 0, height = 0;
   int canvas_x = 0, canvas_y = 0;  // where the display's pixel (0,0) sits on the canvas
-  int swap_group = 0;       // displays of one group swap together (spec §6)
-  std::string monitor;      // optional monitor name or index for --show monitors
+  int swap_group = 0;              // displays of one group swap together (spec §6)
+  std::string monitor;             // optional monitor name or index for --show monitors
 
   Rect on_canvas() const { return {canvas_x, canvas_y, width, height}; }
 };
@@ -25,12 +25,12 @@ enum class AssignmentPolicy { RoundRobin, ZigZag, Spiral, Blocks, AreaBalanced }
 
 struct TilingSpec {
   TilingKind kind = TilingKind::Grid;
-  int tile_width = 0, tile_height = 0;  // Grid
-  std::vector<Rect> rects;              // List, in canvas coordinates
-  int tile_count = 0;                   // KdSplit: number of tiles
+  int tile_width = 0, tile_height = 0;    // Grid
+  std::vector<Rect> rects;                // List, in canvas coordinates
+  int tile_count = 0;                     // KdSplit: number of tiles
   std::vector<std::vector<double>> cost;  // KdSplit: cost grid over the canvas (empty: uniform)
-  int strip_count = 0;                  // Strips: horizontal strips ...
-  int substrip_count = 0;               // ... each cut into this many vertical sub-strips
+  int strip_count = 0;                    // Strips: horizontal strips ...
+  int substrip_count = 0;                 // ... each cut into this many vertical sub-strips
 };
 
 struct Wall {
