@@ -176,6 +176,7 @@ class LiveRun {
       r.swap_refresh = tick.index;
       r.swap_time = now;
       r.writing_ms = writing_ms_;
+      r.paused_ms = paused_ms_;
       const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
       if (latency != 1) {
         latency_ok_ = false;
@@ -221,6 +222,7 @@ class LiveRun {
       r.swap_time = now;
       r.in_time = now;
       r.writing_ms = writing_ms_;
+      r.paused_ms = paused_ms_;
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
       ++shown_;
       last_swap_ = now;
@@ -320,8 +322,8 @@ class LiveRun {
       check_processes();
       hosts_.serve_channels();
     });
-    writing_ms_ += static_cast<double>(k.paused.count());  // like picture writing: not fps
-    last_swap_ += k.paused;                                // nor a stall
+    paused_ms_ += static_cast<double>(k.paused.count());  // the hosts wait too: not fps
+    last_swap_ += k.paused;                               // nor a stall
     return !(k.quit && shown_ > 0);
   }
 
@@ -369,6 +371,7 @@ class LiveRun {
   int dvi_shown_ = -1;  // the frame the emulator's displays show
   bool latency_ok_ = true;
   double writing_ms_ = 0;  // spent writing kept pictures during the run
+  double paused_ms_ = 0;   // spent paused by the --show keys
   RunClock::time_point last_swap_{};
 };
 

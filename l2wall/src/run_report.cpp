@@ -83,12 +83,15 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
     min_latency = std::min(min_latency, latency_of(r));
     max_latency = std::max(max_latency, latency_of(r));
   }
-  // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate.
+  // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate, and
+  // neither are --show pauses (the hosts wait). Pictures kept during the run are: the hosts
+  // render the next frame meanwhile, so taking that time out would count their work as free.
   const double seconds =
       records.empty()
           ? 0.0
-          : (ms_between(totals.start, records.back().swap_time) - records.back().writing_ms) /
+          : (ms_between(totals.start, records.back().swap_time) - records.back().paused_ms) /
                 1000.0;
+  const double writing_s = records.empty() ? 0.0 : records.back().writing_ms / 1000.0;
   const std::string pace = o.path == "vizserver"
                                ? std::string("no emulator refresh: the compositing server swaps")
                                : fmt::format("{} refreshes at {}", totals.refreshes,
@@ -98,6 +101,12 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
       "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
       frames, wall.displays.size(), host_logs.size(), seconds, seconds > 0 ? frames / seconds : 0.0,
       pace);
+  if (writing_s >= 0.005) {
+    summary += fmt::format(
+        "of which {:.2f} s writing the pictures kept during the run (--keep): without them the "
+        "run would be faster\n",
+        writing_s);
+  }
   if (totals.latency_measured) {
     summary += fmt::format(
         "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "

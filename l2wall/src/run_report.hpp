@@ -19,6 +19,7 @@ struct FrameRecord {
   RunClock::time_point in_time{}, swap_time{};
   double route_ms = 0;    // emulator time of the refreshes that routed this frame
   double writing_ms = 0;  // picture writing of the run up to this frame's swap
+  double paused_ms = 0;   // --show pauses of the run up to this frame's swap
   bool shown = false;
 };
 
