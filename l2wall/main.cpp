@@ -113,7 +113,11 @@ int main(int argc, char** argv) {
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
   l2::add_golden_command(app);  // `l2wall golden check|update`
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
+  }
   try {
     return l2::run_wall(o);
   } catch (const std::exception& e) {

@@ -136,7 +136,11 @@ int main(int argc, char** argv) {
   app.add_flag("--gl-info", print_gl_info,
                "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
                "on them: golden images record them) and exit");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
+  }
   if (print_gl_info) {
     const l2::GlInfo gl = l2::gl_info();
     std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\n", gl.version.c_str(),

@@ -109,7 +109,11 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   dump->add_flag("-q,--quiet", quiet, "Only print the totals");
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
+  }
   try {
     if (*enc) return encode_command(op, frame, display, x, y, width);
     if (*dec) return decode_command(hex);

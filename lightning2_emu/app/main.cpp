@@ -80,7 +80,11 @@ int main(int argc, char** argv) {
                    "from the X server into DIR/frame-<t>/display-<d>.png and window-<i>.png")
       ->needs("--show");
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
+  }
   try {
     if (*route) return l2::run_route(route_options);
     return l2::run_sequence(seq_options, ticks, show);

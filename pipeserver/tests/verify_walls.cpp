@@ -1,8 +1,10 @@
 // Measures how far reassembled displays are from the reference render, for the tolerance
 // documented in pipeserver/README.md: every example wall (or the given ones) x every scene at
 // the scenes' default sizes, a few frames each.
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
-#include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,38 +39,69 @@ int write_picture(const std::filesystem::path& out, const std::filesystem::path&
 }  // namespace
 
 int main(int argc, char** argv) {
-  // pipeserver_verify --picture OUT.png WALL.toml [SCENE [FRAME]]: a picture of a reassembled wall.
-  if (argc >= 4 && std::string(argv[1]) == "--picture") {
-    return write_picture(argv[2], argv[3], argc > 4 ? argv[4] : "mesh",
-                         argc > 5 ? std::atoi(argv[5]) : 0);
-  }
-  // pipeserver_verify [WALL.toml...]: the tolerance table (default: every wall in walls/).
+  CLI::App app{
+      "pipeserver_verify: how far reassembled displays are from the reference render. Renders\n"
+      "every scene on every pipeserver of each wall (frames 0, 17 and 40), routes the strips back\n"
+      "into displays and prints, per wall, scene and frame, the pixels that differ from a\n"
+      "display-sized render, by more than one level, the largest difference, and how many lie on\n"
+      "tile edges. With --picture, writes one reassembled wall as a PNG instead."};
   std::vector<std::filesystem::path> walls;
-  for (int i = 1; i < argc; ++i) walls.emplace_back(argv[i]);
-  if (walls.empty()) {
-    for (const auto& e :
-         std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
-      if (e.path().extension() == ".toml") walls.push_back(e.path());
+  std::filesystem::path picture;
+  std::string scene_name = "mesh";
+  int picture_frame = 0;
+  app.add_option("walls", walls, "wall files (TOML); default: every wall in walls/")
+      ->check(CLI::ExistingFile);
+  app.add_option("--picture", picture,
+                 "write the one wall given, reassembled, to this PNG (mullions dark grey)");
+  app.add_option("--scene", scene_name, "--picture: scene to render")
+      ->check(CLI::IsMember(l2::scene_names()))
+      ->capture_default_str();
+  app.add_option("--frame", picture_frame, "--picture: frame to render")
+      ->check(CLI::Range(0, 1 << 30))
+      ->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
   }
-  std::printf("%-24s %-11s %5s %10s %9s %9s %9s %6s %4s %6s\n", "wall", "scene", "frame", "pixels",
-              "differ", "%", ">1", ">1 %", "max", "@edge");
-  for (const auto& path : walls) {
-    const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
-    for (const auto& name : l2::scene_names()) {
-      auto scene = l2::make_scene(name);
-      for (int frame : {0, 17, 40}) {
-        const auto check = l2::test::check_wall(layout, *scene, frame, true);
-        l2::test::ImageDiff all;
-        for (const auto& d : check.diffs) all += d;
-        const double n = static_cast<double>(check.display_pixels);
-        std::printf("%-24s %-11s %5d %10ld %9ld %9.4f %9ld %6.4f %4d %6ld%s\n",
-                    path.filename().string().c_str(), name.c_str(), frame, check.display_pixels,
-                    all.pixels_differing, 100.0 * static_cast<double>(all.pixels_differing) / n,
-                    all.pixels_beyond_one, 100.0 * static_cast<double>(all.pixels_beyond_one) / n,
-                    all.max_channel_diff, all.at_tile_edges,
-                    check.reassembly.errors.total() ? "  DECODE ERRORS" : "");
-        std::fflush(stdout);
+  try {
+    if (!picture.empty()) {
+      if (walls.size() != 1) {
+        std::fprintf(stderr, "pipeserver_verify: --picture takes exactly one wall file, got %zu\n",
+                     walls.size());
+        return 2;
+      }
+      return write_picture(picture, walls.front(), scene_name, picture_frame);
+    }
+    if (walls.empty()) {
+      for (const auto& e :
+           std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
+        if (e.path().extension() == ".toml") walls.push_back(e.path());
+    }
+    std::printf("%-24s %-11s %5s %10s %9s %9s %9s %6s %4s %6s\n", "wall", "scene", "frame",
+                "pixels", "differ", "%", ">1", ">1 %", "max", "@edge");
+    for (const auto& path : walls) {
+      const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
+      for (const auto& name : l2::scene_names()) {
+        auto scene = l2::make_scene(name);
+        for (int frame : {0, 17, 40}) {
+          const auto check = l2::test::check_wall(layout, *scene, frame, true);
+          l2::test::ImageDiff all;
+          for (const auto& d : check.diffs) all += d;
+          const double n = static_cast<double>(check.display_pixels);
+          std::printf("%-24s %-11s %5d %10ld %9ld %9.4f %9ld %6.4f %4d %6ld%s\n",
+                      path.filename().string().c_str(), name.c_str(), frame, check.display_pixels,
+                      all.pixels_differing, 100.0 * static_cast<double>(all.pixels_differing) / n,
+                      all.pixels_beyond_one, 100.0 * static_cast<double>(all.pixels_beyond_one) / n,
+                      all.max_channel_diff, all.at_tile_edges,
+                      check.reassembly.errors.total() ? "  DECODE ERRORS" : "");
+          std::fflush(stdout);
+        }
       }
     }
+  } catch (const std::exception& e) {  // a wall file that cannot be used, a picture not written
+    std::fprintf(stderr, "pipeserver_verify: %s\n", e.what());
+    return 1;
   }
+  return 0;
 }

@@ -161,7 +161,11 @@ int main(int argc, char** argv) {
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
+  }
   try {
     if (*pty) return run_pty(interval_ms, count, frame);
     if (*send) return run_send_ready(device, baud, frame);
