@@ -115,6 +115,8 @@ int main(int argc, char** argv) {
   l2::add_golden_command(app);  // `l2wall golden check|update`
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // `l2wall golden` ran and ended with its own status
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
   }
