@@ -85,7 +85,9 @@ int main(int argc, char** argv) {
                   "ms a pipeserver waits for READY before asking again with SYNC?")
       ->check(CLI::Range(1, 600000))
       ->capture_default_str();
-  run->add_flag("!--no-progress", o.progress, "no progress line on stderr");
+  // A plain flag: CLI11 2.1 lists a negated one as "--no-progress{false}".
+  run->add_flag_callback(
+      "--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");
   run->add_option("--show", o.show,
                   "put the displays on screen as they swap (needs an X display; without one, "
                   "run under Xvfb). window: one window laying out the wall as the wall file "

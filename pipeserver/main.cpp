@@ -126,12 +126,16 @@ int main(int argc, char** argv) {
                     "live: file receiving one line per frame (render and READY wait times)");
   group
       ->add_option("--ready-timeout", live_options.ready_timeout_ms,
-                   "live: ms per READY wait before asking again with SYNC?")
-      ->check(CLI::Range(1, 600000));
+                   "live: ms per READY wait before asking again with SYNC?; a wait for the "
+                   "compositing server's SWAPPED (--viz) may last this x (--ready-retries + 1) "
+                   "(l2wall run passes 1000)")
+      ->check(CLI::Range(1, 600000))
+      ->capture_default_str();
   group
       ->add_option("--ready-retries", live_options.ready_retries,
                    "live: SYNC? retries before giving up")
-      ->check(CLI::Range(0, 1000));
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
   bool print_gl_info = false;
   app.add_flag("--gl-info", print_gl_info,
                "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
