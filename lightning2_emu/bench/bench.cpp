@@ -20,7 +20,6 @@
 #include <malloc.h>
 #include <sys/resource.h>
 #include <time.h>
-#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +28,8 @@
 #include <cstring>
 #include <thread>
 #include <vector>
+
+#include "bench_args.hpp"
 
 #include "frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
@@ -261,24 +262,9 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{
-      "lightning2_emu_bench: routing throughput of the emulator against memcpy of the same bytes,\n"
-      "timed in alternation in the same run, for the WireGL headline case (one 3200x2400 display\n"
-      "fed by 12 inputs of 1280x1024, 200x200 tiles) and a 4-display wall of 64x48 tiles, on one\n"
-      "worker and on every core; the headline frame rate against the hardware's 90 Hz; the\n"
-      "emulator's memory and the peak RSS. Targets: routing/memcpy 0.7 (aim 0.9), 90 frames/s\n"
-      "(aim 180). Exit status 1 when a routed display is wrong, 2 on a usage error."};
-  int repetitions = 41;
-  app.add_option("repetitions", repetitions,
-                 "runs per figure: each figure is the fastest run, each ratio also the median of "
-                 "the per-run pairs")
-      ->check(CLI::Range(3, 100000))
-      ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  BenchArgs args;
+  if (const std::optional<int> status = parse_bench_args(argc, argv, args)) return *status;
+  const int repetitions = args.repetitions;
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   fmt::print(
       "lightning2_emu_bench: {} cores, best of {} runs per figure (the machine is shared: the "

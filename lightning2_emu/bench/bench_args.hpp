@@ -1,0 +1,14 @@
+// The emulator benchmark's command line, parsed in a file of its own: CLI11 is compiled there as
+// light edge code (cmake/LightCode.cmake), while bench.cpp, whose baselines are measured, keeps
+// the release flags.
+#pragma once
+
+#include <optional>
+
+struct BenchArgs {
+  int repetitions = 41;
+};
+
+// Parses the command line into `args`. Returns the exit status to end with at once (0 after
+// --help, 2 on a usage error, the error on stderr), or nullopt to run the benchmark.
+std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args);
