@@ -8,11 +8,12 @@ set -uo pipefail
 failed=0
 for program in "$@"; do
   name=$(basename "$program")
+  ok=1
   help=$("$program" --help 2>&1)
   status=$?
   if [[ $status -ne 0 || $help != *"Usage: "* ]]; then
     echo "FAIL $name --help: exit $status, output: ${help:0:200}"
-    failed=1
+    ok=0
   fi
   out=$("$program" --no-such-option 2>/tmp/usage_errors.$$)
   status=$?
@@ -20,9 +21,12 @@ for program in "$@"; do
   rm -f /tmp/usage_errors.$$
   if [[ $status -ne 2 || -z $err || -n $out ]]; then
     echo "FAIL $name --no-such-option: exit $status (want 2), stderr: ${err:0:200}, stdout: ${out:0:200}"
-    failed=1
-  else
+    ok=0
+  fi
+  if [[ $ok -eq 1 ]]; then
     echo "ok   $name: --help exits 0; --no-such-option exits 2: ${err%%$'\n'*}"
+  else
+    failed=1
   fi
 done
 exit $failed
