@@ -9,7 +9,7 @@ add_library(l2_golden src/golden_manifest.cpp src/golden_routing.cpp src/golden_
 target_include_directories(l2_golden PUBLIC src)
 target_link_libraries(l2_golden PUBLIC l2_wallrun l2_tilelayout l2_image l2_pipeserver
                                        l2_strip_headers fmt::fmt
-                      PRIVATE l2_emu l2_vizserver PkgConfig::TOMLPP CLI11::CLI11)
+                      PRIVATE l2_emu l2_vizserver PkgConfig::TOMLPP l2_command_line)
 # The default golden folder and wall paths: the source tree this build comes from; the
 # pipeserver beside us renders the references.
 target_compile_definitions(l2_golden PRIVATE L2_SOURCE_DIR="${L2_SOURCE_DIR}"

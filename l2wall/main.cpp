@@ -1,9 +1,9 @@
 // l2wall: the command that runs a Lightning-2 wall on one machine.
-#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
 
+#include "command_line/parse.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
 
@@ -115,13 +115,8 @@ int main(int argc, char** argv) {
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
   l2::add_golden_command(app);  // `l2wall golden check|update`
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::RuntimeError& e) {
-    return e.get_exit_code();  // `l2wall golden` ran and ended with its own status
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     return l2::run_wall(o);
   } catch (const std::exception& e) {

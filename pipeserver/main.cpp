@@ -2,13 +2,13 @@
 // headers in the gaps, scanned out to 24-bit RGB) and, on request, the reference render of
 // every display of that frame.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <optional>
 
+#include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "live_host.hpp"
 #include "pipeserver/pipeserver.hpp"
@@ -140,11 +140,7 @@ int main(int argc, char** argv) {
   app.add_flag("--gl-info", print_gl_info,
                "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
                "on them: golden images record them) and exit");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   if (print_gl_info) {
     const l2::GlInfo gl = l2::gl_info();
     std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\n", gl.version.c_str(),

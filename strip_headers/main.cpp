@@ -1,11 +1,11 @@
 // strip_headers: look at routing words by hand. Encode a header from fields, decode a hex value,
 // or dump every header of a scanned-out frame with the §3 error counts.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <string>
 
+#include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "strip_headers/strip_header.hpp"
@@ -109,11 +109,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   dump->add_flag("-q,--quiet", quiet, "Only print the totals");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     if (*enc) return encode_command(op, frame, display, x, y, width);
     if (*dec) return decode_command(hex);

@@ -2,7 +2,6 @@
 // process. Pipeservers connect with TileSender, send their rendered tiles, and this writes
 // each composed frame's displays as PNG files.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <cerrno>
 #include <cstdio>
@@ -13,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_sender.hpp"
@@ -156,16 +156,14 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   std::vector<std::pair<int, int>> sizes;
-  try {
-    app.parse(argc, argv);
+  app.callback([&] {  // after parsing: a CLI::ValidationError here is a usage error too
     sizes = parse_displays(displays_text);
     if (out_dir.empty() && stream_address.empty()) {
       throw CLI::ValidationError("--out", "give --out, --display-stream or both");
     }
     if (!stream_address.empty()) parse_address(stream_address);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  });
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   l2::viz::ServerOptions options;
   options.display_sizes = sizes;

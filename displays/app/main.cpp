@@ -1,13 +1,13 @@
 // show_wall: shows the output displays an emulator run wrote (DIR/display-<d>.png) on real
 // screens, laid out as the wall file places them — the standalone face of the displays part.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <thread>
 
+#include "command_line/parse.hpp"
 #include "display_files.hpp"
 #include "displays/wall_presenter.hpp"
 #ifdef L2_HAVE_WALL_FILE
@@ -112,11 +112,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_flag("--no-vsync", o.no_vsync, "Swap at once instead of on vertical blank");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   try {
     run(o, *l2::parse_show_mode(o.show));

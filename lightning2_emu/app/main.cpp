@@ -1,9 +1,9 @@
 // lightning2_emu: the Lightning-2 emulator on captured frames.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <exception>
 
+#include "command_line/parse.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -80,11 +80,7 @@ int main(int argc, char** argv) {
                    "from the X server into DIR/frame-<t>/display-<d>.png and window-<i>.png")
       ->needs("--show");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     if (*route) return l2::run_route(route_options);
     return l2::run_sequence(seq_options, ticks, show);

@@ -1,6 +1,6 @@
 #include "bench_args.hpp"
 
-#include <CLI/CLI.hpp>
+#include "command_line/parse.hpp"
 
 std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args) {
   CLI::App app{
@@ -15,10 +15,5 @@ std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args) {
                  "the per-run pairs")
       ->check(CLI::Range(3, 100000))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
-  return std::nullopt;
+  return l2::parse_command_line(app, argc, argv);
 }

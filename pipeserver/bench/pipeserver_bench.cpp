@@ -6,7 +6,6 @@
 // than one refresh period of the wall (a frame is shown for at least one refresh). The share
 // of the bare measured time is printed too: for the light default bunny it is the larger one.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line/parse.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "tilelayout/planner.hpp"
@@ -58,11 +58,7 @@ int main(int argc, char** argv) {
   app.add_option("frames", frames, "frames per pipeserver; figures are medians")
       ->check(CLI::Range(3, 100000))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   const l2::TileLayout layout = l2::plan_layout(l2::default_wall());
   auto scene = l2::make_scene(scene_name);
   std::printf("default wall '%s': canvas %dx%d, %zu displays, %zu pipeservers, framebuffer %dx%d\n",

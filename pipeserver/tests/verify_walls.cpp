@@ -1,7 +1,8 @@
 // Measures how far reassembled displays are from the reference render, for the tolerance
 // documented in pipeserver/README.md: every example wall (or the given ones) x every scene at
 // the scenes' default sizes, a few frames each.
-#include <CLI/CLI.hpp>
+
+#include <fmt/format.h>
 
 #include <cstdio>
 #include <exception>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
@@ -36,6 +38,40 @@ int write_picture(const std::filesystem::path& out, const std::filesystem::path&
   return 0;
 }
 
+// Every wall file in the repository's walls/.
+std::vector<std::filesystem::path> example_walls() {
+  std::vector<std::filesystem::path> walls;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
+    if (e.path().extension() == ".toml") walls.push_back(e.path());
+  return walls;
+}
+
+// One line per wall, scene and frame: how far the reassembled displays are from the reference.
+void print_tolerance_table(const std::vector<std::filesystem::path>& walls) {
+  std::printf("%-24s %-11s %5s %10s %9s %9s %9s %6s %4s %6s\n", "wall", "scene", "frame", "pixels",
+              "differ", "%", ">1", ">1 %", "max", "@edge");
+  for (const auto& path : walls) {
+    const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
+    for (const auto& name : l2::scene_names()) {
+      auto scene = l2::make_scene(name);
+      for (int frame : {0, 17, 40}) {
+        const auto check = l2::test::check_wall(layout, *scene, frame, true);
+        l2::test::ImageDiff all;
+        for (const auto& d : check.diffs) all += d;
+        const double n = static_cast<double>(check.display_pixels);
+        std::printf("%-24s %-11s %5d %10ld %9ld %9.4f %9ld %6.4f %4d %6ld%s\n",
+                    path.filename().string().c_str(), name.c_str(), frame, check.display_pixels,
+                    all.pixels_differing, 100.0 * static_cast<double>(all.pixels_differing) / n,
+                    all.pixels_beyond_one, 100.0 * static_cast<double>(all.pixels_beyond_one) / n,
+                    all.max_channel_diff, all.at_tile_edges,
+                    check.reassembly.errors.total() ? "  DECODE ERRORS" : "");
+        std::fflush(stdout);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,46 +95,16 @@ int main(int argc, char** argv) {
   app.add_option("--frame", picture_frame, "--picture: frame to render")
       ->check(CLI::Range(0, 1 << 30))
       ->capture_default_str();
+  app.callback([&] {
+    if (!picture.empty() && walls.size() != 1) {
+      throw CLI::ValidationError("--picture",
+                                 fmt::format("takes exactly one wall file, got {}", walls.size()));
+    }
+  });
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
-  try {
-    if (!picture.empty()) {
-      if (walls.size() != 1) {
-        std::fprintf(stderr, "pipeserver_verify: --picture takes exactly one wall file, got %zu\n",
-                     walls.size());
-        return 2;
-      }
-      return write_picture(picture, walls.front(), scene_name, picture_frame);
-    }
-    if (walls.empty()) {
-      for (const auto& e :
-           std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
-        if (e.path().extension() == ".toml") walls.push_back(e.path());
-    }
-    std::printf("%-24s %-11s %5s %10s %9s %9s %9s %6s %4s %6s\n", "wall", "scene", "frame",
-                "pixels", "differ", "%", ">1", ">1 %", "max", "@edge");
-    for (const auto& path : walls) {
-      const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
-      for (const auto& name : l2::scene_names()) {
-        auto scene = l2::make_scene(name);
-        for (int frame : {0, 17, 40}) {
-          const auto check = l2::test::check_wall(layout, *scene, frame, true);
-          l2::test::ImageDiff all;
-          for (const auto& d : check.diffs) all += d;
-          const double n = static_cast<double>(check.display_pixels);
-          std::printf("%-24s %-11s %5d %10ld %9ld %9.4f %9ld %6.4f %4d %6ld%s\n",
-                      path.filename().string().c_str(), name.c_str(), frame, check.display_pixels,
-                      all.pixels_differing, 100.0 * static_cast<double>(all.pixels_differing) / n,
-                      all.pixels_beyond_one, 100.0 * static_cast<double>(all.pixels_beyond_one) / n,
-                      all.max_channel_diff, all.at_tile_edges,
-                      check.reassembly.errors.total() ? "  DECODE ERRORS" : "");
-          std::fflush(stdout);
-        }
-      }
-    }
+    if (!picture.empty()) return write_picture(picture, walls.front(), scene_name, picture_frame);
+    print_tolerance_table(walls.empty() ? example_walls() : walls);
   } catch (const std::exception& e) {  // a wall file that cannot be used, a picture not written
     std::fprintf(stderr, "pipeserver_verify: %s\n", e.what());
     return 1;

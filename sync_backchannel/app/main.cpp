@@ -6,8 +6,8 @@
 #include <string>
 
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
+#include "command_line/parse.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "sync_backchannel/pty_pair.hpp"
 #include "sync_backchannel/serial_port.hpp"
@@ -161,11 +161,7 @@ int main(int argc, char** argv) {
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0; a usage error 2
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     if (*pty) return run_pty(interval_ms, count, frame);
     if (*send) return run_send_ready(device, baud, frame);

@@ -1,10 +1,10 @@
 // tilelayout: reads a wall file, prints the routing plan, and optionally writes pictures of it
 // and the test-pattern frames every pipeserver would scan out.
 #include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include <iostream>
 
+#include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
@@ -58,11 +58,7 @@ int main(int argc, char** argv) {
       ->type_name("DIR");
   app.add_option("--parity", parity, "frame parity for --scanout headers")->check(CLI::Range(0, 1));
   app.add_flag("--print-default", print_default, "print the built-in default wall file, exit");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a ParseError that exits 0
-  }
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   if (print_default) {
     std::cout << l2::default_wall_toml();

@@ -1,0 +1,27 @@
+// Every program parses its command line with CLI11 and ends the parse the same way: --help
+// prints the usage and exits 0; a usage error prints one error on stderr and exits 2 (CLI11's
+// own codes, 105, 106 and so on, mean nothing to a script); a subcommand that ran in a callback
+// and threw CLI::RuntimeError(status) exits with that status. Checks that need several options
+// at once go in the app's callback(), where a CLI::ValidationError is a usage error too.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+
+namespace l2 {
+
+inline constexpr int kExitUsageError = 2;
+
+// Parses argv into `app`. Returns the exit status to end the program with, or nullopt to go on.
+inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+    return std::nullopt;
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitUsageError;  // --help is a ParseError that exits 0
+  }
+}
+
+}  // namespace l2
