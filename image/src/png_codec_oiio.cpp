@@ -18,9 +18,9 @@ std::string write_rgb(const char* path, int width, int height, const std::uint8_
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return "cannot write: " + OIIO::geterror();
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  // libpng's defaults (every row filter tried, zlib level 6) took 110 ms for a 1984x768 wall
-  // picture; one filter (each row minus the row above, which suits rendered pictures) and zlib
-  // level 1 take 21 ms for files about 1.5x the size. Runs that keep every frame's pictures
+  // libpng's defaults (every row filter tried, zlib level 6) took 108-117 ms for a 1984x768
+  // wall picture; one filter (each row minus the row above, which suits rendered pictures) and
+  // zlib level 1 take 21-24 ms for files about 1.5x the size. Runs that keep every frame's pictures
   // spent most of their time here.
   spec.attribute("png:filter", kPngFilterUp);
   spec.attribute("png:compressionLevel", 1);

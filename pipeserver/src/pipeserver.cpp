@@ -45,6 +45,7 @@ RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
 
 std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
                                                  std::span<std::uint8_t> dst) {
+  // Checked here although scan_out checks again: a short buffer is refused before the render.
   const std::size_t bytes =
       static_cast<std::size_t>(plan_.fb_width) * static_cast<std::size_t>(plan_.fb_height) * 3;
   if (dst.size() < bytes) {

@@ -1,7 +1,8 @@
 // The strip headers of one pipeserver framebuffer for one frame parity (spec §4 rule 3), encoded
 // once. Drawing them is then a six-byte copy per header, cheap enough to do row by row while the
 // scan-out still has the row in the cache: drawn over the whole frame afterwards, every header
-// missed the cache (one miss per scanline per tile) and cost about a fifth of the scan-out.
+// missed the cache (one miss per scanline per tile): 0.06-0.12 ms against 0.25-0.40 ms for the
+// scan-out itself (pipeserver_bench, default wall).
 #pragma once
 
 #include <array>
