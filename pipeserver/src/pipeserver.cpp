@@ -38,8 +38,7 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
       frame_(plan_.fb_width, plan_.fb_height) {}
 
 RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
-  render_frame(frame, scene,
-               {frame_.data(), frame_.stride() * static_cast<std::size_t>(frame_.height())});
+  render_frame(frame, scene, frame_.bytes());
   return frame_;
 }
 
@@ -82,8 +81,7 @@ RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene
   renderer.draw_tile(rect, 0, 0);
   glFinish();
   RgbImage image(rect.w, rect.h);
-  scan_out(gl.rgba(), rect.w, rect.h,
-           {image.data(), image.stride() * static_cast<std::size_t>(image.height())});
+  scan_out(gl.rgba(), rect.w, rect.h, image.bytes());
   return image;
 }
 

@@ -62,7 +62,7 @@ TileResult render_centre_tile(const Scene& scene) {
   r.draw_tile(tile, 0, 0);
   glFinish();
   RgbImage img(tile.w, tile.h);
-  scan_out(gl.rgba(), tile.w, tile.h, {img.data(), img.bytes().size()});
+  scan_out(gl.rgba(), tile.w, tile.h, img.bytes());
   TileResult out;
   out.stats = r.stats();
   for (int y = 0; y < img.height(); ++y)

@@ -79,18 +79,14 @@ std::vector<std::uint8_t> numbered_rgba(int w, int h) {
   return rgba;
 }
 
-std::span<std::uint8_t> pixels(RgbImage& fb) {
-  return {fb.data(), fb.stride() * static_cast<std::size_t>(fb.height())};
-}
-
 using test::header_at;
 
 TEST(ScanOutWithHeaders, EqualsScanOutThenDrawHeaders) {
   const ServerPlan plan = two_tile_plan();
   const auto rgba = numbered_rgba(40, 6);
   RgbImage fused(40, 6), separate(40, 6);
-  scan_out(rgba.data(), 40, 6, pixels(fused), FrameHeaders(plan, true));
-  scan_out(rgba.data(), 40, 6, pixels(separate));
+  scan_out(rgba.data(), 40, 6, fused.bytes(), FrameHeaders(plan, true));
+  scan_out(rgba.data(), 40, 6, separate.bytes());
   const RgbImage plain = separate;
   draw_headers(plan, true, separate);
   EXPECT_TRUE(fused.bytes().size() == separate.bytes().size() &&
@@ -108,7 +104,7 @@ TEST(ScanOutWithHeaders, RefusesHeadersOfAnotherFramebuffer) {
   const auto rgba = numbered_rgba(40, 6);
   RgbImage fb(40, 5);
   try {
-    scan_out(rgba.data(), 40, 5, pixels(fb), FrameHeaders(two_tile_plan(), false));
+    scan_out(rgba.data(), 40, 5, fb.bytes(), FrameHeaders(two_tile_plan(), false));
     FAIL() << "expected a throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "scan_out: headers for 40x6, the frame is 40x5");

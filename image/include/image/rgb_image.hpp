@@ -31,6 +31,7 @@ class RgbImage {
   }
   std::uint8_t* data() { return bytes_.data(); }
   const std::uint8_t* data() const { return bytes_.data(); }
+  std::span<std::uint8_t> bytes() { return bytes_; }  // every row, stride() bytes each
   std::span<const std::uint8_t> bytes() const { return bytes_; }
 
   Rgb at(int x, int y) const;
