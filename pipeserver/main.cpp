@@ -120,8 +120,10 @@ int main(int argc, char** argv) {
   group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)");
   group->add_option("--backchannel", live_options.backchannel,
                     "live: serial device of the back-channel (for example a pty slave)");
-  group->add_option("--viz", live_options.viz,
-                    "live: host:port of a compositing server; every tile is also sent there");
+  group
+      ->add_option("--viz", live_options.viz,
+                   "live: host:port of a compositing server; every tile is also sent there")
+      ->check(l2::viz::endpoint_error, "HOST:PORT");
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");
   group

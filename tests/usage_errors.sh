@@ -29,4 +29,24 @@ for program in "$@"; do
     failed=1
   fi
 done
+
+# Values checked while parsing, so that they too are usage errors and not a failed run later:
+# program name, then its arguments; the error must quote the value.
+bad_value() {
+  local name=$1 value=${!#} program
+  shift
+  for program in "${programs[@]}"; do [[ $(basename "$program") == "$name" ]] && break; done
+  err=$("$program" "$@" 2>&1 >/dev/null)
+  status=$?
+  if [[ $status -ne 2 || $err != *"'$value' is not HOST:PORT"* ]]; then
+    echo "FAIL $name $*: exit $status (want 2), stderr: ${err:0:200}"
+    failed=1
+  else
+    echo "ok   $name $*: exits 2: ${err%%$'\n'*}"
+  fi
+}
+programs=("$@")
+bad_value pipeserver --live --viz 127.0.0.1:99999
+bad_value pipeserver --live --viz 127.0.0.1:abc
+bad_value vizserver --displays 8x4 --servers 1 --display-stream 127.0.0.1:0
 exit $failed

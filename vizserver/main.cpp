@@ -43,20 +43,6 @@ std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
   return sizes;
 }
 
-// "HOST:PORT" of --display-stream; throws CLI::ValidationError.
-std::pair<std::string, std::uint16_t> parse_address(const std::string& text) {
-  const auto colon = text.rfind(':');
-  int port = -1;
-  char extra = 0;
-  if (colon == std::string::npos || colon == 0 ||
-      std::sscanf(text.c_str() + colon + 1, "%d%c", &port, &extra) != 1 || port < 1 ||
-      port > 65535) {
-    throw CLI::ValidationError("--display-stream",
-                               fmt::format("'{}' is not HOST:PORT (port 1..65535)", text));
-  }
-  return {text.substr(0, colon), static_cast<std::uint16_t>(port)};
-}
-
 // Where each swapped frame goes: PNG files, the display stream, a line in the log.
 struct Outputs {
   std::string png_dir;                           // empty: no PNGs
@@ -145,7 +131,8 @@ int main(int argc, char** argv) {
   app.add_option("--display-stream", stream_address,
                  "HOST:PORT of a watcher (l2wall run) to connect to: LISTENING with the bound "
                  "port first, then every swapped frame's display pictures, ERROR before a "
-                 "failed run exits (docs/vizserver-protocol.md)");
+                 "failed run exits (docs/vizserver-protocol.md)")
+      ->check(l2::viz::endpoint_error, "HOST:PORT");
   app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
   app.add_option("--accept-timeout", accept_timeout,
                  "Seconds for all pipeservers to connect; 0 waits forever")
@@ -161,7 +148,6 @@ int main(int argc, char** argv) {
     if (out_dir.empty() && stream_address.empty()) {
       throw CLI::ValidationError("--out", "give --out, --display-stream or both");
     }
-    if (!stream_address.empty()) parse_address(stream_address);
   });
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
@@ -184,8 +170,8 @@ int main(int argc, char** argv) {
     }
     // The stream first, so that even a port we cannot bind reaches the watcher as ERROR.
     if (!stream_address.empty()) {
-      const auto [stream_host, stream_port] = parse_address(stream_address);
-      out.stream.emplace(l2::viz::DisplaySender::connect(stream_host, stream_port));
+      const l2::viz::Endpoint stream = l2::viz::parse_endpoint(stream_address);
+      out.stream.emplace(l2::viz::DisplaySender::connect(stream.host, stream.port));
     }
     l2::viz::CompositingServer server(options);
     l2::viz::SwapQueue queue(kQueuedFrames);

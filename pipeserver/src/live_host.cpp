@@ -78,12 +78,8 @@ void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan,
 std::optional<viz::TileSender> connect_viz(const std::string& address, int server,
                                            int display_count) {
   if (address.empty()) return std::nullopt;
-  const auto colon = address.rfind(':');
-  if (colon == std::string::npos)
-    throw std::invalid_argument(fmt::format("--viz {}: expected host:port", address));
-  const int port = std::stoi(address.substr(colon + 1));
-  return viz::TileSender::connect(address.substr(0, colon), static_cast<std::uint16_t>(port),
-                                  server, display_count);
+  const viz::Endpoint at = viz::parse_endpoint(address);
+  return viz::TileSender::connect(at.host, at.port, server, display_count);
 }
 
 }  // namespace

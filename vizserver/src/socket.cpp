@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <climits>
 #include <cstring>
 #include <memory>
@@ -156,6 +157,33 @@ std::uint16_t local_port(int fd) {
     return ntohs(reinterpret_cast<const sockaddr_in6*>(&ss)->sin6_port);
   }
   return 0;
+}
+
+namespace {
+
+// The port of "HOST:PORT", or -1: digits only (from_chars takes no sign or space), 1..65535.
+int endpoint_port(std::string_view text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string_view::npos || colon == 0) return -1;
+  const std::string_view digits = text.substr(colon + 1);
+  int port = -1;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), port);
+  if (ec != std::errc{} || end != digits.data() + digits.size() || port < 1 || port > 65535)
+    return -1;
+  return port;
+}
+
+}  // namespace
+
+std::string endpoint_error(std::string_view text) {
+  if (endpoint_port(text) > 0) return {};
+  return fmt::format("'{}' is not HOST:PORT (port 1..65535)", text);
+}
+
+Endpoint parse_endpoint(std::string_view text) {
+  const int port = endpoint_port(text);
+  if (port < 0) throw std::invalid_argument(endpoint_error(text));
+  return {std::string(text.substr(0, text.rfind(':'))), static_cast<std::uint16_t>(port)};
 }
 
 std::string peer_name(int fd) {

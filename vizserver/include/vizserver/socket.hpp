@@ -12,6 +12,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace l2::viz {
 
@@ -41,6 +42,17 @@ class Fd {
  private:
   int fd_ = -1;
 };
+
+// A TCP address as written on a command line (--viz, --display-stream): "HOST:PORT", the host
+// before the last ':' (so "::1:5000" works), the port a number 1..65535 and nothing after it.
+struct Endpoint {
+  std::string host;
+  std::uint16_t port = 0;
+};
+// Empty when `text` is such an address, else one line saying why not: a command-line check.
+std::string endpoint_error(std::string_view text);
+// Throws std::invalid_argument with endpoint_error's line.
+Endpoint parse_endpoint(std::string_view text);
 
 // Listens on host:port (port 0: the kernel picks a free one; read it with local_port).
 Fd listen_tcp(const std::string& host, std::uint16_t port);
