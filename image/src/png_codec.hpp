@@ -14,10 +14,11 @@
 namespace l2::png_codec {
 
 // Where read_rgb() puts the pixels: asked once for a width x height 8-bit RGB buffer with
-// contiguous rows.
+// contiguous rows, and only for sides up to max_side (a file's header can claim any size).
 struct RgbSink {
   void* context;
   std::uint8_t* (*allocate)(void* context, int width, int height);
+  int max_side;
 };
 
 // Each returns an empty string on success, otherwise the reason (without the file's name).

@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "png_codec.hpp"
@@ -42,6 +43,18 @@ std::string read_rgb(const char* path, RgbSink sink) try {
   if (!in) return "cannot read: " + OIIO::geterror();
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) return "not an image with pixels";
+  // OpenImageIO picks the reader by content, not by name: a volume or deep image (a DDS volume
+  // texture named .png) reads width x height x depth pixels, more than the picture holds.
+  if (spec.depth != 1 || spec.deep) {
+    return spec.deep ? std::string("a deep image, not a picture")
+                     : "a volume (depth " + std::to_string(spec.depth) + "), not a picture";
+  }
+  // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
+  if (spec.width > sink.max_side || spec.height > sink.max_side) {
+    return std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+           " pixels, larger than any picture read here (sides up to " +
+           std::to_string(sink.max_side) + ")";
+  }
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {

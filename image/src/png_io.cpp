@@ -40,11 +40,13 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
 
 RgbImage read_png(const std::filesystem::path& path) {
   RgbImage image;
-  const png_codec::RgbSink sink{&image, [](void* context, int width, int height) {
+  const png_codec::RgbSink sink{&image,
+                                [](void* context, int width, int height) {
                                   auto& out = *static_cast<RgbImage*>(context);
                                   out = RgbImage(width, height);
                                   return out.data();
-                                }};
+                                },
+                                kMaxPictureSide};
   check(path, codec(path).read_rgb(path.c_str(), sink));
   return image;
 }

@@ -81,6 +81,58 @@ TEST(PngIo, GreyIsSpreadOverRgb) {
   EXPECT_EQ(img.at(1, 0), (Rgb{200, 200, 200}));
 }
 
+// The error read_png throws for `path`, or "no error".
+std::string read_error(const std::filesystem::path& path) {
+  try {
+    read_png(path);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A PNG header claiming 20000x20000 RGB pixels, followed by one tiny IDAT (Python's zlib).
+constexpr unsigned char kHugeClaimPng[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+    0x44, 0x52, 0x00, 0x00, 0x4e, 0x20, 0x00, 0x00, 0x4e, 0x20, 0x08, 0x02, 0x00, 0x00,
+    0x00, 0x6c, 0x12, 0xd1, 0x6e, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78,
+    0x9c, 0x63, 0x60, 0x60, 0x60, 0x00, 0x00, 0x00, 0x04, 0x00, 0x01, 0xf6, 0x17, 0x38,
+    0x55, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+TEST(PngIo, ClaimedSizeOverTheLimitIsRefusedBeforeAllocating) {
+  // Before the check this allocated 1.2 GB and failed later with "Not enough image data".
+  const auto path = write_bytes("huge.png", kHugeClaimPng);
+  EXPECT_EQ(read_error(path), path.string() +
+                                  ": 20000x20000 pixels, larger than any picture read here "
+                                  "(sides up to 16384)");
+}
+
+// A DDS volume texture (24-bit RGB, `depth` slices) as DirectX lays out DDS_HEADER: 124 bytes
+// after "DDS ", flags CAPS|HEIGHT|WIDTH|PIXELFORMAT|DEPTH, caps TEXTURE|COMPLEX, caps2 VOLUME
+// (OpenImageIO refuses a volume without COMPLEX).
+std::string dds_volume(std::uint32_t width, std::uint32_t height, std::uint32_t depth) {
+  std::string bytes = "DDS ";
+  const auto u32 = [&bytes](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>(v >> (8 * i)));
+  };
+  for (std::uint32_t v :
+       {124u, 0x1u | 0x2u | 0x4u | 0x1000u | 0x800000u, height, width, width * 3, depth, 0u})
+    u32(v);
+  for (int i = 0; i < 11; ++i) u32(0);
+  for (std::uint32_t v : {32u, 0x40u, 0u, 24u, 0xff0000u, 0xff00u, 0xffu, 0u}) u32(v);
+  for (std::uint32_t v : {0x1000u | 0x8u, 0x200000u, 0u, 0u, 0u}) u32(v);
+  bytes.append(std::size_t{width} * height * depth * 3, '\x7f');
+  return bytes;
+}
+
+TEST(PngIo, VolumeImageNamedPngIsRefusedNotReadPastThePicture) {
+  // OpenImageIO reads by content: this file's 4x4x8 pixels were read into a 4x4 picture, a heap
+  // overflow (lightning2_emu route aborted with "malloc(): corrupted top size").
+  const auto path = temp_dir() / "volume.png";
+  std::ofstream(path, std::ios::binary) << dds_volume(4, 4, 8);
+  EXPECT_EQ(read_error(path), path.string() + ": a volume (depth 8), not a picture");
+}
+
 // Whether a shared library whose file name contains `name` is mapped into this process.
 bool mapped(const std::string& name) {
   std::ifstream maps("/proc/self/maps");

@@ -10,8 +10,14 @@ namespace l2 {
 // Writes 8-bit RGB PNG; creates parent folders. Throws std::runtime_error naming the file.
 void write_png(const std::filesystem::path& path, const RgbImage& image);
 
-// Reads an 8-bit PNG (or any format OpenImageIO reads). An alpha channel is dropped, as a DVI
-// link drops it (spec §1); grey is expanded to RGB. Throws std::runtime_error naming the file.
+// The largest side read_png() accepts: every picture the project reads is an input frame
+// (8192 at most, the DVI link's limit) or one display (16384 at most, the vizserver's).
+inline constexpr int kMaxPictureSide = 16384;
+
+// Reads an 8-bit PNG (or any 2-D picture OpenImageIO reads). An alpha channel is dropped, as a
+// DVI link drops it (spec §1); grey is expanded to RGB. Throws std::runtime_error naming the
+// file, also for a picture with a side over kMaxPictureSide (before allocating anything) and
+// for a volume or deep image.
 RgbImage read_png(const std::filesystem::path& path);
 
 }  // namespace l2
