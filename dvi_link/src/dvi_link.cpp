@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 #include <utility>
 
@@ -39,6 +40,13 @@ struct LinkHeader {
   // Sequence number of the frame in each slot, written by whoever owns the slot's pixels.
   std::uint64_t slot_sequence[3];
 };
+
+// The layout is shared between processes (version 1): pinned, so that a change to it is a
+// change of kVersion and not an accident. The tests write these offsets to play a process
+// that corrupts the header.
+static_assert(offsetof(LinkHeader, stride) == 24 && offsetof(LinkHeader, slot_pitch) == 48 &&
+              offsetof(LinkHeader, total_bytes) == 56 && offsetof(LinkHeader, middle) == 72 &&
+              offsetof(LinkHeader, reader_slot) == 76);
 
 }  // namespace detail
 
@@ -74,6 +82,19 @@ void check_name(const std::string& name) {
         "without '/'",
         name));
   }
+}
+
+// A slot index read back from shared memory, where another process can write anything: only
+// slots 0..2 exist, and kSlotMask lets 3 through.
+int checked_slot(const std::string& name, std::uint32_t value, std::string_view field) {
+  const std::uint32_t slot = value & kSlotMask;
+  if (slot > 2) fail(name, fmt::format("corrupt header: {} names slot {} of 3", field, slot));
+  return static_cast<int>(slot);
+}
+
+// Where slot `slot`'s pixels start.
+std::uint8_t* slot_pixels(const Mapping& map, int slot, std::uint64_t pitch) {
+  return map.bytes() + kHeaderBytes + static_cast<std::uint64_t>(slot) * pitch;
 }
 
 bool process_alive(std::int32_t pid) {
@@ -212,6 +233,7 @@ DviLinkWriter DviLinkWriter::create(const std::string& name, int width, int heig
   h.magic.store(kMagic, std::memory_order_release);
   writer.width_ = width;
   writer.height_ = height;
+  writer.slot_pitch_ = pitch;
   writer.back_ = 0;
   return writer;
 }
@@ -221,6 +243,7 @@ DviLinkWriter::DviLinkWriter(DviLinkWriter&& other) noexcept
       name_(std::exchange(other.name_, {})),
       width_(other.width_),
       height_(other.height_),
+      slot_pitch_(other.slot_pitch_),
       back_(other.back_),
       sequence_(other.sequence_) {}
 
@@ -231,6 +254,7 @@ DviLinkWriter& DviLinkWriter::operator=(DviLinkWriter&& other) noexcept {
     name_ = std::exchange(other.name_, {});
     width_ = other.width_;
     height_ = other.height_;
+    slot_pitch_ = other.slot_pitch_;
     back_ = other.back_;
     sequence_ = other.sequence_;
   }
@@ -248,9 +272,7 @@ void DviLinkWriter::unlink() noexcept {
 }
 
 std::span<std::uint8_t> DviLinkWriter::back_frame() {
-  const LinkHeader& h = map_.header();
-  return {map_.bytes() + h.slot_offset + static_cast<std::uint64_t>(back_) * h.slot_pitch,
-          h.frame_bytes};
+  return {slot_pixels(map_, back_, slot_pitch_), stride() * static_cast<std::size_t>(height_)};
 }
 
 std::span<std::uint8_t> DviLinkWriter::back_row(int y) {
@@ -267,7 +289,7 @@ std::uint64_t DviLinkWriter::publish() {
   // Acquire: the slot we get back was released by the reader, which no longer looks at it.
   const std::uint32_t old =
       h.middle.exchange(static_cast<std::uint32_t>(back_) | kFresh, std::memory_order_acq_rel);
-  back_ = static_cast<int>(old & kSlotMask);
+  back_ = checked_slot(name_, old, "the latest frame");
   h.writer_slot = static_cast<std::uint32_t>(back_);
   h.published.store(sequence_, std::memory_order_release);
   return sequence_;
@@ -293,22 +315,26 @@ DviLinkReader DviLinkReader::open(const std::string& name) {
   if (h.version != kVersion) {
     fail(name, fmt::format("version {} is not the supported version {}", h.version, kVersion));
   }
-  // Everything the reader will use to address memory is checked against the real size.
-  const bool dims_ok = h.width >= 1 && h.height >= 1 && h.width <= kDviMaxDimension &&
-                       h.height <= kDviMaxDimension && h.bytes_per_pixel == kDviBytesPerPixel;
-  const std::uint64_t stride = static_cast<std::uint64_t>(h.width) * kDviBytesPerPixel;
-  if (!dims_ok || h.stride != stride || h.frame_bytes != stride * h.height ||
-      h.slot_offset != kHeaderBytes || h.slot_pitch < h.frame_bytes ||
-      h.total_bytes != kHeaderBytes + 3 * h.slot_pitch) {
+  // Everything the reader will use to address memory is read once, checked against the real
+  // size (without overflow: 3 * a huge pitch can wrap to the right total) and kept.
+  const std::int32_t width = h.width, height = h.height;
+  const std::uint64_t pitch = h.slot_pitch, total = h.total_bytes;
+  const bool dims_ok = width >= 1 && height >= 1 && width <= kDviMaxDimension &&
+                       height <= kDviMaxDimension && h.bytes_per_pixel == kDviBytesPerPixel;
+  const std::uint64_t stride = static_cast<std::uint64_t>(width) * kDviBytesPerPixel;
+  const std::uint64_t frame_bytes = stride * static_cast<std::uint64_t>(height);
+  if (!dims_ok || h.stride != stride || h.frame_bytes != frame_bytes ||
+      h.slot_offset != kHeaderBytes || pitch < frame_bytes || pitch > size / 3 ||
+      total != kHeaderBytes + 3 * pitch) {
     fail(name, "corrupt header");
   }
-  if (h.total_bytes != size) {
-    fail(name,
-         fmt::format("header declares {} bytes but the segment is {} bytes", h.total_bytes, size));
+  if (total != size) {
+    fail(name, fmt::format("header declares {} bytes but the segment is {} bytes", total, size));
   }
   reader.name_ = name;
-  reader.width_ = h.width;
-  reader.height_ = h.height;
+  reader.width_ = width;
+  reader.height_ = height;
+  reader.slot_pitch_ = pitch;
 
   // Attach as the one reader; a reader that died does not block a new one.
   LinkHeader& hw = reader.map_.header();
@@ -322,7 +348,7 @@ DviLinkReader DviLinkReader::open(const std::string& name) {
       break;
     }
   }
-  reader.front_ = static_cast<int>(hw.reader_slot & kSlotMask);
+  reader.front_ = checked_slot(name, hw.reader_slot, "the reader's frame");
   return reader;
 }
 
@@ -331,6 +357,7 @@ DviLinkReader::DviLinkReader(DviLinkReader&& other) noexcept
       name_(std::exchange(other.name_, {})),
       width_(other.width_),
       height_(other.height_),
+      slot_pitch_(other.slot_pitch_),
       front_(other.front_) {}
 
 DviLinkReader& DviLinkReader::operator=(DviLinkReader&& other) noexcept {
@@ -340,6 +367,7 @@ DviLinkReader& DviLinkReader::operator=(DviLinkReader&& other) noexcept {
     name_ = std::exchange(other.name_, {});
     width_ = other.width_;
     height_ = other.height_;
+    slot_pitch_ = other.slot_pitch_;
     front_ = other.front_;
   }
   return *this;
@@ -362,13 +390,13 @@ std::optional<FrameView> DviLinkReader::latest() {
     // Hand back the slot we held and take the newest; see publish() for the ordering.
     const std::uint32_t old =
         h.middle.exchange(static_cast<std::uint32_t>(front_), std::memory_order_acq_rel);
-    front_ = static_cast<int>(old & kSlotMask);
+    front_ = checked_slot(name_, old, "the latest frame");
     h.reader_slot = static_cast<std::uint32_t>(front_);
   }
   const std::uint64_t sequence = h.slot_sequence[front_];
   if (sequence == 0) return std::nullopt;
-  return FrameView{map_.bytes() + h.slot_offset + static_cast<std::uint64_t>(front_) * h.slot_pitch,
-                   static_cast<std::size_t>(h.stride), width_, height_, sequence};
+  return FrameView{slot_pixels(map_, front_, slot_pitch_),
+                   static_cast<std::size_t>(width_) * kDviBytesPerPixel, width_, height_, sequence};
 }
 
 bool DviLinkReader::writer_alive() const {

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -283,6 +285,82 @@ TEST(DviLink, ASegmentWhoseSizeDisagreesWithItsHeaderIsRefused) {
   EXPECT_EQ(
       error_of([&] { DviLinkReader::open(writer.name()); }),
       "DVI link " + writer.name() + ": header declares 4288 bytes but the segment is 5000 bytes");
+}
+
+// Another process's view of a link's header: the whole segment mapped again, fields written at
+// the offsets dvi_link.cpp pins for version 1.
+class HeaderCorruptor {
+ public:
+  explicit HeaderCorruptor(const std::string& name) {
+    const int fd = ::shm_open(name.c_str(), O_RDWR, 0);
+    EXPECT_GE(fd, 0);
+    base_ = ::mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+    ::close(fd);
+    EXPECT_NE(base_, MAP_FAILED);
+  }
+  ~HeaderCorruptor() { ::munmap(base_, 4096); }
+  template <typename T>
+  void put(std::size_t offset, T value) {
+    std::memcpy(static_cast<char*>(base_) + offset, &value, sizeof value);
+  }
+  static constexpr std::size_t kStride = 24, kSlotPitch = 48, kTotalBytes = 56, kMiddle = 72,
+                               kReaderSlot = 76;
+
+ private:
+  void* base_ = nullptr;
+};
+
+TEST(DviLink, HeaderWrittenOverAfterOpeningMovesNoFrame) {
+  // Reader and writer read stride and slot pitch from the shared header on every frame before:
+  // a pitch written over moved the reader's frame 12 MB past its mapping.
+  DviLinkWriter writer = DviLinkWriter::create(dvi_link_name("moved"), 4, 2);
+  DviLinkReader reader = DviLinkReader::open(writer.name());
+  HeaderCorruptor other(writer.name());
+  other.put<std::uint64_t>(HeaderCorruptor::kSlotPitch, 12u << 20);
+  other.put<std::uint64_t>(HeaderCorruptor::kStride, 999);
+  ASSERT_EQ(writer.back_frame().size(), 4u * 2 * 3);
+  draw_pattern(writer, 3);
+  writer.publish();
+  const std::optional<FrameView> frame = reader.latest();
+  ASSERT_TRUE(frame);
+  EXPECT_EQ(frame->stride, 12u);
+  EXPECT_EQ(mismatches(*frame, 3), 0);
+}
+
+TEST(DviLink, SlotIndexThatDoesNotExistIsACorruptHeader) {
+  // Only slots 0..2 exist; the index mask let 3 through, one slot past the segment's end.
+  DviLinkWriter writer = DviLinkWriter::create(dvi_link_name("slot"), 4, 2);
+  const std::string prefix = "DVI link " + writer.name() + ": corrupt header: ";
+  {
+    HeaderCorruptor other(writer.name());
+    other.put<std::uint32_t>(HeaderCorruptor::kReaderSlot, 3);
+  }
+  EXPECT_EQ(error_of([&] { DviLinkReader::open(writer.name()); }),
+            prefix + "the reader's frame names slot 3 of 3");
+  HeaderCorruptor other(writer.name());
+  other.put<std::uint32_t>(HeaderCorruptor::kReaderSlot, 2);
+  DviLinkReader reader = DviLinkReader::open(writer.name());
+  other.put<std::uint32_t>(HeaderCorruptor::kMiddle, 3 | 4);  // slot 3, fresh
+  EXPECT_EQ(error_of([&] { reader.latest(); }), prefix + "the latest frame names slot 3 of 3");
+  other.put<std::uint32_t>(HeaderCorruptor::kMiddle, 3);
+  EXPECT_EQ(error_of([&] { writer.publish(); }), prefix + "the latest frame names slot 3 of 3");
+}
+
+TEST(DviLink, SlotPitchWhoseTotalWrapsAroundIsRefused) {
+  // total = 4096 + 3 * pitch holds modulo 2^64 for a huge pitch when the slots' bytes are not a
+  // multiple of 3: 4289 bytes, pitch 193 / 3 mod 2^64 (0xAAAAAAAAAAAAAAAB is 1/3 mod 2^64).
+  DviLinkWriter writer = DviLinkWriter::create(dvi_link_name("wrap"), 4, 2);
+  const int fd = ::shm_open(writer.name().c_str(), O_RDWR, 0);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::ftruncate(fd, 4289), 0);
+  ::close(fd);
+  const std::uint64_t pitch = std::uint64_t{193} * 0xAAAAAAAAAAAAAAABull;
+  ASSERT_EQ(4096 + 3 * pitch, 4289u);
+  HeaderCorruptor other(writer.name());
+  other.put<std::uint64_t>(HeaderCorruptor::kSlotPitch, pitch);
+  other.put<std::uint64_t>(HeaderCorruptor::kTotalBytes, 4289);
+  EXPECT_EQ(error_of([&] { DviLinkReader::open(writer.name()); }),
+            "DVI link " + writer.name() + ": corrupt header");
 }
 
 // A child writes as fast as it can while the parent reads: every frame the parent sees is whole.

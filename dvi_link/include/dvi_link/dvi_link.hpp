@@ -78,7 +78,8 @@ class DviLinkWriter {
   // of an older frame (not the one just published), so draw every pixel.
   std::span<std::uint8_t> back_frame();
   std::span<std::uint8_t> back_row(int y);
-  // Hands the back frame to the reader and returns its sequence number (1, 2, ...).
+  // Hands the back frame to the reader and returns its sequence number (1, 2, ...). Throws
+  // DviLinkError when the slot handed back does not exist (the header was written over).
   std::uint64_t publish();
 
   const std::string& name() const { return name_; }
@@ -94,6 +95,8 @@ class DviLinkWriter {
   std::string name_;
   int width_ = 0;
   int height_ = 0;
+  // Kept here, not read back from the shared header, which another process can overwrite.
+  std::uint64_t slot_pitch_ = 0;
   int back_ = 0;
   std::uint64_t sequence_ = 0;
 };
@@ -128,7 +131,8 @@ class DviLinkReader {
   ~DviLinkReader();
 
   // The newest published frame; nullopt before the first publish(). Calling it again without a
-  // new publish returns the same frame (same sequence number).
+  // new publish returns the same frame (same sequence number). Throws DviLinkError when the
+  // header names a slot that does not exist (written over by another process).
   std::optional<FrameView> latest();
   // Whether the process that created the segment still runs.
   bool writer_alive() const;
@@ -145,6 +149,9 @@ class DviLinkReader {
   std::string name_;
   int width_ = 0;
   int height_ = 0;
+  // Checked against the segment's size at open() and kept: the header is not read again for
+  // addresses, since another process can overwrite it.
+  std::uint64_t slot_pitch_ = 0;
   int front_ = 0;
 };
 
