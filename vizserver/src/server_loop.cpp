@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -15,6 +16,10 @@ namespace {
 
 constexpr int kTickMs = 50;                    // timers are checked at least this often
 constexpr std::size_t kReadBudget = 8u << 20;  // per connection per round: fairness
+// Connections that have not said HELLO, at most, so that a flood of strangers cannot take every
+// descriptor (after which accept() fails while the listener stays readable, and the loop would
+// spin). The oldest gives way to a new one: a pipeserver says HELLO as soon as it connects.
+constexpr std::size_t kMaxStrangers = 16;
 
 double seconds(std::chrono::milliseconds ms) {
   return static_cast<double>(ms.count()) / 1000.0;
@@ -95,13 +100,33 @@ void ServerLoop::accept_all() {
       if (errno == EINTR) continue;
       return;  // EAGAIN, or a connection that vanished before we took it
     }
+    make_room_for_a_stranger();
     set_nodelay(fd.get());
     auto c = std::make_unique<Connection>();
     c->peer = peer_name(fd.get());
     c->fd = std::move(fd);
-    c->last_activity = Clock::now();
+    c->connected = c->last_activity = Clock::now();
     conns_.push_back(std::move(c));
   }
+}
+
+void ServerLoop::make_room_for_a_stranger() {
+  Connection* oldest = nullptr;
+  std::size_t strangers = 0;
+  for (const auto& c : conns_) {
+    if (c->dead || c->server >= 0) continue;
+    ++strangers;
+    if (!oldest || c->connected < oldest->connected) oldest = c.get();
+  }
+  if (strangers < kMaxStrangers) return;
+  // Logged the first time and every 1000th, so that a flood cannot grow the log without bound.
+  if (strangers_evicted_++ % 1000 == 0) {
+    log_error(
+        fmt::format("{} closed to make room: {} connections had not said HELLO ({} closed "
+                    "so far)",
+                    who(*oldest), kMaxStrangers, strangers_evicted_));
+  }
+  close(*oldest, std::nullopt);
 }
 
 std::string ServerLoop::who(const Connection& c) const {
@@ -158,6 +183,12 @@ bool ServerLoop::advance(Connection& c) {
         return false;
       }
       c.header = std::get<Header>(decoded);
+      // A peer that has not said HELLO may say HELLO or ERROR, nothing else: refused here,
+      // before a TILE's pixels (up to 48 MiB) are allocated for a stranger.
+      if (c.server < 0 && c.header->kind != Kind::Hello && c.header->kind != Kind::Error) {
+        close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(c.header->kind)));
+        return false;
+      }
       c.head_need = kHeaderBytes + fixed_bytes(c.header->kind);
     }
     if (c.head_got < c.head_need) return true;
@@ -201,11 +232,7 @@ void ServerLoop::dispatch(Connection& c) {
     close(c, fmt::format("{} gave up: {}", who(c), std::string(c.body.begin(), c.body.end())));
     return;
   }
-  if (c.server < 0) {
-    close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(kind)));
-    return;
-  }
-  std::optional<std::string> error;
+  std::optional<std::string> error;  // c said HELLO: advance() let nothing else through
   if (kind == Kind::Tile) {
     error = assembler_.add_tile(c.server, ReceivedTile{*c.tile, std::move(c.body)});
   } else if (kind == Kind::FrameDone) {
@@ -353,9 +380,10 @@ void ServerLoop::check_timers(Clock::time_point now) {
     return;
   }
   for (auto& c : conns_) {
-    // A peer that connects and never says HELLO would hold a slot forever: same limit.
+    // A peer that connects and never says HELLO would hold a slot forever: same limit, from
+    // when it connected (a peer trickling bytes is active but says nothing).
     if (!c->dead && c->server < 0 && options_.accept_timeout.count() > 0 &&
-        now - c->last_activity > options_.accept_timeout) {
+        now - c->connected > options_.accept_timeout) {
       close(*c, fmt::format("{}: no complete HELLO within {:.1f} s", who(*c),
                             seconds(options_.accept_timeout)));
     }

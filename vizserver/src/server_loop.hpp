@@ -56,7 +56,7 @@ class ServerLoop {
     bool body_ready = false;
     std::string out;  // queued server -> peer bytes
     std::size_t out_sent = 0;
-    Clock::time_point last_activity;
+    Clock::time_point connected, last_activity;
     std::optional<std::uint32_t> waiting_frame;  // the frame last seen waiting for it
     Clock::time_point waiting_since;
     bool dead = false;
@@ -64,6 +64,7 @@ class ServerLoop {
 
   void run();
   void accept_all();
+  void make_room_for_a_stranger();  // closes the oldest connection without HELLO when full
   void read_some(Connection& c);
   bool advance(Connection& c);  // parse what arrived; false when the connection was closed
   void dispatch(Connection& c);
@@ -88,6 +89,7 @@ class ServerLoop {
   FrameAssembler assembler_;
   std::vector<std::unique_ptr<Connection>> conns_;
   int hellos_ = 0;
+  std::uint64_t strangers_evicted_ = 0;  // closed to make room: too many without HELLO
   std::optional<std::string> failure_;
   Clock::time_point started_;
   Fd wake_read_, wake_write_;

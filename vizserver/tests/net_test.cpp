@@ -3,7 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <poll.h>
+#include <sys/socket.h>
+
 #include <chrono>
+#include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -231,6 +236,94 @@ TEST(VizServerNet, BadMagicClosesOnlyThatConnectionAndNamesThePeer) {
   s.finish_frame(0, 0);
   s.wait_swapped(0, 2000ms);
   EXPECT_EQ(server.failure(), std::nullopt);
+}
+
+// Everything a raw connection receives until the server closes it, or nullopt if it is still
+// open at the deadline.
+std::optional<std::string> read_until_closed(int fd, std::chrono::milliseconds within) {
+  std::string got;
+  const auto deadline = Clock::now() + within;
+  while (Clock::now() < deadline) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 20) <= 0) continue;
+    char buf[4096];
+    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+    if (n <= 0) return got;
+    got.append(buf, static_cast<std::size_t>(n));
+  }
+  return std::nullopt;
+}
+
+void send_bytes(int fd, std::span<const std::uint8_t> bytes) {
+  const iovec part{const_cast<std::uint8_t*>(bytes.data()), bytes.size()};
+  send_all(fd, std::span(&part, 1), Clock::now() + 1000ms, "server");
+}
+
+TEST(VizServerNet, TileBeforeHelloIsRefusedBeforeItsPixelsArrive) {
+  // The server allocated the announced 48 MiB and waited for them before it looked whether the
+  // peer had said HELLO: twenty such strangers took it to 987 MB.
+  CompositingServer server(options({{4, 4}}, 1));
+  server.start();
+  Fd raw = connect_tcp("127.0.0.1", server.port(), 2000ms);
+  const std::uint16_t my_port = local_port(raw.get());
+  send_bytes(raw.get(), encode(TileHeader{0, 0, 0, 0, 4095, 4095}));  // no pixels follow
+  const std::optional<std::string> reply = read_until_closed(raw.get(), 2000ms);
+  ASSERT_TRUE(reply) << "still open, waiting for the pixels";
+  const std::string expected =
+      fmt::format("connection from 127.0.0.1:{}: TILE before HELLO", my_port);
+  EXPECT_THAT(*reply, HasSubstr(expected));
+  ASSERT_EQ(server.errors().size(), 1u);
+  EXPECT_EQ(server.errors()[0], expected);
+  auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1);
+  s.finish_frame(0, 0);
+  s.wait_swapped(0, 2000ms);  // the run goes on
+}
+
+TEST(VizServerNet, StrangersBeyondSixteenMakeRoomOldestFirst) {
+  CompositingServer server(options({{4, 4}}, 1));
+  server.start();
+  std::vector<Fd> strangers;
+  for (int i = 0; i < 16; ++i) {
+    strangers.push_back(connect_tcp("127.0.0.1", server.port(), 2000ms));
+    std::this_thread::sleep_for(5ms);  // accepted in this order
+  }
+  const std::uint16_t oldest = local_port(strangers[0].get());
+  // The pipeserver is the seventeenth connection: the oldest stranger gives way to it.
+  auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1);
+  s.finish_frame(0, 0);
+  s.wait_swapped(0, 2000ms);
+  EXPECT_EQ(read_until_closed(strangers[0].get(), 2000ms), std::string());
+  EXPECT_EQ(read_until_closed(strangers[1].get(), 100ms), std::nullopt);
+  ASSERT_EQ(server.errors().size(), 1u);
+  EXPECT_EQ(server.errors()[0],
+            fmt::format("connection from 127.0.0.1:{} closed to make room: 16 connections had not "
+                        "said HELLO (1 closed so far)",
+                        oldest));
+}
+
+TEST(VizServerNet, StrangerTricklingBytesIsClosedAtTheAcceptTimeout) {
+  // The limit counted from the last byte received, so a byte every 100 ms kept a connection
+  // that never completes HELLO open for ever.
+  auto o = options({{4, 4}}, 1);
+  o.accept_timeout = 400ms;
+  CompositingServer server(o);
+  server.start();
+  auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1);  // the run itself is fine
+  Fd raw = connect_tcp("127.0.0.1", server.port(), 2000ms);
+  const std::uint16_t my_port = local_port(raw.get());
+  const auto hello = encode(Hello{0, 1});
+  const auto t0 = Clock::now();
+  std::optional<std::string> reply;
+  for (std::size_t i = 0; i < hello.size() && !reply; ++i) {
+    send_bytes(raw.get(), std::span(hello.data() + i, 1));
+    reply = read_until_closed(raw.get(), 100ms);
+  }
+  ASSERT_TRUE(reply) << "still open after trickling a whole HELLO";
+  EXPECT_LT(Clock::now() - t0, 1500ms);
+  // The ERROR itself may be lost to a reset: a byte sent as the server closes is unread there.
+  ASSERT_EQ(server.errors().size(), 1u);
+  EXPECT_EQ(server.errors()[0],
+            fmt::format("connection from 127.0.0.1:{}: no complete HELLO within 0.4 s", my_port));
 }
 
 TEST(VizServerNet, OversizeLengthFromAPipeserverEndsTheRunWithItsName) {
