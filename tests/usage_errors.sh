@@ -31,22 +31,26 @@ for program in "$@"; do
 done
 
 # Values checked while parsing, so that they too are usage errors and not a failed run later:
-# program name, then its arguments; the error must quote the value.
+# the text the error must hold, the program's name, then its arguments.
 bad_value() {
-  local name=$1 value=${!#} program
-  shift
+  local want=$1 name=$2 program
+  shift 2
   for program in "${programs[@]}"; do [[ $(basename "$program") == "$name" ]] && break; done
   err=$("$program" "$@" 2>&1 >/dev/null)
   status=$?
-  if [[ $status -ne 2 || $err != *"'$value' is not HOST:PORT"* ]]; then
-    echo "FAIL $name $*: exit $status (want 2), stderr: ${err:0:200}"
+  if [[ $status -ne 2 || $err != *"$want"* ]]; then
+    echo "FAIL $name $*: exit $status (want 2 and '$want'), stderr: ${err:0:200}"
     failed=1
   else
     echo "ok   $name $*: exits 2: ${err%%$'\n'*}"
   fi
 }
 programs=("$@")
-bad_value pipeserver --live --viz 127.0.0.1:99999
-bad_value pipeserver --live --viz 127.0.0.1:abc
-bad_value vizserver --displays 8x4 --servers 1 --display-stream 127.0.0.1:0
+bad_value "'127.0.0.1:99999' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:99999
+bad_value "'127.0.0.1:abc' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:abc
+bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --servers 1 \
+  --display-stream 127.0.0.1:0
+# 5000 threads hung the emulator when the system would not start them all.
+bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
+  --threads 5000 x.png
 exit $failed

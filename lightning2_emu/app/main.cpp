@@ -23,7 +23,9 @@ void add_common(CLI::App& cmd, l2::CommonOptions& o) {
       ->capture_default_str();
   cmd.add_option("--background", o.background, "Colour of pixels no strip writes, RRGGBB")
       ->capture_default_str();
-  cmd.add_option("--threads", o.threads, "Worker threads (0: one per core)")->capture_default_str();
+  cmd.add_option("--threads", o.threads, "Worker threads (0: one per core)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   cmd.add_option("--out", o.out, "Output folder")->required();
 }
 

@@ -7,10 +7,21 @@ namespace l2 {
 WorkerPool::WorkerPool(int workers) {
   if (workers <= 0) workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads_.reserve(workers - 1);
-  for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { thread_main(w); });
+  try {
+    for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { thread_main(w); });
+  } catch (...) {
+    // The destructor does not run for a constructor that throws: without this the threads
+    // started so far were joined while waiting for a stop that never came (a hang).
+    stop();
+    throw;
+  }
 }
 
 WorkerPool::~WorkerPool() {
+  stop();
+}
+
+void WorkerPool::stop() noexcept {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;

@@ -14,6 +14,7 @@ namespace l2 {
 class WorkerPool {
  public:
   // workers <= 0: one per hardware thread. workers == 1: everything runs on the caller.
+  // Throws std::system_error when a thread cannot be started, after ending those that were.
   explicit WorkerPool(int workers = 0);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
@@ -37,6 +38,7 @@ class WorkerPool {
   void run_erased(int tasks, TaskFn fn, void* ctx);
   void work(int worker);
   void thread_main(int worker);
+  void stop() noexcept;  // ends and joins every thread
 
   std::vector<std::jthread> threads_;
   std::mutex mutex_;
