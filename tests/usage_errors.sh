@@ -50,6 +50,11 @@ bad_value "'127.0.0.1:99999' is not HOST:PORT" pipeserver --live --viz 127.0.0.1
 bad_value "'127.0.0.1:abc' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:abc
 bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --servers 1 \
   --display-stream 127.0.0.1:0
+# sscanf's %d wrapped 4294967360 to 64; 1e300 s did not fit the milliseconds it became.
+bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 --servers 1 \
+  --out /tmp
+bad_value "--accept-timeout: Value 1e300 not in range" vizserver --displays 8x8 --servers 1 \
+  --out /tmp --accept-timeout 1e300
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png

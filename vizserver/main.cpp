@@ -13,12 +13,17 @@
 #include <vector>
 
 #include "command_line/parse.hpp"
+#include "command_line/size_text.hpp"
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_sender.hpp"
 #include "vizserver/swap_queue.hpp"
 
 namespace {
+
+// Timeouts beyond a day are refused: 1e300 seconds did not fit the milliseconds they become
+// (an undefined conversion, which waited forever) and 1e10 overflowed the deadline at once.
+constexpr double kMaxTimeoutSeconds = 86400;
 
 // Swapped frames waiting to be written or streamed; a slower writer holds the swaps back.
 constexpr std::size_t kQueuedFrames = 4;
@@ -30,14 +35,13 @@ std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
     const std::string item = text.substr(start, comma - start);
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(item.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-        w < 1 || h < 1 || w > 16384 || h > 16384) {
-      throw CLI::ValidationError("--displays",
-                                 fmt::format("'{}' is not WIDTHxHEIGHT (1..16384 each)", item));
+    const std::optional<l2::SizeText> size = l2::parse_size_text(item);
+    const auto in_range = [](int side) { return side >= 1 && side <= l2::viz::kMaxDisplaySide; };
+    if (!size || !in_range(size->width) || !in_range(size->height)) {
+      throw CLI::ValidationError("--displays", fmt::format("'{}' is not WIDTHxHEIGHT (1..{} each)",
+                                                           item, l2::viz::kMaxDisplaySide));
     }
-    sizes.emplace_back(w, h);
+    sizes.emplace_back(size->width, size->height);
     start = comma + 1;
   }
   return sizes;
@@ -136,11 +140,11 @@ int main(int argc, char** argv) {
   app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
   app.add_option("--accept-timeout", accept_timeout,
                  "Seconds for all pipeservers to connect; 0 waits forever")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0.0, kMaxTimeoutSeconds))
       ->capture_default_str();
   app.add_option("--stall-timeout", stall_timeout,
                  "Seconds a pipeserver may stay silent while a frame waits for it; 0: forever")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0.0, kMaxTimeoutSeconds))
       ->capture_default_str();
   std::vector<std::pair<int, int>> sizes;
   app.callback([&] {  // after parsing: a CLI::ValidationError here is a usage error too

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 #include <stdexcept>
+
+#include "command_line/size_text.hpp"
 
 namespace l2 {
 namespace {
@@ -32,16 +35,12 @@ std::vector<std::string> split(const std::string& text, char sep) {
 }  // namespace
 
 InputLimit parse_size(const std::string& text, const std::string& what) {
-  const std::size_t x = text.find('x');
-  if (x == std::string::npos) {
-    throw std::invalid_argument(fmt::format("{}: '{}' is not WIDTHxHEIGHT", what, text));
-  }
-  const int w = parse_int(std::string_view(text).substr(0, x), what);
-  const int h = parse_int(std::string_view(text).substr(x + 1), what);
-  if (w < 1 || h < 1) {
+  const std::optional<SizeText> size = parse_size_text(text);
+  if (!size) throw std::invalid_argument(fmt::format("{}: '{}' is not WIDTHxHEIGHT", what, text));
+  if (size->width < 1 || size->height < 1) {
     throw std::invalid_argument(fmt::format("{}: '{}' must be at least 1x1", what, text));
   }
-  return {w, h};
+  return {size->width, size->height};
 }
 
 std::vector<DisplaySpec> parse_display_list(const std::string& text) {

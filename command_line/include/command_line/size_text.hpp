@@ -1,0 +1,32 @@
+// A size as written on a command line, "1280x1024": shared so that every program reads it the
+// same way, and none through sscanf's %d, which wraps 4294967360 to 64.
+#pragma once
+
+#include <charconv>
+#include <optional>
+#include <string_view>
+
+namespace l2 {
+
+struct SizeText {
+  int width = 0, height = 0;
+};
+
+// Two decimal numbers joined by 'x' (or 'X'), nothing else: no sign, space or suffix, each
+// fitting an int. nullopt otherwise; the caller names the option and the range it allows.
+inline std::optional<SizeText> parse_size_text(std::string_view text) {
+  const auto number = [](std::string_view digits) -> std::optional<int> {
+    int value = 0;
+    const char* const end = digits.data() + digits.size();
+    const auto [stop, ec] = std::from_chars(digits.data(), end, value);
+    if (digits.empty() || digits[0] == '-' || ec != std::errc{} || stop != end) return {};
+    return value;
+  };
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string_view::npos) return {};
+  const auto w = number(text.substr(0, x)), h = number(text.substr(x + 1));
+  if (!w || !h) return {};
+  return SizeText{*w, *h};
+}
+
+}  // namespace l2
