@@ -32,6 +32,33 @@ std::vector<std::string> split(const std::string& text, char sep) {
   }
 }
 
+// Name order with numbers by value: "frame-2" before "frame-10", as a person numbers frames
+// without zero padding. Equal runs of digits that differ in leading zeros fall back to the
+// plain comparison, so the order stays total.
+bool frame_order(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const std::string x = a.filename().string(), y = b.filename().string();
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  std::size_t i = 0, j = 0;
+  while (i < x.size() && j < y.size()) {
+    if (!digit(x[i]) || !digit(y[j])) {
+      if (x[i] != y[j]) return x[i] < y[j];
+      ++i, ++j;
+      continue;
+    }
+    std::size_t i_end = i, j_end = j;
+    while (i_end < x.size() && digit(x[i_end])) ++i_end;
+    while (j_end < y.size() && digit(y[j_end])) ++j_end;
+    while (i < i_end - 1 && x[i] == '0') ++i;  // leading zeros do not count
+    while (j < j_end - 1 && y[j] == '0') ++j;
+    if (i_end - i != j_end - j) return i_end - i < j_end - j;
+    const int order = x.compare(i, i_end - i, y, j, j_end - j);
+    if (order != 0) return order < 0;
+    i = i_end, j = j_end;
+  }
+  if (x.size() - i != y.size() - j) return x.size() - i < y.size() - j;
+  return x < y;
+}
+
 }  // namespace
 
 InputLimit parse_size(const std::string& text, const std::string& what) {
@@ -97,7 +124,7 @@ std::vector<std::filesystem::path> list_frames(const std::filesystem::path& fold
   if (frames.empty()) {
     throw std::runtime_error(fmt::format("{}: no frame images in this folder", folder.string()));
   }
-  std::sort(frames.begin(), frames.end());
+  std::sort(frames.begin(), frames.end(), frame_order);
   return frames;
 }
 

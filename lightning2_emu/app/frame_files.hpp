@@ -24,8 +24,9 @@ void apply_group_list(const std::string& text, std::vector<DisplaySpec>& display
 // "RRGGBB" (hex) -> colour.
 Rgb parse_colour(const std::string& text, const std::string& what);
 
-// The image files of a folder (png, ppm, tif, jpg...), sorted by name: one input's frames
-// over time. Throws std::runtime_error naming the folder when it is missing or empty.
+// The image files of a folder (png, ppm, tif, jpg...), sorted by name with numbers by value
+// (frame-2 before frame-10): one input's frames over time. Throws std::runtime_error naming the
+// folder when it is missing or empty.
 std::vector<std::filesystem::path> list_frames(const std::filesystem::path& folder);
 
 }  // namespace l2
