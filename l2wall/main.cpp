@@ -114,6 +114,10 @@ int main(int argc, char** argv) {
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
+  // Options that make no run together are usage errors too (exit 2), not a failed run.
+  run->callback([&o] {
+    if (auto error = l2::run_options_error(o)) throw CLI::ValidationError(*error);
+  });
   l2::add_golden_command(app);  // `l2wall golden check|update`
   // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;

@@ -94,13 +94,7 @@ class LiveRun {
 
  private:
   void check_options() const {
-    if (o_.path != "dvi" && o_.path != "vizserver" && o_.path != "both")
-      throw std::invalid_argument("--path: expected dvi, vizserver or both, got " + o_.path);
-    if (o_.compare && o_.path != "both") throw std::invalid_argument("--compare needs --path both");
-    if (o_.path != "dvi" && o_.vizserver.empty())
-      throw std::invalid_argument("--vizserver: no compositing server executable given");
-    if (o_.viz_port < 0 || o_.viz_port > 65535)
-      throw std::invalid_argument(fmt::format("--viz-port: {} is not 0..65535", o_.viz_port));
+    if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
   }
 
   HostLaunch host_launch() const {
@@ -376,6 +370,28 @@ class LiveRun {
 };
 
 }  // namespace
+
+std::optional<std::string> run_options_error(const RunOptions& o) {
+  if (o.path != "dvi" && o.path != "vizserver" && o.path != "both")
+    return "--path: expected dvi, vizserver or both, got " + o.path;
+  if (o.compare && o.path != "both") return "--compare needs --path both";
+  if (o.path != "dvi" && o.vizserver.empty())
+    return "--vizserver: no compositing server executable given";
+  if (o.viz_port < 0 || o.viz_port > 65535)
+    return fmt::format("--viz-port: {} is not 0..65535", o.viz_port);
+  KeepSet keep;
+  try {
+    keep = parse_keep(o.keep);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  // A frame the run never renders would silently keep nothing.
+  if (!keep.frames.empty() && *keep.frames.rbegin() >= o.frames) {
+    return fmt::format("--keep: frame {} is past the last frame (--frames {} renders 0..{})",
+                       *keep.frames.rbegin(), o.frames, o.frames - 1);
+  }
+  return std::nullopt;
+}
 
 int run_wall(const RunOptions& options) {
   catch_stop_signals();

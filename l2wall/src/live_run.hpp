@@ -7,6 +7,7 @@
 // and it streams the composed displays back to this process (docs/vizserver-protocol.md).
 #pragma once
 
+#include <optional>
 #include <set>
 #include <string>
 
@@ -48,6 +49,11 @@ struct KeepSet {
   }
 };
 KeepSet parse_keep(const std::string& text);
+
+// Why these options cannot make a run ("--compare needs --path both", a bad --keep, a kept
+// frame past the last one...), or nullopt. The command line checks it while parsing, so that
+// such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
+std::optional<std::string> run_options_error(const RunOptions& options);
 
 // Returns the exit code: 0 when every frame reached the displays with one frame of latency.
 int run_wall(const RunOptions& options);

@@ -33,5 +33,26 @@ TEST(ParseKeep, BadItemIsNamed) {
   EXPECT_THROW(parse_keep("3,"), std::invalid_argument);
 }
 
+TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
+  // `l2wall run --frames 3 --keep 7` ran and silently kept nothing.
+  RunOptions o;
+  o.vizserver = "vizserver";
+  o.frames = 3;
+  o.keep = "0,7";
+  EXPECT_EQ(run_options_error(o),
+            std::optional<std::string>("--keep: frame 7 is past the last frame (--frames 3 "
+                                       "renders 0..2)"));
+  o.keep = "0,2";
+  EXPECT_EQ(run_options_error(o), std::nullopt);
+  o.keep = "1,x2";
+  EXPECT_EQ(run_options_error(o),
+            std::optional<std::string>("--keep: 'x2' is not every, last, none or a frame number"));
+  o.keep = "every";
+  o.compare = true;
+  EXPECT_EQ(run_options_error(o), std::optional<std::string>("--compare needs --path both"));
+  o.path = "both";
+  EXPECT_EQ(run_options_error(o), std::nullopt);
+}
+
 }  // namespace
 }  // namespace l2
