@@ -58,6 +58,9 @@ bad_value "--accept-timeout: Value 1e300 not in range" vizserver --displays 8x8 
 # A kept frame past the last one kept nothing, without a word.
 bad_value "--keep: frame 7 is past the last frame" l2wall run --frames 3 --keep 7 --out /tmp
 bad_value "--compare needs --path both" l2wall run --compare --out /tmp
+# --start near LLONG_MAX overflowed start + lines sent (signed: undefined).
+bad_value "--start: Value 9223372036854775000 not in range" sync_backchannel pty \
+  --start 9223372036854775000
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png

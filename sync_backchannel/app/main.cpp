@@ -116,9 +116,10 @@ int main(int argc, char** argv) {
   pty->add_option("--count", count, "Send this many READY lines, then exit (0: until SIGINT)")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
-  pty->add_option("--start", frame, "Frame number of the first READY")
+  // Below 10^6, as READY carries it, so that --start plus the lines sent cannot overflow.
+  pty->add_option("--start", frame, "Frame number of the first READY (0..999999)")
       ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0LL, 999999LL));
 
   auto add_device = [&](CLI::App* cmd) {
     cmd->add_option("device", device, "Serial device, e.g. /dev/ttyUSB0 or /dev/pts/3")->required();
