@@ -64,7 +64,40 @@ struct PlyElement {
   std::string name;
   long count = 0;
   std::vector<PlyProperty> properties;
+  int line = 0;  // of its `element` line in the header
 };
+
+// The fewest bytes one entry of `e` can take: in binary its types' sizes, a list empty; in ASCII
+// a character and a separator for each value.
+std::uint64_t min_entry_bytes(const PlyElement& e, bool binary) {
+  std::uint64_t bytes = 0;
+  for (const PlyProperty& p : e.properties) {
+    bytes += binary ? static_cast<std::uint64_t>(ply_size(p.is_list ? p.count_type : p.type)) : 2;
+  }
+  return bytes;
+}
+
+// Refuses an element that declares more entries than the bytes after the header can hold, before
+// reading a value: a made-up count fails here and not after billions of reads.
+void check_counts_fit(const std::vector<PlyElement>& elements, std::istream& in, bool binary,
+                      const std::filesystem::path& path) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  const std::streamoff body = in.tellg();
+  if (error || body < 0 || static_cast<std::uintmax_t>(body) > size) return;
+  // In ASCII the last value of the file needs no separator after it.
+  std::uint64_t left = size - static_cast<std::uintmax_t>(body) + (binary ? 0 : 1);
+  for (const PlyElement& e : elements) {
+    const std::uint64_t per_entry = min_entry_bytes(e, binary);
+    if (per_entry == 0) continue;
+    if (static_cast<std::uint64_t>(e.count) > left / per_entry) {
+      fail(path, e.line,
+           fmt::format("element '{}' declares {} entries, more than the rest of the file can hold",
+                       e.name, e.count));
+    }
+    left -= static_cast<std::uint64_t>(e.count) * per_entry;
+  }
+}
 
 // Reads values from the body, either as text tokens or as little-endian binary.
 class PlyReader {
@@ -146,6 +179,7 @@ std::vector<PlyElement> read_ply_header(std::istream& in, const std::filesystem:
     } else if (word == "element") {
       PlyElement e;
       if (!(words >> e.name >> e.count) || e.count < 0) fail(path, line, "bad element line");
+      e.line = line;
       elements.push_back(e);
     } else if (word == "property") {
       if (elements.empty()) fail(path, line, "property before any element");
@@ -178,6 +212,7 @@ TriangleMesh load_ply(const std::filesystem::path& path) {
   bool binary = false;
   int line = 0;
   const auto elements = read_ply_header(in, path, binary, line);
+  check_counts_fit(elements, in, binary, path);
   PlyReader reader(in, binary, path, line);
   TriangleMesh mesh;
   for (const auto& e : elements) {
@@ -195,6 +230,7 @@ TriangleMesh load_ply(const std::filesystem::path& path) {
                       iz >= static_cast<int>(e.properties.size()))) {
       fail(path, 0, "PLY vertex element lacks x, y or z");
     }
+    if (e.properties.empty()) continue;  // no bytes in the body, whatever its count
     for (long n = 0; n < e.count; ++n) {
       glm::vec3 v{0.0f};
       std::vector<std::uint32_t> poly;

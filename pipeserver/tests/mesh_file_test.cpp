@@ -75,7 +75,14 @@ TEST(MeshFile, ErrorsNameFileLineAndProblem) {
   const auto ply = write_file("bad.ply",
                               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                               "property float y\nproperty float z\nend_header\n1 2\n");
-  EXPECT_EQ(error_of(ply), ply.string() + ": PLY body ends early or holds a non-number");
+  // Two values in 4 bytes: too short for three, refused before reading (see below).
+  EXPECT_EQ(error_of(ply), ply.string() +
+                               ":3: element 'vertex' declares 1 entries, more than the rest of the "
+                               "file can hold");
+  const auto word = write_file("word.ply",
+                               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\n1 2 z\n");
+  EXPECT_EQ(error_of(word), word.string() + ": PLY body ends early or holds a non-number");
   const auto range = write_file("range.ply",
                                 "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                 "property float y\nproperty float z\nelement face 1\n"
@@ -86,6 +93,38 @@ TEST(MeshFile, ErrorsNameFileLineAndProblem) {
             (fs::temp_directory_path() / "l2_pipeserver_mesh_test" / "x.stl").string() +
                 ": unknown mesh format (expected .ply or .obj)");
   EXPECT_NE(error_of("/nonexistent/bunny.ply").find("cannot open"), std::string::npos);
+}
+
+// An element without properties takes no bytes, whatever its count: skipped, not looped over
+// (a count of 9e18 spun for hours). One with properties may not declare more entries than the
+// rest of the file can hold: in ASCII each value takes at least a character and a separator
+// (the last one none), in binary its type's size; a list may be empty.
+TEST(MeshFile, PlyElementCountsAreBoundedByTheFile) {
+  const auto header = [](int vertices) {
+    return "ply\nformat ascii 1.0\nelement vertex " + std::to_string(vertices) +
+           "\nproperty float x\nproperty float y\nproperty float z\n"
+           "element junk 9000000000000000000\nelement face 1\n"
+           "property list uchar int vertex_indices\nend_header\n";
+  };
+  const auto m = load_mesh(write_file("junk.ply", header(3) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_EQ(m.positions.size(), 3u);
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  // 13 values in the fewest bytes, 25: still enough.
+  EXPECT_EQ(load_mesh(write_file("tight.ply", header(3) + "0 0 0 1 0 0 0 1 0 3 0 1 2")).indices,
+            (std::vector<std::uint32_t>{0, 1, 2}));
+  // 5 vertices need at least 30 bytes.
+  const auto five = write_file("five.ply", header(5) + "0 0 0 1 0 0 0 1 0 3 0 1 2\n");
+  EXPECT_EQ(error_of(five), five.string() +
+                                ":3: element 'vertex' declares 5 entries, more than the rest of "
+                                "the file can hold");
+  const auto huge =
+      write_file("huge.ply",
+                 "ply\nformat binary_little_endian 1.0\nelement vertex 9000000000000000000\n"
+                 "property float x\nproperty float y\nproperty float z\nend_header\n" +
+                     std::string(12 * 1000, '\0'));
+  EXPECT_EQ(error_of(huge), huge.string() +
+                                ":3: element 'vertex' declares 9000000000000000000 entries, more "
+                                "than the rest of the file can hold");
 }
 
 TEST(MeshFile, BundledBunnyLoads) {
