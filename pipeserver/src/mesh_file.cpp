@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -102,11 +105,19 @@ void check_counts_fit(const std::vector<PlyElement>& elements, std::istream& in,
 // Reads values from the body, either as text tokens or as little-endian binary.
 class PlyReader {
  public:
-  PlyReader(std::istream& in, bool binary, const std::filesystem::path& path, int line)
-      : in_(in), binary_(binary), path_(path), line_(line) {}
+  // `first_line`: the line the body starts on, for messages about ASCII values.
+  PlyReader(std::istream& in, bool binary, const std::filesystem::path& path, int first_line)
+      : in_(in), binary_(binary), path_(path), line_(first_line) {}
+
+  // The line of the value read last in an ASCII body; 0 (none) in a binary one.
+  int line() const { return binary_ ? 0 : line_; }
 
   double read(PlyType t) {
     if (!binary_) {
+      for (int c = in_.peek(); c != std::char_traits<char>::eof() && std::isspace(c);
+           c = in_.peek()) {
+        if (in_.get() == '\n') ++line_;
+      }
       double v = 0;
       if (!(in_ >> v)) fail(path_, 0, fmt::format("PLY body ends early or holds a non-number"));
       return v;
@@ -147,6 +158,12 @@ class PlyReader {
   const std::filesystem::path& path_;
   int line_;
 };
+
+// Whether `v` is a whole number in lo..hi (NaN is not): a list length or a vertex index, which
+// a float-typed list can hold as 1.5 or 1e10.
+bool whole_in(double v, double lo, double hi) {
+  return v >= lo && v <= hi && v == std::floor(v);
+}
 
 std::vector<PlyElement> read_ply_header(std::istream& in, const std::filesystem::path& path,
                                         bool& binary, int& line) {
@@ -213,7 +230,7 @@ TriangleMesh load_ply(const std::filesystem::path& path) {
   int line = 0;
   const auto elements = read_ply_header(in, path, binary, line);
   check_counts_fit(elements, in, binary, path);
-  PlyReader reader(in, binary, path, line);
+  PlyReader reader(in, binary, path, line + 1);
   TriangleMesh mesh;
   for (const auto& e : elements) {
     const auto find = [&](const char* n) {
@@ -238,11 +255,18 @@ TriangleMesh load_ply(const std::filesystem::path& path) {
         const auto& p = e.properties[pi];
         if (p.is_list) {
           const double count = reader.read(p.count_type);
-          if (count < 0 || count > 1000)
-            fail(path, 0, fmt::format("{} {}: bad list length", e.name, n));
+          if (!whole_in(count, 0, 1000)) {
+            fail(path, reader.line(), fmt::format("{} {}: bad list length {}", e.name, n, count));
+          }
           for (int k = 0; k < static_cast<int>(count); ++k) {
             const double idx = reader.read(p.type);
-            if (is_face && pi == ifaces) poly.push_back(static_cast<std::uint32_t>(idx));
+            if (!is_face || pi != ifaces) continue;
+            if (!whole_in(idx, 0, std::numeric_limits<std::uint32_t>::max())) {
+              fail(path, reader.line(),
+                   fmt::format("face {}: vertex index {} is not an integer 0..{}", n, idx,
+                               std::numeric_limits<std::uint32_t>::max()));
+            }
+            poly.push_back(static_cast<std::uint32_t>(idx));
           }
         } else {
           const double value = reader.read(p.type);

@@ -127,6 +127,49 @@ TEST(MeshFile, PlyElementCountsAreBoundedByTheFile) {
                                 "than the rest of the file can hold");
 }
 
+// A vertex index is an integer 0..2^32-1 whatever the list's type: 4294967296 used to wrap to
+// vertex 0, 1.5 in a float list to be cut to 1, -1 to be converted with undefined behaviour.
+TEST(MeshFile, PlyFaceIndicesMustBeWholeAndFitUint32) {
+  const auto ascii = [](const std::string& index, const std::string& count_type) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 2\nproperty list " +
+           count_type + " int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1\n  " +
+           index + "\n";
+  };
+  const auto wraps = write_file("wraps.ply", ascii("4294967296", "uchar"));
+  EXPECT_EQ(
+      error_of(wraps),
+      wraps.string() + ":15: face 1: vertex index 4294967296 is not an integer 0..4294967295");
+  const auto negative = write_file("negative.ply", ascii("-1", "uchar"));
+  EXPECT_EQ(error_of(negative),
+            negative.string() + ":15: face 1: vertex index -1 is not an integer 0..4294967295");
+  EXPECT_EQ(load_mesh(write_file("fits.ply", ascii("2", "uchar"))).indices,
+            (std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2}));
+  // A list length is a whole number too: 3.5 used to read three indices.
+  const auto length = write_file("length.ply", ascii("2", "float"));
+  std::string text = ascii("2", "float");
+  text.replace(text.rfind("3 0 1\n"), 1, "3.5");
+  const auto half = write_file("half.ply", text);
+  EXPECT_EQ(error_of(half), half.string() + ":14: face 1: bad list length 3.5");
+  EXPECT_EQ(load_mesh(length).indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 1, 2}));
+
+  std::string body;
+  const float v[3][3] = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}};
+  body.append(reinterpret_cast<const char*>(v), sizeof v);
+  const unsigned char n = 3;
+  const float idx[3] = {2, 1.5f, 0};
+  body.append(reinterpret_cast<const char*>(&n), 1);
+  body.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  const auto binary =
+      write_file("float_index.ply",
+                 "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                 "property float x\nproperty float y\nproperty float z\n"
+                 "element face 1\nproperty list uchar float vertex_indices\nend_header\n" +
+                     body);
+  EXPECT_EQ(error_of(binary),
+            binary.string() + ": face 0: vertex index 1.5 is not an integer 0..4294967295");
+}
+
 TEST(MeshFile, BundledBunnyLoads) {
   const auto m = load_mesh(default_mesh_file());
   EXPECT_EQ(m.positions.size(), 1839u);
