@@ -165,6 +165,18 @@ bool whole_in(double v, double lo, double hi) {
   return v >= lo && v <= hi && v == std::floor(v);
 }
 
+// A vertex coordinate as a float, or nullopt when it is not a finite float (NaN, infinity, or
+// beyond 3.4e38, which would become infinity): normalising a mesh with such a vertex makes every
+// vertex NaN, and the scene renders nothing.
+std::optional<float> finite_float(double v) {
+  if (!std::isfinite(v) || std::fabs(v) > std::numeric_limits<float>::max()) return std::nullopt;
+  return static_cast<float>(v);
+}
+
+std::string not_finite(long vertex, char axis, double value) {
+  return fmt::format("vertex {}: {} = {} is not a finite float", vertex, axis, value);
+}
+
 std::vector<PlyElement> read_ply_header(std::istream& in, const std::filesystem::path& path,
                                         bool& binary, int& line) {
   std::string text;
@@ -270,9 +282,11 @@ TriangleMesh load_ply(const std::filesystem::path& path) {
           }
         } else {
           const double value = reader.read(p.type);
-          if (is_vertex && pi == ix) v.x = static_cast<float>(value);
-          if (is_vertex && pi == iy) v.y = static_cast<float>(value);
-          if (is_vertex && pi == iz) v.z = static_cast<float>(value);
+          if (!is_vertex || (pi != ix && pi != iy && pi != iz)) continue;
+          const char axis = pi == ix ? 'x' : pi == iy ? 'y' : 'z';
+          const auto f = finite_float(value);
+          if (!f) fail(path, reader.line(), not_finite(n, axis, value));
+          v[axis - 'x'] = *f;
         }
       }
       if (is_vertex) mesh.positions.push_back(v);
@@ -303,8 +317,16 @@ TriangleMesh load_obj(const std::filesystem::path& path) {
     std::string kind;
     words >> kind;
     if (kind == "v") {
+      double xyz[3];
+      if (!(words >> xyz[0] >> xyz[1] >> xyz[2])) fail(path, line, "vertex needs three numbers");
       glm::vec3 v;
-      if (!(words >> v.x >> v.y >> v.z)) fail(path, line, "vertex needs three numbers");
+      for (int a = 0; a < 3; ++a) {
+        const auto f = finite_float(xyz[a]);
+        // Numbered from 1, as the face lines number them.
+        const long vertex = static_cast<long>(mesh.positions.size()) + 1;
+        if (!f) fail(path, line, not_finite(vertex, static_cast<char>('x' + a), xyz[a]));
+        v[a] = *f;
+      }
       mesh.positions.push_back(v);
     } else if (kind == "f") {
       std::vector<std::uint32_t> poly;

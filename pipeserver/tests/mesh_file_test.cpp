@@ -3,6 +3,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "pipeserver/mesh_file.hpp"
@@ -168,6 +169,40 @@ TEST(MeshFile, PlyFaceIndicesMustBeWholeAndFitUint32) {
                      body);
   EXPECT_EQ(error_of(binary),
             binary.string() + ": face 0: vertex index 1.5 is not an integer 0..4294967295");
+}
+
+// A coordinate that is not a finite float (NaN, infinity, or beyond 3.4e38, which becomes
+// infinity as a float) used to load; normalising the mesh then made every vertex NaN and the
+// scene rendered nothing.
+TEST(MeshFile, CoordinatesMustBeFiniteFloats) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto ascii = write_file("inf.ply", header + "0 0 0\n1e39 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(error_of(ascii), ascii.string() + ":11: vertex 1: x = 1e+39 is not a finite float");
+
+  const auto binary = [](const std::string& type, const std::string& vertices) {
+    return "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty " + type +
+           " x\nproperty " + type + " y\nproperty " + type +
+           " z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" + vertices +
+           std::string(1, '\3') + std::string("\0\0\0\0\1\0\0\0\2\0\0\0", 12);
+  };
+  const auto bytes = [](const auto& values) {
+    return std::string(reinterpret_cast<const char*>(values), sizeof values);
+  };
+  const float nan[9] = {0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 0};
+  const auto f = write_file("nan.ply", binary("float", bytes(nan)));
+  EXPECT_EQ(error_of(f), f.string() + ": vertex 2: y = nan is not a finite float");
+  const double big[9] = {0, 0, 0, 1, 0, 0, 0, 1, 1e300};
+  const auto d = write_file("big.ply", binary("double", bytes(big)));
+  EXPECT_EQ(error_of(d), d.string() + ": vertex 2: z = 1e+300 is not a finite float");
+  const double fine[9] = {0, 0, 0, 1, 0, 0, 0, 1, 3e38};
+  EXPECT_EQ(load_mesh(write_file("fine.ply", binary("double", bytes(fine)))).positions[2].z, 3e38f);
+
+  const auto obj = write_file("inf.obj", "v 0 0 0\nv 1 1e39 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(error_of(obj), obj.string() + ":2: vertex 2: y = 1e+39 is not a finite float");
+  const auto word = write_file("word.obj", "v 0 0 0\nv 1 nan 0\n");
+  EXPECT_EQ(error_of(word), word.string() + ":2: vertex needs three numbers");
 }
 
 TEST(MeshFile, BundledBunnyLoads) {
