@@ -89,7 +89,10 @@ class EntryReader {
     const toml::node* n = t.get(key);
     if (!n) fail("tolerance", fmt::format("{} missing", key));
     const auto v = n->value<double>();  // an integer reads as a number too
-    if (!v || *v < 0 || *v > 100) fail("tolerance", fmt::format("{} must be 0..100", key));
+    // NaN would pass the range check and make Tolerance::allows convert floor(NaN) to an integer.
+    if (!v || !std::isfinite(*v) || *v < 0 || *v > 100) {
+      fail("tolerance", fmt::format("{} must be 0..100", key));
+    }
     return *v;
   }
 

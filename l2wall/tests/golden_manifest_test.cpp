@@ -102,6 +102,13 @@ TEST(GoldenManifest, ErrorsNameFileLineAndField) {
             "beyond_one_percent = Q }");
   EXPECT_EQ(error_of(with("beyond_one_percent = 0.003", "beyond_one_percent = 300")),
             "m.toml:18: entry.tolerance: beyond_one_percent must be 0..100");
+  // NaN passed the range check, and Tolerance::allows then converted floor(NaN) to an integer.
+  EXPECT_EQ(error_of(with("beyond_one_percent = 0.003", "beyond_one_percent = nan")),
+            "m.toml:18: entry.tolerance: beyond_one_percent must be 0..100");
+  EXPECT_EQ(error_of(with("differing_percent = 0.01", "differing_percent = -nan")),
+            "m.toml:18: entry.tolerance: differing_percent must be 0..100");
+  EXPECT_EQ(error_of(with("differing_percent = 0.01", "differing_percent = inf")),
+            "m.toml:18: entry.tolerance: differing_percent must be 0..100");
   EXPECT_EQ(error_of(with("name = \"bunny\"", "name = \"kd-2x2-test-pattern\"")),
             "m.toml:11: entry.name: \"kd-2x2-test-pattern\" given twice");
   EXPECT_EQ(error_of(with("name = \"bunny\"", "name = \"../bunny\"")),
