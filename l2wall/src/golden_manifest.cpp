@@ -224,11 +224,22 @@ GoldenManifest load_manifest(const std::filesystem::path& file) {
 
 namespace {
 
+// A TOML basic string. TOML forbids control characters in one (tab aside), so they are escaped
+// too: a GL renderer name with a newline in it would otherwise make a manifest nobody can read.
 std::string quoted(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (c == '\n' || c == '\t') {
+      out += c == '\n' ? "\\n" : "\\t";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\u{:04X}", u);
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }

@@ -66,6 +66,30 @@ TEST(GoldenManifest, WritesWhatItReads) {
   EXPECT_EQ(again.entries[1].tolerance.beyond_one_percent, 0.003);
 }
 
+// Strings are written as TOML basic strings with every control character escaped: a renderer
+// name with a newline or a control byte in it used to make a manifest that could not be read.
+TEST(GoldenManifest, WritesControlCharactersItCanReadBack) {
+  GoldenManifest m = parse_manifest(kTwoEntries, "m.toml");
+  const std::string odd[] = {"llvmpipe\n(LLVM 15.0.6)", std::string("a\0b\x01\x1f\x7f", 7),
+                             "tab\there\r\b\f", "quote \" backslash \\ \\u0041 done",
+                             "UTF-8 \xc3\xa9 kept"};
+  for (const std::string& s : odd) {
+    m.entries[1].gl_renderer = s;
+    m.entries[1].mesa = s + "!";
+    m.entries[0].wall = "walls/" + s + ".toml";
+    const std::string text = format_manifest(m);
+    GoldenManifest again;
+    ASSERT_NO_THROW(again = parse_manifest(text, "again.toml")) << text;
+    EXPECT_EQ(again.entries[1].gl_renderer, s);
+    EXPECT_EQ(again.entries[1].mesa, s + "!");
+    EXPECT_EQ(again.entries[0].wall, "walls/" + s + ".toml");
+    EXPECT_EQ(format_manifest(again), text);
+  }
+  m.entries[1].gl_renderer = std::string("a\nb\x01\tc", 6);
+  EXPECT_NE(format_manifest(m).find("gl_renderer = \"a\\nb\\u0001\\tc\"\n"), std::string::npos)
+      << format_manifest(m);
+}
+
 std::string error_of(const std::string& text) {
   try {
     parse_manifest(text, "m.toml");
