@@ -105,11 +105,14 @@ json to_json(const RunReport& r) {
           {"groups", groups}};
 }
 
-// Pretty-printed.
+// Pretty-printed. The text is made before the file is opened, so that nothing can fail between
+// the two and leave an empty report. Strings that are not UTF-8 (file names are bytes) get
+// U+FFFD for each bad byte, where dump() would throw.
 void write_json(const std::filesystem::path& path, const json& j) {
+  const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace) + '\n';
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path);
-  out << j.dump(2) << '\n';
+  out << text;
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
 }
 

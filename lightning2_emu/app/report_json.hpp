@@ -14,8 +14,8 @@
 
 namespace l2 {
 
-// `route`: the frame's counts, the mesh and the input files. Throws std::runtime_error naming
-// the file when it cannot be written.
+// `route`: the frame's counts, the mesh and the input files (a byte of a name that is not UTF-8
+// is written as U+FFFD). Throws std::runtime_error naming the file when it cannot be written.
 void write_route_report(const std::filesystem::path& path, const RouteReport& report,
                         const Mesh& mesh, const std::vector<std::string>& input_files);
 

@@ -78,6 +78,24 @@ TEST_F(Cli, RouteWritesEveryDisplayAndAReport) {
   EXPECT_EQ(report["mesh"]["inputs"], 4);
 }
 
+// report.json lists the input files; a name that is not UTF-8 (byte 0xff) made the JSON library
+// throw after the file was opened, leaving an empty report and exit 1. Bad bytes are written as
+// U+FFFD.
+TEST_F(Cli, RouteReportsAnInputNameThatIsNotUtf8) {
+  FrameBuilder in(40, 4);
+  in.copy(0, 0, 0, 0, 0, 20);
+  const fs::path input = dir / "in\xff.png";
+  write_png(input, in.image());
+  const Result r =
+      run("route --displays 20x3 --out " + (dir / "out").string() + " " + input.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto report = read_json(dir / "out/report.json");
+  ASSERT_EQ(report["input_files"].size(), 1u);
+  EXPECT_EQ(report["input_files"][0], (dir / "in\xef\xbf\xbd.png").string());
+  EXPECT_EQ(report["displays"][0]["covered_pixels"], 20);
+  EXPECT_EQ(report["inputs"][0]["copy_strips"], 1);
+}
+
 TEST_F(Cli, RouteRefusesInputsLargerThanTheBoardLimit) {
   write_png(dir / "big.png", RgbImage(1281, 10));
   const Result r = run("route --displays 100x100 --out " + (dir / "o").string() + " " +
