@@ -2,6 +2,7 @@
 // or dump every header of a scanned-out frame with the §3 error counts.
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cstdio>
 #include <string>
 
@@ -21,12 +22,9 @@ int encode_command(const std::string& op, bool frame, int display, int x, int y,
   } else if (op == "skip") {
     h = l2::StripHeader::skip(frame, width);
   } else {
-    h = {l2::StripOp::Ext,
-         frame,
-         static_cast<std::uint8_t>(display),
-         static_cast<std::uint16_t>(x),
-         static_cast<std::uint16_t>(y),
-         static_cast<std::uint16_t>(width)};
+    // The fields checked as for COPY: narrowed to their types, 300 would become display 44.
+    h = l2::StripHeader::copy(frame, display, x, y, width);
+    h.op = l2::StripOp::Ext;
   }
   h.frame = frame;
   fmt::print("{:012x}\n", l2::encode(h));
@@ -34,14 +32,11 @@ int encode_command(const std::string& op, bool frame, int display, int x, int y,
 }
 
 int decode_command(const std::string& hex) {
-  std::size_t used = 0;
+  // Hex digits only: std::stoull also took a sign, spaces and 0x, and -1 as ffffffffffffffff.
   std::uint64_t value = 0;
-  try {
-    value = std::stoull(hex, &used, 16);
-  } catch (const std::logic_error&) {
-    used = 0;
-  }
-  if (used == 0 || used != hex.size() || hex.size() > 12) {
+  const char* end = hex.data() + hex.size();
+  const auto [stop, error] = std::from_chars(hex.data(), end, value, 16);
+  if (hex.empty() || error != std::errc{} || stop != end || value > l2::header_bits::kMask48) {
     fmt::print(stderr, "strip_headers: '{}' is not a 48-bit hex value (12 hex digits)\n", hex);
     return 2;
   }

@@ -30,16 +30,18 @@ for program in "$@"; do
   fi
 done
 
-# Values checked while parsing, so that they too are usage errors and not a failed run later:
-# the text the error must hold, the program's name, then its arguments.
+# Values a program checks, while parsing or right after, refused the same way: the text the
+# error must hold, the program's name, then its arguments; exit 2 and nothing on stdout.
 bad_value() {
   local want=$1 name=$2 program
   shift 2
   for program in "${programs[@]}"; do [[ $(basename "$program") == "$name" ]] && break; done
-  err=$("$program" "$@" 2>&1 >/dev/null)
+  out=$("$program" "$@" 2>/tmp/usage_errors.$$)
   status=$?
-  if [[ $status -ne 2 || $err != *"$want"* ]]; then
-    echo "FAIL $name $*: exit $status (want 2 and '$want'), stderr: ${err:0:200}"
+  err=$(cat /tmp/usage_errors.$$)
+  rm -f /tmp/usage_errors.$$
+  if [[ $status -ne 2 || $err != *"$want"* || -n $out ]]; then
+    echo "FAIL $name $*: exit $status (want 2 and '$want'), stderr: ${err:0:200}, stdout: ${out:0:200}"
     failed=1
   else
     echo "ok   $name $*: exits 2: ${err%%$'\n'*}"
@@ -64,4 +66,11 @@ bad_value "--start: Value 9223372036854775000 not in range" sync_backchannel pty
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png
+# EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).
+bad_value "field 'display' = 300 is outside 0..63" strip_headers encode --op ext --display 300
+bad_value "field 'x' = 65541 is outside 0..4095" strip_headers encode --op ext --x 65541
+# Hex digits only (stoull took -1 as ffffffffffffffff, and a 0x prefix), below 2^48.
+for value in -1 +1 0x1 ' 1' 1000000000000 ''; do
+  bad_value "'$value' is not a 48-bit hex value" strip_headers decode -- "$value"
+done
 exit $failed
