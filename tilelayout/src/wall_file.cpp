@@ -35,6 +35,12 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
 }
 
 Wall load_wall(const std::filesystem::path& path) {
+  // A directory opens as a stream here and reads as nothing, which would be reported as a wall
+  // without displays. (Not "anything but a regular file": a pipe such as <(...) is a fine wall.)
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(EISDIR)));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));

@@ -258,6 +258,20 @@ TEST(WallFile, LoadWallNamesAFileItCannotRead) {
   }
 }
 
+// A directory opens as a stream on Linux and reads as nothing: it was reported as a wall without
+// displays.
+TEST(WallFile, LoadWallNamesADirectory) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "l2_wall_dir.toml";
+  std::filesystem::create_directories(dir);
+  try {
+    load_wall(dir);
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.string() + ": cannot read: Is a directory");
+  }
+  std::filesystem::remove(dir);
+}
+
 TEST(WallFile, DefaultWallIsTheFileInWalls) {
   std::ifstream in(std::string(L2_WALLS_DIR) + "/kd-2x2.toml");
   std::ostringstream text;
