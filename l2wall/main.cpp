@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--refresh", o.refresh_hz,
                   "emulator input refresh rate in Hz; 0 = as fast as possible")
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(l2::rate_hz(true))
       ->capture_default_str();
   run->add_option("--path", o.path,
                   "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "

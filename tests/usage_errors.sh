@@ -55,8 +55,18 @@ bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --servers 1 
 # sscanf's %d wrapped 4294967360 to 64; 1e300 s did not fit the milliseconds it became.
 bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 --servers 1 \
   --out /tmp
-bad_value "--accept-timeout: Value 1e300 not in range" vizserver --displays 8x8 --servers 1 \
-  --out /tmp --accept-timeout 1e300
+bad_value "1e300 is not 0 (forever) or 0.001..86400 seconds" vizserver --displays 8x8 \
+  --servers 1 --out /tmp --accept-timeout 1e300
+# 1e-9 s became 0 ms, which is forever; NaN too.
+bad_value "1e-9 is not 0 (forever)" vizserver --displays 8x8 --servers 1 --out /tmp \
+  --accept-timeout 1e-9
+bad_value "nan is not 0 (forever)" vizserver --displays 8x8 --servers 1 --out /tmp \
+  --stall-timeout nan
+# Below 1 Hz the run slept through its stall timeout and stop signals; NaN passed CLI::Range.
+bad_value "0.05 is not 0 (as fast as possible) or 1..1000 Hz" l2wall run --refresh 0.05 \
+  --out /tmp
+bad_value "nan is not 0 (as fast as possible) or 1..1000 Hz" l2wall run --refresh nan --out /tmp
+bad_value "nan is not 1..1000 Hz" show_wall --rate nan --displays-from /tmp
 # A kept frame past the last one kept nothing, without a word.
 bad_value "--keep: frame 7 is past the last frame" l2wall run --frames 3 --keep 7 --out /tmp
 bad_value "--compare needs --path both" l2wall run --compare --out /tmp

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/size_text.hpp"
 #include "image/png_io.hpp"
@@ -20,10 +21,6 @@
 #include "vizserver/swap_queue.hpp"
 
 namespace {
-
-// Timeouts beyond a day are refused: 1e300 seconds did not fit the milliseconds they become
-// (an undefined conversion, which waited forever) and 1e10 overflowed the deadline at once.
-constexpr double kMaxTimeoutSeconds = 86400;
 
 // Swapped frames waiting to be written or streamed; a slower writer holds the swaps back.
 constexpr std::size_t kQueuedFrames = 4;
@@ -140,11 +137,11 @@ int main(int argc, char** argv) {
   app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
   app.add_option("--accept-timeout", accept_timeout,
                  "Seconds for all pipeservers to connect; 0 waits forever")
-      ->check(CLI::Range(0.0, kMaxTimeoutSeconds))
+      ->check(l2::timeout_seconds())
       ->capture_default_str();
   app.add_option("--stall-timeout", stall_timeout,
                  "Seconds a pipeserver may stay silent while a frame waits for it; 0: forever")
-      ->check(CLI::Range(0.0, kMaxTimeoutSeconds))
+      ->check(l2::timeout_seconds())
       ->capture_default_str();
   std::vector<std::pair<int, int>> sizes;
   app.callback([&] {  // after parsing: a CLI::ValidationError here is a usage error too

@@ -7,6 +7,7 @@
 #include <exception>
 #include <thread>
 
+#include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "display_files.hpp"
 #include "displays/wall_presenter.hpp"
@@ -109,7 +110,7 @@ int main(int argc, char** argv) {
                  "At the end, save what the screens show: DIR/display-<d>.png per display and\n"
                  "DIR/window-<i>.png per window; the s key saves here too (default ./screenshots)");
   app.add_option("--rate", o.rate, "Frames per second to present at")
-      ->check(CLI::PositiveNumber)
+      ->check(l2::rate_hz(false))
       ->capture_default_str();
   app.add_flag("--no-vsync", o.no_vsync, "Swap at once instead of on vertical blank");
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;

@@ -7,9 +7,11 @@
 namespace l2 {
 
 RefreshClock::RefreshClock(double hz) : hz_(hz) {
-  if (!(hz >= 0.0) || hz > 1000.0) {
+  // Below 1 Hz the caller would sleep through seconds at a time (and a period of 1e-10 Hz
+  // overflows); NaN fails every comparison.
+  if (!(hz == 0.0 || (hz >= 1.0 && hz <= 1000.0))) {
     throw std::invalid_argument(
-        fmt::format("refresh rate {} Hz is outside 0 (as fast as possible) .. 1000 Hz", hz));
+        fmt::format("refresh rate {} Hz is not 0 (as fast as possible) or 1..1000 Hz", hz));
   }
   if (hz > 0.0) {
     period_ = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));

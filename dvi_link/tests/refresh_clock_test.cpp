@@ -1,6 +1,7 @@
 #include "dvi_link/refresh_clock.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
@@ -45,9 +46,14 @@ TEST(RefreshClock, RejectsRatesOutsideItsRange) {
     RefreshClock clock(-1.0);
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "refresh rate -1 Hz is outside 0 (as fast as possible) .. 1000 Hz");
+    EXPECT_STREQ(e.what(), "refresh rate -1 Hz is not 0 (as fast as possible) or 1..1000 Hz");
   }
   EXPECT_THROW(RefreshClock(5000.0), std::invalid_argument);
+  // Below 1 Hz a caller slept through seconds; 1e-10 Hz overflowed the period; NaN passed.
+  EXPECT_THROW(RefreshClock(0.5), std::invalid_argument);
+  EXPECT_THROW(RefreshClock(1e-10), std::invalid_argument);
+  EXPECT_THROW(RefreshClock(std::nan("")), std::invalid_argument);
+  EXPECT_NO_THROW(RefreshClock(1.0));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <exception>
 
+#include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "commands.hpp"
 
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
       ->add_option("--refresh", show.refresh_hz,
                    "With --show: refreshes per second on screen (default: the wall's "
                    "refresh_hz, 60 with --displays); 0 = as fast as possible")
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(l2::rate_hz(true))
       ->needs("--show");
   sequence
       ->add_option("--show-readback", show.readback,

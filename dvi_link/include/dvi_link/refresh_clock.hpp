@@ -10,7 +10,8 @@ inline constexpr double kDefaultRefreshHz = 60.0;
 
 class RefreshClock {
  public:
-  // hz > 0: ticks every 1/hz s; hz == 0: never waits. Throws std::invalid_argument otherwise.
+  // hz 1..1000: ticks every 1/hz s; hz == 0: never waits. Throws std::invalid_argument
+  // otherwise.
   explicit RefreshClock(double hz = kDefaultRefreshHz);
 
   // Sleeps until the next tick. Ticks are on a fixed grid from construction, so sleeping

@@ -1,0 +1,40 @@
+// Checks for numbers whose whole range CLI::Range would let through: CLI::Range passes NaN
+// (every comparison with it is false), and a tiny positive value can mean "never".
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace l2 {
+
+inline constexpr double kMinRateHz = 1, kMaxRateHz = 1000;
+
+// A refresh or frame rate in Hz: 1..1000, or 0 (as fast as possible) where allowed. Below
+// 1 Hz a run sleeps through seconds between refreshes, past its stall timeout and its stop
+// signal, and 1e-10 Hz overflowed the period.
+inline CLI::Validator rate_hz(bool zero_allowed) {
+  return CLI::Validator(
+      [zero_allowed](std::string& text) -> std::string {
+        const double hz = std::strtod(text.c_str(), nullptr);
+        if ((zero_allowed && hz == 0) || (hz >= kMinRateHz && hz <= kMaxRateHz)) return {};
+        return text + (zero_allowed ? " is not 0 (as fast as possible) or 1..1000 Hz"
+                                    : " is not 1..1000 Hz");
+      },
+      zero_allowed ? "0 or 1..1000 Hz" : "1..1000 Hz");
+}
+
+// A timeout in seconds: 0 (wait forever) or 0.001..86400. A smaller positive value became 0 ms,
+// which is forever; NaN too.
+inline CLI::Validator timeout_seconds() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const double s = std::strtod(text.c_str(), nullptr);
+        if (s == 0 || (s >= 0.001 && s <= 86400)) return {};
+        return text + " is not 0 (forever) or 0.001..86400 seconds";
+      },
+      "0 or 0.001..86400 s");
+}
+
+}  // namespace l2
