@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "tilelayout/tile_layout.hpp"
 #include "wall_sections.hpp"
@@ -45,9 +46,17 @@ Wall load_wall(const std::filesystem::path& path) {
   if (!in) {
     throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_wall(text.str(), path);
+  // Read with a limit: a wall file is a few kilobytes, and /dev/zero or a wrong file (a frame
+  // dump, a log) would otherwise be read to the end of memory before TOML refuses it.
+  constexpr std::size_t kMaxBytes = 16u << 20;
+  std::string text(kMaxBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxBytes) {
+    throw LayoutError(
+        fmt::format("{}: more than {} MiB: not a wall file", path.string(), kMaxBytes >> 20));
+  }
+  return parse_wall(text, path);
 }
 
 Wall default_wall() {

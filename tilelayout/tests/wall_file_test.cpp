@@ -272,6 +272,16 @@ TEST(WallFile, LoadWallNamesADirectory) {
   std::filesystem::remove(dir);
 }
 
+TEST(WallFile, LoadWallStopsReadingAtSixteenMegabytes) {
+  // `tilelayout /dev/zero` read until it held 3.7 GB, and on.
+  try {
+    load_wall("/dev/zero");
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/zero: more than 16 MiB: not a wall file");
+  }
+}
+
 TEST(WallFile, DefaultWallIsTheFileInWalls) {
   std::ifstream in(std::string(L2_WALLS_DIR) + "/kd-2x2.toml");
   std::ostringstream text;
