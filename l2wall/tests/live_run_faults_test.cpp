@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -24,6 +25,27 @@ using namespace testing_support;
 
 // How soon after a fault the run must have ended, named it and cleaned up.
 constexpr auto kFaultNoticeBound = 10s;
+
+TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
+  // One tile, two pipeservers: pipeserver 1 scanned out idle frames, never got READY, and the
+  // run ended 11 s later with "pipeservers did not end after the last frame".
+  const fs::path wall = fs::temp_directory_path() / fmt::format("l2-idle-{}.toml", getpid());
+  std::ofstream(wall) << "name = \"one tile, two pipeservers\"\n"
+                         "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
+                         "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 240\n"
+                         "[pipeservers]\ncount = 2\nframebuffer_width = 400\n"
+                         "framebuffer_height = 300\n";
+  WallRun run("idle", {"--frames", "3", wall.string()});
+  const ExitStatus status = run.wait(10s);
+  fs::remove(wall);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(run.output().find(wall.string() +
+                              ": pipeserver 1 gets no tiles (1 display tiles for 2 pipeservers)"),
+            std::string::npos)
+      << run.output();
+  EXPECT_FALSE(fs::exists(run.out() / "host-0.log")) << "a pipeserver was started";
+  expect_clean(run);
+}
 
 TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
   WallRun run("killed", {"--frames", "100000", "--refresh", "60"});
