@@ -76,6 +76,16 @@ bad_value "--start: Value 9223372036854775000 not in range" sync_backchannel pty
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png
+# lightning2_emu: what its options say in their text is a usage error too (it exited 1).
+bad_value "--displays: display 0: '640x' is not WIDTHxHEIGHT" lightning2_emu route \
+  --displays 640x --out /tmp x.png
+bad_value "give either --displays" lightning2_emu route --out /tmp x.png
+bad_value "--groups: display 1: group -1 is not 0..63" lightning2_emu route --displays 8x8,8x8 \
+  --groups 0,-1 --out /tmp x.png
+bad_value "--board-max: '5000x5000': each side must be at most 4096" lightning2_emu route \
+  --displays 8x8 --board-max 5000x5000 --out /tmp x.png
+bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displays 8x8 \
+  --ticks 1000000 --out /tmp /tmp
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).
 bad_value "field 'display' = 300 is outside 0..63" strip_headers encode --op ext --display 300
 bad_value "field 'x' = 65541 is outside 0..4095" strip_headers encode --op ext --x 65541

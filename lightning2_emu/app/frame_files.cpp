@@ -87,7 +87,12 @@ void apply_group_list(const std::string& text, std::vector<DisplaySpec>& display
         fmt::format("--groups: {} groups given for {} displays", parts.size(), displays.size()));
   }
   for (std::size_t d = 0; d < parts.size(); ++d) {
-    displays[d].swap_group = parse_int(parts[d], fmt::format("--groups: display {}", d));
+    const std::string what = fmt::format("--groups: display {}", d);
+    const int group = parse_int(parts[d], what);
+    if (group < 0 || group > 63) {  // as a wall file's swap_group
+      throw std::invalid_argument(fmt::format("{}: group {} is not 0..63", what, group));
+    }
+    displays[d].swap_group = group;
   }
 }
 

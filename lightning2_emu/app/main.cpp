@@ -55,9 +55,11 @@ int main(int argc, char** argv) {
       "OUT/display-<d>/frame-<t>.png for every refresh, OUT/report.json and, with --wall, "
       "OUT/wall/frame-<t>.png");
   add_common(*sequence, seq_options);
-  sequence->add_option("--ticks", ticks,
-                       "Refreshes to run (default: the longest input's frame count + 1; an "
-                       "input past its last frame keeps scanning it out)");
+  sequence
+      ->add_option("--ticks", ticks,
+                   "Refreshes to run, 1..100000 (default: the longest input's frame count + "
+                   "1; an input past its last frame keeps scanning it out)")
+      ->check(CLI::Range(1, 100000));
   sequence->add_option("inputs", seq_options.inputs, "Input folders IN0/ IN1/ ...")->required();
   l2::ShowOptions show;
   sequence
@@ -87,6 +89,11 @@ int main(int argc, char** argv) {
   try {
     if (*route) return l2::run_route(route_options);
     return l2::run_sequence(seq_options, ticks, show);
+  } catch (const std::invalid_argument& e) {
+    // What the options say together or in their text (frame_files.cpp, setup.cpp): a usage
+    // error, as the ones CLI11 finds. A wall file or frame that cannot be used is exit 1.
+    fmt::print(stderr, "lightning2_emu: {}\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightning2_emu: {}\n", e.what());
     return 1;

@@ -15,6 +15,10 @@ Setup make_setup(const CommonOptions& o) {
   }
   Setup setup;
   InputLimit limit = parse_size(o.board_max, "--board-max");
+  if (limit.width > 4096 || limit.height > 4096) {  // as a wall file's board_max_width/height
+    throw std::invalid_argument(
+        fmt::format("--board-max: '{}': each side must be at most 4096", o.board_max));
+  }
   setup.config.background = parse_colour(o.background, "--background");
   setup.config.workers = o.threads;
   const int inputs = static_cast<int>(o.inputs.size());

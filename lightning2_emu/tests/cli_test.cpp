@@ -120,7 +120,7 @@ TEST_F(Cli, RouteRefusesInputsAndDisplaysBeyondTheMesh) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("display 8 is beyond the mesh"), std::string::npos) << r.output;
   r = run("route --displays 10y10 --out " + (dir / "o").string() + " " + (dir / "a.png").string());
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 2);  // a usage error
   EXPECT_NE(r.output.find("--displays: display 0: '10y10' is not WIDTHxHEIGHT"), std::string::npos)
       << r.output;
 }
