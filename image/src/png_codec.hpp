@@ -27,8 +27,11 @@ struct Codec {
   std::string (*read_rgb)(const char* path, RgbSink sink);
 };
 
-// The module's one exported symbol: a function returning its Codec.
-inline constexpr const char* kEntryPoint = "l2_png_codec";
+// The module's one exported symbol: a function returning its Codec. The name carries the
+// version of the structures above: a program and a module built from different sources (a
+// partial rebuild) then fail with "has no l2_png_codec_v2" instead of misreading each other's
+// structures (a picture's size limit read as garbage, or a crash). Change both with them.
+inline constexpr const char* kEntryPoint = "l2_png_codec_v2";
 using EntryPoint = const Codec* (*)();
 
 }  // namespace l2::png_codec

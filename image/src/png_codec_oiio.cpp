@@ -77,6 +77,7 @@ constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb};
 
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec() {
+// Named as png_codec::kEntryPoint says.
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v2() {
   return &kCodec;
 }

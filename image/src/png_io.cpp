@@ -20,7 +20,10 @@ const png_codec::Codec& codec(const std::filesystem::path& picture) {
     void* module = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);  // never closed
     if (!module) return {nullptr, std::string("cannot load the image codec: ") + ::dlerror()};
     auto entry = reinterpret_cast<png_codec::EntryPoint>(::dlsym(module, png_codec::kEntryPoint));
-    if (!entry) return {nullptr, std::string(file) + " has no " + png_codec::kEntryPoint};
+    if (!entry) {
+      return {nullptr, std::string(file) + " has no " + png_codec::kEntryPoint +
+                           ": it was built from other sources than this program (rebuild both)"};
+    }
     return {entry(), {}};
   }();
   if (!loaded.first) throw std::runtime_error(picture.string() + ": " + loaded.second);
