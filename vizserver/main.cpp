@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -173,6 +174,16 @@ int main(int argc, char** argv) {
     if (!stream_address.empty()) {
       const l2::viz::Endpoint stream = l2::viz::parse_endpoint(stream_address);
       out.stream.emplace(l2::viz::DisplaySender::connect(stream.host, stream.port));
+    }
+    // Before listening: a folder that cannot be made failed only at the first swap, after the
+    // pipeservers had connected and been told frame 0 swapped.
+    if (!out.png_dir.empty()) {
+      std::error_code error;
+      std::filesystem::create_directories(out.png_dir, error);
+      if (error) {
+        throw std::runtime_error(
+            fmt::format("--out {}: cannot create the folder: {}", out.png_dir, error.message()));
+      }
     }
     l2::viz::CompositingServer server(options);
     l2::viz::SwapQueue queue(kQueuedFrames);

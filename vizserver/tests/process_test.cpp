@@ -226,6 +226,12 @@ TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   ChildProcess bad_stream(
       {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--display-stream", "localhost"});
   EXPECT_EQ(bad_stream.wait(5000ms), 2);
+  // An --out folder that cannot be made ends the run before it listens (it failed only at the
+  // first swap, after the pipeservers had connected).
+  ChildProcess bad_out(
+      {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--out", "/etc/passwd/frames"});
+  EXPECT_EQ(bad_out.read_line(5000ms), std::nullopt);  // no "listening on" line
+  EXPECT_EQ(bad_out.wait(5000ms), 1);
 }
 
 }  // namespace
