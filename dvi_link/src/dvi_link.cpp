@@ -141,9 +141,10 @@ int create_segment(const std::string& name) {
     if (errno != EEXIST) fail_errno(name, "cannot create shared-memory segment", errno);
     const std::int32_t pid = existing_writer(name);
     if (pid < 0) {
-      fail(name,
-           "already exists and is not a complete DVI link (if it was left behind, "
-           "remove it with remove_stale)");
+      // Named as a user can remove it (shm_open's names live in /dev/shm on Linux).
+      fail(name, fmt::format("already exists and is not a complete DVI link (if it was left "
+                             "behind, remove /dev/shm{})",
+                             name));
     }
     if (process_alive(pid)) {
       fail(name, fmt::format("already exists and is in use by process {}", pid));

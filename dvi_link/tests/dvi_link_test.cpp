@@ -271,7 +271,8 @@ TEST(DviLink, SegmentsThatAreNotDviLinksAreRefused) {
   EXPECT_EQ(error_of([&] { DviLinkWriter::create(name, 4, 4); }),
             "DVI link " + name +
                 ": already exists and is not a complete DVI link (if it was left behind, remove "
-                "it with remove_stale)");
+                "/dev/shm" +
+                name + ")");
   ::close(fd);
   EXPECT_TRUE(remove_stale(name));
 }

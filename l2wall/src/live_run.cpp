@@ -316,8 +316,11 @@ class LiveRun {
   // frame: the emulator swapped frame K while the run waited for the compositing server's K.
   std::string displays_kept() const {
     const int via_viz = viz_ && viz_->last() ? static_cast<int>(viz_->last()->frame) : -1;
-    if (!dvi_ || !viz_ || via_viz == dvi_shown_)
-      return fmt::format("the displays keep frame {}", dvi_ ? dvi_shown_ : via_viz);
+    if (!dvi_ || !viz_ || via_viz == dvi_shown_) {
+      const int kept = dvi_ ? dvi_shown_ : via_viz;
+      if (kept < 0) return "no frame reached the displays";  // not "frame -1"
+      return fmt::format("the displays keep frame {}", kept);
+    }
     return fmt::format("the displays keep frame {} (DVI path) and frame {} (vizserver path)",
                        dvi_shown_, via_viz);
   }
