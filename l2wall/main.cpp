@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
                   "output folder: frame-<k>/display-<id>.png and wall.png for kept frames, "
                   "report.csv (one row per frame), summary.txt, host-<i>.log, vizserver.log (the "
                   "compositing server's lines)")
+      ->check(l2::non_empty_path())
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")

@@ -86,6 +86,9 @@ bad_value "--board-max: '5000x5000': each side must be at most 4096" lightning2_
   --displays 8x8 --board-max 5000x5000 --out /tmp x.png
 bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displays 8x8 \
   --ticks 1000000 --out /tmp /tmp
+# An empty --out wrote into the current folder without a word (l2wall: "Invalid argument []").
+bad_value "--out: an empty path" lightning2_emu route --displays 8x8 --out '' x.png
+bad_value "--out: an empty path" l2wall run --out ''
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).
 bad_value "field 'display' = 300 is outside 0..63" strip_headers encode --op ext --display 300
 bad_value "field 'x' = 65541 is outside 0..4095" strip_headers encode --op ext --x 65541

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "command_line/checks.hpp"
 #include "golden_check.hpp"
 #include "golden_update.hpp"
 
@@ -70,6 +71,7 @@ void add_golden_command(CLI::App& app) {
       "pass, 1 a mismatch, 2 the check could not run");
   add_path_options(*c, check->paths, check->entries);
   c->add_option("--out", check->out, "where actual images and diff pictures go")
+      ->check(non_empty_path())
       ->type_name("DIR")
       ->capture_default_str();
   c->add_option("--inputs", check->inputs,
@@ -95,6 +97,7 @@ void add_golden_command(CLI::App& app) {
       "image unless --allow-routing-change");
   add_path_options(*u, update->paths, update->entries);
   u->add_option("--out", update->out, "where the runs and pictures of refused changes go")
+      ->check(non_empty_path())
       ->type_name("DIR")
       ->capture_default_str();
   u->add_flag("--allow-routing-change", update->allow_routing_change,

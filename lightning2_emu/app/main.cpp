@@ -27,7 +27,7 @@ void add_common(CLI::App& cmd, l2::CommonOptions& o) {
   cmd.add_option("--threads", o.threads, "Worker threads (0: one per core)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
-  cmd.add_option("--out", o.out, "Output folder")->required();
+  cmd.add_option("--out", o.out, "Output folder")->required()->check(l2::non_empty_path());
 }
 
 }  // namespace

@@ -37,4 +37,13 @@ inline CLI::Validator timeout_seconds() {
       "0 or 0.001..86400 s");
 }
 
+// An output path: not empty, which would mean the current folder without saying so.
+inline CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "an empty path (give a folder; '.' for the current one)" : "";
+      },
+      "PATH");
+}
+
 }  // namespace l2
