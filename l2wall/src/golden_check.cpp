@@ -30,10 +30,14 @@ class EntryCheck {
       : entry_(entry), out_(out), dir_(options.out / entry.name) {}
 
   bool passed() const { return passed_; }
+  bool ran() const { return ran_; }
 
-  void fail(const std::string& message) {
-    out_ << entry_.name << ": " << message << "\n";
+  // The check itself could not be made (an input, a tool or a golden image is missing): not a
+  // mismatch, which is what exit status 1 tells.
+  void could_not_run(const std::string& message) {
+    out_ << entry_.name << ": could not be checked: " << message << "\n";
     passed_ = false;
+    ran_ = false;
   }
 
   // Compares and, for every display that differs when the set fails, writes the pictures and
@@ -91,6 +95,7 @@ class EntryCheck {
   std::ostream& out_;
   std::filesystem::path dir_;
   bool passed_ = true;
+  bool ran_ = true;
 };
 
 const Comparison kAgainstGolden{"emulator vs golden image", "-actual", "", "-diff"};
@@ -102,7 +107,7 @@ std::vector<RgbImage> load_goldens(const GoldenPaths& paths, const GoldenEntry& 
   for (const int id : ids) {
     const auto file = paths.image(entry, id);
     if (!std::filesystem::exists(file)) {
-      check.fail(
+      check.could_not_run(
           fmt::format("golden image {} is missing (make it with `l2wall golden update "
                       "--entry {}`)",
                       file.string(), entry.name));
@@ -142,9 +147,11 @@ void report_input_errors(const GoldenEntry& entry, const StripErrorCounts& e, st
       e.missing_display, e.clips);
 }
 
+enum class EntryResult { Passed, Failed, NotRun };
+
 // `gl` is asked for (pipeserver --gl-info) the first time a rendered entry needs it.
-bool check_entry(const GoldenEntry& entry, const CheckOptions& o, std::optional<GlInfo>& gl,
-                 std::ostream& out) {
+EntryResult check_entry(const GoldenEntry& entry, const CheckOptions& o, std::optional<GlInfo>& gl,
+                        std::ostream& out) {
   EntryCheck check(entry, o, out);
   std::filesystem::remove_all(o.out / entry.name);
   try {
@@ -171,9 +178,11 @@ bool check_entry(const GoldenEntry& entry, const CheckOptions& o, std::optional<
       check.compare(against_reference, shown.ids, shown.reference, shown.emulator, entry.tolerance);
     }
   } catch (const std::exception& e) {
-    check.fail(e.what());
+    check.could_not_run(e.what());
   }
-  return check.passed();
+  return !check.ran()     ? EntryResult::NotRun
+         : check.passed() ? EntryResult::Passed
+                          : EntryResult::Failed;
 }
 
 std::string describe_entry(const GoldenEntry& e, bool from_inputs) {
@@ -199,7 +208,7 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
           entries.front()->name));
     }
   }
-  int failed = 0;
+  int failed = 0, not_run = 0;
   std::optional<GlInfo> gl;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const GoldenEntry& e = *entries[i];
@@ -209,19 +218,31 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
         << std::flush;
     const auto t0 = std::chrono::steady_clock::now();
     std::ostringstream details;
-    const bool ok = check_entry(e, o, gl, details);
+    const EntryResult result = check_entry(e, o, gl, details);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    out << fmt::format("{} ({:.1f} s)\n", ok ? "ok" : "FAILED", s) << details.str() << std::flush;
-    if (!ok) ++failed;
+    const char* said = result == EntryResult::Passed   ? "ok"
+                       : result == EntryResult::Failed ? "FAILED"
+                                                       : "could not run";
+    out << fmt::format("{} ({:.1f} s)\n", said, s) << details.str() << std::flush;
+    failed += result == EntryResult::Failed;
+    not_run += result == EntryResult::NotRun;
   }
-  if (failed == 0) {
+  if (failed == 0 && not_run == 0) {
     out << fmt::format("golden check: all {} entries pass\n", entries.size());
     return 0;
   }
-  out << fmt::format(
-      "golden check: {} of {} entries FAILED; actual images and diff pictures in "
-      "{}\n",
-      failed, entries.size(), o.out.string());
+  if (failed > 0) {
+    out << fmt::format(
+        "golden check: {} of {} entries FAILED; actual images and diff pictures in "
+        "{}\n",
+        failed, entries.size(), o.out.string());
+  }
+  if (not_run > 0) {
+    // Exit 2 even beside mismatches: a check that was not made is not a pass or a fail.
+    out << fmt::format("golden check: {} of {} entries could not be checked\n", not_run,
+                       entries.size());
+    return 2;
+  }
   return 1;
 }
 

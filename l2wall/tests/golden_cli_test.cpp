@@ -101,6 +101,19 @@ TEST_F(GoldenCli, OneHeaderFieldChangedInAnInputFrameFailsWithADiffPicture) {
   }
   EXPECT_EQ(read_png(actual).at(d.x, d.y + r), (Rgb{0, 0, 0}));
   EXPECT_NE(idiff(golden(kPattern, t.tile.display), actual), 0);
+
+  // A captured frame missing is a check that could not be made, exit 2: it was reported as a
+  // mismatch (exit 1) "with actual images and diff pictures" that were never written.
+  fs::remove(inputs / "scanout-3.png");
+  const Result missing = l2wall(check);
+  EXPECT_EQ(missing.code, 2) << missing.output;
+  EXPECT_NE(missing.output.find(kPattern + ": could not be checked: "), std::string::npos)
+      << missing.output;
+  EXPECT_NE(missing.output.find("scanout-3.png"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("golden check: 1 of 1 entries could not be checked"),
+            std::string::npos)
+      << missing.output;
+  EXPECT_EQ(missing.output.find("diff pictures"), std::string::npos) << missing.output;
 }
 
 TEST_F(GoldenCli, UpdateRefusesToChangeARoutingOnlyGoldenUnlessAllowed) {
