@@ -18,14 +18,9 @@ iovec part(const void* p, std::size_t n) {
 
 DisplaySender DisplaySender::connect(const std::string& host, std::uint16_t port,
                                      std::chrono::milliseconds io_timeout) {
-  const std::string peer = fmt::format("display stream {}:{}", host, port);
-  Fd fd;
-  try {
-    fd = connect_tcp(host, port, std::chrono::seconds(5));
-  } catch (const VizError& e) {
-    throw VizError(fmt::format("{}: {}", peer, e.what()));
-  }
-  return DisplaySender(std::move(fd), peer, io_timeout);
+  // The watcher (l2wall run) listens; a vizserver that cannot reach it says so by that name.
+  Fd fd = connect_tcp(host, port, std::chrono::seconds(5), "the display stream's watcher");
+  return DisplaySender(std::move(fd), fmt::format("display stream {}:{}", host, port), io_timeout);
 }
 
 void DisplaySender::send_listening(const Listening& listening) {

@@ -193,7 +193,8 @@ std::string peer_name(int fd) {
   return sockaddr_text(ss);
 }
 
-Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout) {
+Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout,
+               std::string_view what) {
   const auto deadline = Clock::now() + timeout;
   const AddrInfoPtr addrs = resolve(host, port, false);
   for (;;) {
@@ -208,8 +209,8 @@ Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::millise
     }
     // Refused: the server is probably still starting. Anything else will not get better.
     if (last_errno != ECONNREFUSED || Clock::now() >= deadline) {
-      throw VizError(fmt::format("cannot connect to compositing server {}:{} within {} ms: {}",
-                                 host, port, timeout.count(), err_text(last_errno)));
+      throw VizError(fmt::format("cannot connect to {} {}:{} within {} ms: {}", what, host, port,
+                                 timeout.count(), err_text(last_errno)));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

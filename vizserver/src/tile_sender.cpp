@@ -25,7 +25,7 @@ TileSender TileSender::connect(const std::string& host, std::uint16_t port, int 
   if (server_id < 0 || display_count < 0) {
     throw std::invalid_argument("TileSender: negative pipeserver id or display count");
   }
-  Fd fd = connect_tcp(host, port, options.connect_timeout);
+  Fd fd = connect_tcp(host, port, options.connect_timeout, "compositing server");
   TileSender s(std::move(fd), fmt::format("compositing server {}:{}", host, port), server_id,
                options);
   const auto hello = encode(

@@ -61,8 +61,10 @@ std::uint16_t local_port(int fd);
 std::string peer_name(int fd);
 
 // Connects to host:port, retrying refused connections (the server may not be listening yet)
-// until `timeout` has passed. The socket is non-blocking with TCP_NODELAY.
-Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout);
+// until `timeout` has passed. The socket is non-blocking with TCP_NODELAY. A failure is a
+// VizError "cannot connect to <what> host:port within N ms: <reason>".
+Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout,
+               std::string_view what = "server");
 
 void set_nonblocking(int fd);
 void set_nodelay(int fd);
