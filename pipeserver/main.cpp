@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
                  "mesh scene: PLY or OBJ file (default: bunny)")
       ->check(CLI::ExistingFile);
   app.add_option("--triangles", o.scene_options.triangles, "strips scene: triangle count")
-      ->check(CLI::Range(1L, 50'000'000L));
+      ->check(CLI::Range(1L, l2::kMaxTriangles));
   app.add_option("--strip-length", o.scene_options.strip_length,
                  "strips scene: triangles per strip")
       ->check(CLI::Range(1, 4096));

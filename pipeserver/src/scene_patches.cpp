@@ -1,5 +1,7 @@
 // `patches`: a rippling sheet of bicubic Bezier patches, tessellated to a configurable number of
 // segments per edge and lit, like WireGL's Nurbs. One patch is one batch.
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <glm/ext/matrix_transform.hpp>
@@ -30,6 +32,14 @@ class PatchesScene : public Scene {
     if (n_ < 1 || n_ > 1024) throw std::invalid_argument("patches: tessellation must be 1..1024");
     if (patches_ < 1 || patches_ > 64)
       throw std::invalid_argument("patches: patches must be 1..64");
+    // Each range alone is fine; together 64 x 1024 asked for 8.6 G triangles (bad_alloc). The
+    // same ceiling as the strips scene's --triangles.
+    const long long triangles = 2LL * patches_ * patches_ * n_ * n_;
+    if (triangles > kMaxTriangles) {
+      throw std::invalid_argument(fmt::format(
+          "patches: {} patches per side with tessellation {} make {} triangles, more than {}",
+          patches_, n_, triangles, kMaxTriangles));
+    }
   }
 
   const char* name() const override { return "patches"; }

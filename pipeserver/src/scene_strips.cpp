@@ -1,5 +1,7 @@
 // `strips`: many small unlit coloured triangle strips scattered through a ball, in the manner of
 // WireGL's Hundy. Geometry is built once; frames turn the cloud.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/ext/matrix_transform.hpp>
@@ -17,8 +19,8 @@ constexpr int kStripsPerBatch = 64;
 class StripsScene : public Scene {
  public:
   explicit StripsScene(const SceneOptions& o) {
-    if (o.triangles < 1 || o.triangles > 50'000'000) {
-      throw std::invalid_argument("strips: triangles must be 1..50000000");
+    if (o.triangles < 1 || o.triangles > kMaxTriangles) {
+      throw std::invalid_argument(fmt::format("strips: triangles must be 1..{}", kMaxTriangles));
     }
     if (o.strip_length < 1 || o.strip_length > 4096) {
       throw std::invalid_argument("strips: strip_length must be 1..4096");

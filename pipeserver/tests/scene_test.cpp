@@ -63,6 +63,24 @@ TEST(Scenes, PatchTessellationSetsTriangleCount) {
   EXPECT_EQ(make_scene("patches", o)->triangle_count(), 2u * 2u * 5u * 5u * 2u);
 }
 
+TEST(Scenes, PatchesBeyondFiftyMillionTrianglesAreRefused) {
+  // 64 patches per side x 1024 segments per edge, each in range: 8.6 G triangles, bad_alloc.
+  SceneOptions o;
+  o.patches = 64;
+  o.tessellation = 1024;
+  try {
+    make_scene("patches", o);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "patches: 64 patches per side with tessellation 1024 make 8589934592 triangles, "
+                 "more than 50000000");
+  }
+  o.patches = 25;  // 2 x 25^2 x 201^2, just above 2 x 25^2 x 200^2 = 50 000 000
+  o.tessellation = 201;
+  EXPECT_THROW(make_scene("patches", o), std::invalid_argument);
+}
+
 TEST(Scenes, UnknownNameIsAClearError) {
   try {
     make_scene("teapot");

@@ -36,6 +36,9 @@ struct Batch {
   void compute_bounds();
 };
 
+// The most triangles a generated scene (strips, patches) may ask for.
+inline constexpr long kMaxTriangles = 50'000'000;
+
 struct SceneOptions {
   std::filesystem::path mesh_file;  // mesh: PLY or OBJ; empty means the bundled bunny
   long triangles = 100000;          // strips: total triangle count (up to millions)
