@@ -403,11 +403,22 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
-  // A frame the run never renders would silently keep nothing.
-  if (!keep.frames.empty() && *keep.frames.rbegin() >= o.frames) {
-    return fmt::format("--keep: frame {} is past the last frame (--frames {} renders 0..{})",
-                       *keep.frames.rbegin(), o.frames, o.frames - 1);
+  // A frame the run never renders would silently keep nothing, or inject no fault, and the
+  // run would pass as if the fault had been survived.
+  const auto past_the_last = [&o](const char* option, int frame) -> std::optional<std::string> {
+    if (frame < o.frames) return std::nullopt;
+    return fmt::format("{}: frame {} is past the last frame (--frames {} renders 0..{})", option,
+                       frame, o.frames, o.frames - 1);
+  };
+  if (!keep.frames.empty()) {
+    if (auto error = past_the_last("--keep", *keep.frames.rbegin())) return error;
   }
+  for (const auto& [option, frame] : {std::pair{"--inject-noise", o.noise_after},
+                                      std::pair{"--inject-mismatch", o.inject_mismatch},
+                                      std::pair{"--drop-ready", o.drop_ready}}) {
+    if (auto error = past_the_last(option, frame)) return error;
+  }
+  if (o.inject_mismatch >= 0 && !o.compare) return "--inject-mismatch needs --compare";
   return std::nullopt;
 }
 

@@ -52,6 +52,16 @@ TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   EXPECT_EQ(run_options_error(o), std::optional<std::string>("--compare needs --path both"));
   o.path = "both";
   EXPECT_EQ(run_options_error(o), std::nullopt);
+  // A fault injected after the last frame never happened, and the run passed.
+  o.drop_ready = 3;
+  EXPECT_EQ(run_options_error(o),
+            std::optional<std::string>("--drop-ready: frame 3 is past the last frame (--frames 3 "
+                                       "renders 0..2)"));
+  o.drop_ready = 2;
+  o.inject_mismatch = 1;
+  EXPECT_EQ(run_options_error(o), std::nullopt);
+  o.compare = false;
+  EXPECT_EQ(run_options_error(o), std::optional<std::string>("--inject-mismatch needs --compare"));
 }
 
 }  // namespace
