@@ -12,6 +12,23 @@
 #include "sequence_show.hpp"
 
 namespace l2 {
+namespace {
+
+// Removes the frame-<tttt>.png pictures an earlier run left in `folder`: a shorter run into the
+// same --out left the longer run's later frames beside its own. Only files named as this
+// command names them are touched.
+void remove_old_frames(const std::filesystem::path& folder) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const bool ours =
+        name.size() >= 14 && name.starts_with("frame-") && name.ends_with(".png") &&
+        std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+    if (ours && entry.is_regular_file()) std::filesystem::remove(entry.path());
+  }
+}
+
+}  // namespace
 
 int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   const Setup setup = make_setup(o);
@@ -24,6 +41,11 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   }
   // One refresh more than the longest input, so its last frame reaches the displays.
   if (ticks <= 0) ticks = static_cast<int>(longest) + 1;
+
+  for (const DisplaySpec& d : setup.config.displays) {
+    remove_old_frames(o.out / fmt::format("display-{}", d.id));
+  }
+  remove_old_frames(o.out / "wall");
 
   Emulator emulator(setup.config);
   std::unique_ptr<SequenceShow> screen;

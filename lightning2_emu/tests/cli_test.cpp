@@ -1,6 +1,7 @@
 // The lightning2_emu executable on real files: PNG frames in, PNG displays and JSON out.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -158,6 +159,20 @@ TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
   EXPECT_EQ(report["frames_torn"], 1);
   EXPECT_EQ(report["groups"][0]["swaps"], 2);
   EXPECT_EQ(report["tick_log"][1]["frames"][1], "torn");
+
+  // Again into the same folder, two refreshes: the display folder holds this run's frames
+  // only (frame-0002 and -0003 of the run above stayed), and nothing else is touched.
+  std::ofstream(dir / "out/display-0/notes.txt") << "mine";
+  std::ofstream(dir / "out/display-0/frame-final.png") << "mine";
+  const Result again = run("sequence --displays 16x2 --ticks 2 --out " + (dir / "out").string() +
+                           " " + (dir / "in0").string() + " " + (dir / "in1").string());
+  ASSERT_EQ(again.status, 0) << again.output;
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir / "out/display-0"))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"frame-0000.png", "frame-0001.png", "frame-final.png",
+                                             "notes.txt"}));
 }
 
 // tilelayout --scanout, then route --wall: every display shows the test pattern where the plan
