@@ -50,6 +50,7 @@ class LiveRun {
     check_options();
     check_every_server_has_tiles();
     std::filesystem::create_directories(o_.out);
+    remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     if (o_.path != "vizserver") dvi_.emplace(wall_, o_.threads, layout_.servers.size());
     if (o_.path != "dvi") viz_ = std::make_unique<VizSide>(viz_launch());

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "display_compare.hpp"
 #include "image/png_io.hpp"
 #include "run_fault.hpp"
@@ -47,6 +49,22 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
         frame, d.id, diff.differing_pixels, dir.string()));
   }
   return compared;
+}
+
+void remove_earlier_pictures(const std::filesystem::path& out) {
+  const auto numbered = [](const std::string& name, std::string_view prefix) {
+    return name.size() > prefix.size() && name.starts_with(prefix) &&
+           std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                       [](char c) { return c >= '0' && c <= '9'; });
+  };
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(out, error)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() &&
+        (name == "fault" || numbered(name, "frame-") || numbered(name, "mismatch-frame-"))) {
+      std::filesystem::remove_all(entry.path());
+    }
+  }
 }
 
 }  // namespace l2

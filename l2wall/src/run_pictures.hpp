@@ -26,4 +26,9 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
                   const DisplayPictures& via_viz, bool tamper_display_0,
                   const std::filesystem::path& out);
 
+// Removes the pictures an earlier run into `out` left: frame-<k>/, mismatch-frame-<k>/ and
+// fault/, which would stand beside this run's as if it had made them (a passing run next to an
+// old fault/). Only folders named as a run names them; screenshots and anything else stay.
+void remove_earlier_pictures(const std::filesystem::path& out);
+
 }  // namespace l2

@@ -1,0 +1,39 @@
+// What a run clears from its --out before it starts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "run_pictures.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(RemoveEarlierPictures, OnlyFoldersNamedAsARunNamesThem) {
+  // A passing run into the --out of a failed one stood beside its fault/ folder.
+  const fs::path out = fs::temp_directory_path() / "l2wall-earlier-pictures";
+  fs::remove_all(out);
+  for (const char* dir :
+       {"fault", "frame-7", "mismatch-frame-3", "screenshots", "frame-best", "frames"}) {
+    fs::create_directories(out / dir);
+    std::ofstream(out / dir / "display-0.png") << "x";
+  }
+  std::ofstream(out / "frame-9") << "a file, not a run's folder";
+  std::ofstream(out / "summary.txt") << "x";
+  remove_earlier_pictures(out);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(out)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"frame-9", "frame-best", "frames", "screenshots",
+                                            "summary.txt"}));
+  fs::remove_all(out);
+  remove_earlier_pictures(out);  // a folder that does not exist yet: nothing to do, no error
+}
+
+}  // namespace
+}  // namespace l2
