@@ -73,7 +73,8 @@ void VizSide::accept_stream(const viz::Fd& listener, const VizLaunch& launch) {
                                launch.display_sizes.size(), launch.servers));
   }
   port_ = static_cast<std::uint16_t>(listening.port);
-  watcher_ = std::make_unique<viz::DisplayWatcher>(std::move(stream), who, kHeldFrames);
+  watcher_ = std::make_unique<viz::DisplayWatcher>(std::move(stream), who, listening.display_count,
+                                                   kHeldFrames);
 }
 
 std::string VizSide::address() const {

@@ -45,10 +45,11 @@ Listening read_listening(int fd, Clock::time_point deadline, const std::string& 
   return decode_listening(std::span<const std::uint8_t>(buf.data() + kHeaderBytes, 12));
 }
 
-DisplayWatcher::DisplayWatcher(Fd fd, std::string peer, std::size_t max_held,
-                               std::chrono::milliseconds io_timeout)
+DisplayWatcher::DisplayWatcher(Fd fd, std::string peer, std::uint32_t display_count,
+                               std::size_t max_held, std::chrono::milliseconds io_timeout)
     : fd_(std::move(fd)),
       peer_(std::move(peer)),
+      display_count_(display_count),
       max_held_(std::max<std::size_t>(max_held, 1)),
       io_timeout_(io_timeout) {
   thread_ = std::thread([this] { run(); });
@@ -176,6 +177,11 @@ void DisplayWatcher::read_stream() {
         building = ComposedFrame{};
         building.frame = d.frame;
         open = true;
+      }
+      if (d.display >= display_count_) {
+        throw VizError(
+            fmt::format("{}: DISPLAY {} of frame {}, but the stream announced {} displays", peer_,
+                        d.display, d.frame, display_count_));
       }
       if (d.frame != building.frame || d.display != building.displays.size()) {
         throw VizError(

@@ -109,7 +109,7 @@ TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {
     for (std::uint32_t k = 0; k < 5; ++k) p.sender->send_frame(make_frame(k, sizes));
     p.sender.reset();  // closes: the end of the stream
   });
-  DisplayWatcher watcher(std::move(p.accepted), "test stream", 2);
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", p.listening.display_count, 2);
   for (std::uint32_t k = 0; k < 5; ++k) {
     const FramePtr f = watcher.take(k, 5000ms);
     ASSERT_TRUE(f) << "frame " << k;
@@ -171,7 +171,7 @@ TEST(DisplayStream, ASlowWatcherHoldsTheSenderBack) {
       ++sent;
     }
   });
-  DisplayWatcher watcher(std::move(p.accepted), "test stream", 2);
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", p.listening.display_count, 2);
   // Until the sender stops getting further (slow under TSan on a loaded machine: no fixed sleep).
   int ahead = 0;
   for (const auto deadline = Clock::now() + 15s; Clock::now() < deadline;) {
@@ -192,7 +192,7 @@ TEST(DisplayStream, TheServersErrorLineEndsTheStream) {
   StreamPair p;
   p.sender->send_frame(make_frame(0, {{4, 4}}));
   p.sender->send_error("pipeserver 2 disconnected during frame 1");
-  DisplayWatcher watcher(std::move(p.accepted), "test stream");
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", p.listening.display_count);
   EXPECT_TRUE(watcher.take(0, 5000ms));
   try {
     watcher.take(1, 5000ms);
@@ -207,7 +207,7 @@ TEST(DisplayStream, ASkippedFrameIsNamed) {
   StreamPair p;
   p.sender->send_frame(make_frame(0, {{4, 4}}));
   p.sender->send_frame(make_frame(2, {{4, 4}}));
-  DisplayWatcher watcher(std::move(p.accepted), "test stream");
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", p.listening.display_count);
   EXPECT_TRUE(watcher.take(0, 5000ms));
   try {
     watcher.take(1, 5000ms);
@@ -216,6 +216,21 @@ TEST(DisplayStream, ASkippedFrameIsNamed) {
     EXPECT_STREQ(e.what(), "test stream: frame 1 is not in the stream (it went on to frame 2)");
   }
   EXPECT_TRUE(watcher.take(2, 5000ms));
+}
+
+TEST(DisplayStream, MoreDisplaysThanAnnouncedBreakTheProtocol) {
+  // LISTENING said 2 displays; DISPLAY messages of one frame were taken without a bound before
+  // its SHOWN, up to 768 MiB each.
+  StreamPair p;
+  p.sender->send_frame(make_frame(0, {{4, 4}, {4, 4}, {4, 4}}));
+  DisplayWatcher watcher(std::move(p.accepted), "test stream", p.listening.display_count);
+  try {
+    watcher.take(0, 5000ms);
+    FAIL() << "frame 0 arrived";
+  } catch (const VizError& e) {
+    EXPECT_STREQ(e.what(),
+                 "test stream: DISPLAY 2 of frame 0, but the stream announced 2 displays");
+  }
 }
 
 TEST(DisplayStream, AMessageCutOffByTheServersDeathIsNamed) {
@@ -228,7 +243,7 @@ TEST(DisplayStream, AMessageCutOffByTheServersDeathIsNamed) {
                          {const_cast<std::uint8_t*>(some_pixels), sizeof some_pixels}};
   send_all(raw.get(), parts, Clock::now() + 5000ms, "test");
   raw.reset();
-  DisplayWatcher watcher(std::move(accepted), "test stream");
+  DisplayWatcher watcher(std::move(accepted), "test stream", 1);
   try {
     watcher.take(0, 5000ms);
     FAIL() << "frame 0 arrived";

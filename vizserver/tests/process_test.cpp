@@ -157,7 +157,7 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
   const Listening l = read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
   EXPECT_EQ(l.display_count, 1u);
   EXPECT_EQ(l.server_count, 1u);
-  DisplayWatcher watcher(std::move(stream), "vizserver");
+  DisplayWatcher watcher(std::move(stream), "vizserver", l.display_count);
   auto s = TileSender::connect("127.0.0.1", static_cast<std::uint16_t>(l.port), 0, 1);
   for (std::uint32_t k = 0; k < 2; ++k) {
     const std::vector<std::uint8_t> tile(4 * 4 * 3, static_cast<std::uint8_t>(0x40 + k));

@@ -32,8 +32,10 @@ Listening read_listening(int fd, Clock::time_point deadline, const std::string& 
 class DisplayWatcher {
  public:
   // Takes over a connected stream whose LISTENING was read and starts the reader thread.
-  // io_timeout bounds the rest of a message once its first byte arrived.
-  DisplayWatcher(Fd fd, std::string peer, std::size_t max_held = 4,
+  // `display_count` is what LISTENING announced: a frame with more DISPLAY messages breaks the
+  // protocol (without the bound a stream could fill memory before its SHOWN). io_timeout bounds
+  // the rest of a message once its first byte arrived.
+  DisplayWatcher(Fd fd, std::string peer, std::uint32_t display_count, std::size_t max_held = 4,
                  std::chrono::milliseconds io_timeout = std::chrono::seconds(10));
   ~DisplayWatcher();  // stops and joins the reader
   DisplayWatcher(const DisplayWatcher&) = delete;
@@ -61,6 +63,7 @@ class DisplayWatcher {
 
   Fd fd_;
   std::string peer_;
+  std::uint32_t display_count_;
   std::size_t max_held_;
   std::chrono::milliseconds io_timeout_;
   mutable std::mutex mutex_;
