@@ -91,6 +91,10 @@ bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displa
 # An empty --out wrote into the current folder without a word (l2wall: "Invalid argument []").
 bad_value "--out: an empty path" lightning2_emu route --displays 8x8 --out '' x.png
 bad_value "--out: an empty path" l2wall run --out ''
+# Options of a mode not asked for were ignored without a word.
+bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x.png
+bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run --viz-port 5000 \
+  --out /tmp
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).
 bad_value "field 'display' = 300 is outside 0..63" strip_headers encode --op ext --display 300
 bad_value "field 'x' = 65541 is outside 0..4095" strip_headers encode --op ext --x 65541

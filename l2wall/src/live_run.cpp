@@ -398,6 +398,9 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
     return "--vizserver: no compositing server executable given";
   if (o.viz_port < 0 || o.viz_port > 65535)
     return fmt::format("--viz-port: {} is not 0..65535", o.viz_port);
+  // There is no compositing server on the DVI path: an address for it would go unused.
+  if (o.path == "dvi" && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
+    return "--viz-host and --viz-port need --path vizserver or both";
   KeepSet keep;
   try {
     keep = parse_keep(o.keep);

@@ -62,6 +62,14 @@ TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   EXPECT_EQ(run_options_error(o), std::nullopt);
   o.compare = false;
   EXPECT_EQ(run_options_error(o), std::optional<std::string>("--inject-mismatch needs --compare"));
+  // An address for a compositing server the DVI path does not start went unused, silently.
+  RunOptions dvi;
+  dvi.viz_port = 5000;
+  EXPECT_EQ(run_options_error(dvi),
+            std::optional<std::string>("--viz-host and --viz-port need --path vizserver or both"));
+  dvi.path = "vizserver";
+  dvi.vizserver = "vizserver";
+  EXPECT_EQ(run_options_error(dvi), std::nullopt);
 }
 
 }  // namespace
