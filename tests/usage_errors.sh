@@ -75,6 +75,9 @@ bad_value "--inject-noise: frame 99 is past the last frame" l2wall run --frames 
 # --start near LLONG_MAX overflowed start + lines sent (signed: undefined).
 bad_value "--start: Value 9223372036854775000 not in range" sync_backchannel pty \
   --start 9223372036854775000
+# CLI11 clamped 2^64 to 2^63-1 and sent READY 775807.
+bad_value "18446744073709551616 is not a frame number" sync_backchannel send-ready /dev/null \
+  --frame 18446744073709551616
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "sync_backchannel/pty_pair.hpp"
@@ -131,7 +132,7 @@ int main(int argc, char** argv) {
   add_device(send);
   send->add_option("--frame", frame, "Frame number to announce (sent modulo 1000000)")
       ->required()
-      ->check(CLI::NonNegativeNumber);
+      ->check(l2::frame_number());
 
   CLI::App* wait =
       app.add_subcommand("wait-ready",
@@ -142,7 +143,7 @@ int main(int argc, char** argv) {
   int retries = l2::kDefaultReadyRetries;
   wait->add_option("--frame", frame, "Frame number awaited (modulo 1000000)")
       ->required()
-      ->check(CLI::NonNegativeNumber);
+      ->check(l2::frame_number());
   wait->add_option("--timeout", timeout_ms, "Milliseconds of each wait before a SYNC? retry")
       ->default_val(timeout_ms)
       ->check(CLI::Range(1, 600000));

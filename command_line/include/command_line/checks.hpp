@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -35,6 +36,20 @@ inline CLI::Validator timeout_seconds() {
         return text + " is not 0 (forever) or 0.001..86400 seconds";
       },
       "0 or 0.001..86400 s");
+}
+
+// A frame number: digits only, fitting a long long. CLI11 clamps a larger number to the
+// largest long long without a word (18446744073709551616 became 9223372036854775807).
+inline CLI::Validator frame_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        long long value = 0;
+        const char* const end = text.data() + text.size();
+        const auto [stop, ec] = std::from_chars(text.data(), end, value);
+        if (!text.empty() && text[0] != '-' && ec == std::errc{} && stop == end) return {};
+        return text + " is not a frame number 0..9223372036854775807";
+      },
+      "FRAME");
 }
 
 // An output path: not empty, which would mean the current folder without saying so.
