@@ -89,7 +89,16 @@ int main(int argc, char** argv) {
   enc->add_option("--display", display, "Destination display 0..63");
   enc->add_option("--x", x, "Destination column 0..4095");
   enc->add_option("--y", y, "Destination row 0..4095");
-  enc->add_option("--width", width, "Strip width 1..4095");
+  enc->add_option("--width", width,
+                  "Strip width 0..4095 (0: a zero-width strip, which the parser counts as an "
+                  "error; for making test frames)");
+  // END carries no field and SKIP only a width: a field given for them would be dropped.
+  enc->callback([&] {
+    const bool placed = enc->count("--display") + enc->count("--x") + enc->count("--y") > 0;
+    if (op == "end" && (placed || enc->count("--width") > 0))
+      throw CLI::ValidationError("--op end: END has no fields (--display, --x, --y, --width)");
+    if (op == "skip" && placed) throw CLI::ValidationError("--op skip: SKIP has only a --width");
+  });
 
   std::string hex;
   auto* dec = app.add_subcommand("decode", "Decode a 48-bit hex value; exit 1 on a check error");

@@ -101,6 +101,9 @@ bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run -
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).
 bad_value "field 'display' = 300 is outside 0..63" strip_headers encode --op ext --display 300
 bad_value "field 'x' = 65541 is outside 0..4095" strip_headers encode --op ext --x 65541
+# END has no fields and SKIP only a width: they were dropped without a word.
+bad_value "--op end: END has no fields" strip_headers encode --op end --display 3 --width 30
+bad_value "--op skip: SKIP has only a --width" strip_headers encode --op skip --x 5 --width 30
 # Hex digits only (stoull took -1 as ffffffffffffffff, and a 0x prefix), below 2^48.
 for value in -1 +1 0x1 ' 1' 1000000000000 ''; do
   bad_value "'$value' is not a 48-bit hex value" strip_headers decode -- "$value"
