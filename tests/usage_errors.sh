@@ -81,6 +81,9 @@ bad_value "18446744073709551616 is not a frame number" sync_backchannel send-rea
 # 5000 threads hung the emulator when the system would not start them all.
 bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8x8 --out /tmp \
   --threads 5000 x.png
+# tilelayout ignored these without a word.
+bad_value "--parity requires --scanout" tilelayout --parity 1
+bad_value "WALL excludes --print-default" tilelayout --print-default walls/kd-2x2.toml
 # lightning2_emu: what its options say in their text is a usage error too (it exited 1).
 bad_value "--displays: display 0: '640x' is not WIDTHxHEIGHT" lightning2_emu route \
   --displays 640x --out /tmp x.png

@@ -45,19 +45,29 @@ int main(int argc, char** argv) {
   std::string png_dir, scanout_dir;
   int parity = 0;
   bool print_default = false;
-  app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
-      ->type_name("WALL.toml");
-  app.add_option("--png", png_dir,
-                 "write pictures to DIR: pipeserver-N.png (framebuffer: header gaps white, "
-                 "tiles coloured by display) and wall.png (tiles coloured and labelled by "
-                 "pipeserver)")
-      ->type_name("DIR");
-  app.add_option("--scanout", scanout_dir,
-                 "write scanout-N.png to DIR: the 24-bit frame each pipeserver would scan out, "
-                 "every header drawn, every tile filled with the routing test pattern")
-      ->type_name("DIR");
-  app.add_option("--parity", parity, "frame parity for --scanout headers")->check(CLI::Range(0, 1));
-  app.add_flag("--print-default", print_default, "print the built-in default wall file, exit");
+  CLI::Option* const wall_option =
+      app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
+          ->type_name("WALL.toml");
+  CLI::Option* const png_option =
+      app.add_option("--png", png_dir,
+                     "write pictures to DIR: pipeserver-N.png (framebuffer: header gaps white, "
+                     "tiles coloured by display) and wall.png (tiles coloured and labelled by "
+                     "pipeserver)")
+          ->type_name("DIR");
+  CLI::Option* const scanout_option =
+      app.add_option("--scanout", scanout_dir,
+                     "write scanout-N.png to DIR: the 24-bit frame each pipeserver would scan out, "
+                     "every header drawn, every tile filled with the routing test pattern")
+          ->type_name("DIR");
+  // Options that would be ignored are usage errors: a --parity without --scanout, or a wall or
+  // picture folder with --print-default.
+  app.add_option("--parity", parity, "frame parity for --scanout headers")
+      ->check(CLI::Range(0, 1))
+      ->needs(scanout_option);
+  app.add_flag("--print-default", print_default, "print the built-in default wall file, exit")
+      ->excludes(wall_option)
+      ->excludes(png_option)
+      ->excludes(scanout_option);
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   if (print_default) {
