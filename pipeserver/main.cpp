@@ -148,6 +148,18 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1000))
       ->capture_default_str()
       ->needs(live_flag);
+  // A scene's options given for another scene were ignored without a word.
+  app.callback([&] {
+    for (const auto& [option, scene] :
+         {std::pair{"--mesh", "mesh"}, std::pair{"--triangles", "strips"},
+          std::pair{"--strip-length", "strips"}, std::pair{"--grid", "isosurface"},
+          std::pair{"--tessellation", "patches"}, std::pair{"--patches", "patches"}}) {
+      if (app.count(option) > 0 && o.scene != scene) {
+        throw CLI::ValidationError(
+            fmt::format("{} is an option of --scene {}, not {}", option, scene, o.scene));
+      }
+    }
+  });
   bool print_gl_info = false;
   app.add_flag("--gl-info", print_gl_info,
                "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "

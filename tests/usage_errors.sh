@@ -97,7 +97,9 @@ bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displa
 # An empty --out wrote into the current folder without a word (l2wall: "Invalid argument []").
 bad_value "--out: an empty path" lightning2_emu route --displays 8x8 --out '' x.png
 bad_value "--out: an empty path" l2wall run --out ''
-# Options of a mode not asked for were ignored without a word.
+# Options of a mode or scene not asked for were ignored without a word.
+bad_value "--triangles is an option of --scene strips, not mesh" pipeserver --triangles 10 \
+  --out /tmp/x.png
 bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x.png
 bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run --viz-port 5000 \
   --out /tmp
