@@ -1,11 +1,13 @@
-// Checks for numbers whose whole range CLI::Range would let through: CLI::Range passes NaN
-// (every comparison with it is false), and a tiny positive value can mean "never".
+// Checks for option values that CLI11's own validators let through: CLI::Range passes NaN
+// (every comparison with it is false), a tiny positive timeout can mean "never", CLI11 clamps
+// an integer too large for its type, and an empty path means the current folder.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace l2 {
