@@ -117,37 +117,32 @@ int main(int argc, char** argv) {
                       "render --frames frames into the DVI link --link, waiting for READY k-1 on "
                       "--backchannel before publishing frame k");
   group->add_option("--frames", live_options.frames, "live: number of frames")
-      ->check(CLI::Range(1, 1 << 30))
-      ->needs(live_flag);
-  group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)")
-      ->needs(live_flag);
-  group
-      ->add_option("--backchannel", live_options.backchannel,
-                   "live: serial device of the back-channel (for example a pty slave)")
-      ->needs(live_flag);
+      ->check(CLI::Range(1, 1 << 30));
+  group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)");
+  group->add_option("--backchannel", live_options.backchannel,
+                    "live: serial device of the back-channel (for example a pty slave)");
   group
       ->add_option("--viz", live_options.viz,
                    "live: host:port of a compositing server; every tile is also sent there")
-      ->check(l2::viz::endpoint_error, "HOST:PORT")
-      ->needs(live_flag);
-  group
-      ->add_option("--report", live_options.report,
-                   "live: file receiving one line per frame (render and READY wait times)")
-      ->needs(live_flag);
+      ->check(l2::viz::endpoint_error, "HOST:PORT");
+  group->add_option("--report", live_options.report,
+                    "live: file receiving one line per frame (render and READY wait times)");
   group
       ->add_option("--ready-timeout", live_options.ready_timeout_ms,
                    "live: ms per READY wait before asking again with SYNC?; a wait for the "
                    "compositing server's SWAPPED (--viz) may last this x (--ready-retries + 1) "
                    "(l2wall run passes 1000)")
       ->check(CLI::Range(1, 600000))
-      ->capture_default_str()
-      ->needs(live_flag);
+      ->capture_default_str();
   group
       ->add_option("--ready-retries", live_options.ready_retries,
                    "live: SYNC? retries before giving up")
       ->check(CLI::Range(0, 1000))
-      ->capture_default_str()
-      ->needs(live_flag);
+      ->capture_default_str();
+  // Every live option needs --live: without it they were ignored and one frame was written.
+  for (CLI::Option* option : group->get_options()) {
+    if (option != live_flag) option->needs(live_flag);
+  }
   // A scene's options given for another scene were ignored without a word.
   app.callback([&] {
     for (const auto& [option, scene] :
