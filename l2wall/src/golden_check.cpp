@@ -24,20 +24,20 @@ struct Comparison {
   std::string diff_suffix;
 };
 
+enum class EntryResult { Passed, Failed, NotRun };
+
 class EntryCheck {
  public:
   EntryCheck(const GoldenEntry& entry, const CheckOptions& options, std::ostream& out)
       : entry_(entry), out_(out), dir_(options.out / entry.name) {}
 
-  bool passed() const { return passed_; }
-  bool ran() const { return ran_; }
+  EntryResult result() const { return result_; }
 
   // The check itself could not be made (an input, a tool or a golden image is missing): not a
   // mismatch, which is what exit status 1 tells.
   void could_not_run(const std::string& message) {
     out_ << entry_.name << ": could not be checked: " << message << "\n";
-    passed_ = false;
-    ran_ = false;
+    result_ = EntryResult::NotRun;
   }
 
   // Compares and, for every display that differs when the set fails, writes the pictures and
@@ -56,7 +56,7 @@ class EntryCheck {
       }
       return;
     }
-    passed_ = false;
+    if (result_ == EntryResult::Passed) result_ = EntryResult::Failed;
     for (std::size_t i = 0; i < ids.size(); ++i) {
       const DisplayDiff& d = result.displays[i];
       if (d.identical()) continue;
@@ -94,8 +94,7 @@ class EntryCheck {
   const GoldenEntry& entry_;
   std::ostream& out_;
   std::filesystem::path dir_;
-  bool passed_ = true;
-  bool ran_ = true;
+  EntryResult result_ = EntryResult::Passed;
 };
 
 const Comparison kAgainstGolden{"emulator vs golden image", "-actual", "", "-diff"};
@@ -147,8 +146,6 @@ void report_input_errors(const GoldenEntry& entry, const StripErrorCounts& e, st
       e.missing_display, e.clips);
 }
 
-enum class EntryResult { Passed, Failed, NotRun };
-
 // `gl` is asked for (pipeserver --gl-info) the first time a rendered entry needs it.
 EntryResult check_entry(const GoldenEntry& entry, const CheckOptions& o, std::optional<GlInfo>& gl,
                         std::ostream& out) {
@@ -180,9 +177,7 @@ EntryResult check_entry(const GoldenEntry& entry, const CheckOptions& o, std::op
   } catch (const std::exception& e) {
     check.could_not_run(e.what());
   }
-  return !check.ran()     ? EntryResult::NotRun
-         : check.passed() ? EntryResult::Passed
-                          : EntryResult::Failed;
+  return check.result();
 }
 
 std::string describe_entry(const GoldenEntry& e, bool from_inputs) {
