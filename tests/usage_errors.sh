@@ -90,8 +90,10 @@ bad_value "--displays: display 0: '640x' is not WIDTHxHEIGHT" lightning2_emu rou
 bad_value "give either --displays" lightning2_emu route --out /tmp x.png
 bad_value "--groups: display 1: group -1 is not 0..63" lightning2_emu route --displays 8x8,8x8 \
   --groups 0,-1 --out /tmp x.png
-bad_value "--board-max: '5000x5000': each side must be at most 4096" lightning2_emu route \
-  --displays 8x8 --board-max 5000x5000 --out /tmp x.png
+bad_value "--mesh/--board-max/--displays: board input limit must be 2x1..4096x4096, got \
+5000x5000" lightning2_emu route --displays 8x8 --board-max 5000x5000 --out /tmp x.png
+bad_value "--mesh/--board-max/--displays: mesh columns must be 1..8" lightning2_emu route \
+  --displays 8x8 --mesh 1x9 --out /tmp x.png
 bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displays 8x8 \
   --ticks 1000000 --out /tmp /tmp
 # An empty --out wrote into the current folder without a word (l2wall: "Invalid argument []").

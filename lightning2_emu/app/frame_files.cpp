@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "command_line/size_text.hpp"
+#include "strip_headers/strip_header.hpp"
 
 namespace l2 {
 namespace {
@@ -89,8 +90,9 @@ void apply_group_list(const std::string& text, std::vector<DisplaySpec>& display
   for (std::size_t d = 0; d < parts.size(); ++d) {
     const std::string what = fmt::format("--groups: display {}", d);
     const int group = parse_int(parts[d], what);
-    if (group < 0 || group > 63) {  // as a wall file's swap_group
-      throw std::invalid_argument(fmt::format("{}: group {} is not 0..63", what, group));
+    if (group < 0 || group >= kMaxDisplays) {  // as a wall file's swap_groups
+      throw std::invalid_argument(
+          fmt::format("{}: group {} is not 0..{}", what, group, kMaxDisplays - 1));
     }
     displays[d].swap_group = group;
   }

@@ -15,10 +15,6 @@ Setup make_setup(const CommonOptions& o) {
   }
   Setup setup;
   InputLimit limit = parse_size(o.board_max, "--board-max");
-  if (limit.width > 4096 || limit.height > 4096) {  // as a wall file's board_max_width/height
-    throw std::invalid_argument(
-        fmt::format("--board-max: '{}': each side must be at most 4096", o.board_max));
-  }
   setup.config.background = parse_colour(o.background, "--background");
   setup.config.workers = o.threads;
   const int inputs = static_cast<int>(o.inputs.size());
@@ -44,11 +40,18 @@ Setup make_setup(const CommonOptions& o) {
     if (!o.groups.empty()) apply_group_list(o.groups, setup.config.displays);
   }
   const int displays = static_cast<int>(setup.config.displays.size());
-  if (o.mesh.empty()) {
-    setup.config.mesh = Mesh::fit(mesh_inputs, displays, limit);
-  } else {
-    const InputLimit rc = parse_size(o.mesh, "--mesh");
-    setup.config.mesh = Mesh(rc.width, rc.height, limit);
+  try {
+    if (o.mesh.empty()) {
+      setup.config.mesh = Mesh::fit(mesh_inputs, displays, limit);
+    } else {
+      const InputLimit rc = parse_size(o.mesh, "--mesh");
+      setup.config.mesh = Mesh(rc.width, rc.height, limit);
+    }
+  } catch (const MeshError& e) {
+    // The mesh checks rows, columns, board limit and display count; without --wall they all
+    // come from the options (--mesh, --board-max, --displays): a usage error, exit 2.
+    if (setup.from_wall) throw;
+    throw std::invalid_argument(fmt::format("--mesh/--board-max/--displays: {}", e.what()));
   }
   if (inputs > setup.config.mesh.input_count()) {
     throw MeshError(fmt::format("{} inputs given, the mesh ({}) has {}", inputs,

@@ -18,9 +18,10 @@ Mesh::Mesh(int rows, int columns, InputLimit limit)
         fmt::format("mesh columns must be 1..{} (64 displays fit the 6-bit display field), got {}",
                     kMaxColumns, columns));
   }
-  if (limit.width < 2 || limit.height < 1) {
-    throw MeshError(fmt::format("board input limit must be at least 2x1, got {}x{}", limit.width,
-                                limit.height));
+  if (limit.width < 2 || limit.height < 1 || limit.width > kMaxInputSide ||
+      limit.height > kMaxInputSide) {
+    throw MeshError(fmt::format("board input limit must be 2x1..{}x{}, got {}x{}", kMaxInputSide,
+                                kMaxInputSide, limit.width, limit.height));
   }
 }
 

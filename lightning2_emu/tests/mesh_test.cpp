@@ -59,6 +59,19 @@ TEST(Mesh, RefusesInputsBeyondTheMeshOrTheBoardLimit) {
   }
 }
 
+TEST(Mesh, BoardLimitIsTwoByOneToAWallFilesLargest) {
+  // --board-max 100000x100000 was taken, where a wall file's board_max allows 4096.
+  try {
+    Mesh(1, 1, {5000, 480});
+    FAIL();
+  } catch (const MeshError& e) {
+    EXPECT_STREQ(e.what(), "board input limit must be 2x1..4096x4096, got 5000x480");
+  }
+  EXPECT_THROW(Mesh(1, 1, {640, 4097}), MeshError);
+  EXPECT_THROW(Mesh(1, 1, {1, 480}), MeshError);
+  EXPECT_NO_THROW(Mesh(1, 1, {4096, 4096}));
+}
+
 TEST(Mesh, RefusesDisplaysBeyondTheMeshOrTheHeaderRange) {
   const Mesh mesh(1, 2);
   EXPECT_NO_THROW(mesh.check_display(15, 4096, 4096));

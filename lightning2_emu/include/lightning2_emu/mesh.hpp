@@ -32,8 +32,10 @@ class Mesh {
   // The strip header's 6-bit display field allows 64 displays, so at most 8 columns.
   static constexpr int kMaxColumns = 8;
   static constexpr int kMaxRows = 64;
+  // The largest board input limit per side, as a wall file's board_max_width/height allow.
+  static constexpr int kMaxInputSide = 4096;
 
-  // Throws MeshError when rows or columns are out of range or the limit is not positive.
+  // Throws MeshError when rows or columns are out of range or the limit is not 2x1..4096x4096.
   Mesh(int rows, int columns, InputLimit limit = {});
 
   // The smallest mesh with `inputs` inputs and `displays` outputs (at least one board).
