@@ -8,7 +8,9 @@ Emulator::Emulator(const EmulatorConfig& config)
     : pool_(config.workers),
       router_(config.mesh, config.displays, pool_, config.background),
       sequencer_(config.mesh.input_count(),
-                 static_cast<int>(make_swap_groups(config.displays).size())) {
+                 static_cast<int>(make_swap_groups(config.displays).size())),
+      sequencer_before_(sequencer_) {
+  router_.predict_layouts(config.predict_layouts);
   report_.groups = make_swap_groups(config.displays);
   group_display_indices_.resize(report_.groups.size());
   group_of_display_.assign(router_.display_count(), 0);
@@ -33,21 +35,7 @@ const RgbImage& Emulator::shown(int display_id) const {
   return router_.display(index).front();
 }
 
-const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
-  tick_.index = report_.ticks++;
-  // 1. Output refresh.
-  sequencer_.refresh(refresh_);
-  tick_.swapped_groups.clear();
-  for (const int g : refresh_.swapped_groups) {
-    for (const int d : group_display_indices_[g]) router_.display(d).swap();
-    ++report_.groups[g].swaps;
-    tick_.swapped_groups.push_back(report_.groups[g].id);
-  }
-  tick_.ready_inputs = refresh_.ready_inputs;
-
-  // 2. Parse, classify, route the new frames.
-  router_.scan(frames);
-  const int inputs = router_.mesh().input_count();
+void Emulator::observe(int inputs) {
   observations_.resize(inputs);
   tick_.inputs.clear();
   for (int i = 0; i < inputs; ++i) {
@@ -60,18 +48,42 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
         o.groups_fed |= std::uint64_t{1} << group_of_display_[router_.index_of_display(d)];
       }
     }
+  }
+  sequencer_.observe(observations_, decision_);
+}
+
+const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
+  tick_.index = report_.ticks++;
+  // 1. Output refresh.
+  sequencer_.refresh(refresh_);
+  tick_.swapped_groups.clear();
+  for (const int g : refresh_.swapped_groups) {
+    for (const int d : group_display_indices_[g]) router_.display(d).swap();
+    ++report_.groups[g].swaps;
+    tick_.swapped_groups.push_back(report_.groups[g].id);
+  }
+  tick_.ready_inputs = refresh_.ready_inputs;
+
+  // 2. Parse, classify, route the new frames. A frame the router predicted (router.hpp) and
+  // found different when writing it is parsed then: decide again from the state before.
+  router_.scan(frames);
+  const int inputs = router_.mesh().input_count();
+  sequencer_before_ = sequencer_;
+  for (;;) {
+    observe(inputs);
+    if (router_.write(decision_.route)) break;
+    sequencer_ = sequencer_before_;
+  }
+  tick_.kinds = decision_.kinds;
+  for (int i = 0; i < inputs; ++i) {
+    const InputFrameStats& st = tick_.inputs[i];
     InputRunStats& run = report_.inputs[i];
     run.copy_strips += st.copy_strips;
     run.skip_strips += st.skip_strips;
     run.errors += st.errors;
+    ++run.frames[static_cast<int>(decision_.kinds[i])];
+    if (decision_.route[i]) run.routed_strips += st.routed_strips;
   }
-  sequencer_.observe(observations_, decision_);
-  tick_.kinds = decision_.kinds;
-  for (int i = 0; i < inputs; ++i) {
-    ++report_.inputs[i].frames[static_cast<int>(decision_.kinds[i])];
-    if (decision_.route[i]) report_.inputs[i].routed_strips += tick_.inputs[i].routed_strips;
-  }
-  router_.write(decision_.route);
 
   // 3. Complete the groups that have everything.
   tick_.completed_groups.clear();

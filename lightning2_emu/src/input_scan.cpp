@@ -21,6 +21,9 @@ namespace {
 // or went to no display, which must be counted again.
 constexpr std::uint64_t kNever = ~std::uint64_t{0};
 
+// Kept headers ahead whose lines check_predicted() asks for while it reads one.
+constexpr int kCheckAhead = 8;
+
 // The raw header one display row further down: the y field plus one, check bits recomputed.
 // Only asked for rows below 4095, so the field does not carry over.
 std::uint64_t one_row_down(std::uint64_t value) {
@@ -36,19 +39,23 @@ class Scanner {
   void scan(int input) {
     for (auto& band : in_.bands) band.clear();
     in_.seen.clear();
+    in_.others.clear();
+    in_.parity_at = -1;
     repeatable_ = false;
     for (int y = 0; y < f_.height; ++y) {
       const std::uint8_t* row = f_.row(y);
       if (black_start(row)) {  // END at column 0: most scanlines below the packed tiles
         in_.seen.clear();
+        keep_end(y, 0);
         repeatable_ = false;
-      } else if (!(repeatable_ && repeat(row))) {
+      } else if (!(repeatable_ && repeat(row, y))) {
         parse(row, y);
       }
       prefetch_headers(y + kAhead);
     }
     order_runs();
     store_stats(input);
+    keep_layout();
   }
 
  private:
@@ -67,13 +74,18 @@ class Scanner {
   }
 
   // The fast path: true when the scanline repeats the last one, which it then extends.
-  bool repeat(const std::uint8_t* row) {
+  bool repeat(const std::uint8_t* row, int y) {
     for (const SeenHeader& h : in_.seen) {
       if (raw_header(row, h.x) != h.value) return false;
     }
     for (SeenHeader& h : in_.seen) {
-      if (h.list < 0) {
-        if (h.value >> header_bits::kOpShift == static_cast<int>(StripOp::Skip)) ++skips_;
+      if (h.list < 0) {  // a SKIP or an END (a header that cannot repeat is never seen again)
+        if (h.value >> header_bits::kOpShift == static_cast<int>(StripOp::Skip)) {
+          ++skips_;
+          keep_header(y, h.x, h.value);
+        } else {
+          keep_end(y, h.x);
+        }
         continue;
       }
       ++in_.bands[h.list][h.run].rows;
@@ -94,9 +106,11 @@ class Scanner {
       const int x = s.source_x - kHeaderPixels;
       next_header = s.source_x + s.header.width;
       parities_ |= static_cast<std::uint8_t>(s.header.frame ? 2 : 1);
+      if (in_.parity_at < 0) in_.parity_at = offset(y, x);
       if (s.header.op == StripOp::Skip) {
         ++skips_;
         in_.seeing.push_back({x, raw_header(row, x), -1, 0, 0, 0});
+        keep_header(y, x, raw_header(row, x));
         return;
       }
       ++copies_;
@@ -105,6 +119,7 @@ class Scanner {
     // The parser stopped at an END (it counts any other stop as an error) or at the row's end.
     if (next_header <= f_.width - kHeaderPixels) {
       in_.seeing.push_back({next_header, raw_header(row, next_header), -1, 0, 0, 0});
+      keep_end(y, next_header);  // or an error, which keeps no layout
     }
     std::swap(in_.seen, in_.seeing);
     repeatable_ = errors_.total() == errors_before;
@@ -119,7 +134,10 @@ class Scanner {
       ++errors_.missing_display;
       return unrepeatable(x);
     }
-    if (s.length == 0) return unrepeatable(x);  // a header in the last two pixels
+    if (s.length == 0) {  // a header in the last two pixels
+      keep_header(y, x, raw_header(row, x));
+      return unrepeatable(x);
+    }
     if (h.x >= t.width || h.y >= t.height) {
       ++errors_.clips;
       return unrepeatable(x);
@@ -155,9 +173,8 @@ class Scanner {
         return seen[next_seen_].run;
       }
     }
-    runs.push_back({std::int64_t{f_.stride} * y + std::int64_t{s.source_x} * f_.bytes_per_pixel,
-                    s.source_x, y - s.header.y, s.header.x, s.header.y,
-                    static_cast<std::uint16_t>(length), 1});
+    runs.push_back({offset(y, s.source_x), s.source_x, y - s.header.y, s.header.x, s.header.y,
+                    static_cast<std::uint16_t>(length), 1, message_of(raw_header(f_.row(y), x))});
     return static_cast<std::uint32_t>(runs.size() - 1);
   }
 
@@ -190,6 +207,22 @@ class Scanner {
     }
   }
 
+  std::int64_t offset(int y, int x) const {
+    return std::int64_t{f_.stride} * y + std::int64_t{x} * f_.bytes_per_pixel;
+  }
+  static std::uint64_t message_of(std::uint64_t raw) { return raw >> 3 & ~kMessageFrameBit; }
+  void keep_header(int y, int x, std::uint64_t raw) {
+    in_.others.push_back({offset(y, x), message_of(raw)});
+  }
+  void keep_end(int y, int x) { in_.others.push_back({offset(y, x), KeptHeader::kAnyEnd}); }
+
+  // A frame with an error or a tear is not predicted from: the next one is parsed.
+  void keep_layout() {
+    in_.layout_kept = errors_.total() == 0 && parities_ != 3;
+    in_.kept_shape = f_;
+    in_.predicted = false;
+  }
+
   void store_stats(int input) {
     InputFrameStats& st = in_.stats;
     st = InputFrameStats{};
@@ -218,6 +251,59 @@ class Scanner {
 
 void scan_input(InputScan& in, int input, const std::vector<Target>& targets) {
   Scanner(in, targets).scan(input);
+}
+
+bool predict_input(InputScan& in) {
+  const InputFrame& f = in.frame;
+  const InputFrame& kept = in.kept_shape;
+  if (!in.layout_kept || f.width != kept.width || f.height != kept.height ||
+      f.stride != kept.stride || f.bytes_per_pixel != kept.bytes_per_pixel) {
+    return false;
+  }
+  in.predicted = true;
+  in.parity = 0;
+  if (in.parity_at >= 0) {
+    const std::uint8_t* p = f.data + in.parity_at;
+    in.parity =
+        static_cast<int>(header_value(p, p + f.bytes_per_pixel) >> header_bits::kFrameShift & 1);
+    in.stats.parities = static_cast<std::uint8_t>(in.parity ? 2 : 1);
+  }
+  return true;
+}
+
+bool check_predicted(const InputScan& in, bool runs) {
+  const InputFrame& f = in.frame;
+  const int bpp = f.bytes_per_pixel;
+  const std::uint64_t frame_bit = in.parity ? kMessageFrameBit : 0;
+  auto holds = [&](std::int64_t at, std::uint64_t message) {
+    const std::uint8_t* p = f.data + at;
+    const std::uint64_t raw = header_value(p, p + bpp);
+    if (message == KeptHeader::kAnyEnd) {
+      const auto h = decode(raw);
+      return h && h->op == StripOp::End;
+    }
+    return raw == predicted_header(message | frame_bit);
+  };
+  bool ok = true;
+  const std::size_t n = in.others.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + in.others[k + kCheckAhead].at);
+    ok &= holds(in.others[k].at, in.others[k].message);
+  }
+  if (!runs) return ok;
+  for (const auto& band : in.bands) {
+    for (const Run& r : band) {
+      const std::int64_t first = r.src - std::int64_t{kHeaderPixels} * bpp;
+      std::uint64_t m = r.message;
+      for (int k = 0; k < r.rows; ++k, m += kMessageOneRow) {
+        if (k + kCheckAhead < r.rows) {
+          pixel_copy::prefetch_line(f.data + first + (k + kCheckAhead) * f.stride);
+        }
+        ok &= holds(first + k * f.stride, m);
+      }
+    }
+  }
+  return ok;
 }
 
 }  // namespace l2::router_detail

@@ -93,11 +93,13 @@ void Router::scan(std::span<const InputFrame> frames) {
   for (int i = 0; i < mesh_.input_count(); ++i) {
     router_detail::InputScan& in = inputs_[i];
     in.frame = i < static_cast<int>(frames.size()) ? frames[i] : InputFrame{};
+    in.predicted = false;
     if (in.frame.present()) {
-      scan_inputs_.push_back(i);
+      if (!(predict_ && router_detail::predict_input(in))) scan_inputs_.push_back(i);
     } else {
       in.stats = InputFrameStats{};
       in.stats.input = i;
+      in.layout_kept = false;
       for (auto& band : in.bands) band.clear();
     }
   }
@@ -161,7 +163,9 @@ DisplayFrameStats Router::finish_band(int display, int band,
 RouteReport Router::route(std::span<const InputFrame> frames) {
   scan(frames);
   std::vector<std::uint8_t> all(inputs_.size(), 1);
-  write(all);
+  if (!write(all)) {
+    [[maybe_unused]] const bool second = write(all);  // nothing is predicted any more
+  }
   std::vector<int> every(displays_.size());
   for (std::size_t d = 0; d < every.size(); ++d) every[d] = static_cast<int>(d);
   RouteReport report;

@@ -72,21 +72,100 @@ void copy_visible(std::uint8_t* dst, const std::uint8_t* src, int x0, int x1, in
   }
 }
 
+// The strips of a run, the source lines of each asked for a few rows ahead: a run's strips are
+// a constant stride apart in both frames, but the hardware prefetcher does not follow a stride
+// of whole scanlines. With kCheck the run belongs to a predicted frame: each strip's header,
+// which sits in the line before or the line of the strip's first pixel and is read with it,
+// is compared with the one predicted for it; false when one differs.
+template <bool kCheck>
+bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, std::uint8_t* dst,
+              std::ptrdiff_t stride, int bpp, std::uint64_t frame_bit) {
+  const int head = kCheck ? kHeaderPixels * bpp : 0;  // the header's bytes, read with the strip
+  const int bytes = r.length * bpp + head;
+  for (int k = 0; k < std::min<int>(kPrefetchRows, r.rows); ++k) {
+    prefetch_bytes(src - head + k * src_stride, bytes);
+  }
+  std::uint64_t message = r.message | frame_bit;
+  bool held = true;
+  for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
+    if (k + kPrefetchRows < r.rows) prefetch_bytes(src - head + kPrefetchRows * src_stride, bytes);
+    if constexpr (kCheck) {
+      held &=
+          header_value(src - head, src - head + bpp) == router_detail::predicted_header(message);
+      message += router_detail::kMessageOneRow;
+    }
+    copy_pixels(dst, src, r.length, bpp);
+  }
+  return held;
+}
+
 }  // namespace
 
-void Router::write(std::span<const std::uint8_t> route_input) {
-  if (std::none_of(route_input.begin(), route_input.end(), [](std::uint8_t r) { return r; })) {
-    return;
-  }
-  pool_.run(static_cast<int>(band_tasks_.size()),
-            [&](int task, int) { write_band(task, route_input); });
+bool Router::write(std::span<const std::uint8_t> route_input) {
   int highest = -1;
   for (std::size_t i = 0; i < route_input.size() && i < inputs_.size(); ++i) {
     if (route_input[i]) highest = static_cast<int>(i);
   }
+  // Predicted frames are checked while they are copied only where nothing is written yet this
+  // frame: a wrong one is then undone by forgetting what this call wrote (the pixels of no
+  // recorded area get the background in finish()). Otherwise it might overwrite an earlier
+  // call's strips, so the checks come first.
+  const bool fresh =
+      std::all_of(display_state_.begin(), display_state_.end(),
+                  [](const DisplayBands& ds) { return ds.highest_input_written < 0; });
+  if (!fresh && !confirm_predictions(route_input, false)) return false;
+  if (highest >= 0) {
+    pool_.run(static_cast<int>(band_tasks_.size()),
+              [&](int task, int) { write_band(task, route_input); });
+  }
+  if (fresh && !confirm_predictions(route_input, true)) {
+    for (DisplayBands& ds : display_state_) {
+      for (BandState& bs : ds.bands) {
+        bs.areas.clear();
+        bs.strips = 0;
+      }
+    }
+    return false;
+  }
   for (DisplayBands& ds : display_state_) {
     ds.highest_input_written = std::max(ds.highest_input_written, highest);
   }
+  return true;
+}
+
+bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool copied) {
+  confirm_inputs_.clear();
+  for (int i = 0; i < static_cast<int>(inputs_.size()); ++i) {
+    if (inputs_[i].predicted) confirm_inputs_.push_back(i);
+  }
+  if (confirm_inputs_.empty()) return true;
+  mispredicted_.assign(inputs_.size(), 0);
+  auto routed = [&](int i) { return i < static_cast<int>(route_input.size()) && route_input[i]; };
+  // The headers the copy did not check (all of an input it did not copy), in parallel.
+  pool_.run(static_cast<int>(confirm_inputs_.size()), [&](int task, int) {
+    const int i = confirm_inputs_[task];
+    if (!router_detail::check_predicted(inputs_[i], !(copied && routed(i)))) mispredicted_[i] = 1;
+  });
+  for (DisplayBands& ds : display_state_) {
+    for (BandState& bs : ds.bands) {
+      for (const int i : bs.mispredicted) mispredicted_[i] = 1;
+      bs.mispredicted.clear();
+    }
+  }
+  predictions_.predicted += confirm_inputs_.size();
+  if (!copied) predictions_.checked_first += confirm_inputs_.size();
+  reparse_inputs_.clear();
+  for (const int i : confirm_inputs_) {
+    inputs_[i].predicted = false;
+    if (mispredicted_[i]) reparse_inputs_.push_back(i);
+  }
+  if (reparse_inputs_.empty()) return true;
+  predictions_.mispredicted += reparse_inputs_.size();
+  pool_.run(static_cast<int>(reparse_inputs_.size()), [this](int task, int) {
+    const int input = reparse_inputs_[task];
+    router_detail::scan_input(inputs_[input], input, targets_);
+  });
+  return false;
 }
 
 void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
@@ -111,20 +190,21 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
     const int bpp = in.frame.bytes_per_pixel;
     const std::ptrdiff_t src_stride = in.frame.stride;
     const bool guard = earlier_highest > i;
+    const std::uint64_t frame_bit = in.parity ? router_detail::kMessageFrameBit : 0;
     for (const Run& r : in.bands[task]) {
       const std::uint8_t* src = in.frame.data + r.src;
       std::uint8_t* dst = pixels + r.dst_y * stride + r.dst_x * 3;
-      const int bytes = r.length * bpp;
-      // A run's strips are a constant stride apart in both frames, but the hardware prefetcher
-      // does not follow a stride of whole scanlines: ask for the strips a few rows ahead.
-      for (int k = 0; k < std::min<int>(kPrefetchRows, r.rows); ++k) {
-        prefetch_bytes(src + k * src_stride, bytes);
-      }
-      for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
-        if (k + kPrefetchRows < r.rows) prefetch_bytes(src + kPrefetchRows * src_stride, bytes);
-        if (!guard) {
-          copy_pixels(dst, src, r.length, bpp);
-        } else {
+      if (in.predicted) {  // never with a guard: see write()
+        if (!copy_run<true>(r, src, src_stride, dst, stride, bpp, frame_bit) &&
+            (bs.mispredicted.empty() || bs.mispredicted.back() != i)) {
+          bs.mispredicted.push_back(i);
+        }
+      } else if (!guard) {
+        copy_run<false>(r, src, src_stride, dst, stride, bpp, 0);
+      } else {
+        const int bytes = r.length * bpp;
+        for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
+          if (k + kPrefetchRows < r.rows) prefetch_bytes(src + kPrefetchRows * src_stride, bytes);
           copy_visible(dst, src, r.dst_x, r.dst_x + r.length, bpp, i, bs, r.dst_y + k - first_row);
         }
       }

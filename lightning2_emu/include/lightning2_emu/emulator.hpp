@@ -22,7 +22,8 @@ struct EmulatorConfig {
   Mesh mesh{1, 1};
   std::vector<DisplaySpec> displays;  // swap_group: all 0 by default, i.e. one group
   Rgb background{};
-  int workers = 0;  // 0: one per hardware thread
+  int workers = 0;              // 0: one per hardware thread
+  bool predict_layouts = true;  // Router::predict_layouts()
 };
 
 // Per-run totals.
@@ -73,9 +74,13 @@ class Emulator {
   const RunReport& report() const { return report_; }
 
  private:
+  // Reads the router's counts for this tick's frames into tick_.inputs and decides.
+  void observe(int inputs);
+
   WorkerPool pool_;
   Router router_;
   FrameSequencer sequencer_;
+  FrameSequencer sequencer_before_;    // as it was before this tick's decision
   std::vector<int> group_of_display_;  // by display index: group index
   std::vector<std::vector<int>> group_display_indices_;
   FrameSequencer::Refresh refresh_;
