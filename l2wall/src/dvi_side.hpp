@@ -33,6 +33,7 @@ class DviSide {
 
   const RgbImage& shown(int display) const { return emulator_.shown(display); }
   std::uint64_t refreshes() const { return refreshes_; }
+  const RunReport& emulator_report() const { return emulator_.report(); }
 
  private:
   Emulator emulator_;

@@ -362,6 +362,10 @@ class LiveRun {
 
   void write_report() {
     totals_.refreshes = dvi_ ? dvi_->refreshes() : 0;
+    if (dvi_) {
+      totals_.frames_predicted = dvi_->emulator_report().frames_predicted;
+      totals_.predictions_missed = dvi_->emulator_report().predictions_missed;
+    }
     std::vector<std::string> host_logs;
     for (const Host& h : hosts_.hosts()) host_logs.push_back(h.report_path);
     const std::string summary = write_run_report(o_, wall_, host_logs, records_, totals_,

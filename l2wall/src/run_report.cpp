@@ -115,6 +115,12 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   } else {
     summary += "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
   }
+  if (o.path != "vizserver") {
+    summary += fmt::format(
+        "emulator: {} input frames predicted from their input's last layout, {} of them found "
+        "different and parsed\n",
+        totals.frames_predicted, totals.predictions_missed);
+  }
   if (o.path != "dvi") summary += fmt::format("paths: {}\n", o.path);
   if (o.compare) {
     summary += fmt::format(

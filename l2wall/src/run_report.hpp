@@ -27,6 +27,7 @@ struct RunTotals {
   std::uint64_t refreshes = 0;
   std::uint64_t noise_bytes = 0, dropped_readies = 0;
   std::uint64_t compared_displays = 0;
+  std::uint64_t frames_predicted = 0, predictions_missed = 0;  // the emulator's (DVI path)
   bool latency_measured = true;  // false on the vizserver path alone: no refresh to count
   RunClock::time_point start{};  // the clock starts once every host delivered a first frame
 };

@@ -100,6 +100,8 @@ json to_json(const RunReport& r) {
           {"frames_new", r.frames(FrameKind::New)},
           {"frames_repeat", r.frames(FrameKind::Repeat)},
           {"frames_early", r.frames(FrameKind::Early)},
+          {"frames_predicted", r.frames_predicted},
+          {"predictions_missed", r.predictions_missed},
           {"inputs", inputs},
           {"displays", displays},
           {"groups", groups}};

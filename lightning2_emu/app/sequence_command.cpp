@@ -80,9 +80,12 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   }
   log.write(o.out / "report.json", emulator.report());
   const RunReport& r = emulator.report();
-  fmt::print("{} refreshes of {} inputs: {} new, {} repeated, {} torn, {} idle frames; wrote {}\n",
-             r.ticks, inputs.size(), r.frames(FrameKind::New), r.frames(FrameKind::Repeat),
-             r.frames(FrameKind::Torn), r.frames(FrameKind::Idle), o.out.string());
+  fmt::print(
+      "{} refreshes of {} inputs: {} new, {} repeated, {} torn, {} idle frames ({} predicted "
+      "from their input's last layout, {} of them found different and parsed); wrote {}\n",
+      r.ticks, inputs.size(), r.frames(FrameKind::New), r.frames(FrameKind::Repeat),
+      r.frames(FrameKind::Torn), r.frames(FrameKind::Idle), r.frames_predicted,
+      r.predictions_missed, o.out.string());
   return 0;
 }
 

@@ -75,6 +75,8 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
     sequencer_ = sequencer_before_;
   }
   tick_.kinds = decision_.kinds;
+  report_.frames_predicted = router_.predictions().predicted;
+  report_.predictions_missed = router_.predictions().mispredicted;
   for (int i = 0; i < inputs; ++i) {
     const InputFrameStats& st = tick_.inputs[i];
     InputRunStats& run = report_.inputs[i];

@@ -157,6 +157,14 @@ TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
   const auto report = read_json(dir / "out/report.json");
   EXPECT_EQ(report["ticks"], 4);
   EXPECT_EQ(report["frames_torn"], 1);
+  // Predicted from the last layout: every frame after an input's first, except input 1's
+  // frame after its torn one. The torn frame itself was predicted, and found different.
+  EXPECT_EQ(report["frames_predicted"], 5);
+  EXPECT_EQ(report["predictions_missed"], 1);
+  EXPECT_NE(r.output.find("(5 predicted from their input's last layout, 1 of them found "
+                          "different and parsed)"),
+            std::string::npos)
+      << r.output;
   EXPECT_EQ(report["groups"][0]["swaps"], 2);
   EXPECT_EQ(report["tick_log"][1]["frames"][1], "torn");
 

@@ -41,6 +41,9 @@ struct DisplayRunStats {
 };
 struct RunReport {
   std::uint64_t ticks = 0;
+  // Frames predicted from their input's last layout (router.hpp), and how many of them turned
+  // out different and were parsed.
+  std::uint64_t frames_predicted = 0, predictions_missed = 0;
   std::vector<InputRunStats> inputs;
   std::vector<DisplayRunStats> displays;
   std::vector<SwapGroup> groups;  // with their swap counts
