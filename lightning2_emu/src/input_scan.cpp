@@ -21,9 +21,6 @@ namespace {
 // or went to no display, which must be counted again.
 constexpr std::uint64_t kNever = ~std::uint64_t{0};
 
-// Kept headers ahead whose lines check_predicted() asks for while it reads one.
-constexpr int kCheckAhead = 8;
-
 // The raw header one display row further down: the y field plus one, check bits recomputed.
 // Only asked for rows below 4095, so the field does not carry over.
 std::uint64_t one_row_down(std::uint64_t value) {
@@ -251,59 +248,6 @@ class Scanner {
 
 void scan_input(InputScan& in, int input, const std::vector<Target>& targets) {
   Scanner(in, targets).scan(input);
-}
-
-bool predict_input(InputScan& in) {
-  const InputFrame& f = in.frame;
-  const InputFrame& kept = in.kept_shape;
-  if (!in.layout_kept || f.width != kept.width || f.height != kept.height ||
-      f.stride != kept.stride || f.bytes_per_pixel != kept.bytes_per_pixel) {
-    return false;
-  }
-  in.predicted = true;
-  in.parity = 0;
-  if (in.parity_at >= 0) {
-    const std::uint8_t* p = f.data + in.parity_at;
-    in.parity =
-        static_cast<int>(header_value(p, p + f.bytes_per_pixel) >> header_bits::kFrameShift & 1);
-    in.stats.parities = static_cast<std::uint8_t>(in.parity ? 2 : 1);
-  }
-  return true;
-}
-
-bool check_predicted(const InputScan& in, bool runs) {
-  const InputFrame& f = in.frame;
-  const int bpp = f.bytes_per_pixel;
-  const std::uint64_t frame_bit = in.parity ? kMessageFrameBit : 0;
-  auto holds = [&](std::int64_t at, std::uint64_t message) {
-    const std::uint8_t* p = f.data + at;
-    const std::uint64_t raw = header_value(p, p + bpp);
-    if (message == KeptHeader::kAnyEnd) {
-      const auto h = decode(raw);
-      return h && h->op == StripOp::End;
-    }
-    return raw == predicted_header(message | frame_bit);
-  };
-  bool ok = true;
-  const std::size_t n = in.others.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + in.others[k + kCheckAhead].at);
-    ok &= holds(in.others[k].at, in.others[k].message);
-  }
-  if (!runs) return ok;
-  for (const auto& band : in.bands) {
-    for (const Run& r : band) {
-      const std::int64_t first = r.src - std::int64_t{kHeaderPixels} * bpp;
-      std::uint64_t m = r.message;
-      for (int k = 0; k < r.rows; ++k, m += kMessageOneRow) {
-        if (k + kCheckAhead < r.rows) {
-          pixel_copy::prefetch_line(f.data + first + (k + kCheckAhead) * f.stride);
-        }
-        ok &= holds(first + k * f.stride, m);
-      }
-    }
-  }
-  return ok;
 }
 
 }  // namespace l2::router_detail

@@ -133,41 +133,6 @@ bool Router::write(std::span<const std::uint8_t> route_input) {
   return true;
 }
 
-bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool copied) {
-  confirm_inputs_.clear();
-  for (int i = 0; i < static_cast<int>(inputs_.size()); ++i) {
-    if (inputs_[i].predicted) confirm_inputs_.push_back(i);
-  }
-  if (confirm_inputs_.empty()) return true;
-  mispredicted_.assign(inputs_.size(), 0);
-  auto routed = [&](int i) { return i < static_cast<int>(route_input.size()) && route_input[i]; };
-  // The headers the copy did not check (all of an input it did not copy), in parallel.
-  pool_.run(static_cast<int>(confirm_inputs_.size()), [&](int task, int) {
-    const int i = confirm_inputs_[task];
-    if (!router_detail::check_predicted(inputs_[i], !(copied && routed(i)))) mispredicted_[i] = 1;
-  });
-  for (DisplayBands& ds : display_state_) {
-    for (BandState& bs : ds.bands) {
-      for (const int i : bs.mispredicted) mispredicted_[i] = 1;
-      bs.mispredicted.clear();
-    }
-  }
-  predictions_.predicted += confirm_inputs_.size();
-  if (!copied) predictions_.checked_first += confirm_inputs_.size();
-  reparse_inputs_.clear();
-  for (const int i : confirm_inputs_) {
-    inputs_[i].predicted = false;
-    if (mispredicted_[i]) reparse_inputs_.push_back(i);
-  }
-  if (reparse_inputs_.empty()) return true;
-  predictions_.mispredicted += reparse_inputs_.size();
-  pool_.run(static_cast<int>(reparse_inputs_.size()), [this](int task, int) {
-    const int input = reparse_inputs_[task];
-    router_detail::scan_input(inputs_[input], input, targets_);
-  });
-  return false;
-}
-
 void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
   const BandTask& t = band_tasks_[task];
   DisplayBands& ds = display_state_[t.display];

@@ -1,0 +1,111 @@
+// Predicted frames (router.hpp): a frame is taken to hold its input's last headers with a new
+// frame bit, and every header of it is checked before the frame's routing counts. Here: making
+// the prediction, the checks that are not made in the copy loop (router_write.cpp makes those),
+// and what happens when one fails.
+#include "lightning2_emu/router.hpp"
+#include "pixel_copy.hpp"
+#include "router_detail.hpp"
+
+namespace l2 {
+namespace router_detail {
+namespace {
+
+// Kept headers ahead whose lines check_predicted() asks for while it reads one.
+constexpr int kCheckAhead = 8;
+
+}  // namespace
+
+bool predict_input(InputScan& in) {
+  const InputFrame& f = in.frame;
+  const InputFrame& kept = in.kept_shape;
+  if (!in.layout_kept || f.width != kept.width || f.height != kept.height ||
+      f.stride != kept.stride || f.bytes_per_pixel != kept.bytes_per_pixel) {
+    return false;
+  }
+  in.predicted = true;
+  in.parity = 0;
+  if (in.parity_at >= 0) {
+    const std::uint8_t* p = f.data + in.parity_at;
+    in.parity =
+        static_cast<int>(header_value(p, p + f.bytes_per_pixel) >> header_bits::kFrameShift & 1);
+    in.stats.parities = static_cast<std::uint8_t>(in.parity ? 2 : 1);
+  }
+  return true;
+}
+
+bool check_predicted(const InputScan& in, bool runs) {
+  const InputFrame& f = in.frame;
+  const int bpp = f.bytes_per_pixel;
+  const std::uint64_t frame_bit = in.parity ? kMessageFrameBit : 0;
+  auto holds = [&](std::int64_t at, std::uint64_t message) {
+    const std::uint8_t* p = f.data + at;
+    const std::uint64_t raw = header_value(p, p + bpp);
+    if (message == KeptHeader::kAnyEnd) {
+      const auto h = decode(raw);
+      return h && h->op == StripOp::End;
+    }
+    return raw == predicted_header(message | frame_bit);
+  };
+  bool ok = true;
+  const std::size_t n = in.others.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + in.others[k + kCheckAhead].at);
+    ok &= holds(in.others[k].at, in.others[k].message);
+  }
+  if (!runs) return ok;
+  for (const auto& band : in.bands) {
+    for (const Run& r : band) {
+      const std::int64_t first = r.src - std::int64_t{kHeaderPixels} * bpp;
+      std::uint64_t m = r.message;
+      for (int k = 0; k < r.rows; ++k, m += kMessageOneRow) {
+        if (k + kCheckAhead < r.rows) {
+          pixel_copy::prefetch_line(f.data + first + (k + kCheckAhead) * f.stride);
+        }
+        ok &= holds(first + k * f.stride, m);
+      }
+    }
+  }
+  return ok;
+}
+
+}  // namespace router_detail
+
+using router_detail::BandState;
+using router_detail::DisplayBands;
+
+bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool copied) {
+  confirm_inputs_.clear();
+  for (int i = 0; i < static_cast<int>(inputs_.size()); ++i) {
+    if (inputs_[i].predicted) confirm_inputs_.push_back(i);
+  }
+  if (confirm_inputs_.empty()) return true;
+  mispredicted_.assign(inputs_.size(), 0);
+  auto routed = [&](int i) { return i < static_cast<int>(route_input.size()) && route_input[i]; };
+  // The headers the copy did not check (all of an input it did not copy), in parallel.
+  pool_.run(static_cast<int>(confirm_inputs_.size()), [&](int task, int) {
+    const int i = confirm_inputs_[task];
+    if (!router_detail::check_predicted(inputs_[i], !(copied && routed(i)))) mispredicted_[i] = 1;
+  });
+  for (DisplayBands& ds : display_state_) {
+    for (BandState& bs : ds.bands) {
+      for (const int i : bs.mispredicted) mispredicted_[i] = 1;
+      bs.mispredicted.clear();
+    }
+  }
+  predictions_.predicted += confirm_inputs_.size();
+  if (!copied) predictions_.checked_first += confirm_inputs_.size();
+  reparse_inputs_.clear();
+  for (const int i : confirm_inputs_) {
+    inputs_[i].predicted = false;
+    if (mispredicted_[i]) reparse_inputs_.push_back(i);
+  }
+  if (reparse_inputs_.empty()) return true;
+  predictions_.mispredicted += reparse_inputs_.size();
+  pool_.run(static_cast<int>(reparse_inputs_.size()), [this](int task, int) {
+    const int input = reparse_inputs_[task];
+    router_detail::scan_input(inputs_[input], input, targets_);
+  });
+  return false;
+}
+
+}  // namespace l2
