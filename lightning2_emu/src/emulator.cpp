@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 namespace l2 {
 
 Emulator::Emulator(const EmulatorConfig& config)
@@ -69,10 +71,12 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
   router_.scan(frames);
   const int inputs = router_.mesh().input_count();
   sequencer_before_ = sequencer_;
-  for (;;) {
-    observe(inputs);
-    if (router_.write(decision_.route)) break;
+  observe(inputs);
+  if (!router_.write(decision_.route)) {
     sequencer_ = sequencer_before_;
+    observe(inputs);
+    // Nothing is predicted any more: this write cannot miss.
+    if (!router_.write(decision_.route)) throw std::logic_error("router: a parsed frame missed");
   }
   tick_.kinds = decision_.kinds;
   report_.frames_predicted = router_.predictions().predicted;
