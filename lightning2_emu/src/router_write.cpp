@@ -72,14 +72,15 @@ void copy_visible(std::uint8_t* dst, const std::uint8_t* src, int x0, int x1, in
   }
 }
 
-// The strips of a run, the source lines of each asked for a few rows ahead: a run's strips are
-// a constant stride apart in both frames, but the hardware prefetcher does not follow a stride
-// of whole scanlines. With kCheck the run belongs to a predicted frame: each strip's header,
-// which sits in the line before or the line of the strip's first pixel and is read with it,
-// is compared with the one predicted for it; false when one differs.
-template <bool kCheck>
+// The strips of a run, each by copy_row(dst, src, k), the source lines of each asked for a few
+// rows ahead: a run's strips are a constant stride apart in both frames, but the hardware
+// prefetcher does not follow a stride of whole scanlines. With kCheck the run belongs to a
+// predicted frame: each strip's header, which sits in the line before or the line of the
+// strip's first pixel and is read with it, is compared with the one predicted for it; false
+// when one differs.
+template <bool kCheck, class CopyRow>
 bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, std::uint8_t* dst,
-              std::ptrdiff_t stride, int bpp, std::uint64_t frame_bit) {
+              std::ptrdiff_t stride, int bpp, std::uint64_t frame_bit, CopyRow&& copy_row) {
   const int head = kCheck ? kHeaderPixels * bpp : 0;  // the header's bytes, read with the strip
   const int bytes = r.length * bpp + head;
   for (int k = 0; k < std::min<int>(kPrefetchRows, r.rows); ++k) {
@@ -94,7 +95,7 @@ bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, 
           header_value(src - head, src - head + bpp) == router_detail::predicted_header(message);
       message += router_detail::kMessageOneRow;
     }
-    copy_pixels(dst, src, r.length, bpp);
+    copy_row(dst, src, k);
   }
   return held;
 }
@@ -159,19 +160,22 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
     for (const Run& r : in.bands[task]) {
       const std::uint8_t* src = in.frame.data + r.src;
       std::uint8_t* dst = pixels + r.dst_y * stride + r.dst_x * 3;
+      const auto whole = [&](std::uint8_t* d, const std::uint8_t* s, int) {
+        copy_pixels(d, s, r.length, bpp);
+      };
       if (in.predicted) {  // never with a guard: see write()
-        if (!copy_run<true>(r, src, src_stride, dst, stride, bpp, frame_bit) &&
+        if (!copy_run<true>(r, src, src_stride, dst, stride, bpp, frame_bit, whole) &&
             (bs.mispredicted.empty() || bs.mispredicted.back() != i)) {
           bs.mispredicted.push_back(i);
         }
       } else if (!guard) {
-        copy_run<false>(r, src, src_stride, dst, stride, bpp, 0);
+        copy_run<false>(r, src, src_stride, dst, stride, bpp, 0, whole);
       } else {
-        const int bytes = r.length * bpp;
-        for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
-          if (k + kPrefetchRows < r.rows) prefetch_bytes(src + kPrefetchRows * src_stride, bytes);
-          copy_visible(dst, src, r.dst_x, r.dst_x + r.length, bpp, i, bs, r.dst_y + k - first_row);
-        }
+        copy_run<false>(r, src, src_stride, dst, stride, bpp, 0,
+                        [&](std::uint8_t* d, const std::uint8_t* s, int k) {
+                          copy_visible(d, s, r.dst_x, r.dst_x + r.length, bpp, i, bs,
+                                       r.dst_y + k - first_row);
+                        });
       }
       bs.areas.push_back({r.dst_y, static_cast<std::uint16_t>(r.dst_y + r.rows), r.dst_x,
                           static_cast<std::uint16_t>(r.dst_x + r.length),
