@@ -15,7 +15,22 @@ namespace {
 constexpr int kCells = 3;  // batches: the mesh's box cut into kCells^3 cells by centroid
 
 // Centre the mesh on the origin and scale it into the unit sphere, so any mesh fits the camera.
+// A mesh file may hold any finite float, and coordinates near 3.4e38 overflowed to infinity in
+// the box's centre and a vertex's distance from it, which made every vertex NaN (nothing drawn).
+// So the mesh is first scaled by the power of two that brings its largest coordinate near 1:
+// exact in floating point, so a mesh that did not overflow gets the same floats as before.
 void normalise(std::vector<glm::vec3>& positions) {
+  float largest = 0;
+  for (const auto& p : positions) {
+    largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  }
+  if (largest > 0) {
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    for (auto& p : positions)
+      p = glm::vec3(std::ldexp(p.x, -exponent), std::ldexp(p.y, -exponent),
+                    std::ldexp(p.z, -exponent));
+  }
   Box box = Box::empty();
   for (const auto& p : positions) box.extend(p);
   const glm::vec3 centre = (box.lo + box.hi) * 0.5f;

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
 #include "pipeserver/scene.hpp"
 #include "test_support.hpp"
 
@@ -88,6 +92,27 @@ TEST(Scenes, UnknownNameIsAClearError) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "unknown scene 'teapot' (expected mesh, strips, isosurface or patches)");
   }
+}
+
+// A mesh file may hold any finite float. Coordinates near the float limit overflowed while the
+// mesh was centred and scaled, and every vertex became NaN: nothing was drawn.
+TEST(Scenes, AMeshOfHugeCoordinatesFitsTheUnitSphere) {
+  const auto file = std::filesystem::temp_directory_path() / "l2-scene-huge.obj";
+  std::ofstream(file) << "v 3.0e38 3.0e38 -3.0e38\nv 3.3e38 -3.3e38 3.0e38\n"
+                         "v -3.3e38 3.0e38 3.3e38\nf 1 2 3\n";
+  SceneOptions options;
+  options.mesh_file = file;
+  auto s = make_scene("mesh", options);
+  s->set_frame(0);
+  const auto positions = all_positions(*s);
+  std::filesystem::remove(file);
+  ASSERT_EQ(positions.size(), 3u);
+  float farthest = 0;
+  for (const auto& p : positions) {
+    ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    farthest = std::max(farthest, glm::length(p));
+  }
+  EXPECT_NEAR(farthest, 1.0f, 1e-5f);  // scaled into the unit sphere, touching it
 }
 
 TEST(Scenes, BunnyIsTheDefaultMesh) {
