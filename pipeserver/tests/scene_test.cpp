@@ -94,25 +94,32 @@ TEST(Scenes, UnknownNameIsAClearError) {
   }
 }
 
-// A mesh file may hold any finite float. Coordinates near the float limit overflowed while the
-// mesh was centred and scaled, and every vertex became NaN: nothing was drawn.
-TEST(Scenes, AMeshOfHugeCoordinatesFitsTheUnitSphere) {
-  const auto file = std::filesystem::temp_directory_path() / "l2-scene-huge.obj";
-  std::ofstream(file) << "v 3.0e38 3.0e38 -3.0e38\nv 3.3e38 -3.3e38 3.0e38\n"
-                         "v -3.3e38 3.0e38 3.3e38\nf 1 2 3\n";
+// The distance from the origin of the farthest vertex of a mesh scene made from an OBJ text;
+// fails the test on a vertex that is not finite.
+float farthest_vertex(const std::string& obj) {
+  const auto file = std::filesystem::temp_directory_path() / "l2-scene-test.obj";
+  std::ofstream(file) << obj;
   SceneOptions options;
   options.mesh_file = file;
   auto s = make_scene("mesh", options);
-  s->set_frame(0);
-  const auto positions = all_positions(*s);
   std::filesystem::remove(file);
-  ASSERT_EQ(positions.size(), 3u);
+  s->set_frame(0);
   float farthest = 0;
-  for (const auto& p : positions) {
-    ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  for (const auto& p : all_positions(*s)) {
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
     farthest = std::max(farthest, glm::length(p));
   }
-  EXPECT_NEAR(farthest, 1.0f, 1e-5f);  // scaled into the unit sphere, touching it
+  return farthest;
+}
+
+// A mesh file may hold any finite float. Coordinates near the float limit overflowed while the
+// mesh was centred and scaled, and every vertex became NaN: nothing was drawn. Tiny ones were
+// scaled against a radius of at least 1e-6 and stayed a dot.
+TEST(Scenes, MeshesOfHugeOrTinyCoordinatesFitTheUnitSphere) {
+  EXPECT_NEAR(farthest_vertex("v 3.0e38 3.0e38 -3.0e38\nv 3.3e38 -3.3e38 3.0e38\n"
+                              "v -3.3e38 3.0e38 3.3e38\nf 1 2 3\n"),
+              1.0f, 1e-5f);
+  EXPECT_NEAR(farthest_vertex("v 3e-30 0 0\nv 0 2e-30 0\nv 0 0 1e-30\nf 1 2 3\n"), 1.0f, 1e-5f);
 }
 
 TEST(Scenes, BunnyIsTheDefaultMesh) {
