@@ -2,6 +2,7 @@
 // or dump every header of a scanned-out frame with the §3 error counts.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <string>
@@ -32,14 +33,19 @@ int encode_command(const std::string& op, bool frame, int display, int x, int y,
 }
 
 int decode_command(const std::string& hex) {
-  // Hex digits only: std::stoull also took a sign, spaces and 0x, and -1 as ffffffffffffffff.
-  std::uint64_t value = 0;
-  const char* end = hex.data() + hex.size();
-  const auto [stop, error] = std::from_chars(hex.data(), end, value, 16);
-  if (hex.empty() || error != std::errc{} || stop != end || value > l2::header_bits::kMask48) {
-    fmt::print(stderr, "strip_headers: '{}' is not a 48-bit hex value (12 hex digits)\n", hex);
+  // Exactly 12 hex digits, a header's 48 bits. std::stoull also took a sign, spaces and 0x, and
+  // -1 as ffffffffffffffff; a shorter value was read with leading zeros, so a header with a digit
+  // left out (4180500a00f) decoded as another one and was reported as a check error.
+  const bool digits = !hex.empty() && std::all_of(hex.begin(), hex.end(), [](char c) {
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+  });
+  if (!digits || hex.size() != 12) {
+    fmt::print(stderr, "strip_headers: '{}' is not a 48-bit hex value (12 hex digits{})\n", hex,
+               digits ? fmt::format(", not {}", hex.size()) : "");
     return 2;
   }
+  std::uint64_t value = 0;
+  std::from_chars(hex.data(), hex.data() + hex.size(), value, 16);
   const auto h = l2::decode(value);
   if (!h) {
     fmt::print("{:012x}: check error (expected check {}, got {})\n", value, l2::crc3(value >> 3),

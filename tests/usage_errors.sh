@@ -115,4 +115,10 @@ bad_value "--op skip: SKIP has only a --width" strip_headers encode --op skip --
 for value in -1 +1 0x1 ' 1' 1000000000000 ''; do
   bad_value "'$value' is not a 48-bit hex value" strip_headers decode -- "$value"
 done
+# A header is exactly 12 hex digits: one left out (11) was read as a leading zero and decoded as
+# another header, a check error (exit 1); a 13th digit, a leading zero, was taken too.
+bad_value "'4180500a00f' is not a 48-bit hex value (12 hex digits, not 11)" strip_headers decode \
+  4180500a00f
+bad_value "'0629400f00a01' is not a 48-bit hex value (12 hex digits, not 13)" strip_headers \
+  decode 0629400f00a01
 exit $failed
