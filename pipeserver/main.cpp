@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "command_line/parse.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "live_host.hpp"
 #include "pipeserver/pipeserver.hpp"
@@ -44,6 +45,10 @@ int run(const Options& o) {
   for (const auto& w : layout.warnings)
     std::fprintf(stderr, "pipeserver: warning: %s\n", w.c_str());
   auto scene = l2::make_scene(o.scene, o.scene_options);
+  // The folders before rendering: a folder that could not be made failed after the work.
+  const std::filesystem::path out_file(o.out);
+  if (out_file.has_parent_path()) l2::make_folders(out_file.parent_path());
+  if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");
 
   if (!o.out.empty()) {
     l2::Pipeserver ps(layout, o.server);

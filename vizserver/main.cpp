@@ -16,6 +16,7 @@
 #include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/size_text.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_sender.hpp"
@@ -177,14 +178,7 @@ int main(int argc, char** argv) {
     }
     // Before listening: a folder that cannot be made failed only at the first swap, after the
     // pipeservers had connected and been told frame 0 swapped.
-    if (!out.png_dir.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(out.png_dir, error);
-      if (error) {
-        throw std::runtime_error(
-            fmt::format("--out {}: cannot create the folder: {}", out.png_dir, error.message()));
-      }
-    }
+    if (!out.png_dir.empty()) l2::make_folders(out.png_dir, "--out");
     l2::viz::CompositingServer server(options);
     l2::viz::SwapQueue queue(kQueuedFrames);
     const QueueCloser closer{queue};

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "image/folders.hpp"
 #include "png_codec.hpp"
 
 namespace l2 {
@@ -37,7 +38,7 @@ void check(const std::filesystem::path& path, const std::string& error) {
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  if (path.has_parent_path()) make_folders(path.parent_path());
   check(path, codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data()));
 }
 

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "child_process.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 
 namespace l2 {
@@ -73,7 +74,7 @@ void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>
 EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::path& wall_file,
                                const GoldenEntry& entry, const RenderedRun& run) {
   std::filesystem::remove_all(run.work);
-  std::filesystem::create_directories(run.work);
+  make_folders(run.work);
   std::vector<std::string> live{run.l2wall,
                                 "run",
                                 wall_file.string(),
@@ -114,7 +115,7 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
 }
 
 GlInfo pipeserver_gl_info(const std::string& pipeserver, const std::filesystem::path& work) {
-  std::filesystem::create_directories(work);
+  make_folders(work);
   const auto log = work / "gl-info.txt";
   LoggedCommand({pipeserver, "--gl-info"}, log).finish(std::chrono::seconds(60));
   GlInfo gl;

@@ -19,6 +19,7 @@
 #include "dvi_link/refresh_clock.hpp"
 #include "dvi_side.hpp"
 #include "host_set.hpp"
+#include "image/folders.hpp"
 #include "live_show.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "run_fault.hpp"
@@ -49,7 +50,7 @@ class LiveRun {
   int run() {
     check_options();
     check_every_server_has_tiles();
-    std::filesystem::create_directories(o_.out);
+    make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     if (o_.path != "vizserver") dvi_.emplace(wall_, o_.threads, layout_.servers.size());
@@ -70,6 +71,9 @@ class LiveRun {
     write_report();
     return latency_ok_ ? 0 : 1;
   }
+
+  // Whether a progress line is on stderr (an error then starts a line of its own).
+  bool progress_shown() const { return progress_shown_; }
 
   // After a fault: what the displays show now goes to DIR/fault/. False if there was nothing.
   bool save_displays_after_fault() {
@@ -352,8 +356,9 @@ class LiveRun {
 
   // --- output ------------------------------------------------------------------------------
 
-  void progress(RunClock::time_point now) const {
+  void progress(RunClock::time_point now) {
     if (!o_.progress) return;
+    progress_shown_ = true;
     const double s = ms_between(totals_.start, now) / 1000.0;
     std::fprintf(stderr, "\rl2wall: frame %d/%d on the displays, %.1f fps", shown_, o_.frames,
                  s > 0 ? shown_ / s : 0.0);
@@ -384,6 +389,7 @@ class LiveRun {
   HostSet hosts_;                   // after viz_: destroyed first, so hosts end before it
   std::vector<FrameRecord> records_;
   RunTotals totals_;
+  bool progress_shown_ = false;
   int shown_ = 0;       // frames 0 .. shown_-1 have reached every display (and were checked)
   int dvi_shown_ = -1;  // the frame the emulator's displays show
   bool latency_ok_ = true;
@@ -437,7 +443,7 @@ int run_wall(const RunOptions& options) {
     run = std::make_unique<LiveRun>(options);
     return run->run();
   } catch (const RunFault& e) {
-    if (options.progress) std::fputs("\n", stderr);
+    if (run && run->progress_shown()) std::fputs("\n", stderr);
     std::fprintf(stderr, "l2wall: %s\n", e.what());
     if (run) {
       if (run->save_displays_after_fault())
@@ -446,7 +452,7 @@ int run_wall(const RunOptions& options) {
     }
     return 1;
   } catch (const std::exception& e) {
-    if (options.progress) std::fputs("\n", stderr);
+    if (run && run->progress_shown()) std::fputs("\n", stderr);
     std::fprintf(stderr, "l2wall: %s\n", e.what());
     return 1;
   }

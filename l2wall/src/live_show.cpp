@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "image/folders.hpp"
+
 namespace l2 {
 
 namespace {
@@ -58,7 +60,7 @@ void LiveShow::show(int frame, long latency_frames,
   if (!readback_.empty()) {
     // Verification aid: what the X server shows, written next to the run's own pictures.
     const auto dir = readback_ / fmt::format("frame-{}", frame);
-    std::filesystem::create_directories(dir);
+    make_folders(dir);
     save_screenshots(*presenter_, dir, "");
   }
 }
@@ -134,7 +136,7 @@ void LiveShow::screenshot() {
     return;
   }
   const auto dir = out_ / "screenshots";
-  std::filesystem::create_directories(dir);
+  make_folders(dir);
   const auto files = save_screenshots(*presenter_, dir, fmt::format("frame-{}-", info_.frame));
   ++screenshots_;
   say(fmt::format("screenshot of frame {}: {} files, {}/frame-{}-display-<d>.png", info_.frame,

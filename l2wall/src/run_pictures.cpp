@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "display_compare.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "run_fault.hpp"
 #include "wall_picture.hpp"
@@ -13,7 +14,7 @@ namespace l2 {
 
 void write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
                             const DisplayPictures& display, const std::string& suffix) {
-  std::filesystem::create_directories(dir);
+  make_folders(dir);
   for (const Display& d : wall.displays)
     write_png(dir / fmt::format("display-{}{}.png", d.id, suffix), display(d.id));
   write_png(dir / fmt::format("wall{}.png", suffix), compose_wall_picture(wall, display));
@@ -39,7 +40,7 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
     ++compared;
     if (diff.identical()) continue;
     const auto dir = out / fmt::format("mismatch-frame-{}", frame);
-    std::filesystem::create_directories(dir);
+    make_folders(dir);
     write_png(dir / fmt::format("display-{}-dvi.png", d.id), dvi);
     write_png(dir / fmt::format("display-{}-vizserver.png", d.id), *viz);
     write_png(dir / fmt::format("display-{}-diff.png", d.id), diff.picture);

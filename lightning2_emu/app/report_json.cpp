@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "image/folders.hpp"
+
 namespace l2 {
 namespace {
 
@@ -112,7 +114,7 @@ json to_json(const RunReport& r) {
 // U+FFFD for each bad byte, where dump() would throw.
 void write_json(const std::filesystem::path& path, const json& j) {
   const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace) + '\n';
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  if (path.has_parent_path()) make_folders(path.parent_path());
   std::ofstream out(path);
   out << text;
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));

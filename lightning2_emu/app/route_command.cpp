@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "lightning2_emu/router.hpp"
 #include "report_json.hpp"
@@ -13,6 +14,7 @@ namespace l2 {
 int run_route(const CommonOptions& o) {
   const Setup setup = make_setup(o);
   const Mesh& mesh = setup.config.mesh;
+  make_folders(o.out, "--out");
   std::vector<RgbImage> images;
   std::vector<InputFrame> frames;
   images.reserve(o.inputs.size());

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "report_json.hpp"
 #include "sequence_show.hpp"
@@ -24,7 +26,11 @@ void remove_old_frames(const std::filesystem::path& folder) {
     const bool ours =
         name.size() >= 14 && name.starts_with("frame-") && name.ends_with(".png") &&
         std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
-    if (ours && entry.is_regular_file()) std::filesystem::remove(entry.path());
+    if (!ours || !entry.is_regular_file()) continue;
+    if (std::filesystem::remove(entry.path(), error); error) {
+      throw std::runtime_error(fmt::format("{}: cannot remove this frame of an earlier run: {}",
+                                           entry.path().string(), error.message()));
+    }
   }
 }
 
@@ -33,6 +39,7 @@ void remove_old_frames(const std::filesystem::path& folder) {
 int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   const Setup setup = make_setup(o);
   const Mesh& mesh = setup.config.mesh;
+  make_folders(o.out, "--out");
   std::vector<std::vector<std::filesystem::path>> inputs;
   std::size_t longest = 0;
   for (const std::string& folder : o.inputs) {

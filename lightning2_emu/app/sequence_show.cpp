@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "image/folders.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -68,7 +69,7 @@ bool SequenceShow::play(int t, const std::vector<const RgbImage*>& by_id) {
   presenter_->present(info_, images_);
   if (!options_.readback.empty()) {
     const auto dir = options_.readback / fmt::format("frame-{}", t);
-    std::filesystem::create_directories(dir);
+    make_folders(dir);
     save_screenshots(*presenter_, dir, "");
   }
   wait_for_next_refresh();
@@ -103,7 +104,7 @@ void SequenceShow::act(UserAction a) {
       break;
     case UserAction::Screenshot: {
       const auto dir = out_ / "screenshots";
-      std::filesystem::create_directories(dir);
+      make_folders(dir);
       const auto files = save_screenshots(*presenter_, dir, fmt::format("frame-{}-", info_.frame));
       fmt::print(stderr, "lightning2_emu: screenshot of refresh {}: {} files in {}\n", info_.frame,
                  files.size(), dir.string());

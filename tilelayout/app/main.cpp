@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "command_line/parse.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
@@ -15,6 +16,7 @@
 namespace {
 
 void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& dir) {
+  l2::make_folders(dir, "--png");
   for (const l2::ServerPlan& s : layout.servers) {
     const auto path = dir / fmt::format("pipeserver-{}.png", s.server);
     l2::write_png(path, l2::framebuffer_picture(s));
@@ -25,6 +27,7 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
 }
 
 void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity) {
+  l2::make_folders(dir, "--scanout");
   for (const l2::ServerPlan& s : layout.servers) {
     const auto path = dir / fmt::format("scanout-{}.png", s.server);
     l2::write_png(path, l2::test_frame(s, parity));

@@ -1,0 +1,17 @@
+// Output folders at the edge of the system: made with a message for people, not
+// std::filesystem's ("filesystem error: cannot create directories: Not a directory [out/x]").
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace l2 {
+
+// Makes `folder` and its missing parents; nothing when it is a folder already. Throws
+// std::runtime_error, one line naming the path (after `what` and ": " when given, e.g. "--out"):
+//   "out: a file, not a folder"                                    (the folder is a file)
+//   "out/x: cannot make the folder: out is a file, not a folder"   (a parent is a file)
+//   "out/x: cannot make the folder: Permission denied"             (any other reason)
+void make_folders(const std::filesystem::path& folder, const std::string& what = "");
+
+}  // namespace l2

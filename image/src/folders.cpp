@@ -1,0 +1,52 @@
+#include "image/folders.hpp"
+
+#include <iterator>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+namespace l2 {
+
+namespace {
+
+// The first part of `folder` that exists and is not a folder (empty if none), and whether it is
+// the whole of `folder`.
+std::pair<std::filesystem::path, bool> first_non_folder(const std::filesystem::path& folder) {
+  std::filesystem::path part;
+  for (auto name = folder.begin(); name != folder.end(); ++name) {
+    if (name->empty()) continue;  // after a trailing slash
+    part /= *name;
+    std::error_code error;
+    const auto status = std::filesystem::status(part, error);
+    if (error) break;  // missing, or not to be looked into: the reason says why
+    if (!std::filesystem::is_directory(status)) {
+      auto rest = std::next(name);
+      while (rest != folder.end() && rest->empty()) ++rest;
+      return {part, rest == folder.end()};
+    }
+  }
+  return {{}, false};
+}
+
+std::string kind(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error) ? "a file" : "something else";
+}
+
+}  // namespace
+
+void make_folders(const std::filesystem::path& folder, const std::string& what) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (!error) return;
+  const std::string name = (what.empty() ? "" : what + " ") + folder.string();
+  const auto [in_the_way, whole] = first_non_folder(folder);
+  if (whole) throw std::runtime_error(name + ": " + kind(in_the_way) + ", not a folder");
+  if (!in_the_way.empty()) {
+    throw std::runtime_error(name + ": cannot make the folder: " + in_the_way.string() + " is " +
+                             kind(in_the_way) + ", not a folder");
+  }
+  throw std::runtime_error(name + ": cannot make the folder: " + error.message());
+}
+
+}  // namespace l2

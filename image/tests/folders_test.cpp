@@ -1,0 +1,64 @@
+// Output folders: made when missing, refused in one line naming the path and why.
+#include "image/folders.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "image/png_io.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir() {
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("l2_folders_" +
+       std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Folders, MakesMissingParentsAndAcceptsAnExistingFolder) {
+  const fs::path dir = fresh_dir();
+  make_folders(dir / "a/b/c");
+  EXPECT_TRUE(fs::is_directory(dir / "a/b/c"));
+  make_folders(dir / "a/b/c", "--out");
+  make_folders(dir / "a/b/");
+  fs::remove_all(dir);
+}
+
+// std::filesystem said "filesystem error: cannot create directories: Not a directory [...]".
+TEST(Folders, AFileInTheWayIsNamed) {
+  const fs::path dir = fresh_dir();
+  std::ofstream(dir / "file") << "x";
+  EXPECT_EQ(error_of([&] { make_folders(dir / "file/a/b", "--out"); }),
+            "--out " + (dir / "file/a/b").string() + ": cannot make the folder: " +
+                (dir / "file").string() + " is a file, not a folder");
+  EXPECT_EQ(error_of([&] { make_folders(dir / "file"); }),
+            (dir / "file").string() + ": a file, not a folder");
+  EXPECT_EQ(error_of([&] { make_folders(dir / "file/"); }),
+            (dir / "file/").string() + ": a file, not a folder");
+  EXPECT_EQ(error_of([&] { write_png(dir / "file/display-0.png", RgbImage(2, 2)); }),
+            dir.string() + "/file: a file, not a folder");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace l2
