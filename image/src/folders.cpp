@@ -1,5 +1,10 @@
 #include "image/folders.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <iterator>
 #include <stdexcept>
 #include <system_error>
@@ -47,6 +52,17 @@ void make_folders(const std::filesystem::path& folder, const std::string& what) 
                              kind(in_the_way) + ", not a folder");
   }
   throw std::runtime_error(name + ": cannot make the folder: " + error.message());
+}
+
+void check_writable(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+  if (fd >= 0) {
+    ::close(fd);
+    return;
+  }
+  const int error = errno;
+  throw std::runtime_error(file.string() + ": cannot write: " +
+                           (error == EISDIR ? "a folder, not a file" : std::strerror(error)));
 }
 
 }  // namespace l2

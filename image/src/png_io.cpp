@@ -39,6 +39,7 @@ void check(const std::filesystem::path& path, const std::string& error) {
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
+  check_writable(path);  // OpenImageIO says only "Could not open file"
   check(path, codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data()));
 }
 

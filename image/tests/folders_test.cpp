@@ -60,5 +60,14 @@ TEST(Folders, AFileInTheWayIsNamed) {
   fs::remove_all(dir);
 }
 
+// OpenImageIO said only "Could not open file".
+TEST(Folders, AFolderWhereAPictureGoesIsNamed) {
+  const fs::path dir = fresh_dir();
+  fs::create_directories(dir / "display-2.png");
+  EXPECT_EQ(error_of([&] { write_png(dir / "display-2.png", RgbImage(2, 2)); }),
+            (dir / "display-2.png").string() + ": cannot write: a folder, not a file");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace l2

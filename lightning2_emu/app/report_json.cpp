@@ -115,6 +115,7 @@ json to_json(const RunReport& r) {
 void write_json(const std::filesystem::path& path, const json& j) {
   const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace) + '\n';
   if (path.has_parent_path()) make_folders(path.parent_path());
+  check_writable(path);  // says why, where std::ofstream does not
   std::ofstream out(path);
   out << text;
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));

@@ -1,12 +1,17 @@
 // `lightning2_emu route`: one captured frame per input through the mesh, every strip routed
 // (no frame sequencing: one frame has nothing to wait for).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "frame_files.hpp"
-#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "lightning2_emu/router.hpp"
+#include "out_folder.hpp"
 #include "report_json.hpp"
 
 namespace l2 {
@@ -14,7 +19,7 @@ namespace l2 {
 int run_route(const CommonOptions& o) {
   const Setup setup = make_setup(o);
   const Mesh& mesh = setup.config.mesh;
-  make_folders(o.out, "--out");
+  prepare_out(o.out);
   std::vector<RgbImage> images;
   std::vector<InputFrame> frames;
   images.reserve(o.inputs.size());
@@ -29,15 +34,26 @@ int run_route(const CommonOptions& o) {
   Router router(mesh, setup.config.displays, pool, setup.config.background);
   const RouteReport report = router.route(frames);
 
-  std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
-  for (int d = 0; d < router.display_count(); ++d) {
-    const DisplayBuffers& display = router.display(d);
-    by_id[display.id()] = &display.back();
-    write_png(o.out / fmt::format("display-{}.png", display.id()), display.back());
+  // One file after the other, report.json last. When one cannot be written the error says what
+  // OUT holds of this run: a file not named there is missing or an earlier run's.
+  std::vector<std::string> written;
+  try {
+    std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
+    for (int d = 0; d < router.display_count(); ++d) {
+      const DisplayBuffers& display = router.display(d);
+      by_id[display.id()] = &display.back();
+      const std::string name = fmt::format("display-{}.png", display.id());
+      write_png(o.out / name, display.back());
+      written.push_back(name);
+    }
+    if (setup.from_wall) {
+      write_png(o.out / "wall.png", compose_wall(setup, by_id));
+      written.push_back("wall.png");
+    }
+    write_route_report(o.out / "report.json", report, mesh, o.inputs);
+  } catch (const std::runtime_error& e) {
+    throw partly_written(e, o.out, fmt::format("{}", fmt::join(written, ", ")));
   }
-  if (setup.from_wall) write_png(o.out / "wall.png", compose_wall(setup, by_id));
-
-  write_route_report(o.out / "report.json", report, mesh, o.inputs);
 
   const StripErrorCounts errors = report.errors();
   fmt::print("routed {} inputs to {} displays ({}); {} strip errors; wrote {}\n", frames.size(),

@@ -1,15 +1,18 @@
 // `lightning2_emu sequence`: folders of frames over time, one per input, through the emulator
 // with the frame rules of spec §6; writes what every display shows at every refresh.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "frame_files.hpp"
-#include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "out_folder.hpp"
 #include "report_json.hpp"
 #include "sequence_show.hpp"
 
@@ -39,7 +42,7 @@ void remove_old_frames(const std::filesystem::path& folder) {
 int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   const Setup setup = make_setup(o);
   const Mesh& mesh = setup.config.mesh;
-  make_folders(o.out, "--out");
+  prepare_out(o.out);
   std::vector<std::vector<std::filesystem::path>> inputs;
   std::size_t longest = 0;
   for (const std::string& folder : o.inputs) {
@@ -60,32 +63,48 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   std::vector<RgbImage> images(inputs.size());
   std::vector<InputFrame> frames(inputs.size());
   SequenceReport log;
-  for (int t = 0; t < ticks; ++t) {
-    // A DVI link keeps scanning out the last framebuffer: an input past its last file repeats
-    // it. Only the current frame of each input is held.
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-      const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
-      if (t == 0 || k == static_cast<std::size_t>(t)) {
-        images[i] = read_png(inputs[i][k]);
-        mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
-                         inputs[i][k].string());
-        frames[i] = InputFrame::of(images[i]);
+  // Refreshes whose pictures are all written, and pictures of the refresh after them: when a
+  // frame cannot be read or a picture written part way, the error says what OUT holds.
+  int refreshes_written = 0, pictures_of_next = 0;
+  try {
+    for (int t = 0; t < ticks; ++t) {
+      // A DVI link keeps scanning out the last framebuffer: an input past its last file repeats
+      // it. Only the current frame of each input is held.
+      for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
+        if (t == 0 || k == static_cast<std::size_t>(t)) {
+          images[i] = read_png(inputs[i][k]);
+          mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
+                           inputs[i][k].string());
+          frames[i] = InputFrame::of(images[i]);
+        }
       }
+      const Emulator::Tick& tick = emulator.tick(frames);
+      log.add(tick);
+      std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
+      for (const DisplaySpec& d : setup.config.displays) {
+        by_id[d.id] = &emulator.shown(d.id);
+        write_png(o.out / fmt::format("display-{}", d.id) / fmt::format("frame-{:04}.png", t),
+                  emulator.shown(d.id));
+        ++pictures_of_next;
+      }
+      if (setup.from_wall) {
+        write_png(o.out / "wall" / fmt::format("frame-{:04}.png", t), compose_wall(setup, by_id));
+      }
+      refreshes_written = t + 1;
+      pictures_of_next = 0;
+      if (screen && !screen->play(t, by_id)) break;  // q / Esc: the sequence ends here
     }
-    const Emulator::Tick& tick = emulator.tick(frames);
-    log.add(tick);
-    std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
-    for (const DisplaySpec& d : setup.config.displays) {
-      by_id[d.id] = &emulator.shown(d.id);
-      write_png(o.out / fmt::format("display-{}", d.id) / fmt::format("frame-{:04}.png", t),
-                emulator.shown(d.id));
+    log.write(o.out / "report.json", emulator.report());
+  } catch (const std::runtime_error& e) {
+    std::vector<std::string> held;
+    if (refreshes_written == 1) held.push_back("the pictures of refresh 0");
+    if (refreshes_written > 1) {
+      held.push_back(fmt::format("the pictures of refreshes 0-{}", refreshes_written - 1));
     }
-    if (setup.from_wall) {
-      write_png(o.out / "wall" / fmt::format("frame-{:04}.png", t), compose_wall(setup, by_id));
-    }
-    if (screen && !screen->play(t, by_id)) break;  // q / Esc: the sequence ends here
+    if (pictures_of_next > 0) held.push_back(fmt::format("part of refresh {}", refreshes_written));
+    throw partly_written(e, o.out, fmt::format("{}", fmt::join(held, " and ")));
   }
-  log.write(o.out / "report.json", emulator.report());
   const RunReport& r = emulator.report();
   fmt::print(
       "{} refreshes of {} inputs: {} new, {} repeated, {} torn, {} idle frames ({} predicted "

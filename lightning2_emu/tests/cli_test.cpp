@@ -224,6 +224,64 @@ TEST_F(Cli, RouteWithAWallRebuildsTheTilelayoutScanout) {
   EXPECT_EQ(report["errors"]["total"], 0);
 }
 
+// A file that cannot be written (a folder in its place): the error named it and only said
+// OpenImageIO's "Could not open file", after display-0 and -1 were written and with an earlier
+// run's report.json left beside them. Now: why, and what OUT holds of this run; an earlier
+// report.json is removed first, so a report.json in OUT belongs to a complete run.
+TEST_F(Cli, RouteSaysWhichFileFailedAndWhatOutHolds) {
+  FrameBuilder in(40, 4);
+  in.copy(0, 0, 0, 0, 0, 20);
+  write_png(dir / "in.png", in.image());
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "display-2.png");
+  std::ofstream(out / "report.json") << "{}";
+  const Result r = run("route --displays 20x3,20x3,20x3 --out " + out.string() + " " +
+                       (dir / "in.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + out.string() +
+                          "/display-2.png: cannot write: a folder, not a file; " + out.string() +
+                          " holds only part of this run: display-0.png, display-1.png, no "
+                          "report.json\n");
+  EXPECT_EQ(read_png(out / "display-0.png").width(), 20);
+  EXPECT_EQ(read_png(out / "display-1.png").width(), 20);
+  EXPECT_FALSE(fs::exists(out / "report.json"));
+}
+
+TEST_F(Cli, RouteRefusesAReportFolderBeforeWritingAnything) {
+  FrameBuilder in(40, 4);
+  write_png(dir / "in.png", in.image());
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "report.json");
+  const Result r =
+      run("route --displays 20x3 --out " + out.string() + " " + (dir / "in.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + out.string() +
+                          "/report.json: cannot write: a folder, not a file\n");
+  EXPECT_FALSE(fs::exists(out / "display-0.png"));
+}
+
+TEST_F(Cli, SequenceSaysWhichPictureFailedAndWhatOutHolds) {
+  fs::create_directories(dir / "in0");
+  FrameBuilder in(40, 4);
+  in.copy(0, 0, 0, 0, 0, 20);
+  write_png(dir / "in0/f0.png", in.image());
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "display-1/frame-0001.png");
+  std::ofstream(out / "report.json") << "{}";
+  const Result r =
+      run("sequence --displays 20x3,20x3 --out " + out.string() + " " + (dir / "in0").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + out.string() +
+                          "/display-1/frame-0001.png: cannot write: a folder, not a file; " +
+                          out.string() +
+                          " holds only part of this run: the pictures of refresh 0 and part of "
+                          "refresh 1, no report.json\n");
+  EXPECT_TRUE(fs::exists(out / "display-0/frame-0000.png"));
+  EXPECT_TRUE(fs::exists(out / "display-1/frame-0000.png"));
+  EXPECT_TRUE(fs::exists(out / "display-0/frame-0001.png"));
+  EXPECT_FALSE(fs::exists(out / "report.json"));
+}
+
 TEST_F(Cli, HelpNamesBothCommands) {
   const Result r = run("--help");
   EXPECT_EQ(r.status, 0);

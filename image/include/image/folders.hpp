@@ -14,4 +14,10 @@ namespace l2 {
 //   "out/x: cannot make the folder: Permission denied"             (any other reason)
 void make_folders(const std::filesystem::path& folder, const std::string& what = "");
 
+// Opens `file` for writing, creating it (its content is left for the writer to replace), and
+// closes it again: a library that writes files (OpenImageIO) does not say why it cannot open one
+// ("Could not open file"). Throws std::runtime_error "<file>: cannot write: a folder, not a
+// file" or "<file>: cannot write: <the system's reason>" (e.g. Permission denied).
+void check_writable(const std::filesystem::path& file);
+
 }  // namespace l2

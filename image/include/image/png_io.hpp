@@ -7,7 +7,8 @@
 
 namespace l2 {
 
-// Writes 8-bit RGB PNG; creates parent folders. Throws std::runtime_error naming the file.
+// Writes 8-bit RGB PNG; creates parent folders. Throws std::runtime_error naming the file (and
+// why, where the system says: "out/display-2.png: cannot write: a folder, not a file").
 void write_png(const std::filesystem::path& path, const RgbImage& image);
 
 // The largest side read_png() accepts: every picture the project reads is an input frame
