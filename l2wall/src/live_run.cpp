@@ -257,9 +257,21 @@ class LiveRun {
   void keep_frame(int frame) {
     const Timed timed(writing_ms_);
     const auto dir = std::filesystem::path(o_.out) / fmt::format("frame-{}", frame);
-    if (dvi_) write_display_pictures(dir, wall_, dvi_pictures());
-    if (viz_)
-      write_display_pictures(dir, wall_, viz_pictures(viz_frame(frame)), dvi_ ? "-vizserver" : "");
+    // A picture that cannot be written stops the run: the error also says what OUT holds.
+    const auto write = [&](const DisplayPictures& pictures, const std::string& suffix) {
+      try {
+        write_display_pictures(dir, wall_, pictures, suffix);
+      } catch (const RunFault&) {
+        throw;
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(fmt::format(
+            "{}; {} holds only part of this run: the frames kept before frame {}, no summary.txt "
+            "or report.csv of this run",
+            e.what(), o_.out, frame));
+      }
+    };
+    if (dvi_) write(dvi_pictures(), "");
+    if (viz_) write(viz_pictures(viz_frame(frame)), dvi_ ? "-vizserver" : "");
   }
 
   // --- faults ----------------------------------------------------------------------------

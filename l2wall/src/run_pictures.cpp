@@ -63,7 +63,10 @@ void remove_earlier_pictures(const std::filesystem::path& out) {
     const std::string name = entry.path().filename().string();
     if (entry.is_directory() &&
         (name == "fault" || numbered(name, "frame-") || numbered(name, "mismatch-frame-"))) {
-      std::filesystem::remove_all(entry.path());
+      if (std::filesystem::remove_all(entry.path(), error); error) {
+        throw std::runtime_error(fmt::format("{}: cannot remove the pictures of an earlier run: {}",
+                                             entry.path().string(), error.message()));
+      }
     }
   }
 }

@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+
+#include "image/folders.hpp"
 
 namespace l2 {
 namespace {
@@ -45,6 +48,7 @@ long latency_of(const FrameRecord& r) {
 void write_csv(const std::filesystem::path& path, const RunOptions& o,
                const std::vector<HostLog>& logs, const std::vector<FrameRecord>& records) {
   const bool dvi = o.path != "vizserver";
+  check_writable(path);  // a report that cannot be written was left out without a word
   std::ofstream csv(path);
   csv << "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   for (std::size_t i = 0; i < logs.size(); ++i)
@@ -64,6 +68,7 @@ void write_csv(const std::filesystem::path& path, const RunOptions& o,
     }
     csv << "\n";
   }
+  if (!csv.flush()) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
 }
 
 }  // namespace
@@ -139,7 +144,11 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());
-  std::ofstream(std::filesystem::path(o.out) / "summary.txt") << summary;
+  const auto summary_path = std::filesystem::path(o.out) / "summary.txt";
+  check_writable(summary_path);
+  if (!(std::ofstream(summary_path) << summary).flush()) {
+    throw std::runtime_error(fmt::format("{}: cannot write", summary_path.string()));
+  }
   return summary;
 }
 

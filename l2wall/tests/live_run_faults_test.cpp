@@ -47,6 +47,32 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
   expect_clean(run);
 }
 
+// A kept frame that could not be written ended the run with the error alone, and a summary.txt
+// or report.csv that could not be written was left out without a word (exit 0).
+TEST(LiveRun, KeptFrameThatCannotBeWrittenIsNamedWithWhatOutHolds) {
+  WallRun run("keep-blocked", {"--frames", "3", "--keep", "every"},
+              [](const fs::path& out) { std::ofstream(out / "frame-1") << "in the way"; });
+  const ExitStatus status = run.wait(60s);
+  EXPECT_EQ(status.code, 1);
+  const std::string out = run.out().string();
+  EXPECT_EQ(run.output(), "l2wall: " + out + "/frame-1: a file, not a folder; " + out +
+                              " holds only part of this run: the frames kept before frame 1, no "
+                              "summary.txt or report.csv of this run\n");
+  EXPECT_TRUE(fs::exists(run.out() / "frame-0" / "display-0.png"));
+  EXPECT_FALSE(fs::exists(run.out() / "summary.txt"));
+  expect_clean(run);
+}
+
+TEST(LiveRun, SummaryThatCannotBeWrittenIsNamed) {
+  WallRun run("summary-blocked", {"--frames", "2", "--keep", "none"},
+              [](const fs::path& out) { fs::create_directories(out / "summary.txt"); });
+  const ExitStatus status = run.wait(60s);
+  EXPECT_EQ(status.code, 1);
+  EXPECT_EQ(run.output(),
+            "l2wall: " + run.out().string() + "/summary.txt: cannot write: a folder, not a file\n");
+  expect_clean(run);
+}
+
 TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
   WallRun run("killed", {"--frames", "100000", "--refresh", "60"});
   const pid_t victim = running_pipeserver(run, 1);

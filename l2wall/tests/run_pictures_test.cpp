@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,31 @@ TEST(RemoveEarlierPictures, OnlyFoldersNamedAsARunNamesThem) {
                                             "summary.txt"}));
   fs::remove_all(out);
   remove_earlier_pictures(out);  // a folder that does not exist yet: nothing to do, no error
+}
+
+// std::filesystem's "filesystem error: cannot remove all: Operation not permitted [...]" reached
+// users. As root only an immutable folder cannot be removed (chattr; skipped where the file
+// system or the user does not allow it).
+TEST(RemoveEarlierPictures, AFolderThatCannotBeRemovedIsNamed) {
+  const fs::path out = fs::temp_directory_path() / "l2wall-earlier-pictures-kept";
+  fs::remove_all(out);
+  fs::create_directories(out / "frame-1");
+  std::ofstream(out / "frame-1" / "display-0.png") << "x";
+  const std::string folder = (out / "frame-1").string();
+  if (std::system(("chattr +i '" + folder + "' 2>/dev/null").c_str()) != 0) {
+    fs::remove_all(out);
+    GTEST_SKIP() << "chattr +i is not allowed here";
+  }
+  std::string error = "no error";
+  try {
+    remove_earlier_pictures(out);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::system(("chattr -i '" + folder + "'").c_str());
+  fs::remove_all(out);
+  EXPECT_EQ(error,
+            folder + ": cannot remove the pictures of an earlier run: Operation not permitted");
 }
 
 }  // namespace

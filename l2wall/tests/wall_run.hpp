@@ -13,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -38,10 +39,13 @@ inline std::string slurp(const fs::path& path) {
 // One l2wall run in its own folder; its output goes to DIR/output.txt.
 class WallRun {
  public:
-  WallRun(const std::string& name, const std::vector<std::string>& args)
+  // `before` gets the --out folder (made, empty) before l2wall starts.
+  WallRun(const std::string& name, const std::vector<std::string>& args,
+          const std::function<void(const fs::path& out)>& before = {})
       : dir_(fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name)) {
     fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    fs::create_directories(dir_ / "out");
+    if (before) before(dir_ / "out");
     std::string command =
         fmt::format("exec '{}' run --out '{}' --no-progress", L2WALL_PATH, (dir_ / "out").string());
     for (const auto& a : args) command += " '" + a + "'";
