@@ -1,7 +1,13 @@
 // The image codec module (png_codec.hpp): PNG (and whatever else OpenImageIO reads) to and from
 // 8-bit RGB. Loaded by png_io.cpp; no exception leaves it.
 #include <OpenImageIO/imageio.h>
+#include <png.h>
+#include <sys/stat.h>
 
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <vector>
@@ -33,10 +39,128 @@ std::string write_rgb(const char* path, int width, int height, const std::uint8_
   return std::string("cannot write: ") + e.what();
 }
 
+// --- PNG files, read with libpng itself ------------------------------------------------------
+//
+// Through OpenImageIO a damaged PNG printed libpng's own line ("libpng error: IHDR: CRC error")
+// on stderr before ours, and its error came back as several lines: OpenImageIO's libpng error
+// handler records the message and returns, and libpng then calls its default handler, which
+// prints before it jumps back. Here the handler keeps the message and jumps back itself, so
+// nothing is printed; warnings (a chunk libpng skips) are not failures and are dropped.
+
+struct PngRead {
+  std::FILE* file = nullptr;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  bool ended_early = false;  // the file ended before libpng had all it needed
+  char error[256] = {};      // libpng's message (a plain buffer: it crosses a longjmp)
+  ~PngRead() {
+    if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    if (file) std::fclose(file);
+  }
+};
+
+[[noreturn]] void png_failed(png_structp png, png_const_charp message) {
+  auto* read = static_cast<PngRead*>(png_get_error_ptr(png));
+  std::snprintf(read->error, sizeof read->error, "%s", message ? message : "");
+  png_longjmp(png, 1);
+}
+
+void png_warned(png_structp, png_const_charp) {}
+
+void png_read_bytes(png_structp png, png_bytep data, std::size_t size) {
+  auto* read = static_cast<PngRead*>(png_get_io_ptr(png));
+  if (std::fread(data, 1, size, read->file) == size) return;
+  if (std::ferror(read->file)) png_failed(png, std::strerror(errno));
+  read->ended_early = true;
+  png_failed(png, "the file ends early");
+}
+
+// Header, then (after `size` accepts width x height: the buffer for the pixels, or nullptr) the
+// pixels. Only libpng's C frames lie between the setjmp here and a longjmp, and nothing in this
+// frame is changed after setjmp and read after the jump.
+bool png_steps(PngRead& read, png_bytep (*size)(void*, png_uint_32, png_uint_32), void* context) {
+  if (setjmp(png_jmpbuf(read.png))) return false;  // NOLINT(cert-err52-cpp)
+  png_set_read_fn(read.png, &read, png_read_bytes);
+  png_read_info(read.png, read.info);
+  png_set_expand(read.png);       // palette to RGB, grey below 8 bits to 8, tRNS to alpha
+  png_set_scale_16(read.png);     // 16 bits to 8, rounded (as OpenImageIO converted them)
+  png_set_strip_alpha(read.png);  // dropped, not multiplied in
+  png_set_gray_to_rgb(read.png);  // grey spread over R, G and B
+  const int passes = png_set_interlace_handling(read.png);
+  png_read_update_info(read.png, read.info);
+  const png_uint_32 width = png_get_image_width(read.png, read.info);
+  const png_uint_32 height = png_get_image_height(read.png, read.info);
+  if (png_get_rowbytes(read.png, read.info) != std::size_t{width} * 3) {
+    png_failed(read.png, "not 8-bit RGB after conversion");
+  }
+  png_bytep pixels = size(context, width, height);
+  if (!pixels) return true;  // refused by size: the caller says why
+  for (int pass = 0; pass < passes; ++pass) {
+    for (png_uint_32 y = 0; y < height; ++y) {
+      png_read_row(read.png, pixels + std::size_t{y} * width * 3, nullptr);
+    }
+  }
+  png_read_end(read.png, nullptr);
+  return true;
+}
+
+bool is_png(std::FILE* file) {
+  png_byte signature[8];
+  const bool png = std::fread(signature, 1, 8, file) == 8 && png_sig_cmp(signature, 0, 8) == 0;
+  std::rewind(file);
+  return png;
+}
+
+std::string size_refused(long width, long height, int max_side) {
+  return std::to_string(width) + "x" + std::to_string(height) +
+         " pixels, larger than any picture read here (sides up to " + std::to_string(max_side) +
+         ")";
+}
+
+// Empty on success, the reason otherwise.
+std::string read_png_file(PngRead& read, RgbSink sink) {
+  read.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &read, png_failed, png_warned);
+  if (read.png) read.info = png_create_info_struct(read.png);
+  if (!read.png || !read.info) return "cannot read: out of memory";
+  struct Sizing {
+    RgbSink sink;
+    std::string refused;
+  } sizing{sink, {}};
+  // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
+  const auto size = [](void* context, png_uint_32 width, png_uint_32 height) -> png_bytep {
+    auto& s = *static_cast<Sizing*>(context);
+    const auto max = static_cast<png_uint_32>(s.sink.max_side);
+    if (width > max || height > max) {
+      s.refused =
+          size_refused(static_cast<long>(width), static_cast<long>(height), s.sink.max_side);
+      return nullptr;
+    }
+    return s.sink.allocate(s.sink.context, static_cast<int>(width), static_cast<int>(height));
+  };
+  if (!png_steps(read, size, &sizing)) {
+    if (read.ended_early) return "cannot read: the PNG file ends early (truncated)";
+    return std::string("cannot read: a damaged PNG (") + read.error + ")";
+  }
+  return sizing.refused;
+}
+
+// --- other formats, through OpenImageIO ---------------------------------------------------
+
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
 // in a captured RGBA frame). Grey is spread over R, G and B.
 std::string read_rgb(const char* path, RgbSink sink) try {
+  {
+    PngRead read;
+    read.file = std::fopen(path, "rb");
+    // OpenImageIO said only "Could not open file" (and of a folder, "Not a PNG file").
+    if (!read.file) return std::string("cannot read: ") + std::strerror(errno);
+    struct stat file_status {};
+    if (::fstat(::fileno(read.file), &file_status) == 0 && S_ISDIR(file_status.st_mode)) {
+      return "cannot read: a folder, not a file";
+    }
+    if (is_png(read.file)) return read_png_file(read, sink);
+  }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
@@ -51,9 +175,7 @@ std::string read_rgb(const char* path, RgbSink sink) try {
   }
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
   if (spec.width > sink.max_side || spec.height > sink.max_side) {
-    return std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-           " pixels, larger than any picture read here (sides up to " +
-           std::to_string(sink.max_side) + ")";
+    return size_refused(spec.width, spec.height, sink.max_side);
   }
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture

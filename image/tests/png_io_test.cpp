@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace l2 {
@@ -131,6 +132,41 @@ TEST(PngIo, VolumeImageNamedPngIsRefusedNotReadPastThePicture) {
   const auto path = temp_dir() / "volume.png";
   std::ofstream(path, std::ios::binary) << dds_volume(4, 4, 8);
   EXPECT_EQ(read_error(path), path.string() + ": a volume (depth 8), not a picture");
+}
+
+// A damaged PNG: libpng printed "libpng error: ..." on stderr itself, and the error held
+// OpenImageIO's lines ("PNG read error: ...", "PNG library error"). Now the reason alone.
+TEST(PngIo, DamagedPngSaysWhyAndPrintsNothing) {
+  const auto good = temp_dir() / "good.png";
+  write_png(good, RgbImage(64, 16, {1, 2, 3}));
+  std::string bytes;
+  {
+    std::ifstream file(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(file), {});
+  }
+  const auto truncated = temp_dir() / "truncated.png";
+  std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() - 20);
+  std::string bad = bytes;
+  bad[29] = static_cast<char>(bad[29] ^ 0xff);  // IHDR's CRC
+  const auto bad_crc = temp_dir() / "bad-crc.png";
+  std::ofstream(bad_crc, std::ios::binary) << bad;
+
+  ::testing::internal::CaptureStderr();
+  const std::string truncated_error = read_error(truncated);
+  const std::string crc_error = read_error(bad_crc);
+  const std::string printed = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(truncated_error,
+            truncated.string() + ": cannot read: the PNG file ends early (truncated)");
+  EXPECT_EQ(crc_error, bad_crc.string() + ": cannot read: a damaged PNG (IHDR: CRC error)");
+  EXPECT_EQ(printed, "");
+}
+
+TEST(PngIo, MissingFileOrFolderSaysWhy) {
+  EXPECT_EQ(read_error("/nonexistent/frame-7.png"),
+            "/nonexistent/frame-7.png: cannot read: No such file or directory");
+  const auto folder = temp_dir() / "folder.png";
+  std::filesystem::create_directories(folder);
+  EXPECT_EQ(read_error(folder), folder.string() + ": cannot read: a folder, not a file");
 }
 
 // Whether a shared library whose file name contains `name` is mapped into this process.

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "frame_builder.hpp"
 #include "image/png_io.hpp"
@@ -280,6 +282,33 @@ TEST_F(Cli, SequenceSaysWhichPictureFailedAndWhatOutHolds) {
   EXPECT_TRUE(fs::exists(out / "display-1/frame-0000.png"));
   EXPECT_TRUE(fs::exists(out / "display-0/frame-0001.png"));
   EXPECT_FALSE(fs::exists(out / "report.json"));
+}
+
+// A damaged PNG: libpng printed its own line ("libpng error: IHDR: CRC error") before ours, and
+// ours went on over two more lines of OpenImageIO's. Now ours is the only line.
+TEST_F(Cli, DamagedPngIsOneLineOfOurs) {
+  FrameBuilder in(40, 4);
+  in.copy(0, 0, 0, 0, 0, 20);
+  write_png(dir / "in.png", in.image());
+  std::string bytes;
+  {
+    std::ifstream file(dir / "in.png", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(file), {});
+  }
+  std::ofstream(dir / "truncated.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  std::string bad_crc = bytes;
+  bad_crc[29] = static_cast<char>(bad_crc[29] ^ 0xff);  // the first byte of IHDR's CRC
+  std::ofstream(dir / "bad-crc.png", std::ios::binary) << bad_crc;
+
+  for (const auto& [file, why] :
+       {std::pair<std::string, std::string>{"truncated.png", "the PNG file ends early (truncated)"},
+        {"bad-crc.png", "a damaged PNG (IHDR: CRC error)"}}) {
+    const Result r =
+        run("route --displays 20x3 --out " + (dir / "out").string() + " " + (dir / file).string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.output,
+              "lightning2_emu: " + (dir / file).string() + ": cannot read: " + why + "\n");
+  }
 }
 
 TEST_F(Cli, HelpNamesBothCommands) {
