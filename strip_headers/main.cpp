@@ -57,7 +57,7 @@ int decode_command(const std::string& hex) {
 }
 
 int dump_command(const std::string& path, bool quiet) {
-  const l2::RgbImage frame = l2::read_png(path);
+  const l2::RgbImage frame = l2::read_scanned_frame(path);
   l2::StripErrorCounts total;
   long strips = 0;
   for (int y = 0; y < frame.height(); ++y) {

@@ -21,17 +21,25 @@ struct RgbSink {
   int max_side;
 };
 
+// What read_rgb() found the file to hold before it became 8-bit RGB (png_io.hpp's
+// PictureSource): filled once the file's header is read.
+struct Source {
+  std::string format;       // "png", or OpenImageIO's name of the format: "jpeg", "tiff", ...
+  int colour_channels = 0;  // 1: grey; 3: colour (a palette is colour); alpha is not counted
+  bool lossy = false;       // stored with a lossy compression: JPEG, also inside a TIFF
+};
+
 // Each returns an empty string on success, otherwise the reason (without the file's name).
 struct Codec {
   std::string (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
-  std::string (*read_rgb)(const char* path, RgbSink sink);
+  std::string (*read_rgb)(const char* path, RgbSink sink, Source* source);
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
-// partial rebuild) then fail with "has no l2_png_codec_v2" instead of misreading each other's
+// partial rebuild) then fail with "has no l2_png_codec_v3" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v2";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v3";
 using EntryPoint = const Codec* (*)();
 
 }  // namespace l2::png_codec

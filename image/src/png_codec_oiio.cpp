@@ -18,6 +18,7 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 using l2::png_codec::RgbSink;
+using l2::png_codec::Source;
 
 constexpr int kPngFilterUp = 0x20;  // libpng's PNG_FILTER_UP (png.h is not included here)
 
@@ -52,6 +53,7 @@ struct PngRead {
   png_structp png = nullptr;
   png_infop info = nullptr;
   bool ended_early = false;  // the file ended before libpng had all it needed
+  int colour_type = -1;      // as the file stores its pixels (PNG_COLOR_TYPE_...), once known
   char error[256] = {};      // libpng's message (a plain buffer: it crosses a longjmp)
   ~PngRead() {
     if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
@@ -82,6 +84,7 @@ bool png_steps(PngRead& read, png_bytep (*size)(void*, png_uint_32, png_uint_32)
   if (setjmp(png_jmpbuf(read.png))) return false;  // NOLINT(cert-err52-cpp)
   png_set_read_fn(read.png, &read, png_read_bytes);
   png_read_info(read.png, read.info);
+  read.colour_type = png_get_color_type(read.png, read.info);
   png_set_expand(read.png);       // palette to RGB, grey below 8 bits to 8, tRNS to alpha
   png_set_scale_16(read.png);     // 16 bits to 8, rounded (as OpenImageIO converted them)
   png_set_strip_alpha(read.png);  // dropped, not multiplied in
@@ -118,7 +121,7 @@ std::string size_refused(long width, long height, int max_side) {
 }
 
 // Empty on success, the reason otherwise.
-std::string read_png_file(PngRead& read, RgbSink sink) {
+std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
   read.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &read, png_failed, png_warned);
   if (read.png) read.info = png_create_info_struct(read.png);
   if (!read.png || !read.info) return "cannot read: out of memory";
@@ -137,7 +140,11 @@ std::string read_png_file(PngRead& read, RgbSink sink) {
     }
     return s.sink.allocate(s.sink.context, static_cast<int>(width), static_cast<int>(height));
   };
-  if (!png_steps(read, size, &sizing)) {
+  const bool read_all = png_steps(read, size, &sizing);
+  if (read.colour_type >= 0) {
+    source = {"png", (read.colour_type & PNG_COLOR_MASK_COLOR) ? 3 : 1, false};
+  }
+  if (!read_all) {
     if (read.ended_early) return "cannot read: the PNG file ends early (truncated)";
     return std::string("cannot read: a damaged PNG (") + read.error + ")";
   }
@@ -149,7 +156,9 @@ std::string read_png_file(PngRead& read, RgbSink sink) {
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
 // in a captured RGBA frame). Grey is spread over R, G and B.
-std::string read_rgb(const char* path, RgbSink sink) try {
+std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try {
+  Source ignored;
+  Source& source = source_or_null ? *source_or_null : ignored;
   {
     PngRead read;
     read.file = std::fopen(path, "rb");
@@ -159,13 +168,16 @@ std::string read_rgb(const char* path, RgbSink sink) try {
     if (::fstat(::fileno(read.file), &file_status) == 0 && S_ISDIR(file_status.st_mode)) {
       return "cannot read: a folder, not a file";
     }
-    if (is_png(read.file)) return read_png_file(read, sink);
+    if (is_png(read.file)) return read_png_file(read, sink, source);
   }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return "cannot read: " + OIIO::geterror();
   const OIIO::ImageSpec& spec = in->spec();
+  const std::string compression = spec.get_string_attribute("compression");
+  source = {in->format_name(), spec.nchannels >= 3 ? 3 : 1,
+            std::string(in->format_name()) == "jpeg" || compression.rfind("jpeg", 0) == 0};
   if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) return "not an image with pixels";
   // OpenImageIO picks the reader by content, not by name: a volume or deep image (a DDS volume
   // texture named .png) reads width x height x depth pixels, more than the picture holds.
@@ -200,6 +212,6 @@ constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb};
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v2() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v3() {
   return &kCodec;
 }

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <cctype>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -46,7 +47,7 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
   check(path, codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data()));
 }
 
-RgbImage read_png(const std::filesystem::path& path) {
+RgbImage read_png(const std::filesystem::path& path, PictureSource* source) {
   RgbImage image;
   const png_codec::RgbSink sink{&image,
                                 [](void* context, int width, int height) {
@@ -55,8 +56,32 @@ RgbImage read_png(const std::filesystem::path& path) {
                                   return out.data();
                                 },
                                 kMaxPictureSide};
-  check(path, codec(path).read_rgb(path.c_str(), sink));
+  png_codec::Source found;
+  check(path, codec(path).read_rgb(path.c_str(), sink, &found));
+  if (source) *source = {found.format, found.colour_channels, found.lossy};
   return image;
+}
+
+RgbImage read_scanned_frame(const std::filesystem::path& path) {
+  PictureSource source;
+  RgbImage frame = read_png(path, &source);
+  if (source.colour_channels < 3) {
+    throw std::runtime_error(path.string() +
+                             ": a grayscale picture (one colour channel) cannot hold strip "
+                             "headers: a header is 48 bits in the R, G and B bytes of two pixels");
+  }
+  if (source.lossy) {
+    std::string kind = "a JPEG picture";
+    if (source.format != "jpeg") {
+      kind = "a ";
+      for (const unsigned char c : source.format) kind += static_cast<char>(std::toupper(c));
+      kind += " picture with JPEG compression";
+    }
+    throw std::runtime_error(path.string() + ": " + kind +
+                             " cannot hold strip headers: the lossy compression changes pixel "
+                             "bytes (save frames as PNG)");
+  }
+  return frame;
 }
 
 }  // namespace l2

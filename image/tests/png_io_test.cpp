@@ -92,6 +92,45 @@ std::string read_error(const std::filesystem::path& path) {
   return "no error";
 }
 
+// A scanned-out frame saved as grey or as JPEG was read (grey spread over RGB, JPEG decoded) and
+// its headers reported as damaged. Other pictures may still be grey or JPEG.
+TEST(PngIo, ScannedFrameRefusesGreyAndJpeg) {
+  const auto grey = write_bytes("grey-frame.png", kGreyPng);
+  EXPECT_EQ(read_png(grey).width(), 2);
+  try {
+    read_scanned_frame(grey);
+    ADD_FAILURE() << "grey frame read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              grey.string() +
+                  ": a grayscale picture (one colour channel) cannot hold strip headers: a "
+                  "header is 48 bits in the R, G and B bytes of two pixels");
+  }
+  const auto jpeg = temp_dir() / "frame.jpg";
+  write_png(jpeg, RgbImage(16, 8, {200, 10, 10}));  // OpenImageIO writes by the name: a JPEG
+  const auto jpeg_named_png = temp_dir() / "jpeg-inside.png";
+  std::filesystem::copy_file(jpeg, jpeg_named_png,
+                             std::filesystem::copy_options::overwrite_existing);
+  for (const auto& path : {jpeg, jpeg_named_png}) {
+    PictureSource source;
+    EXPECT_EQ(read_png(path, &source).width(), 16);
+    EXPECT_EQ(source.format, "jpeg");
+    EXPECT_TRUE(source.lossy);
+    try {
+      read_scanned_frame(path);
+      ADD_FAILURE() << "JPEG frame read: " << path;
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                path.string() +
+                    ": a JPEG picture cannot hold strip headers: the lossy compression changes "
+                    "pixel bytes (save frames as PNG)");
+    }
+  }
+  const auto rgb = temp_dir() / "rgb-frame.png";
+  write_png(rgb, RgbImage(4, 2, {1, 2, 3}));
+  EXPECT_EQ(read_scanned_frame(rgb), RgbImage(4, 2, {1, 2, 3}));
+}
+
 // A PNG header claiming 20000x20000 RGB pixels, followed by one tiny IDAT (Python's zlib).
 constexpr unsigned char kHugeClaimPng[] = {
     0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,

@@ -128,7 +128,7 @@ EntryDisplays produce_from_captured(const TileLayout& layout, const std::filesys
                       "scanout-0.png .. scanout-{}.png",
                       file.string(), layout.servers.size(), layout.servers.size() - 1));
     }
-    frames.push_back(read_png(file));
+    frames.push_back(read_scanned_frame(file));
     names.push_back(file.string());
   }
   out.emulator = emulate_displays(layout, frames, out.input_errors, names);

@@ -26,7 +26,8 @@ Rgb parse_colour(const std::string& text, const std::string& what);
 
 // The image files of a folder (png, ppm, tif, jpg...), sorted by name with numbers by value
 // (frame-2 before frame-10): one input's frames over time. Throws std::runtime_error naming the
-// folder when it is missing or empty.
+// folder when it is missing or empty. JPEG files are listed so that reading them refuses them
+// by name (read_scanned_frame) rather than skipping them without a word.
 std::vector<std::filesystem::path> list_frames(const std::filesystem::path& folder);
 
 }  // namespace l2

@@ -24,7 +24,7 @@ int run_route(const CommonOptions& o) {
   std::vector<InputFrame> frames;
   images.reserve(o.inputs.size());
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-    images.push_back(read_png(o.inputs[i]));
+    images.push_back(read_scanned_frame(o.inputs[i]));
     mesh.check_input(static_cast<int>(i), images.back().width(), images.back().height(),
                      o.inputs[i]);
   }

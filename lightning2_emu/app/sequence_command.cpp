@@ -73,7 +73,7 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
       for (std::size_t i = 0; i < inputs.size(); ++i) {
         const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
         if (t == 0 || k == static_cast<std::size_t>(t)) {
-          images[i] = read_png(inputs[i][k]);
+          images[i] = read_scanned_frame(inputs[i][k]);
           mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
                            inputs[i][k].string());
           frames[i] = InputFrame::of(images[i]);

@@ -311,6 +311,47 @@ TEST_F(Cli, DamagedPngIsOneLineOfOurs) {
   }
 }
 
+// A grey PNG or a JPEG as an input frame was read as RGB and routed, its headers counted as
+// check errors (exit 0). Neither file can hold strip headers; they are refused, one line each.
+TEST_F(Cli, GreyAndJpegFramesAreRefused) {
+  FrameBuilder in(40, 4);
+  in.copy(0, 0, 0, 0, 0, 20);
+  write_png(dir / "frame.jpg", in.image());  // a JPEG, by its name
+  constexpr unsigned char kGreyPng[] = {
+      // 2x1 grey: 7, 200 (as in image/tests/png_io_test.cpp)
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x00, 0x00, 0x00,
+      0x00, 0xd1, 0x49, 0x20, 0x56, 0x00, 0x00, 0x00, 0x0b, 0x49, 0x44, 0x41, 0x54, 0x78,
+      0x9c, 0x63, 0x60, 0x3f, 0x01, 0x00, 0x00, 0xd9, 0x00, 0xd0, 0xd7, 0xa6, 0x22, 0x3c,
+      0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  std::ofstream(dir / "grey.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(kGreyPng), sizeof kGreyPng);
+
+  Result r = run("route --displays 20x3 --out " + (dir / "out").string() + " " +
+                 (dir / "grey.png").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + (dir / "grey.png").string() +
+                          ": a grayscale picture (one colour channel) cannot hold strip headers: "
+                          "a header is 48 bits in the R, G and B bytes of two pixels\n");
+  EXPECT_FALSE(fs::exists(dir / "out/display-0.png"));
+
+  const std::string jpeg_refused =
+      ": a JPEG picture cannot hold strip headers: the lossy "
+      "compression changes pixel bytes (save frames as PNG)\n";
+  r = run("route --displays 20x3 --out " + (dir / "out").string() + " " +
+          (dir / "frame.jpg").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + (dir / "frame.jpg").string() + jpeg_refused);
+
+  fs::create_directories(dir / "in0");
+  fs::copy_file(dir / "frame.jpg", dir / "in0/f0.jpg");
+  r = run("sequence --displays 20x3 --out " + (dir / "out").string() + " " +
+          (dir / "in0").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.output, "lightning2_emu: " + (dir / "in0/f0.jpg").string() + jpeg_refused);
+  EXPECT_FALSE(fs::exists(dir / "out/report.json"));
+}
+
 TEST_F(Cli, HelpNamesBothCommands) {
   const Result r = run("--help");
   EXPECT_EQ(r.status, 0);

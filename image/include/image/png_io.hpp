@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "image/rgb_image.hpp"
 
@@ -21,6 +22,21 @@ inline constexpr int kMaxPictureSide = 16384;
 // std::runtime_error naming the file and why, in one line ("the PNG file ends early
 // (truncated)", "a damaged PNG (IHDR: CRC error)"; nothing is printed), also for a picture with
 // a side over kMaxPictureSide (before allocating anything) and for a volume or deep image.
-RgbImage read_png(const std::filesystem::path& path);
+// `source`, when given, says what the file held before it became 8-bit RGB.
+struct PictureSource {
+  std::string format;       // "png", "jpeg", "tiff", "bmp", ... (OpenImageIO's names)
+  int colour_channels = 3;  // 1: grey (R = G = B after reading); 3: colour, a palette too
+  bool lossy = false;       // stored with a lossy compression (JPEG, also inside a TIFF)
+};
+RgbImage read_png(const std::filesystem::path& path, PictureSource* source = nullptr);
+
+// Reads a scanned-out frame (lightning2_emu's inputs, strip_headers dump, captured frames of
+// golden entries) with read_png(), and refuses one whose file cannot hold strip headers, which
+// are bit patterns in its pixel bytes: a grey picture (one channel: R = G = B, where a header
+// needs 48 free bits over two pixels) or a lossy one (JPEG: the compression changes pixel
+// bytes). Both used to be read and reported as damaged headers. Throws std::runtime_error
+// naming the file and why. Other pictures (golden displays, references) are read with
+// read_png(), which takes any of these.
+RgbImage read_scanned_frame(const std::filesystem::path& path);
 
 }  // namespace l2
