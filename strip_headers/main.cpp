@@ -124,6 +124,11 @@ int main(int argc, char** argv) {
     if (*enc) return encode_command(op, frame, display, x, y, width);
     if (*dec) return decode_command(hex);
     return dump_command(path, quiet);
+  } catch (const std::runtime_error& e) {
+    // A frame that cannot be read or holds no headers (grey, JPEG): an unusable file, exit 1
+    // as in the other programs (it was 2, a usage error).
+    fmt::print(stderr, "strip_headers: {}\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "strip_headers: {}\n", e.what());
     return 2;

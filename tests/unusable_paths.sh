@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Output paths a program cannot use are refused with one line in the project's words, naming the
-# path and the reason, and the program's status for unusable files; std::filesystem's own text
-# ("filesystem error: cannot create directories: Not a directory [x/y]") reached users. A regular
-# file stands where a folder is expected: the tests run as root, where permissions do not stop.
+# Output paths and input frames a program cannot use are refused with one line in the project's
+# words, naming the path and the reason, and the program's status for unusable files;
+# std::filesystem's own text ("filesystem error: cannot create directories: Not a directory
+# [x/y]") reached users. A regular file stands where a folder is expected: the tests run as
+# root, where permissions do not stop.
 # Arguments: the programs' paths.
 set -uo pipefail
 failed=0
@@ -52,4 +53,15 @@ if [[ -e $tmp/frame.png ]]; then
   echo "FAIL pipeserver wrote $tmp/frame.png before refusing --reference"
   failed=1
 fi
+
+# A frame that cannot be used is an unusable file, exit 1 (strip_headers said 2, a usage error).
+# A 2x1 grey PNG: it cannot hold strip headers.
+printf '\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\x00\x00\x02\x00\x00\x00\x01\x08\x00\x00\x00\x00\xd1I V\x00\x00\x00\x0bIDATx\x9cc`?\x01\x00\x00\xd9\x00\xd0\xd7\xa6"<\x00\x00\x00\x00IEND\xaeB`\x82' \
+  >"$tmp/grey.png"
+refused 1 "strip_headers: $tmp/grey.png: a grayscale picture (one colour channel) cannot hold \
+strip headers: a header is 48 bits in the R, G and B bytes of two pixels" strip_headers dump \
+  "$tmp/grey.png"
+head -c 40 "$tmp/grey.png" >"$tmp/truncated.png"
+refused 1 "strip_headers: $tmp/truncated.png: cannot read: the PNG file ends early (truncated)" \
+  strip_headers dump "$tmp/truncated.png"
 exit $failed
