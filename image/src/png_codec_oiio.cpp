@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -20,17 +21,20 @@ namespace OIIO = OIIO_NAMESPACE;
 using l2::png_codec::RgbSink;
 using l2::png_codec::Source;
 
-constexpr int kPngFilterUp = 0x20;  // libpng's PNG_FILTER_UP (png.h is not included here)
-
 std::string write_rgb(const char* path, int width, int height, const std::uint8_t* rgb) try {
   auto out = OIIO::ImageOutput::create(path);
-  if (!out) return "cannot write: " + OIIO::geterror();
+  if (!out) {
+    OIIO::geterror();  // cleared: our wording replaces OpenImageIO's
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext.empty()) return "cannot write: no extension to choose a picture format by (give .png)";
+    return "cannot write: no picture format is known for '" + ext + "' (give .png)";
+  }
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   // libpng's defaults (every row filter tried, zlib level 6) took 108-117 ms for a 1984x768
   // wall picture; one filter (each row minus the row above, which suits rendered pictures) and
   // zlib level 1 take 21-24 ms for files about 1.5x the size. Runs that keep every frame's pictures
   // spent most of their time here.
-  spec.attribute("png:filter", kPngFilterUp);
+  spec.attribute("png:filter", PNG_FILTER_UP);
   spec.attribute("png:compressionLevel", 1);
   if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb) || !out->close()) {
     return "cannot write: " + out->geterror();

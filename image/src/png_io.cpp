@@ -43,8 +43,14 @@ void check(const std::filesystem::path& path, const std::string& error) {
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
+  std::error_code error;
+  const bool existed = std::filesystem::exists(path, error);
   check_writable(path);  // OpenImageIO says only "Could not open file"
-  check(path, codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data()));
+  const std::string failed =
+      codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data());
+  // check_writable() made the file: a write that failed leaves no empty file behind.
+  if (!failed.empty() && !existed) std::filesystem::remove(path, error);
+  check(path, failed);
 }
 
 RgbImage read_png(const std::filesystem::path& path, PictureSource* source) {

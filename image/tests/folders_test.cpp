@@ -69,5 +69,16 @@ TEST(Folders, AFolderWhereAPictureGoesIsNamed) {
   fs::remove_all(dir);
 }
 
+// OpenImageIO's "could not find a format writer for ... Is it a file format that OpenImageIO
+// doesn't know about?", and an empty file left behind by the check that the file can be opened.
+TEST(Folders, AnUnknownPictureFormatIsNamedAndNoFileIsLeft) {
+  const fs::path dir = fresh_dir();
+  EXPECT_EQ(error_of([&] { write_png(dir / "frame.foo", RgbImage(2, 2)); }),
+            (dir / "frame.foo").string() +
+                ": cannot write: no picture format is known for '.foo' (give .png)");
+  EXPECT_FALSE(fs::exists(dir / "frame.foo"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace l2
