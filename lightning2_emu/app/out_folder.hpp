@@ -14,7 +14,7 @@ void prepare_out(const std::filesystem::path& out);
 
 // `error` (a file that could not be written, named) with what OUT holds of this run after it:
 // "<error>; OUT holds only part of this run: <written>, no report.json", or, with `written`
-// empty, "<error>; OUT holds nothing of this run".
+// empty (nothing of this run written yet), the error alone.
 std::runtime_error partly_written(const std::runtime_error& error, const std::filesystem::path& out,
                                   const std::string& written);
 
