@@ -37,6 +37,49 @@ void remove_old_frames(const std::filesystem::path& folder) {
   }
 }
 
+// The frames of refresh t: a DVI link keeps scanning out the last framebuffer, so an input past
+// its last file repeats it. Only the current frame of each input is held.
+void take_frames(int t, const std::vector<std::vector<std::filesystem::path>>& inputs,
+                 const Mesh& mesh, std::vector<RgbImage>& images, std::vector<InputFrame>& frames) {
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
+    if (t > 0 && k != static_cast<std::size_t>(t)) continue;
+    images[i] = read_scanned_frame(inputs[i][k]);
+    mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
+                     inputs[i][k].string());
+    frames[i] = InputFrame::of(images[i]);
+  }
+}
+
+// Writes what every display shows during refresh t, and with a wall file the wall picture;
+// counts the pictures in `written` as they are written. Returns the displays by id.
+std::vector<const RgbImage*> write_refresh(const Setup& setup, const Emulator& emulator,
+                                           const std::filesystem::path& out, int t, int& written) {
+  std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
+  for (const DisplaySpec& d : setup.config.displays) {
+    by_id[d.id] = &emulator.shown(d.id);
+    write_png(out / fmt::format("display-{}", d.id) / fmt::format("frame-{:04}.png", t),
+              emulator.shown(d.id));
+    ++written;
+  }
+  if (setup.from_wall) {
+    write_png(out / "wall" / fmt::format("frame-{:04}.png", t), compose_wall(setup, by_id));
+  }
+  return by_id;
+}
+
+// What OUT holds of this run when it stops part way: "the pictures of refreshes 0-4 and part of
+// refresh 5", empty when nothing was written.
+std::string pictures_held(int refreshes_written, int pictures_of_next) {
+  std::vector<std::string> held;
+  if (refreshes_written == 1) held.push_back("the pictures of refresh 0");
+  if (refreshes_written > 1) {
+    held.push_back(fmt::format("the pictures of refreshes 0-{}", refreshes_written - 1));
+  }
+  if (pictures_of_next > 0) held.push_back(fmt::format("part of refresh {}", refreshes_written));
+  return fmt::format("{}", fmt::join(held, " and "));
+}
+
 }  // namespace
 
 int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
@@ -68,42 +111,17 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
   int refreshes_written = 0, pictures_of_next = 0;
   try {
     for (int t = 0; t < ticks; ++t) {
-      // A DVI link keeps scanning out the last framebuffer: an input past its last file repeats
-      // it. Only the current frame of each input is held.
-      for (std::size_t i = 0; i < inputs.size(); ++i) {
-        const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
-        if (t == 0 || k == static_cast<std::size_t>(t)) {
-          images[i] = read_scanned_frame(inputs[i][k]);
-          mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
-                           inputs[i][k].string());
-          frames[i] = InputFrame::of(images[i]);
-        }
-      }
+      take_frames(t, inputs, mesh, images, frames);
       const Emulator::Tick& tick = emulator.tick(frames);
       log.add(tick);
-      std::vector<const RgbImage*> by_id(kMaxDisplays, nullptr);
-      for (const DisplaySpec& d : setup.config.displays) {
-        by_id[d.id] = &emulator.shown(d.id);
-        write_png(o.out / fmt::format("display-{}", d.id) / fmt::format("frame-{:04}.png", t),
-                  emulator.shown(d.id));
-        ++pictures_of_next;
-      }
-      if (setup.from_wall) {
-        write_png(o.out / "wall" / fmt::format("frame-{:04}.png", t), compose_wall(setup, by_id));
-      }
+      const auto by_id = write_refresh(setup, emulator, o.out, t, pictures_of_next);
       refreshes_written = t + 1;
       pictures_of_next = 0;
       if (screen && !screen->play(t, by_id)) break;  // q / Esc: the sequence ends here
     }
     log.write(o.out / "report.json", emulator.report());
   } catch (const std::runtime_error& e) {
-    std::vector<std::string> held;
-    if (refreshes_written == 1) held.push_back("the pictures of refresh 0");
-    if (refreshes_written > 1) {
-      held.push_back(fmt::format("the pictures of refreshes 0-{}", refreshes_written - 1));
-    }
-    if (pictures_of_next > 0) held.push_back(fmt::format("part of refresh {}", refreshes_written));
-    throw partly_written(e, o.out, fmt::format("{}", fmt::join(held, " and ")));
+    throw partly_written(e, o.out, pictures_held(refreshes_written, pictures_of_next));
   }
   const RunReport& r = emulator.report();
   fmt::print(
