@@ -30,10 +30,7 @@ constexpr std::size_t kQueuedFrames = 4;
 // "1280x1024,640x480" -> sizes; throws CLI::ValidationError naming the bad item.
 std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
   std::vector<std::pair<int, int>> sizes;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, comma - start);
+  for (const std::string& item : l2::list_items(text)) {
     const std::optional<l2::SizeText> size = l2::parse_size_text(item);
     const auto in_range = [](int side) { return side >= 1 && side <= l2::viz::kMaxDisplaySide; };
     if (!size || !in_range(size->width) || !in_range(size->height)) {
@@ -41,7 +38,6 @@ std::vector<std::pair<int, int>> parse_displays(const std::string& text) {
                                                            item, l2::viz::kMaxDisplaySide));
     }
     sizes.emplace_back(size->width, size->height);
-    start = comma + 1;
   }
   return sizes;
 }

@@ -23,5 +23,14 @@ TEST(SizeText, AnythingElseIsRefused) {
   }
 }
 
+TEST(ListItems, EveryItemAsWrittenEmptyOnesIncluded) {
+  EXPECT_EQ(list_items("1280x1024,640x480"), (std::vector<std::string>{"1280x1024", "640x480"}));
+  EXPECT_EQ(list_items("a"), (std::vector<std::string>{"a"}));
+  EXPECT_EQ(list_items(""), (std::vector<std::string>{""}));
+  EXPECT_EQ(list_items("a,"), (std::vector<std::string>{"a", ""}));
+  EXPECT_EQ(list_items(",,b"), (std::vector<std::string>{"", "", "b"}));
+  EXPECT_EQ(list_items("1;2", ';'), (std::vector<std::string>{"1", "2"}));
+}
+
 }  // namespace
 }  // namespace l2

@@ -22,17 +22,6 @@ int parse_int(std::string_view text, const std::string& what) {
   return value;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t at = text.find(sep, start);
-    parts.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
-    if (at == std::string::npos) return parts;
-    start = at + 1;
-  }
-}
-
 // Name order with numbers by value: "frame-2" before "frame-10", as a person numbers frames
 // without zero padding. Equal runs of digits that differ in leading zeros fall back to the
 // plain comparison, so the order stays total.
@@ -73,7 +62,7 @@ InputLimit parse_size(const std::string& text, const std::string& what) {
 
 std::vector<DisplaySpec> parse_display_list(const std::string& text) {
   std::vector<DisplaySpec> displays;
-  for (const std::string& part : split(text, ',')) {
+  for (const std::string& part : list_items(text)) {
     const int id = static_cast<int>(displays.size());
     const InputLimit size = parse_size(part, fmt::format("--displays: display {}", id));
     displays.push_back({id, size.width, size.height, 0});
@@ -82,7 +71,7 @@ std::vector<DisplaySpec> parse_display_list(const std::string& text) {
 }
 
 void apply_group_list(const std::string& text, std::vector<DisplaySpec>& displays) {
-  const std::vector<std::string> parts = split(text, ',');
+  const std::vector<std::string> parts = list_items(text);
   if (parts.size() != displays.size()) {
     throw std::invalid_argument(
         fmt::format("--groups: {} groups given for {} displays", parts.size(), displays.size()));

@@ -1,10 +1,13 @@
-// A size as written on a command line, "1280x1024": shared so that every program reads it the
-// same way, and none through sscanf's %d, which wraps 4294967360 to 64.
+// A size as written on a command line, "1280x1024", and lists of them, "1280x1024,640x480":
+// shared so that every program reads them the same way, and none through sscanf's %d, which
+// wraps 4294967360 to 64.
 #pragma once
 
 #include <charconv>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace l2 {
 
@@ -27,6 +30,18 @@ inline std::optional<SizeText> parse_size_text(std::string_view text) {
   const auto w = number(text.substr(0, x)), h = number(text.substr(x + 1));
   if (!w || !h) return {};
   return SizeText{*w, *h};
+}
+
+// The items of a list written "a,b,c", each as written: "" is one empty item and "a," two, so
+// that a stray comma reaches the caller as an item it refuses, naming its place.
+inline std::vector<std::string> list_items(std::string_view text, char separator = ',') {
+  std::vector<std::string> items;
+  for (;;) {
+    const std::size_t at = text.find(separator);
+    items.emplace_back(text.substr(0, at));
+    if (at == std::string_view::npos) return items;
+    text.remove_prefix(at + 1);
+  }
 }
 
 }  // namespace l2
