@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <iterator>
@@ -63,6 +64,30 @@ void check_writable(const std::filesystem::path& file) {
   const int error = errno;
   throw std::runtime_error(file.string() + ": cannot write: " +
                            (error == EISDIR ? "a folder, not a file" : std::strerror(error)));
+}
+
+bool numbered_name(std::string_view name, std::string_view prefix, std::string_view suffix,
+                   std::size_t min_digits) {
+  if (name.size() < prefix.size() + suffix.size() + std::max<std::size_t>(min_digits, 1) ||
+      !name.starts_with(prefix) || !name.ends_with(suffix)) {
+    return false;
+  }
+  const std::string_view digits =
+      name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+void remove_earlier(const std::filesystem::path& folder,
+                    const std::function<bool(const std::filesystem::directory_entry&)>& earlier,
+                    const std::string& what) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (!earlier(entry)) continue;
+    if (std::filesystem::remove_all(entry.path(), error); error) {
+      throw std::runtime_error(entry.path().string() + ": cannot remove " + what + ": " +
+                               error.message());
+    }
+  }
 }
 
 }  // namespace l2

@@ -80,5 +80,41 @@ TEST(Folders, AnUnknownPictureFormatIsNamedAndNoFileIsLeft) {
   fs::remove_all(dir);
 }
 
+TEST(Folders, NumberedNamesArePrefixDigitsSuffixAndNothingElse) {
+  EXPECT_TRUE(numbered_name("frame-12", "frame-"));
+  EXPECT_TRUE(numbered_name("frame-0003.png", "frame-", ".png", 4));
+  EXPECT_FALSE(numbered_name("frame-003.png", "frame-", ".png", 4));  // fewer digits than asked
+  EXPECT_FALSE(numbered_name("frame-", "frame-"));                    // no digit at all
+  EXPECT_FALSE(numbered_name("frame-.png", "frame-", ".png"));
+  EXPECT_FALSE(numbered_name("frame-1a", "frame-"));
+  EXPECT_FALSE(numbered_name("frame-12.png", "frame-"));  // a suffix not asked for
+  EXPECT_FALSE(numbered_name("frame-12", "frame-", ".png"));
+  EXPECT_FALSE(numbered_name("myframe-12", "frame-"));
+  EXPECT_FALSE(numbered_name("frame--12", "frame-"));
+}
+
+TEST(Folders, RemoveEarlierTakesWhatItIsToldAndNothingElse) {
+  const fs::path dir = fresh_dir();
+  fs::create_directories(dir / "frame-1" / "inner");
+  std::ofstream(dir / "frame-1" / "inner" / "a.png") << "x";
+  std::ofstream(dir / "frame-2") << "a file with a run's folder name";
+  std::ofstream(dir / "notes.txt") << "mine";
+  remove_earlier(
+      dir,
+      [](const fs::directory_entry& e) {
+        return e.is_directory() && numbered_name(e.path().filename().string(), "frame-");
+      },
+      "the pictures of an earlier run");
+  EXPECT_FALSE(fs::exists(dir / "frame-1"));
+  EXPECT_TRUE(fs::exists(dir / "frame-2"));
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  // A folder that does not exist yet: nothing to do, no error.
+  EXPECT_EQ(error_of([&] {
+              remove_earlier(
+                  dir / "missing", [](const auto&) { return true; }, "x");
+            }),
+            "no error");
+}
+
 }  // namespace
 }  // namespace l2

@@ -53,22 +53,14 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
 }
 
 void remove_earlier_pictures(const std::filesystem::path& out) {
-  const auto numbered = [](const std::string& name, std::string_view prefix) {
-    return name.size() > prefix.size() && name.starts_with(prefix) &&
-           std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
-                       [](char c) { return c >= '0' && c <= '9'; });
-  };
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(out, error)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_directory() &&
-        (name == "fault" || numbered(name, "frame-") || numbered(name, "mismatch-frame-"))) {
-      if (std::filesystem::remove_all(entry.path(), error); error) {
-        throw std::runtime_error(fmt::format("{}: cannot remove the pictures of an earlier run: {}",
-                                             entry.path().string(), error.message()));
-      }
-    }
-  }
+  remove_earlier(
+      out,
+      [](const std::filesystem::directory_entry& entry) {
+        const std::string name = entry.path().filename().string();
+        return entry.is_directory() && (name == "fault" || numbered_name(name, "frame-") ||
+                                        numbered_name(name, "mismatch-frame-"));
+      },
+      "the pictures of an earlier run");
 }
 
 }  // namespace l2

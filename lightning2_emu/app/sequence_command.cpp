@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "out_folder.hpp"
 #include "report_json.hpp"
@@ -23,18 +24,13 @@ namespace {
 // same --out left the longer run's later frames beside its own. Only files named as this
 // command names them are touched.
 void remove_old_frames(const std::filesystem::path& folder) {
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
-    const bool ours =
-        name.size() >= 14 && name.starts_with("frame-") && name.ends_with(".png") &&
-        std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
-    if (!ours || !entry.is_regular_file()) continue;
-    if (std::filesystem::remove(entry.path(), error); error) {
-      throw std::runtime_error(fmt::format("{}: cannot remove this frame of an earlier run: {}",
-                                           entry.path().string(), error.message()));
-    }
-  }
+  remove_earlier(
+      folder,
+      [](const std::filesystem::directory_entry& entry) {
+        return entry.is_regular_file() &&
+               numbered_name(entry.path().filename().string(), "frame-", ".png", 4);
+      },
+      "this frame of an earlier run");
 }
 
 // The frames of refresh t: a DVI link keeps scanning out the last framebuffer, so an input past

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 
 namespace l2 {
 
@@ -19,5 +21,18 @@ void make_folders(const std::filesystem::path& folder, const std::string& what =
 // ("Could not open file"). Throws std::runtime_error "<file>: cannot write: a folder, not a
 // file" or "<file>: cannot write: <the system's reason>" (e.g. Permission denied).
 void check_writable(const std::filesystem::path& file);
+
+// Whether `name` is `prefix`, at least `min_digits` decimal digits and `suffix`, nothing else:
+// the names a program gives its numbered outputs ("frame-12", "frame-0003.png").
+bool numbered_name(std::string_view name, std::string_view prefix, std::string_view suffix = {},
+                   std::size_t min_digits = 1);
+
+// Removes what an earlier run left in `folder`, where it would stand beside this run's output as
+// if this run had made it: every entry `earlier` picks, a folder with its contents. Nothing else
+// is touched; a missing folder is nothing to do. Throws std::runtime_error
+// "<entry>: cannot remove <what>: <the system's reason>".
+void remove_earlier(const std::filesystem::path& folder,
+                    const std::function<bool(const std::filesystem::directory_entry&)>& earlier,
+                    const std::string& what);
 
 }  // namespace l2
