@@ -2,6 +2,8 @@
 // frame bit, and every header of it is checked before the frame's routing counts. Here: making
 // the prediction, the checks that are not made in the copy loop (router_write.cpp makes those),
 // and what happens when one fails.
+#include <algorithm>
+
 #include "lightning2_emu/router.hpp"
 #include "pixel_copy.hpp"
 #include "router_detail.hpp"
@@ -72,6 +74,26 @@ bool check_predicted(const InputScan& in, bool runs) {
 
 using router_detail::BandState;
 using router_detail::DisplayBands;
+
+bool Router::predictions_clear_of_earlier(std::span<const std::uint8_t> route_input) const {
+  const int inputs = static_cast<int>(std::min(route_input.size(), inputs_.size()));
+  for (std::size_t task = 0; task < band_tasks_.size(); ++task) {
+    const BandState& bs = display_state_[band_tasks_[task].display].bands[band_tasks_[task].band];
+    if (bs.areas.empty()) continue;  // nothing earlier in this band
+    for (int i = 0; i < inputs; ++i) {
+      if (!route_input[i] || !inputs_[i].predicted) continue;
+      for (const router_detail::Run& r : inputs_[i].bands[task]) {
+        for (const router_detail::Area& a : bs.areas) {
+          if (r.dst_y < a.y1 && a.y0 < r.dst_y + r.rows && r.dst_x < a.x1 &&
+              a.x0 < r.dst_x + r.length) {
+            return false;
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
 
 bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool copied) {
   confirm_inputs_.clear();

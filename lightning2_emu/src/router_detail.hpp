@@ -105,6 +105,10 @@ struct alignas(64) BandState {
   std::vector<Written> by_row;           // earlier calls' areas, row by row (scratch)
   std::vector<std::uint32_t> row_start;  // by_row index of each row of the band, + end
   std::vector<int> mispredicted;         // inputs whose strips here did not hold their headers
+  // What earlier write() calls of this frame left (areas[0, earlier_areas)): a write() that
+  // finds a prediction wrong goes back to it.
+  std::size_t earlier_areas = 0;
+  std::uint64_t earlier_strips = 0;
 };
 
 struct DisplayBands {

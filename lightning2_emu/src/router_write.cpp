@@ -107,23 +107,28 @@ bool Router::write(std::span<const std::uint8_t> route_input) {
   for (std::size_t i = 0; i < route_input.size() && i < inputs_.size(); ++i) {
     if (route_input[i]) highest = static_cast<int>(i);
   }
-  // Predicted frames are checked while they are copied only where nothing is written yet this
-  // frame: a wrong one is then undone by forgetting what this call wrote (the pixels of no
-  // recorded area get the background in finish()). Otherwise it might overwrite an earlier
+  for (DisplayBands& ds : display_state_) {
+    for (BandState& bs : ds.bands) {
+      bs.earlier_areas = bs.areas.size();
+      bs.earlier_strips = bs.strips;
+    }
+  }
+  // Predicted frames are checked while they are copied where their strips overlap nothing an
+  // earlier call wrote this frame: a wrong one is then undone by forgetting what this call
+  // wrote (the pixels of no recorded area get the background in finish(); the other inputs'
+  // strips are written again, the same). Otherwise a wrong one might overwrite an earlier
   // call's strips, so the checks come first.
-  const bool fresh =
-      std::all_of(display_state_.begin(), display_state_.end(),
-                  [](const DisplayBands& ds) { return ds.highest_input_written < 0; });
-  if (!fresh && !confirm_predictions(route_input, false)) return false;
+  const bool check_in_copy = predictions_clear_of_earlier(route_input);
+  if (!check_in_copy && !confirm_predictions(route_input, false)) return false;
   if (highest >= 0) {
     pool_.run(static_cast<int>(band_tasks_.size()),
               [&](int task, int) { write_band(task, route_input); });
   }
-  if (fresh && !confirm_predictions(route_input, true)) {
+  if (check_in_copy && !confirm_predictions(route_input, true)) {
     for (DisplayBands& ds : display_state_) {
       for (BandState& bs : ds.bands) {
-        bs.areas.clear();
-        bs.strips = 0;
+        bs.areas.resize(bs.earlier_areas);
+        bs.strips = bs.earlier_strips;
       }
     }
     return false;
@@ -163,7 +168,7 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
       const auto whole = [&](std::uint8_t* d, const std::uint8_t* s, int) {
         copy_pixels(d, s, r.length, bpp);
       };
-      if (in.predicted) {  // never with a guard: see write()
+      if (in.predicted) {  // overlaps no earlier area (write()): no guard needed
         if (!copy_run<true>(r, src, src_stride, dst, stride, bpp, frame_bit, whole) &&
             (bs.mispredicted.empty() || bs.mispredicted.back() != i)) {
           bs.mispredicted.push_back(i);

@@ -111,19 +111,36 @@ TEST(Prediction, ATornFrameIsFoundAndNotRouted) {
   EXPECT_EQ(emu.predictions().mispredicted, 1u);
 }
 
-TEST(Prediction, CheckedBeforeWritingWhenTheFrameHasStripsAlready) {
+// Input 0 delivers a frame a refresh before input 1, whose predicted strips (rows y1, y1+1)
+// turn out moved. The display keeps input 0's strips, written a refresh earlier, and shows
+// what a parse gives.
+Router::PredictionCounts late_input_moves(int y1) {
   SideBySide emu(two_inputs());
   const Rgb c{5, 6, 7};
-  emu.tick(frames_of({two_rows(0, 0, c, false), two_rows(2, 0, c, false)}), "refresh 0");
+  emu.tick(frames_of({two_rows(0, 0, c, false), two_rows(y1, 0, c, false)}), "refresh 0");
   // Input 0 delivers its next frame, input 1 is late: its old frame again (a repeat).
-  emu.tick(frames_of({two_rows(0, 0, c, true), two_rows(2, 0, c, false)}), "refresh 1");
-  // Input 1's frame arrives, its strips moved, while input 0's are in the back buffer: the
-  // prediction is checked before anything is written, found wrong, and the frame parsed.
-  emu.tick(frames_of({two_rows(0, 0, c, true), two_rows(2, 5, Rgb{50, 60, 70}, true)}),
+  emu.tick(frames_of({two_rows(0, 0, c, true), two_rows(y1, 0, c, false)}), "refresh 1");
+  // Input 1's frame arrives, its strips moved, while input 0's are in the back buffer.
+  emu.tick(frames_of({two_rows(0, 0, c, true), two_rows(y1, 5, Rgb{50, 60, 70}, true)}),
            "refresh 2");
-  emu.tick(frames_of({two_rows(0, 0, c, false), two_rows(2, 5, c, false)}), "refresh 3");
-  EXPECT_GE(emu.predictions().checked_first, 2u);
-  EXPECT_EQ(emu.predictions().mispredicted, 1u);
+  emu.tick(frames_of({two_rows(0, 0, c, false), two_rows(y1, 5, c, false)}), "refresh 3");
+  return emu.predictions();
+}
+
+TEST(Prediction, AMissBesideAnEarlierRefreshsStripsIsUndoneAroundThem) {
+  // Input 1 on rows 2-3, clear of input 0's rows 0-1: checked while copied; the miss is undone
+  // by dropping only what refresh 2 wrote.
+  const Router::PredictionCounts counts = late_input_moves(2);
+  EXPECT_EQ(counts.checked_first, 0u);
+  EXPECT_EQ(counts.mispredicted, 1u);
+}
+
+TEST(Prediction, CheckedBeforeWritingWhereItsStripsOverlapAnEarlierRefreshs) {
+  // Input 1 on rows 1-2, over input 0's row 1: a wrong prediction copied there would overwrite
+  // input 0's strip, so at refresh 2 both predictions are checked before anything is written.
+  const Router::PredictionCounts counts = late_input_moves(1);
+  EXPECT_EQ(counts.checked_first, 2u);
+  EXPECT_EQ(counts.mispredicted, 1u);
 }
 
 // Random walls and frame streams: each refresh an input repeats its frame, flips its parity,

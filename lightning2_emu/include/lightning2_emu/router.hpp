@@ -77,8 +77,8 @@ class Router {
   void predict_layouts(bool on) { predict_ = on; }
 
   // Frames predicted so far, and how many of those turned out different and were parsed.
-  // `checked_first`: predictions checked before writing, because an earlier write() call of
-  // the same frame had written strips.
+  // `checked_first`: predictions checked before writing, because a strip of one overlapped
+  // what an earlier write() call of the same frame had written.
   struct PredictionCounts {
     std::uint64_t predicted = 0, mispredicted = 0, checked_first = 0;
   };
@@ -99,6 +99,9 @@ class Router {
   // Checks every predicted input's headers that the copy did not (all of them unless `copied`),
   // parses the inputs that differ; false when one did.
   bool confirm_predictions(std::span<const std::uint8_t> route_input, bool copied);
+  // Whether no strip of a predicted input routed now overlaps an area an earlier write() call
+  // of this frame wrote: then its headers can be checked in the copy (write()).
+  bool predictions_clear_of_earlier(std::span<const std::uint8_t> route_input) const;
   DisplayFrameStats finish_band(int display, int band, router_detail::WorkerScratch& scratch);
 
   Mesh mesh_;
