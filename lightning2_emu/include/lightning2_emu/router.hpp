@@ -68,9 +68,10 @@ class Router {
   const InputFrameStats& scanned(int input) const;
 
   // Writes the strips found by the last scan() for every input i with route_input[i] != 0.
-  // The frames given to scan() must still be valid. Returns false, having written nothing,
-  // when a predicted frame turned out different: scanned() then gives its parse, and the next
-  // write() call (with nothing predicted left) returns true.
+  // The frames given to scan() must still be valid. Returns false when a predicted frame
+  // turned out different, having kept nothing of this call (pixels it wrote outside earlier
+  // calls' strips get the background in finish() unless written again): scanned() then gives
+  // the parse, and the next write() call (with nothing predicted left) returns true.
   [[nodiscard]] bool write(std::span<const std::uint8_t> route_input);
 
   // On by default; off, every frame is parsed (to measure the parse, or compare the two).
