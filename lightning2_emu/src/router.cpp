@@ -13,6 +13,7 @@
 
 namespace l2 {
 
+using router_detail::Area;
 using router_detail::BandState;
 using router_detail::CoverageCounts;
 using router_detail::CoverageScratch;
@@ -153,11 +154,10 @@ DisplayFrameStats Router::finish_band(int display, int band,
                        }
                      });
   DisplayFrameStats st;
-  st.strips = bs.strips;
+  for (const Area& a : bs.areas) st.strips += a.y1 - a.y0;  // one area per run, a row per strip
   st.covered_pixels = counts.covered;
   st.overdraw_pixels = counts.overdraw;
   bs.areas.clear();
-  bs.strips = 0;
   return st;
 }
 

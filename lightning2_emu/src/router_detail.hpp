@@ -95,11 +95,11 @@ inline constexpr std::uint64_t kMessageFrameBit = std::uint64_t{1}
 inline constexpr std::uint64_t kMessageOneRow = std::uint64_t{1} << (header_bits::kYShift - 3);
 
 // A band of display rows: one task's share. One area per run written (appending is all the
-// copy does); coverage is worked out from them when the frame is finished.
+// copy does); coverage, overdraw and the strip count are worked out from them when the frame
+// is finished.
 struct alignas(64) BandState {
   std::vector<Area> areas;  // in write order
-  std::uint64_t strips = 0;
-  struct Written {  // columns of a row written by an input, for the guard path
+  struct Written {          // columns of a row written by an input, for the guard path
     std::uint16_t x0, x1, input;
   };
   std::vector<Written> by_row;           // earlier calls' areas, row by row (scratch)
@@ -108,7 +108,6 @@ struct alignas(64) BandState {
   // What earlier write() calls of this frame left (areas[0, earlier_areas)): a write() that
   // finds a prediction wrong goes back to it.
   std::size_t earlier_areas = 0;
-  std::uint64_t earlier_strips = 0;
 };
 
 struct DisplayBands {

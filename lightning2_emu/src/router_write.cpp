@@ -108,10 +108,7 @@ bool Router::write(std::span<const std::uint8_t> route_input) {
     if (route_input[i]) highest = static_cast<int>(i);
   }
   for (DisplayBands& ds : display_state_) {
-    for (BandState& bs : ds.bands) {
-      bs.earlier_areas = bs.areas.size();
-      bs.earlier_strips = bs.strips;
-    }
+    for (BandState& bs : ds.bands) bs.earlier_areas = bs.areas.size();
   }
   // Predicted frames are checked while they are copied where their strips overlap nothing an
   // earlier call wrote this frame: a wrong one is then undone by forgetting what this call
@@ -126,10 +123,7 @@ bool Router::write(std::span<const std::uint8_t> route_input) {
   }
   if (check_in_copy && !confirm_predictions(route_input, true)) {
     for (DisplayBands& ds : display_state_) {
-      for (BandState& bs : ds.bands) {
-        bs.areas.resize(bs.earlier_areas);
-        bs.strips = bs.earlier_strips;
-      }
+      for (BandState& bs : ds.bands) bs.areas.resize(bs.earlier_areas);
     }
     return false;
   }
@@ -185,7 +179,6 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
       bs.areas.push_back({r.dst_y, static_cast<std::uint16_t>(r.dst_y + r.rows), r.dst_x,
                           static_cast<std::uint16_t>(r.dst_x + r.length),
                           static_cast<std::uint16_t>(i)});
-      bs.strips += r.rows;
     }
   }
   pixel_copy::finish_streaming();
