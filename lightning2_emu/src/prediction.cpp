@@ -35,6 +35,16 @@ bool predict_input(InputScan& in) {
   return true;
 }
 
+bool any_overlap(const std::vector<Run>& runs, const std::vector<Area>& areas) {
+  for (const Run& r : runs) {
+    for (const Area& a : areas) {
+      if (r.dst_y < a.y1 && a.y0 < r.dst_y + r.rows && r.dst_x < a.x1 && a.x0 < r.dst_x + r.length)
+        return true;
+    }
+  }
+  return false;
+}
+
 bool check_predicted(const InputScan& in, bool runs) {
   const InputFrame& f = in.frame;
   const int bpp = f.bytes_per_pixel;
@@ -81,14 +91,9 @@ bool Router::predictions_clear_of_earlier(std::span<const std::uint8_t> route_in
     const BandState& bs = display_state_[band_tasks_[task].display].bands[band_tasks_[task].band];
     if (bs.areas.empty()) continue;  // nothing earlier in this band
     for (int i = 0; i < inputs; ++i) {
-      if (!route_input[i] || !inputs_[i].predicted) continue;
-      for (const router_detail::Run& r : inputs_[i].bands[task]) {
-        for (const router_detail::Area& a : bs.areas) {
-          if (r.dst_y < a.y1 && a.y0 < r.dst_y + r.rows && r.dst_x < a.x1 &&
-              a.x0 < r.dst_x + r.length) {
-            return false;
-          }
-        }
+      if (route_input[i] && inputs_[i].predicted &&
+          router_detail::any_overlap(inputs_[i].bands[task], bs.areas)) {
+        return false;
       }
     }
   }

@@ -86,6 +86,9 @@ bool predict_input(InputScan& in);
 // when `runs` (the input is not written, or is written after others this frame).
 bool check_predicted(const InputScan& in, bool runs);
 
+// Whether some run's rectangle shares a pixel with some area's.
+bool any_overlap(const std::vector<Run>& runs, const std::vector<Area>& areas);
+
 // The raw header a predicted strip must hold, from its message (frame bit included).
 inline std::uint64_t predicted_header(std::uint64_t message) {
   return message << 3 | crc3(message);
