@@ -66,6 +66,13 @@ void check_writable(const std::filesystem::path& file) {
                            (error == EISDIR ? "a folder, not a file" : std::strerror(error)));
 }
 
+std::runtime_error partly_written(const std::runtime_error& error, const std::filesystem::path& out,
+                                  const std::string& written, const std::string& missing) {
+  if (written.empty()) return error;
+  return std::runtime_error(std::string(error.what()) + "; " + out.string() +
+                            " holds only part of this run: " + written + ", " + missing);
+}
+
 bool numbered_name(std::string_view name, std::string_view prefix, std::string_view suffix,
                    std::size_t min_digits) {
   if (name.size() < prefix.size() + suffix.size() + std::max<std::size_t>(min_digits, 1) ||

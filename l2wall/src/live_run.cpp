@@ -264,10 +264,8 @@ class LiveRun {
       } catch (const RunFault&) {
         throw;
       } catch (const std::runtime_error& e) {
-        throw std::runtime_error(fmt::format(
-            "{}; {} holds only part of this run: the frames kept before frame {}, no summary.txt "
-            "or report.csv of this run",
-            e.what(), o_.out, frame));
+        throw partly_written(e, o_.out, fmt::format("the frames kept before frame {}", frame),
+                             "no summary.txt or report.csv of this run");
       }
     };
     if (dvi_) write(dvi_pictures(), "");

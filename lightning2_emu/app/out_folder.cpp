@@ -23,11 +23,4 @@ void prepare_out(const std::filesystem::path& out) {
   }
 }
 
-std::runtime_error partly_written(const std::runtime_error& error, const std::filesystem::path& out,
-                                  const std::string& written) {
-  if (written.empty()) return error;
-  return std::runtime_error(fmt::format("{}; {} holds only part of this run: {}, no report.json",
-                                        error.what(), out.string(), written));
-}
-
 }  // namespace l2

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "lightning2_emu/router.hpp"
 #include "out_folder.hpp"
@@ -52,7 +53,7 @@ int run_route(const CommonOptions& o) {
     }
     write_route_report(o.out / "report.json", report, mesh, o.inputs);
   } catch (const std::runtime_error& e) {
-    throw partly_written(e, o.out, fmt::format("{}", fmt::join(written, ", ")));
+    throw partly_written(e, o.out, fmt::format("{}", fmt::join(written, ", ")), "no report.json");
   }
 
   const StripErrorCounts errors = report.errors();

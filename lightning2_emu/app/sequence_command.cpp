@@ -117,7 +117,8 @@ int run_sequence(const CommonOptions& o, int ticks, const ShowOptions& show) {
     }
     log.write(o.out / "report.json", emulator.report());
   } catch (const std::runtime_error& e) {
-    throw partly_written(e, o.out, pictures_held(refreshes_written, pictures_of_next));
+    throw partly_written(e, o.out, pictures_held(refreshes_written, pictures_of_next),
+                         "no report.json");
   }
   const RunReport& r = emulator.report();
   fmt::print(

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -21,6 +22,12 @@ void make_folders(const std::filesystem::path& folder, const std::string& what =
 // ("Could not open file"). Throws std::runtime_error "<file>: cannot write: a folder, not a
 // file" or "<file>: cannot write: <the system's reason>" (e.g. Permission denied).
 void check_writable(const std::filesystem::path& file);
+
+// `error` (a file that could not be written, named) with what the output folder `out` holds of
+// this run: "<error>; <out> holds only part of this run: <written>, <missing>" ("display-0.png",
+// "no report.json"), or, with `written` empty (nothing of this run written yet), the error alone.
+std::runtime_error partly_written(const std::runtime_error& error, const std::filesystem::path& out,
+                                  const std::string& written, const std::string& missing);
 
 // Whether `name` is `prefix`, at least `min_digits` decimal digits and `suffix`, nothing else:
 // the names a program gives its numbered outputs ("frame-12", "frame-0003.png").
