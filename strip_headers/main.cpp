@@ -2,7 +2,6 @@
 // or dump every header of a scanned-out frame with the §3 error counts.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <string>
@@ -36,9 +35,7 @@ int decode_command(const std::string& hex) {
   // Exactly 12 hex digits, a header's 48 bits. std::stoull also took a sign, spaces and 0x, and
   // -1 as ffffffffffffffff; a shorter value was read with leading zeros, so a header with a digit
   // left out (4180500a00f) decoded as another one and was reported as a check error.
-  const bool digits = !hex.empty() && std::all_of(hex.begin(), hex.end(), [](char c) {
-    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-  });
+  const bool digits = !hex.empty() && hex.find_first_not_of("0123456789abcdefABCDEF") == hex.npos;
   if (!digits || hex.size() != 12) {
     fmt::print(stderr, "strip_headers: '{}' is not a 48-bit hex value (12 hex digits{})\n", hex,
                digits ? fmt::format(", not {}", hex.size()) : "");
