@@ -77,7 +77,7 @@ Parsed parse_case(const ExtCase& c) {
   Row row(c.width, 3);
   if (c.at > 0) row.header(0, StripHeader::skip(false, c.at - 2));
   row.header(c.at, c.header);
-  if (c.at + 2 < c.width) row.header(c.at + 2, c.word);
+  if (c.at + 4 <= c.width) row.header(c.at + 2, c.word);  // a word needs two pixels
   for (int x = c.at + 4; x + 1 < c.width && x < c.at + 12; x += 2) {
     row.header(x, StripHeader::copy(false, 0, 0, 0, 1));
   }
