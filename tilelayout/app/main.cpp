@@ -12,6 +12,7 @@
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "verify_plan.hpp"
 
 namespace {
 
@@ -43,9 +44,9 @@ int main(int argc, char** argv) {
       "tile sits in its framebuffer (spec §4), and prints the plan.\n"
       "Without WALL it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
-      "3 output files could not be written."};
+      "3 output files could not be written, 4 --verify found pixels out of place."};
   std::string wall_path;
-  std::string png_dir, scanout_dir;
+  std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
   bool print_default = false;
   CLI::Option* const wall_option =
@@ -62,15 +63,28 @@ int main(int argc, char** argv) {
                      "write scanout-N.png to DIR: the 24-bit frame each pipeserver would scan out, "
                      "every header drawn, every tile filled with the routing test pattern")
           ->type_name("DIR");
-  // Options that would be ignored are usage errors: a --parity without --scanout, or a wall or
-  // picture folder with --print-default.
-  app.add_option("--parity", parity, "frame parity for --scanout headers")
-      ->check(CLI::Range(0, 1))
-      ->needs(scanout_option);
+  CLI::Option* const verify_option =
+      app.add_option("--verify", verify_dir,
+                     "scan out, route and check in one step: every pipeserver's --scanout frame "
+                     "routed through the emulated mesh (DIR/scanout-N.png, DIR/display-D.png) and "
+                     "every display pixel checked against the plan as lightning2_emu route "
+                     "--verify does (DIR/verify-D.png, the report on stdout); exit 4 when any "
+                     "pixel is wrong")
+          ->type_name("DIR");
+  // Options that would be ignored are usage errors: a --parity without --scanout or --verify,
+  // or a wall or picture folder with --print-default.
+  app.add_option("--parity", parity, "frame parity for --scanout and --verify headers")
+      ->check(CLI::Range(0, 1));
   app.add_flag("--print-default", print_default, "print the built-in default wall file, exit")
       ->excludes(wall_option)
       ->excludes(png_option)
-      ->excludes(scanout_option);
+      ->excludes(scanout_option)
+      ->excludes(verify_option);
+  app.callback([&] {
+    if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {
+      throw CLI::ValidationError("--parity requires --scanout or --verify");
+    }
+  });
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   if (print_default) {
@@ -89,6 +103,7 @@ int main(int argc, char** argv) {
   try {
     if (!png_dir.empty()) write_pictures(layout, png_dir);
     if (!scanout_dir.empty()) write_scanout(layout, scanout_dir, parity == 1);
+    if (!verify_dir.empty()) return l2::verify_plan(layout, verify_dir, parity == 1);
   } catch (const std::exception& e) {
     std::cerr << "tilelayout: " << e.what() << "\n";
     return 3;

@@ -30,9 +30,11 @@ std::string refused_strips(const InputCheck& input) {
 std::string frames_line(const RoutingCheck& check) {
   const int given = static_cast<int>(check.inputs.size());
   if (given < check.planned_inputs) {
-    return fmt::format(
-        "frames given for {} of the wall's {} pipeservers: inputs {}-{} sent nothing", given,
-        check.planned_inputs, given, check.planned_inputs - 1);
+    const std::string absent = given + 1 == check.planned_inputs
+                                   ? fmt::format("input {}", given)
+                                   : fmt::format("inputs {}-{}", given, check.planned_inputs - 1);
+    return fmt::format("frames given for {} of the wall's {} pipeservers: {} sent nothing", given,
+                       check.planned_inputs, absent);
   }
   return fmt::format("{} frames given, the wall has {} pipeservers", given, check.planned_inputs);
 }

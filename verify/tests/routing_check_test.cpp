@@ -52,7 +52,7 @@ TEST(RoutingCheck, ForgottenInput) {
                 "misplaced; 0 written twice, 0 behind mullions",
                 "display 1 (64x32) wrong: 2048 planned pixels: 1024 right, 1024 missing, 0 "
                 "misplaced; 0 written twice, 0 behind mullions",
-                "frames given for 1 of the wall's 2 pipeservers: inputs 1-1 sent nothing",
+                "frames given for 1 of the wall's 2 pipeservers: input 1 sent nothing",
                 "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips"}));
   for (int x : {0, 31, 32, 63}) {
     EXPECT_EQ(check.displays[0].kinds[5 * 64 + x], x < 32 ? PixelKind::Right : PixelKind::Missing);
