@@ -85,8 +85,8 @@ std::vector<std::string> check_report(const RoutingCheck& check, int max_runs) {
   const auto refused = std::count_if(check.inputs.begin(), check.inputs.end(),
                                      [](const InputCheck& i) { return !i.clean(); });
   if (check.clean()) {
-    lines.push_back(fmt::format("routing right: every planned pixel of the {} displays in place",
-                                check.displays.size()));
+    lines.push_back(fmt::format("routing right: every planned pixel in place on {} display{}",
+                                check.displays.size(), check.displays.size() == 1 ? "" : "s"));
   } else {
     lines.push_back(
         fmt::format("routing wrong: {} of {} displays wrong, {} inputs with refused "

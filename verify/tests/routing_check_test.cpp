@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "tilelayout/test_pattern.hpp"
+#include "verify/check_picture.hpp"
 #include "verify/check_report.hpp"
 #include "verify/routing_check.hpp"
 #include "verify/verify_run.hpp"
@@ -37,7 +38,7 @@ TEST(RoutingCheck, CorrectScanOutIsRight) {
                 "misplaced; 0 written twice, 0 behind mullions",
                 "display 1 (64x32) right: 2048 planned pixels: 2048 right, 0 missing, 0 "
                 "misplaced; 0 written twice, 0 behind mullions",
-                "routing right: every planned pixel of the 2 displays in place"}));
+                "routing right: every planned pixel in place on 2 displays"}));
 }
 
 TEST(RoutingCheck, ForgottenInput) {
@@ -234,6 +235,37 @@ TEST(RoutingCheck, ExampleWallsVerifyClean) {
     }
   }
   EXPECT_GE(walls, 5);
+}
+
+}  // namespace
+}  // namespace l2
+
+namespace l2 {
+namespace {
+
+// The picture of the mullion case: the shifted tile's wrong pixels in their kinds' colours,
+// its last 8 columns in the margin right of the display, the rest dimmed.
+TEST(CheckPicture, MarksEveryKindAndTheMargin) {
+  const TileLayout layout = test_layout();
+  std::vector<RgbImage> frames = scanned_out(layout);
+  for (int y = 0; y < 32; ++y) {
+    set_header(frames[1], 2, y, StripHeader::copy(false, 0, 40, y, 32));
+  }
+  const RoutingCheck check = check_routing(layout, frames);
+  const std::vector<RgbImage> shown = route_on_wall(layout.wall, frames, 1);
+  const RgbImage picture = check_picture(check.displays[0], shown[0], check.mullion_runs);
+  ASSERT_EQ(check_margin(check.displays[0]), 8);
+  EXPECT_EQ(picture.at(33, 4), kMissingColour);
+  EXPECT_EQ(picture.at(40, 4), kMisplacedColour);
+  EXPECT_EQ(picture.at(63, 31), kMisplacedColour);
+  EXPECT_EQ(picture.at(64, 4), kMullionColour);
+  EXPECT_EQ(picture.at(71, 31), kMullionColour);
+  EXPECT_EQ(picture.at(64, 32), kMarginColour);  // below: nothing fell there
+  const Rgb c = test_pattern(0, 5, 6);
+  EXPECT_EQ(picture.at(5, 6),
+            (Rgb{static_cast<std::uint8_t>(c.r / 4), static_cast<std::uint8_t>(c.g / 4),
+                 static_cast<std::uint8_t>(c.b / 4)}));
+  EXPECT_GT(picture.height(), 32 + 8);  // the legend below
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ TEST_F(VerifyCli, RouteVerifyForgottenInput) {
 TEST_F(VerifyCli, RouteVerifyOfTheScanOutIsClean) {
   const Result r = route_verify(scan(0).string() + " " + scan(1).string());
   EXPECT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("\nrouting right: every planned pixel of the 2 displays in place\n"),
+  EXPECT_NE(r.out.find("\nrouting right: every planned pixel in place on 2 displays\n"),
             std::string::npos)
       << r.out;
 }
@@ -129,7 +129,7 @@ TEST_F(VerifyCli, TilelayoutVerifyScansOutRoutesAndChecks) {
                        "misplaced; 0 written twice, 0 behind mullions\n"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("\nrouting right: every planned pixel of the 2 displays in place\n"),
+  EXPECT_NE(r.out.find("\nrouting right: every planned pixel in place on 2 displays\n"),
             std::string::npos)
       << r.out;
   for (const char* name : {"scanout-0.png", "scanout-1.png", "display-0.png", "display-1.png",
