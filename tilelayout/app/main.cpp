@@ -7,6 +7,7 @@
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "tilelayout/fit.hpp"
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
@@ -36,6 +37,20 @@ void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& di
   }
 }
 
+int print_suggestions(const std::string& wall_path) {
+  try {
+    const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);
+    const l2::FitSuggestions fit = l2::suggest_fit(wall);
+    for (const std::string& line : l2::suggestion_lines(wall, fit)) std::cout << line << "\n";
+    const bool any = fit.fits || fit.height_at_width || fit.width_at_height ||
+                     !fit.policies.empty() || fit.server_count;
+    return any ? 0 : 1;
+  } catch (const l2::LayoutError& e) {
+    std::cerr << "tilelayout: " << e.what() << "\n";
+    return 1;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,7 +63,7 @@ int main(int argc, char** argv) {
   std::string wall_path;
   std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
-  bool print_default = false;
+  bool print_default = false, suggest = false;
   CLI::Option* const wall_option =
       app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
           ->type_name("WALL.toml");
@@ -75,11 +90,20 @@ int main(int argc, char** argv) {
   // or a wall or picture folder with --print-default.
   app.add_option("--parity", parity, "frame parity for --scanout and --verify headers")
       ->check(CLI::Range(0, 1));
+  app.add_flag("--suggest", suggest,
+               "print values that make the wall fit, each changed alone: the smallest "
+               "framebuffer_height at its framebuffer_width and framebuffer_width at its height "
+               "(header gaps included), the other assignment policies that fit and the fewest "
+               "pipeservers that fit at its framebuffer size; exit 0, 1 when none fits")
+      ->excludes(png_option)
+      ->excludes(scanout_option)
+      ->excludes(verify_option);
   app.add_flag("--print-default", print_default, "print the built-in default wall file, exit")
       ->excludes(wall_option)
       ->excludes(png_option)
       ->excludes(scanout_option)
-      ->excludes(verify_option);
+      ->excludes(verify_option)
+      ->excludes("--suggest");
   app.callback([&] {
     if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {
       throw CLI::ValidationError("--parity requires --scanout or --verify");
@@ -91,6 +115,7 @@ int main(int argc, char** argv) {
     std::cout << l2::default_wall_toml();
     return 0;
   }
+  if (suggest) return print_suggestions(wall_path);
   l2::TileLayout layout;
   try {
     const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);

@@ -210,3 +210,70 @@ INSTANTIATE_TEST_SUITE_P(ExampleWalls, CliWall, ::testing::ValuesIn(example_wall
 
 }  // namespace
 }  // namespace l2
+
+namespace l2 {
+namespace {
+
+// The wall of Planner.TilesThatDoNotFitSayWhatWould (planner_test.cpp, where the values are
+// worked out): --suggest prints them, the plain run names them after its error.
+constexpr const char* kTightWallFile = R"([display_grid]
+columns = 1
+rows = 1
+width = 600
+height = 100
+[tiling]
+kind = "list"
+tiles = [[0, 0, 200, 100], [200, 0, 100, 100], [300, 0, 200, 100], [500, 0, 100, 100]]
+[pipeservers]
+count = 2
+framebuffer_width = 310
+framebuffer_height = 100
+)";
+
+TEST_F(Cli, SuggestPrintsWhatFits) {
+  const fs::path wall = write("tight.toml", kTightWallFile);
+  ChildRun r = run("--suggest '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "as written (310x100, 2 pipeservers, round-robin): does not fit\n"
+            "framebuffer_height = 200 (at framebuffer_width = 310)\n"
+            "framebuffer_width = 404 (at framebuffer_height = 100)\n"
+            "assignment = \"blocks\" (at 310x100, 2 pipeservers)\n"
+            "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)\n"
+            "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n");
+  r = run("'" + wall.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
+                       ":12: pipeserver 0: tile 1 (display 0, 200x100 at 300,0) does not fit the "
+                       "310x100 framebuffer: needs 200 rows, 100 too many; what would fit, each "
+                       "alone: framebuffer_height = 200; framebuffer_width = 404; assignment = "
+                       "\"blocks\" or \"area-balanced\"; pipeservers.count = 3\n");
+  // A suggested value, written into the wall, plans.
+  const fs::path fixed =
+      write("fixed.toml", std::string(kTightWallFile) + "assignment = \"blocks\"\n");
+  EXPECT_EQ(run("'" + fixed.string() + "'").status, 0);
+}
+
+TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
+  // One 100x50 tile on one 200x60 framebuffer: 102 columns and 50 rows would do.
+  const fs::path wall = write("roomy.toml",
+                              "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 50\n"
+                              "[tiling]\nkind = \"grid\"\ntile_width = 100\ntile_height = 50\n"
+                              "[pipeservers]\ncount = 1\nframebuffer_width = 200\n"
+                              "framebuffer_height = 60\n");
+  const ChildRun r = run("--suggest '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "as written (200x60, 1 pipeserver, round-robin): fits\n"
+            "framebuffer_height = 50 (at framebuffer_width = 200)\n"
+            "framebuffer_width = 102 (at framebuffer_height = 60)\n"
+            "assignment = \"zig-zag\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"spiral\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"blocks\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"area-balanced\" (at 200x60, 1 pipeserver)\n"
+            "pipeservers.count = 1 (at 200x60, round-robin): the fewest that fit\n");
+}
+
+}  // namespace
+}  // namespace l2
