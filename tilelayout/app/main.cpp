@@ -21,10 +21,10 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
   l2::make_folders(dir, "--png");
   for (const l2::ServerPlan& s : layout.servers) {
     const auto path = dir / fmt::format("pipeserver-{}.png", s.server);
-    l2::write_png(path, l2::framebuffer_picture(s));
+    l2::write_png(path, l2::framebuffer_page(s));
     std::cout << "wrote " << path.string() << "\n";
   }
-  l2::write_png(dir / "wall.png", l2::wall_picture(layout));
+  l2::write_png(dir / "wall.png", l2::wall_page(layout));
   std::cout << "wrote " << (dir / "wall.png").string() << "\n";
 }
 

@@ -3,29 +3,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <string>
 #include <vector>
 
-#include "displays/bitmap_font.hpp"
+#include "displays/legend.hpp"
 
 namespace l2 {
 namespace {
 
-struct LegendEntry {
-  Rgb colour;
-  std::string text;
-};
-
 std::vector<LegendEntry> legend(const DisplayCheck& d) {
-  return {{{64, 64, 64}, fmt::format("right {} (the display, dimmed)", d.right)},
-          {kMissingColour, fmt::format("missing {}", d.missing)},
-          {kMisplacedColour, fmt::format("misplaced {}", d.misplaced)},
-          {kTwiceColour, fmt::format("written twice {}", d.written_twice)},
-          {kMullionColour, fmt::format("behind mullions {} (in the margin)", d.behind_mullions)}};
-}
-
-int legend_scale(const DisplayCheck& d) {
-  return std::max(1, std::max(d.width, d.height) / 640);
+  return {{fmt::format("right {} (the display, dimmed)", d.right), {64, 64, 64}},
+          {fmt::format("missing {}", d.missing), kMissingColour},
+          {fmt::format("misplaced {}", d.misplaced), kMisplacedColour},
+          {fmt::format("written twice {}", d.written_twice), kTwiceColour},
+          {fmt::format("behind mullions {} (in the margin)", d.behind_mullions), kMullionColour}};
 }
 
 Rgb kind_colour(PixelKind kind, Rgb dimmed) {
@@ -65,16 +55,6 @@ void draw_mullion_runs(const DisplayCheck& d, std::span<const MullionRun> runs, 
   }
 }
 
-void draw_legend(const DisplayCheck& d, int top, RgbImage& picture) {
-  const int s = legend_scale(d), line = (kGlyphHeight + 3) * s;
-  int y = top + 2 * s;
-  for (const LegendEntry& e : legend(d)) {
-    picture.fill_rect(2 * s, y, kGlyphHeight * s, kGlyphHeight * s, e.colour);
-    draw_text(picture, (kGlyphHeight + 5) * s, y, e.text, {230, 230, 230}, s);
-    y += line;
-  }
-}
-
 }  // namespace
 
 int check_margin(const DisplayCheck& d) {
@@ -83,20 +63,11 @@ int check_margin(const DisplayCheck& d) {
 
 RgbImage check_picture(const DisplayCheck& d, const RgbImage& shown,
                        std::span<const MullionRun> mullion_runs) {
-  const int margin = check_margin(d), s = legend_scale(d);
-  const std::vector<LegendEntry> entries = legend(d);
-  int legend_width = 0;
-  for (const LegendEntry& e : entries) {
-    legend_width = std::max(legend_width, (kGlyphHeight + 7) * s + text_width(e.text, s));
-  }
-  const int legend_height = static_cast<int>(entries.size()) * (kGlyphHeight + 3) * s + 4 * s;
-  RgbImage picture(std::max(d.width + margin, legend_width), d.height + margin + legend_height,
-                   Rgb{});
-  picture.fill_rect(0, 0, d.width + margin, d.height + margin, kMarginColour);
+  const int margin = check_margin(d);
+  RgbImage picture(d.width + margin, d.height + margin, kMarginColour);
   draw_display(d, shown, picture);
   draw_mullion_runs(d, mullion_runs, margin, picture);
-  draw_legend(d, d.height + margin, picture);
-  return picture;
+  return with_legend(picture, legend(d));
 }
 
 }  // namespace l2
