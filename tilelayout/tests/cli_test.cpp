@@ -11,6 +11,8 @@
 
 #include "image/png_io.hpp"
 #include "routing_check.hpp"
+#include "tilelayout/pictures.hpp"
+#include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -167,6 +169,17 @@ std::vector<fs::path> example_walls() {
   return out;
 }
 
+// `page` begins with `picture`: its top-left corner holds it pixel for pixel (the legend is
+// below, and may make the page wider).
+void expect_on_top(const RgbImage& page, const RgbImage& picture, const std::string& what) {
+  ASSERT_GE(page.width(), picture.width()) << what;
+  ASSERT_GE(page.height(), picture.height()) << what;
+  for (int y = 0; y < picture.height(); ++y) {
+    ASSERT_TRUE(std::equal(picture.row(y).begin(), picture.row(y).end(), page.row(y).begin()))
+        << what << ": row " << y;
+  }
+}
+
 // One test per example wall, so CTest can run them side by side.
 class CliWall : public Cli, public ::testing::WithParamInterface<fs::path> {};
 
@@ -178,19 +191,25 @@ TEST_P(CliWall, ScanoutFramesRouteEveryDisplayPixelOnce) {
                          (dir_ / "scan").string() + "' --png '" + (dir_ / "png").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const Wall wall = load_wall(path);
+  const TileLayout layout = plan_layout(wall);
   std::vector<RgbImage> frames;
   for (int s = 0; s < wall.server_count; ++s) {
     frames.push_back(read_png(dir_ / "scan" / ("scanout-" + std::to_string(s) + ".png")));
     EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
     EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
     const RgbImage pic = read_png(dir_ / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
-    EXPECT_EQ(pic.width(), wall.framebuffer_width);
+    EXPECT_GE(pic.width(), wall.framebuffer_width);
+    EXPECT_GT(pic.height(), wall.framebuffer_height);  // the legend below
+    expect_on_top(pic, framebuffer_picture(layout.servers[s]), "pipeserver " + std::to_string(s));
   }
   const RgbImage wall_png = read_png(dir_ / "png" / "wall.png");
   // Canvases longer than 4096 pixels are drawn shrunk by a whole factor.
   const int scale = (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096;
-  EXPECT_EQ(wall_png.width(), (wall.canvas_width + scale - 1) / scale);
-  EXPECT_EQ(wall_png.height(), (wall.canvas_height + scale - 1) / scale);
+  const RgbImage wall_pic = wall_picture(layout);
+  EXPECT_EQ(wall_pic.width(), (wall.canvas_width + scale - 1) / scale);
+  EXPECT_EQ(wall_pic.height(), (wall.canvas_height + scale - 1) / scale);
+  EXPECT_GT(wall_png.height(), wall_pic.height());  // the legend below
+  expect_on_top(wall_png, wall_pic, "wall.png");
   const RoutingCheck c = check_routing(wall, frames, true);
   long long visible = 0;
   for (const Display& d : wall.displays) visible += 1LL * d.width * d.height;
