@@ -41,8 +41,7 @@ bool verify_and_report(const TileLayout& layout, std::span<const RgbImage> frame
     // Without the router's picture, the check's colours on black still say everything.
     const RgbImage blank(d.width, d.height);
     const RgbImage& shown = i < routed.size() && routed[i] != nullptr ? *routed[i] : blank;
-    write_png(dir / fmt::format("verify-{}.png", d.display),
-              check_picture(d, shown, check.mullion_runs));
+    write_png(dir / fmt::format("verify-{}.png", d.display), check_picture(check, i, shown));
   }
   for (const std::string& line : check_report(check)) out << line << "\n";
   out << fmt::format("wrote {}/verify-<d>.png: the displays, wrong pixels marked\n", dir.string());

@@ -253,7 +253,7 @@ TEST(CheckPicture, MarksEveryKindAndTheMargin) {
   }
   const RoutingCheck check = check_routing(layout, frames);
   const std::vector<RgbImage> shown = route_on_wall(layout.wall, frames, 1);
-  const RgbImage picture = check_picture(check.displays[0], shown[0], check.mullion_runs);
+  const RgbImage picture = check_picture(check, 0, shown[0]);
   ASSERT_EQ(check_margin(check.displays[0]), 8);
   EXPECT_EQ(picture.at(33, 4), kMissingColour);
   EXPECT_EQ(picture.at(40, 4), kMisplacedColour);
@@ -261,6 +261,12 @@ TEST(CheckPicture, MarksEveryKindAndTheMargin) {
   EXPECT_EQ(picture.at(64, 4), kMullionColour);
   EXPECT_EQ(picture.at(71, 31), kMullionColour);
   EXPECT_EQ(picture.at(64, 32), kMarginColour);  // below: nothing fell there
+  // The misplaced run (40..63 x 0..31) framed 6 pixels out: over right and margin pixels, not
+  // over the missing ones (32..39) nor the cyan ones that fell behind the mullion.
+  EXPECT_EQ(picture.at(10, 37), kMarginColour);   // left of the frame
+  EXPECT_EQ(picture.at(40, 37), kRunMarker);      // its bottom edge, in the margin
+  EXPECT_EQ(picture.at(34, 10), kMissingColour);  // its left edge, over a missing pixel
+  EXPECT_EQ(picture.at(69, 10), kMullionColour);  // its right edge, over a mullion pixel
   const Rgb c = test_pattern(0, 5, 6);
   EXPECT_EQ(picture.at(5, 6),
             (Rgb{static_cast<std::uint8_t>(c.r / 4), static_cast<std::uint8_t>(c.g / 4),
