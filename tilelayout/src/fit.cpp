@@ -52,16 +52,32 @@ Lists lists_for(const Wall& wall, const Tiles& t, AssignmentPolicy policy, int s
   return server_tile_lists(wall, t.logical, t.on_displays, policy, servers);
 }
 
-std::optional<int> smallest_width(const Lists& lists, int height) {
+// Every framebuffer width from the widest tile's up to 4096: the first that holds the tiles
+// within `height` rows, and the width and height of the smallest area that holds them (the
+// narrowest of equal areas).
+struct WidthScan {
+  std::optional<int> width_at_height;
+  std::optional<std::pair<int, int>> smallest;
+};
+
+WidthScan scan_widths(const Lists& lists, int height) {
   int widest = 1;
   for (const auto& list : lists) {
     for (const DisplayTile& t : list) widest = std::max(widest, t.on_display.w);
   }
+  WidthScan scan;
+  long long best = 0;
   for (int w = widest + kHeaderPixels; w <= kMaxFramebufferSide; ++w) {
     const std::optional<int> h = tallest(lists, w);
-    if (h && *h <= height) return w;
+    if (!h || *h > kMaxFramebufferSide) continue;
+    if (!scan.width_at_height && *h <= height) scan.width_at_height = w;
+    const int rows = std::max(*h, 1);
+    if (!scan.smallest || static_cast<long long>(w) * rows < best) {
+      scan.smallest = std::pair{w, rows};
+      best = static_cast<long long>(w) * rows;
+    }
   }
-  return std::nullopt;
+  return scan;
 }
 
 std::string quoted_policies(const std::vector<AssignmentPolicy>& policies) {
@@ -89,7 +105,9 @@ FitSuggestions suggest_fit(const Wall& wall) {
   if (!fit.idle_server) {
     const std::optional<int> rows = tallest(lists, w);
     if (rows && *rows <= kMaxFramebufferSide) fit.height_at_width = std::max(*rows, 1);
-    fit.width_at_height = smallest_width(lists, h);
+    const WidthScan scan = scan_widths(lists, h);
+    fit.width_at_height = scan.width_at_height;
+    fit.smallest = scan.smallest;
   }
   for (int p = 0; p <= static_cast<int>(AssignmentPolicy::AreaBalanced); ++p) {
     const auto policy = static_cast<AssignmentPolicy>(p);
@@ -113,6 +131,10 @@ std::string fit_hint(const FitSuggestions& fit) {
     parts.push_back(fmt::format("framebuffer_height = {}", *fit.height_at_width));
   if (fit.width_at_height)
     parts.push_back(fmt::format("framebuffer_width = {}", *fit.width_at_height));
+  if (!fit.height_at_width && !fit.width_at_height && fit.smallest) {
+    parts.push_back(fmt::format("framebuffer_width = {} with framebuffer_height = {}",
+                                fit.smallest->first, fit.smallest->second));
+  }
   if (!fit.policies.empty()) parts.push_back("assignment = " + quoted_policies(fit.policies));
   if (fit.server_count) parts.push_back(fmt::format("pipeservers.count = {}", *fit.server_count));
   if (parts.empty()) return "";
@@ -144,6 +166,13 @@ std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions
     lines.push_back(
         fmt::format("framebuffer_width = {} (at framebuffer_height = {}{})", *fit.width_at_height,
                     h, board_note(*fit.width_at_height, wall.board_max_width, "board_max_width")));
+  }
+  if (fit.smallest) {
+    const auto [sw, sh] = *fit.smallest;
+    lines.push_back(
+        fmt::format("framebuffer_width = {}, framebuffer_height = {}: the smallest framebuffer{}{}",
+                    sw, sh, board_note(sw, wall.board_max_width, "board_max_width"),
+                    board_note(sh, wall.board_max_height, "board_max_height")));
   }
   for (AssignmentPolicy p : fit.policies) {
     lines.push_back(fmt::format("assignment = \"{}\" (at {}x{}, {})", to_string(p), w, h, servers));

@@ -257,6 +257,7 @@ TEST_F(Cli, SuggestPrintsWhatFits) {
             "as written (310x100, 2 pipeservers, round-robin): does not fit\n"
             "framebuffer_height = 200 (at framebuffer_width = 310)\n"
             "framebuffer_width = 404 (at framebuffer_height = 100)\n"
+            "framebuffer_width = 202, framebuffer_height = 200: the smallest framebuffer\n"
             "assignment = \"blocks\" (at 310x100, 2 pipeservers)\n"
             "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)\n"
             "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n");
@@ -287,6 +288,7 @@ TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
             "as written (200x60, 1 pipeserver, round-robin): fits\n"
             "framebuffer_height = 50 (at framebuffer_width = 200)\n"
             "framebuffer_width = 102 (at framebuffer_height = 60)\n"
+            "framebuffer_width = 102, framebuffer_height = 50: the smallest framebuffer\n"
             "assignment = \"zig-zag\" (at 200x60, 1 pipeserver)\n"
             "assignment = \"spiral\" (at 200x60, 1 pipeserver)\n"
             "assignment = \"blocks\" (at 200x60, 1 pipeserver)\n"

@@ -228,6 +228,9 @@ TEST(Planner, TilesThatDoNotFitSayWhatWould) {
   EXPECT_FALSE(fit.fits);
   EXPECT_EQ(fit.height_at_width, 200);
   EXPECT_EQ(fit.width_at_height, 404);
+  // 202 columns hold one 200-column tile a row: two rows of 100 on both pipeservers (pipeserver
+  // 1's 102 + 102 columns do not fit 202 either); 202 x 200 = 404 x 100, the narrower kept.
+  EXPECT_EQ(fit.smallest, (std::pair{202, 200}));
   EXPECT_EQ(fit.policies, (std::vector<AssignmentPolicy>{AssignmentPolicy::Blocks,
                                                          AssignmentPolicy::AreaBalanced}));
   EXPECT_EQ(fit.server_count, 3);
@@ -236,6 +239,7 @@ TEST(Planner, TilesThatDoNotFitSayWhatWould) {
                 "as written (310x100, 2 pipeservers, round-robin): does not fit",
                 "framebuffer_height = 200 (at framebuffer_width = 310)",
                 "framebuffer_width = 404 (at framebuffer_height = 100)",
+                "framebuffer_width = 202, framebuffer_height = 200: the smallest framebuffer",
                 "assignment = \"blocks\" (at 310x100, 2 pipeservers)",
                 "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)",
                 "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit"}));
@@ -284,6 +288,31 @@ TEST(Planner, PipeserverWithoutTilesIsRefused) {
                  "walls/idle.toml: pipeserver 1 gets no tiles (1 display tiles for 2 "
                  "pipeservers); every pipeserver needs a tile (one without scans out idle frames, "
                  "which never earn READY); what would fit, each alone: pipeservers.count = 1");
+  }
+}
+
+}  // namespace
+}  // namespace l2
+
+namespace l2 {
+namespace {
+
+TEST(Planner, TilesTooLargeEitherWayNeedBothSides) {
+  // Two 250x250 tiles on one 100x100 framebuffer: too narrow and too low. 252 columns hold one
+  // tile a row, two rows of 250.
+  try {
+    plan_layout(
+        parse_wall("[display_grid]\ncolumns = 1\nrows = 1\nwidth = 250\nheight = 500\n"
+                   "[tiling]\nkind = \"grid\"\ntile_width = 250\ntile_height = 250\n"
+                   "[pipeservers]\ncount = 1\nframebuffer_width = 100\n"
+                   "framebuffer_height = 100\n",
+                   "walls/big.toml"));
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "walls/big.toml:13: pipeserver 0: tile 0 (display 0, 250x250 at 0,0) does not "
+                 "fit the 100x100 framebuffer: needs 252 columns, 152 too many; what would fit, "
+                 "each alone: framebuffer_width = 252 with framebuffer_height = 500");
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tilelayout/wall.hpp"
@@ -22,6 +23,9 @@ struct FitSuggestions {
   std::optional<int> height_at_width;
   // Smallest framebuffer_width at the wall's framebuffer_height (none: up to 4096, nothing).
   std::optional<int> width_at_height;
+  // The framebuffer of smallest area (width, height) that holds every pipeserver's tiles as
+  // assigned: the one to change both sides to when neither alone is enough.
+  std::optional<std::pair<int, int>> smallest;
   std::vector<AssignmentPolicy> policies;  // other policies that fit at the wall's size
   std::optional<int> server_count;         // fewest pipeservers that fit at the wall's size
   // A pipeserver gets no tile as written: only server_count and policies can help then.
