@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <random>
 
 #include "tilelayout/test_pattern.hpp"
 #include "verify/check_picture.hpp"
@@ -272,6 +273,56 @@ TEST(CheckPicture, MarksEveryKindAndTheMargin) {
             (Rgb{static_cast<std::uint8_t>(c.r / 4), static_cast<std::uint8_t>(c.g / 4),
                  static_cast<std::uint8_t>(c.b / 4)}));
   EXPECT_GT(picture.height(), 32 + 8);  // the legend below
+}
+
+}  // namespace
+}  // namespace l2
+
+namespace l2 {
+namespace {
+
+// Frames from elsewhere can hold anything: random bytes, and valid headers with random fields
+// (displays the wall lacks, rows below it, strips past its edges). The check never reads or
+// writes out of bounds (the ASan run), and its counts agree with its pixel kinds.
+TEST(RoutingCheck, RandomHeadersAreCountedNotTrusted) {
+  const TileLayout layout = test_layout();
+  std::mt19937 rng(22);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  for (int round = 0; round < 40; ++round) {
+    std::vector<RgbImage> frames = scanned_out(layout);
+    for (RgbImage& f : frames) {
+      for (int k = 0; k < 20; ++k) {
+        const int y = uni(0, f.height() - 1), x = uni(2, f.width() - 1);
+        if (round % 2 == 0) {
+          f.set(x, y,
+                {static_cast<std::uint8_t>(uni(0, 255)), static_cast<std::uint8_t>(uni(0, 255)),
+                 static_cast<std::uint8_t>(uni(0, 255))});
+        } else {
+          set_header(f, x, y,
+                     StripHeader::copy(uni(0, 1) == 1, uni(0, 63), uni(0, 4095), uni(0, 4095),
+                                       uni(1, 4095)));
+        }
+      }
+    }
+    const RoutingCheck check = check_routing(layout, frames);
+    for (const DisplayCheck& d : check.displays) {
+      long long right = 0, missing = 0, misplaced = 0;
+      for (PixelKind k : d.kinds) {
+        right += k == PixelKind::Right || k == PixelKind::Twice;
+        missing += k == PixelKind::Missing;
+        misplaced += k == PixelKind::Misplaced;
+      }
+      EXPECT_EQ(d.right, right);
+      EXPECT_EQ(d.missing, missing);
+      EXPECT_EQ(d.misplaced, misplaced);
+      EXPECT_LE(d.right + d.missing + d.misplaced, 64 * 32);
+    }
+    long long in_runs = 0;
+    for (const MisplacedRun& r : check.misplaced)
+      in_runs += static_cast<long long>(r.width) * r.rows;
+    EXPECT_EQ(in_runs, check.displays[0].misplaced + check.displays[1].misplaced);
+    check_report(check);  // formats whatever it found
+  }
 }
 
 }  // namespace
