@@ -14,7 +14,8 @@ std::vector<LegendEntry> legend(const DisplayCheck& d) {
   return {{fmt::format("right {} (the display, dimmed)", d.right), {64, 64, 64}},
           {fmt::format("missing {}", d.missing), kMissingColour},
           {fmt::format("misplaced {}", d.misplaced), kMisplacedColour},
-          {fmt::format("written twice {}", d.written_twice), kTwiceColour},
+          {fmt::format("written twice {} (yellow where right in the end)", d.written_twice),
+           kTwiceColour},
           {fmt::format("behind mullions {} (in the margin)", d.behind_mullions), kMullionColour},
           {"misplaced runs are framed", kRunMarker}};
 }
