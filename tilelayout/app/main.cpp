@@ -69,9 +69,10 @@ int main(int argc, char** argv) {
           ->type_name("WALL.toml");
   CLI::Option* const png_option =
       app.add_option("--png", png_dir,
-                     "write pictures to DIR: pipeserver-N.png (framebuffer: header gaps white, "
-                     "tiles coloured by display) and wall.png (tiles coloured and labelled by "
-                     "pipeserver)")
+                     "write pictures to DIR, each with a legend: pipeserver-N.png (framebuffer: "
+                     "header gaps white, tiles coloured by display, labelled D<display> "
+                     "L<logical tile>) and wall.png (tiles coloured by pipeserver, labelled "
+                     "P<pipeserver> L<logical tile>)")
           ->type_name("DIR");
   CLI::Option* const scanout_option =
       app.add_option("--scanout", scanout_dir,
