@@ -114,7 +114,7 @@ FitSuggestions suggest_fit(const Wall& wall) {
     if (policy == wall.assignment) continue;
     if (fits(lists_for(wall, t, policy, wall.server_count), w, h)) fit.policies.push_back(policy);
   }
-  const int most = std::min<int>(1024, static_cast<int>(t.logical.size()));
+  const int most = std::min<int>(kMaxPipeservers, static_cast<int>(t.logical.size()));
   for (int n = 1; n <= most; ++n) {
     if (fits(lists_for(wall, t, wall.assignment, n), w, h)) {
       fit.server_count = n;
