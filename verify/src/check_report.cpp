@@ -59,7 +59,7 @@ std::string describe_run(const MisplacedRun& run) {
                                               run.belongs->x, run.belongs->y)
                                 : std::string("show no test pattern");
   return fmt::format(
-      "input {} {} from column {} (header {:#014x} {}): {}x{} pixels landed on display {} at "
+      "input {} {} from column {} (header {:012x} {}): {}x{} pixels landed on display {} at "
       "{},{}, {}",
       run.input, rows, run.source_x, run.header, header ? to_string(*header) : "?", run.width,
       run.rows, run.landed.display, run.landed.x, run.landed.y, where);

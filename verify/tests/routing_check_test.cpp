@@ -22,7 +22,7 @@ using verify_test::set_header;
 using verify_test::test_layout;
 
 std::string hex(const StripHeader& h) {
-  return fmt::format("{:#014x}", encode(h));
+  return fmt::format("{:012x}", encode(h));
 }
 
 std::vector<std::string> report_of(const TileLayout& layout, const std::vector<RgbImage>& frames) {

@@ -32,7 +32,7 @@ Result run(const std::string& command) {
 }
 
 std::string hex(const StripHeader& h) {
-  return fmt::format("{:#014x}", encode(h));
+  return fmt::format("{:012x}", encode(h));
 }
 
 class VerifyCli : public ::testing::Test {

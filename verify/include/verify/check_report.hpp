@@ -14,7 +14,7 @@ namespace l2 {
 // 0 written twice, 0 behind mullions"
 std::string display_summary(const DisplayCheck& display);
 
-// "input 1 rows 0-99 from column 132 (header 0x4a0000000408 COPY f=0 d=1 x=0 y=0 w=128):
+// "input 1 rows 0-99 from column 132 (header 408000000403 COPY f=0 d=1 x=0 y=0 w=128):
 // 128x100 pixels landed on display 1 at 0,0, belong on display 0 at 512,0"
 std::string describe_run(const MisplacedRun& run);
 
