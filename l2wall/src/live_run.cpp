@@ -49,7 +49,9 @@ class LiveRun {
 
   int run() {
     check_options();
-    check_every_server_has_tiles();
+    // The planner refused what no run can use (plan_layout); what it only warns of, tilelayout
+    // prints too, in the same words.
+    for (const std::string& w : layout_.warnings) std::fprintf(stderr, "l2wall: %s\n", w.c_str());
     make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
@@ -101,20 +103,6 @@ class LiveRun {
  private:
   void check_options() const {
     if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
-  }
-
-  // A pipeserver without tiles scans out END headers only: its frames are idle (spec §6), carry
-  // no parity and no frame stamp, are never accepted, and so never earn READY: the run would
-  // stall on it. Refused before any process starts.
-  void check_every_server_has_tiles() const {
-    for (const ServerPlan& s : layout_.servers) {
-      if (!s.tiles.empty()) continue;
-      throw std::invalid_argument(fmt::format(
-          "{}: pipeserver {} gets no tiles ({} display tiles for {} pipeservers); a live run "
-          "needs a tile on every pipeserver: lower pipeservers.count or use more tiles",
-          o_.wall.empty() ? "the built-in wall" : o_.wall, s.server, layout_.tiles.size(),
-          layout_.servers.size()));
-    }
   }
 
   HostLaunch host_launch() const {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -26,9 +27,20 @@ using namespace testing_support;
 // How soon after a fault the run must have ended, named it and cleaned up.
 constexpr auto kFaultNoticeBound = 10s;
 
+// What `tilelayout WALL` prints on stdout and stderr, and its exit status.
+std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
+  FILE* pipe = popen(fmt::format("'{}' '{}' 2>&1", TILELAYOUT_EXE, wall.string()).c_str(), "r");
+  std::string out;
+  char buffer[512];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
 TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
   // One tile, two pipeservers: pipeserver 1 scanned out idle frames, never got READY, and the
-  // run ended 11 s later with "pipeservers did not end after the last frame".
+  // run ended 11 s later with "pipeservers did not end after the last frame". tilelayout
+  // printed the plan of that wall and exited 0.
   const fs::path wall = fs::temp_directory_path() / fmt::format("l2-idle-{}.toml", getpid());
   std::ofstream(wall) << "name = \"one tile, two pipeservers\"\n"
                          "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
@@ -37,13 +49,41 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
                          "framebuffer_height = 300\n";
   WallRun run("idle", {"--frames", "3", wall.string()});
   const ExitStatus status = run.wait(10s);
+  const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
   fs::remove(wall);
-  EXPECT_FALSE(status.ok());
-  EXPECT_NE(run.output().find(wall.string() +
-                              ": pipeserver 1 gets no tiles (1 display tiles for 2 pipeservers)"),
-            std::string::npos)
-      << run.output();
+  const std::string refusal = wall.string() +
+                              ": pipeserver 1 gets no tiles (1 display tiles for 2 pipeservers); "
+                              "every pipeserver needs a tile (one without scans out idle frames, "
+                              "which never earn READY); what would fit, each alone: "
+                              "pipeservers.count = 1\n";
+  EXPECT_EQ(status.code, 1);
+  EXPECT_EQ(run.output(), "l2wall: " + refusal);
+  EXPECT_EQ(tilelayout_status, 1);
+  EXPECT_EQ(tilelayout_out, "tilelayout: " + refusal);
   EXPECT_FALSE(fs::exists(run.out() / "host-0.log")) << "a pipeserver was started";
+  expect_clean(run);
+}
+
+TEST(LiveRun, WarnsOfWhatTilelayoutWarnsOf) {
+  // The tiles leave the bottom 40 rows of the display uncovered: tilelayout said so, a run of
+  // the same wall said nothing.
+  const fs::path wall = fs::temp_directory_path() / fmt::format("l2-uncovered-{}.toml", getpid());
+  std::ofstream(wall) << "name = \"uncovered rows\"\n"
+                         "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
+                         "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 320, 200]]\n"
+                         "[pipeservers]\ncount = 1\nframebuffer_width = 400\n"
+                         "framebuffer_height = 300\n";
+  WallRun run("uncovered", {"--frames", "1", wall.string()});
+  const ExitStatus status = run.wait(60s);
+  const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
+  fs::remove(wall);
+  const std::string warning = wall.string() +
+                              ": warning: canvas area 320x40 at 0,200 (display 0: 12800 pixels) "
+                              "is not covered by any tile\n";
+  EXPECT_EQ(status.code, 0) << run.output();
+  EXPECT_NE(run.output().find("l2wall: " + warning), std::string::npos) << run.output();
+  EXPECT_EQ(tilelayout_status, 0);
+  EXPECT_NE(tilelayout_out.find("\n" + warning), std::string::npos) << tilelayout_out;
   expect_clean(run);
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct CommonOptions {
   int threads = 0;
   std::filesystem::path out;
   std::vector<std::string> inputs;  // frame files (route) or folders (sequence)
+  bool verify = false;              // route --verify: check the displays against the wall
 };
 
 // What both commands build from the options: the emulator's configuration and, for --wall,
@@ -46,6 +48,10 @@ struct ShowOptions {
 };
 
 int run_route(const CommonOptions& options);
+// route --verify (route_verify.cpp): checks what `router` routed from `frames` against the
+// plan of options.wall, writes OUT/verify-<d>.png and prints the report; the exit status.
+int verify_route(const CommonOptions& options, std::span<const RgbImage> frames,
+                 const Router& router);
 int run_sequence(const CommonOptions& options, int ticks, const ShowOptions& show = {});
 
 }  // namespace l2

@@ -45,6 +45,14 @@ int main(int argc, char** argv) {
       "OUT/report.json and, with --wall, OUT/wall.png");
   add_common(*route, route_options);
   route->add_option("inputs", route_options.inputs, "Input frames IN0.png IN1.png ...")->required();
+  route
+      ->add_flag("--verify", route_options.verify,
+                 "Check every display pixel against the wall's plan through the routing test "
+                 "pattern (tilelayout --scanout frames, or any frames whose tiles show it): "
+                 "prints per display the pixels right, missing, misplaced, written twice and "
+                 "behind mullions, and each misplaced run with its input, row, column, header "
+                 "and where it belongs; writes OUT/verify-<d>.png. Exit 4 when anything is wrong")
+      ->needs("--wall");
 
   l2::CommonOptions seq_options;
   int ticks = 0;

@@ -59,7 +59,7 @@ int run_route(const CommonOptions& o) {
   const StripErrorCounts errors = report.errors();
   fmt::print("routed {} inputs to {} displays ({}); {} strip errors; wrote {}\n", frames.size(),
              router.display_count(), mesh.describe(), errors.total(), o.out.string());
-  return 0;
+  return o.verify ? verify_route(o, images, router) : 0;
 }
 
 }  // namespace l2

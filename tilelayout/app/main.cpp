@@ -7,11 +7,13 @@
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "tilelayout/fit.hpp"
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "verify_plan.hpp"
 
 namespace {
 
@@ -19,10 +21,10 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
   l2::make_folders(dir, "--png");
   for (const l2::ServerPlan& s : layout.servers) {
     const auto path = dir / fmt::format("pipeserver-{}.png", s.server);
-    l2::write_png(path, l2::framebuffer_picture(s));
+    l2::write_png(path, l2::framebuffer_page(s));
     std::cout << "wrote " << path.string() << "\n";
   }
-  l2::write_png(dir / "wall.png", l2::wall_picture(layout));
+  l2::write_png(dir / "wall.png", l2::wall_page(layout));
   std::cout << "wrote " << (dir / "wall.png").string() << "\n";
 }
 
@@ -35,6 +37,20 @@ void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& di
   }
 }
 
+int print_suggestions(const std::string& wall_path) {
+  try {
+    const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);
+    const l2::FitSuggestions fit = l2::suggest_fit(wall);
+    for (const std::string& line : l2::suggestion_lines(wall, fit)) std::cout << line << "\n";
+    const bool any = fit.fits || fit.height_at_width || fit.width_at_height ||
+                     !fit.policies.empty() || fit.server_count;
+    return any ? 0 : 1;
+  } catch (const l2::LayoutError& e) {
+    std::cerr << "tilelayout: " << e.what() << "\n";
+    return 1;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -43,40 +59,64 @@ int main(int argc, char** argv) {
       "tile sits in its framebuffer (spec §4), and prints the plan.\n"
       "Without WALL it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
-      "3 output files could not be written."};
+      "3 output files could not be written, 4 --verify found pixels out of place."};
   std::string wall_path;
-  std::string png_dir, scanout_dir;
+  std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
-  bool print_default = false;
+  bool print_default = false, suggest = false;
   CLI::Option* const wall_option =
       app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
           ->type_name("WALL.toml");
   CLI::Option* const png_option =
       app.add_option("--png", png_dir,
-                     "write pictures to DIR: pipeserver-N.png (framebuffer: header gaps white, "
-                     "tiles coloured by display) and wall.png (tiles coloured and labelled by "
-                     "pipeserver)")
+                     "write pictures to DIR, each with a legend: pipeserver-N.png (framebuffer: "
+                     "header gaps white, tiles coloured by display, labelled D<display> "
+                     "L<logical tile>) and wall.png (tiles coloured by pipeserver, labelled "
+                     "P<pipeserver> L<logical tile>)")
           ->type_name("DIR");
   CLI::Option* const scanout_option =
       app.add_option("--scanout", scanout_dir,
                      "write scanout-N.png to DIR: the 24-bit frame each pipeserver would scan out, "
                      "every header drawn, every tile filled with the routing test pattern")
           ->type_name("DIR");
-  // Options that would be ignored are usage errors: a --parity without --scanout, or a wall or
-  // picture folder with --print-default.
-  app.add_option("--parity", parity, "frame parity for --scanout headers")
-      ->check(CLI::Range(0, 1))
-      ->needs(scanout_option);
+  CLI::Option* const verify_option =
+      app.add_option("--verify", verify_dir,
+                     "scan out, route and check in one step: every pipeserver's --scanout frame "
+                     "routed through the emulated mesh (DIR/scanout-N.png, DIR/display-D.png) and "
+                     "every display pixel checked against the plan as lightning2_emu route "
+                     "--verify does (DIR/verify-D.png, the report on stdout); exit 4 when any "
+                     "pixel is wrong")
+          ->type_name("DIR");
+  // Options that would be ignored are usage errors: a --parity without --scanout or --verify,
+  // or a wall or picture folder with --print-default.
+  app.add_option("--parity", parity, "frame parity for --scanout and --verify headers")
+      ->check(CLI::Range(0, 1));
+  app.add_flag("--suggest", suggest,
+               "print values that make the wall fit, each changed alone: the smallest "
+               "framebuffer_height at its framebuffer_width and framebuffer_width at its height "
+               "(header gaps included), the other assignment policies that fit and the fewest "
+               "pipeservers that fit at its framebuffer size; exit 0, 1 when none fits")
+      ->excludes(png_option)
+      ->excludes(scanout_option)
+      ->excludes(verify_option);
   app.add_flag("--print-default", print_default, "print the built-in default wall file, exit")
       ->excludes(wall_option)
       ->excludes(png_option)
-      ->excludes(scanout_option);
+      ->excludes(scanout_option)
+      ->excludes(verify_option)
+      ->excludes("--suggest");
+  app.callback([&] {
+    if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {
+      throw CLI::ValidationError("--parity requires --scanout or --verify");
+    }
+  });
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
   if (print_default) {
     std::cout << l2::default_wall_toml();
     return 0;
   }
+  if (suggest) return print_suggestions(wall_path);
   l2::TileLayout layout;
   try {
     const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);
@@ -89,6 +129,7 @@ int main(int argc, char** argv) {
   try {
     if (!png_dir.empty()) write_pictures(layout, png_dir);
     if (!scanout_dir.empty()) write_scanout(layout, scanout_dir, parity == 1);
+    if (!verify_dir.empty()) return l2::verify_plan(layout, verify_dir, parity == 1);
   } catch (const std::exception& e) {
     std::cerr << "tilelayout: " << e.what() << "\n";
     return 3;

@@ -68,6 +68,12 @@ std::vector<int> deal(const std::vector<int>& order, int servers) {
 
 }  // namespace
 
+const char* to_string(AssignmentPolicy policy) {
+  static const char* const kNames[] = {"round-robin", "zig-zag", "spiral", "blocks",
+                                       "area-balanced"};
+  return kNames[static_cast<int>(policy)];
+}
+
 std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
                                 const std::vector<long long>& weights, int server_count,
                                 Rect canvas) {

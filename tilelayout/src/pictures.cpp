@@ -1,9 +1,15 @@
 #include "tilelayout/pictures.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
+#include <vector>
 
-#include "digit_font.hpp"
+#include "displays/bitmap_font.hpp"
+#include "displays/legend.hpp"
 
 namespace l2 {
 namespace {
@@ -20,13 +26,27 @@ void outline(RgbImage& img, const Rect& r, Rgb c, int thickness) {
   img.fill_rect(r.right() - thickness, r.y, thickness, r.h, c);
 }
 
-// A label centred in `r`, as large as fits a quarter of its height; none if it cannot fit.
-void label(RgbImage& img, const Rect& r, int value) {
-  int scale = std::max(1, std::min(r.h / 4 / 5, 12));
-  while (scale > 1 && number_width(value, scale) > r.w - 4) --scale;
-  const int w = number_width(value, scale), h = number_height(scale);
-  if (w > r.w - 2 || h > r.h - 2) return;
-  draw_number(img, r.x + (r.w - w) / 2, r.y + (r.h - h) / 2, value, scale, kLabel);
+// A label centred in `r`, as large as fits a quarter of its height: `text`, or `fallback`
+// where it does not fit; none if neither does.
+void label(RgbImage& img, const Rect& r, const std::string& text, const std::string& fallback) {
+  for (const std::string& t : {text, fallback}) {
+    int scale = std::max(1, std::min(r.h / 4 / kGlyphHeight, 12));
+    while (scale > 1 && text_width(t, scale) > r.w - 4) --scale;
+    const int w = text_width(t, scale), h = kGlyphHeight * scale;
+    if (w > r.w - 2 || h > r.h - 2) continue;
+    draw_text(img, r.x + (r.w - w) / 2, r.y + (r.h - h) / 2, t, kLabel, scale);
+    return;
+  }
+}
+
+// Header gaps are two columns: at least that, wider on large framebuffers so they still show
+// when the picture is viewed scaled down (drawn over the first columns of the tile).
+int gap_width(const ServerPlan& plan) {
+  return std::max(2, std::max(plan.fb_width, plan.fb_height) / 256);
+}
+
+int wall_scale(const Wall& wall) {
+  return std::max(1, (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096);
 }
 
 }  // namespace
@@ -62,26 +82,46 @@ Rgb palette_colour(int i) {
 
 RgbImage framebuffer_picture(const ServerPlan& plan) {
   RgbImage img(plan.fb_width, plan.fb_height, kUnused);
-  for (const PackedRow& row : plan.rows) {
-    for (int i = row.first_tile; i < row.first_tile + row.tile_count; ++i) {
-      const int gap = gap_columns(plan.tiles[i].tile);
-      img.fill_rect(plan.tiles[i].fb_x - gap, row.y, gap, row.height, kGap);
-    }
-  }
   for (const PackedTile& p : plan.tiles) {
     const Rect r{p.fb_x, p.fb_y, payload_columns(p.tile), p.tile.on_display.h};
     img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(p.tile.display));
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
-    label(img, r, p.tile.display);
+    label(img, r, fmt::format("D{} L{}", p.tile.display, p.tile.logical_tile),
+          std::to_string(p.tile.display));
+  }
+  // Drawn over the tiles' first columns where a gap is drawn wider than it is, so that it shows
+  // when the picture is scaled down.
+  const int drawn = gap_width(plan);
+  for (const PackedRow& row : plan.rows) {
+    for (int i = row.first_tile; i < row.first_tile + row.tile_count; ++i) {
+      const int gap = gap_columns(plan.tiles[i].tile);
+      img.fill_rect(plan.tiles[i].fb_x - gap, row.y, std::max(gap, drawn), row.height, kGap);
+    }
   }
   return img;
+}
+
+RgbImage framebuffer_page(const ServerPlan& plan) {
+  const int gap = gap_width(plan);
+  std::vector<LegendEntry> legend{
+      {gap == 2 ? std::string("header gap: the 2 columns before every tile")
+                : fmt::format("header gap: the 2 columns before every tile (drawn {} wide)", gap),
+       kGap},
+      {"unused (black when scanned out)", kUnused}};
+  std::set<int> displays;
+  for (const PackedTile& p : plan.tiles) displays.insert(p.tile.display);
+  for (int d : displays)
+    legend.push_back({fmt::format("tiles for display {}", d), palette_colour(d)});
+  legend.push_back(
+      {"labels: D display the tile goes to, L logical tile (tilelayout lists them)", {}, false});
+  return with_legend(framebuffer_picture(plan), legend);
 }
 
 RgbImage wall_picture(const TileLayout& layout) {
   const Wall& wall = layout.wall;
   // Large canvases are drawn smaller, by a whole factor, so the picture stays at most 4096
   // pixels on its longer side.
-  const int scale = std::max(1, (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096);
+  const int scale = wall_scale(wall);
   const auto shrink = [scale](const Rect& r) {
     const int x0 = r.x / scale, y0 = r.y / scale;
     return Rect{x0, y0, (r.right() + scale - 1) / scale - x0,
@@ -96,10 +136,25 @@ RgbImage wall_picture(const TileLayout& layout) {
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
     const Rect r = shrink(layout.tiles[i].on_canvas);
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
-    label(img, r, layout.tile_server[i]);
+    label(img, r, fmt::format("P{} L{}", layout.tile_server[i], layout.tiles[i].logical_tile),
+          std::to_string(layout.tile_server[i]));
   }
   for (const Display& d : wall.displays) outline(img, shrink(d.on_canvas()), {255, 255, 255}, 2);
   return img;
+}
+
+RgbImage wall_page(const TileLayout& layout) {
+  std::vector<LegendEntry> legend;
+  for (const ServerPlan& s : layout.servers) {
+    legend.push_back(
+        {fmt::format("tiles pipeserver {} renders", s.server), palette_colour(s.server)});
+  }
+  legend.push_back({"mullions: canvas no display shows", kUnused});
+  legend.push_back({"display edges", {255, 255, 255}});
+  legend.push_back({"labels: P pipeserver, L logical tile (tilelayout lists them)", {}, false});
+  const int scale = wall_scale(layout.wall);
+  if (scale > 1) legend.push_back({fmt::format("drawn at 1/{} size", scale), {}, false});
+  return with_legend(wall_picture(layout), legend);
 }
 
 }  // namespace l2

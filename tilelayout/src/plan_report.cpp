@@ -5,12 +5,12 @@
 #include <set>
 
 #include "tilelayout/coverage.hpp"
+#include "tilelayout/planner.hpp"
 
 namespace l2 {
 namespace {
 
 const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
-const char* const kPolicyNames[] = {"round-robin", "zig-zag", "spiral", "blocks", "area-balanced"};
 
 void servers(const TileLayout& layout, std::string& out) {
   for (const ServerPlan& s : layout.servers) {
@@ -63,7 +63,7 @@ std::string format_plan(const TileLayout& layout) {
       w.name, w.source.empty() ? std::string("built in code") : w.source.string(), w.canvas_width,
       w.canvas_height, w.displays.size(), kTilingNames[static_cast<int>(w.tiling.kind)],
       layout.logical_tiles.size(), layout.tiles.size(), w.server_count, w.framebuffer_width,
-      w.framebuffer_height, kPolicyNames[static_cast<int>(w.assignment)]);
+      w.framebuffer_height, to_string(w.assignment));
   servers(layout, out);
   displays(layout, out);
   for (const std::string& warning : layout.warnings) out += warning + "\n";

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "tilelayout/coverage.hpp"
+#include "tilelayout/fit.hpp"
 
 namespace l2 {
 namespace {
@@ -24,7 +25,33 @@ std::string where(const Wall& wall, int line) {
   return fmt::format("{}:{}: ", wall.source.string(), line);
 }
 
+std::vector<int> server_of_logical(const Wall& wall, const std::vector<Rect>& logical,
+                                   const std::vector<DisplayTile>& tiles, AssignmentPolicy policy,
+                                   int server_count) {
+  std::vector<long long> visible(logical.size(), 0);
+  for (const DisplayTile& t : tiles) visible[t.logical_tile] += t.on_display.area();
+  return assign_servers(policy, logical, visible, server_count,
+                        {0, 0, wall.canvas_width, wall.canvas_height});
+}
+
+// The error with what would fit appended: "...; fits with framebuffer_height = 200 ...".
+LayoutError not_fitting(const Wall& wall, int line, const std::string& what) {
+  const std::string hint = fit_hint(suggest_fit(wall));
+  return LayoutError(where(wall, line) + what + (hint.empty() ? "" : "; " + hint));
+}
+
 }  // namespace
+
+std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
+                                                        const std::vector<Rect>& logical,
+                                                        const std::vector<DisplayTile>& tiles,
+                                                        AssignmentPolicy policy, int server_count) {
+  const std::vector<int> server_of = server_of_logical(wall, logical, tiles, policy, server_count);
+  std::vector<std::vector<DisplayTile>> lists(server_count);
+  for (const DisplayTile& t : tiles) lists[server_of[t.logical_tile]].push_back(t);
+  for (auto& list : lists) list = packing_order(std::move(list));
+  return lists;
+}
 
 TileLayout plan_layout(const Wall& wall) {
   TileLayout layout;
@@ -32,24 +59,26 @@ TileLayout plan_layout(const Wall& wall) {
   layout.logical_tiles = make_logical_tiles(wall);
   layout.tiles = split_at_displays(wall, layout.logical_tiles);
 
-  std::vector<long long> visible(layout.logical_tiles.size(), 0);
-  for (const DisplayTile& t : layout.tiles) visible[t.logical_tile] += t.on_display.area();
-  const std::vector<int> server_of =
-      assign_servers(wall.assignment, layout.logical_tiles, visible, wall.server_count,
-                     {0, 0, wall.canvas_width, wall.canvas_height});
-
-  std::vector<std::vector<DisplayTile>> lists(wall.server_count);
-  for (const DisplayTile& t : layout.tiles) {
-    layout.tile_server.push_back(server_of[t.logical_tile]);
-    lists[server_of[t.logical_tile]].push_back(t);
-  }
+  const std::vector<int> server_of = server_of_logical(wall, layout.logical_tiles, layout.tiles,
+                                                       wall.assignment, wall.server_count);
+  for (const DisplayTile& t : layout.tiles) layout.tile_server.push_back(server_of[t.logical_tile]);
+  const std::vector<std::vector<DisplayTile>> lists = server_tile_lists(
+      wall, layout.logical_tiles, layout.tiles, wall.assignment, wall.server_count);
   for (int s = 0; s < wall.server_count; ++s) {
     try {
-      layout.servers.push_back(pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height,
-                                          packing_order(std::move(lists[s]))));
+      layout.servers.push_back(
+          pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, lists[s]));
     } catch (const LayoutError& e) {
-      throw LayoutError(where(wall, wall.framebuffer_line) + e.what());
+      throw not_fitting(wall, wall.framebuffer_line, e.what());
     }
+  }
+  for (const ServerPlan& s : layout.servers) {
+    if (!s.tiles.empty()) continue;
+    throw not_fitting(wall, 0,
+                      fmt::format("pipeserver {} gets no tiles ({} display tiles for {} "
+                                  "pipeservers); every pipeserver needs a tile (one without "
+                                  "scans out idle frames, which never earn READY)",
+                                  s.server, layout.tiles.size(), layout.servers.size()));
   }
   for (const std::string& w : coverage_warnings(wall, display_coverage(wall, layout.tiles))) {
     layout.warnings.push_back(where(wall, 0) + "warning: " + w);

@@ -11,6 +11,8 @@
 
 #include "image/png_io.hpp"
 #include "routing_check.hpp"
+#include "tilelayout/pictures.hpp"
+#include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -167,6 +169,17 @@ std::vector<fs::path> example_walls() {
   return out;
 }
 
+// `page` begins with `picture`: its top-left corner holds it pixel for pixel (the legend is
+// below, and may make the page wider).
+void expect_on_top(const RgbImage& page, const RgbImage& picture, const std::string& what) {
+  ASSERT_GE(page.width(), picture.width()) << what;
+  ASSERT_GE(page.height(), picture.height()) << what;
+  for (int y = 0; y < picture.height(); ++y) {
+    ASSERT_TRUE(std::equal(picture.row(y).begin(), picture.row(y).end(), page.row(y).begin()))
+        << what << ": row " << y;
+  }
+}
+
 // One test per example wall, so CTest can run them side by side.
 class CliWall : public Cli, public ::testing::WithParamInterface<fs::path> {};
 
@@ -178,19 +191,25 @@ TEST_P(CliWall, ScanoutFramesRouteEveryDisplayPixelOnce) {
                          (dir_ / "scan").string() + "' --png '" + (dir_ / "png").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const Wall wall = load_wall(path);
+  const TileLayout layout = plan_layout(wall);
   std::vector<RgbImage> frames;
   for (int s = 0; s < wall.server_count; ++s) {
     frames.push_back(read_png(dir_ / "scan" / ("scanout-" + std::to_string(s) + ".png")));
     EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
     EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
     const RgbImage pic = read_png(dir_ / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
-    EXPECT_EQ(pic.width(), wall.framebuffer_width);
+    EXPECT_GE(pic.width(), wall.framebuffer_width);
+    EXPECT_GT(pic.height(), wall.framebuffer_height);  // the legend below
+    expect_on_top(pic, framebuffer_picture(layout.servers[s]), "pipeserver " + std::to_string(s));
   }
   const RgbImage wall_png = read_png(dir_ / "png" / "wall.png");
   // Canvases longer than 4096 pixels are drawn shrunk by a whole factor.
   const int scale = (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096;
-  EXPECT_EQ(wall_png.width(), (wall.canvas_width + scale - 1) / scale);
-  EXPECT_EQ(wall_png.height(), (wall.canvas_height + scale - 1) / scale);
+  const RgbImage wall_pic = wall_picture(layout);
+  EXPECT_EQ(wall_pic.width(), (wall.canvas_width + scale - 1) / scale);
+  EXPECT_EQ(wall_pic.height(), (wall.canvas_height + scale - 1) / scale);
+  EXPECT_GT(wall_png.height(), wall_pic.height());  // the legend below
+  expect_on_top(wall_png, wall_pic, "wall.png");
   const RoutingCheck c = check_routing(wall, frames, true);
   long long visible = 0;
   for (const Display& d : wall.displays) visible += 1LL * d.width * d.height;
@@ -207,6 +226,75 @@ INSTANTIATE_TEST_SUITE_P(ExampleWalls, CliWall, ::testing::ValuesIn(example_wall
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
+
+}  // namespace
+}  // namespace l2
+
+namespace l2 {
+namespace {
+
+// The wall of Planner.TilesThatDoNotFitSayWhatWould (planner_test.cpp, where the values are
+// worked out): --suggest prints them, the plain run names them after its error.
+constexpr const char* kTightWallFile = R"([display_grid]
+columns = 1
+rows = 1
+width = 600
+height = 100
+[tiling]
+kind = "list"
+tiles = [[0, 0, 200, 100], [200, 0, 100, 100], [300, 0, 200, 100], [500, 0, 100, 100]]
+[pipeservers]
+count = 2
+framebuffer_width = 310
+framebuffer_height = 100
+)";
+
+TEST_F(Cli, SuggestPrintsWhatFits) {
+  const fs::path wall = write("tight.toml", kTightWallFile);
+  ChildRun r = run("--suggest '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "as written (310x100, 2 pipeservers, round-robin): does not fit\n"
+            "framebuffer_height = 200 (at framebuffer_width = 310)\n"
+            "framebuffer_width = 404 (at framebuffer_height = 100)\n"
+            "framebuffer_width = 202, framebuffer_height = 200: the smallest framebuffer\n"
+            "assignment = \"blocks\" (at 310x100, 2 pipeservers)\n"
+            "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)\n"
+            "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n");
+  r = run("'" + wall.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
+                       ":12: pipeserver 0: tile 1 (display 0, 200x100 at 300,0) does not fit the "
+                       "310x100 framebuffer: needs 200 rows, 100 too many; what would fit, each "
+                       "alone: framebuffer_height = 200; framebuffer_width = 404; assignment = "
+                       "\"blocks\" or \"area-balanced\"; pipeservers.count = 3\n");
+  // A suggested value, written into the wall, plans.
+  const fs::path fixed =
+      write("fixed.toml", std::string(kTightWallFile) + "assignment = \"blocks\"\n");
+  EXPECT_EQ(run("'" + fixed.string() + "'").status, 0);
+}
+
+TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
+  // One 100x50 tile on one 200x60 framebuffer: 102 columns and 50 rows would do.
+  const fs::path wall = write("roomy.toml",
+                              "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 50\n"
+                              "[tiling]\nkind = \"grid\"\ntile_width = 100\ntile_height = 50\n"
+                              "[pipeservers]\ncount = 1\nframebuffer_width = 200\n"
+                              "framebuffer_height = 60\n");
+  const ChildRun r = run("--suggest '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "as written (200x60, 1 pipeserver, round-robin): fits\n"
+            "framebuffer_height = 50 (at framebuffer_width = 200)\n"
+            "framebuffer_width = 102 (at framebuffer_height = 60)\n"
+            "framebuffer_width = 102, framebuffer_height = 50: the smallest framebuffer\n"
+            "assignment = \"zig-zag\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"spiral\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"blocks\" (at 200x60, 1 pipeserver)\n"
+            "assignment = \"area-balanced\" (at 200x60, 1 pipeserver)\n"
+            "pipeservers.count = 1 (at 200x60, round-robin): the fewest that fit\n");
+}
 
 }  // namespace
 }  // namespace l2

@@ -46,6 +46,45 @@ TEST(Pictures, FramebufferShowsGapsTilesByDisplayAndUnusedSpace) {
   EXPECT_EQ(pic.at(10, 40), kUnused);  // below the last row
 }
 
+TEST(Pictures, HeaderGapsOfLargeFramebuffersAreDrawnWider) {
+  // 1024 columns: a 2-column gap would vanish when the picture is viewed scaled down, so it is
+  // drawn 1024 / 256 = 4 wide, over the tile's first 2 columns.
+  const ServerPlan plan = pack_tiles(0, 1024, 100, {tile(3, 40, 30)});
+  const RgbImage pic = framebuffer_picture(plan);
+  for (int x = 0; x < 4; ++x) EXPECT_EQ(pic.at(x, 5), (Rgb{255, 255, 255})) << x;
+  EXPECT_EQ(pic.at(4, 5), palette_colour(3));
+}
+
+TEST(Pictures, TilesAreLabelledWithDisplayAndLogicalTile) {
+  // "D3 L0" in the 5x7 font at scale 1 is 29 pixels wide: centred in the 40x30 tile at
+  // columns 2..41, it starts at column 2 + (40 - 29) / 2 = 7, row (30 - 7) / 2 = 11. The D's
+  // top row is ink in its first four columns.
+  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
+  const RgbImage pic = framebuffer_picture(plan);
+  EXPECT_EQ(pic.at(7, 11), (Rgb{0, 0, 0}));
+  EXPECT_EQ(pic.at(6, 11), palette_colour(3));
+}
+
+TEST(Pictures, PagesCarryALegend) {
+  // Legend lines are 10 pixels (scale 1 up to 640 columns), after 2 pixels of space: the gap,
+  // unused, one display, the labels line, and 2 pixels below.
+  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
+  const RgbImage page = framebuffer_page(plan);
+  EXPECT_EQ(page.height(), 50 + 4 * 10 + 4);
+  EXPECT_EQ(page.at(3, 52), (Rgb{255, 255, 255}));  // swatch: header gap
+  EXPECT_EQ(page.at(3, 62), kUnused);               // swatch: unused
+  EXPECT_EQ(page.at(3, 72), palette_colour(3));     // swatch: display 3
+  EXPECT_EQ(page.at(3, 82), (Rgb{0, 0, 0}));        // the labels line has no swatch
+  EXPECT_GT(page.width(), 100);                     // the longest line is wider than the picture
+
+  const TileLayout layout = plan_layout(default_wall());
+  const RgbImage wall = wall_page(layout);
+  // 1300 columns: scale 2, lines of 20; 4 pipeservers, mullions, edges, labels.
+  EXPECT_EQ(wall.height(), 980 + 7 * 20 + 8);
+  EXPECT_EQ(wall.at(6, 980 + 4 + 3 * 20), palette_colour(3));
+  EXPECT_EQ(wall.at(6, 980 + 4 + 4 * 20), kUnused);
+}
+
 TEST(Pictures, WallIsColouredByPipeserverAndShrunkWhenHuge) {
   const TileLayout small = plan_layout(default_wall());
   RgbImage pic = wall_picture(small);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "tilelayout/coverage.hpp"
+#include "tilelayout/fit.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -195,7 +196,123 @@ TEST(Planner, PackingErrorsNameFileLineServerAndTile) {
   } catch (const LayoutError& e) {
     EXPECT_STREQ(e.what(),
                  "walls/small.toml:13: pipeserver 0: tile 1 (display 0, 100x40 at 0,40) does not "
-                 "fit the 200x60 framebuffer: needs 80 rows, 20 too many");
+                 "fit the 200x60 framebuffer: needs 80 rows, 20 too many; what would fit, each "
+                 "alone: framebuffer_height = 80; framebuffer_width = 204; pipeservers.count = 2");
+  }
+}
+
+// Four tiles of 200 and 100 columns, dealt round-robin to two 310x100 framebuffers: pipeserver
+// 0 gets both 200-column tiles (202 + 202 columns with their gaps: two rows, 200 rows). What
+// fits instead, worked out by hand: 200 rows; or 404 columns (one row); or blocks (0,1 | 2,3)
+// or area-balanced (0,1 | 2,3: largest first, ties to the lower pipeserver), 304 columns each;
+// not zig-zag (one tile row: round-robin again) nor spiral (ring 0: tile 1, ring 1 clockwise
+// from the top-left: 2, 3, 0, so pipeserver 1 gets 2 and 0); or 3 pipeservers (0,3 | 1 | 2).
+constexpr const char* kTightWall = R"(name = "four tiles, two pipeservers"
+[display_grid]
+columns = 1
+rows = 1
+width = 600
+height = 100
+[tiling]
+kind = "list"
+tiles = [[0, 0, 200, 100], [200, 0, 100, 100], [300, 0, 200, 100], [500, 0, 100, 100]]
+[pipeservers]
+count = 2
+framebuffer_width = 310
+framebuffer_height = 100
+)";
+
+TEST(Planner, TilesThatDoNotFitSayWhatWould) {
+  const Wall wall = parse_wall(kTightWall, "walls/tight.toml");
+  const FitSuggestions fit = suggest_fit(wall);
+  EXPECT_FALSE(fit.fits);
+  EXPECT_EQ(fit.height_at_width, 200);
+  EXPECT_EQ(fit.width_at_height, 404);
+  // 202 columns hold one 200-column tile a row: two rows of 100 on both pipeservers (pipeserver
+  // 1's 102 + 102 columns do not fit 202 either); 202 x 200 = 404 x 100, the narrower kept.
+  EXPECT_EQ(fit.smallest, (std::pair{202, 200}));
+  EXPECT_EQ(fit.policies, (std::vector<AssignmentPolicy>{AssignmentPolicy::Blocks,
+                                                         AssignmentPolicy::AreaBalanced}));
+  EXPECT_EQ(fit.server_count, 3);
+  EXPECT_EQ(suggestion_lines(wall, fit),
+            (std::vector<std::string>{
+                "as written (310x100, 2 pipeservers, round-robin): does not fit",
+                "framebuffer_height = 200 (at framebuffer_width = 310)",
+                "framebuffer_width = 404 (at framebuffer_height = 100)",
+                "framebuffer_width = 202, framebuffer_height = 200: the smallest framebuffer",
+                "assignment = \"blocks\" (at 310x100, 2 pipeservers)",
+                "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)",
+                "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit"}));
+  try {
+    plan_layout(wall);
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "walls/tight.toml:13: pipeserver 0: tile 1 (display 0, 200x100 at 300,0) does not "
+                 "fit the 310x100 framebuffer: needs 200 rows, 100 too many; what would fit, each "
+                 "alone: framebuffer_height = 200; framebuffer_width = 404; assignment = "
+                 "\"blocks\" or \"area-balanced\"; pipeservers.count = 3");
+  }
+  // Each suggestion, applied alone, plans.
+  Wall w = wall;
+  w.framebuffer_height = 200;
+  EXPECT_NO_THROW(plan_layout(w));
+  w = wall;
+  w.framebuffer_width = 404;
+  EXPECT_NO_THROW(plan_layout(w));
+  w = wall;
+  w.assignment = AssignmentPolicy::Blocks;
+  EXPECT_NO_THROW(plan_layout(w));
+  w = wall;
+  w.server_count = 3;
+  EXPECT_NO_THROW(plan_layout(w));
+  w = wall;
+  w.framebuffer_height = 199;
+  EXPECT_THROW(plan_layout(w), LayoutError);
+  w = wall;
+  w.framebuffer_width = 403;
+  EXPECT_THROW(plan_layout(w), LayoutError);
+}
+
+TEST(Planner, PipeserverWithoutTilesIsRefused) {
+  try {
+    plan_layout(
+        parse_wall("[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
+                   "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 240\n"
+                   "[pipeservers]\ncount = 2\nframebuffer_width = 400\n"
+                   "framebuffer_height = 300\n",
+                   "walls/idle.toml"));
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "walls/idle.toml: pipeserver 1 gets no tiles (1 display tiles for 2 "
+                 "pipeservers); every pipeserver needs a tile (one without scans out idle frames, "
+                 "which never earn READY); what would fit, each alone: pipeservers.count = 1");
+  }
+}
+
+}  // namespace
+}  // namespace l2
+
+namespace l2 {
+namespace {
+
+TEST(Planner, TilesTooLargeEitherWayNeedBothSides) {
+  // Two 250x250 tiles on one 100x100 framebuffer: too narrow and too low. 252 columns hold one
+  // tile a row, two rows of 250.
+  try {
+    plan_layout(
+        parse_wall("[display_grid]\ncolumns = 1\nrows = 1\nwidth = 250\nheight = 500\n"
+                   "[tiling]\nkind = \"grid\"\ntile_width = 250\ntile_height = 250\n"
+                   "[pipeservers]\ncount = 1\nframebuffer_width = 100\n"
+                   "framebuffer_height = 100\n",
+                   "walls/big.toml"));
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "walls/big.toml:13: pipeserver 0: tile 0 (display 0, 250x250 at 0,0) does not "
+                 "fit the 100x100 framebuffer: needs 252 columns, 152 too many; what would fit, "
+                 "each alone: framebuffer_width = 252 with framebuffer_height = 500");
   }
 }
 

@@ -130,6 +130,9 @@ TEST(WallFile, UnknownKeysAreErrors) {
 TEST(WallFile, FieldRangesAndTypes) {
   EXPECT_EQ(error_of(replace(kBase, "tile_width = 50", "tile_width = 0")),
             "walls/t.toml:10: tiling.tile_width: must be 1..4095, got 0");
+  // 300 pipeservers planned here, and every run refused them: the mesh has 256 inputs at most.
+  EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 300\n")),
+            "walls/t.toml:13: pipeservers.count: must be 1..256, got 300");
   EXPECT_EQ(error_of(replace(kBase, "width = 100", "width = 4096")),
             "walls/t.toml:5: display_grid.width: must be 1..4095, got 4096");
   EXPECT_EQ(error_of(replace(kBase, "tile_width = 50", "tile_width = \"50\"")),

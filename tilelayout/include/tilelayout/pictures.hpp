@@ -10,13 +10,18 @@ namespace l2 {
 // A distinct, bright colour for index i (displays, pipeservers).
 Rgb palette_colour(int i);
 
-// One pipeserver framebuffer: header gaps white, tiles in their destination display's colour
-// and labelled with the display number, unused space dark grey.
+// One pipeserver framebuffer: header gaps white (wider than 2 columns on large framebuffers, so
+// they show scaled down), tiles in their destination display's colour and labelled "D<display>
+// L<logical tile>" (the display alone where that does not fit), unused space dark grey.
 RgbImage framebuffer_picture(const ServerPlan& plan);
+// The same with a legend below: what the colours and labels mean (tilelayout --png).
+RgbImage framebuffer_page(const ServerPlan& plan);
 
 // The canvas (shrunk by a whole factor when longer than 4096 pixels): mullions dark grey, display
 // edges outlined, each display tile in its pipeserver's colour with a dark outline and labelled
-// with the pipeserver number.
+// "P<pipeserver> L<logical tile>" (the pipeserver alone where that does not fit).
 RgbImage wall_picture(const TileLayout& layout);
+// The same with a legend below (tilelayout --png).
+RgbImage wall_page(const TileLayout& layout);
 
 }  // namespace l2

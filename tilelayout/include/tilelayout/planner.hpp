@@ -10,8 +10,11 @@
 
 namespace l2 {
 
-// The whole plan. Throws LayoutError (file, line, what does not fit) when a pipeserver's tiles
-// do not fit its framebuffer or the tiling cannot be cut. Uncovered display areas are warnings.
+// The whole plan. Throws LayoutError (file, line, what does not fit, and what would: see
+// fit.hpp) when a pipeserver's tiles do not fit its framebuffer, a pipeserver gets no tile (it
+// would scan out idle frames only, which never earn READY: spec §6) or the tiling cannot be
+// cut. Uncovered display areas are warnings. Every program plans through here, so all accept
+// and refuse the same walls with the same words.
 TileLayout plan_layout(const Wall& wall);
 
 // The steps of plan_layout, exposed so each can be checked on its own.
@@ -31,5 +34,15 @@ std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<R
 std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
                                 const std::vector<long long>& weights, int server_count,
                                 Rect canvas);
+
+// The wall-file name of a policy: "round-robin", "zig-zag", "spiral", "blocks", "area-balanced".
+const char* to_string(AssignmentPolicy policy);
+
+// What assign_servers gives `server_count` pipeservers under `policy`: each one's display
+// tiles in packing order (tallest first, then tiling order), as pack_tiles takes them.
+std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
+                                                        const std::vector<Rect>& logical,
+                                                        const std::vector<DisplayTile>& tiles,
+                                                        AssignmentPolicy policy, int server_count);
 
 }  // namespace l2

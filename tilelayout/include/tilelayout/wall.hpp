@@ -20,6 +20,10 @@ struct Display {
   Rect on_canvas() const { return {canvas_x, canvas_y, width, height}; }
 };
 
+// Every pipeserver is a mesh input: 64 board rows of 4 inputs (spec §5; lightning2_emu's
+// Mesh::kMaxRows x Board::kInputs). More would plan and then be refused by every run.
+inline constexpr int kMaxPipeservers = 256;
+
 enum class TilingKind { Grid, List, KdSplit, Strips };
 enum class AssignmentPolicy { RoundRobin, ZigZag, Spiral, Blocks, AreaBalanced };
 

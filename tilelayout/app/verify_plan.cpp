@@ -1,0 +1,32 @@
+#include "verify_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "image/folders.hpp"
+#include "image/png_io.hpp"
+#include "tilelayout/test_frame.hpp"
+#include "verify/verify_run.hpp"
+
+namespace l2 {
+
+int verify_plan(const TileLayout& layout, const std::filesystem::path& dir, bool parity) {
+  make_folders(dir, "--verify");
+  std::vector<RgbImage> frames;
+  for (const ServerPlan& s : layout.servers) {
+    frames.push_back(test_frame(s, parity));
+    write_png(dir / fmt::format("scanout-{}.png", s.server), frames.back());
+  }
+  const std::vector<RgbImage> shown = route_on_wall(layout.wall, frames);
+  std::vector<const RgbImage*> routed;
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    write_png(dir / fmt::format("display-{}.png", layout.wall.displays[i].id), shown[i]);
+    routed.push_back(&shown[i]);
+  }
+  std::cout << fmt::format("wrote {}/scanout-<n>.png and display-<d>.png: scanned out, routed\n",
+                           dir.string());
+  return verify_and_report(layout, frames, routed, dir, std::cout) ? 0 : kExitRoutingWrong;
+}
+
+}  // namespace l2

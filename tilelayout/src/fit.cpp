@@ -1,0 +1,188 @@
+#include "tilelayout/fit.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "strip_headers/strip_header.hpp"
+#include "tilelayout/planner.hpp"
+
+namespace l2 {
+namespace {
+
+using Lists = std::vector<std::vector<DisplayTile>>;
+
+// Rows a pipeserver's tiles need at framebuffer width `width` (pack_tiles, rows unbounded);
+// none when a tile is wider than the framebuffer or cannot be encoded.
+std::optional<int> needed_height(const std::vector<DisplayTile>& tiles, int width) {
+  try {
+    return pack_tiles(0, width, std::numeric_limits<int>::max(), tiles).used_height();
+  } catch (const LayoutError&) {
+    return std::nullopt;
+  }
+}
+
+bool every_server_has_tiles(const Lists& lists) {
+  return std::none_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); });
+}
+
+// The rows the fullest pipeserver needs at `width`; none as for needed_height.
+std::optional<int> tallest(const Lists& lists, int width) {
+  int most = 0;
+  for (const auto& list : lists) {
+    const std::optional<int> h = needed_height(list, width);
+    if (!h) return std::nullopt;
+    most = std::max(most, *h);
+  }
+  return most;
+}
+
+bool fits(const Lists& lists, int width, int height) {
+  const std::optional<int> h = tallest(lists, width);
+  return every_server_has_tiles(lists) && h && *h <= height;
+}
+
+struct Tiles {
+  std::vector<Rect> logical;
+  std::vector<DisplayTile> on_displays;
+};
+
+Lists lists_for(const Wall& wall, const Tiles& t, AssignmentPolicy policy, int servers) {
+  return server_tile_lists(wall, t.logical, t.on_displays, policy, servers);
+}
+
+// Every framebuffer width from the widest tile's up to 4096: the first that holds the tiles
+// within `height` rows, and the width and height of the smallest area that holds them (the
+// narrowest of equal areas).
+struct WidthScan {
+  std::optional<int> width_at_height;
+  std::optional<std::pair<int, int>> smallest;
+};
+
+WidthScan scan_widths(const Lists& lists, int height) {
+  int widest = 1;
+  for (const auto& list : lists) {
+    for (const DisplayTile& t : list) widest = std::max(widest, t.on_display.w);
+  }
+  WidthScan scan;
+  long long best = 0;
+  for (int w = widest + kHeaderPixels; w <= kMaxFramebufferSide; ++w) {
+    const std::optional<int> h = tallest(lists, w);
+    if (!h || *h > kMaxFramebufferSide) continue;
+    if (!scan.width_at_height && *h <= height) scan.width_at_height = w;
+    const int rows = std::max(*h, 1);
+    if (!scan.smallest || static_cast<long long>(w) * rows < best) {
+      scan.smallest = std::pair{w, rows};
+      best = static_cast<long long>(w) * rows;
+    }
+  }
+  return scan;
+}
+
+std::string quoted_policies(const std::vector<AssignmentPolicy>& policies) {
+  std::vector<std::string> names;
+  for (AssignmentPolicy p : policies) names.push_back(fmt::format("\"{}\"", to_string(p)));
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+FitSuggestions suggest_fit(const Wall& wall) {
+  Tiles t;
+  t.logical = make_logical_tiles(wall);
+  t.on_displays = split_at_displays(wall, t.logical);
+  const int w = wall.framebuffer_width, h = wall.framebuffer_height;
+  const Lists lists = lists_for(wall, t, wall.assignment, wall.server_count);
+
+  FitSuggestions fit;
+  fit.fits = fits(lists, w, h);
+  fit.idle_server = !every_server_has_tiles(lists);
+  if (!fit.idle_server) {
+    const std::optional<int> rows = tallest(lists, w);
+    if (rows && *rows <= kMaxFramebufferSide) fit.height_at_width = std::max(*rows, 1);
+    const WidthScan scan = scan_widths(lists, h);
+    fit.width_at_height = scan.width_at_height;
+    fit.smallest = scan.smallest;
+  }
+  for (int p = 0; p <= static_cast<int>(AssignmentPolicy::AreaBalanced); ++p) {
+    const auto policy = static_cast<AssignmentPolicy>(p);
+    if (policy == wall.assignment) continue;
+    if (fits(lists_for(wall, t, policy, wall.server_count), w, h)) fit.policies.push_back(policy);
+  }
+  const int most = std::min<int>(kMaxPipeservers, static_cast<int>(t.logical.size()));
+  for (int n = 1; n <= most; ++n) {
+    if (fits(lists_for(wall, t, wall.assignment, n), w, h)) {
+      fit.server_count = n;
+      break;
+    }
+  }
+  return fit;
+}
+
+std::string fit_hint(const FitSuggestions& fit) {
+  if (fit.fits) return "";
+  std::vector<std::string> parts;
+  if (fit.height_at_width)
+    parts.push_back(fmt::format("framebuffer_height = {}", *fit.height_at_width));
+  if (fit.width_at_height)
+    parts.push_back(fmt::format("framebuffer_width = {}", *fit.width_at_height));
+  if (!fit.height_at_width && !fit.width_at_height && fit.smallest) {
+    parts.push_back(fmt::format("framebuffer_width = {} with framebuffer_height = {}",
+                                fit.smallest->first, fit.smallest->second));
+  }
+  if (!fit.policies.empty()) parts.push_back("assignment = " + quoted_policies(fit.policies));
+  if (fit.server_count) parts.push_back(fmt::format("pipeservers.count = {}", *fit.server_count));
+  if (parts.empty()) return "";
+  std::string out = "what would fit, each alone: ";
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : "; ") + parts[i];
+  return out;
+}
+
+std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions& fit) {
+  const int w = wall.framebuffer_width, h = wall.framebuffer_height;
+  const std::string servers =
+      fmt::format("{} pipeserver{}", wall.server_count, wall.server_count == 1 ? "" : "s");
+  const std::string as_written =
+      fmt::format("{}x{}, {}, {}", w, h, servers, to_string(wall.assignment));
+  std::vector<std::string> lines;
+  lines.push_back(
+      fmt::format("as written ({}): {}", as_written, fit.fits ? "fits" : "does not fit"));
+  // A framebuffer is one board input: past the board limit the limit must grow with it.
+  auto board_note = [&](int value, int board, const char* key) {
+    return value > board ? fmt::format(", and [mesh] {} = {}, now {}", key, value, board)
+                         : std::string();
+  };
+  if (fit.height_at_width) {
+    lines.push_back(fmt::format(
+        "framebuffer_height = {} (at framebuffer_width = {}{})", *fit.height_at_width, w,
+        board_note(*fit.height_at_width, wall.board_max_height, "board_max_height")));
+  }
+  if (fit.width_at_height) {
+    lines.push_back(
+        fmt::format("framebuffer_width = {} (at framebuffer_height = {}{})", *fit.width_at_height,
+                    h, board_note(*fit.width_at_height, wall.board_max_width, "board_max_width")));
+  }
+  if (fit.smallest) {
+    const auto [sw, sh] = *fit.smallest;
+    lines.push_back(
+        fmt::format("framebuffer_width = {}, framebuffer_height = {}: the smallest framebuffer{}{}",
+                    sw, sh, board_note(sw, wall.board_max_width, "board_max_width"),
+                    board_note(sh, wall.board_max_height, "board_max_height")));
+  }
+  for (AssignmentPolicy p : fit.policies) {
+    lines.push_back(fmt::format("assignment = \"{}\" (at {}x{}, {})", to_string(p), w, h, servers));
+  }
+  if (fit.server_count) {
+    lines.push_back(fmt::format("pipeservers.count = {} (at {}x{}, {}): the fewest that fit",
+                                *fit.server_count, w, h, to_string(wall.assignment)));
+  }
+  if (lines.size() == 1) lines.push_back("no single change of these values fits");
+  return lines;
+}
+
+}  // namespace l2

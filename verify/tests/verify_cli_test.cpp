@@ -1,0 +1,143 @@
+// The verifier as users meet it: `tilelayout --scanout` frames, corrupted with the strip-header
+// encoder, checked by `lightning2_emu route --verify`; and `tilelayout --verify` in one step.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "image/png_io.hpp"
+#include "tilelayout/test_pattern.hpp"
+#include "verify/check_picture.hpp"
+#include "verify_test_wall.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+using verify_test::header_at;
+using verify_test::set_header;
+
+struct Result {
+  int status;
+  std::string out;
+};
+
+Result run(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::string out;
+  char buffer[512];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string hex(const StripHeader& h) {
+  return fmt::format("{:012x}", encode(h));
+}
+
+class VerifyCli : public ::testing::Test {
+ protected:
+  fs::path dir = fs::temp_directory_path() /
+                 ("l2-verify-cli-" +
+                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  fs::path wall = dir / "wall.toml";
+  void SetUp() override {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(wall) << verify_test::kWallToml;
+    const Result r = run(
+        fmt::format("{} {} --scanout {}", TILELAYOUT_EXE, wall.string(), (dir / "scan").string()));
+    ASSERT_EQ(r.status, 0) << r.out;
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path scan(int n) const { return dir / "scan" / fmt::format("scanout-{}.png", n); }
+  Result route_verify(const std::string& frames) const {
+    return run(fmt::format("{} route --wall {} --verify --out {} {}", L2_EMU_EXE, wall.string(),
+                           (dir / "out").string(), frames));
+  }
+};
+
+TEST_F(VerifyCli, RouteVerifyNamesSwappedHeaders) {
+  RgbImage frame = read_png(scan(0));
+  const StripHeader to_display_0 = header_at(frame, 2, 5), to_display_1 = header_at(frame, 36, 5);
+  set_header(frame, 2, 5, to_display_1);
+  set_header(frame, 36, 5, to_display_0);
+  write_png(scan(0), frame);
+  const Result r = route_verify(scan(0).string() + " " + scan(1).string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  const std::string out = (dir / "out").string();
+  EXPECT_EQ(r.out,
+            "routed 2 inputs to 2 displays (1x1 boards: 4 inputs, 8 displays, inputs up to "
+            "1280x1024); 0 strip errors; wrote " +
+                out +
+                "\n"
+                "display 0 (64x32) wrong: 2048 planned pixels: 2016 right, 0 missing, 32 "
+                "misplaced; 0 written twice, 0 behind mullions\n"
+                "display 1 (64x32) wrong: 2048 planned pixels: 2016 right, 0 missing, 32 "
+                "misplaced; 0 written twice, 0 behind mullions\n"
+                "misplaced runs: 2\n"
+                "  input 0 row 5 from column 36 (header " +
+                hex(to_display_0) +
+                " COPY f=0 d=0 x=0 y=5 w=32): 32x1 pixels landed on display 0 at 0,5, belong on "
+                "display 1 at 0,5\n"
+                "  input 0 row 5 from column 2 (header " +
+                hex(to_display_1) +
+                " COPY f=0 d=1 x=0 y=5 w=32): 32x1 pixels landed on display 1 at 0,5, belong on "
+                "display 0 at 0,5\n"
+                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips\n"
+                "wrote " +
+                out + "/verify-<d>.png: the displays, wrong pixels marked\n");
+  const RgbImage picture = read_png(dir / "out/verify-0.png");
+  EXPECT_EQ(picture.at(0, 5), kMisplacedColour);
+  EXPECT_EQ(picture.at(31, 5), kMisplacedColour);
+  EXPECT_EQ(picture.at(32, 5).r, test_pattern(0, 32, 5).r / 4);  // right: dimmed to a quarter
+  EXPECT_EQ(picture.at(64, 5), kMarginColour);
+}
+
+TEST_F(VerifyCli, RouteVerifyForgottenInput) {
+  const Result r = route_verify(scan(0).string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("\ndisplay 1 (64x32) wrong: 2048 planned pixels: 1024 right, 1024 "
+                       "missing, 0 misplaced; 0 written twice, 0 behind mullions\n"
+                       "frames given for 1 of the wall's 2 pipeservers: input 1 sent nothing\n"
+                       "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(read_png(dir / "out/verify-1.png").at(40, 0), kMissingColour);
+}
+
+TEST_F(VerifyCli, RouteVerifyOfTheScanOutIsClean) {
+  const Result r = route_verify(scan(0).string() + " " + scan(1).string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\nrouting right: every planned pixel in place on 2 displays\n"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(VerifyCli, RouteVerifyNeedsAWall) {
+  const Result r = run(fmt::format("{} route --displays 64x32 --verify --out {} {}", L2_EMU_EXE,
+                                   (dir / "out").string(), scan(0).string()));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("--verify requires --wall"), std::string::npos) << r.out;
+}
+
+TEST_F(VerifyCli, TilelayoutVerifyScansOutRoutesAndChecks) {
+  const Result r = run(fmt::format("{} {} --verify {} --parity 1", TILELAYOUT_EXE, wall.string(),
+                                   (dir / "v").string()));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\ndisplay 0 (64x32) right: 2048 planned pixels: 2048 right, 0 missing, 0 "
+                       "misplaced; 0 written twice, 0 behind mullions\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\nrouting right: every planned pixel in place on 2 displays\n"),
+            std::string::npos)
+      << r.out;
+  for (const char* name : {"scanout-0.png", "scanout-1.png", "display-0.png", "display-1.png",
+                           "verify-0.png", "verify-1.png"}) {
+    EXPECT_TRUE(fs::exists(dir / "v" / name)) << name;
+  }
+  EXPECT_EQ(read_png(dir / "v/display-1.png").at(40, 7), test_pattern(1, 40, 7));
+}
+
+}  // namespace
+}  // namespace l2
