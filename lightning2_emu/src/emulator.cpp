@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
 namespace l2 {
 
 Emulator::Emulator(const EmulatorConfig& config)
@@ -64,16 +62,13 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
     tick_.swapped_groups.push_back(report_.groups[g].id);
   }
 
-  // 2. Parse, classify, route the new frames. A frame the router predicted (router.hpp) and
-  // found different when writing it is parsed then: decide again on the parse.
+  // 2. Parse, classify, route the new frames.
   router_.scan(frames);
   const int inputs = router_.mesh().input_count();
-  decide(inputs);
-  if (!router_.write(decision_.route)) {
+  router_.write([&] {
     decide(inputs);
-    // Nothing is predicted any more: this write cannot miss.
-    if (!router_.write(decision_.route)) throw std::logic_error("router: a parsed frame missed");
-  }
+    return std::span<const std::uint8_t>(decision_.route);
+  });
   sequencer_.commit(observations_, decision_);
   tick_.kinds = decision_.kinds;
   tick_.ready_inputs = decision_.ready_inputs;
