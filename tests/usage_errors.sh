@@ -121,4 +121,13 @@ bad_value "'4180500a00f' is not a 48-bit hex value (12 hex digits, not 11)" stri
   4180500a00f
 bad_value "'0629400f00a01' is not a 48-bit hex value (12 hex digits, not 13)" strip_headers \
   decode 0629400f00a01
+# The extension word (§7): a KEY needs its colour, a DEPTH has none; kinds and colours exactly.
+bad_value "--kind key needs --key RRGGBB" strip_headers ext --kind key
+bad_value "--kind depth: DEPTH carries no key" strip_headers ext --kind depth --key 000001
+bad_value "'kex' is not key, depth or a kind number 0..15" strip_headers ext --kind kex
+bad_value "'16' is not key, depth or a kind number 0..15" strip_headers ext --kind 16
+bad_value "'0xff00' is not a colour RRGGBB (6 hex digits)" strip_headers ext --kind key \
+  --key 0xff00
+bad_value "'1000ff00001' is not a 48-bit hex value (12 hex digits, not 11)" strip_headers decode \
+  --ext 1000ff00001
 exit $failed

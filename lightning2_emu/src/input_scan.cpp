@@ -100,6 +100,12 @@ class Scanner {
     const std::uint64_t errors_before = errors_.total();
     int next_header = 0;  // where the parser looks for the header after the last strip
     parse_scanline(row, f_.width, f_.bytes_per_pixel, errors_, [&](const ParsedStrip& s) {
+      // KEY and DEPTH are not composited yet: as §3 says of an EXT a decoder does not
+      // implement, the rest of the scanline is dropped and counted.
+      if (s.header.op == StripOp::Ext) {
+        ++errors_.ext_unsupported;
+        return false;
+      }
       const int x = s.source_x - kHeaderPixels;
       next_header = s.source_x + s.header.width;
       parities_ |= static_cast<std::uint8_t>(s.header.frame ? 2 : 1);
@@ -108,10 +114,11 @@ class Scanner {
         ++skips_;
         sc_.seeing.push_back({x, raw_header(row, x), -1, 0, 0, 0});
         keep_header(y, x, raw_header(row, x));
-        return;
+        return true;
       }
       ++copies_;
       route_copy(s, row, y);
+      return true;
     });
     // The parser stopped at an END (it counts any other stop as an error) or at the row's end.
     if (next_header <= f_.width - kHeaderPixels) {

@@ -102,21 +102,25 @@ class Reference {
   void for_each_strip(const InputFrame& f, InputFrameStats& st, Paint paint) {
     for (int y = 0; y < f.height; ++y) {
       parse_scanline(f.row(y), f.width, f.bytes_per_pixel, st.errors, [&](const ParsedStrip& s) {
+        if (s.header.op == StripOp::Ext) {  // not composited: the rest of the scanline dropped
+          ++st.errors.ext_unsupported;
+          return false;
+        }
         st.parities |= static_cast<std::uint8_t>(s.header.frame ? 2 : 1);
         if (s.header.op == StripOp::Skip) {
           ++st.skip_strips;
-          return;
+          return true;
         }
         ++st.copy_strips;
         RefDisplay* d = find(s.header.display);
         if (!d) {
           ++st.errors.missing_display;
-          return;
+          return true;
         }
-        if (s.length == 0) return;
+        if (s.length == 0) return true;
         if (s.header.x >= d->spec.width || s.header.y >= d->spec.height) {
           ++st.errors.clips;
-          return;
+          return true;
         }
         if (s.header.x + s.length > d->spec.width) ++st.errors.clips;
         const int length = std::min(s.length, d->spec.width - s.header.x);
@@ -129,6 +133,7 @@ class Reference {
                   f.row(y) + static_cast<std::ptrdiff_t>(s.source_x + k) * f.bytes_per_pixel);
           }
         }
+        return true;
       });
     }
   }

@@ -93,7 +93,8 @@ TEST(Router, CheckErrorDropsTheRestOfTheScanline) {
   EXPECT_EQ(f.display(0).at(1, 1), kBlue);
 }
 
-// Row 2: EXT is not implemented: rest of scanline dropped, counted.
+// Row 2: an EXT whose extension word is black (kind 0, unsupported): rest of scanline dropped,
+// counted.
 TEST(Router, ExtDropsTheRestOfTheScanline) {
   Fixture f;
   FrameBuilder in(40, 3);
@@ -104,6 +105,32 @@ TEST(Router, ExtDropsTheRestOfTheScanline) {
   EXPECT_EQ(r.inputs[0].errors, errors(0, 2, 0, 0, 0, 0));
   EXPECT_EQ(r.inputs[0].copy_strips, 0u);
   EXPECT_EQ(row_of(f.display(0), 0), std::vector<Rgb>(16, kBackground));
+}
+
+// KEY and DEPTH strips (§7) are not composited yet: each ends its scanline as an EXT a decoder
+// does not implement (§3), so neither its payload nor anything after it reaches a display.
+TEST(Router, KeyAndDepthStripsAreNotCompositedYet) {
+  Fixture f;
+  FrameBuilder in(40, 2);
+  int x = in.copy_fill(0, 0, 0, 0, 0, 2, kRed);
+  StripHeader key = StripHeader::copy(false, 0, 4, 0, 3);
+  key.op = StripOp::Ext;
+  in.header(x, 0, key);
+  in.raw_header(x + 2, 0, encode(Extension::key_colour(0x0000FF)));
+  in.image().fill_rect(x + 4, 0, 3, 1, kGreen);
+  in.copy_fill(x + 7, 0, 0, 8, 0, 2, kBlue);
+  StripHeader depth = key;
+  depth.y = 1;
+  in.header(0, 1, depth);
+  in.raw_header(2, 1, encode(Extension::depth()));
+  in.image().fill_rect(4, 1, 6, 1, kGreen);
+  const RouteReport r = f.route({&in.image()});
+  EXPECT_EQ(r.inputs[0].errors, errors(0, 2, 0, 0, 0, 0));
+  EXPECT_EQ(r.inputs[0].copy_strips, 1u);
+  std::vector<Rgb> expected(16, kBackground);
+  expected[0] = expected[1] = kRed;
+  EXPECT_EQ(row_of(f.display(0), 0), expected);
+  EXPECT_EQ(row_of(f.display(0), 1), std::vector<Rgb>(16, kBackground));
 }
 
 // Row 3: COPY or SKIP of width 0: rest of scanline dropped, counted.

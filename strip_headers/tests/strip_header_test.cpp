@@ -13,7 +13,8 @@ struct Vector {
   std::uint64_t value;
 };
 
-// The test vectors of spec §2, copied by hand from ../shared/spec/strip-header.md.
+// The test vectors of spec §2 and the header vectors of §7, copied by hand from
+// ../shared/spec/strip-header.md.
 const Vector kSpecVectors[] = {
     {{StripOp::End, false, 0, 0, 0, 0}, 0x000000000000},
     {{StripOp::End, true, 0, 0, 0, 0}, 0x200000000003},
@@ -22,6 +23,10 @@ const Vector kSpecVectors[] = {
     {{StripOp::Copy, false, 63, 4095, 4095, 4095}, 0x5ffffffffffe},
     {{StripOp::Skip, true, 0, 0, 0, 100}, 0xa00000000325},
     {{StripOp::Copy, false, 12, 1598, 1199, 2}, 0x4631f2578012},
+    // §7: EXT headers, and the SKIP below a DEPTH tile of width 320 (payload 640, plus 2).
+    {{StripOp::Ext, true, 3, 100, 200, 50}, 0xE18320640190},
+    {{StripOp::Ext, false, 0, 0, 0, 640}, 0xC00000001405},
+    {{StripOp::Skip, false, 0, 0, 0, 642}, 0x800000001415},
 };
 
 TEST(StripHeader, EncodesSpecVectors) {

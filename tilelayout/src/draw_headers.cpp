@@ -1,6 +1,7 @@
 // Spec §4 rule 3 over a whole framebuffer: the headers of every scanline, drawn from the one
 // encoding FrameHeaders makes (the scan-out draws the same ones row by row).
 #include "image/rgb_image.hpp"
+#include "strip_headers/strip_header.hpp"
 #include "tilelayout/frame_headers.hpp"
 #include "tilelayout/tile_layout.hpp"
 
@@ -21,11 +22,14 @@ void clear_outside_tiles(const ServerPlan& plan, RgbImage& fb) {
   for (const PackedRow& row : plan.rows) {
     const PackedTile* first = plan.tiles.data() + row.first_tile;
     const PackedTile* last = first + row.tile_count - 1;
-    const int end_x = last->fb_x + last->tile.on_display.w;
+    const int end_x = last->fb_x + payload_columns(last->tile);
     fb.fill_rect(end_x, row.y, plan.fb_width - end_x, row.height, {});
     for (const PackedTile* p = first; p <= last; ++p) {
-      const Rect& d = p->tile.on_display;
-      fb.fill_rect(p->fb_x, row.y + d.h, d.w, row.height - d.h, {});
+      // Below a shorter tile only the SKIP header stays: an extension word's columns too are
+      // pixels the SKIP passes over.
+      const int from = p->fb_x - gap_columns(p->tile) + kHeaderPixels;
+      const int h = p->tile.on_display.h;
+      fb.fill_rect(from, row.y + h, p->fb_x + payload_columns(p->tile) - from, row.height - h, {});
     }
   }
   const int below = plan.used_height();

@@ -1,4 +1,5 @@
-// Spec §4 rules 1, 2 and 5: place a pipeserver's tiles, in list order, into its framebuffer.
+// Spec §4 rules 1, 2 and 5: place a pipeserver's tiles, in list order, into its framebuffer;
+// KEY and DEPTH tiles take a four-column gap and their payload's columns (§7).
 #include <fmt/format.h>
 
 #include "strip_headers/strip_header.hpp"
@@ -8,8 +9,12 @@ namespace l2 {
 namespace {
 
 std::string describe(int server, int index, const DisplayTile& t) {
-  return fmt::format("pipeserver {}: tile {} (display {}, {}x{} at {},{})", server, index,
-                     t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y);
+  const char* kind = t.compositing == Compositing::Key     ? ", KEY"
+                     : t.compositing == Compositing::Depth ? ", DEPTH"
+                                                           : "";
+  return fmt::format("pipeserver {}: tile {} (display {}, {}x{} at {},{}{})", server, index,
+                     t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y,
+                     kind);
 }
 
 // A tile must be expressible in headers: every COPY names display, x, y + r and width in their
@@ -25,6 +30,10 @@ void check_encodable(int server, int index, const DisplayTile& t) {
     problem = "width must be at most 4095";
   } else if (r.x < 0 || r.x > kMaxCoordinate || r.y < 0 || r.bottom() - 1 > kMaxCoordinate) {
     problem = "display coordinates must be 0..4095";
+  } else if (t.compositing != Compositing::Copy && payload_columns(t) + 2 > kMaxCoordinate) {
+    problem = "the SKIP below a KEY or DEPTH tile, payload + 2 wide, must be at most 4095";
+  } else if (t.compositing == Compositing::Key && t.key > 0xFFFFFF) {
+    problem = "key colour must be 000000..ffffff";
   }
   if (problem) throw LayoutError(fmt::format("{}: {}", describe(server, index, t), problem));
 }
@@ -47,24 +56,23 @@ ServerPlan pack_tiles(int server, int fb_width, int fb_height,
   for (int i = 0; i < static_cast<int>(tiles.size()); ++i) {
     const DisplayTile& t = tiles[i];
     check_encodable(server, i, t);
-    const int w = t.on_display.w, h = t.on_display.h;
-    if (w > fb_width - kHeaderPixels) {
+    const int columns = gap_columns(t) + payload_columns(t);
+    if (columns > fb_width) {
       throw LayoutError(
           fmt::format("{} does not fit the {}x{} framebuffer: needs {} columns, {} too many",
-                      describe(server, i, t), fb_width, fb_height, w + kHeaderPixels,
-                      w + kHeaderPixels - fb_width));
+                      describe(server, i, t), fb_width, fb_height, columns, columns - fb_width));
     }
     // Rule 2: a tile whose gap and pixels would pass W starts a new row below the last one.
-    if (plan.rows.empty() || gap_x + kHeaderPixels + w > fb_width) {
+    if (plan.rows.empty() || gap_x + columns > fb_width) {
       const int y = plan.used_height();
       plan.rows.push_back({y, 0, i, 0});
       gap_x = 0;
     }
     PackedRow& row = plan.rows.back();
-    plan.tiles.push_back({t, gap_x + kHeaderPixels, row.y});
-    row.height = std::max(row.height, h);
+    plan.tiles.push_back({t, gap_x + gap_columns(t), row.y});
+    row.height = std::max(row.height, t.on_display.h);
     ++row.tile_count;
-    gap_x += kHeaderPixels + w;
+    gap_x += columns;
   }
 
   // Rule 5, height: name the first tile that crosses the bottom and what all tiles need.

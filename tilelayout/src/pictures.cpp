@@ -64,11 +64,12 @@ RgbImage framebuffer_picture(const ServerPlan& plan) {
   RgbImage img(plan.fb_width, plan.fb_height, kUnused);
   for (const PackedRow& row : plan.rows) {
     for (int i = row.first_tile; i < row.first_tile + row.tile_count; ++i) {
-      img.fill_rect(plan.tiles[i].fb_x - 2, row.y, 2, row.height, kGap);
+      const int gap = gap_columns(plan.tiles[i].tile);
+      img.fill_rect(plan.tiles[i].fb_x - gap, row.y, gap, row.height, kGap);
     }
   }
   for (const PackedTile& p : plan.tiles) {
-    const Rect r{p.fb_x, p.fb_y, p.tile.on_display.w, p.tile.on_display.h};
+    const Rect r{p.fb_x, p.fb_y, payload_columns(p.tile), p.tile.on_display.h};
     img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(p.tile.display));
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
     label(img, r, p.tile.display);

@@ -3,6 +3,7 @@
 // scan-out, routing checks — reads this one structure.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -15,16 +16,33 @@ namespace l2 {
 
 class RgbImage;
 
+// How a tile's strips reach its display: routed (COPY, spec §4), or composited there (§7):
+// colour-keyed over what is already on the display, or by depth.
+enum class Compositing : std::uint8_t { Copy, Key, Depth };
+
 // A tile that lies within one display: a logical tile after splitting at display edges.
 struct DisplayTile {
   int display = 0;
   Rect on_display;       // dx, dy, w, h on the output display
   Rect on_canvas;        // the same pixels on the logical canvas (what the renderer draws)
   int logical_tile = 0;  // index into TileLayout::logical_tiles
+  Compositing compositing = Compositing::Copy;
+  std::uint32_t key = 0;  // Key: the key colour, R<<16 | G<<8 | B
 };
 
-// A tile placed in a pipeserver framebuffer. Its header gap is columns fb_x-2 .. fb_x-1 of
-// rows fb_y .. fb_y + row height - 1; its pixels are fb_x .. fb_x+w-1, fb_y .. fb_y+h-1.
+// Columns before a tile's pixels on each of its scanlines: its header, and for KEY and DEPTH
+// the extension word (§7).
+inline int gap_columns(const DisplayTile& t) {
+  return t.compositing == Compositing::Copy ? 2 : 4;
+}
+// Columns of a tile's strip: its width, and for DEPTH as many depth pixels after them.
+inline int payload_columns(const DisplayTile& t) {
+  return t.on_display.w * (t.compositing == Compositing::Depth ? 2 : 1);
+}
+
+// A tile placed in a pipeserver framebuffer. Its gap is the gap_columns(tile) columns before
+// fb_x, on rows fb_y .. fb_y + row height - 1; its colour pixels are fb_x .. fb_x+w-1,
+// fb_y .. fb_y+h-1, and a DEPTH tile's depth pixels the w columns after them.
 struct PackedTile {
   DisplayTile tile;
   int fb_x = 0, fb_y = 0;
@@ -60,13 +78,15 @@ class LayoutError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Packs tiles into one framebuffer exactly per spec §4 rules 1, 2 and 5. Throws LayoutError
-// naming the server, the tile and by how much it does not fit.
+// Packs tiles into one framebuffer exactly per spec §4 rules 1, 2 and 5, KEY and DEPTH tiles
+// with their four-column gaps and payloads (§7). Throws LayoutError naming the server, the tile
+// and by how much it does not fit.
 ServerPlan pack_tiles(int server, int fb_width, int fb_height,
                       const std::vector<DisplayTile>& tiles);
 
-// Draws every header of spec §4 rule 3 (COPY / SKIP / END) into `fb` for the given parity;
-// touches only header pixels. `fb` must be fb_width x fb_height.
+// Draws every header of spec §4 rule 3 (COPY / SKIP / END, and EXT with its extension word,
+// §7) into `fb` for the given parity; touches only header pixels. `fb` must be fb_width x
+// fb_height.
 void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb);
 
 // Spec §4 rule 4: blacks every pixel that is neither a tile pixel nor a header gap of a packed
