@@ -26,9 +26,9 @@ class DviSide {
   // The lowest frame the displays show, read from every host's stamp on them: measured, not
   // assumed.
   int lowest_frame_shown(const HostSet& hosts) const;
-  // READY for the frame the emulator accepted from each host now on the displays. Fault
-  // injection: host 0's READY of frame `drop_ready` is held back until it asks with SYNC?.
-  // Returns how many READYs were held back.
+  // READY for the frame the emulator accepted from each host whose groups completed in this
+  // tick (on the displays from the next refresh on). Fault injection: host 0's READY of frame
+  // `drop_ready` is held back until it asks with SYNC?. Returns how many READYs were held back.
   int send_readies(const Emulator::Tick& tick, HostSet& hosts, int drop_ready);
 
   const RgbImage& shown(int display) const { return emulator_.shown(display); }

@@ -161,6 +161,10 @@ class LiveRun {
       }
       const Emulator::Tick& tick = dvi_->refresh(hosts_, records_);
       swap_due = !tick.completed_groups.empty();
+      // READY at once, in the refresh the frame completed (spec §6.4): a host with its next
+      // frame rendered swaps it in now, and it is taken in at the next refresh.
+      totals_.dropped_readies +=
+          static_cast<std::uint64_t>(dvi_->send_readies(tick, hosts_, o_.drop_ready));
       if (!tick.swapped_groups.empty()) on_swap(tick);
       check_stall();
     }
@@ -170,8 +174,6 @@ class LiveRun {
     const auto now = RunClock::now();
     const int lowest = dvi_->lowest_frame_shown(hosts_);
     dvi_shown_ = std::min(lowest, o_.frames - 1);
-    totals_.dropped_readies +=
-        static_cast<std::uint64_t>(dvi_->send_readies(tick, hosts_, o_.drop_ready));
     while (shown_ <= lowest && shown_ < o_.frames) {
       FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
       r.shown = true;

@@ -2,16 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
 namespace l2 {
 
 Emulator::Emulator(const EmulatorConfig& config)
     : pool_(config.workers),
       router_(config.mesh, config.displays, pool_, config.background),
       sequencer_(config.mesh.input_count(),
-                 static_cast<int>(make_swap_groups(config.displays).size())),
-      sequencer_before_(sequencer_) {
+                 static_cast<int>(make_swap_groups(config.displays).size())) {
   router_.predict_layouts(config.predict_layouts);
   report_.groups = make_swap_groups(config.displays);
   group_display_indices_.resize(report_.groups.size());
@@ -37,7 +34,7 @@ const RgbImage& Emulator::shown(int display_id) const {
   return router_.display(index).front();
 }
 
-void Emulator::observe(int inputs) {
+void Emulator::decide(int inputs) {
   observations_.resize(inputs);
   tick_.inputs.clear();
   for (int i = 0; i < inputs; ++i) {
@@ -51,34 +48,30 @@ void Emulator::observe(int inputs) {
       }
     }
   }
-  sequencer_.observe(observations_, decision_);
+  sequencer_.decide(observations_, decision_);
 }
 
 const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
   tick_.index = report_.ticks++;
   // 1. Output refresh.
-  sequencer_.refresh(refresh_);
+  sequencer_.refresh(swapped_);
   tick_.swapped_groups.clear();
-  for (const int g : refresh_.swapped_groups) {
+  for (const int g : swapped_) {
     for (const int d : group_display_indices_[g]) router_.display(d).swap();
     ++report_.groups[g].swaps;
     tick_.swapped_groups.push_back(report_.groups[g].id);
   }
-  tick_.ready_inputs = refresh_.ready_inputs;
 
-  // 2. Parse, classify, route the new frames. A frame the router predicted (router.hpp) and
-  // found different when writing it is parsed then: decide again from the state before.
+  // 2. Parse, classify, route the new frames.
   router_.scan(frames);
   const int inputs = router_.mesh().input_count();
-  sequencer_before_ = sequencer_;
-  observe(inputs);
-  if (!router_.write(decision_.route)) {
-    sequencer_ = sequencer_before_;
-    observe(inputs);
-    // Nothing is predicted any more: this write cannot miss.
-    if (!router_.write(decision_.route)) throw std::logic_error("router: a parsed frame missed");
-  }
+  router_.write([&] {
+    decide(inputs);
+    return std::span<const std::uint8_t>(decision_.route);
+  });
+  sequencer_.commit(observations_, decision_);
   tick_.kinds = decision_.kinds;
+  tick_.ready_inputs = decision_.ready_inputs;
   report_.frames_predicted = router_.predictions().predicted;
   report_.predictions_missed = router_.predictions().mispredicted;
   for (int i = 0; i < inputs; ++i) {
@@ -91,7 +84,7 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
     if (decision_.route[i]) run.routed_strips += st.routed_strips;
   }
 
-  // 3. Complete the groups that have everything.
+  // 3. Complete the groups that have everything (their hosts got READY above).
   tick_.completed_groups.clear();
   tick_.completed.clear();
   for (const int g : decision_.completed_groups) {

@@ -30,19 +30,20 @@ std::uint64_t one_row_down(std::uint64_t value) {
 
 class Scanner {
  public:
-  Scanner(InputScan& in, const std::vector<Target>& targets)
-      : in_(in), targets_(targets), f_(in.frame) {}
+  Scanner(const InputFrame& frame, const std::vector<Target>& targets, Layout& out,
+          ScanScratch& scratch)
+      : out_(out), sc_(scratch), targets_(targets), f_(frame) {}
 
   void scan(int input) {
-    for (auto& band : in_.bands) band.clear();
-    in_.seen.clear();
-    in_.others.clear();
-    in_.parity_at = -1;
+    for (auto& band : out_.bands) band.clear();
+    sc_.seen.clear();
+    out_.others.clear();
+    out_.parity_at = -1;
     repeatable_ = false;
     for (int y = 0; y < f_.height; ++y) {
       const std::uint8_t* row = f_.row(y);
       if (black_start(row)) {  // END at column 0: most scanlines below the packed tiles
-        in_.seen.clear();
+        sc_.seen.clear();
         keep_end(y, 0);
         repeatable_ = false;
       } else if (!(repeatable_ && repeat(row, y))) {
@@ -52,7 +53,6 @@ class Scanner {
     }
     order_runs();
     store_stats(input);
-    keep_layout();
   }
 
  private:
@@ -72,10 +72,10 @@ class Scanner {
 
   // The fast path: true when the scanline repeats the last one, which it then extends.
   bool repeat(const std::uint8_t* row, int y) {
-    for (const SeenHeader& h : in_.seen) {
+    for (const SeenHeader& h : sc_.seen) {
       if (raw_header(row, h.x) != h.value) return false;
     }
-    for (SeenHeader& h : in_.seen) {
+    for (SeenHeader& h : sc_.seen) {
       if (h.list < 0) {  // a SKIP or an END (a header that cannot repeat is never seen again)
         if (h.value >> header_bits::kOpShift == static_cast<int>(StripOp::Skip)) {
           ++skips_;
@@ -85,7 +85,7 @@ class Scanner {
         }
         continue;
       }
-      ++in_.bands[h.list][h.run].rows;
+      ++out_.bands[h.list][h.run].rows;
       ++copies_;
       ++routed_;
       h.value = ++h.next_y <= h.last_y ? one_row_down(h.value) : kNever;
@@ -95,7 +95,7 @@ class Scanner {
 
   // The full parse of a scanline, remembering its headers for the next one.
   void parse(const std::uint8_t* row, int y) {
-    in_.seeing.clear();
+    sc_.seeing.clear();
     next_seen_ = 0;
     const std::uint64_t errors_before = errors_.total();
     int next_header = 0;  // where the parser looks for the header after the last strip
@@ -109,10 +109,10 @@ class Scanner {
       const int x = s.source_x - kHeaderPixels;
       next_header = s.source_x + s.header.width;
       parities_ |= static_cast<std::uint8_t>(s.header.frame ? 2 : 1);
-      if (in_.parity_at < 0) in_.parity_at = offset(y, x);
+      if (out_.parity_at < 0) out_.parity_at = offset(y, x);
       if (s.header.op == StripOp::Skip) {
         ++skips_;
-        in_.seeing.push_back({x, raw_header(row, x), -1, 0, 0, 0});
+        sc_.seeing.push_back({x, raw_header(row, x), -1, 0, 0, 0});
         keep_header(y, x, raw_header(row, x));
         return true;
       }
@@ -122,10 +122,10 @@ class Scanner {
     });
     // The parser stopped at an END (it counts any other stop as an error) or at the row's end.
     if (next_header <= f_.width - kHeaderPixels) {
-      in_.seeing.push_back({next_header, raw_header(row, next_header), -1, 0, 0, 0});
+      sc_.seeing.push_back({next_header, raw_header(row, next_header), -1, 0, 0, 0});
       keep_end(y, next_header);  // or an error, which keeps no layout
     }
-    std::swap(in_.seen, in_.seeing);
+    std::swap(sc_.seen, sc_.seeing);
     repeatable_ = errors_.total() == errors_before;
   }
 
@@ -157,19 +157,19 @@ class Scanner {
     const int list = t.band_offset + (h.y >> t.band_shift);
     const int last_y = std::min(t.height, ((h.y >> t.band_shift) + 1) << t.band_shift) - 1;
     const std::uint64_t next = clipped || h.y == last_y ? kNever : one_row_down(raw_header(row, x));
-    in_.seeing.push_back({x, next, list, extend_run(s, list, length, y), h.y + 1, last_y});
+    sc_.seeing.push_back({x, next, list, extend_run(s, list, length, y), h.y + 1, last_y});
   }
 
   // A header the fast path must not take for a repeat: the next scanline gets parsed.
-  void unrepeatable(int x) { in_.seeing.push_back({x, kNever, -1, 0, 0, 0}); }
+  void unrepeatable(int x) { sc_.seeing.push_back({x, kNever, -1, 0, 0, 0}); }
 
   // Strips come left to right, as they did on the last scanline: walk its headers along. A
   // strip continues the run at its column if it is that run's next row; returns the run.
   std::uint32_t extend_run(const ParsedStrip& s, int list, int length, int y) {
     const int x = s.source_x - kHeaderPixels;
-    const std::vector<SeenHeader>& seen = in_.seen;
+    const std::vector<SeenHeader>& seen = sc_.seen;
     while (next_seen_ < seen.size() && seen[next_seen_].x < x) ++next_seen_;
-    std::vector<Run>& runs = in_.bands[list];
+    std::vector<Run>& runs = out_.bands[list];
     if (next_seen_ < seen.size() && seen[next_seen_].x == x && seen[next_seen_].list == list) {
       Run& r = runs[seen[next_seen_].run];
       if (r.dst_x == s.header.x && r.length == length && r.dst_y + r.rows == s.header.y) {
@@ -190,9 +190,9 @@ class Scanner {
     if (y >= f_.height) return;
     const std::uint8_t* row = f_.row(y);
     pixel_copy::prefetch_line(row);
-    const std::size_t n = std::min<std::size_t>(in_.seen.size(), kTracked);
+    const std::size_t n = std::min<std::size_t>(sc_.seen.size(), kTracked);
     for (std::size_t k = 0; k < n; ++k) {
-      pixel_copy::prefetch_line(row + in_.seen[k].x * f_.bytes_per_pixel);
+      pixel_copy::prefetch_line(row + sc_.seen[k].x * f_.bytes_per_pixel);
     }
   }
 
@@ -204,7 +204,7 @@ class Scanner {
     const auto before = [](const Run& a, const Run& b) {
       return a.row_lag < b.row_lag || (a.row_lag == b.row_lag && a.src_x < b.src_x);
     };
-    for (auto& runs : in_.bands) {
+    for (auto& runs : out_.bands) {
       if (!std::is_sorted(runs.begin(), runs.end(), before)) {
         std::sort(runs.begin(), runs.end(), before);
       }
@@ -216,19 +216,12 @@ class Scanner {
   }
   static std::uint64_t message_of(std::uint64_t raw) { return raw >> 3 & ~kMessageFrameBit; }
   void keep_header(int y, int x, std::uint64_t raw) {
-    in_.others.push_back({offset(y, x), message_of(raw)});
+    out_.others.push_back({offset(y, x), message_of(raw)});
   }
-  void keep_end(int y, int x) { in_.others.push_back({offset(y, x), KeptHeader::kAnyEnd}); }
-
-  // A frame with an error or a tear is not predicted from: the next one is parsed.
-  void keep_layout() {
-    in_.layout_kept = errors_.total() == 0 && parities_ != 3;
-    in_.kept_shape = f_;
-    in_.predicted = false;
-  }
+  void keep_end(int y, int x) { out_.others.push_back({offset(y, x), KeptHeader::kAnyEnd}); }
 
   void store_stats(int input) {
-    InputFrameStats& st = in_.stats;
+    InputFrameStats& st = out_.stats;
     st = InputFrameStats{};
     st.input = input;
     st.present = true;
@@ -240,7 +233,8 @@ class Scanner {
     st.errors = errors_;
   }
 
-  InputScan& in_;
+  Layout& out_;
+  ScanScratch& sc_;
   const std::vector<Target>& targets_;
   const InputFrame& f_;
   // Counted here, stored once at the end.
@@ -253,8 +247,9 @@ class Scanner {
 
 }  // namespace
 
-void scan_input(InputScan& in, int input, const std::vector<Target>& targets) {
-  Scanner(in, targets).scan(input);
+void parse_frame(const InputFrame& frame, int input, const std::vector<Target>& targets,
+                 Layout& out, ScanScratch& scratch) {
+  Scanner(frame, targets, out, scratch).scan(input);
 }
 
 }  // namespace l2::router_detail

@@ -1,7 +1,8 @@
 // Predicted frames (router.hpp): a frame is taken to hold its input's last headers with a new
-// frame bit, and every header of it is checked before the frame's routing counts. Here: making
-// the prediction, the checks that are not made in the copy loop (router_write.cpp makes those),
-// and what happens when one fails.
+// frame bit, and every header of it is checked before the frame's routing counts. Here: an
+// input's state (router_detail.hpp: what its last parse left, parsed or predicted from), the
+// checks that are not made in the copy loop (router_write.cpp makes those), and what happens
+// when one fails.
 #include <algorithm>
 
 #include "lightning2_emu/router.hpp"
@@ -12,27 +13,52 @@ namespace l2 {
 namespace router_detail {
 namespace {
 
-// Kept headers ahead whose lines check_predicted() asks for while it reads one.
+// Kept headers ahead whose lines headers_hold() asks for while it reads one.
 constexpr int kCheckAhead = 8;
 
 }  // namespace
 
-bool predict_input(InputScan& in) {
-  const InputFrame& f = in.frame;
-  const InputFrame& kept = in.kept_shape;
-  if (!in.layout_kept || f.width != kept.width || f.height != kept.height ||
-      f.stride != kept.stride || f.bytes_per_pixel != kept.bytes_per_pixel) {
+void InputScan::init(int input, int band_lists) {
+  input_ = input;
+  layout_.stats.input = input;
+  layout_.bands.resize(band_lists);
+}
+
+void InputScan::no_signal() {
+  frame_ = InputFrame{};
+  layout_.stats = InputFrameStats{};
+  layout_.stats.input = input_;
+  for (auto& band : layout_.bands) band.clear();
+  state_ = State::None;
+}
+
+// A frame with an error or a tear is not predicted from: the next one is parsed.
+void InputScan::parse(const InputFrame& frame, const std::vector<Target>& targets) {
+  frame_ = frame;
+  parse_frame(frame_, input_, targets, layout_, scratch_);
+  const InputFrameStats& st = layout_.stats;
+  state_ = st.errors.total() == 0 && st.parities != 3 ? State::Parsed : State::None;
+}
+
+bool InputScan::predict(const InputFrame& frame) {
+  if (state_ == State::None || frame.width != frame_.width || frame.height != frame_.height ||
+      frame.stride != frame_.stride || frame.bytes_per_pixel != frame_.bytes_per_pixel) {
     return false;
   }
-  in.predicted = true;
-  in.parity = 0;
-  if (in.parity_at >= 0) {
-    const std::uint8_t* p = f.data + in.parity_at;
-    in.parity =
-        static_cast<int>(header_value(p, p + f.bytes_per_pixel) >> header_bits::kFrameShift & 1);
-    in.stats.parities = static_cast<std::uint8_t>(in.parity ? 2 : 1);
+  frame_ = frame;
+  state_ = State::Predicted;
+  parity_ = 0;
+  if (layout_.parity_at >= 0) {
+    const std::uint8_t* p = frame_.data + layout_.parity_at;
+    parity_ = static_cast<int>(
+        header_value(p, p + frame_.bytes_per_pixel) >> header_bits::kFrameShift & 1);
+    layout_.stats.parities = static_cast<std::uint8_t>(parity_ ? 2 : 1);
   }
   return true;
+}
+
+std::uint64_t InputScan::frame_bit() const {
+  return predicted() && parity_ ? kMessageFrameBit : 0;
 }
 
 bool any_overlap(const std::vector<Run>& runs, const std::vector<Area>& areas) {
@@ -45,10 +71,10 @@ bool any_overlap(const std::vector<Run>& runs, const std::vector<Area>& areas) {
   return false;
 }
 
-bool check_predicted(const InputScan& in, bool runs) {
-  const InputFrame& f = in.frame;
+bool InputScan::headers_hold(bool runs) const {
+  const InputFrame& f = frame_;
   const int bpp = f.bytes_per_pixel;
-  const std::uint64_t frame_bit = in.parity ? kMessageFrameBit : 0;
+  const std::uint64_t bit = frame_bit();
   auto holds = [&](std::int64_t at, std::uint64_t message) {
     const std::uint8_t* p = f.data + at;
     const std::uint64_t raw = header_value(p, p + bpp);
@@ -56,16 +82,17 @@ bool check_predicted(const InputScan& in, bool runs) {
       const auto h = decode(raw);
       return h && h->op == StripOp::End;
     }
-    return raw == predicted_header(message | frame_bit);
+    return raw == predicted_header(message | bit);
   };
   bool ok = true;
-  const std::size_t n = in.others.size();
+  const std::vector<KeptHeader>& others = layout_.others;
+  const std::size_t n = others.size();
   for (std::size_t k = 0; k < n; ++k) {
-    if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + in.others[k + kCheckAhead].at);
-    ok &= holds(in.others[k].at, in.others[k].message);
+    if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + others[k + kCheckAhead].at);
+    ok &= holds(others[k].at, others[k].message);
   }
   if (!runs) return ok;
-  for (const auto& band : in.bands) {
+  for (const auto& band : layout_.bands) {
     for (const Run& r : band) {
       const std::int64_t first = r.src - std::int64_t{kHeaderPixels} * bpp;
       std::uint64_t m = r.message;
@@ -91,8 +118,8 @@ bool Router::predictions_clear_of_earlier(std::span<const std::uint8_t> route_in
     const BandState& bs = display_state_[band_tasks_[task].display].bands[band_tasks_[task].band];
     if (bs.areas.empty()) continue;  // nothing earlier in this band
     for (int i = 0; i < inputs; ++i) {
-      if (route_input[i] && inputs_[i].predicted &&
-          router_detail::any_overlap(inputs_[i].bands[task], bs.areas)) {
+      if (route_input[i] && inputs_[i].predicted() &&
+          router_detail::any_overlap(inputs_[i].runs(static_cast<int>(task)), bs.areas)) {
         return false;
       }
     }
@@ -103,7 +130,7 @@ bool Router::predictions_clear_of_earlier(std::span<const std::uint8_t> route_in
 bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool copied) {
   confirm_inputs_.clear();
   for (int i = 0; i < static_cast<int>(inputs_.size()); ++i) {
-    if (inputs_[i].predicted) confirm_inputs_.push_back(i);
+    if (inputs_[i].predicted()) confirm_inputs_.push_back(i);
   }
   if (confirm_inputs_.empty()) return true;
   mispredicted_.assign(inputs_.size(), 0);
@@ -111,7 +138,7 @@ bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool
   // The headers the copy did not check (all of an input it did not copy), in parallel.
   pool_.run(static_cast<int>(confirm_inputs_.size()), [&](int task, int) {
     const int i = confirm_inputs_[task];
-    if (!router_detail::check_predicted(inputs_[i], !(copied && routed(i)))) mispredicted_[i] = 1;
+    if (!inputs_[i].headers_hold(!(copied && routed(i)))) mispredicted_[i] = 1;
   });
   for (DisplayBands& ds : display_state_) {
     for (BandState& bs : ds.bands) {
@@ -123,15 +150,16 @@ bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool
   if (!copied) predictions_.checked_first += confirm_inputs_.size();
   reparse_inputs_.clear();
   for (const int i : confirm_inputs_) {
-    inputs_[i].predicted = false;
-    if (mispredicted_[i]) reparse_inputs_.push_back(i);
+    if (mispredicted_[i]) {
+      reparse_inputs_.push_back(i);
+    } else {
+      inputs_[i].verified();
+    }
   }
   if (reparse_inputs_.empty()) return true;
   predictions_.mispredicted += reparse_inputs_.size();
-  pool_.run(static_cast<int>(reparse_inputs_.size()), [this](int task, int) {
-    const int input = reparse_inputs_[task];
-    router_detail::scan_input(inputs_[input], input, targets_);
-  });
+  pool_.run(static_cast<int>(reparse_inputs_.size()),
+            [this](int task, int) { inputs_[reparse_inputs_[task]].reparse(targets_); });
   return false;
 }
 

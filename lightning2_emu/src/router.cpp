@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 
 #include "pixel_copy.hpp"
 #include "router_detail.hpp"
@@ -53,10 +52,7 @@ Router::Router(const Mesh& mesh, std::vector<DisplaySpec> displays, WorkerPool& 
     display_state_.push_back(std::move(state));
   }
   inputs_.resize(mesh_.input_count());
-  for (int i = 0; i < mesh_.input_count(); ++i) {
-    inputs_[i].stats.input = i;
-    inputs_[i].bands.resize(band_offset);
-  }
+  for (int i = 0; i < mesh_.input_count(); ++i) inputs_[i].init(i, band_offset);
   band_stats_.reserve(band_tasks_.size());
   finish_tasks_.reserve(band_tasks_.size());
   scan_inputs_.reserve(inputs_.size());
@@ -66,7 +62,7 @@ Router::Router(const Mesh& mesh, std::vector<DisplaySpec> displays, WorkerPool& 
 Router::~Router() = default;
 
 const InputFrameStats& Router::scanned(int input) const {
-  return inputs_[input].stats;
+  return inputs_[input].stats();
 }
 
 int Router::index_of_display(int id) const {
@@ -93,21 +89,16 @@ void Router::scan(std::span<const InputFrame> frames) {
   }
   scan_inputs_.clear();
   for (int i = 0; i < mesh_.input_count(); ++i) {
-    router_detail::InputScan& in = inputs_[i];
-    in.frame = i < static_cast<int>(frames.size()) ? frames[i] : InputFrame{};
-    in.predicted = false;
-    if (in.frame.present()) {
-      if (!(predict_ && router_detail::predict_input(in))) scan_inputs_.push_back(i);
-    } else {
-      in.stats = InputFrameStats{};
-      in.stats.input = i;
-      in.layout_kept = false;
-      for (auto& band : in.bands) band.clear();
+    const InputFrame f = i < static_cast<int>(frames.size()) ? frames[i] : InputFrame{};
+    if (!f.present()) {
+      inputs_[i].no_signal();
+    } else if (!(predict_ && inputs_[i].predict(f))) {
+      scan_inputs_.push_back(i);
     }
   }
-  pool_.run(static_cast<int>(scan_inputs_.size()), [this](int task, int) {
+  pool_.run(static_cast<int>(scan_inputs_.size()), [&](int task, int) {
     const int input = scan_inputs_[task];
-    router_detail::scan_input(inputs_[input], input, targets_);
+    inputs_[input].parse(frames[input], targets_);
   });
 }
 
@@ -163,15 +154,13 @@ DisplayFrameStats Router::finish_band(int display, int band,
 
 RouteReport Router::route(std::span<const InputFrame> frames) {
   scan(frames);
-  std::vector<std::uint8_t> all(inputs_.size(), 1);
-  if (!write(all) && !write(all)) {  // the second has nothing predicted: it cannot miss
-    throw std::logic_error("router: a parsed frame missed");
-  }
+  const std::vector<std::uint8_t> all(inputs_.size(), 1);
+  write(all);
   std::vector<int> every(displays_.size());
   for (std::size_t d = 0; d < every.size(); ++d) every[d] = static_cast<int>(d);
   RouteReport report;
   finish(every, report.displays);
-  for (const router_detail::InputScan& in : inputs_) report.inputs.push_back(in.stats);
+  for (const router_detail::InputScan& in : inputs_) report.inputs.push_back(in.stats());
   return report;
 }
 

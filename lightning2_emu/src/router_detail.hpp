@@ -53,38 +53,68 @@ struct SeenHeader {
   std::int32_t last_y;  // ... which must not pass this one (display height, end of the band)
 };
 
-// One input's frame and what scanning it found. Each worker appends to its own input's lists:
-// cache-line alignment keeps neighbours, worked on by other workers, off the same line.
-//
-// A frame's runs and headers are kept for the next frame: when the last frame parsed without
-// error or tear, the next one is predicted to hold the same headers with the frame bit of its
-// first strip (read, the only header read before the write). write() checks every header of a
-// predicted frame: in the copy loop where it reads the strip after it anyway, the rest in a
-// pass of their own.
-struct alignas(64) InputScan {
-  InputFrame frame;
+// What parsing one frame leaves: the runs to write, the headers that start no run (kept for
+// checking a prediction) and the counts.
+struct Layout {
   InputFrameStats stats;
-  std::vector<std::vector<Run>> bands;   // [Target::band_offset + band], in write order
-  std::vector<SeenHeader> seen, seeing;  // the last scanline's headers, this one's
-  std::vector<KeptHeader> others;        // headers that start no routed strip, in scan order
-  bool layout_kept = false;              // the last parse was clean: the next can be predicted
-  InputFrame kept_shape;                 // the last parsed frame (its size, stride, pixel size)
-  std::int64_t parity_at = -1;           // the first COPY/SKIP header, -1 when none
-  bool predicted = false;                // stats and runs are a prediction not yet checked
-  int parity = 0;                        // a predicted frame's parity
+  std::vector<std::vector<Run>> bands;  // [Target::band_offset + band], in write order
+  std::vector<KeptHeader> others;       // headers that start no routed strip, in scan order
+  std::int64_t parity_at = -1;          // the first COPY/SKIP header, -1 when none
 };
 
-// Parses in.frame (present, checked against the mesh) into in.bands and in.stats, and keeps
-// what the next frame's prediction needs.
-void scan_input(InputScan& in, int input, const std::vector<Target>& targets);
+// A parse's working lists, reused from frame to frame.
+struct ScanScratch {
+  std::vector<SeenHeader> seen, seeing;  // the last scanline's headers, this one's
+};
 
-// Predicts in.frame from the last parse if that was kept and the frame has the same shape;
-// false when it must be parsed instead.
-bool predict_input(InputScan& in);
+// Parses `frame` (present, checked against the mesh) as input `input` into `out`.
+void parse_frame(const InputFrame& frame, int input, const std::vector<Target>& targets,
+                 Layout& out, ScanScratch& scratch);
 
-// Checks a predicted frame's headers that write() does not: `others` always, the runs' too
-// when `runs` (the input is not written, or is written after others this frame).
-bool check_predicted(const InputScan& in, bool runs);
+// One input: its frame, and what the last parse of it left, from which the next frame is
+// predicted (router.hpp). Each worker works on its own input: cache-line alignment keeps
+// neighbours, worked on by other workers, off the same line.
+//   None       nothing to predict from: no signal, no parse yet, or the last parse found an
+//              error or a tear. The next frame is parsed.
+//   Parsed     the frame was parsed clean, or its prediction held: the next frame of the same
+//              size, stride and pixel size is predicted.
+//   Predicted  the frame is taken to hold the last parse's headers with the frame bit of its
+//              first routing header (the one header read), and its counts; every header is
+//              checked before the frame counts (write(): in the copy, and headers_hold()).
+class alignas(64) InputScan {
+ public:
+  enum class State : std::uint8_t { None, Parsed, Predicted };
+
+  void init(int input, int band_lists);
+  // No signal this refresh: nothing to route, nothing to predict the next frame from.
+  void no_signal();
+  void parse(const InputFrame& frame, const std::vector<Target>& targets);
+  // Predicts `frame` from the last parse; false, changing nothing, when it must be parsed.
+  bool predict(const InputFrame& frame);
+  // Whether a predicted frame's headers hold that write() does not check in the copy: the kept
+  // ones always, the runs' too when `runs` (not copied, or not checked while copied).
+  bool headers_hold(bool runs) const;
+  // Every check held: the prediction is the frame's parse.
+  void verified() { state_ = State::Parsed; }
+  // One did not: the frame is parsed after all.
+  void reparse(const std::vector<Target>& targets) { parse(frame_, targets); }
+
+  State state() const { return state_; }
+  bool predicted() const { return state_ == State::Predicted; }
+  const InputFrame& frame() const { return frame_; }
+  const InputFrameStats& stats() const { return layout_.stats; }
+  const std::vector<Run>& runs(int band_list) const { return layout_.bands[band_list]; }
+  // The frame bit of a predicted frame's headers, in a header message (0 when not predicted).
+  std::uint64_t frame_bit() const;
+
+ private:
+  InputFrame frame_;
+  Layout layout_;
+  ScanScratch scratch_;
+  int input_ = 0;
+  int parity_ = 0;  // a predicted frame's
+  State state_ = State::None;
+};
 
 // Whether some run's rectangle shares a pixel with some area's.
 bool any_overlap(const std::vector<Run>& runs, const std::vector<Area>& areas);

@@ -7,6 +7,7 @@
 // source order instead (whole scanlines, each strip to its display) was tried: it reads better
 // but scatters the writes over every tile of a scanline, and measured about 1.5x slower.
 #include <algorithm>
+#include <stdexcept>
 
 #include "lightning2_emu/router.hpp"
 #include "pixel_copy.hpp"
@@ -102,7 +103,18 @@ bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, 
 
 }  // namespace
 
-bool Router::write(std::span<const std::uint8_t> route_input) {
+void Router::write(const RouteChoice& choose) {
+  if (write_checked(choose())) return;
+  // A predicted frame was not what it was taken for: its input is parsed now, so its counts
+  // may choose otherwise, and nothing predicted is left to miss.
+  if (!write_checked(choose())) throw std::logic_error("router: a parsed frame missed");
+}
+
+void Router::write(std::span<const std::uint8_t> route_input) {
+  write([route_input] { return route_input; });
+}
+
+bool Router::write_checked(std::span<const std::uint8_t> route_input) {
   int highest = -1;
   for (std::size_t i = 0; i < route_input.size() && i < inputs_.size(); ++i) {
     if (route_input[i]) highest = static_cast<int>(i);
@@ -152,17 +164,19 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
   for (int i = 0; i < inputs; ++i) {
     if (!route_input[i]) continue;
     const InputScan& in = inputs_[i];
-    const int bpp = in.frame.bytes_per_pixel;
-    const std::ptrdiff_t src_stride = in.frame.stride;
+    const InputFrame& frame = in.frame();
+    const int bpp = frame.bytes_per_pixel;
+    const std::ptrdiff_t src_stride = frame.stride;
     const bool guard = earlier_highest > i;
-    const std::uint64_t frame_bit = in.parity ? router_detail::kMessageFrameBit : 0;
-    for (const Run& r : in.bands[task]) {
-      const std::uint8_t* src = in.frame.data + r.src;
+    const bool predicted = in.predicted();
+    const std::uint64_t frame_bit = in.frame_bit();
+    for (const Run& r : in.runs(task)) {
+      const std::uint8_t* src = frame.data + r.src;
       std::uint8_t* dst = pixels + r.dst_y * stride + r.dst_x * 3;
       const auto whole = [&](std::uint8_t* d, const std::uint8_t* s, int) {
         copy_pixels(d, s, r.length, bpp);
       };
-      if (in.predicted) {  // overlaps no earlier area (write()): no guard needed
+      if (predicted) {  // overlaps no earlier area (write()): no guard needed
         if (!copy_run<true>(r, src, src_stride, dst, stride, bpp, frame_bit, whole) &&
             (bs.mispredicted.empty() || bs.mispredicted.back() != i)) {
           bs.mispredicted.push_back(i);

@@ -169,6 +169,12 @@ TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
       << r.output;
   EXPECT_EQ(report["groups"][0]["swaps"], 2);
   EXPECT_EQ(report["tick_log"][1]["frames"][1], "torn");
+  // READY in the refresh each frame completes in, a refresh before its swap (spec §6.4).
+  const std::vector<std::vector<int>> ready = {{0, 1}, {}, {0, 1}, {}};
+  for (int t = 0; t < 4; ++t) {
+    EXPECT_EQ(report["tick_log"][t]["ready_inputs"].get<std::vector<int>>(), ready[t]) << t;
+    EXPECT_EQ(report["tick_log"][t]["swapped_groups"].size(), t == 1 || t == 3 ? 1u : 0u) << t;
+  }
 
   // Again into the same folder, two refreshes: the display folder holds this run's frames
   // only (frame-0002 and -0003 of the run above stayed), and nothing else is touched.

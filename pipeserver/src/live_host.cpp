@@ -137,7 +137,7 @@ int run_live_host(const LiveHostOptions& o) {
     report.line(fmt::format("frame {} render_ms {:.3f} wait_ms {:.3f} retries {}\n", k, render_ms,
                             wait_ms, retries));
   }
-  // Stay until the last frame is on the displays: the run still reads our link until then.
+  // Stay until the last frame is taken in and complete: the run reads our link until then.
   if (o.frames > 0 && channel) {
     const WaitResult r =
         channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, o.ready_retries);

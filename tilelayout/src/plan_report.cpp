@@ -6,13 +6,19 @@
 
 #include "tilelayout/coverage.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/dvi_timing.hpp"
 
 namespace l2 {
 namespace {
 
 const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
 
+const char* link_name(int links) {
+  return links == 1 ? "single link" : links == 2 ? "dual link" : "more than dual-link DVI carries";
+}
+
 void servers(const TileLayout& layout, std::string& out) {
+  const int hz = layout.wall.refresh_hz;
   for (const ServerPlan& s : layout.servers) {
     long long used = 0;
     for (const PackedTile& p : s.tiles) used += p.tile.on_display.area();
@@ -21,6 +27,12 @@ void servers(const TileLayout& layout, std::string& out) {
         "pipeserver {}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
         s.server, s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s", s.used_height(),
         s.fb_height, 100.0 * double(used) / total);
+    const DviTiming link = dvi_timing(s.fb_width, s.fb_height, hz);
+    out += fmt::format(
+        "  DVI link: {}x{} at {} Hz needs a {:.2f} MHz pixel clock (CVT reduced blanking, {}x{} "
+        "with blanking): {}\n",
+        s.fb_width, s.fb_height, hz, link.pixel_clock_mhz, link.h_total, link.v_total,
+        link_name(link.links()));
     // Tiles are numbered in packing order, as packing errors number them.
     for (std::size_t i = 0; i < s.tiles.size(); ++i) {
       const PackedTile& p = s.tiles[i];

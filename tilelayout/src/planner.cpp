@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include "tilelayout/coverage.hpp"
 #include "tilelayout/fit.hpp"
+#include "tilelayout/dvi_timing.hpp"
 
 namespace l2 {
 namespace {
@@ -38,6 +41,19 @@ std::vector<int> server_of_logical(const Wall& wall, const std::vector<Rect>& lo
 LayoutError not_fitting(const Wall& wall, int line, const std::string& what) {
   const std::string hint = fit_hint(suggest_fit(wall));
   return LayoutError(where(wall, line) + what + (hint.empty() ? "" : "; " + hint));
+}
+
+// Every pipeserver's framebuffer goes out on one DVI link at the wall's refresh rate.
+std::optional<std::string> dvi_link_warning(const Wall& wall) {
+  const DviTiming t = dvi_timing(wall.framebuffer_width, wall.framebuffer_height, wall.refresh_hz);
+  if (t.links() == 1) return std::nullopt;
+  return fmt::format(
+      "warning: framebuffers of {}x{} at {} Hz need a {:.2f} MHz pixel clock (CVT reduced "
+      "blanking), more than single-link DVI carries ({:g} MHz): {}",
+      wall.framebuffer_width, wall.framebuffer_height, wall.refresh_hz, t.pixel_clock_mhz,
+      kSingleLinkDviMhz,
+      t.links() == 2 ? fmt::format("a dual link carries it ({:g} MHz)", kDualLinkDviMhz)
+                     : fmt::format("more than a dual link too ({:g} MHz)", kDualLinkDviMhz));
 }
 
 }  // namespace
@@ -83,6 +99,8 @@ TileLayout plan_layout(const Wall& wall) {
   for (const std::string& w : coverage_warnings(wall, display_coverage(wall, layout.tiles))) {
     layout.warnings.push_back(where(wall, 0) + "warning: " + w);
   }
+  if (auto w = dvi_link_warning(wall))
+    layout.warnings.push_back(where(wall, wall.framebuffer_line) + *w);
   return layout;
 }
 

@@ -1,5 +1,6 @@
 // The real tilelayout executable, run as a child process: exit status, the one-line errors for
 // broken walls, and the files --png and --scanout write.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -85,6 +86,59 @@ TEST_F(Cli, PrintsThePlan) {
       << r.out;
   EXPECT_NE(r.out.find("display 1: 100x80 at canvas 110,0, swap group 0: 100.0% covered "
                        "(8000 of 8000 pixels)"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(Cli, ReportsThePixelClockOfEachPipeserversDviLink) {
+  const ChildRun r = run(std::string("'") + L2_WALLS_DIR + "/monitors-4x3.toml'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  // 1328x1560 at 60 Hz with CVT reduced blanking: 1328 + 160 pixels a line; 460 us are 45 lines
+  // of 10.39 us; 60 x 1605 x 1488 = 143.29 MHz, rounded down to a multiple of 0.25 MHz.
+  const std::string link =
+      "rows used, framebuffer use 94.8%\n"
+      "  DVI link: 1328x1560 at 60 Hz needs a 143.25 MHz pixel clock (CVT reduced blanking, "
+      "1488x1605 with blanking): single link\n";
+  EXPECT_NE(r.out.find("pipeserver 3: 6 tiles in 3 rows, 1556 of 1560 " + link), std::string::npos)
+      << r.out;
+  int links = 0;  // one per pipeserver
+  for (auto at = r.out.find("  DVI link: "); at != std::string::npos;
+       at = r.out.find("  DVI link: ", at + 1)) {
+    ++links;
+  }
+  EXPECT_EQ(links, 8) << r.out;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
+  const auto wall = [&](const std::string& name, int width, int height) {
+    return write(name, replaced("framebuffer_width = 300\nframebuffer_height = 200",
+                                fmt::format("framebuffer_width = {}\nframebuffer_height = {}",
+                                            width, height)) +
+                           "[mesh]\nboard_max_width = 4096\nboard_max_height = 4096\n");
+  };
+  // 2048x1536 at 60 Hz: 2208 pixels a line, 1536 + 44 lines, 209.32 MHz rounded down.
+  const auto big = wall("big.toml", 2048, 1536);
+  ChildRun r = run("'" + big.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("  DVI link: 2048x1536 at 60 Hz needs a 209.25 MHz pixel clock (CVT "
+                       "reduced blanking, 2208x1580 with blanking): dual link\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(big.string() +
+                       ":14: warning: framebuffers of 2048x1536 at 60 Hz need a 209.25 MHz pixel "
+                       "clock (CVT reduced blanking), more than single-link DVI carries (165 "
+                       "MHz): a dual link carries it (330 MHz)\n"),
+            std::string::npos)
+      << r.out;
+  // 3200x2400: 3360 pixels a line, 2400 + 69 lines, 497.75 MHz.
+  const auto huge = wall("huge.toml", 3200, 2400);
+  r = run("'" + huge.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(huge.string() +
+                       ":14: warning: framebuffers of 3200x2400 at 60 Hz need a 497.75 MHz pixel "
+                       "clock (CVT reduced blanking), more than single-link DVI carries (165 "
+                       "MHz): more than a dual link too (330 MHz)\n"),
             std::string::npos)
       << r.out;
 }

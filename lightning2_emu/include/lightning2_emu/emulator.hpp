@@ -1,10 +1,12 @@
 // The emulated Lightning-2: a board mesh, its display buffers, swap-lock groups and the frame
 // rules of spec §6, fed one scanned-out frame per input at every refresh ("tick").
 //
-//   tick t:  1. output refresh: groups completed during tick t-1 swap; READY to their hosts
+//   tick t:  1. output refresh: groups completed during tick t-1 swap
 //            2. the frames scanned out during t are parsed; new ones are routed
-//            3. groups whose every feeding input has delivered are completed
-// so a display shows during tick t+1 what was scanned out during tick t.
+//            3. groups whose every feeding input has delivered are completed, and READY goes
+//               to every host whose new frame's groups are all complete
+// so a display shows during tick t+1 what was scanned out during tick t, and a host that swaps
+// its next frame in at READY has it taken in at tick t+1: one new frame every refresh.
 #pragma once
 
 #include <array>
@@ -61,7 +63,7 @@ class Emulator {
   struct Tick {
     std::uint64_t index = 0;
     std::vector<int> swapped_groups;  // group ids swapped at this tick's refresh
-    std::vector<int> ready_inputs;    // hosts sent READY at this refresh
+    std::vector<int> ready_inputs;    // hosts sent READY in this tick (their groups completed)
     std::vector<FrameKind> kinds;     // per input
     std::vector<InputFrameStats> inputs;
     std::vector<int> completed_groups;         // group ids completed during this tick
@@ -77,16 +79,16 @@ class Emulator {
   const RunReport& report() const { return report_; }
 
  private:
-  // Reads the router's counts for this tick's frames into tick_.inputs and decides.
-  void observe(int inputs);
+  // Reads the router's counts for this tick's frames into tick_.inputs and decides (nothing
+  // committed).
+  void decide(int inputs);
 
   WorkerPool pool_;
   Router router_;
   FrameSequencer sequencer_;
-  FrameSequencer sequencer_before_;    // as it was before this tick's decision
   std::vector<int> group_of_display_;  // by display index: group index
   std::vector<std::vector<int>> group_display_indices_;
-  FrameSequencer::Refresh refresh_;
+  std::vector<int> swapped_;  // group indices
   FrameSequencer::Decision decision_;
   std::vector<FrameObservation> observations_;
   std::vector<DisplayFrameStats> finished_;

@@ -2,15 +2,23 @@
 // which are routed, when a swap-lock group swaps and which hosts get READY. It sees frames only
 // through their parsed summaries, so it is tested without any pixels.
 //
+// A tick is one refresh: refresh() swaps the groups completed during the last tick, then the
+// tick's frames are decided on and the decision committed. decide() changes nothing, so a
+// caller whose observations turn out wrong (a predicted frame that was not what it was taken
+// for, router.hpp) can ask again before it commits.
+//
 // Decisions the spec leaves open, made here:
 //  - An input "feeds" a group when its frame has a COPY strip that reaches a display of it.
-//  - A frame with the accepted parity is a repeat (the host is still waiting for READY): it is
-//    not routed again and holds up every group it feeds that has not received its new frame.
+//  - A frame with the accepted parity is a repeat (the host is still waiting for READY, or has
+//    not swapped since): it is not routed again and holds up every group it feeds that has not
+//    received its new frame.
 //  - A new parity from a host that has not had READY yet (it did not wait) is "early": not
 //    accepted, not routed; the same frame is accepted once READY has gone out.
-//  - A host gets READY at the refresh at which the last group its new frame fed swaps; a new
-//    frame that fed no group at all (only SKIPs, or displays the mesh lacks) gets it at the
-//    next refresh.
+//  - A host gets READY in the tick in which the last group its new frame fed completes; a new
+//    frame that fed no group at all (only SKIPs, or displays the mesh lacks) gets it in the
+//    tick it is accepted. Its groups swap at the next refresh, where the host's next frame, if
+//    it swapped one in at READY, is taken in: a host that keeps up gets a new frame on the
+//    displays at every refresh, one refresh after it was scanned out.
 //  - A host waiting for READY holds up a group only if its new frame fed that group, so
 //    groups with different members can never wait on each other in a circle.
 #pragma once
@@ -39,20 +47,20 @@ class FrameSequencer {
 
   FrameSequencer(int inputs, int groups);
 
-  struct Refresh {
-    std::vector<int> swapped_groups;  // ascending
-    std::vector<int> ready_inputs;    // ascending: READY goes to these hosts
-  };
-  // The output refresh that starts a tick: groups completed during the last tick swap now.
-  void refresh(Refresh& out);
+  // The output refresh that starts a tick: the groups completed during the last tick swap now
+  // (ascending).
+  void refresh(std::vector<int>& swapped_groups);
 
   struct Decision {
     std::vector<FrameKind> kinds;       // per input
     std::vector<std::uint8_t> route;    // per input: 1 = write this frame's strips
     std::vector<int> completed_groups;  // ascending: finish their frame, swap at next refresh
+    std::vector<int> ready_inputs;      // ascending: READY goes to these hosts now
   };
-  // This tick's frames, one per input (missing entries: no signal).
-  void observe(std::span<const FrameObservation> frames, Decision& out);
+  // What this tick's frames, one per input (missing entries: no signal), mean. Changes nothing.
+  void decide(std::span<const FrameObservation> frames, Decision& out) const;
+  // Takes the decision decide() made on the same frames as this tick's.
+  void commit(std::span<const FrameObservation> frames, const Decision& decision);
 
   int input_count() const { return static_cast<int>(inputs_.size()); }
   int group_count() const { return static_cast<int>(groups_.size()); }
@@ -60,10 +68,10 @@ class FrameSequencer {
 
  private:
   struct InputState {
-    int accepted_parity = -1;       // none yet
-    bool awaiting = false;          // new frame accepted, READY not sent yet
-    std::uint64_t fed = 0;          // groups the accepted new frame fed
-    std::uint64_t not_swapped = 0;  // ... of which these have not swapped yet
+    int accepted_parity = -1;         // none yet
+    bool awaiting = false;            // new frame accepted, READY not sent yet
+    std::uint64_t fed = 0;            // groups the accepted new frame fed
+    std::uint64_t not_completed = 0;  // ... of which these have not completed yet
   };
   struct GroupState {
     bool pending = false;         // some new frame has been written into its back buffers
@@ -71,7 +79,8 @@ class FrameSequencer {
   };
 
   FrameKind classify(int input, const FrameObservation& f) const;
-  bool holds_up(int input, const FrameObservation& f, int group) const;
+  bool holds_up(int input, const FrameObservation& f, FrameKind kind, int group) const;
+  std::uint64_t groups_of(const FrameObservation& f) const;
 
   std::vector<InputState> inputs_;
   std::vector<GroupState> groups_;

@@ -7,9 +7,10 @@
 //   scan()   parses every input in parallel into per-input lists of runs (headers only: the
 //            pixels are not touched). A run is a tile's strips within one band of display rows:
 //            the same source columns on consecutive scanlines going to consecutive rows;
-//   write()  copies the runs of the chosen inputs into the back buffers, in parallel over
-//            display row bands, inputs in ascending order so the higher input wins, and
-//            records one rectangle per run;
+//   write()  asks the caller which inputs to route, from the counts of the scan, and copies
+//            the runs of those into the back buffers, in parallel over display row bands,
+//            inputs in ascending order so the higher input wins, recording one rectangle per
+//            run;
 //   finish() fills every pixel no strip wrote with the background and counts coverage and
 //            overdraw from the rectangles, and starts the displays' next frame.
 // Buffers are reused from frame to frame: after the first frames nothing is allocated. The
@@ -21,13 +22,13 @@
 // its first strip (the one header it reads), and gives the last frame's counts. write() then
 // checks every header of the prediction: a strip's header in the copy loop, which reads that
 // line anyway, the others in a pass of their own. When one differs, write() undoes what it
-// wrote, parses the input, and returns false: the caller decides again on the corrected
-// counts and calls write() again. Without a wrong prediction the result is the same as that
-// of a parse, header for header, so it is exact either way; it saves the parse's pass over
-// the frame, a sixth of the routing time in the headline case.
+// wrote, parses the input, asks the caller's choice again on the parsed counts and writes
+// that. So the result is that of a parse, header for header, count for count, and nothing
+// outside the router sees a prediction; it saves the parse's pass over the frame.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -65,14 +66,19 @@ class Router {
   // than mesh inputs or a frame is larger than the board limit or has fewer than 3 bytes per
   // pixel.
   void scan(std::span<const InputFrame> frames);
+  // Input `input`'s counts from the last scan(): what write() chooses by, and the frame's
+  // parse once write() has returned.
   const InputFrameStats& scanned(int input) const;
 
-  // Writes the strips found by the last scan() for every input i with route_input[i] != 0.
-  // The frames given to scan() must still be valid. Returns false when a predicted frame
-  // turned out different, having kept nothing of this call (pixels it wrote outside earlier
-  // calls' strips get the background in finish() unless written again): scanned() then gives
-  // the parse, and the next write() call (with nothing predicted left) returns true.
-  [[nodiscard]] bool write(std::span<const std::uint8_t> route_input);
+  // Which inputs to write (route[i] != 0: input i), chosen from scanned(). It may be asked
+  // twice in one write(), the second time on counts a parse corrected, so it must choose from
+  // scanned() alone and change nothing; the span must stay valid until write() returns.
+  using RouteChoice = std::function<std::span<const std::uint8_t>()>;
+  // Writes the strips found by the last scan() for the inputs `choose` picks. The frames given
+  // to scan() must still be valid.
+  void write(const RouteChoice& choose);
+  // The same for a fixed choice.
+  void write(std::span<const std::uint8_t> route_input);
 
   // On by default; off, every frame is parsed (to measure the parse, or compare the two).
   void predict_layouts(bool on) { predict_ = on; }
@@ -96,6 +102,10 @@ class Router {
     int display, band;
   };
 
+  // write() for one choice; false when a predicted frame turned out different, having kept
+  // nothing of this call (pixels it wrote outside earlier calls' strips get the background in
+  // finish() unless written again), the input parsed.
+  bool write_checked(std::span<const std::uint8_t> route_input);
   void write_band(int band_list, std::span<const std::uint8_t> route_input);
   // Checks every predicted input's headers that the copy did not (all of them unless `copied`),
   // parses the inputs that differ; false when one did.
