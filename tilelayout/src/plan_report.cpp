@@ -5,8 +5,8 @@
 #include <set>
 
 #include "tilelayout/coverage.hpp"
-#include "tilelayout/planner.hpp"
 #include "tilelayout/dvi_timing.hpp"
+#include "tilelayout/planner.hpp"
 
 namespace l2 {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "tilelayout/coverage.hpp"
-#include "tilelayout/fit.hpp"
 #include "tilelayout/dvi_timing.hpp"
+#include "tilelayout/fit.hpp"
 
 namespace l2 {
 namespace {
