@@ -123,6 +123,18 @@ TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
   }
 }
 
+// The reproducer, python3 -c 'print("a"+".a"*50000+" = 1")': the stack overflow inside
+// the TOML parser ended the program with SIGSEGV and no message.
+TEST_F(Cli, DeeplyNestedKeysAreAOneLineError) {
+  std::string text = "a";
+  for (int i = 0; i < 50000; ++i) text += ".a";
+  const fs::path wall = write("deep.toml", text + " = 1\n");
+  const ChildRun r = run("'" + wall.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
+                       ":1: nested more than 16 levels deep: not a wall file\n");
+}
+
 TEST_F(Cli, UncoveredCanvasIsAWarningNotAnError) {
   const fs::path wall = write(
       "holes.toml", replaced("kind = \"grid\"\ntile_width = 50\ntile_height = 40",
