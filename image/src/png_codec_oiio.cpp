@@ -4,6 +4,8 @@
 #include <png.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -186,6 +189,57 @@ std::optional<std::pair<long, long>> gif_screen(std::FILE* file) {
   return std::pair<long, long>(header[6] | header[7] << 8, header[8] | header[9] << 8);
 }
 
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// OpenImageIO's reason, or ours where it gives none (its PNM reader fails a file that ends
+// early with an empty error).
+std::string read_failed(const std::string& format, const std::string& error) {
+  if (!error.empty()) return "cannot read: " + error;
+  return "cannot read: the " + upper(format) + " file is damaged or ends early";
+}
+
+// The format a file's first bytes say it is in (OpenImageIO's name), for formats that begin
+// with a signature; empty for others. (OpenImageIO's own test, valid_file(), fails a damaged
+// file, which is when the question is asked.)
+std::string format_by_signature(const char* path) {
+  unsigned char head[12] = {};
+  std::FILE* file = std::fopen(path, "rb");
+  if (!file) return {};
+  const std::size_t n = std::fread(head, 1, sizeof head, file);
+  std::fclose(file);
+  const auto starts = [&](std::string_view magic) {
+    return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
+  };
+  if (starts("GIF87a") || starts("GIF89a")) return "gif";
+  if (starts("BM")) return "bmp";
+  if (n >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') return "pnm";
+  if (starts("II*\0") || starts("MM\0*")) return "tiff";
+  if (starts("\xff\xd8\xff")) return "jpeg";
+  if (starts("DDS ")) return "dds";
+  if (starts("8BPS")) return "psd";
+  if (starts("\x76\x2f\x31\x01")) return "openexr";
+  if (starts("RIFF") && n >= 12 && std::memcmp(head + 8, "WEBP", 4) == 0) return "webp";
+  return {};
+}
+
+// When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
+// .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
+// the file is.
+std::string open_failed(const char* path) {
+  const std::string error = OIIO::geterror();
+  const std::string format = format_by_signature(path);
+  if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
+  const auto reader = OIIO::ImageInput::create(format);
+  OIIO::ImageSpec spec;
+  std::string why = "damaged";
+  if (reader && !reader->open(path, spec)) why = reader->geterror();
+  if (why.empty()) why = "damaged or ends early";
+  return "cannot read: a " + upper(format) + " file: " + why;
+}
+
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
 // in a captured RGBA frame). Grey is spread over R, G and B.
@@ -209,7 +263,7 @@ std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) return "cannot read: " + OIIO::geterror();
+  if (!in) return open_failed(path);
   const OIIO::ImageSpec& spec = in->spec();
   const std::string compression = spec.get_string_attribute("compression");
   source = {in->format_name(), spec.nchannels >= 3 ? 3 : 1,
@@ -227,14 +281,14 @@ std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try
   if (!dst) return "cannot read: out of memory";
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
-      return "cannot read: " + in->geterror();
+      return read_failed(in->format_name(), in->geterror());
     }
     return {};
   }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
   std::vector<std::uint8_t> grey(count);
   if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
-    return "cannot read: " + in->geterror();
+    return read_failed(in->format_name(), in->geterror());
   }
   for (std::size_t i = 0; i < count; ++i) dst[i * 3] = dst[i * 3 + 1] = dst[i * 3 + 2] = grey[i];
   return {};
