@@ -87,6 +87,22 @@ TEST_F(Cli, PrintsThePlan) {
       << r.out;
 }
 
+// A wall's name and keys are the file's text: control characters in them (escape sequences
+// that clear the screen or retitle the terminal) reached the terminal as they were.
+TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
+  ChildRun r = run(
+      "'" +
+      write("named.toml", "name = \"\\u001b[2J\\u001b]0;owned\\u0007 wall\"\n" + kGood).string() +
+      "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("wall \"\\x1b[2J\\x1b]0;owned\\x07 wall\" (", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
+  const fs::path keyed = write("keyed.toml", "\"\\u001b[31mred\" = 1\n" + kGood);
+  r = run("'" + keyed.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout: " + keyed.string() + ":1: \\x1b[31mred: unknown key\n");
+}
+
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
   struct Case {
     std::string text, error;
