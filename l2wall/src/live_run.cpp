@@ -295,6 +295,17 @@ class LiveRun {
     if (viz_ && viz_->down() && !viz_->said_why())
       return viz_->describe_down(shown_, displays_kept());
     if (Host* ended = hosts_.poll_ended()) {
+      // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
+      // there, never delivered the frame everyone waits for: that one stopped answering.
+      if (gave_up_waiting(*ended)) {
+        if (const Host* hung = hosts_.hung_host(shown_)) {
+          return fmt::format(
+              "pipeserver {} (pid {}) stopped answering{}: it did not deliver frame {}, and "
+              "pipeserver {} gave up {} ({}); {}",
+              hung->server, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
+              ended->server, waiting_for(*ended), ended->exit->describe(), displays_kept());
+        }
+      }
       if (lost_a_running_server(*ended)) {
         return fmt::format(
             "the {} stopped answering: pipeserver {} gave up waiting for it at "
@@ -305,6 +316,17 @@ class LiveRun {
     }
     return viz_ ? viz_->describe_down(shown_, displays_kept())
                 : std::string("a process of the run ended");
+  }
+
+  static bool gave_up_waiting(const Host& h) {
+    return h.exit && h.exit->signal == 0 &&
+           (h.exit->code == kExitNoReady || h.exit->code == kExitLostCompositingServer);
+  }
+
+  // What a host that gave up was waiting for, by its exit code.
+  std::string waiting_for(const Host& h) const {
+    if (h.exit->code == kExitNoReady) return "waiting for READY";
+    return "waiting for SWAPPED from the " + (viz_ ? viz_->name() : std::string("vizserver"));
   }
 
   // A host that gave up on a compositing server which is still running: the server hangs (a
@@ -321,9 +343,15 @@ class LiveRun {
     // A host that has not delivered the frame the displays wait for is the one that hangs; if
     // every host delivered it, the compositing server did not.
     std::string culprits = hosts_.late_hosts(shown_);
+    // What the hosts that did deliver are doing: waiting for the swap that cannot come.
+    std::string note;
+    if (const Host* hung = hosts_.hung_host(shown_)) {
+      note = fmt::format("{}; the other pipeservers are {}", HostSet::stopped_note(*hung),
+                         dvi_ ? "waiting for READY" : "waiting for SWAPPED");
+    }
     if (culprits.empty() && viz_) culprits = "the " + viz_->name();
-    throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}; {}",
-                               limit_ms, culprits.empty() ? "no host" : culprits, shown_,
+    throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
+                               limit_ms, culprits.empty() ? "no host" : culprits, shown_, note,
                                displays_kept()));
   }
 
