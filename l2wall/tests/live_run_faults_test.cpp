@@ -106,6 +106,9 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   EXPECT_NE(output.find(fmt::format("pipeserver 2 (pid {}) did not deliver frame", victim)),
             std::string::npos)
       << output;
+  EXPECT_NE(output.find(" (stopped by a signal); the other pipeservers are waiting for READY; "),
+            std::string::npos)
+      << output;
   expect_clean(run);
 }
 
