@@ -345,7 +345,10 @@ class LiveRun {
     std::string culprits = hosts_.late_hosts(shown_);
     // What the hosts that did deliver are doing: waiting for the swap that cannot come.
     std::string note;
-    if (const Host* hung = hosts_.hung_host(shown_)) {
+    const auto& all = hosts_.hosts();
+    const bool some_delivered = std::any_of(
+        all.begin(), all.end(), [&](const Host& h) { return hosts_.delivered(h) > shown_; });
+    if (const Host* hung = some_delivered ? hosts_.hung_host(shown_) : nullptr) {
       note = fmt::format("{}; the other pipeservers are {}", HostSet::stopped_note(*hung),
                          dvi_ ? "waiting for READY" : "waiting for SWAPPED");
     }
