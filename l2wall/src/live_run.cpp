@@ -182,6 +182,7 @@ class LiveRun {
     const auto now = RunClock::now();
     const int lowest = dvi_->lowest_frame_shown(hosts_);
     dvi_shown_ = std::min(lowest, o_.frames - 1);
+    last_swap_ = now;  // the displays swapped: the compositing server's frame is waited from here
     totals_.dropped_readies +=
         static_cast<std::uint64_t>(dvi_->send_readies(tick, hosts_, o_.drop_ready));
     while (shown_ <= lowest && shown_ < o_.frames) {
@@ -210,8 +211,10 @@ class LiveRun {
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
       if (shown_ == o_.noise_after) totals_.noise_bytes += hosts_.inject_noise();
       ++shown_;
-      last_swap_ = now;
     }
+    // The stall clock restarts once this swap's work is done: the time spent comparing and
+    // keeping pictures, or waiting for the compositing server's frame, is not a host's.
+    last_swap_ = RunClock::now();
     if (show_ && shown_ > 0) {
       const FrameRecord& r = records_[static_cast<std::size_t>(shown_ - 1)];
       show_->show(shown_ - 1, static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh),
@@ -239,7 +242,7 @@ class LiveRun {
       r.paused_ms = paused_ms_;
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
       ++shown_;
-      last_swap_ = now;
+      last_swap_ = RunClock::now();  // after keeping the frame: that time is not a host's
       progress(now);
     }
   }
@@ -336,6 +339,7 @@ class LiveRun {
   }
 
   void check_stall() {
+    if (shown_ >= o_.frames) return;  // every frame is on the displays: nothing to wait for
     const auto now = RunClock::now();
     // Before the first swap the hosts may still be starting (GL context, first render).
     const int limit_ms = shown_ == 0 ? o_.start_timeout_ms : o_.stall_timeout_ms;

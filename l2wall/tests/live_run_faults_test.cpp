@@ -156,6 +156,21 @@ TEST_P(StoppedPipeserver, IsNamedNotTheHostsThatGaveUpWaitingForIt) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, StoppedPipeserver, ::testing::Values("dvi", "vizserver", "both"));
 
+// The stall clock ran from the start of a swap's work (comparing, keeping pictures, the
+// compositing server's frame), so a swap whose work took longer than the stall timeout ended
+// the run: "no display swap ... did not deliver frame 10" of a 10-frame run, on a loaded
+// machine. Keeping the only frame takes longer than 1 ms; the run has nothing left to wait for.
+TEST(LiveRun, ASlowLastSwapIsNotAStall) {
+  WallRun run("slow-last-swap",
+              {"--frames", "1", "--refresh", "0", "--keep", "every", "--stall-timeout", "1"});
+  const ExitStatus status = run.wait(60s);
+  const std::string output = run.output();
+  EXPECT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_EQ(output.find("no display swap"), std::string::npos) << output;
+  EXPECT_TRUE(fs::exists(run.out() / "frame-0" / "wall.png")) << output;
+  expect_clean(run);
+}
+
 TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
   WallRun run("sigterm", {"--frames", "100000", "--refresh", "60"});
   ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
