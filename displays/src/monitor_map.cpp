@@ -6,6 +6,7 @@
 #include <charconv>
 #include <optional>
 
+#include "command_line/printable.hpp"
 #include "displays/display_error.hpp"
 
 namespace l2 {
@@ -13,8 +14,8 @@ namespace l2 {
 namespace {
 
 std::string wall_name(const Wall& wall) {
-  if (!wall.source.empty()) return wall.source.string();
-  return wall.name.empty() ? std::string("wall") : fmt::format("wall '{}'", wall.name);
+  if (!wall.source.empty()) return printable(wall.source.string());
+  return wall.name.empty() ? std::string("wall") : fmt::format("wall '{}'", printable(wall.name));
 }
 
 std::optional<int> as_index(const std::string& text) {

@@ -15,8 +15,13 @@ namespace l2::png_codec {
 
 // Where read_rgb() puts the pixels: asked once for a width x height 8-bit RGB buffer with
 // contiguous rows, and only for sides up to max_side (a file's header can claim any size).
+// `accept` is asked first, with the size the file's header claims and before read_rgb() or the
+// library under it allocates anything for the pixels; when it says no, read_rgb() returns at
+// once with no error of its own (the caller knows why). `allocate` returns nullptr when out of
+// memory.
 struct RgbSink {
   void* context;
+  bool (*accept)(void* context, int width, int height);
   std::uint8_t* (*allocate)(void* context, int width, int height);
   int max_side;
 };
@@ -37,9 +42,9 @@ struct Codec {
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
-// partial rebuild) then fail with "has no l2_png_codec_v3" instead of misreading each other's
+// partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v3";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v4";
 using EntryPoint = const Codec* (*)();
 
 }  // namespace l2::png_codec

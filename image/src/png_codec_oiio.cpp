@@ -4,13 +4,18 @@
 #include <png.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "png_codec.hpp"
@@ -101,7 +106,7 @@ bool png_steps(PngRead& read, png_bytep (*size)(void*, png_uint_32, png_uint_32)
     png_failed(read.png, "not 8-bit RGB after conversion");
   }
   png_bytep pixels = size(context, width, height);
-  if (!pixels) return true;  // refused by size: the caller says why
+  if (!pixels) return true;  // refused or out of memory: sizing says which
   for (int pass = 0; pass < passes; ++pass) {
     for (png_uint_32 y = 0; y < height; ++y) {
       png_read_row(read.png, pixels + std::size_t{y} * width * 3, nullptr);
@@ -124,6 +129,19 @@ std::string size_refused(long width, long height, int max_side) {
          ")";
 }
 
+// The check every reader makes on the size a file's header claims, before anything is allocated
+// for the pixels: nothing when the picture may be read, otherwise the reason (empty when the
+// caller refused it: it says why itself).
+std::optional<std::string> refusal(const RgbSink& sink, long width, long height) {
+  if (width > sink.max_side || height > sink.max_side) {
+    return size_refused(width, height, sink.max_side);
+  }
+  if (!sink.accept(sink.context, static_cast<int>(width), static_cast<int>(height))) {
+    return std::string();
+  }
+  return std::nullopt;
+}
+
 // Empty on success, the reason otherwise.
 std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
   read.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &read, png_failed, png_warned);
@@ -136,13 +154,14 @@ std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
   const auto size = [](void* context, png_uint_32 width, png_uint_32 height) -> png_bytep {
     auto& s = *static_cast<Sizing*>(context);
-    const auto max = static_cast<png_uint_32>(s.sink.max_side);
-    if (width > max || height > max) {
-      s.refused =
-          size_refused(static_cast<long>(width), static_cast<long>(height), s.sink.max_side);
+    if (const auto why = refusal(s.sink, width, height)) {
+      s.refused = *why;
       return nullptr;
     }
-    return s.sink.allocate(s.sink.context, static_cast<int>(width), static_cast<int>(height));
+    png_bytep pixels =
+        s.sink.allocate(s.sink.context, static_cast<int>(width), static_cast<int>(height));
+    if (!pixels) s.refused = "cannot read: out of memory";
+    return pixels;
   };
   const bool read_all = png_steps(read, size, &sizing);
   if (read.colour_type >= 0) {
@@ -156,6 +175,70 @@ std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
 }
 
 // --- other formats, through OpenImageIO ---------------------------------------------------
+
+// The logical screen a GIF file declares, or nothing when the file is not a GIF. OpenImageIO's
+// GIF reader allocates the whole screen, 4 bytes a pixel, as it opens the file, before its spec
+// can be checked: a 29-byte GIF claiming 16384x16384 took 1 GB.
+std::optional<std::pair<long, long>> gif_screen(std::FILE* file) {
+  unsigned char header[10];
+  const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
+  std::rewind(file);
+  if (!read || (std::memcmp(header, "GIF87a", 6) != 0 && std::memcmp(header, "GIF89a", 6) != 0)) {
+    return std::nullopt;
+  }
+  return std::pair<long, long>(header[6] | header[7] << 8, header[8] | header[9] << 8);
+}
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// OpenImageIO's reason, or ours where it gives none (its PNM reader fails a file that ends
+// early with an empty error).
+std::string read_failed(const std::string& format, const std::string& error) {
+  if (!error.empty()) return "cannot read: " + error;
+  return "cannot read: the " + upper(format) + " file is damaged or ends early";
+}
+
+// The format a file's first bytes say it is in (OpenImageIO's name), for formats that begin
+// with a signature; empty for others. (OpenImageIO's own test, valid_file(), fails a damaged
+// file, which is when the question is asked.)
+std::string format_by_signature(const char* path) {
+  unsigned char head[12] = {};
+  std::FILE* file = std::fopen(path, "rb");
+  if (!file) return {};
+  const std::size_t n = std::fread(head, 1, sizeof head, file);
+  std::fclose(file);
+  const auto starts = [&](std::string_view magic) {
+    return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
+  };
+  if (starts("GIF87a") || starts("GIF89a")) return "gif";
+  if (starts("BM")) return "bmp";
+  if (n >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') return "pnm";
+  if (starts("II*\0") || starts("MM\0*")) return "tiff";
+  if (starts("\xff\xd8\xff")) return "jpeg";
+  if (starts("DDS ")) return "dds";
+  if (starts("8BPS")) return "psd";
+  if (starts("\x76\x2f\x31\x01")) return "openexr";
+  if (starts("RIFF") && n >= 12 && std::memcmp(head + 8, "WEBP", 4) == 0) return "webp";
+  return {};
+}
+
+// When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
+// .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
+// the file is.
+std::string open_failed(const char* path) {
+  const std::string error = OIIO::geterror();
+  const std::string format = format_by_signature(path);
+  if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
+  const auto reader = OIIO::ImageInput::create(format);
+  OIIO::ImageSpec spec;
+  std::string why = "damaged";
+  if (reader && !reader->open(path, spec)) why = reader->geterror();
+  if (why.empty()) why = "damaged or ends early";
+  return "cannot read: a " + upper(format) + " file: " + why;
+}
 
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
@@ -173,11 +256,14 @@ std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try
       return "cannot read: a folder, not a file";
     }
     if (is_png(read.file)) return read_png_file(read, sink, source);
+    if (const auto screen = gif_screen(read.file)) {
+      if (const auto why = refusal(sink, screen->first, screen->second)) return *why;
+    }
   }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) return "cannot read: " + OIIO::geterror();
+  if (!in) return open_failed(path);
   const OIIO::ImageSpec& spec = in->spec();
   const std::string compression = spec.get_string_attribute("compression");
   source = {in->format_name(), spec.nchannels >= 3 ? 3 : 1,
@@ -190,20 +276,19 @@ std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try
                      : "a volume (depth " + std::to_string(spec.depth) + "), not a picture";
   }
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
-  if (spec.width > sink.max_side || spec.height > sink.max_side) {
-    return size_refused(spec.width, spec.height, sink.max_side);
-  }
+  if (const auto why = refusal(sink, spec.width, spec.height)) return *why;
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
+  if (!dst) return "cannot read: out of memory";
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
-      return "cannot read: " + in->geterror();
+      return read_failed(in->format_name(), in->geterror());
     }
     return {};
   }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
   std::vector<std::uint8_t> grey(count);
   if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
-    return "cannot read: " + in->geterror();
+    return read_failed(in->format_name(), in->geterror());
   }
   for (std::size_t i = 0; i < count; ++i) dst[i * 3] = dst[i * 3 + 1] = dst[i * 3 + 2] = grey[i];
   return {};
@@ -216,6 +301,6 @@ constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb};
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v3() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v4() {
   return &kCodec;
 }

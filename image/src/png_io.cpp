@@ -3,6 +3,8 @@
 #include <dlfcn.h>
 
 #include <cctype>
+#include <exception>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -53,24 +55,47 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
   check(path, failed);
 }
 
-RgbImage read_png(const std::filesystem::path& path, PictureSource* source) {
-  RgbImage image;
-  const png_codec::RgbSink sink{&image,
+RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
+                  const SizeCheck& accept) {
+  // What `accept` throws is kept here and thrown once the codec has returned: no exception may
+  // cross the module or libpng's C frames.
+  struct Target {
+    RgbImage image;
+    const SizeCheck& accept;
+    std::exception_ptr refused;
+  } target{RgbImage(), accept, nullptr};
+  const png_codec::RgbSink sink{&target,
                                 [](void* context, int width, int height) {
-                                  auto& out = *static_cast<RgbImage*>(context);
-                                  out = RgbImage(width, height);
-                                  return out.data();
+                                  auto& out = *static_cast<Target*>(context);
+                                  try {
+                                    if (out.accept) out.accept(width, height);
+                                    return true;
+                                  } catch (...) {
+                                    out.refused = std::current_exception();
+                                    return false;
+                                  }
+                                },
+                                [](void* context, int width, int height) -> std::uint8_t* {
+                                  auto& out = *static_cast<Target*>(context);
+                                  try {
+                                    out.image = RgbImage(width, height);
+                                    return out.image.data();
+                                  } catch (const std::bad_alloc&) {
+                                    return nullptr;
+                                  }
                                 },
                                 kMaxPictureSide};
   png_codec::Source found;
-  check(path, codec(path).read_rgb(path.c_str(), sink, &found));
+  const std::string failed = codec(path).read_rgb(path.c_str(), sink, &found);
+  if (target.refused) std::rethrow_exception(target.refused);
+  check(path, failed);
   if (source) *source = {found.format, found.colour_channels, found.lossy};
-  return image;
+  return std::move(target.image);
 }
 
-RgbImage read_scanned_frame(const std::filesystem::path& path) {
+RgbImage read_scanned_frame(const std::filesystem::path& path, const SizeCheck& accept) {
   PictureSource source;
-  RgbImage frame = read_png(path, &source);
+  RgbImage frame = read_png(path, &source, accept);
   if (source.colour_channels < 3) {
     throw std::runtime_error(path.string() +
                              ": a grayscale picture (one colour channel) cannot hold strip "

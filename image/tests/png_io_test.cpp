@@ -200,6 +200,29 @@ TEST(PngIo, DamagedPngSaysWhyAndPrintsNothing) {
   EXPECT_EQ(printed, "");
 }
 
+// A PPM that ends before its pixels: OpenImageIO fails it without a reason, and the message was
+// "cannot read: " and nothing.
+TEST(PngIo, ATruncatedPpmSaysWhy) {
+  const auto path = temp_dir() / "short.ppm";
+  std::ofstream(path, std::ios::binary) << "P6\n100 100\n255\n" << std::string(30, '\0');
+  EXPECT_EQ(read_error(path),
+            path.string() + ": cannot read: the PNM file is damaged or ends early");
+}
+
+// A damaged GIF named .png: OpenImageIO's PNG reader, chosen by the name, said "Not a PNG file".
+// The reason is the GIF reader's, and the message says it is a GIF.
+TEST(PngIo, ADamagedGifNamedPngIsCalledAGif) {
+  const auto path = temp_dir() / "picture.png";
+  // 4x4, no colour table anywhere.
+  std::ofstream(path, std::ios::binary) << std::string(
+      "GIF89a\x04\x00\x04\x00\x00\x00\x00,\x00\x00\x00\x00\x04\x00\x04\x00\x00"
+      "\x02\x02\x44\x01\x00;",
+      29);
+  EXPECT_EQ(
+      read_error(path),
+      path.string() + ": cannot read: a GIF file: Neither local nor global colormap present.");
+}
+
 TEST(PngIo, MissingFileOrFolderSaysWhy) {
   EXPECT_EQ(read_error("/nonexistent/frame-7.png"),
             "/nonexistent/frame-7.png: cannot read: No such file or directory");

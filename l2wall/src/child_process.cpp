@@ -7,6 +7,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -48,6 +50,19 @@ ChildProcess::ChildProcess(ChildProcess&& other) noexcept
 
 ChildProcess::~ChildProcess() {
   if (pid_ > 0 && !status_) terminate();
+}
+
+bool ChildProcess::stopped() const {
+  if (pid_ <= 0 || status_) return false;
+  std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+  std::stringstream text;
+  text << in.rdbuf();
+  // "pid (command) state ...": the command may hold spaces and parentheses, the state follows
+  // the last ')'.
+  const std::string stat = text.str();
+  const std::size_t end = stat.rfind(')');
+  return end != std::string::npos && end + 2 < stat.size() &&
+         (stat[end + 2] == 'T' || stat[end + 2] == 't');
 }
 
 std::optional<ExitStatus> ChildProcess::poll() {

@@ -34,6 +34,9 @@ class ChildProcess {
 
   // Non-blocking: the exit status once the child has ended, nullopt while it runs.
   std::optional<ExitStatus> poll();
+  // Whether the child is stopped by a signal (SIGSTOP, SIGTSTP: state T in /proc), so not
+  // running although it has not ended.
+  bool stopped() const;
   // Waits up to `timeout` for the child to end by itself.
   std::optional<ExitStatus> wait_for(std::chrono::milliseconds timeout);
   // SIGTERM without waiting: a run ending several children asks them all first, then reaps

@@ -176,6 +176,21 @@ std::string HostSet::late_hosts(int shown) const {
   return culprits;
 }
 
+const Host* HostSet::hung_host(int shown) {
+  poll_ended();
+  const Host* late = nullptr;
+  for (const Host& h : hosts_) {
+    if (h.exit || !h.process || delivered(h) >= shown + 1) continue;
+    if (h.process->stopped()) return &h;
+    if (!late) late = &h;
+  }
+  return late;
+}
+
+std::string HostSet::stopped_note(const Host& h) {
+  return h.process && h.process->stopped() ? " (stopped by a signal)" : "";
+}
+
 void HostSet::finish(milliseconds timeout) {
   const auto deadline = RunClock::now() + timeout;
   for (;;) {

@@ -92,6 +92,12 @@ class HostSet {
   std::string late_hosts(int shown) const;
   // How many frames the host delivered: published on its link, or reported.
   int delivered(const Host& h) const;
+  // The host that stopped answering while the displays wait for frame `shown`: still running
+  // (or stopped by a signal) and frame `shown` not delivered; a stopped one first. Nullptr if
+  // none: every late host has ended, or none is late.
+  const Host* hung_host(int shown);
+  // " (stopped by a signal)" for a host that is, otherwise empty.
+  static std::string stopped_note(const Host& h);
 
   // After the last frame: waits for every host to end by itself, serving the back-channels.
   // Throws RunFault for a host that ends badly or not within `timeout`.

@@ -174,6 +174,7 @@ class LiveRun {
     const auto now = RunClock::now();
     const int lowest = dvi_->lowest_frame_shown(hosts_);
     dvi_shown_ = std::min(lowest, o_.frames - 1);
+    last_swap_ = now;  // the displays swapped: the compositing server's frame is waited from here
     while (shown_ <= lowest && shown_ < o_.frames) {
       FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
       r.shown = true;
@@ -200,8 +201,10 @@ class LiveRun {
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
       if (shown_ == o_.noise_after) totals_.noise_bytes += hosts_.inject_noise();
       ++shown_;
-      last_swap_ = now;
     }
+    // The stall clock restarts once this swap's work is done: the time spent comparing and
+    // keeping pictures, or waiting for the compositing server's frame, is not a host's.
+    last_swap_ = RunClock::now();
     if (show_ && shown_ > 0) {
       const FrameRecord& r = records_[static_cast<std::size_t>(shown_ - 1)];
       show_->show(shown_ - 1, static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh),
@@ -229,7 +232,7 @@ class LiveRun {
       r.paused_ms = paused_ms_;
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
       ++shown_;
-      last_swap_ = now;
+      last_swap_ = RunClock::now();  // after keeping the frame: that time is not a host's
       progress(now);
     }
   }
@@ -285,6 +288,17 @@ class LiveRun {
     if (viz_ && viz_->down() && !viz_->said_why())
       return viz_->describe_down(shown_, displays_kept());
     if (Host* ended = hosts_.poll_ended()) {
+      // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
+      // there, never delivered the frame everyone waits for: that one stopped answering.
+      if (gave_up_waiting(*ended)) {
+        if (const Host* hung = hosts_.hung_host(shown_)) {
+          return fmt::format(
+              "pipeserver {} (pid {}) stopped answering{}: it did not deliver frame {}, and "
+              "pipeserver {} gave up {} ({}); {}",
+              hung->server, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
+              ended->server, waiting_for(*ended), ended->exit->describe(), displays_kept());
+        }
+      }
       if (lost_a_running_server(*ended)) {
         return fmt::format(
             "the {} stopped answering: pipeserver {} gave up waiting for it at "
@@ -297,6 +311,17 @@ class LiveRun {
                 : std::string("a process of the run ended");
   }
 
+  static bool gave_up_waiting(const Host& h) {
+    return h.exit && h.exit->signal == 0 &&
+           (h.exit->code == kExitNoReady || h.exit->code == kExitLostCompositingServer);
+  }
+
+  // What a host that gave up was waiting for, by its exit code.
+  std::string waiting_for(const Host& h) const {
+    if (h.exit->code == kExitNoReady) return "waiting for READY";
+    return "waiting for SWAPPED from the " + (viz_ ? viz_->name() : std::string("vizserver"));
+  }
+
   // A host that gave up on a compositing server which is still running: the server hangs (a
   // host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout).
   bool lost_a_running_server(const Host& h) const {
@@ -304,6 +329,7 @@ class LiveRun {
   }
 
   void check_stall() {
+    if (shown_ >= o_.frames) return;  // every frame is on the displays: nothing to wait for
     const auto now = RunClock::now();
     // Before the first swap the hosts may still be starting (GL context, first render).
     const int limit_ms = shown_ == 0 ? o_.start_timeout_ms : o_.stall_timeout_ms;
@@ -311,9 +337,18 @@ class LiveRun {
     // A host that has not delivered the frame the displays wait for is the one that hangs; if
     // every host delivered it, the compositing server did not.
     std::string culprits = hosts_.late_hosts(shown_);
+    // What the hosts that did deliver are doing: waiting for the swap that cannot come.
+    std::string note;
+    const auto& all = hosts_.hosts();
+    const bool some_delivered = std::any_of(
+        all.begin(), all.end(), [&](const Host& h) { return hosts_.delivered(h) > shown_; });
+    if (const Host* hung = some_delivered ? hosts_.hung_host(shown_) : nullptr) {
+      note = fmt::format("{}; the other pipeservers are {}", HostSet::stopped_note(*hung),
+                         dvi_ ? "waiting for READY" : "waiting for SWAPPED");
+    }
     if (culprits.empty() && viz_) culprits = "the " + viz_->name();
-    throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}; {}",
-                               limit_ms, culprits.empty() ? "no host" : culprits, shown_,
+    throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
+                               limit_ms, culprits.empty() ? "no host" : culprits, shown_, note,
                                displays_kept()));
   }
 

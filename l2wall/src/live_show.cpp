@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "command_line/printable.hpp"
 #include "image/folders.hpp"
 
 namespace l2 {
@@ -43,7 +44,7 @@ LiveShow::LiveShow(const RunOptions& o, const Wall& wall)
 LiveShow::~LiveShow() = default;
 
 std::string LiveShow::title(const Wall& wall) {
-  return wall.name.empty() ? std::string("l2wall") : "l2wall - " + wall.name;
+  return wall.name.empty() ? std::string("l2wall") : "l2wall - " + printable(wall.name);
 }
 
 std::vector<std::string> LiveShow::host_args() {

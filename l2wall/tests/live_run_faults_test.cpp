@@ -146,6 +146,68 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   EXPECT_NE(output.find(fmt::format("pipeserver 2 (pid {}) did not deliver frame", victim)),
             std::string::npos)
       << output;
+  EXPECT_NE(output.find(" (stopped by a signal); the other pipeservers are waiting for READY; "),
+            std::string::npos)
+      << output;
+  expect_clean(run);
+}
+
+// A stopped pipeserver when the other hosts give up first: they wait for READY (or SWAPPED)
+// ready-timeout x (retries + 1), far less than the stall timeout here, and exit; the run named
+// one of them ("exited with code 3 while rendering frame 841"), never the stopped one. It names
+// the stopped one, and what the others were waiting for.
+class StoppedPipeserver : public ::testing::TestWithParam<const char*> {};
+
+// Pipeserver `server` once it has reported a few frames, found by its report file (the
+// vizserver path has no links to find it by); its pid.
+pid_t reporting_pipeserver(const WallRun& run, int server) {
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
+  const std::string report = fmt::format("host-{}.log", server);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const auto pids = run.processes_naming(report);
+    if (pids.size() == 1 && run.host_log_lines(server) >= 3) return pids.front();
+    std::this_thread::sleep_for(20ms);
+  }
+  return -1;
+}
+
+TEST_P(StoppedPipeserver, IsNamedNotTheHostsThatGaveUpWaitingForIt) {
+  const std::string path = GetParam();
+  WallRun run("stopped-" + path, {"--frames", "100000", "--refresh", "0", "--path", path,
+                                  "--ready-timeout", "300", "--stall-timeout", "60000"});
+  const pid_t victim = reporting_pipeserver(run, 2);
+  ASSERT_GT(victim, 0) << run.output();
+  ASSERT_EQ(kill(victim, SIGSTOP), 0);
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find(fmt::format("l2wall: pipeserver 2 (pid {}) stopped answering (stopped by "
+                                    "a signal): it did not deliver frame ",
+                                    victim)),
+            std::string::npos)
+      << output;
+  const std::string waiting = path == "vizserver"
+                                  ? "gave up waiting for SWAPPED from the compositing server"
+                                  : "gave up waiting for READY";
+  EXPECT_NE(output.find(waiting), std::string::npos) << output;
+  EXPECT_EQ(output.find("while rendering frame"), std::string::npos) << output;
+  expect_clean(run);  // a stopped process still ends on SIGKILL
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, StoppedPipeserver, ::testing::Values("dvi", "vizserver", "both"));
+
+// The stall clock ran from the start of a swap's work (comparing, keeping pictures, the
+// compositing server's frame), so a swap whose work took longer than the stall timeout ended
+// the run: "no display swap ... did not deliver frame 10" of a 10-frame run, on a loaded
+// machine. Keeping the only frame takes longer than 1 ms; the run has nothing left to wait for.
+TEST(LiveRun, ASlowLastSwapIsNotAStall) {
+  WallRun run("slow-last-swap",
+              {"--frames", "1", "--refresh", "0", "--keep", "every", "--stall-timeout", "1"});
+  const ExitStatus status = run.wait(60s);
+  const std::string output = run.output();
+  EXPECT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_EQ(output.find("no display swap"), std::string::npos) << output;
+  EXPECT_TRUE(fs::exists(run.out() / "frame-0" / "wall.png")) << output;
   expect_clean(run);
 }
 

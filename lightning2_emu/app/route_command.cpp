@@ -25,9 +25,10 @@ int run_route(const CommonOptions& o) {
   std::vector<InputFrame> frames;
   images.reserve(o.inputs.size());
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-    images.push_back(read_scanned_frame(o.inputs[i]));
-    mesh.check_input(static_cast<int>(i), images.back().width(), images.back().height(),
-                     o.inputs[i]);
+    // Checked on the file's header: a picture larger than a board takes is never allocated.
+    images.push_back(read_scanned_frame(o.inputs[i], [&](int width, int height) {
+      mesh.check_input(static_cast<int>(i), width, height, o.inputs[i]);
+    }));
   }
   for (const RgbImage& image : images) frames.push_back(InputFrame::of(image));
 

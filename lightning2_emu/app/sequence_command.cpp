@@ -40,9 +40,10 @@ void take_frames(int t, const std::vector<std::vector<std::filesystem::path>>& i
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const std::size_t k = std::min<std::size_t>(t, inputs[i].size() - 1);
     if (t > 0 && k != static_cast<std::size_t>(t)) continue;
-    images[i] = read_scanned_frame(inputs[i][k]);
-    mesh.check_input(static_cast<int>(i), images[i].width(), images[i].height(),
-                     inputs[i][k].string());
+    // Checked on the file's header: a picture larger than a board takes is never allocated.
+    images[i] = read_scanned_frame(inputs[i][k], [&](int width, int height) {
+      mesh.check_input(static_cast<int>(i), width, height, inputs[i][k].string());
+    });
     frames[i] = InputFrame::of(images[i]);
   }
 }

@@ -1,5 +1,9 @@
 // The lightning2_emu executable on real files: PNG frames in, PNG displays and JSON out.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +18,8 @@
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "tilelayout/wall_file.hpp"
+
+extern char** environ;
 
 namespace l2 {
 namespace {
@@ -107,6 +113,87 @@ TEST_F(Cli, RouteRefusesInputsLargerThanTheBoardLimit) {
   EXPECT_NE(r.output.find("big.png: input 0 is 1281x10, larger than the board limit 1280x1024"),
             std::string::npos)
       << r.output;
+}
+
+// A child's exit code, output and peak memory (its largest resident set, from wait4).
+struct Measured {
+  int status = -1;
+  std::string output;
+  long peak_kb = 0;
+};
+
+Measured run_measured(std::vector<std::string> args, const fs::path& output) {
+  args.insert(args.begin(), L2_EMU_EXE);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  Measured m;
+  pid_t pid = -1;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) {
+    int status = 0;
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
+    m.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    m.peak_kb = usage.ru_maxrss;
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  std::ifstream in(output);
+  m.output.assign(std::istreambuf_iterator<char>(in), {});
+  return m;
+}
+
+// Tiny pictures whose headers claim 16384x16384 pixels (805 MB as RGB): route allocated the
+// whole picture (a GIF 1 GB more inside OpenImageIO) before it found the frame larger than a
+// board takes. Refused on the header now: the peak stays that of routing a small frame.
+TEST_F(Cli, RouteRefusesAHugeFrameBeforeAllocatingIt) {
+  constexpr unsigned char kPng[] = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x40, 0x00, 0x00, 0x00, 0x40, 0x00, 0x08, 0x02, 0x00, 0x00,
+      0x00, 0x26, 0xaa, 0x87, 0xd3, 0x00, 0x00, 0x00, 0x0b, 0x49, 0x44, 0x41, 0x54, 0x78,
+      0x9c, 0x63, 0x60, 0x80, 0x00, 0x00, 0x00, 0x08, 0x00, 0x01, 0xb7, 0x58, 0x73, 0x95,
+      0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  constexpr unsigned char kBmp[] = {
+      0x42, 0x4d, 0x54, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x36, 0x00, 0x00, 0x00,
+      0x28, 0x00, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00, 0x01, 0x00,
+      0x18, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x13, 0x0b, 0x00, 0x00,
+      0x13, 0x0b, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};
+  constexpr unsigned char kTga[] = {0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                    0x00, 0x00, 0x00, 0x00, 0x40, 0x00, 0x40, 0x18, 0x00};
+  const auto bytes = [](const unsigned char* data, std::size_t size) {
+    return std::string(reinterpret_cast<const char*>(data), size) + std::string(30, '\0');
+  };
+  const std::vector<std::pair<std::string, std::string>> pictures = {
+      {"huge.png", bytes(kPng, sizeof kPng)},
+      {"huge.bmp", bytes(kBmp, sizeof kBmp)},
+      {"huge.tga", bytes(kTga, sizeof kTga)},
+      {"huge.ppm", std::string("P6\n16384 16384\n255\n") + std::string(30, '\0')},
+      {"huge.gif", std::string("GIF89a\x00\x40\x00\x40\x00\x00\x00,\x00\x00\x00\x00\x00\x40\x00"
+                               "\x40\x00\x02\x02\x44\x01\x00;",
+                               29)},
+  };
+  FrameBuilder small(40, 4);
+  small.copy(0, 0, 0, 0, 0, 20);
+  write_png(dir / "small.png", small.image());
+  const auto route = [&](const std::string& picture) {
+    return run_measured(
+        {"route", "--displays", "20x3", "--out", (dir / "out").string(), (dir / picture).string()},
+        dir / "output.txt");
+  };
+  const Measured baseline = route("small.png");
+  ASSERT_EQ(baseline.status, 0) << baseline.output;
+  for (const auto& [name, content] : pictures) {
+    std::ofstream(dir / name, std::ios::binary) << content;
+    const Measured m = route(name);
+    EXPECT_EQ(m.status, 1) << name;
+    EXPECT_EQ(m.output, "lightning2_emu: " + (dir / name).string() + ": input 0 is 16384x16384, " +
+                            "larger than the board limit 1280x1024\n");
+    // Allowance for what reading a file's header takes; the picture would be 786432 KB.
+    EXPECT_LT(m.peak_kb, baseline.peak_kb + 100 * 1024) << name;
+  }
 }
 
 TEST_F(Cli, RouteRefusesInputsAndDisplaysBeyondTheMesh) {

@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "command_line/printable.hpp"
 #include "tilelayout/coverage.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
@@ -72,10 +73,12 @@ std::string format_plan(const TileLayout& layout) {
   std::string out = fmt::format(
       "wall \"{}\" ({}): canvas {}x{}, {} displays, {} tiling: {} logical tiles -> {} display "
       "tiles, {} pipeservers of {}x{}, assignment {}\n",
-      w.name, w.source.empty() ? std::string("built in code") : w.source.string(), w.canvas_width,
-      w.canvas_height, w.displays.size(), kTilingNames[static_cast<int>(w.tiling.kind)],
-      layout.logical_tiles.size(), layout.tiles.size(), w.server_count, w.framebuffer_width,
-      w.framebuffer_height, to_string(w.assignment));
+      printable(w.name),
+      w.source.empty() ? std::string("built in code") : printable(w.source.string()),
+      w.canvas_width, w.canvas_height, w.displays.size(),
+      kTilingNames[static_cast<int>(w.tiling.kind)], layout.logical_tiles.size(),
+      layout.tiles.size(), w.server_count, w.framebuffer_width, w.framebuffer_height,
+      to_string(w.assignment));
   servers(layout, out);
   displays(layout, out);
   for (const std::string& warning : layout.warnings) out += warning + "\n";

@@ -4,13 +4,17 @@
 
 #include <algorithm>
 
+#include "command_line/printable.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 
+// The field (a key) and the message (a value) may be the file's own text: printable.
 void TomlSource::fail(int line, std::string_view field, std::string_view message) const {
-  if (line > 0) throw LayoutError(fmt::format("{}:{}: {}: {}", file, line, field, message));
-  throw LayoutError(fmt::format("{}: {}: {}", file, field, message));
+  if (line > 0) {
+    throw LayoutError(printable(fmt::format("{}:{}: {}: {}", file, line, field, message)));
+  }
+  throw LayoutError(printable(fmt::format("{}: {}: {}", file, field, message)));
 }
 
 void TomlSource::fail(const toml::node& at, std::string_view field,

@@ -9,12 +9,14 @@
 #include <string>
 
 #include "tilelayout/tile_layout.hpp"
+#include "toml_shape.hpp"
 #include "wall_sections.hpp"
 
 namespace l2 {
 
 Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_for_messages) {
   const TomlSource source{path_for_messages.string()};
+  check_toml_shape(toml_text, source.file);
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source.file);

@@ -143,6 +143,22 @@ TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
       << r.out;
 }
 
+// A wall's name and keys are the file's text: control characters in them (escape sequences
+// that clear the screen or retitle the terminal) reached the terminal as they were.
+TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
+  ChildRun r = run(
+      "'" +
+      write("named.toml", "name = \"\\u001b[2J\\u001b]0;owned\\u0007 wall\"\n" + kGood).string() +
+      "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("wall \"\\x1b[2J\\x1b]0;owned\\x07 wall\" (", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
+  const fs::path keyed = write("keyed.toml", "\"\\u001b[31mred\" = 1\n" + kGood);
+  r = run("'" + keyed.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout: " + keyed.string() + ":1: \\x1b[31mred: unknown key\n");
+}
+
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
   struct Case {
     std::string text, error;
@@ -177,6 +193,18 @@ TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
     EXPECT_EQ(r.err.rfind(prefix, 0), 0u) << i << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << i << ": " << r.err;
   }
+}
+
+// The reproducer, python3 -c 'print("a"+".a"*50000+" = 1")': the stack overflow inside
+// the TOML parser ended the program with SIGSEGV and no message.
+TEST_F(Cli, DeeplyNestedKeysAreAOneLineError) {
+  std::string text = "a";
+  for (int i = 0; i < 50000; ++i) text += ".a";
+  const fs::path wall = write("deep.toml", text + " = 1\n");
+  const ChildRun r = run("'" + wall.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
+                       ":1: nested more than 16 levels deep: not a wall file\n");
 }
 
 TEST_F(Cli, UncoveredCanvasIsAWarningNotAnError) {

@@ -117,6 +117,56 @@ TEST(WallFile, MalformedTomlNamesTheLine) {
   EXPECT_EQ(e.rfind("walls/t.toml:8: malformed TOML: ", 0), 0u) << e;
 }
 
+std::string repeated(const std::string& part, int times) {
+  std::string out;
+  for (int i = 0; i < times; ++i) out += part;
+  return out;
+}
+
+// toml++ recurses once per nested table: deep keys overflowed the stack of every program that
+// reads walls. They are refused before parsing, at the line that goes too deep.
+TEST(WallFile, DeepNestingIsRefusedBeforeParsing) {
+  const std::string deep = "walls/t.toml:16: nested more than 16 levels deep: not a wall file";
+  EXPECT_EQ(error_of(kBase + "a" + repeated(".a", 50000) + " = 1\n"), deep);
+  EXPECT_EQ(error_of(kBase + "[a" + repeated(".a", 50000) + "]\n"), deep);
+  EXPECT_EQ(error_of(kBase + "[[a" + repeated(".a", 15) + "]]\n"), deep);
+  EXPECT_EQ(error_of(kBase + "x = " + repeated("{a = ", 16) + "1" + repeated("}", 16) + "\n"),
+            deep);
+  EXPECT_EQ(error_of(kBase + "x = " + repeated("[", 16) + repeated("]", 16) + "\n"), deep);
+  // Levels add up: a table's keys, dotted keys in inline tables, arrays of inline tables.
+  EXPECT_EQ(error_of(kBase + "[a.a.a.a.a.a.a.a]\nb.b.b.b.b.b.b.b.b = 1\n"),
+            "walls/t.toml:17: nested more than 16 levels deep: not a wall file");
+  EXPECT_EQ(error_of(kBase + "x = {a.a.a.a.a.a.a = {b.b.b.b.b.b.b.b = 1}}\n"), deep);
+  EXPECT_EQ(error_of(kBase + "x = [[{a = [[{b.b.b.b.b.b.b.b.b.b = 1}]]}]]\n"), deep);
+  // The line is the one that goes too deep: after a multi-line string and a multi-line array.
+  EXPECT_EQ(
+      error_of(kBase + "s = \"\"\"\n[[[\n\"\"\"\nv = [\n1,\n]\n" + repeated("a.", 16) + "a = 1\n"),
+      "walls/t.toml:22: nested more than 16 levels deep: not a wall file");
+}
+
+TEST(WallFile, LongKeysAreRefusedBeforeParsing) {
+  EXPECT_EQ(error_of(kBase + "\"" + std::string(300, 'k') + "\" = 1\n"),
+            "walls/t.toml:16: a key longer than 256 characters: not a wall file");
+  EXPECT_EQ(error_of(kBase + "[" + std::string(100000, 'k') + "]\n"),
+            "walls/t.toml:16: a key longer than 256 characters: not a wall file");
+}
+
+// What only looks deep is not: brackets and dots in strings and comments, floats, a table 15
+// levels down. These reach the parser, which names the unknown key.
+TEST(WallFile, NestingInStringsAndCommentsDoesNotCount) {
+  const std::string text = replace(
+      kBase, "name = \"t\"",
+      "name = \"[[[[[[[[[[[[[[[[[[{{{{{{{{{{{{{{{{{ a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a\\\"\" "
+      "# [[[[[[[[[[[[[[[[[[[[[[[ ''' \"\"\"");
+  EXPECT_EQ(error_of(text + "x = [1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 7.5, 8.5, 9.5, 0.5, 1.5, 2.5, "
+                            "3.5, 4.5, 5.5, 6.5, 7.5]\n"),
+            "walls/t.toml:16: pipeservers.x: unknown key");
+  EXPECT_EQ(error_of(text + "[a" + repeated(".a", 14) + "]\nb = 1\n"),
+            "walls/t.toml:16: a: unknown key");
+  EXPECT_EQ(error_of(text + "x = '[[[[[[[[[[[[[[[[[[[[' # ]\n"),
+            "walls/t.toml:16: pipeservers.x: unknown key");
+}
+
 TEST(WallFile, UnknownKeysAreErrors) {
   EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_widht = 5\n")),
             "walls/t.toml:12: tiling.tile_widht: unknown key");

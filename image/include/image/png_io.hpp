@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "image/rgb_image.hpp"
@@ -28,7 +29,12 @@ struct PictureSource {
   int colour_channels = 3;  // 1: grey (R = G = B after reading); 3: colour, a palette too
   bool lossy = false;       // stored with a lossy compression (JPEG, also inside a TIFF)
 };
-RgbImage read_png(const std::filesystem::path& path, PictureSource* source = nullptr);
+// `accept`, when given, is called with the picture's size once the file's header is read and
+// before any pixel buffer is allocated; what it throws (a size the caller cannot take) leaves
+// read_png() as it was thrown. A 70-byte file can claim 16384x16384 pixels, 805 MB of them.
+using SizeCheck = std::function<void(int width, int height)>;
+RgbImage read_png(const std::filesystem::path& path, PictureSource* source = nullptr,
+                  const SizeCheck& accept = {});
 
 // Reads a scanned-out frame (lightning2_emu's inputs, strip_headers dump, captured frames of
 // golden entries) with read_png(), and refuses one whose file cannot hold strip headers, which
@@ -36,7 +42,7 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source = nul
 // needs 48 free bits over two pixels) or a lossy one (JPEG: the compression changes pixel
 // bytes). Both used to be read and reported as damaged headers. Throws std::runtime_error
 // naming the file and why. Other pictures (golden displays, references) are read with
-// read_png(), which takes any of these.
-RgbImage read_scanned_frame(const std::filesystem::path& path);
+// read_png(), which takes any of these. `accept` as for read_png().
+RgbImage read_scanned_frame(const std::filesystem::path& path, const SizeCheck& accept = {});
 
 }  // namespace l2
