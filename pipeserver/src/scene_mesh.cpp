@@ -97,19 +97,15 @@ class MeshScene : public Scene {
 
   const char* name() const override { return "mesh"; }
 
-  void set_frame(int frame) override {
-    // A slow turn about the vertical axis: 3 degrees a frame.
-    const float angle = glm::radians(3.0f * static_cast<float>(frame % 120));
-    model_ = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0.0f, 1.0f, 0.0f));
-  }
+  // The mesh itself stands still; the camera orbits it (3 degrees a frame unless told).
+  void animate(int) override {}
+  float default_orbit() const override { return 3.0f; }
 };
 
 }  // namespace
 
 std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh) {
-  auto s = std::make_unique<MeshScene>(mesh);
-  s->set_frame(0);
-  return s;
+  return std::make_unique<MeshScene>(mesh);
 }
 
 }  // namespace l2::detail
