@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     // A damaged model is refused here in one line, before every pipeserver refuses it.
-    if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::load_mesh(scene.mesh_file);
+    if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
     return l2::run_wall(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());

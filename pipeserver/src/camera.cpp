@@ -9,16 +9,15 @@ namespace l2 {
 
 namespace {
 
-constexpr float kLongSideFill = 0.75f;  // the least share of the long side the sphere spans
-
 // How far back the camera stands to frame the sphere on the canvas (CameraOptions::distance 0).
 float framing_distance(float radius, float fov_y, float aspect) {
   const float half_y = fov_y / 2;
   const float half_x = std::atan(std::tan(half_y) * aspect);
-  // The narrower field of view decides, unless that leaves most of the long side empty.
-  const float half_long = std::max(half_x, half_y);
-  const float half_fill = std::atan(std::tan(half_long) * kLongSideFill);
-  const float half = std::max(std::min(half_x, half_y), half_fill);
+  // The sphere fits the short side, unless that leaves more of the long side empty than a
+  // quarter of the short side at each end: then it spans the long side less those quarters.
+  const float half_short = std::min(half_x, half_y), half_long = std::max(half_x, half_y);
+  const float half_fill = std::atan(std::tan(half_long) - std::tan(half_short) / 2);
+  const float half = std::max(half_short, half_fill);
   return radius * 1.08f / std::sin(half);
 }
 

@@ -142,12 +142,10 @@ void append(const std::filesystem::path& path, const aiScene& scene, const aiMes
   }
 }
 
-}  // namespace
-
-TriangleMesh load_mesh(const std::filesystem::path& path) {
+// Imported and checked, not yet post-processed.
+const aiScene& read_checked(Assimp::Importer& importer, const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) fail(path, "cannot open: no such file");
-  Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path.string(), kRead);
   // Assimp reserves what a header declares and reports the failure by the exception's name.
   if (scene == nullptr && std::string(importer.GetErrorString()) == "std::bad_alloc")
@@ -155,7 +153,20 @@ TriangleMesh load_mesh(const std::filesystem::path& path) {
   if (scene == nullptr) fail(path, importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) fail(path, "no triangles");
   check_raw(path, *scene);
-  scene = importer.ApplyPostProcessing(kSteps);
+  return *scene;
+}
+
+}  // namespace
+
+void check_model(const std::filesystem::path& path) {
+  Assimp::Importer importer;
+  read_checked(importer, path);
+}
+
+TriangleMesh load_mesh(const std::filesystem::path& path) {
+  Assimp::Importer importer;
+  read_checked(importer, path);
+  const aiScene* scene = importer.ApplyPostProcessing(kSteps);
   if (scene == nullptr) fail(path, importer.GetErrorString());
   const Counts n = count(path, *scene);
   TriangleMesh out;

@@ -33,9 +33,10 @@ struct CameraOptions {
 };
 
 // A perspective camera looking at a sphere (centre, radius) from +z. At distance 0 the sphere
-// is framed on the whole canvas: it fits the canvas's short side, but spans at least three
-// quarters of its long side, so a wide wall is filled (cropping the sphere at top and bottom)
-// instead of leaving its outer displays black; on canvases up to 4:3 the whole sphere is in view.
+// is framed on the whole canvas: it fits the canvas's short side, but spans at least the long
+// side less a quarter of the short side at each end, so a wide wall is filled (the sphere
+// cropped at top and bottom) instead of leaving its outer displays black; on canvases up to 3:2
+// the whole sphere is in view. A margin of 8% of the radius is kept either way.
 // Deterministic: depends only on its arguments.
 Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
                     const CameraOptions& options = {});

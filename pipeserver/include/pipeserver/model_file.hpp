@@ -23,4 +23,9 @@ struct TriangleMesh {
 // of range, or a coordinate that is not a finite float.
 TriangleMesh load_mesh(const std::filesystem::path& path);
 
+// Reads and checks the file as load_mesh does, without building the mesh (Assimp's
+// post-processing, most of the time a large model takes): l2wall refuses a damaged model with
+// it before starting the pipeservers. Throws as load_mesh does.
+void check_model(const std::filesystem::path& path);
+
 }  // namespace l2
