@@ -184,6 +184,50 @@ TEST(MeshFile, CoordinatesMustBeFiniteFloats) {
   EXPECT_EQ(error_of(word), word.string() + ": Validation failed: Mesh  contains no faces");
 }
 
+// glTF 2.0 with its buffer in a file beside it: a node transform (moved by 5 along x), the
+// material's base colour on every vertex, the file's normals kept.
+TEST(MeshFile, GltfNodeTransformNormalsAndBaseColour) {
+  std::string buffer;
+  const float data[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0,   // positions
+                          0, 0, 2, 0, 0, 2, 0, 0, 2};  // normals, not unit length
+  buffer.append(reinterpret_cast<const char*>(data), sizeof data);
+  write_file("tri.bin", buffer);
+  const auto p = write_file("tri.gltf",
+                            R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+"nodes": [{"mesh": 0, "translation": [5, 0, 0]}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "material": 0}]}],
+"materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.5, 0.75, 1]}}],
+"buffers": [{"byteLength": 72, "uri": "tri.bin"}],
+"bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                {"buffer": 0, "byteOffset": 36, "byteLength": 36}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+               "min": [0, 0, 0], "max": [1, 1, 0]},
+              {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"}]})");
+  const auto m = load_mesh(p);
+  ASSERT_EQ(m.positions.size(), 3u);
+  EXPECT_EQ(m.positions[1], glm::vec3(6, 0, 0));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  ASSERT_EQ(m.normals.size(), 3u);
+  EXPECT_EQ(m.normals[2], glm::vec3(0, 0, 1));
+  ASSERT_EQ(m.colours.size(), 3u);
+  EXPECT_EQ(m.colours[0], glm::vec3(0.25f, 0.5f, 0.75f));
+}
+
+// STL stores every triangle's corners apart: shared again, so the two triangles of a square
+// have four vertices; no colour in the file, none reported.
+TEST(MeshFile, AsciiStlCornersAreShared) {
+  const auto p = write_file("square.stl",
+                            "solid square\n"
+                            "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                            "vertex 1 1 0\nendloop\nendfacet\n"
+                            "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\n"
+                            "vertex 0 1 0\nendloop\nendfacet\nendsolid square\n");
+  const auto m = load_mesh(p);
+  EXPECT_EQ(m.positions.size(), 4u);
+  EXPECT_EQ(m.indices.size(), 6u);
+  EXPECT_TRUE(m.colours.empty());
+}
+
 TEST(MeshFile, BundledBunnyLoads) {
   const auto m = load_mesh(default_mesh_file());
   EXPECT_EQ(m.positions.size(), 1839u);
