@@ -1,7 +1,7 @@
 // load_mesh with Assimp. Assimp accepts some damaged files without an error (a PLY face line
-// cut short becomes a line or a degenerate face, a coordinate can be NaN), so its validation
-// step runs and the result is checked again here before it reaches a scene: every bad file is
-// refused with one line naming it.
+// cut short comes out with a vertex repeated, a coordinate can be NaN or infinite), so its
+// validation step runs and the faces and vertices are checked again here before anything else
+// sees them: every bad file is refused with one line naming it.
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
