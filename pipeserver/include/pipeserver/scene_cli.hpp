@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "command_line/checks.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2 {
@@ -45,16 +46,16 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
       {app.add_option("--camera-distance", o.camera.distance,
                       "camera: eye to the scene's centre in scene radii; 0 frames the scene on "
                       "the wall's canvas")
-           ->check(CLI::Range(0.0f, 1000.0f)),
+           ->check(number_in(0, 1000)),
        nullptr},
       {app.add_option_function<float>(
               "--camera-orbit", [&o](float degrees) { o.camera.orbit = degrees; },
               "camera: degrees a frame the view orbits the scene (default: 3 for mesh, 0 for the "
               "scenes that animate themselves)")
-           ->check(CLI::Range(-360.0f, 360.0f)),
+           ->check(number_in(-360, 360)),
        nullptr},
       {app.add_option("--camera-fov", o.camera.fov, "camera: vertical field of view in degrees")
-           ->check(CLI::Range(1.0f, 170.0f)),
+           ->check(number_in(1, 170)),
        nullptr},
   };
   return added;
