@@ -14,6 +14,7 @@
 #include <string>
 
 #include "pipeserver/model_file.hpp"
+#include "ply_counts.hpp"
 
 namespace l2 {
 
@@ -146,10 +147,8 @@ void append(const std::filesystem::path& path, const aiScene& scene, const aiMes
 const aiScene& read_checked(Assimp::Importer& importer, const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) fail(path, "cannot open: no such file");
+  detail::check_ply_counts(path);
   const aiScene* scene = importer.ReadFile(path.string(), kRead);
-  // Assimp reserves what a header declares and reports the failure by the exception's name.
-  if (scene == nullptr && std::string(importer.GetErrorString()) == "std::bad_alloc")
-    fail(path, "declares more than memory can hold");
   if (scene == nullptr) fail(path, importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) fail(path, "no triangles");
   check_raw(path, *scene);
