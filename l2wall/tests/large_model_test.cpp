@@ -17,8 +17,10 @@ TEST(LargeModel, MillionTriangleSphereRendersLive) {
   fs::create_directories(dir);
   const long triangles = write_ply_sphere(dir / "sphere.ply", 512, 1000);
   ASSERT_GE(triangles, 1'000'000);
-  WallRun run("large-model",
-              {"--mesh", (dir / "sphere.ply").string(), "--frames", "3", "--refresh", "0"});
+  // A frame of a million triangles on each of four hosts can take seconds on a loaded machine:
+  // more than the default stall timeout allows between two swaps.
+  WallRun run("large-model", {"--mesh", (dir / "sphere.ply").string(), "--frames", "3", "--refresh",
+                              "0", "--stall-timeout", "60000"});
   const ExitStatus status = run.wait(120s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   EXPECT_NE(run.output().find("3 frames on 4 displays from 4 pipeservers"), std::string::npos)
