@@ -7,6 +7,8 @@
 #include "command_line/parse.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
+#include "pipeserver/model_file.hpp"
+#include "pipeserver/scene_cli.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -116,14 +118,21 @@ int main(int argc, char** argv) {
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
+  // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
+  l2::SceneOptions scene;
+  const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
   // Options that make no run together are usage errors too (exit 2), not a failed run.
-  run->callback([&o] {
+  run->callback([&o, &scene_options] {
     if (auto error = l2::run_options_error(o)) throw CLI::ValidationError(*error);
+    l2::check_scene_options(scene_options, o.scene);
+    o.scene_args = l2::scene_arguments(scene_options);
   });
   l2::add_golden_command(app);  // `l2wall golden check|update`
   // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
+    // A damaged model is refused here in one line, before every pipeserver refuses it.
+    if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
     return l2::run_wall(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());

@@ -13,6 +13,7 @@
 #include "image/png_io.hpp"
 #include "live_host.hpp"
 #include "pipeserver/pipeserver.hpp"
+#include "pipeserver/scene_cli.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "vizserver/socket.hpp"
@@ -95,21 +96,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", o.out, "PNG file for the scanned-out frame");
   app.add_option("--reference", o.reference,
                  "folder for the reference render of each display (display-<id>.png)");
-  app.add_option("--mesh", o.scene_options.mesh_file,
-                 "mesh scene: PLY or OBJ file (default: bunny)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--triangles", o.scene_options.triangles, "strips scene: triangle count")
-      ->check(CLI::Range(1L, l2::kMaxTriangles));
-  app.add_option("--strip-length", o.scene_options.strip_length,
-                 "strips scene: triangles per strip")
-      ->check(CLI::Range(1, 4096));
-  app.add_option("--grid", o.scene_options.grid, "isosurface scene: cells per axis")
-      ->check(CLI::Range(2, 256));
-  app.add_option("--tessellation", o.scene_options.tessellation,
-                 "patches scene: segments per patch edge")
-      ->check(CLI::Range(1, 1024));
-  app.add_option("--patches", o.scene_options.patches, "patches scene: patches per side")
-      ->check(CLI::Range(1, 64));
+  const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(app, o.scene_options);
   // Live host mode: the run (l2wall run) starts one of these per pipeserver.
   bool live = false;
   l2::LiveHostOptions live_options;
@@ -148,18 +135,7 @@ int main(int argc, char** argv) {
   for (CLI::Option* option : group->get_options()) {
     if (option != live_flag) option->needs(live_flag);
   }
-  // A scene's options given for another scene were ignored without a word.
-  app.callback([&] {
-    for (const auto& [option, scene] :
-         {std::pair{"--mesh", "mesh"}, std::pair{"--triangles", "strips"},
-          std::pair{"--strip-length", "strips"}, std::pair{"--grid", "isosurface"},
-          std::pair{"--tessellation", "patches"}, std::pair{"--patches", "patches"}}) {
-      if (app.count(option) > 0 && o.scene != scene) {
-        throw CLI::ValidationError(
-            fmt::format("{} is an option of --scene {}, not {}", option, scene, o.scene));
-      }
-    }
-  });
+  app.callback([&] { l2::check_scene_options(scene_options, o.scene); });
   bool print_gl_info = false;
   app.add_flag("--gl-info", print_gl_info,
                "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "

@@ -102,6 +102,11 @@ bad_value "--out: an empty path" l2wall run --out ''
 # Options of a mode or scene not asked for were ignored without a word.
 bad_value "--triangles is an option of --scene strips, not mesh" pipeserver --triangles 10 \
   --out /tmp/x.png
+bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene strips \
+  --mesh /etc/hostname
+# NaN passed CLI::Range and made every pixel of the view NaN (a black wall).
+bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x.png
+bad_value "nan is not a number in -360..360" l2wall run --camera-orbit nan
 bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x.png
 bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run --viz-port 5000 \
   --out /tmp

@@ -28,6 +28,7 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
                                 "--scene",         l.scene,
                                 "--report",        h.report_path,
                                 "--ready-timeout", std::to_string(l.ready_timeout_ms)};
+  argv.insert(argv.end(), l.scene_args.begin(), l.scene_args.end());
   if (l.dvi) {
     for (const std::string& a :
          {std::string("--link"), h.link_name, std::string("--backchannel"), h.pty->slave_path()})

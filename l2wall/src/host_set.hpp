@@ -47,7 +47,8 @@ struct HostLaunch {
   std::string pipeserver;  // the executable
   std::string wall;        // wall file; empty: the built-in default wall
   std::string scene;
-  std::filesystem::path out;  // host-<i>.log go here
+  std::vector<std::string> scene_args;  // scene and camera options (--mesh FILE, ...)
+  std::filesystem::path out;            // host-<i>.log go here
   int frames = 0;
   int ready_timeout_ms = 0;
   bool dvi = true;                      // DVI link and back-channel

@@ -110,6 +110,7 @@ class LiveRun {
     l.pipeserver = o_.pipeserver;
     l.wall = o_.wall;
     l.scene = o_.scene;
+    l.scene_args = o_.scene_args;
     l.out = o_.out;
     l.frames = o_.frames;
     l.ready_timeout_ms = o_.ready_timeout_ms;

@@ -10,12 +10,14 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace l2 {
 
 struct RunOptions {
   std::string wall;  // empty: the built-in default wall
   std::string scene = "mesh";
+  std::vector<std::string> scene_args;  // --mesh, --camera-... as typed, for every pipeserver
   int frames = 10;
   std::string out = "l2wall-out";
   std::string keep = "last";           // every | last | none | K,L,...

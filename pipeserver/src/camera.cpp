@@ -8,21 +8,44 @@
 namespace l2 {
 
 namespace {
-constexpr float kFovY = 0.6981317f;  // 40 degrees
+
+// How far back the camera stands to frame the sphere on the canvas (CameraOptions::distance 0).
+float framing_distance(float radius, float fov_y, float aspect) {
+  const float half_y = fov_y / 2;
+  const float half_x = std::atan(std::tan(half_y) * aspect);
+  // The sphere fits the short side, unless that leaves more of the long side empty than a
+  // quarter of the short side at each end: then it spans the long side less those quarters.
+  const float half_short = std::min(half_x, half_y), half_long = std::max(half_x, half_y);
+  const float half_fill = std::atan(std::tan(half_long) - std::tan(half_short) / 2);
+  const float half = std::max(half_short, half_fill);
+  return radius * 1.08f / std::sin(half);
 }
 
-Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius) {
+}  // namespace
+
+Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
+                    const CameraOptions& options) {
   const float aspect = static_cast<float>(canvas.width) / static_cast<float>(canvas.height);
-  // The narrower field of view decides how far back the camera stands.
-  const float half_y = kFovY / 2;
-  const float half_x = std::atan(std::tan(half_y) * aspect);
-  const float distance = radius * 1.08f / std::sin(std::min(half_x, half_y));
+  const float fov_y = glm::radians(options.fov);
+  const float distance =
+      options.distance > 0 ? radius * options.distance : framing_distance(radius, fov_y, aspect);
   const glm::vec3 eye = centre + glm::vec3(0.0f, 0.0f, distance);
   Camera cam;
   cam.view = glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
-  cam.projection = glm::perspective(kFovY, aspect, std::max(distance - 2 * radius, 0.01f),
+  cam.projection = glm::perspective(fov_y, aspect, std::max(distance - 2 * radius, 0.01f),
                                     distance + 2 * radius);
   return cam;
+}
+
+glm::mat4 orbit_matrix(float degrees_per_frame, int frame, glm::vec3 centre) {
+  // In double, so that a whole number of degrees a frame gives whole angles at any frame.
+  const auto degrees =
+      static_cast<float>(std::fmod(static_cast<double>(degrees_per_frame) * frame, 360.0));
+  if (degrees == 0) return glm::mat4(1.0f);
+  const glm::mat4 turn =
+      glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
+  if (centre == glm::vec3(0.0f)) return turn;
+  return glm::translate(glm::mat4(1.0f), centre) * turn * glm::translate(glm::mat4(1.0f), -centre);
 }
 
 glm::dmat4 tile_matrix(const Canvas& canvas, const Rect& r) {

@@ -134,8 +134,12 @@ int run_live_host(const LiveHostOptions& o) {
     }
     const double wait_ms = ms_since(t1);
     if (link) link->publish();
-    report.line(fmt::format("frame {} render_ms {:.3f} wait_ms {:.3f} retries {}\n", k, render_ms,
-                            wait_ms, retries));
+    // The bucketing figures too: how many tiles a batch lands in, which a large model drives up.
+    const BucketStats& b = ps.last_times().buckets;
+    report.line(fmt::format(
+        "frame {} render_ms {:.3f} wait_ms {:.3f} retries {} batches {} tile_draws {} overlap "
+        "{:.2f}\n",
+        k, render_ms, wait_ms, retries, b.batches, b.tile_draws, b.overlap_factor()));
   }
   // Stay until the last frame is taken in and complete: the run reads our link until then.
   if (o.frames > 0 && channel) {

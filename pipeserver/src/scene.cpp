@@ -40,6 +40,17 @@ std::size_t Scene::triangle_count() const {
   return n;
 }
 
+void Scene::set_frame(int frame) {
+  model_ = glm::mat4(1.0f);
+  animate(frame);
+  const float orbit = camera_.orbit.value_or(default_orbit());
+  if (orbit != 0) model_ = orbit_matrix(orbit, frame, centre()) * model_;
+}
+
+void Scene::set_camera(const CameraOptions& camera) {
+  camera_ = camera;
+}
+
 const std::vector<std::string>& scene_names() {
   static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches"};
   return names;
@@ -49,7 +60,9 @@ std::filesystem::path default_mesh_file() {
   return std::filesystem::path(L2_DATA_DIR) / "bunny.ply";
 }
 
-std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options) {
+namespace {
+
+std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& options) {
   if (name == "mesh") {
     const auto path = options.mesh_file.empty() ? default_mesh_file() : options.mesh_file;
     return detail::make_mesh_scene(load_mesh(path));
@@ -59,6 +72,15 @@ std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& o
   if (name == "patches") return detail::make_patches_scene(options);
   throw std::invalid_argument(
       fmt::format("unknown scene '{}' (expected mesh, strips, isosurface or patches)", name));
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options) {
+  auto scene = make_named(name, options);
+  scene->set_camera(options.camera);
+  scene->set_frame(0);
+  return scene;
 }
 
 }  // namespace l2

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "pipeserver/mesh_file.hpp"
+#include "pipeserver/model_file.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2::detail {

@@ -66,7 +66,7 @@ class IsosurfaceScene : public Scene {
 
   const char* name() const override { return "isosurface"; }
 
-  void set_frame(int frame) override {
+  void animate(int frame) override {
     const Field field = field_at(frame);
     const int samples = n_ + 1;
     values_.resize(static_cast<std::size_t>(samples) * samples * samples);
@@ -154,9 +154,7 @@ class IsosurfaceScene : public Scene {
 }  // namespace
 
 std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options) {
-  auto s = std::make_unique<IsosurfaceScene>(options);
-  s->set_frame(0);
-  return s;
+  return std::make_unique<IsosurfaceScene>(options);
 }
 
 }  // namespace l2::detail

@@ -12,7 +12,10 @@ namespace l2::detail {
 
 namespace {
 
-constexpr int kCells = 3;  // batches: the mesh's box cut into kCells^3 cells by centroid
+constexpr int kCells = 3;
+constexpr glm::vec3 kDefaultColour{0.86f, 0.80f,
+                                   0.68f};  // a model file without colours  // batches: the mesh's
+                                            // box cut into kCells^3 cells by centroid
 
 // Centre the mesh on the origin and scale it into the unit sphere, so any mesh fits the camera.
 // A mesh file may hold any finite float, and coordinates near 3.4e38 overflowed to infinity in
@@ -39,7 +42,7 @@ void normalise(std::vector<glm::vec3>& positions) {
   for (auto& p : positions) p = (p - centre) / r;
 }
 
-// Area-weighted vertex normals: smooth shading without a normals property in the file.
+// Area-weighted vertex normals: smooth shading for a file without normals.
 std::vector<glm::vec3> vertex_normals(const TriangleMesh& m) {
   std::vector<glm::vec3> n(m.positions.size(), glm::vec3(0.0f));
   for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
@@ -58,7 +61,7 @@ class MeshScene : public Scene {
  public:
   explicit MeshScene(TriangleMesh mesh) {
     normalise(mesh.positions);
-    const auto normals = vertex_normals(mesh);
+    const auto normals = mesh.normals.empty() ? vertex_normals(mesh) : mesh.normals;
     Box box = Box::empty();
     for (const auto& p : mesh.positions) box.extend(p);
     std::array<Batch, kCells * kCells * kCells> cells;
@@ -80,7 +83,7 @@ class MeshScene : public Scene {
         if (added) {
           cells[k].positions.push_back(mesh.positions[src]);
           cells[k].normals.push_back(normals[src]);
-          cells[k].colours.push_back({0.86f, 0.80f, 0.68f});
+          cells[k].colours.push_back(mesh.colours.empty() ? kDefaultColour : mesh.colours[src]);
         }
         cells[k].indices.push_back(it->second);
       }
@@ -94,19 +97,15 @@ class MeshScene : public Scene {
 
   const char* name() const override { return "mesh"; }
 
-  void set_frame(int frame) override {
-    // A slow turn about the vertical axis: 3 degrees a frame.
-    const float angle = glm::radians(3.0f * static_cast<float>(frame % 120));
-    model_ = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0.0f, 1.0f, 0.0f));
-  }
+  // The mesh itself stands still; the camera orbits it (3 degrees a frame unless told).
+  void animate(int) override {}
+  float default_orbit() const override { return 3.0f; }
 };
 
 }  // namespace
 
 std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh) {
-  auto s = std::make_unique<MeshScene>(mesh);
-  s->set_frame(0);
-  return s;
+  return std::make_unique<MeshScene>(mesh);
 }
 
 }  // namespace l2::detail

@@ -44,7 +44,7 @@ class PatchesScene : public Scene {
 
   const char* name() const override { return "patches"; }
 
-  void set_frame(int frame) override {
+  void animate(int frame) override {
     const float t = static_cast<float>(frame) * 0.12f;
     // Tip the sheet towards the camera so the ripples read as relief.
     model_ = glm::rotate(glm::mat4(1.0f), glm::radians(-55.0f), glm::vec3(1, 0, 0));
@@ -104,9 +104,7 @@ class PatchesScene : public Scene {
 }  // namespace
 
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options) {
-  auto s = std::make_unique<PatchesScene>(options);
-  s->set_frame(0);
-  return s;
+  return std::make_unique<PatchesScene>(options);
 }
 
 }  // namespace l2::detail

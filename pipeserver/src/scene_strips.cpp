@@ -48,7 +48,7 @@ class StripsScene : public Scene {
 
   const char* name() const override { return "strips"; }
 
-  void set_frame(int frame) override {
+  void animate(int frame) override {
     const float t = static_cast<float>(frame % 360);
     model_ = glm::rotate(glm::mat4(1.0f), glm::radians(2.0f * t), glm::vec3(0.3f, 1.0f, 0.1f));
   }
@@ -79,9 +79,7 @@ class StripsScene : public Scene {
 }  // namespace
 
 std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options) {
-  auto s = std::make_unique<StripsScene>(options);
-  s->set_frame(0);
-  return s;
+  return std::make_unique<StripsScene>(options);
 }
 
 }  // namespace l2::detail

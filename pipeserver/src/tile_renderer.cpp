@@ -52,7 +52,7 @@ void setup_state(bool lit) {
 TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
     : scene_(scene),
       canvas_(canvas),
-      camera_(frame_sphere(canvas, scene.centre(), scene.radius())),
+      camera_(frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera())),
       drawn_(scene.batches().size(), false) {
   setup_state(scene.lit());
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();

@@ -46,7 +46,7 @@ class OneTriangle : public Scene {
     batches_.push_back(b);
   }
   const char* name() const override { return "one-triangle"; }
-  void set_frame(int) override {}
+  void animate(int) override {}
 };
 
 struct TileResult {

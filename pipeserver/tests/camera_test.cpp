@@ -57,17 +57,62 @@ TEST(ClipToCanvas, CornersAndCentre) {
   EXPECT_DOUBLE_EQ(mid.y, 50.0);
 }
 
-TEST(FrameSphere, SphereFitsInsideTheCanvas) {
-  for (const Canvas c : {Canvas{4000, 500}, Canvas{500, 4000}, Canvas{1280, 1024}}) {
-    const Camera cam = frame_sphere(c, {0, 0, 0}, 1.0f);
-    const glm::mat4 clip = cam.projection * cam.view;
-    Box unit{glm::vec3(-0.57f), glm::vec3(0.57f)};  // a cube inside the unit sphere
-    const Rect fp = canvas_footprint(c, clip, unit);
+Rect unit_cube_footprint(const Canvas& c, const CameraOptions& options = {}) {
+  const Camera cam = frame_sphere(c, {0, 0, 0}, 1.0f, options);
+  const Box cube{glm::vec3(-0.57f), glm::vec3(0.57f)};  // a cube inside the unit sphere
+  return canvas_footprint(c, cam.projection * cam.view, cube);
+}
+
+TEST(FrameSphere, SphereFitsInsideCanvasesUpTo3To2) {
+  for (const Canvas c : {Canvas{1280, 1024}, Canvas{1300, 980}, Canvas{1024, 1280},
+                         Canvas{1440, 1000}, Canvas{500, 500}}) {
+    const Rect fp = unit_cube_footprint(c);
     EXPECT_GT(fp.x, 0);
     EXPECT_GT(fp.y, 0);
     EXPECT_LT(fp.right(), c.width);
     EXPECT_LT(fp.bottom(), c.height);
   }
+}
+
+// A sphere that fitted the short side of a wide wall left its outer displays black: it now
+// spans most of the long side and is cropped across the short one.
+TEST(FrameSphere, WideAndTallCanvasesAreFilledAlongTheLongSide) {
+  const Rect wide = unit_cube_footprint(Canvas{4000, 500});
+  EXPECT_EQ(wide.y, 0);  // footprints are clipped to the canvas
+  EXPECT_EQ(wide.bottom(), 500);
+  EXPECT_GT(wide.x, 0);
+  EXPECT_LT(wide.right(), 4000);
+  EXPECT_GT(wide.w, 1000);  // a quarter of the long side; it fitted the 500 rows before
+  const Rect tall = unit_cube_footprint(Canvas{500, 4000});
+  EXPECT_EQ(tall.x, 0);
+  EXPECT_EQ(tall.right(), 500);
+  EXPECT_GT(tall.h, 1000);
+}
+
+TEST(FrameSphere, DistanceAndFieldOfViewAreOptions) {
+  const Camera near =
+      frame_sphere(Canvas{400, 300}, {0, 0, 0}, 2.0f, {.distance = 5, .orbit = {}, .fov = 40});
+  EXPECT_FLOAT_EQ(near.view[3][2], -10.0f);  // five radii of 2 in front of the eye
+  const Camera wide =
+      frame_sphere(Canvas{400, 300}, {0, 0, 0}, 1.0f, {.distance = 0, .orbit = {}, .fov = 90});
+  EXPECT_NEAR(wide.projection[1][1], 1.0f, 1e-6f);  // cot(45 degrees)
+  // The default field of view is 40 degrees.
+  EXPECT_NEAR(frame_sphere(Canvas{400, 300}, {0, 0, 0}, 1.0f).projection[1][1], 2.7474774f, 1e-6f);
+}
+
+TEST(OrbitMatrix, TurnsAboutTheVerticalAxisThroughTheCentre) {
+  const glm::vec4 x = orbit_matrix(90.0f, 1, {0, 0, 0}) * glm::vec4(1, 0, 0, 1);
+  EXPECT_NEAR(x.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(x.z, -1.0f, 1e-6f);
+  // Half a turn about (1, 5, 0): the centre stays, the origin goes to (2, 0, 0).
+  const glm::mat4 half = orbit_matrix(60.0f, 3, {1, 5, 0});
+  const glm::vec4 c = half * glm::vec4(1, 5, 0, 1);
+  EXPECT_NEAR(c.x, 1.0f, 1e-5f);
+  EXPECT_NEAR(c.y, 5.0f, 1e-5f);
+  const glm::vec4 o = half * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(o.x, 2.0f, 1e-5f);
+  EXPECT_NEAR(o.z, 0.0f, 1e-5f);
+  EXPECT_EQ(orbit_matrix(3.0f, 120, {0, 0, 0}), glm::mat4(1.0f));  // a whole turn
 }
 
 }  // namespace

@@ -30,8 +30,12 @@ TEST_P(TileRender, TileEqualsCropOfWholeRender) {
                        Rect{100, 45, 50, 45}, Rect{53, 33, 29, 17}}) {
     const RgbImage tile = render_canvas_rect(canvas, r, *scene, 7);
     const auto diff = test::compare(tile, crop(whole, r));
-    EXPECT_LE(diff.pixels_differing, 0) << "tile " << r.x << "," << r.y << " " << r.w << "x" << r.h
+    // The same triangle projected for another rectangle goes through different float
+    // operands, so a colour can round to the neighbouring level (README: Reassembly tolerance):
+    // one such pixel per tile, never more than one level, never a coverage or depth change.
+    EXPECT_LE(diff.pixels_differing, 1) << "tile " << r.x << "," << r.y << " " << r.w << "x" << r.h
                                         << " max diff " << diff.max_channel_diff;
+    EXPECT_EQ(diff.pixels_beyond_one, 0);
   }
 }
 

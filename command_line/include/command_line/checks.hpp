@@ -40,6 +40,19 @@ inline CLI::Validator timeout_seconds() {
       "0 or 0.001..86400 s");
 }
 
+// A number lo..hi, NaN refused (CLI::Range lets it through).
+inline CLI::Validator number_in(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && v >= lo && v <= hi) return {};
+        return text + " is not a number in " + CLI::detail::to_string(lo) + ".." +
+               CLI::detail::to_string(hi);
+      },
+      CLI::detail::to_string(lo) + ".." + CLI::detail::to_string(hi));
+}
+
 // A frame number: digits only, fitting a long long. CLI11 clamps a larger number to the
 // largest long long without a word (18446744073709551616 became 9223372036854775807).
 inline CLI::Validator frame_number() {

@@ -3,6 +3,8 @@
 // sees exactly its rectangle of the logical canvas, pixel centre for pixel centre.
 #pragma once
 
+#include <optional>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -19,9 +21,30 @@ struct Camera {
   glm::mat4 projection{1.0f};  // maps the whole canvas to NDC [-1, 1]^2
 };
 
-// A perspective camera that frames a sphere (centre, radius) on the whole canvas, whatever its
-// aspect ratio. Deterministic: depends only on its arguments.
-Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius);
+// `--camera-*` of pipeserver and l2wall run.
+struct CameraOptions {
+  // Eye to the scene's centre in scene radii; 0: framed to the canvas (frame_sphere).
+  float distance = 0;
+  // Degrees a frame the view orbits the scene about the vertical axis through its centre
+  // (positive: the scene seems to turn counter-clockwise seen from above); unset: the scene's
+  // own default (the mesh orbits, the generated scenes animate themselves).
+  std::optional<float> orbit;
+  float fov = 40;  // vertical field of view, degrees
+};
+
+// A perspective camera looking at a sphere (centre, radius) from +z. At distance 0 the sphere
+// is framed on the whole canvas: it fits the canvas's short side, but spans at least the long
+// side less a quarter of the short side at each end, so a wide wall is filled (the sphere
+// cropped at top and bottom) instead of leaving its outer displays black; on canvases up to 3:2
+// the whole sphere is in view. A margin of 8% of the radius is kept either way.
+// Deterministic: depends only on its arguments.
+Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
+                    const CameraOptions& options = {});
+
+// The orbit of frame `frame` as a model transform: a turn of degrees_per_frame x frame about the
+// vertical axis through `centre`. The scenes' light is fixed to the eye, so turning the scene
+// this way shows exactly what a camera orbiting it would.
+glm::mat4 orbit_matrix(float degrees_per_frame, int frame, glm::vec3 centre);
 
 // The matrix prepended to the projection for a tile rendering canvas rectangle `r` (canvas
 // rows top to bottom): NDC of the rectangle's edges in the whole-canvas projection map to

@@ -12,6 +12,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "pipeserver/camera.hpp"
+
 namespace l2 {
 
 struct Box {
@@ -40,20 +42,25 @@ struct Batch {
 inline constexpr long kMaxTriangles = 50'000'000;
 
 struct SceneOptions {
-  std::filesystem::path mesh_file;  // mesh: PLY or OBJ; empty means the bundled bunny
+  std::filesystem::path mesh_file;  // mesh: any model file Assimp reads; empty: the bunny
   long triangles = 100000;          // strips: total triangle count (up to millions)
   int strip_length = 16;            // strips: triangles per strip
   int grid = 40;                    // isosurface: cells along each axis
   int tessellation = 16;            // patches: segments along each patch edge
   int patches = 4;                  // patches: patches along each side of the sheet
+  CameraOptions camera;             // every scene
 };
 
 class Scene {
  public:
   virtual ~Scene() = default;
   virtual const char* name() const = 0;
-  // Makes batches() and model() those of frame `frame`. Same frame, same geometry.
-  virtual void set_frame(int frame) = 0;
+  // Makes batches() and model() those of frame `frame`, the camera's orbit included. Same
+  // frame, same geometry.
+  void set_frame(int frame);
+  const CameraOptions& camera() const { return camera_; }
+  // An orbit left unset is the scene's default_orbit().
+  void set_camera(const CameraOptions& camera);
 
   const std::vector<Batch>& batches() const { return batches_; }
   const glm::mat4& model() const { return model_; }
@@ -66,9 +73,16 @@ class Scene {
   std::size_t triangle_count() const;
 
  protected:
+  // The scene's own animation: batches_ and model_ of frame `frame`.
+  virtual void animate(int frame) = 0;
+  virtual float default_orbit() const { return 0; }
+
   std::vector<Batch> batches_;
   glm::mat4 model_{1.0f};
   bool lit_ = true;
+
+ private:
+  CameraOptions camera_;
 };
 
 // "mesh", "strips", "isosurface" or "patches". Throws std::invalid_argument on an unknown name

@@ -1,0 +1,131 @@
+// Your own model on the wall through `l2wall run`: a wide wall filled across every display,
+// a glTF file's base colour on the displays, and a missing or damaged model refused in one line.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "model_files.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+using namespace testing_support;
+
+// 3x1 displays of 160x120: a 4:1 canvas.
+fs::path write_wide_wall(const fs::path& dir) {
+  const fs::path path = dir / "wide-3x1.toml";
+  std::ofstream(path) << R"(name = "3x1 wide wall"
+[display_grid]
+columns = 3
+rows = 1
+width = 160
+height = 120
+[tiling]
+kind = "kd"
+tile_count = 6
+[pipeservers]
+count = 3
+framebuffer_width = 200
+framebuffer_height = 150
+[mesh]
+board_max_width = 1280
+board_max_height = 1024
+refresh_hz = 60
+)";
+  return path;
+}
+
+// Pixels of a display picture that are not background (black), the frame stamp aside.
+long scene_pixels(const RgbImage& shown) {
+  long n = 0;
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x) n += shown.at(x, y) != Rgb{} ? 1 : 0;
+  return n;
+}
+
+// The sphere framed on the short side of a 4:1 canvas stayed on the middle display; every
+// display now shows part of the model, on every scene.
+class WideWall : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WideWall, EveryDisplayShowsTheScene) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-wide-{}", getpid());
+  fs::create_directories(dir);
+  const fs::path wall = write_wide_wall(dir);
+  WallRun run("wide-" + GetParam(),
+              {wall.string(), "--scene", GetParam(), "--frames", "3", "--refresh", "0"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  for (int d = 0; d < 3; ++d) {
+    const RgbImage shown = read_png(run.out() / "frame-2" / fmt::format("display-{}.png", d));
+    // The bunny reaches about 30 columns into the outer displays at this frame; the frame
+    // stamps are one pixel per host, the outer displays showed nothing else before.
+    EXPECT_GT(scene_pixels(shown), 200) << GetParam() << " display " << d;
+  }
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, WideWall, ::testing::Values("mesh", "strips"));
+
+// A glTF square with a green base colour, seen face on (no orbit): the displays show it in that
+// colour's proportions (the light scales all three channels alike), nowhere the bunny's.
+TEST(ModelOnTheWall, GltfBaseColourReachesTheDisplays) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-gltf-{}", getpid());
+  fs::create_directories(dir);
+  const float green[3] = {0.1f, 0.9f, 0.3f};
+  write_gltf_square(dir / "square.gltf", green);
+  WallRun run("gltf", {"--mesh", (dir / "square.gltf").string(), "--camera-orbit", "0", "--frames",
+                       "2", "--refresh", "0"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  long square = 0, other = 0;
+  for (int d = 0; d < 4; ++d) {
+    const RgbImage shown = read_png(run.out() / "frame-1" / fmt::format("display-{}.png", d));
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        const Rgb p = shown.at(x, y);
+        if (p == Rgb{}) continue;
+        const bool proportional =
+            p.g > 100 && std::abs(p.r * 9 - p.g) <= 12 && std::abs(p.b * 3 - p.g) <= 6;
+        ++(proportional ? square : other);
+      }
+    }
+  }
+  // The square fills most of the 1300x980 canvas's middle; the frame stamps are the others.
+  EXPECT_GT(square, 200000);
+  EXPECT_LE(other, 4);
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+TEST(ModelOnTheWall, MissingOrDamagedModelIsOneLine) {
+  WallRun missing("missing-model", {"--mesh", "/nonexistent/model.glb"});
+  EXPECT_EQ(missing.wait(30s).code, 2);
+  EXPECT_EQ(missing.output(),
+            "--mesh: File does not exist: /nonexistent/model.glb\nRun with --help for more "
+            "information.\n");
+
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-bad-{}", getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "cut.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                    "property float y\nproperty float z\nelement face 1\n"
+                                    "property list uchar int vertex_indices\nend_header\n"
+                                    "0 0 0\n1 0 0\n0 1 0\n3 0 1\n";
+  WallRun damaged("damaged-model", {"--mesh", (dir / "cut.ply").string()});
+  EXPECT_EQ(damaged.wait(30s).code, 1);
+  EXPECT_EQ(damaged.output(),
+            "l2wall: " + (dir / "cut.ply").string() +
+                ": face 0 has vertex 0 twice in a row (a face line cut short?)\n");
+  EXPECT_TRUE(damaged.pipeservers().empty());
+
+  WallRun wrong_scene("wrong-scene", {"--scene", "strips", "--mesh", (dir / "cut.ply").string()});
+  EXPECT_EQ(wrong_scene.wait(30s).code, 2);
+  EXPECT_NE(wrong_scene.output().find("--mesh is an option of --scene mesh, not strips"),
+            std::string::npos)
+      << wrong_scene.output();
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,84 @@
+// The scene and camera options of `pipeserver` and `l2wall run`: one list, so that l2wall
+// checks them as a pipeserver does and passes them on to every pipeserver as typed.
+#pragma once
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "command_line/checks.hpp"
+#include "pipeserver/scene.hpp"
+
+namespace l2 {
+
+struct SceneOption {
+  CLI::Option* option;
+  const char* scene;  // the scene it belongs to; nullptr: every scene
+};
+
+// Adds --mesh, --triangles, --strip-length, --grid, --tessellation, --patches and the camera's
+// --camera-distance, --camera-orbit, --camera-fov to `app`, writing into `o`.
+inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o) {
+  std::vector<SceneOption> added{
+      {app.add_option("--mesh", o.mesh_file,
+                      "mesh scene: model file, any format Assimp reads (glTF, OBJ, PLY, STL, FBX, "
+                      "...; default: the bunny)")
+           ->check(CLI::ExistingFile),
+       "mesh"},
+      {app.add_option("--triangles", o.triangles, "strips scene: triangle count")
+           ->check(CLI::Range(1L, kMaxTriangles)),
+       "strips"},
+      {app.add_option("--strip-length", o.strip_length, "strips scene: triangles per strip")
+           ->check(CLI::Range(1, 4096)),
+       "strips"},
+      {app.add_option("--grid", o.grid, "isosurface scene: cells per axis")
+           ->check(CLI::Range(2, 256)),
+       "isosurface"},
+      {app.add_option("--tessellation", o.tessellation, "patches scene: segments per patch edge")
+           ->check(CLI::Range(1, 1024)),
+       "patches"},
+      {app.add_option("--patches", o.patches, "patches scene: patches per side")
+           ->check(CLI::Range(1, 64)),
+       "patches"},
+      {app.add_option("--camera-distance", o.camera.distance,
+                      "camera: eye to the scene's centre in scene radii; 0 frames the scene on "
+                      "the wall's canvas")
+           ->check(number_in(0, 1000)),
+       nullptr},
+      {app.add_option_function<float>(
+              "--camera-orbit", [&o](float degrees) { o.camera.orbit = degrees; },
+              "camera: degrees a frame the view orbits the scene (default: 3 for mesh, 0 for the "
+              "scenes that animate themselves)")
+           ->check(number_in(-360, 360)),
+       nullptr},
+      {app.add_option("--camera-fov", o.camera.fov, "camera: vertical field of view in degrees")
+           ->check(number_in(1, 170)),
+       nullptr},
+  };
+  return added;
+}
+
+// An option of one scene given for another was ignored without a word: refused instead.
+inline void check_scene_options(const std::vector<SceneOption>& options, const std::string& scene) {
+  for (const SceneOption& s : options) {
+    if (s.scene == nullptr || s.option->count() == 0 || scene == s.scene) continue;
+    throw CLI::ValidationError(
+        fmt::format("{} is an option of --scene {}, not {}", s.option->get_name(), s.scene, scene));
+  }
+}
+
+// The options given, as arguments for a pipeserver: each name with its value as typed.
+inline std::vector<std::string> scene_arguments(const std::vector<SceneOption>& options) {
+  std::vector<std::string> args;
+  for (const SceneOption& s : options) {
+    if (s.option->count() == 0) continue;
+    args.push_back(s.option->get_name());
+    args.push_back(s.option->results().back());
+  }
+  return args;
+}
+
+}  // namespace l2
