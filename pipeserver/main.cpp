@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
                     "live: serial device of the back-channel (for example a pty slave)");
   group
       ->add_option("--viz", live_options.viz,
-                   "live: host:port of a compositing server; every tile is also sent there")
+                   "live: host:port of a compositing server; every tile is also sent there "
+                   "(its HELLO carries the run token in L2_VIZ_TOKEN, if set)")
       ->check(l2::viz::endpoint_error, "HOST:PORT");
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");

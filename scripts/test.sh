@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs: installs what is missing, then builds and runs the suite
 # three times — release (every test), ASan+UBSan (tests labelled asan) and TSan (tests labelled
-# tsan: the threaded ones). The sanitizer runs build only the executables their tests need.
+# tsan: the threaded ones). The sanitizer runs build only the executables their tests need. Then
+# a fuzz smoke run: the libFuzzer harnesses (fuzz/) for a few seconds each, failing on any crash.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -21,4 +22,8 @@ run_preset() {
 run_preset default
 run_preset asan l2_asan_tests
 run_preset tsan l2_tsan_tests
+t0=$SECONDS
+echo "=== fuzz: build and smoke run"
+bash scripts/fuzz.sh 3
+echo "=== fuzz: $((SECONDS - t0)) s"
 echo "=== suite finished in $((SECONDS - start)) s"

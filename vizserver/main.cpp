@@ -88,6 +88,17 @@ void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Output
   }
 }
 
+// The connections refused or closed on the way (strangers, misconfigured pipeservers): the
+// first few, and how many in all.
+void print_notes(const l2::viz::CompositingServer& server) {
+  const std::vector<std::string> kept = server.errors();
+  for (const std::string& e : kept) fmt::print(stderr, "vizserver: note: {}\n", e);
+  if (server.error_count() > kept.size()) {
+    fmt::print(stderr, "vizserver: note: ... and {} more ({} connections refused or closed)\n",
+               server.error_count() - kept.size(), server.error_count());
+  }
+}
+
 // Closes the queue when it goes out of scope: declared after the server, so it runs first
 // and a server thread waiting in push() can always be stopped and joined.
 struct QueueCloser {
@@ -108,7 +119,9 @@ int main(int argc, char** argv) {
       "Prints 'listening on HOST:PORT' first (to --log FILE if given), then one line per swap. "
       "Exits 0 after --frames frames, 1 when the run fails (a pipeserver broke the protocol, "
       "died or went silent while a frame waited for it; the display stream's watcher went "
-      "away), 2 on bad arguments."};
+      "away), 2 on bad arguments.\n"
+      "With L2_VIZ_TOKEN (32 hex digits) in the environment, a HELLO without that token is "
+      "refused (l2wall run sets one for every run); without it any peer may say HELLO."};
   std::string displays_text, host = "127.0.0.1", out_dir, stream_address, log_path;
   int servers = 1, frames = 1;
   int port = 0;
@@ -167,6 +180,7 @@ int main(int argc, char** argv) {
             fmt::format("--log {}: cannot write: {}", log_path, std::strerror(errno)));
       }
     }
+    options.token = l2::viz::token_from_environment();
     // The stream first, so that even a port we cannot bind reaches the watcher as ERROR.
     if (!stream_address.empty()) {
       const l2::viz::Endpoint stream = l2::viz::parse_endpoint(stream_address);
@@ -187,7 +201,7 @@ int main(int argc, char** argv) {
     fmt::print(out.log, "listening on {}:{}\n", host, server.port());
     std::fflush(out.log);
     serve(server, queue, out, frames);
-    for (const std::string& e : server.errors()) fmt::print(stderr, "vizserver: note: {}\n", e);
+    print_notes(server);
     return 0;
   } catch (const std::exception& e) {
     if (out.stream) out.stream->send_error(e.what());

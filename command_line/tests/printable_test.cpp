@@ -28,5 +28,25 @@ TEST(Printable, BytesThatAreNotUtf8AreEscaped) {
   EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a UTF-16 surrogate
 }
 
+TEST(Printable, EscapingTwiceChangesNothing) {
+  const std::string once = printable("\x1b[31mred\xc2\x9b\xff\\n");
+  EXPECT_EQ(once, "\\x1b[31mred\\xc2\\x9b\\xff\\n");
+  EXPECT_EQ(printable(once), once);
+}
+
+TEST(Printable, C1ControlsAndBrokenUtf8AreEscapedByteByByte) {
+  EXPECT_EQ(printable("\xc2\x9b"
+                      "31m"),
+            "\\xc2\\x9b31m");                                        // CSI as U+009B
+  EXPECT_EQ(printable("\x9b"), "\\x9b");                             // CSI as a raw byte
+  EXPECT_EQ(printable("\xc3"), "\\xc3");                             // truncated
+  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");                    // overlong '/'
+  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");           // a surrogate
+  EXPECT_EQ(printable("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // past U+10FFFF
+  EXPECT_EQ(printable("\xe2\x82"
+                      "x"),
+            "\\xe2\\x82x");
+}
+
 }  // namespace
 }  // namespace l2

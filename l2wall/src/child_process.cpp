@@ -5,11 +5,13 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 extern char** environ;
@@ -24,6 +26,23 @@ ExitStatus decode_wait_status(int status) {
   return s;
 }
 
+// This process's environment without the variables `extra` sets, then `extra`. The strings
+// stay owned by environ and `extra`, which outlive the spawn.
+std::vector<char*> environment_with(std::vector<std::string>& extra) {
+  std::vector<char*> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string_view entry(*e);
+    const auto set_by_extra = [&](const std::string& x) {
+      const auto name = x.substr(0, x.find('=') + 1);
+      return entry.substr(0, name.size()) == name;
+    };
+    if (std::none_of(extra.begin(), extra.end(), set_by_extra)) env.push_back(*e);
+  }
+  for (std::string& x : extra) env.push_back(x.data());
+  env.push_back(nullptr);
+  return env;
+}
+
 }  // namespace
 
 std::string ExitStatus::describe() const {
@@ -31,12 +50,14 @@ std::string ExitStatus::describe() const {
   return fmt::format("exited with code {}", code);
 }
 
-ChildProcess::ChildProcess(std::vector<std::string> argv) : argv_(std::move(argv)) {
+ChildProcess::ChildProcess(std::vector<std::string> argv, std::vector<std::string> env)
+    : argv_(std::move(argv)) {
   if (argv_.empty()) throw std::invalid_argument("ChildProcess: no program given");
   std::vector<char*> args;
   for (auto& a : argv_) args.push_back(a.data());
   args.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, args[0], nullptr, nullptr, args.data(), environ);
+  std::vector<char*> envp = environment_with(env);
+  const int rc = posix_spawn(&pid_, args[0], nullptr, nullptr, args.data(), envp.data());
   if (rc != 0) {
     pid_ = -1;
     throw std::runtime_error(fmt::format("cannot start {}: {}", argv_[0], std::strerror(rc)));

@@ -20,9 +20,10 @@ struct ExitStatus {
 
 class ChildProcess {
  public:
-  // Starts `argv[0]` (a path) with the given arguments; throws std::runtime_error naming the
-  // program when it cannot be started.
-  explicit ChildProcess(std::vector<std::string> argv);
+  // Starts `argv[0]` (a path) with the given arguments and this process's environment, plus
+  // `env` ("NAME=value", replacing a variable of that name); throws std::runtime_error naming
+  // the program when it cannot be started.
+  explicit ChildProcess(std::vector<std::string> argv, std::vector<std::string> env = {});
   ~ChildProcess();  // terminates and reaps a child still running
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

@@ -68,7 +68,7 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
       h.dx = t.tile.on_display.x;
       h.dy = t.tile.on_display.y;
     }
-    h.process.emplace(host_argv(launch, h));
+    h.process.emplace(host_argv(launch, h), launch.env);
   }
 }
 

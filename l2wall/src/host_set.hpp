@@ -54,6 +54,7 @@ struct HostLaunch {
   bool dvi = true;                      // DVI link and back-channel
   std::string viz_address;              // HOST:PORT of the compositing server; empty: none
   std::vector<std::string> extra_args;  // appended to every host's arguments
+  std::vector<std::string> env;         // "NAME=value" added to every host's environment
 };
 
 class HostSet {

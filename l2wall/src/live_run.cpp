@@ -115,7 +115,10 @@ class LiveRun {
     l.frames = o_.frames;
     l.ready_timeout_ms = o_.ready_timeout_ms;
     l.dvi = dvi_.has_value();
-    if (viz_) l.viz_address = viz_->address();
+    if (viz_) {
+      l.viz_address = viz_->address();
+      l.env.push_back(viz_->token_variable());
+    }
     if (show_) l.extra_args = LiveShow::host_args();
     return l;
   }

@@ -31,11 +31,16 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
 
 }  // namespace
 
-VizSide::VizSide(const VizLaunch& launch) : host_(launch.host) {
+VizSide::VizSide(const VizLaunch& launch) : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
   const viz::Fd listener = viz::listen_tcp("127.0.0.1", 0);
-  process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())));
+  process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())),
+                   std::vector<std::string>{token_variable()});
   accept_stream(listener, launch);
+}
+
+std::string VizSide::token_variable() const {
+  return fmt::format("{}={}", viz::kTokenVariable, viz::token_text(token_));
 }
 
 std::string VizSide::name() const {

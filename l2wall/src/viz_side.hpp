@@ -17,6 +17,7 @@
 #include "child_process.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
+#include "vizserver/run_token.hpp"
 
 namespace l2 {
 
@@ -44,6 +45,9 @@ class VizSide {
   // HOST:PORT for the pipeservers (127.0.0.1 when it listens on every interface).
   std::string address() const;
   pid_t pid() const { return process_ ? process_->pid() : -1; }
+  // "L2_VIZ_TOKEN=<32 hex digits>": the run's token, in the environment of every pipeserver
+  // that sends it tiles (its HELLO carries it; the server refuses a HELLO without it).
+  std::string token_variable() const;
   // "compositing server (vizserver pid 4242)": how every message of the run names it.
   std::string name() const;
 
@@ -76,6 +80,7 @@ class VizSide {
 
   std::string host_;
   std::uint16_t port_ = 0;
+  viz::RunToken token_;
   std::optional<ChildProcess> process_;
   std::optional<ExitStatus> exit_;
   std::unique_ptr<viz::DisplayWatcher> watcher_;

@@ -4,6 +4,7 @@
 #include <signal.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -97,6 +98,22 @@ TEST(ChildProcess, MissingProgramIsAClearError) {
     EXPECT_EQ(std::string(e.what()),
               "cannot start /nonexistent/pipeserver: No such file or directory");
   }
+}
+
+TEST(ChildProcess, ExtraEnvironmentIsAddedAndReplacesAVariableOfTheSameName) {
+  const auto out = std::filesystem::temp_directory_path() / "l2-child-env.txt";
+  ::setenv("L2_CHILD_TEST_A", "from the parent", 1);
+  ChildProcess p(
+      {"/bin/sh", "-c",
+       "printf '%s|%s|%s' \"$L2_CHILD_TEST_A\" \"$L2_CHILD_TEST_B\" \"$PATH\" > " + out.string()},
+      {"L2_CHILD_TEST_A=replaced", "L2_CHILD_TEST_B=added"});
+  ::unsetenv("L2_CHILD_TEST_A");
+  ASSERT_TRUE(p.wait_for(5s));
+  std::ifstream in(out);
+  std::string got;
+  std::getline(in, got);
+  EXPECT_EQ(got, std::string("replaced|added|") + std::getenv("PATH"));  // the rest inherited
+  std::filesystem::remove(out);
 }
 
 }  // namespace

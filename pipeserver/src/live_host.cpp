@@ -79,7 +79,9 @@ std::optional<viz::TileSender> connect_viz(const std::string& address, int serve
                                            int display_count) {
   if (address.empty()) return std::nullopt;
   const viz::Endpoint at = viz::parse_endpoint(address);
-  return viz::TileSender::connect(at.host, at.port, server, display_count);
+  viz::SenderOptions options;
+  options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
+  return viz::TileSender::connect(at.host, at.port, server, display_count, options);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "command_line/printable.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "toml_shape.hpp"
 #include "wall_sections.hpp"
@@ -22,7 +23,9 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
     doc = toml::parse(toml_text, source.file);
   } catch (const toml::parse_error& e) {
     const int line = static_cast<int>(e.source().begin.line);
-    throw LayoutError(fmt::format("{}:{}: malformed TOML: {}", source.file, line, e.description()));
+    // The description quotes the file: escaped, it stays one line and cannot reach a terminal.
+    throw LayoutError(
+        fmt::format("{}:{}: malformed TOML: {}", source.file, line, printable(e.description())));
   }
   const TomlFields top(
       doc, "", source,

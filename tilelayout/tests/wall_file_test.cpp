@@ -167,6 +167,17 @@ TEST(WallFile, NestingInStringsAndCommentsDoesNotCount) {
             "walls/t.toml:16: pipeservers.x: unknown key");
 }
 
+TEST(WallFile, MalformedTomlQuotingTheFileIsOneEscapedLine) {
+  // The TOML parser quotes what it saw: a line break or an escape sequence of the file went
+  // into the message raw (found by fuzz/fuzz_wall_file).
+  EXPECT_EQ(error_of("name = f\n"),
+            "walls/t.toml:1: malformed TOML: Error while parsing boolean: expected 'false', saw "
+            "'f\\n'");
+  EXPECT_EQ(error_of("name = t\x1b[2J"),
+            "walls/t.toml:1: malformed TOML: Error while parsing boolean: expected 'true', saw "
+            "'t\\x1b'");
+}
+
 TEST(WallFile, UnknownKeysAreErrors) {
   EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_widht = 5\n")),
             "walls/t.toml:12: tiling.tile_widht: unknown key");

@@ -82,6 +82,11 @@ std::vector<std::string> CompositingServer::errors() const {
   return shared_->errors;
 }
 
+std::uint64_t CompositingServer::error_count() const {
+  std::lock_guard lock(shared_->mutex);
+  return shared_->error_count;
+}
+
 StripErrorCounts CompositingServer::counts() const {
   std::lock_guard lock(shared_->mutex);
   return shared_->counts;

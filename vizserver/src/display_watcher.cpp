@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "command_line/printable.hpp"
+
 namespace l2::viz {
 namespace {
 
@@ -36,7 +38,7 @@ Listening read_listening(int fd, Clock::time_point deadline, const std::string& 
   if (h.kind == StreamKind::Error) {
     std::string text(h.payload_bytes, '\0');
     recv_all(fd, reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer);
-    throw VizError(fmt::format("{}: {}", peer, text));
+    throw VizError(fmt::format("{}: {}", peer, printable(text)));
   }
   if (h.kind != StreamKind::Listening) {
     throw VizError(fmt::format("{}: {} before LISTENING", peer, kind_name(h.kind)));
@@ -164,7 +166,7 @@ void DisplayWatcher::read_stream() {
       std::string text(h.payload_bytes, '\0');
       if (!read_exact(reinterpret_cast<std::uint8_t*>(text.data()), text.size(), false, "ERROR"))
         return;
-      return finish(text, true);
+      return finish(printable(text), true);
     }
     if (h.kind == StreamKind::Display) {
       const DisplayHeader d = decode_display(fixed_part);

@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <string_view>
+
+#include "command_line/printable.hpp"
 
 namespace l2::viz {
 namespace {
@@ -110,15 +113,26 @@ void ServerLoop::accept_all() {
   }
 }
 
-void ServerLoop::make_room_for_a_stranger() {
-  Connection* oldest = nullptr;
+std::size_t ServerLoop::count_strangers(Connection** oldest) const {
   std::size_t strangers = 0;
+  *oldest = nullptr;
   for (const auto& c : conns_) {
     if (c->dead || c->server >= 0) continue;
     ++strangers;
-    if (!oldest || c->connected < oldest->connected) oldest = c.get();
+    if (!*oldest || c->connected < (*oldest)->connected) *oldest = c.get();
   }
-  if (strangers < kMaxStrangers) return;
+  return strangers;
+}
+
+void ServerLoop::make_room_for_a_stranger() {
+  Connection* oldest = nullptr;
+  if (count_strangers(&oldest) < kMaxStrangers) return;
+  // A burst of connections can arrive between a pipeserver's connect and our first look at
+  // it: its HELLO may already be here, unread. Read before judging who said nothing.
+  for (std::size_t i = 0; i < conns_.size() && !failure_; ++i) {
+    if (!conns_[i]->dead && conns_[i]->server < 0) read_some(*conns_[i]);
+  }
+  if (failure_ || count_strangers(&oldest) < kMaxStrangers) return;
   // Logged the first time and every 1000th, so that a flood cannot grow the log without bound.
   if (strangers_evicted_++ % 1000 == 0) {
     log_error(
@@ -229,7 +243,8 @@ void ServerLoop::dispatch(Connection& c) {
                                             c.head_need - kHeaderBytes);
   if (kind == Kind::Hello) return on_hello(c);
   if (kind == Kind::Error) {
-    close(c, fmt::format("{} gave up: {}", who(c), std::string(c.body.begin(), c.body.end())));
+    const std::string_view text(reinterpret_cast<const char*>(c.body.data()), c.body.size());
+    close(c, fmt::format("{} gave up: {}", who(c), printable(text)));
     return;
   }
   std::optional<std::string> error;  // c said HELLO: advance() let nothing else through
@@ -251,7 +266,10 @@ void ServerLoop::on_hello(Connection& c) {
   const Hello hello = decode_hello(
       std::span<const std::uint8_t>(c.head.data() + kHeaderBytes, fixed_bytes(Kind::Hello)));
   std::optional<std::string> refusal;
-  if (hello.display_count != static_cast<std::uint32_t>(assembler_.display_count())) {
+  // The token first: a stranger learns nothing about the run (ids, displays) without it.
+  if (!same_token(hello.token, options_.token)) {
+    refusal = fmt::format("HELLO as pipeserver {} without this run's token", hello.server_id);
+  } else if (hello.display_count != static_cast<std::uint32_t>(assembler_.display_count())) {
     refusal = fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
                           hello.server_id, hello.display_count, assembler_.display_count());
   } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.server_count())) {
@@ -336,7 +354,7 @@ void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) 
 
 void ServerLoop::log_error(const std::string& line) {
   std::lock_guard lock(shared_->mutex);
-  shared_->errors.push_back(line);
+  if (shared_->error_count++ < kKeptErrors) shared_->errors.push_back(line);
 }
 
 void ServerLoop::fail(const std::string& line) {
@@ -344,8 +362,9 @@ void ServerLoop::fail(const std::string& line) {
   failure_ = line;
   {
     std::lock_guard lock(shared_->mutex);
-    shared_->errors.push_back(line);
-    shared_->failure = line;  // published now, before any peer is told
+    ++shared_->error_count;
+    shared_->errors.push_back(line);  // kept beyond kKeptErrors: there is only one
+    shared_->failure = line;          // published now, before any peer is told
   }
   shared_->changed.notify_all();
 }
@@ -391,6 +410,7 @@ void ServerLoop::check_timers(Clock::time_point now) {
   if (options_.stall_timeout.count() <= 0) return;
   for (auto& c : conns_) {
     if (c->dead || c->server < 0) continue;
+    if (stalled_mid_message(*c, now)) return;
     const auto waiting = assembler_.frame_waiting_for(c->server);
     if (waiting != c->waiting_frame) {
       c->waiting_frame = waiting;
@@ -404,6 +424,30 @@ void ServerLoop::check_timers(Clock::time_point now) {
       return;
     }
   }
+}
+
+bool ServerLoop::stalled_mid_message(const Connection& c, Clock::time_point now) {
+  const bool mid_message = c.head_got > 0;
+  if (!mid_message || now - c.last_activity <= options_.stall_timeout) return false;
+  fail(fmt::format("{} sent nothing for {:.1f} s in the middle of {}", who(c),
+                   seconds(options_.stall_timeout), message_progress(c)));
+  return true;
+}
+
+// "a TILE message (frame 0, display 0, 4095x4095: 1000 of 50307075 bytes)": what it was
+// sending and how far it got.
+std::string ServerLoop::message_progress(const Connection& c) const {
+  if (!c.header) return fmt::format("a message header ({} of {} bytes)", c.head_got, kHeaderBytes);
+  const char* kind = kind_name(c.header->kind);
+  if (!c.body_ready) {
+    return fmt::format("a {} message ({} of {} bytes)", kind, c.head_got, c.head_need);
+  }
+  if (c.tile) {
+    return fmt::format("a {} message (frame {}, display {}, {}x{}: {} of {} bytes)", kind,
+                       c.tile->frame, c.tile->display, c.tile->w, c.tile->h, c.body_got,
+                       c.body.size());
+  }
+  return fmt::format("a {} message ({} of {} bytes)", kind, c.body_got, c.body.size());
 }
 
 void ServerLoop::shut_down() {

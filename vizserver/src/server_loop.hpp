@@ -26,7 +26,8 @@ struct ServerShared {
   std::deque<FramePtr> kept;  // the last keep_frames swapped frames
   std::optional<std::uint32_t> last_swapped;
   std::optional<std::string> failure;
-  std::vector<std::string> errors;
+  std::vector<std::string> errors;  // the first kKeptErrors, and the failure
+  std::uint64_t error_count = 0;    // every connection error
   StripErrorCounts counts;
   bool ended = false;     // the loop has returned
   bool all_left = false;  // ... because every pipeserver finished and disconnected
@@ -64,7 +65,10 @@ class ServerLoop {
 
   void run();
   void accept_all();
-  void make_room_for_a_stranger();  // closes the oldest connection without HELLO when full
+  // When the strangers are too many: reads what each has sent (a pipeserver's HELLO may be
+  // waiting), then closes the oldest that still has not said HELLO.
+  void make_room_for_a_stranger();
+  std::size_t count_strangers(Connection** oldest) const;
   void read_some(Connection& c);
   bool advance(Connection& c);  // parse what arrived; false when the connection was closed
   void dispatch(Connection& c);
@@ -79,6 +83,10 @@ class ServerLoop {
   std::string who(const Connection& c) const;
   void publish_swaps();
   void check_timers(Clock::time_point now);
+  // A pipeserver silent in the middle of a message: the stall timeout ends it whether or not a
+  // frame waits for it (with one pipeserver, none does).
+  bool stalled_mid_message(const Connection& c, Clock::time_point now);
+  std::string message_progress(const Connection& c) const;
   void shut_down();
 
   ServerOptions options_;

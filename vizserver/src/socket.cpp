@@ -234,7 +234,7 @@ void send_all(int fd, std::span<const iovec> parts, Clock::time_point deadline,
         continue;
       }
       if (errno == EPIPE || errno == ECONNRESET) {
-        throw VizError(fmt::format("{} closed the connection", peer));
+        throw ConnectionClosed(fmt::format("{} closed the connection", peer));
       }
       throw VizError(fmt::format("{}: send failed: {}", peer, err_text(errno)));
     }
@@ -257,13 +257,15 @@ void recv_all(int fd, std::uint8_t* data, std::size_t n, Clock::time_point deadl
       got += static_cast<std::size_t>(r);
       continue;
     }
-    if (r == 0) throw VizError(fmt::format("{} closed the connection", peer));
+    if (r == 0) throw ConnectionClosed(fmt::format("{} closed the connection", peer));
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
       if (!wait_for(fd, POLLIN, deadline)) throw VizError(fmt::format("{}: timed out", peer));
       continue;
     }
-    if (errno == ECONNRESET) throw VizError(fmt::format("{} closed the connection", peer));
+    if (errno == ECONNRESET) {
+      throw ConnectionClosed(fmt::format("{} closed the connection", peer));
+    }
     throw VizError(fmt::format("{}: receive failed: {}", peer, err_text(errno)));
   }
 }

@@ -2,9 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <thread>
 #include <vector>
+
+#include "command_line/printable.hpp"
 
 #include "vizserver/wire.hpp"
 
@@ -25,16 +30,35 @@ TileSender TileSender::connect(const std::string& host, std::uint16_t port, int 
   if (server_id < 0 || display_count < 0) {
     throw std::invalid_argument("TileSender: negative pipeserver id or display count");
   }
-  Fd fd = connect_tcp(host, port, options.connect_timeout, "compositing server");
-  TileSender s(std::move(fd), fmt::format("compositing server {}:{}", host, port), server_id,
-               options);
-  const auto hello = encode(
-      Hello{static_cast<std::uint32_t>(server_id), static_cast<std::uint32_t>(display_count)});
+  const auto give_up = Clock::now() + options.connect_timeout;
+  const std::string peer = fmt::format("compositing server {}:{}", host, port);
+  for (int attempt = 1;; ++attempt) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - Clock::now());
+    Fd fd =
+        connect_tcp(host, port, std::max(left, std::chrono::milliseconds(1)), "compositing server");
+    TileSender s(std::move(fd), peer, server_id, options);
+    if (s.say_hello(display_count)) return s;
+    if (Clock::now() >= give_up) {
+      throw VizError(fmt::format("{} closed the connection before WELCOME, {} times within {} ms",
+                                 peer, attempt, options.connect_timeout.count()));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+bool TileSender::say_hello(int display_count) {
+  const auto hello = encode(Hello{static_cast<std::uint32_t>(server_id_),
+                                  static_cast<std::uint32_t>(display_count), options_.token});
   const iovec parts[] = {part(hello.data(), hello.size())};
-  s.send(parts);
-  const auto deadline = Clock::now() + options.io_timeout;
-  while (!s.welcomed_) s.read_message(deadline, "WELCOME");
-  return s;
+  const auto deadline = Clock::now() + options_.io_timeout;
+  try {
+    send(parts);
+    while (!welcomed_) read_message(deadline, "WELCOME");
+  } catch (const ConnectionClosed&) {
+    if (!server_error_.empty()) throw;  // refused, with its reason
+    return false;
+  }
+  return true;
 }
 
 void TileSender::send(std::span<const iovec> parts) {
@@ -92,6 +116,8 @@ void TileSender::read_message(Clock::time_point deadline, const char* waiting_fo
   std::uint8_t buf[kHeaderBytes + kMaxFixedBytes];
   try {
     recv_all(fd_.get(), buf, kHeaderBytes, deadline, peer_);
+  } catch (const ConnectionClosed& e) {
+    throw ConnectionClosed(fmt::format("{} (waiting for {})", e.what(), waiting_for));
   } catch (const VizError& e) {
     throw VizError(fmt::format("{} (waiting for {})", e.what(), waiting_for));
   }
@@ -104,8 +130,8 @@ void TileSender::read_message(Clock::time_point deadline, const char* waiting_fo
   if (header.kind == Kind::Error) {
     std::string text(header.payload_bytes, '\0');
     recv_all(fd_.get(), reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer_);
-    server_error_ = text;
-    throw VizError(fmt::format("{}: {}", peer_, text));
+    server_error_ = printable(text);
+    throw VizError(fmt::format("{}: {}", peer_, server_error_));
   }
   const std::size_t fixed = fixed_bytes(header.kind);
   recv_all(fd_.get(), buf + kHeaderBytes, fixed, deadline, peer_);

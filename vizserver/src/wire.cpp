@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace l2::viz {
 namespace {
 
@@ -46,7 +48,7 @@ std::uint32_t get_u32(const std::uint8_t* p) {
 std::size_t fixed_bytes(Kind kind) {
   switch (kind) {
     case Kind::Hello:
-      return 8;
+      return 24;
     case Kind::Welcome:
       return 12;
     case Kind::Tile:
@@ -79,10 +81,11 @@ const char* kind_name(Kind kind) {
   return "?";
 }
 
-std::array<std::uint8_t, kHeaderBytes + 8> encode(const Hello& m) {
-  auto out = start<8>(Kind::Hello);
+std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
+  auto out = start<24>(Kind::Hello);
   put_u32(out.data() + 12, m.server_id);
   put_u32(out.data() + 16, m.display_count);
+  std::copy(m.token.begin(), m.token.end(), out.begin() + 20);
   return out;
 }
 
@@ -149,7 +152,9 @@ std::variant<Header, std::string> decode_header(std::span<const std::uint8_t, kH
 }
 
 Hello decode_hello(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4)};
+  Hello h{get_u32(f.data()), get_u32(f.data() + 4), {}};
+  std::copy(f.begin() + 8, f.begin() + 8 + kTokenBytes, h.token.begin());
+  return h;
 }
 Welcome decode_welcome(std::span<const std::uint8_t> f) {
   return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};

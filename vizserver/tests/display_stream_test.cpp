@@ -66,8 +66,8 @@ struct StreamPair {
 
 TEST(DisplayStreamWire, ListeningDisplayAndShownBytes) {
   const auto l = encode(Listening{0x1234, 2, 3});
-  // "L2VZ", version 1, kind 16, payload 12, then the three u32s, all little-endian.
-  const std::vector<std::uint8_t> want{'L',  '2',  'V', 'Z', 1, 0, 16, 0, 12, 0, 0, 0,
+  // "L2VZ", version 2, kind 16, payload 12, then the three u32s, all little-endian.
+  const std::vector<std::uint8_t> want{'L',  '2',  'V', 'Z', 2, 0, 16, 0, 12, 0, 0, 0,
                                        0x34, 0x12, 0,   0,   2, 0, 0,  0, 3,  0, 0, 0};
   EXPECT_EQ(std::vector<std::uint8_t>(l.begin(), l.end()), want);
   const auto d = encode(DisplayHeader{7, 1, 640, 480});

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "raw_peer.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/tile_sender.hpp"
 #include "vizserver/wire.hpp"
@@ -22,6 +23,8 @@ namespace {
 
 using namespace std::chrono_literals;
 using ::testing::HasSubstr;
+using testing::read_until_closed;
+using testing::send_bytes;
 
 // The colour the test expects at display pixel (x, y) of `display` in `frame`. Chosen here,
 // independently of the code under test; every pixel differs from its neighbours.
@@ -236,27 +239,6 @@ TEST(VizServerNet, BadMagicClosesOnlyThatConnectionAndNamesThePeer) {
   s.finish_frame(0, 0);
   s.wait_swapped(0, 2000ms);
   EXPECT_EQ(server.failure(), std::nullopt);
-}
-
-// Everything a raw connection receives until the server closes it, or nullopt if it is still
-// open at the deadline.
-std::optional<std::string> read_until_closed(int fd, std::chrono::milliseconds within) {
-  std::string got;
-  const auto deadline = Clock::now() + within;
-  while (Clock::now() < deadline) {
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, 20) <= 0) continue;
-    char buf[4096];
-    const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
-    if (n <= 0) return got;
-    got.append(buf, static_cast<std::size_t>(n));
-  }
-  return std::nullopt;
-}
-
-void send_bytes(int fd, std::span<const std::uint8_t> bytes) {
-  const iovec part{const_cast<std::uint8_t*>(bytes.data()), bytes.size()};
-  send_all(fd, std::span(&part, 1), Clock::now() + 1000ms, "server");
 }
 
 TEST(VizServerNet, TileBeforeHelloIsRefusedBeforeItsPixelsArrive) {

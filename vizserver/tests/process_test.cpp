@@ -210,6 +210,28 @@ TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
   EXPECT_EQ(exe.wait(3000ms), 1);
 }
 
+// How l2wall starts it: the run's token in its environment. A HELLO without the token is
+// refused; the pipeserver with it composes the frame.
+TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
+  const auto dir = fresh_dir("token");
+  const RunToken token = new_run_token();
+  ::setenv(kTokenVariable, token_text(token).c_str(), 1);
+  ChildProcess exe({VIZSERVER_EXE, "--displays", "4x4", "--servers", "1", "--frames", "1", "--out",
+                    dir.string()});
+  ::unsetenv(kTokenVariable);
+  const auto line = exe.read_line(5000ms).value_or("");
+  ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
+  const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
+  EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1), VizError);
+  SenderOptions with_token;
+  with_token.token = token;
+  auto s = TileSender::connect("127.0.0.1", port, 0, 1, with_token);
+  s.finish_frame(0, 0);
+  s.wait_swapped(0, 5000ms);
+  EXPECT_EQ(exe.wait(5000ms), 0);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   ChildProcess help({VIZSERVER_EXE, "--help"});
   std::string text;

@@ -14,11 +14,17 @@ std::span<const std::uint8_t, kHeaderBytes> head_of(const std::uint8_t* p) {
   return std::span<const std::uint8_t, kHeaderBytes>(p, kHeaderBytes);
 }
 
-TEST(Wire, HelloBytesAreLittleEndianWithMagicVersionKindLength) {
-  const auto bytes = encode(Hello{3, 0x01020304});
-  const std::vector<std::uint8_t> expected = {'L', '2', 'V', 'Z', 1, 0, 1,    0,    8,    0,
-                                              0,   0,   3,   0,   0, 0, 0x04, 0x03, 0x02, 0x01};
+TEST(Wire, HelloBytesAreLittleEndianWithMagicVersionKindLengthAndToken) {
+  RunToken token{};
+  for (std::size_t i = 0; i < token.size(); ++i) token[i] = static_cast<std::uint8_t>(0xA0 + i);
+  const auto bytes = encode(Hello{3, 0x01020304, token});
+  std::vector<std::uint8_t> expected = {'L', '2', 'V', 'Z', 2, 0, 1,    0,    24,   0,
+                                        0,   0,   3,   0,   0, 0, 0x04, 0x03, 0x02, 0x01};
+  for (int i = 0; i < 16; ++i) expected.push_back(static_cast<std::uint8_t>(0xA0 + i));
   EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), expected);
+  const Hello back = decode_hello(std::span<const std::uint8_t>(bytes).subspan(kHeaderBytes));
+  EXPECT_EQ(back.server_id, 3u);
+  EXPECT_EQ(back.token, token);
 }
 
 TEST(Wire, TileHeaderRoundTripsIncludingNegativeOffsets) {
@@ -63,9 +69,9 @@ TEST(Wire, BadMagicIsNamed) {
 
 TEST(Wire, WrongVersionAndUnknownKindAreRefused) {
   auto bytes = encode(Swapped{1});
-  bytes[4] = 2;
+  bytes[4] = 1;  // a build from before HELLO carried the run token
   EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
-              HasSubstr("protocol version 2"));
+              HasSubstr("protocol version 1, this build speaks 2"));
   bytes = encode(Swapped{1});
   bytes[6] = 9;
   EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),

@@ -11,7 +11,8 @@
 // pipeserver that breaks the protocol, disconnects or goes silent (stall_timeout) while a
 // frame waits for it, or pipeservers that do not all say HELLO within accept_timeout. The
 // server then sends that line as ERROR to every pipeserver and closes. A connection that never
-// said HELLO and sends garbage is closed and logged in errors() without ending the run.
+// said HELLO and sends garbage, or says HELLO without the run's token, is closed and logged
+// without ending the run: counted in error_count(), the first few kept in errors().
 #pragma once
 
 #include <chrono>
@@ -26,6 +27,7 @@
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/frame_assembler.hpp"
+#include "vizserver/run_token.hpp"
 #include "vizserver/socket.hpp"
 
 namespace l2::viz {
@@ -40,9 +42,12 @@ struct ServerOptions {
   std::chrono::milliseconds stall_timeout{10000};   // silence while a frame waits; 0: never
   std::size_t keep_frames = 8;                      // swapped frames wait_frame can still find
   std::size_t max_buffered_bytes = std::size_t{1} << 30;  // tile bytes held for open frames
+  RunToken token{};  // a HELLO without it is refused (run_token.hpp); all zero: none needed
 };
 
 using FramePtr = std::shared_ptr<const ComposedFrame>;
+
+inline constexpr std::size_t kKeptErrors = 16;
 
 class ServerLoop;     // the poll() thread (src/server_loop.hpp)
 struct ServerShared;  // what it publishes to callers, under a mutex
@@ -74,8 +79,11 @@ class CompositingServer {
   bool wait_finished(std::chrono::milliseconds timeout);
 
   std::optional<std::string> failure() const;  // the line that ended the run, if any
-  std::vector<std::string> errors() const;     // every connection error, failure included
-  StripErrorCounts counts() const;             // clips and missing displays of all frames
+  // The first kKeptErrors connection errors, and the failure; error_count() counts them all,
+  // so that a flood of strangers costs a number, not a line each.
+  std::vector<std::string> errors() const;
+  std::uint64_t error_count() const;
+  StripErrorCounts counts() const;  // clips and missing displays of all frames
   std::optional<std::uint32_t> last_swapped() const;
 
  private:

@@ -24,6 +24,13 @@ class VizError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The peer closed the connection (end of stream, reset, broken pipe) without a word: the one
+// failure a pipeserver answers by connecting again while it is still saying HELLO.
+class ConnectionClosed : public VizError {
+ public:
+  using VizError::VizError;
+};
+
 class Fd {
  public:
   Fd() = default;

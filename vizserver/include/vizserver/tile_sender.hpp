@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "vizserver/run_token.hpp"
 #include "vizserver/socket.hpp"
 
 namespace l2::viz {
@@ -21,14 +22,17 @@ struct TileTarget {
 };
 
 struct SenderOptions {
-  std::chrono::milliseconds connect_timeout{5000};  // retries until the server listens
-  std::chrono::milliseconds io_timeout{10000};      // one send or the WELCOME, at most
+  // Retries until the server listens, and reconnects while a server closes us before WELCOME
+  // without a reason (it was flooded with connections and made room).
+  std::chrono::milliseconds connect_timeout{5000};
+  std::chrono::milliseconds io_timeout{10000};  // one send or the WELCOME, at most
+  RunToken token{};                             // the run's token, sent in HELLO
 };
 
 class TileSender {
  public:
   // Connects, says HELLO and waits for WELCOME. Throws VizError: unreachable server, or the
-  // server's refusal verbatim (wrong display count, pipeserver id taken or out of range).
+  // server's refusal (wrong display count or token, pipeserver id taken or out of range).
   static TileSender connect(const std::string& host, std::uint16_t port, int server_id,
                             int display_count, SenderOptions options = {});
 
@@ -51,6 +55,8 @@ class TileSender {
 
  private:
   TileSender(Fd fd, std::string peer, int server_id, SenderOptions options);
+  // Says HELLO and reads until WELCOME. False when the server closed without a word first.
+  bool say_hello(int display_count);
   // Reads one server message and records it. Throws VizError on ERROR (text kept) or EOF.
   void read_message(Clock::time_point deadline, const char* waiting_for);
   void send(std::span<const iovec> parts);

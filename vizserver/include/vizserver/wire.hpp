@@ -15,10 +15,12 @@
 #include <string>
 #include <variant>
 
+#include "vizserver/run_token.hpp"
+
 namespace l2::viz {
 
 inline constexpr std::uint32_t kMagic = 0x5A56324C;  // bytes "L2VZ" on the wire
-inline constexpr std::uint16_t kVersion = 1;
+inline constexpr std::uint16_t kVersion = 2;         // 2: HELLO carries the run token
 inline constexpr std::size_t kHeaderBytes = 12;
 inline constexpr int kMaxTileSide = 4095;  // the 12-bit width limit of a strip header (spec §2)
 inline constexpr std::size_t kMaxErrorText = 1024;
@@ -41,6 +43,7 @@ struct Header {
 struct Hello {
   std::uint32_t server_id = 0;
   std::uint32_t display_count = 0;
+  RunToken token{};  // the run's token (run_token.hpp); all zero when the run has none
 };
 
 struct Welcome {
@@ -74,7 +77,7 @@ std::size_t fixed_bytes(Kind kind);
 const char* kind_name(Kind kind);
 
 // Encoders: header + fixed part, ready to send. TILE pixels and ERROR text follow separately.
-std::array<std::uint8_t, kHeaderBytes + 8> encode(const Hello& m);
+std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m);
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m);
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m);
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m);

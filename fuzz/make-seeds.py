@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Writes the fuzz harnesses' seed corpora (fuzz/corpus/<harness>/): a few small, valid inputs
+of each format, from which libFuzzer mutates. Run from anywhere; the files are committed."""
+import pathlib
+import shutil
+import struct
+import zlib
+
+HERE = pathlib.Path(__file__).resolve().parent
+CORPUS = HERE / "corpus"
+
+
+def put(harness, name, data):
+    folder = CORPUS / harness
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_bytes(data)
+
+
+# --- scanline: first byte 0 = RGB, 1 = RGBA; then the row ------------------------------------
+# 48-bit headers as `strip_headers encode` writes them (spec §2).
+COPY_3 = bytes.fromhex("600000000018")      # COPY frame, display 0 at 0,0, width 3
+SKIP_2 = bytes.fromhex("800000000011")      # SKIP width 2
+END = bytes.fromhex("000000000000")
+COPY_4095 = bytes.fromhex("40802803fffc")   # COPY display 1 at 5,7, width 4095
+EXT = bytes.fromhex("e29400f00a06")         # EXT (spec §7)
+
+
+def rgb_header(h):
+    return h  # two RGB pixels: R G B R G B
+
+
+def rgba_header(h):
+    return h[0:3] + b"\xff" + h[3:6] + b"\xff"
+
+
+pixels3 = bytes(range(9))
+put("scanline", "copy-skip-end-rgb",
+    b"\x00" + rgb_header(COPY_3) + pixels3 + rgb_header(SKIP_2) + bytes(6) + rgb_header(END))
+put("scanline", "copy-rgba",
+    b"\x01" + rgba_header(COPY_3) + bytes(range(12)) + rgba_header(END))
+put("scanline", "truncated-rgb", b"\x00" + rgb_header(COPY_4095) + bytes(30))
+put("scanline", "ext-rgb", b"\x00" + rgb_header(EXT) + bytes(12))
+
+
+# --- ready: first byte picks the piece size; then the serial bytes ---------------------------
+def crc8(data):
+    crc = 0
+    for b in data:
+        crc ^= b
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x07) & 0xFF if crc & 0x80 else (crc << 1) & 0xFF
+    return crc
+
+
+def message(verb, frame):
+    body = f"{verb} {frame:06d}".encode()
+    return body + f" {crc8(body):02X}\r\n".encode()
+
+
+put("ready", "one-ready", b"\x10" + message("READY", 123))
+put("ready", "noise-sync-ready",
+    b"\x03" + b"xx\x00R" + message("SYNC?", 0) + message("READY", 999999))
+put("ready", "bad-checksum", b"\x01" + message("READY", 42)[:-4] + b"00\r\n")
+
+# --- wall_file: the example walls --------------------------------------------------------------
+for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml"):
+    put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
+
+
+# --- vizserver_wire: a byte stream of messages (docs/vizserver-protocol.md) --------------------
+def viz(kind, payload):
+    return struct.pack("<IHHI", 0x5A56324C, 2, kind, len(payload)) + payload
+
+
+hello = viz(1, struct.pack("<II", 0, 2) + bytes(16))
+tile = viz(3, struct.pack("<IIiiII", 0, 1, -1, 3, 2, 1) + bytes(range(6)))
+done = viz(4, struct.pack("<III", 0, 0, 1))
+put("vizserver_wire", "hello-tile-done", hello + tile + done)
+put("vizserver_wire", "welcome-swapped", viz(2, struct.pack("<III", 0, 2, 1)) + viz(5, b"\x07\0\0\0"))
+put("vizserver_wire", "error", viz(6, b"pipeserver 1 gave up"))
+
+
+# --- png_frame: small PNG files, written chunk by chunk ------------------------------------------
+def png(width, height, colour_type, bit_depth, rows, extra=b""):
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(
+            ">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", width, height, bit_depth, colour_type, 0, 0, 0)
+    raw = b"".join(b"\x00" + r for r in rows)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + extra +
+            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+put("png_frame", "rgb-4x2.png", png(4, 2, 2, 8, [bytes(range(12)), bytes(range(12, 24))]))
+put("png_frame", "rgba-2x2.png", png(2, 2, 6, 8, [bytes(range(8)), bytes(range(8, 16))]))
+put("png_frame", "rgb16-1x1.png", png(1, 1, 2, 16, [bytes(range(6))]))
+palette = struct.pack(">I", 6) + b"PLTE" + bytes(range(6))
+palette += struct.pack(">I", zlib.crc32(b"PLTE" + bytes(range(6))) & 0xFFFFFFFF)
+put("png_frame", "palette-2x1.png", png(2, 1, 3, 8, [b"\x00\x01"], palette))
+put("png_frame", "grey-2x1.png", png(2, 1, 0, 8, [b"\x10\x20"]))

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, CMake preset "fuzz": clang, ASan+UBSan) and runs each
+# for SECONDS seconds from its seed corpus (fuzz/corpus/<harness>), then prints per harness the
+# executions, their rate, and libFuzzer's coverage figures (cov: code edges, ft: features) from
+# its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
+# broke a promise; the input that did it is saved in build/fuzz/artifacts/<harness>/.
+# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all five)
+# FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
+# SECONDS as the upper bound).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ || $1 -lt 1 ]]; then
+  echo "usage: scripts/fuzz.sh SECONDS [HARNESS...]  (SECONDS per harness, 1 or more)" >&2
+  exit 2
+fi
+seconds=$1
+shift
+harnesses=("$@")
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file vizserver_wire png_frame)
+
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz -j "$(nproc)" -- --quiet
+
+out=${FUZZ_OUT:-build/fuzz/runs}  # FUZZ_OUT: another folder, for a run beside this one
+failed=0
+for h in "${harnesses[@]}"; do
+  seeds=fuzz/corpus/$h
+  [[ -d $seeds ]] || { echo "fuzz: no harness '$h' (no $seeds)" >&2; exit 2; }
+  # Inputs found worth keeping go to a scratch corpus, never into the committed seeds.
+  work=$out/$h/corpus artifacts=$out/$h/artifacts/ log=$out/$h/log.txt
+  mkdir -p "$work" "$artifacts"
+  # A READY message is 17 bytes: 512 hold thirty, and longer inputs only slow the search.
+  limits=()
+  [[ $h == ready ]] && limits=(-max_len=512)
+  status=0
+  build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
+    -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
+    >"$log" 2>&1 || status=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  corpus=$(sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' <<<"$last")
+  if ((status == 0)); then
+    verdict="no crash"
+  else
+    verdict="FAILED (exit $status, see $log)"
+    failed=1
+    grep -E '^(==[0-9]+==ERROR|fuzz: broken promise|SUMMARY)' "$log" | head -3 >&2 || true
+  fi
+  took=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
+  printf 'fuzz_%-15s %12s runs in %s s (%s/s)  cov %s  ft %s  corpus %s  %s\n' "$h" \
+    "${runs:-?}" "${took:-$seconds}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" "$verdict"
+done
+exit $failed
