@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
                   "wall file (TOML); default: the built-in default wall "
                   "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
       ->check(CLI::ExistingFile);
-  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches")
+  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
       ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches"}))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")

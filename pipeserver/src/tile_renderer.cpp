@@ -9,9 +9,9 @@ namespace l2 {
 
 namespace {
 
-void setup_state(bool lit) {
+void setup_state(bool lit, glm::vec3 clear) {
   glDisable(GL_SCISSOR_TEST);
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearColor(clear.r, clear.g, clear.b, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -54,7 +54,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
       canvas_(canvas),
       camera_(frame_sphere(canvas, scene.centre(), scene.radius())),
       drawn_(scene.batches().size(), false) {
-  setup_state(scene.lit());
+  setup_state(scene.lit(), scene.clear_colour());
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();
   footprints_.reserve(scene.batches().size());
   for (const auto& b : scene.batches()) {

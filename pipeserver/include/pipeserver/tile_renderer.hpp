@@ -14,7 +14,7 @@ namespace l2 {
 
 class TileRenderer {
  public:
-  // Prepares one frame: GL state, a black clear of the whole framebuffer (colour and depth),
+  // Prepares one frame: GL state, a clear of the whole framebuffer to the scene's clear colour (colour and depth),
   // and every batch's canvas footprint. The scene must already be at the frame to draw.
   TileRenderer(const Scene& scene, const Canvas& canvas);
 
