@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
                   "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
       ->check(CLI::ExistingFile);
   run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
-      ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches"}))
+      ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches", "swap"}))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))
