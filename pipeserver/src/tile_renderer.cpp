@@ -9,9 +9,9 @@ namespace l2 {
 
 namespace {
 
-void setup_state(bool lit, glm::vec3 clear) {
+void setup_state(bool lit) {
   glDisable(GL_SCISSOR_TEST);
-  glClearColor(clear.r, clear.g, clear.b, 1.0f);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -54,7 +54,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
       canvas_(canvas),
       camera_(frame_sphere(canvas, scene.centre(), scene.radius())),
       drawn_(scene.batches().size(), false) {
-  setup_state(scene.lit(), scene.clear_colour());
+  setup_state(scene.lit());
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();
   footprints_.reserve(scene.batches().size());
   for (const auto& b : scene.batches()) {
@@ -68,6 +68,13 @@ void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
   glViewport(gl_x, gl_y, on_canvas.w, on_canvas.h);
   glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
   glEnable(GL_SCISSOR_TEST);
+  // Only the tile takes the scene's colour: the rest of the framebuffer stays black, as the
+  // header gaps and unused rows must (the mesh would read a colour there as strip headers).
+  const glm::vec3 c = scene_.clear_colour();
+  if (c != glm::vec3(0.0f)) {
+    glClearColor(c.r, c.g, c.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
   glMatrixMode(GL_PROJECTION);
   const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
   glLoadMatrixd(glm::value_ptr(projection));

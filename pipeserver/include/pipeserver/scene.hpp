@@ -58,7 +58,8 @@ class Scene {
   const std::vector<Batch>& batches() const { return batches_; }
   const glm::mat4& model() const { return model_; }
   bool lit() const { return lit_; }
-  // What every tile is cleared to before the batches are drawn (0..1 per channel).
+  // What every tile (not the rest of the framebuffer) is cleared to before the batches are
+  // drawn (0..1 per channel).
   glm::vec3 clear_colour() const { return clear_colour_; }
   // The sphere every frame of the scene stays inside (model transform applied): the camera
   // frames it, so it must not depend on the frame.
