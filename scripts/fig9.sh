@@ -5,7 +5,8 @@
 # visualization server. Writes OUT/fig9.csv and OUT/fig9.png (gnuplot), one run folder per point.
 #
 #   scripts/fig9.sh [--out DIR] [--frames N] [--sizes "WxH ..."] [--displays "1 4"]
-#                   [--modes "dvi90 dvi0 vizserver"] [--build DIR] [--png FILE]
+#                   [--modes "dvi90 dvi0 vizserver"] [--build DIR] [--png FILE] [--plot-only]
+# --plot-only draws the PNG again from an existing OUT/fig9.csv.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,7 +17,8 @@ displays="1 4"
 modes="dvi90 dvi0 vizserver"
 build=$root/build/default
 png=
-usage() { sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; }
+plot_only=0
+usage() { sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --out) out=$2; shift 2 ;;
@@ -26,6 +28,7 @@ while (($#)); do
     --modes) modes=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
     --png) png=$2; shift 2 ;;
+    --plot-only) plot_only=1; shift ;;
     -h | --help) usage; exit 0 ;;
     *) echo "fig9: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -79,6 +82,7 @@ report_means() {
 }
 
 csv=$out/fig9.csv
+if ((!plot_only)); then
 echo "size,width,height,displays,path,refresh_hz,frames,refreshes,seconds,fps,render_ms,route_ms,swap_ms,ready_wait_ms" >"$csv"
 total=0
 for _ in $sizes; do for _ in $displays; do for _ in $modes; do total=$((total + 1)); done; done; done
@@ -130,6 +134,7 @@ for size in $sizes; do
   done
 done
 printf '\rfig9: %d runs in %d s%40s\n' "$total" $((SECONDS - start)) "" >&2
+fi
 
 # One curve per path and display count, against output megapixels; the paper's curves as
 # references: Lightning-2 at 90 Hz at every size, the visualization server at 8 Hz at 1600x1200.
@@ -144,24 +149,26 @@ for mode in $modes; do
     esac
     data=$out/fig9-$mode-$n.dat
     awk -F, -v n="$n" "NR > 1 && \$4 == n && $sel { print \$2 * \$3 / 1e6, \$10 }" "$csv" >"$data"
-    curves+=("'$data' using 1:2 with linespoints lw 2 title '$name, $n display$( ((n > 1)) && echo s)'")
+    plural=
+    ((n > 1)) && plural=s
+    curves+=("'$data' using 1:2 with linespoints lw 2 title '$name, $n display$plural'")
   done
 done
 {
-  echo "set terminal pngcairo size 1000,640 font ',11'"
+  echo "set terminal pngcairo size 1000,700 font ',11'"
   echo "set output '$png'"
   echo "set title 'SwapBuffers-only frame rate against output size, 12 pipeservers (WireGL fig. 9)'"
-  echo "set xlabel 'output image size (megapixels)'"
+  echo "set xlabel 'output image size'"
   echo "set ylabel 'frames per second'"
   echo "set logscale xy"
-  echo "set key outside right top"
+  echo "set key below maxrows 3"
   echo "set grid"
   echo "set yrange [1:*]"
   echo "set xtics ($(awk -F, 'NR > 1 && !seen[$1]++ { printf "%s\"%s\" %g", sep, $1, $2 * $3 / 1e6; sep = ", " }' "$csv")) rotate by 45 right"
   echo "set arrow from graph 0, first 90 to graph 1, first 90 nohead dt 2 lw 2 lc rgb 'black'"
-  echo "set label 'paper: Lightning-2, 90 Hz' at graph 0.02, first 100"
-  echo "set object circle at first 1.92, first 8 size screen 0.008 fc rgb 'black' fs solid"
-  echo "set label 'paper: visualization server, 8 Hz at 1600x1200' at first 1.92, first 6.5 center"
+  echo "set label 'paper: Lightning-2, 90 Hz at every size' at graph 0.55, first 105"
+  echo "set object circle at first 1.92, first 8 size screen 0.006 fc rgb 'black' fs solid"
+  echo "set label 'paper: visualization server, 8 Hz at 1600x1200' at first 1.92, first 6.3 center"
   printf 'plot %s\n' "$(IFS=,; echo "${curves[*]}")"
 } >"$plot"
 gnuplot "$plot"

@@ -27,6 +27,6 @@ awk -F, '$5 == "dvi" && $6 == 90 && $10 > 90.5 { exit 1 }' "$csv" || fail "faste
 png=$out/fig9.png
 [[ $(head -c 8 "$png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || fail "$png is no PNG"
 size=$(od -An -tu1 -j16 -N8 "$png" | awk '{ print $3 * 256 + $4 "x" $7 * 256 + $8 }')
-[[ $size == 1000x640 ]] || fail "PNG is $size, not 1000x640"
+[[ $size == 1000x700 ]] || fail "PNG is $size, not 1000x700"
 grep -q "fig9: 3 runs in " "$out/output.txt" || fail "no closing progress line: $(cat "$out/output.txt")"
 echo "ok   fig9.sh: $(($(wc -l <"$csv") - 1)) rows, PNG $size"
