@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
                   "wall file (TOML); default: the built-in default wall "
                   "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
       ->check(CLI::ExistingFile);
-  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches")
-      ->check(CLI::IsMember({"mesh", "strips", "isosurface", "patches"}))
+  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
+      ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))

@@ -11,6 +11,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   socat xvfb xauth libx11-dev libxrandr-dev libxtst-dev
+  gnuplot-nox
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "frame_stamp.hpp"
 #include "run_fault.hpp"
@@ -31,6 +32,7 @@ const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>&
   const double route_ms = ms_between(t0, RunClock::now());
   ++refreshes_;
   const int frames = static_cast<int>(records.size());
+  std::vector<int> credited;  // frames this refresh's time is already counted in
   for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
     if (tick.kinds.size() <= i || tick.kinds[i] != FrameKind::New) continue;
     Host& h = hosts.hosts()[i];
@@ -39,7 +41,10 @@ const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>&
       throw RunFault(
           fmt::format("pipeserver {}: frame stamp {} out of range", h.server, h.accepted));
     FrameRecord& r = records[static_cast<std::size_t>(h.accepted)];
-    r.route_ms += route_ms;
+    if (std::find(credited.begin(), credited.end(), h.accepted) == credited.end()) {
+      credited.push_back(h.accepted);
+      r.route_ms += route_ms;  // once per frame, however many of its hosts came in now
+    }
     r.in_refresh = tick.index;  // the last input taken in decides
     r.in_time = t0;
   }

@@ -134,5 +134,46 @@ TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
   expect_clean(run);
 }
 
+// The `swap` scene draws nothing: every display pixel of frame k is that frame's clear colour
+// (as pipeserver's scene.hpp defines it), except each host's frame stamp, which still reads k.
+TEST(LiveRun, SwapSceneShowsEachFramesColourAndItsStamp) {
+  const int frames = 4;
+  WallRun run("swap", {"--scene", "swap", "--frames", std::to_string(frames), "--refresh", "0",
+                       "--keep", "every"});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
+  const Wall wall = default_wall();
+  const TileLayout layout = plan_layout(wall);
+  for (int k = 0; k < frames; ++k) {
+    const Rgb colour{static_cast<std::uint8_t>((64 + 37 * k) % 256),
+                     static_cast<std::uint8_t>((128 + 101 * k) % 256),
+                     static_cast<std::uint8_t>((192 + 173 * k) % 256)};
+    for (int d = 0; d < static_cast<int>(wall.displays.size()); ++d) {
+      const RgbImage shown =
+          read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", d));
+      std::vector<std::pair<int, int>> stamps;
+      for (const ServerPlan& plan : layout.servers) {
+        const DisplayTile& t = plan.tiles.front().tile;
+        if (t.display != d) continue;
+        stamps.emplace_back(t.on_display.x, t.on_display.y);
+        const Rgb px = shown.at(t.on_display.x, t.on_display.y);
+        const std::uint8_t bytes[3] = {px.r, px.g, px.b};
+        EXPECT_EQ(decode_stamp(bytes), k) << "server " << plan.server;
+      }
+      long other = 0;
+      for (int y = 0; y < shown.height(); ++y) {
+        for (int x = 0; x < shown.width(); ++x) {
+          if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
+          other += !(shown.at(x, y) == colour);
+        }
+      }
+      EXPECT_EQ(other, 0) << "frame " << k << " display " << d;
+    }
+  }
+  expect_clean(run);
+}
+
 }  // namespace
 }  // namespace l2

@@ -282,6 +282,54 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
   return f;
 }
 
+// The mesh-size sweep: from 4 inputs and 1 display (one board) to 64 inputs and 24 displays
+// (16 x 3 boards), every display 1280x1024 cut into 128x128 tiles, each input carrying the
+// same share. If routing cost grows linearly with the pixels routed, ns per routed byte and the
+// ratio to memcpy of the same bytes stay flat down the table while the bytes grow 24-fold.
+void mesh_sweep(int repetitions, int workers) {
+  struct Point {
+    int inputs, displays;
+  };
+  const Point points[] = {{4, 1}, {8, 3}, {16, 6}, {32, 12}, {48, 18}, {64, 24}};
+  fmt::print(
+      "\nmesh-size sweep on {} worker(s), displays 1280x1024, tiles 128x128 (best of {} runs; "
+      "ratio: median of pairs)\n{:>6} {:>8} {:>6} {:>10} {:>10} {:>10} {:>12} {:>10} {:>12}\n",
+      workers, repetitions, "inputs", "displays", "boards", "MB/frame", "ms/frame", "GB/s",
+      "ns/routed B", "/memcpy", "memory MiB");
+  for (const Point& p : points) {
+    Scenario s{"sweep", {}, p.inputs, 128, 128};
+    for (int d = 0; d < p.displays; ++d) s.displays.push_back({d, 1280, 1024, 0});
+    const Built b = build(s);
+    l2::WorkerPool pool(workers);
+    const double before_mib = heap_mib();
+    const l2::Mesh mesh = l2::Mesh::fit(p.inputs, p.displays);
+    l2::Router router(mesh, s.displays, pool);
+    for (int warm = 0; warm < 3; ++warm) router.route(b.views);
+    const double router_mib = heap_mib() - before_mib;
+    CopySameBytes memcpy_same(b, pool, false);
+    Samples route, copy_same;
+    for (int r = -1; r < repetitions; ++r) {
+      const Time route_t = timed([&] { router.route(b.views); });
+      const Time memcpy_t = timed(memcpy_same);
+      if (r < 0) continue;
+      route.runs.push_back(route_t);
+      copy_same.runs.push_back(memcpy_t);
+    }
+    for (const auto& d : s.displays) {
+      if (router.display(router.index_of_display(d.id)).back() !=
+          l2::testing::pattern_image(d.id, d.width, d.height)) {
+        fmt::print(stderr, "sweep {}x{}: display {} routed wrong\n", p.inputs, p.displays, d.id);
+        std::exit(1);
+      }
+    }
+    fmt::print("{:>6} {:>8} {:>6} {:>10.1f} {:>10.2f} {:>10.2f} {:>12.3f} {:>10.2f} {:>12.1f}\n",
+               p.inputs, p.displays, fmt::format("{}x{}", mesh.rows(), mesh.columns()),
+               double(b.routed_bytes) / 1e6, route.best() * 1e3, gbps(b.routed_bytes, route.best()),
+               route.best() * 1e9 / double(b.routed_bytes),
+               median_ratio(copy_same, route, &Time::wall), router_mib);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -294,6 +342,10 @@ int main(int argc, char** argv) {
       "fastest run is the least disturbed)\n",
       cores, repetitions);
 
+  if (args.sweep_only) {
+    mesh_sweep(repetitions, cores);
+    return 0;
+  }
   const Scenario headline{"headline (WireGL fig. 9)", {{0, 3200, 2400, 0}}, 12, 200, 200};
   run(headline, repetitions, 1, true);
   const Figures h = run(headline, repetitions, cores, false);
@@ -317,6 +369,7 @@ int main(int argc, char** argv) {
       "HEADLINE 3200x2400 from 12 inputs on {} cores: {:.1f} frames/s = {:.2f}x the "
       "hardware's 90 Hz (target 1.0, aim 2.0)\n",
       cores, 1.0 / h.route_s, 1.0 / h.route_s / 90.0);
+  mesh_sweep(std::max(3, repetitions / 4), cores);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   fmt::print(

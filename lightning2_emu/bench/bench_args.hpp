@@ -7,6 +7,7 @@
 
 struct BenchArgs {
   int repetitions = 41;
+  bool sweep_only = false;  // --sweep: only the mesh-size sweep
 };
 
 // Parses the command line into `args`. Returns the exit status to end with at once (0 after

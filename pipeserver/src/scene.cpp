@@ -52,7 +52,7 @@ void Scene::set_camera(const CameraOptions& camera) {
 }
 
 const std::vector<std::string>& scene_names() {
-  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches"};
+  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches", "swap"};
   return names;
 }
 
@@ -70,8 +70,9 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
   if (name == "strips") return detail::make_strips_scene(options);
   if (name == "isosurface") return detail::make_isosurface_scene(options);
   if (name == "patches") return detail::make_patches_scene(options);
+  if (name == "swap") return detail::make_swap_scene();
   throw std::invalid_argument(
-      fmt::format("unknown scene '{}' (expected mesh, strips, isosurface or patches)", name));
+      fmt::format("unknown scene '{}' (expected mesh, strips, isosurface, patches or swap)", name));
 }
 
 }  // namespace

@@ -31,5 +31,6 @@ std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh);
 std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
+std::unique_ptr<Scene> make_swap_scene();
 
 }  // namespace l2::detail

@@ -68,6 +68,13 @@ void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
   glViewport(gl_x, gl_y, on_canvas.w, on_canvas.h);
   glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
   glEnable(GL_SCISSOR_TEST);
+  // Only the tile takes the scene's colour: the rest of the framebuffer stays black, as the
+  // header gaps and unused rows must (the mesh would read a colour there as strip headers).
+  const glm::vec3 c = scene_.clear_colour();
+  if (c != glm::vec3(0.0f)) {
+    glClearColor(c.r, c.g, c.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
   glMatrixMode(GL_PROJECTION);
   const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
   glLoadMatrixd(glm::value_ptr(projection));

@@ -129,5 +129,33 @@ TEST_P(Reassembles, EveryDisplayEqualsTheReferenceRender) {
 INSTANTIATE_TEST_SUITE_P(AllScenes, Reassembles,
                          ::testing::Values("mesh", "strips", "isosurface", "patches"));
 
+// The swap scene colours its tiles only: no pixel outside them takes the frame's colour, which
+// the mesh would read as strip headers in unused rows and columns.
+TEST(Pipeserver, SwapSceneColoursTheTilesAndNothingElse) {
+  const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
+  Pipeserver ps(layout, 1);
+  auto scene = make_scene("swap");
+  const RgbImage& fb = ps.render_frame(3, *scene);
+  const Rgb colour{(64 + 37 * 3) % 256, (128 + 101 * 3) % 256, (192 + 173 * 3) % 256};
+  std::vector<int> owner(static_cast<std::size_t>(fb.width() * fb.height()), 0);  // 1 tile, 2 gap
+  for (const PackedTile& p : ps.plan().tiles) {
+    for (int y = p.fb_y; y < p.fb_y + p.tile.on_display.h; ++y) {
+      for (int x = p.fb_x - 2; x < p.fb_x + p.tile.on_display.w; ++x) {
+        owner[static_cast<std::size_t>(y * fb.width() + x)] = x < p.fb_x ? 2 : 1;
+      }
+    }
+  }
+  long wrong_tile = 0, wrong_outside = 0;
+  for (int y = 0; y < fb.height(); ++y) {
+    for (int x = 0; x < fb.width(); ++x) {
+      const int o = owner[static_cast<std::size_t>(y * fb.width() + x)];
+      if (o == 1) wrong_tile += !(fb.at(x, y) == colour);
+      if (o == 0) wrong_outside += fb.at(x, y) == colour;
+    }
+  }
+  EXPECT_EQ(wrong_tile, 0);
+  EXPECT_EQ(wrong_outside, 0);
+}
+
 }  // namespace
 }  // namespace l2

@@ -90,7 +90,8 @@ TEST(Scenes, UnknownNameIsAClearError) {
     make_scene("teapot");
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown scene 'teapot' (expected mesh, strips, isosurface or patches)");
+    EXPECT_STREQ(e.what(),
+                 "unknown scene 'teapot' (expected mesh, strips, isosurface, patches or swap)");
   }
 }
 

@@ -65,6 +65,9 @@ class Scene {
   const std::vector<Batch>& batches() const { return batches_; }
   const glm::mat4& model() const { return model_; }
   bool lit() const { return lit_; }
+  // What every tile (not the rest of the framebuffer) is cleared to before the batches are
+  // drawn (0..1 per channel).
+  glm::vec3 clear_colour() const { return clear_colour_; }
   // The sphere every frame of the scene stays inside (model transform applied): the camera
   // frames it, so it must not depend on the frame.
   glm::vec3 centre() const { return {0.0f, 0.0f, 0.0f}; }
@@ -80,13 +83,16 @@ class Scene {
   std::vector<Batch> batches_;
   glm::mat4 model_{1.0f};
   bool lit_ = true;
+  glm::vec3 clear_colour_{0.0f};
 
  private:
   CameraOptions camera_;
 };
 
-// "mesh", "strips", "isosurface" or "patches". Throws std::invalid_argument on an unknown name
-// and std::runtime_error (naming file and line) on an unreadable mesh file.
+// "mesh", "strips", "isosurface", "patches" or "swap" (no geometry: frame k is cleared to
+// ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB). Throws
+// std::invalid_argument on an unknown name and std::runtime_error (naming file and line) on an
+// unreadable mesh file.
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
 const std::vector<std::string>& scene_names();
 

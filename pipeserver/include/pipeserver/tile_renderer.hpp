@@ -14,12 +14,14 @@ namespace l2 {
 
 class TileRenderer {
  public:
-  // Prepares one frame: GL state, a black clear of the whole framebuffer (colour and depth),
-  // and every batch's canvas footprint. The scene must already be at the frame to draw.
+  // Prepares one frame: GL state, a clear of the whole framebuffer to the scene's clear colour
+  // (colour and depth), and every batch's canvas footprint. The scene must already be at the frame
+  // to draw.
   TileRenderer(const Scene& scene, const Canvas& canvas);
 
   // Draws the canvas rectangle `on_canvas` into the framebuffer rectangle whose lower-left
-  // corner is (gl_x, gl_y) in GL window coordinates (rows bottom to top).
+  // corner is (gl_x, gl_y) in GL window coordinates (rows bottom to top), first clearing it to
+  // the scene's clear colour when that is not black.
   void draw_tile(const Rect& on_canvas, int gl_x, int gl_y);
 
   const BucketStats& stats() const { return stats_; }
