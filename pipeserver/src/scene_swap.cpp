@@ -10,7 +10,9 @@ class SwapScene : public Scene {
  public:
   SwapScene() { lit_ = false; }
   const char* name() const override { return "swap"; }
-  void set_frame(int frame) override {
+
+ protected:
+  void animate(int frame) override {
     // Steps that are odd, so consecutive frames differ in every channel and the colour repeats
     // only every 256 frames; a byte over 255 clears to exactly that byte.
     const auto channel = [frame](int step, int base) {
