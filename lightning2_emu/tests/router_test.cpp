@@ -229,6 +229,45 @@ TEST(Router, CompositingAcrossRefreshesIsInBusOrder) {
   EXPECT_EQ(row_of(f.display(0), 1), row1);
 }
 
+// A scanline that repeats the last one's headers but not its extension word is parsed: the
+// KEY below has another key colour.
+TEST(Router, AScanlineRepeatsOnlyWithTheSameExtensionWords) {
+  Fixture f;
+  FrameBuilder in(64, 2);
+  for (int y = 0; y < 2; ++y) {
+    in.copy_fill(0, y, 0, 0, y, 4, kRed);
+    const int key =
+        ext_header(in, 6, y, 0, 0, y, 4, Extension::key_colour(y == 0 ? 0x00FF00 : 0x0000FF));
+    for (int k = 0; k < 4; ++k) in.image().set(key + k, y, k % 2 ? kBlue : kGreen);
+  }
+  f.route({&in.image()});
+  EXPECT_EQ(row_of(f.display(0), 0)[0], kRed);
+  EXPECT_EQ(row_of(f.display(0), 0)[1], kBlue);
+  EXPECT_EQ(row_of(f.display(0), 1)[0], kGreen);
+  EXPECT_EQ(row_of(f.display(0), 1)[1], kRed);
+}
+
+// A predicted frame holds the extension words too: a KEY whose key colour changed under the same
+// header is found, the frame parsed, and composited with the new key.
+TEST(Router, APredictionHoldsTheExtensionWordsToo) {
+  Fixture f;
+  FrameBuilder a(64, 1), b(64, 1);
+  for (FrameBuilder* in : {&a, &b}) {
+    const int x = in->copy_fill(0, 0, 0, 0, 0, 4, kRed);
+    const int key =
+        ext_header(*in, x, 0, 0, 0, 0, 4, Extension::key_colour(in == &a ? 0x00FF00 : 0x0000FF));
+    for (int k = 0; k < 4; ++k) in->image().set(key + k, 0, k % 2 ? kBlue : kGreen);
+  }
+  f.route({&a.image()});
+  f.route({&b.image()});
+  EXPECT_EQ(f.router.predictions().predicted, 1u);
+  EXPECT_EQ(f.router.predictions().mispredicted, 1u);
+  std::vector<Rgb> row(16, kBackground);
+  row[0] = row[2] = kGreen;
+  row[1] = row[3] = kRed;
+  EXPECT_EQ(row_of(f.display(0), 0), row);
+}
+
 // Row 3: COPY or SKIP of width 0: rest of scanline dropped, counted.
 TEST(Router, ZeroWidthDropsTheRestOfTheScanline) {
   Fixture f;
