@@ -30,6 +30,7 @@ void InputScan::no_signal() {
   layout_.stats = InputFrameStats{};
   layout_.stats.input = input_;
   for (auto& band : layout_.bands) band.clear();
+  layout_.composited = 0;
   state_ = State::None;
 }
 
