@@ -35,6 +35,8 @@ json to_json(const InputFrameStats& in) {
   return {{"input", in.input},
           {"present", in.present},
           {"copy_strips", in.copy_strips},
+          {"key_strips", in.key_strips},
+          {"depth_strips", in.depth_strips},
           {"skip_strips", in.skip_strips},
           {"routed_strips", in.routed_strips},
           {"parities", parities},
@@ -82,6 +84,8 @@ json to_json(const RunReport& r) {
     inputs.push_back({{"input", i.input},
                       {"frames", frames},
                       {"copy_strips", i.copy_strips},
+                      {"key_strips", i.key_strips},
+                      {"depth_strips", i.depth_strips},
                       {"skip_strips", i.skip_strips},
                       {"routed_strips", i.routed_strips},
                       {"errors", to_json(i.errors)}});

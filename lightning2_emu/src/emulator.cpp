@@ -78,6 +78,8 @@ const Emulator::Tick& Emulator::tick(std::span<const InputFrame> frames) {
     const InputFrameStats& st = tick_.inputs[i];
     InputRunStats& run = report_.inputs[i];
     run.copy_strips += st.copy_strips;
+    run.key_strips += st.key_strips;
+    run.depth_strips += st.depth_strips;
     run.skip_strips += st.skip_strips;
     run.errors += st.errors;
     ++run.frames[static_cast<int>(decision_.kinds[i])];

@@ -39,6 +39,7 @@ class Scanner {
     sc_.seen.clear();
     out_.others.clear();
     out_.parity_at = -1;
+    out_.composited = 0;
     repeatable_ = false;
     for (int y = 0; y < f_.height; ++y) {
       const std::uint8_t* row = f_.row(y);
@@ -74,6 +75,7 @@ class Scanner {
   bool repeat(const std::uint8_t* row, int y) {
     for (const SeenHeader& h : sc_.seen) {
       if (raw_header(row, h.x) != h.value) return false;
+      if (h.ext && raw_header(row, h.x + kHeaderPixels) != h.ext) return false;
     }
     for (SeenHeader& h : sc_.seen) {
       if (h.list < 0) {  // a SKIP or an END (a header that cannot repeat is never seen again)
@@ -86,7 +88,7 @@ class Scanner {
         continue;
       }
       ++out_.bands[h.list][h.run].rows;
-      ++copies_;
+      ++found_[static_cast<int>(h.kind)];
       ++routed_;
       h.value = ++h.next_y <= h.last_y ? one_row_down(h.value) : kNever;
     }
@@ -100,14 +102,8 @@ class Scanner {
     const std::uint64_t errors_before = errors_.total();
     int next_header = 0;  // where the parser looks for the header after the last strip
     parse_scanline(row, f_.width, f_.bytes_per_pixel, errors_, [&](const ParsedStrip& s) {
-      // KEY and DEPTH are not composited yet: as §3 says of an EXT a decoder does not
-      // implement, the rest of the scanline is dropped and counted.
-      if (s.header.op == StripOp::Ext) {
-        ++errors_.ext_unsupported;
-        return false;
-      }
-      const int x = s.source_x - kHeaderPixels;
-      next_header = s.source_x + s.header.width;
+      const int x = s.header_x();
+      next_header = s.next_header_x();
       parities_ |= static_cast<std::uint8_t>(s.header.frame ? 2 : 1);
       if (out_.parity_at < 0) out_.parity_at = offset(y, x);
       if (s.header.op == StripOp::Skip) {
@@ -116,8 +112,8 @@ class Scanner {
         keep_header(y, x, raw_header(row, x));
         return true;
       }
-      ++copies_;
-      route_copy(s, row, y);
+      ++found_[static_cast<int>(kind_of(s))];
+      route_strip(s, row, y);
       return true;
     });
     // The parser stopped at an END (it counts any other stop as an error) or at the row's end.
@@ -129,10 +125,16 @@ class Scanner {
     repeatable_ = errors_.total() == errors_before;
   }
 
-  // A COPY strip: clipped to its display, then continuing the run at its column or opening one.
-  void route_copy(const ParsedStrip& s, const std::uint8_t* row, int y) {
+  static StripKind kind_of(const ParsedStrip& s) {
+    if (s.header.op != StripOp::Ext) return StripKind::Copy;
+    return s.is(ExtKind::Key) ? StripKind::Key : StripKind::Depth;
+  }
+
+  // A COPY, KEY or DEPTH strip: clipped to its display, then continuing the run at its column
+  // or opening one.
+  void route_strip(const ParsedStrip& s, const std::uint8_t* row, int y) {
     const StripHeader& h = s.header;
-    const int x = s.source_x - kHeaderPixels;
+    const int x = s.header_x();
     const Target& t = targets_[h.display];
     if (t.index < 0) {
       ++errors_.missing_display;
@@ -154,10 +156,14 @@ class Scanner {
     }
     ++routed_;
     fed_ |= std::uint64_t{1} << h.display;
+    const StripKind kind = kind_of(s);
+    const std::uint64_t ext = kind == StripKind::Copy ? 0 : raw_header(row, x + kHeaderPixels);
+    if (kind != StripKind::Copy) out_.composited |= std::uint64_t{1} << h.display;
     const int list = t.band_offset + (h.y >> t.band_shift);
     const int last_y = std::min(t.height, ((h.y >> t.band_shift) + 1) << t.band_shift) - 1;
     const std::uint64_t next = clipped || h.y == last_y ? kNever : one_row_down(raw_header(row, x));
-    sc_.seeing.push_back({x, next, list, extend_run(s, list, length, y), h.y + 1, last_y});
+    sc_.seeing.push_back(
+        {x, next, list, extend_run(s, list, length, y, kind, ext), h.y + 1, last_y, ext, kind});
   }
 
   // A header the fast path must not take for a repeat: the next scanline gets parsed.
@@ -165,20 +171,24 @@ class Scanner {
 
   // Strips come left to right, as they did on the last scanline: walk its headers along. A
   // strip continues the run at its column if it is that run's next row; returns the run.
-  std::uint32_t extend_run(const ParsedStrip& s, int list, int length, int y) {
-    const int x = s.source_x - kHeaderPixels;
+  std::uint32_t extend_run(const ParsedStrip& s, int list, int length, int y, StripKind kind,
+                           std::uint64_t ext) {
+    const int x = s.header_x();
     const std::vector<SeenHeader>& seen = sc_.seen;
     while (next_seen_ < seen.size() && seen[next_seen_].x < x) ++next_seen_;
     std::vector<Run>& runs = out_.bands[list];
     if (next_seen_ < seen.size() && seen[next_seen_].x == x && seen[next_seen_].list == list) {
       Run& r = runs[seen[next_seen_].run];
-      if (r.dst_x == s.header.x && r.length == length && r.dst_y + r.rows == s.header.y) {
+      if (r.dst_x == s.header.x && r.length == length && r.dst_y + r.rows == s.header.y &&
+          r.kind == kind && r.ext == ext) {
         ++r.rows;
         return seen[next_seen_].run;
       }
     }
     runs.push_back({offset(y, s.source_x), s.source_x, y - s.header.y, s.header.x, s.header.y,
-                    static_cast<std::uint16_t>(length), 1, message_of(raw_header(f_.row(y), x))});
+                    static_cast<std::uint16_t>(length), 1, kind,
+                    static_cast<std::uint16_t>(s.header.width), s.extension.key, ext,
+                    message_of(raw_header(f_.row(y), x))});
     return static_cast<std::uint32_t>(runs.size() - 1);
   }
 
@@ -225,7 +235,9 @@ class Scanner {
     st = InputFrameStats{};
     st.input = input;
     st.present = true;
-    st.copy_strips = copies_;
+    st.copy_strips = found_[static_cast<int>(StripKind::Copy)];
+    st.key_strips = found_[static_cast<int>(StripKind::Key)];
+    st.depth_strips = found_[static_cast<int>(StripKind::Depth)];
     st.skip_strips = skips_;
     st.routed_strips = routed_;
     st.parities = parities_;
@@ -239,7 +251,8 @@ class Scanner {
   const InputFrame& f_;
   // Counted here, stored once at the end.
   StripErrorCounts errors_;
-  std::uint64_t copies_ = 0, skips_ = 0, routed_ = 0, fed_ = 0;
+  std::uint64_t found_[3] = {};  // COPY, KEY and DEPTH strips, by StripKind
+  std::uint64_t skips_ = 0, routed_ = 0, fed_ = 0;
   std::uint8_t parities_ = 0;
   bool repeatable_ = false;  // the last scanline was parsed without error
   std::size_t next_seen_ = 0;

@@ -8,6 +8,7 @@
 #include "lightning2_emu/router.hpp"
 #include "pixel_copy.hpp"
 #include "router_detail.hpp"
+#include "strip_headers/extension_word.hpp"
 
 namespace l2 {
 namespace router_detail {
@@ -29,6 +30,7 @@ void InputScan::no_signal() {
   layout_.stats = InputFrameStats{};
   layout_.stats.input = input_;
   for (auto& band : layout_.bands) band.clear();
+  layout_.composited = 0;
   state_ = State::None;
 }
 
@@ -94,13 +96,19 @@ bool InputScan::headers_hold(bool runs) const {
   if (!runs) return ok;
   for (const auto& band : layout_.bands) {
     for (const Run& r : band) {
-      const std::int64_t first = r.src - std::int64_t{kHeaderPixels} * bpp;
+      // A KEY or DEPTH strip's header is followed by its extension word, which must repeat too.
+      const int gap = r.ext ? kHeaderPixels + kExtensionPixels : kHeaderPixels;
+      const std::int64_t first = r.src - std::int64_t{gap} * bpp;
       std::uint64_t m = r.message;
       for (int k = 0; k < r.rows; ++k, m += kMessageOneRow) {
         if (k + kCheckAhead < r.rows) {
           pixel_copy::prefetch_line(f.data + first + (k + kCheckAhead) * f.stride);
         }
         ok &= holds(first + k * f.stride, m);
+        if (r.ext) {
+          const std::uint8_t* w = f.data + first + k * f.stride + kHeaderPixels * bpp;
+          ok &= header_value(w, w + bpp) == r.ext;
+        }
       }
     }
   }
@@ -160,6 +168,7 @@ bool Router::confirm_predictions(std::span<const std::uint8_t> route_input, bool
   predictions_.mispredicted += reparse_inputs_.size();
   pool_.run(static_cast<int>(reparse_inputs_.size()),
             [this](int task, int) { inputs_[reparse_inputs_[task]].reparse(targets_); });
+  add_planes();  // the parse may find KEY or DEPTH strips the prediction did not have
   return false;
 }
 

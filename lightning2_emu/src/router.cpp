@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "composite.hpp"
 #include "pixel_copy.hpp"
 #include "router_detail.hpp"
 #include "strip_headers/scanline_parser.hpp"
@@ -65,6 +66,10 @@ const InputFrameStats& Router::scanned(int input) const {
   return inputs_[input].stats();
 }
 
+bool Router::composites(int index) const {
+  return !display_state_[index].plane.empty();
+}
+
 int Router::index_of_display(int id) const {
   return id >= 0 && id < kMaxDisplays ? targets_[id].index : -1;
 }
@@ -100,6 +105,32 @@ void Router::scan(std::span<const InputFrame> frames) {
     const int input = scan_inputs_[task];
     inputs_[input].parse(frames[input], targets_);
   });
+  add_planes();
+}
+
+void Router::add_planes() {
+  std::uint64_t wanted = 0;
+  for (const router_detail::InputScan& in : inputs_) wanted |= in.composited();
+  wanted &= ~planes_;
+  for (int id = 0; wanted; ++id, wanted >>= 1) {
+    if (!(wanted & 1) || targets_[id].index < 0) continue;
+    const Target& t = targets_[id];
+    DisplayBands& ds = display_state_[t.index];
+    ds.plane.assign(static_cast<std::size_t>(t.width) * t.height, composite::kFar);
+    planes_ |= std::uint64_t{1} << id;
+    // Strips earlier write() calls of this frame wrote were COPY (the display had no plane):
+    // opaque, the pixel of the highest input on top.
+    for (const BandState& bs : ds.bands) {
+      for (const Area& a : bs.areas) {
+        for (int y = a.y0; y < a.y1; ++y) {
+          std::uint32_t* rank = ds.plane.data() + static_cast<std::size_t>(y) * t.width;
+          for (int x = a.x0; x < a.x1; ++x) {
+            rank[x] = std::min(rank[x], composite::opaque_rank(a.input));
+          }
+        }
+      }
+    }
+  }
 }
 
 void Router::finish(std::span<const int> display_indices, std::vector<DisplayFrameStats>& out) {
@@ -147,6 +178,15 @@ DisplayFrameStats Router::finish_band(int display, int band,
   DisplayFrameStats st;
   for (const Area& a : bs.areas) st.strips += a.y1 - a.y0;  // one area per run, a row per strip
   st.covered_pixels = counts.covered;
+  if (!ds.plane.empty()) {  // strips inside which nothing was written show the background too
+    st.covered_pixels = 0;
+    for (int y = y0; y < y1; ++y) {
+      st.covered_pixels += static_cast<std::uint64_t>(
+          composite::settle(back.data() + y * back.stride(),
+                            ds.plane.data() + static_cast<std::size_t>(y) * back.width(),
+                            back.width(), background_.r, background_.g, background_.b));
+    }
+  }
   st.overdraw_pixels = counts.overdraw;
   bs.areas.clear();
   return st;

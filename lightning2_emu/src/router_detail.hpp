@@ -20,15 +20,22 @@ struct Target {
   int band_offset = 0;  // its first band among all displays' bands
 };
 
-// COPY strips of one input, after clipping, that continue each other: the same source columns
-// on consecutive scanlines going to the same display columns on consecutive rows of one band (a
-// tile, or its part in the band). Strip k of the run is read from src + k * stride and written
-// to row dst_y + k.
+// What a run's strips do to their display pixels (spec §7).
+enum class StripKind : std::uint8_t { Copy, Key, Depth };
+
+// COPY, KEY or DEPTH strips of one input, after clipping, that continue each other: the same source
+// columns on consecutive scanlines going to the same display columns on consecutive rows of one
+// band (a tile, or its part in the band). Strip k of the run is read from src + k * stride and
+// written to row dst_y + k.
 struct Run {
   std::int64_t src;  // byte offset of the first strip's first pixel from the frame's row 0
   std::int32_t src_x;
   std::int32_t row_lag;  // source row minus display row, the same for every strip of the run
   std::uint16_t dst_x, dst_y, length, rows;
+  StripKind kind;
+  std::uint16_t depth_at;  // DEPTH: depth pixel i is this many pixels after colour pixel i
+  std::uint32_t key;       // KEY: the key colour, R<<16 | G<<8 | B
+  std::uint64_t ext;       // KEY/DEPTH: the raw extension word, the same on every strip; else 0
   // The first strip's header without check bits and with the frame bit cleared (the 45-bit
   // message): strip k's header is this with y + k, for checking a predicted frame.
   std::uint64_t message;
@@ -45,12 +52,14 @@ struct KeptHeader {
 
 // A header of the last scanline scanned, as the next scanline would repeat it.
 struct SeenHeader {
-  std::int32_t x;       // its column
-  std::uint64_t value;  // the raw 48 bits that repeat it one scanline down: a COPY's row plus one
-  std::int32_t list;    // a routed COPY: the band list of its run; otherwise -1
-  std::uint32_t run;    // the run's index in that list
-  std::int32_t next_y;  // a routed COPY: the display row a repeat writes ...
-  std::int32_t last_y;  // ... which must not pass this one (display height, end of the band)
+  std::int32_t x;         // its column
+  std::uint64_t value;    // the raw 48 bits that repeat it one scanline down: a COPY's row plus one
+  std::int32_t list;      // a routed COPY: the band list of its run; otherwise -1
+  std::uint32_t run;      // the run's index in that list
+  std::int32_t next_y;    // a routed COPY: the display row a repeat writes ...
+  std::int32_t last_y;    // ... which must not pass this one (display height, end of the band)
+  std::uint64_t ext = 0;  // a KEY/DEPTH: its raw extension word, which a repeat must hold too
+  StripKind kind = StripKind::Copy;
 };
 
 // What parsing one frame leaves: the runs to write, the headers that start no run (kept for
@@ -59,7 +68,8 @@ struct Layout {
   InputFrameStats stats;
   std::vector<std::vector<Run>> bands;  // [Target::band_offset + band], in write order
   std::vector<KeptHeader> others;       // headers that start no routed strip, in scan order
-  std::int64_t parity_at = -1;          // the first COPY/SKIP header, -1 when none
+  std::int64_t parity_at = -1;          // the first COPY/SKIP/EXT header, -1 when none
+  std::uint64_t composited = 0;         // bit d: a KEY or DEPTH strip reached display d
 };
 
 // A parse's working lists, reused from frame to frame.
@@ -104,6 +114,8 @@ class alignas(64) InputScan {
   const InputFrame& frame() const { return frame_; }
   const InputFrameStats& stats() const { return layout_.stats; }
   const std::vector<Run>& runs(int band_list) const { return layout_.bands[band_list]; }
+  // Bit d: display d gets a KEY or DEPTH strip of this frame (its parse, or the prediction's).
+  std::uint64_t composited() const { return layout_.composited; }
   // The frame bit of a predicted frame's headers, in a header message (0 when not predicted).
   std::uint64_t frame_bit() const;
 
@@ -145,6 +157,9 @@ struct alignas(64) BandState {
 
 struct DisplayBands {
   int band_rows = 1, band_count = 1;
+  // Displays that get KEY or DEPTH strips: one value a pixel (composite.hpp), the whole display,
+  // allocated the first time a parse finds such a strip for it. Empty for COPY-only displays.
+  std::vector<std::uint32_t> plane;
   int highest_input_written = -1;  // over earlier write() calls of this frame
   std::vector<BandState> bands;
 };

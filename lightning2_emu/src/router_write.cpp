@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "composite.hpp"
 #include "lightning2_emu/router.hpp"
 #include "pixel_copy.hpp"
 #include "router_detail.hpp"
@@ -127,7 +128,14 @@ bool Router::write_checked(std::span<const std::uint8_t> route_input) {
   // wrote (the pixels of no recorded area get the background in finish(); the other inputs'
   // strips are written again, the same). Otherwise a wrong one might overwrite an earlier
   // call's strips, so the checks come first.
-  const bool check_in_copy = predictions_clear_of_earlier(route_input);
+  // Compositing leaves ranks (composite.hpp) that forgetting areas does not undo: predictions
+  // that write to a display with a plane are checked first too.
+  bool onto_planes = false;
+  for (std::size_t i = 0; i < route_input.size() && i < inputs_.size(); ++i) {
+    onto_planes |= route_input[i] && inputs_[i].predicted() &&
+                   (inputs_[i].stats().displays_fed & planes_) != 0;
+  }
+  const bool check_in_copy = !onto_planes && predictions_clear_of_earlier(route_input);
   if (!check_in_copy && !confirm_predictions(route_input, false)) return false;
   if (highest >= 0) {
     pool_.run(static_cast<int>(band_tasks_.size()),
@@ -148,6 +156,7 @@ bool Router::write_checked(std::span<const std::uint8_t> route_input) {
 void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
   const BandTask& t = band_tasks_[task];
   DisplayBands& ds = display_state_[t.display];
+  if (!ds.plane.empty()) return composite_band(task, route_input);
   BandState& bs = ds.bands[t.band];
   RgbImage& back = displays_[t.display].back();
   std::uint8_t* const pixels = back.data();
@@ -196,6 +205,63 @@ void Router::write_band(int task, std::span<const std::uint8_t> route_input) {
     }
   }
   pixel_copy::finish_streaming();
+}
+
+// A band of a display with a compositing plane: every strip pixel by the rules of
+// composite.hpp, which give the bus-order result whatever order the inputs come in, so no strip
+// goes around another. Predicted inputs were checked before (write_checked()).
+void Router::composite_band(int task, std::span<const std::uint8_t> route_input) {
+  const BandTask& t = band_tasks_[task];
+  DisplayBands& ds = display_state_[t.display];
+  BandState& bs = ds.bands[t.band];
+  RgbImage& back = displays_[t.display].back();
+  const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(back.stride());
+  const int inputs = static_cast<int>(std::min(route_input.size(), inputs_.size()));
+  for (int i = 0; i < inputs; ++i) {
+    if (!route_input[i]) continue;
+    const InputFrame& frame = inputs_[i].frame();
+    const int bpp = frame.bytes_per_pixel;
+    for (const Run& r : inputs_[i].runs(task)) {
+      const std::uint8_t* src = frame.data + r.src;
+      std::uint8_t* dst = back.data() + r.dst_y * stride + r.dst_x * 3;
+      std::uint32_t* rank =
+          ds.plane.data() + static_cast<std::size_t>(r.dst_y) * back.width() + r.dst_x;
+      const auto each_row = [&](auto&& apply) {
+        for (int k = 0; k < r.rows; ++k, src += frame.stride, dst += stride, rank += back.width()) {
+          if (k + kPrefetchRows < r.rows) {
+            prefetch_bytes(src + kPrefetchRows * frame.stride,
+                           (r.kind == router_detail::StripKind::Depth ? 2 : 1) * r.depth_at * bpp);
+          }
+          apply();
+        }
+      };
+      const int n = r.length;
+      switch (r.kind) {
+        case router_detail::StripKind::Copy:
+          each_row([&] {
+            bpp == 3 ? composite::overlay<false, 3>(dst, rank, src, n, bpp, 0, i)
+                     : composite::overlay<false, 0>(dst, rank, src, n, bpp, 0, i);
+          });
+          break;
+        case router_detail::StripKind::Key:
+          each_row([&] {
+            bpp == 3 ? composite::overlay<true, 3>(dst, rank, src, n, bpp, r.key, i)
+                     : composite::overlay<true, 0>(dst, rank, src, n, bpp, r.key, i);
+          });
+          break;
+        case router_detail::StripKind::Depth:
+          each_row([&] {
+            const std::uint8_t* depth = src + std::ptrdiff_t{r.depth_at} * bpp;
+            bpp == 3 ? composite::depth<3>(dst, rank, src, depth, n, bpp, i)
+                     : composite::depth<0>(dst, rank, src, depth, n, bpp, i);
+          });
+          break;
+      }
+      bs.areas.push_back({r.dst_y, static_cast<std::uint16_t>(r.dst_y + r.rows), r.dst_x,
+                          static_cast<std::uint16_t>(r.dst_x + r.length),
+                          static_cast<std::uint16_t>(i)});
+    }
+  }
 }
 
 }  // namespace l2

@@ -107,30 +107,165 @@ TEST(Router, ExtDropsTheRestOfTheScanline) {
   EXPECT_EQ(row_of(f.display(0), 0), std::vector<Rgb>(16, kBackground));
 }
 
-// KEY and DEPTH strips (§7) are not composited yet: each ends its scanline as an EXT a decoder
-// does not implement (§3), so neither its payload nor anything after it reaches a display.
-TEST(Router, KeyAndDepthStripsAreNotCompositedYet) {
+// An EXT header and its extension word at column x of scanline y; returns the payload's column.
+int ext_header(FrameBuilder& in, int x, int y, int display, int dx, int dy, int width,
+               const Extension& e) {
+  StripHeader h = StripHeader::copy(false, display, dx, dy, width);
+  h.op = StripOp::Ext;
+  in.header(x, y, h);
+  in.raw_header(x + 2, y, encode(e));
+  return x + 4;
+}
+
+Rgb depth_pixel(std::uint32_t d) {
+  return {static_cast<std::uint8_t>(d >> 16), static_cast<std::uint8_t>(d >> 8),
+          static_cast<std::uint8_t>(d)};
+}
+
+// A DEPTH strip at column x of scanline y: colours, then their depths; returns the next column.
+int depth_strip(FrameBuilder& in, int x, int y, int display, int dx, int dy,
+                const std::vector<Rgb>& colours, const std::vector<std::uint32_t>& depths) {
+  const int w = static_cast<int>(colours.size());
+  const int at = ext_header(in, x, y, display, dx, dy, w, Extension::depth());
+  for (int k = 0; k < w; ++k) {
+    in.image().set(at + k, y, colours[k]);
+    in.image().set(at + w + k, y, depth_pixel(depths[k]));
+  }
+  return at + 2 * w;
+}
+
+// Spec §7, each rule once: COPY then KEY (transparent where the payload is the key colour);
+// DEPTH writes only a strictly nearer pixel (equal depth: the earlier strip stays, far: never);
+// no DEPTH covers a COPY pixel; a pixel reached only at the far plane shows the background.
+TEST(Router, KeyAndDepthStripsCompositeAsSection7Says) {
   Fixture f;
-  FrameBuilder in(40, 2);
-  int x = in.copy_fill(0, 0, 0, 0, 0, 2, kRed);
-  StripHeader key = StripHeader::copy(false, 0, 4, 0, 3);
-  key.op = StripOp::Ext;
-  in.header(x, 0, key);
-  in.raw_header(x + 2, 0, encode(Extension::key_colour(0x0000FF)));
-  in.image().fill_rect(x + 4, 0, 3, 1, kGreen);
-  in.copy_fill(x + 7, 0, 0, 8, 0, 2, kBlue);
-  StripHeader depth = key;
-  depth.y = 1;
-  in.header(0, 1, depth);
-  in.raw_header(2, 1, encode(Extension::depth()));
-  in.image().fill_rect(4, 1, 6, 1, kGreen);
+  FrameBuilder in(64, 2);
+  int x = in.copy_fill(0, 0, 0, 0, 0, 6, kRed);
+  const int key = ext_header(in, x, 0, 0, 2, 0, 4, Extension::key_colour(0x00FF00));
+  for (int k = 0; k < 4; ++k) in.image().set(key + k, 0, k % 2 ? kBlue : kGreen);
+  x = depth_strip(in, 0, 1, 0, 0, 1, {kRed, kRed, kRed, kRed}, {5, 0xFFFFFF, 5, 0});
+  x = depth_strip(in, x, 1, 0, 0, 1, {kBlue, kBlue, kBlue, kBlue}, {5, 3, 6, 0});
+  x = in.copy_fill(x, 1, 0, 4, 1, 2, kGreen);
+  depth_strip(in, x, 1, 0, 4, 1, {kBlue, kBlue, kBlue}, {0, 0, 0xFFFFFF});
   const RouteReport r = f.route({&in.image()});
-  EXPECT_EQ(r.inputs[0].errors, errors(0, 2, 0, 0, 0, 0));
-  EXPECT_EQ(r.inputs[0].copy_strips, 1u);
-  std::vector<Rgb> expected(16, kBackground);
-  expected[0] = expected[1] = kRed;
-  EXPECT_EQ(row_of(f.display(0), 0), expected);
-  EXPECT_EQ(row_of(f.display(0), 1), std::vector<Rgb>(16, kBackground));
+  EXPECT_EQ(r.inputs[0].errors, StripErrorCounts{});
+  EXPECT_EQ(r.inputs[0].copy_strips, 2u);
+  EXPECT_EQ(r.inputs[0].key_strips, 1u);
+  EXPECT_EQ(r.inputs[0].depth_strips, 3u);
+  EXPECT_EQ(r.inputs[0].routed_strips, 6u);
+  std::vector<Rgb> row0(16, kBackground), row1(16, kBackground);
+  for (int k = 0; k < 6; ++k) row0[k] = k == 3 || k == 5 ? kBlue : kRed;
+  row1[0] = kRed, row1[1] = kBlue, row1[2] = kRed, row1[3] = kRed;
+  row1[4] = row1[5] = kGreen;  // row1[6]: only a far-plane DEPTH pixel
+  EXPECT_EQ(row_of(f.display(0), 0), row0);
+  EXPECT_EQ(row_of(f.display(0), 1), row1);
+  EXPECT_EQ(row_of(f.display(0), 2), std::vector<Rgb>(16, kBackground));
+  EXPECT_EQ(r.displays[0].strips, 6u);
+  EXPECT_EQ(r.displays[0].covered_pixels, 12u);   // written: row 0 columns 0..5, row 1 0..5
+  EXPECT_EQ(r.displays[0].overdraw_pixels, 10u);  // in two strips: 2..5, and 0..5 of row 1
+  EXPECT_TRUE(f.router.composites(0));
+  EXPECT_FALSE(f.router.composites(1));
+}
+
+// The next frame starts from the background at far depth: nothing of the last frame's
+// compositing is left, in pixels or depths.
+TEST(Router, CompositingStartsEveryFrameFromTheFarPlane) {
+  Fixture f;
+  FrameBuilder near(64, 1), far(64, 1);
+  depth_strip(near, 0, 0, 0, 0, 0, {kRed, kRed}, {1, 1});
+  depth_strip(far, 0, 0, 0, 0, 0, {kBlue, kGreen}, {0xFFFFFE, 0xFFFFFF});
+  f.route({&near.image()});
+  const RouteReport r = f.route({&far.image()});
+  std::vector<Rgb> row(16, kBackground);
+  row[0] = kBlue;
+  EXPECT_EQ(row_of(f.display(0), 0), row);
+  EXPECT_EQ(r.displays[0].covered_pixels, 1u);
+}
+
+// §7's error rows the router counts: a KEY to a display the mesh does not have skips its payload
+// and the scanline goes on; a DEPTH partly outside its display writes the pixels inside.
+TEST(Router, KeyAndDepthCountMissingDisplaysAndClips) {
+  Fixture f;
+  FrameBuilder in(64, 1);
+  int x = ext_header(in, 0, 0, 5, 0, 0, 3, Extension::key_colour(0));
+  in.image().fill_rect(x, 0, 3, 1, kRed);
+  x = depth_strip(in, x + 3, 0, 1, 6, 0, {kRed, kGreen, kBlue, kBlue}, {1, 2, 3, 4});
+  in.copy_fill(x, 0, 1, 0, 0, 2, kBlue);
+  const RouteReport r = f.route({&in.image()});
+  EXPECT_EQ(r.inputs[0].errors, errors(0, 0, 0, 0, 1, 1));
+  std::vector<Rgb> row(8, kBackground);
+  row[0] = row[1] = kBlue;
+  row[6] = kRed;
+  row[7] = kGreen;
+  EXPECT_EQ(row_of(f.display(1), 0), row);
+  EXPECT_FALSE(f.router.composites(0));
+  EXPECT_TRUE(f.router.composites(1));
+}
+
+// Inputs delivering at different refreshes composite as in bus order: of equal depths the lower
+// input stays though written last, a higher input's COPY still covers a lower one's DEPTH, and a
+// lower input's COPY shows through a higher input's transparent KEY pixels only.
+TEST(Router, CompositingAcrossRefreshesIsInBusOrder) {
+  Fixture f;
+  FrameBuilder low(64, 2), high(64, 2);
+  depth_strip(low, 0, 0, 0, 0, 0, {kRed, kRed, kRed}, {7, 7, 7});
+  int x = depth_strip(high, 0, 0, 0, 0, 0, {kBlue, kBlue}, {7, 6});
+  high.copy_fill(x, 0, 0, 2, 0, 1, kGreen);
+  low.copy_fill(0, 1, 0, 0, 1, 4, kRed);
+  const int key = ext_header(high, 0, 1, 0, 0, 1, 4, Extension::key_colour(0x0000FF));
+  for (int k = 0; k < 4; ++k) high.image().set(key + k, 1, k < 2 ? kBlue : kGreen);
+  const std::vector<InputFrame> frames{InputFrame::of(low.image()), InputFrame::of(high.image())};
+  f.router.scan(frames);
+  const std::vector<std::uint8_t> second{0, 1}, first{1, 0};
+  f.router.write(second);
+  f.router.write(first);
+  std::vector<DisplayFrameStats> stats;
+  const std::vector<int> displays{0};
+  f.router.finish(displays, stats);
+  std::vector<Rgb> row0(16, kBackground), row1(16, kBackground);
+  row0[0] = kRed, row0[1] = kBlue, row0[2] = kGreen;
+  row1[0] = row1[1] = kRed, row1[2] = row1[3] = kGreen;
+  EXPECT_EQ(row_of(f.display(0), 0), row0);
+  EXPECT_EQ(row_of(f.display(0), 1), row1);
+}
+
+// A scanline that repeats the last one's headers but not its extension word is parsed: the
+// KEY below has another key colour.
+TEST(Router, AScanlineRepeatsOnlyWithTheSameExtensionWords) {
+  Fixture f;
+  FrameBuilder in(64, 2);
+  for (int y = 0; y < 2; ++y) {
+    in.copy_fill(0, y, 0, 0, y, 4, kRed);
+    const int key =
+        ext_header(in, 6, y, 0, 0, y, 4, Extension::key_colour(y == 0 ? 0x00FF00 : 0x0000FF));
+    for (int k = 0; k < 4; ++k) in.image().set(key + k, y, k % 2 ? kBlue : kGreen);
+  }
+  f.route({&in.image()});
+  EXPECT_EQ(row_of(f.display(0), 0)[0], kRed);
+  EXPECT_EQ(row_of(f.display(0), 0)[1], kBlue);
+  EXPECT_EQ(row_of(f.display(0), 1)[0], kGreen);
+  EXPECT_EQ(row_of(f.display(0), 1)[1], kRed);
+}
+
+// A predicted frame holds the extension words too: a KEY whose key colour changed under the same
+// header is found, the frame parsed, and composited with the new key.
+TEST(Router, APredictionHoldsTheExtensionWordsToo) {
+  Fixture f;
+  FrameBuilder a(64, 1), b(64, 1);
+  for (FrameBuilder* in : {&a, &b}) {
+    const int x = in->copy_fill(0, 0, 0, 0, 0, 4, kRed);
+    const int key =
+        ext_header(*in, x, 0, 0, 0, 0, 4, Extension::key_colour(in == &a ? 0x00FF00 : 0x0000FF));
+    for (int k = 0; k < 4; ++k) in->image().set(key + k, 0, k % 2 ? kBlue : kGreen);
+  }
+  f.route({&a.image()});
+  f.route({&b.image()});
+  EXPECT_EQ(f.router.predictions().predicted, 1u);
+  EXPECT_EQ(f.router.predictions().mispredicted, 1u);
+  std::vector<Rgb> row(16, kBackground);
+  row[0] = row[2] = kGreen;
+  row[1] = row[3] = kRed;
+  EXPECT_EQ(row_of(f.display(0), 0), row);
 }
 
 // Row 3: COPY or SKIP of width 0: rest of scanline dropped, counted.

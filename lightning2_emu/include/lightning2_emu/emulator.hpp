@@ -32,7 +32,8 @@ struct EmulatorConfig {
 struct InputRunStats {
   int input = 0;
   std::array<std::uint64_t, 6> frames{};  // indexed by FrameKind
-  std::uint64_t copy_strips = 0, skip_strips = 0, routed_strips = 0;
+  std::uint64_t copy_strips = 0, key_strips = 0, depth_strips = 0, skip_strips = 0,
+                routed_strips = 0;
   StripErrorCounts errors;  // over every frame seen, routed or not
   std::uint64_t count(FrameKind k) const { return frames[static_cast<int>(k)]; }
 };

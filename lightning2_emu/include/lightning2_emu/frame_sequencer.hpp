@@ -8,7 +8,8 @@
 // for, router.hpp) can ask again before it commits.
 //
 // Decisions the spec leaves open, made here:
-//  - An input "feeds" a group when its frame has a COPY strip that reaches a display of it.
+//  - An input "feeds" a group when its frame has a COPY, KEY or DEPTH strip that reaches a
+//    display of it.
 //  - A frame with the accepted parity is a repeat (the host is still waiting for READY, or has
 //    not swapped since): it is not routed again and holds up every group it feeds that has not
 //    received its new frame.
@@ -35,10 +36,10 @@ const char* to_string(FrameKind kind);
 // What the sequencer needs to know about one input frame.
 struct FrameObservation {
   bool present = false;
-  bool idle = true;   // no COPY or SKIP header
-  bool torn = false;  // COPY/SKIP headers of both parities
+  bool idle = true;   // no COPY, KEY, DEPTH or SKIP header
+  bool torn = false;  // headers of both parities
   int parity = 0;
-  std::uint64_t groups_fed = 0;  // bit g: a COPY strip reached a display of group g
+  std::uint64_t groups_fed = 0;  // bit g: a COPY, KEY or DEPTH strip reached a display of group g
 };
 
 class FrameSequencer {

@@ -60,6 +60,8 @@ class Router {
   const DisplayBuffers& display(int index) const { return displays_[index]; }
   int index_of_display(int id) const;  // -1 when the mesh has no display `id`
   Rgb background() const { return background_; }
+  // Whether display `index` has a compositing plane: it got KEY or DEPTH strips (spec §7).
+  bool composites(int index) const;
 
   // Parses, or predicts (see above), frames[i] as input i (a frame that is not present()
   // counts as no signal). Throws MeshError before parsing anything when there are more frames
@@ -114,6 +116,9 @@ class Router {
   // of this frame wrote: then its headers can be checked in the copy (write()).
   bool predictions_clear_of_earlier(std::span<const std::uint8_t> route_input) const;
   DisplayFrameStats finish_band(int display, int band, router_detail::WorkerScratch& scratch);
+  // Gives every display the scan found KEY or DEPTH strips for its compositing plane, once.
+  void add_planes();
+  void composite_band(int task, std::span<const std::uint8_t> route_input);
 
   Mesh mesh_;
   WorkerPool& pool_;
@@ -130,6 +135,7 @@ class Router {
   std::vector<std::uint8_t> mispredicted_;  // by input
   bool predict_ = true;
   PredictionCounts predictions_;
+  std::uint64_t planes_ = 0;                           // bit d: display d has a compositing plane
   std::vector<router_detail::WorkerScratch> scratch_;  // one per worker
 };
 
