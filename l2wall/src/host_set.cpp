@@ -105,7 +105,7 @@ void HostSet::open_links(milliseconds timeout, const std::function<void()>& chec
     for (Host& h : hosts_) {
       if (!h.reader) {
         try {
-          h.reader.emplace(DviLinkReader::open(h.link_name));
+          h.reader = std::make_unique<DviLinkReader>(DviLinkReader::open(h.link_name));
         } catch (const DviLinkError&) {
           // not created yet
         }

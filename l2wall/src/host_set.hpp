@@ -30,8 +30,8 @@ struct Host {
   std::string link_name;
   std::string report_path;
   std::unique_ptr<PtyPair> pty;
-  std::unique_ptr<BackChannel> channel;
-  std::optional<DviLinkReader> reader;
+  std::unique_ptr<ReadyChannel> channel;  // the serial line over the pty
+  std::unique_ptr<DviReceiver> reader;    // shared memory on one machine
   std::optional<ChildProcess> process;
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far

@@ -1,7 +1,7 @@
-// The live run's orchestration: which parts run for --path, the refresh loop of the DVI path,
-// the swap loop of the vizserver path, what happens on each swap (latency, compare, keep), and
-// naming the cause when a process fails. The parts: host_set (pipeservers), dvi_side (the
-// emulated Lightning-2), viz_side (the compositing server process), run_pictures, run_report.
+// The live run's orchestration: which display paths run for --path, the loop of the lead path's
+// swaps, what happens on each swap (latency, compare, keep), and naming the cause when a process
+// fails. The parts: host_set (pipeservers), the display paths behind display_path.hpp (dvi_path:
+// the emulated Lightning-2; viz_path: the compositing server process), run_pictures, run_report.
 #include "live_run.hpp"
 
 #include <fmt/format.h>
@@ -16,8 +16,8 @@
 #include <thread>
 #include <vector>
 
-#include "dvi_link/refresh_clock.hpp"
-#include "dvi_side.hpp"
+#include "display_path.hpp"
+#include "dvi_path.hpp"
 #include "host_set.hpp"
 #include "image/folders.hpp"
 #include "live_show.hpp"
@@ -29,7 +29,7 @@
 #include "stop_signal.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
-#include "viz_side.hpp"
+#include "viz_path.hpp"
 
 namespace l2 {
 namespace {
@@ -55,20 +55,15 @@ class LiveRun {
     make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
-    if (o_.path != "vizserver") dvi_.emplace(wall_, o_.threads, layout_.servers.size());
-    if (o_.path != "dvi") viz_ = std::make_unique<VizSide>(viz_launch());
+    make_paths();
     hosts_.start(host_launch(), layout_);
-    if (dvi_) {
-      hosts_.open_links(milliseconds(o_.start_timeout_ms), [this] { check_processes(); });
-      dvi_loop();
-    } else {
-      viz_loop();
-    }
+    for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
+    run_frames();
     if (shown_ < o_.frames) {
       end_at_quit();  // only --show ends the loop early
     } else {
       hosts_.finish(milliseconds(10000));
-      if (viz_) viz_->finish(milliseconds(5000));
+      for (auto& p : paths_) p->finish();
     }
     write_report();
     return latency_ok_ ? 0 : 1;
@@ -81,11 +76,14 @@ class LiveRun {
   bool save_displays_after_fault() {
     try {
       const auto dir = std::filesystem::path(o_.out) / "fault";
-      if (dvi_) write_display_pictures(dir, wall_, dvi_pictures());
-      if (viz_ && viz_->last()) {
-        write_display_pictures(dir, wall_, viz_pictures(viz_->last()), dvi_ ? "-vizserver" : "");
+      bool saved = false;
+      for (std::size_t i = 0; i < paths_.size(); ++i) {
+        if (const auto pictures = paths_[i]->shown()) {
+          write_display_pictures(dir, wall_, *pictures, picture_suffix(i));
+          saved = true;
+        }
       }
-      return dvi_ || (viz_ && viz_->last());
+      return saved;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "l2wall: could not save the displays: %s\n", e.what());
       return false;
@@ -96,13 +94,23 @@ class LiveRun {
   // asked first, so their grace periods overlap.
   void shut_down() {
     hosts_.request_stop();
-    if (viz_) viz_->shut_down();
+    for (auto& p : paths_) p->shut_down();
     hosts_.shut_down();
   }
 
  private:
   void check_options() const {
     if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
+  }
+
+  // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
+  // the compositing server, whose frames are taken (and compared) as the lead swaps.
+  void make_paths() {
+    if (o_.path != "vizserver") {
+      paths_.push_back(std::make_unique<DviPath>(wall_, o_.threads, layout_.servers.size(),
+                                                 o_.refresh_hz, o_.frames, o_.drop_ready));
+    }
+    if (o_.path != "dvi") paths_.push_back(std::make_unique<VizPath>(viz_launch()));
   }
 
   HostLaunch host_launch() const {
@@ -114,11 +122,8 @@ class LiveRun {
     l.out = o_.out;
     l.frames = o_.frames;
     l.ready_timeout_ms = o_.ready_timeout_ms;
-    l.dvi = dvi_.has_value();
-    if (viz_) {
-      l.viz_address = viz_->address();
-      l.env.push_back(viz_->token_variable());
-    }
+    l.dvi = false;  // unless a path links the hosts
+    for (const auto& p : paths_) p->add_host_args(l);
     if (show_) l.extra_args = LiveShow::host_args();
     return l;
   }
@@ -136,118 +141,79 @@ class LiveRun {
     return l;
   }
 
-  DisplayPictures dvi_pictures() const {
-    return [this](int id) -> const RgbImage& { return dvi_->shown(id); };
-  }
-  static DisplayPictures viz_pictures(const viz::FramePtr& f) {
-    return [f](int id) -> const RgbImage& { return f->displays.at(static_cast<std::size_t>(id)); };
+  // The lead's pictures are named display-<i>.png, the other path's display-<i>-<label>.png.
+  std::string picture_suffix(std::size_t path) const {
+    return path == 0 ? std::string() : "-" + paths_[path]->label();
   }
 
-  // --- the DVI path: this process is the Lightning-2 -------------------------------------
+  // --- the frames: the lead path's swaps ---------------------------------------------------
 
-  void dvi_loop() {
-    RefreshClock clock(o_.refresh_hz);
-    bool swap_due = false;
+  void run_frames() {
+    DisplayPath& lead = *paths_.front();
+    totals_.latency_measured = lead.refreshed();
     totals_.start = RunClock::now();
     last_swap_ = totals_.start;
     while (shown_ < o_.frames) {
       if (show_ && !keep_showing()) break;
-      if (o_.refresh_hz > 0) clock.wait_next();
-      check_processes();
-      const bool fresh = dvi_->take_in(hosts_);
-      hosts_.serve_channels();
-      // As fast as possible still means "when there is something to do": re-reading unchanged
-      // links would only take CPU from the hosts.
-      if (o_.refresh_hz == 0 && !fresh && !swap_due) {
-        check_stall();
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-        continue;
-      }
-      const Emulator::Tick& tick = dvi_->refresh(hosts_, records_);
-      swap_due = !tick.completed_groups.empty();
-      // READY at once, in the refresh the frame completed (spec §6.4): a host with its next
-      // frame rendered swaps it in now, and it is taken in at the next refresh.
-      totals_.dropped_readies +=
-          static_cast<std::uint64_t>(dvi_->send_readies(tick, hosts_, o_.drop_ready));
-      if (!tick.swapped_groups.empty()) on_swap(tick);
+      if (const auto swap = lead.step(shown_, hosts_, records_, watch_)) on_swap(*swap);
       check_stall();
     }
   }
 
-  void on_swap(const Emulator::Tick& tick) {
-    const auto now = RunClock::now();
-    const int lowest = dvi_->lowest_frame_shown(hosts_);
-    dvi_shown_ = std::min(lowest, o_.frames - 1);
-    last_swap_ = now;  // the displays swapped: the compositing server's frame is waited from here
-    while (shown_ <= lowest && shown_ < o_.frames) {
+  void on_swap(const PathSwap& swap) {
+    const auto now = swap.time;
+    // Without refreshes the clock starts once every host has delivered its first frame, as
+    // it does after the DVI links carry their first frames.
+    if (shown_ == 0 && !swap.refresh) totals_.start = now;
+    last_swap_ = now;  // the displays swapped: the other path's frame is waited from here
+    while (shown_ <= swap.lowest && shown_ < o_.frames) {
       FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
       r.shown = true;
-      r.swap_refresh = tick.index;
       r.swap_time = now;
       r.writing_ms = writing_ms_;
       r.paused_ms = paused_ms_;
-      const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
-      if (latency != 1) {
-        latency_ok_ = false;
-        std::fprintf(stderr, "\nl2wall: frame %d: latency %ld refreshes, expected 1\n", shown_,
-                     latency);
+      if (swap.refresh) {
+        r.swap_refresh = *swap.refresh;
+        check_latency(r);
+      } else {
+        r.in_time = now;
       }
-      // Both paths: the compositing server's frame too, every one, compared or not — it waits
-      // for us to take its frames before it swaps more.
-      if (viz_) {
-        const viz::FramePtr f = viz_frame(shown_);
-        if (o_.compare) {
-          totals_.compared_displays += static_cast<std::uint64_t>(
-              compare_paths(shown_, wall_, dvi_pictures(), viz_pictures(f),
-                            shown_ == o_.inject_mismatch, o_.out));
-        }
-      }
+      take_from_other_paths(shown_);
       if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
-      if (shown_ == o_.noise_after) totals_.noise_bytes += hosts_.inject_noise();
+      if (shown_ == o_.noise_after) {
+        for (auto& p : paths_) totals_.noise_bytes += p->inject_noise(hosts_);
+      }
       ++shown_;
     }
     // The stall clock restarts once this swap's work is done: the time spent comparing and
-    // keeping pictures, or waiting for the compositing server's frame, is not a host's.
+    // keeping pictures, or waiting for the other path's frame, is not a host's.
     last_swap_ = RunClock::now();
     if (show_ && shown_ > 0) {
       const FrameRecord& r = records_[static_cast<std::size_t>(shown_ - 1)];
       show_->show(shown_ - 1, static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh),
-                  dvi_pictures());
+                  *paths_.front()->shown());
     }
     progress(now);
   }
 
-  // --- the vizserver path alone: the compositing server's swaps are the display frames ----
-
-  void viz_loop() {
-    totals_.start = RunClock::now();
-    totals_.latency_measured = false;
-    last_swap_ = totals_.start;
-    while (shown_ < o_.frames) {
-      viz_frame(shown_);
-      const auto now = RunClock::now();
-      // Like the DVI path, the clock starts once every host has delivered its first frame.
-      if (shown_ == 0) totals_.start = now;
-      FrameRecord& r = records_[static_cast<std::size_t>(shown_)];
-      r.shown = true;
-      r.swap_time = now;
-      r.in_time = now;
-      r.writing_ms = writing_ms_;
-      r.paused_ms = paused_ms_;
-      if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
-      ++shown_;
-      last_swap_ = RunClock::now();  // after keeping the frame: that time is not a host's
-      progress(now);
+  void check_latency(const FrameRecord& r) {
+    const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
+    if (latency != 1) {
+      latency_ok_ = false;
+      std::fprintf(stderr, "\nl2wall: frame %d: latency %ld refreshes, expected 1\n", shown_,
+                   latency);
     }
   }
 
-  // The compositing server's frame `frame`; while waiting, every process is still watched.
-  viz::FramePtr viz_frame(int frame) {
-    for (;;) {
-      if (viz::FramePtr f = viz_->frame(frame, milliseconds(20))) return f;
-      check_processes();
-      check_stall();
-      hosts_.serve_channels();
+  // Both paths: the other path's frame too, every one, compared or not — the compositing
+  // server waits for us to take its frames before it swaps more.
+  void take_from_other_paths(int frame) {
+    for (std::size_t i = 1; i < paths_.size(); ++i) {
+      const DisplayPictures theirs = paths_[i]->frame_pictures(frame, watch_);
+      if (!o_.compare) continue;
+      totals_.compared_displays += static_cast<std::uint64_t>(
+          compare_paths(frame, wall_, paths_.front()->frame_pictures(frame, watch_), theirs,
+                        frame == o_.inject_mismatch, o_.out));
     }
   }
 
@@ -265,19 +231,20 @@ class LiveRun {
                              "no summary.txt or report.csv of this run");
       }
     };
-    if (dvi_) write(dvi_pictures(), "");
-    if (viz_) write(viz_pictures(viz_frame(frame)), dvi_ ? "-vizserver" : "");
+    for (std::size_t i = 0; i < paths_.size(); ++i)
+      write(paths_[i]->frame_pictures(frame, watch_), picture_suffix(i));
   }
 
   // --- faults ----------------------------------------------------------------------------
 
-  // A stop signal, a process that ended early, or a compositing server whose stream broke:
-  // a RunFault naming the cause.
+  // A stop signal, a process that ended early, or a path whose process or stream broke: a
+  // RunFault naming the cause.
   void check_processes() {
     check_stop_signal(shown_, displays_kept());
     Host* ended = hosts_.poll_ended();
-    const bool viz_down = viz_ && viz_->down();
-    if (ended || viz_down) throw RunFault(blame());
+    const bool path_down =
+        std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
+    if (ended || path_down) throw RunFault(blame());
   }
 
   // When one process fails the others lose their connection to it and end too; name the cause.
@@ -286,11 +253,12 @@ class LiveRun {
   // pipeserver disconnected) is an effect, its words name the host. One still running that a
   // pipeserver gave up on hangs: it is named, not the pipeserver.
   std::string blame() {
-    if (viz_) viz_->settle(milliseconds(300));
+    for (auto& p : paths_) p->settle(milliseconds(300));
     if (Host* killed = hosts_.killed_by_signal())
       return hosts_.describe_end(*killed, displays_kept());
-    if (viz_ && viz_->down() && !viz_->said_why())
-      return viz_->describe_down(shown_, displays_kept());
+    for (auto& p : paths_) {
+      if (auto why = p->failure_as_cause(shown_, displays_kept())) return *why;
+    }
     if (Host* ended = hosts_.poll_ended()) {
       // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
       // there, never delivered the frame everyone waits for: that one stopped answering.
@@ -303,16 +271,15 @@ class LiveRun {
               ended->server, waiting_for(*ended), ended->exit->describe(), displays_kept());
         }
       }
-      if (lost_a_running_server(*ended)) {
-        return fmt::format(
-            "the {} stopped answering: pipeserver {} gave up waiting for it at "
-            "frame {}; {}",
-            viz_->name(), ended->server, shown_, displays_kept());
+      for (auto& p : paths_) {
+        if (auto why = p->hang_behind(*ended, shown_, displays_kept())) return *why;
       }
       return hosts_.describe_end(*ended, displays_kept());
     }
-    return viz_ ? viz_->describe_down(shown_, displays_kept())
-                : std::string("a process of the run ended");
+    for (auto& p : paths_) {
+      if (auto why = p->failure(shown_, displays_kept())) return *why;
+    }
+    return "a process of the run ended";
   }
 
   static bool gave_up_waiting(const Host& h) {
@@ -323,13 +290,16 @@ class LiveRun {
   // What a host that gave up was waiting for, by its exit code.
   std::string waiting_for(const Host& h) const {
     if (h.exit->code == kExitNoReady) return "waiting for READY";
-    return "waiting for SWAPPED from the " + (viz_ ? viz_->name() : std::string("vizserver"));
+    const std::string server = server_process();
+    return "waiting for SWAPPED from the " + (server.empty() ? std::string("vizserver") : server);
   }
 
-  // A host that gave up on a compositing server which is still running: the server hangs (a
-  // host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout).
-  bool lost_a_running_server(const Host& h) const {
-    return viz_ && !viz_->down() && h.exit && h.exit->code == kExitLostCompositingServer;
+  // How messages name the process a path runs (the compositing server), or empty.
+  std::string server_process() const {
+    for (const auto& p : paths_) {
+      if (std::string name = p->process_name(); !name.empty()) return name;
+    }
+    return {};
   }
 
   void check_stall() {
@@ -347,10 +317,11 @@ class LiveRun {
     const bool some_delivered = std::any_of(
         all.begin(), all.end(), [&](const Host& h) { return hosts_.delivered(h) > shown_; });
     if (const Host* hung = some_delivered ? hosts_.hung_host(shown_) : nullptr) {
-      note = fmt::format("{}; the other pipeservers are {}", HostSet::stopped_note(*hung),
-                         dvi_ ? "waiting for READY" : "waiting for SWAPPED");
+      note = fmt::format("{}; the other pipeservers are waiting for {}",
+                         HostSet::stopped_note(*hung), paths_.front()->hosts_wait_for());
     }
-    if (culprits.empty() && viz_) culprits = "the " + viz_->name();
+    if (const std::string server = server_process(); culprits.empty() && !server.empty())
+      culprits = "the " + server;
     throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
                                limit_ms, culprits.empty() ? "no host" : culprits, shown_, note,
                                displays_kept()));
@@ -359,14 +330,19 @@ class LiveRun {
   // What the displays show now, for a fault message. With both paths they can differ by a
   // frame: the emulator swapped frame K while the run waited for the compositing server's K.
   std::string displays_kept() const {
-    const int via_viz = viz_ && viz_->last() ? static_cast<int>(viz_->last()->frame) : -1;
-    if (!dvi_ || !viz_ || via_viz == dvi_shown_) {
-      const int kept = dvi_ ? dvi_shown_ : via_viz;
+    if (paths_.empty()) return "no frame reached the displays";
+    const int kept = paths_.front()->frame_shown();
+    const bool same = std::all_of(paths_.begin(), paths_.end(),
+                                  [&](const auto& p) { return p->frame_shown() == kept; });
+    if (same) {
       if (kept < 0) return "no frame reached the displays";  // not "frame -1"
       return fmt::format("the displays keep frame {}", kept);
     }
-    return fmt::format("the displays keep frame {} (DVI path) and frame {} (vizserver path)",
-                       dvi_shown_, via_viz);
+    std::string each;
+    for (const auto& p : paths_)
+      each +=
+          fmt::format("{}frame {} ({})", each.empty() ? "" : " and ", p->frame_shown(), p->name());
+    return "the displays keep " + each;
   }
 
   // --- --show ------------------------------------------------------------------------------
@@ -405,11 +381,7 @@ class LiveRun {
   }
 
   void write_report() {
-    totals_.refreshes = dvi_ ? dvi_->refreshes() : 0;
-    if (dvi_) {
-      totals_.frames_predicted = dvi_->emulator_report().frames_predicted;
-      totals_.predictions_missed = dvi_->emulator_report().predictions_missed;
-    }
+    for (const auto& p : paths_) p->add_totals(totals_);
     std::vector<std::string> host_logs;
     for (const Host& h : hosts_.hosts()) host_logs.push_back(h.report_path);
     const std::string summary = write_run_report(o_, wall_, host_logs, records_, totals_,
@@ -422,15 +394,19 @@ class LiveRun {
   KeepSet keep_;
   Wall wall_;
   TileLayout layout_;
-  std::unique_ptr<LiveShow> show_;  // --show: the displays on screen, keys
-  std::optional<DviSide> dvi_;      // --path dvi or both
-  std::unique_ptr<VizSide> viz_;    // --path vizserver or both
-  HostSet hosts_;                   // after viz_: destroyed first, so hosts end before it
+  std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
+  std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
+  HostSet hosts_;  // after paths_: destroyed first, so hosts end before the compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
+  const RunWatch watch_{[this] { check_processes(); },
+                        [this] {
+                          check_processes();
+                          check_stall();
+                          hosts_.serve_channels();
+                        }};
   bool progress_shown_ = false;
-  int shown_ = 0;       // frames 0 .. shown_-1 have reached every display (and were checked)
-  int dvi_shown_ = -1;  // the frame the emulator's displays show
+  int shown_ = 0;  // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
   double writing_ms_ = 0;  // spent writing kept pictures during the run
   double paused_ms_ = 0;   // spent paused by the --show keys

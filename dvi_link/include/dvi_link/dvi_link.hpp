@@ -58,8 +58,18 @@ class Mapping {
 };
 }  // namespace detail
 
+// The DVI link behind one interface, sender side: the pipeserver draws its scanned-out frame
+// into the back frame and hands it over. Shared memory (DviLinkWriter) is one implementation.
+class DviSender {
+ public:
+  virtual ~DviSender() = default;
+  virtual std::span<std::uint8_t> back_frame() = 0;
+  // Hands the back frame over; returns its sequence number (1, 2, ...).
+  virtual std::uint64_t publish() = 0;
+};
+
 // Pipeserver side. Creates the segment and unlinks it again on destruction.
-class DviLinkWriter {
+class DviLinkWriter final : public DviSender {
  public:
   // Creates segment `name` for width x height frames, all slots black. If a segment of that
   // name exists and the process that created it is dead, it is replaced; if that process is
@@ -76,11 +86,11 @@ class DviLinkWriter {
 
   // The frame being drawn: height rows of width * 3 bytes, row 0 on top. It keeps the contents
   // of an older frame (not the one just published), so draw every pixel.
-  std::span<std::uint8_t> back_frame();
+  std::span<std::uint8_t> back_frame() override;
   std::span<std::uint8_t> back_row(int y);
   // Hands the back frame to the reader and returns its sequence number (1, 2, ...). Throws
   // DviLinkError when the slot handed back does not exist (the header was written over).
-  std::uint64_t publish();
+  std::uint64_t publish() override;
 
   const std::string& name() const { return name_; }
   int width() const { return width_; }
@@ -116,8 +126,17 @@ struct FrameView {
   }
 };
 
+// Receiver side, one input: the latest frame it carries. Shared memory (DviLinkReader) is one
+// implementation.
+class DviReceiver {
+ public:
+  virtual ~DviReceiver() = default;
+  // The newest frame handed over; nullopt before the first. Again without a new one: the same.
+  virtual std::optional<FrameView> latest() = 0;
+};
+
 // Emulator side. One reader per segment at a time.
-class DviLinkReader {
+class DviLinkReader final : public DviReceiver {
  public:
   // Opens an existing segment and checks its header and size. Errors: DviLinkError
   // "DVI link <name>: ..." (no such segment, not a DVI link, version, size, already has a
@@ -133,7 +152,7 @@ class DviLinkReader {
   // The newest published frame; nullopt before the first publish(). Calling it again without a
   // new publish returns the same frame (same sequence number). Throws DviLinkError when the
   // header names a slot that does not exist (written over by another process).
-  std::optional<FrameView> latest();
+  std::optional<FrameView> latest() override;
   // Whether the process that created the segment still runs.
   bool writer_alive() const;
 

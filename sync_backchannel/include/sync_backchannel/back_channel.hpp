@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "sync_backchannel/ready_channel.hpp"
 #include "sync_backchannel/ready_protocol.hpp"
 #include "sync_backchannel/serial_port.hpp"
 
@@ -47,7 +48,8 @@ struct WaitResult {
   bool ok() const { return status == WaitStatus::Ok; }
 };
 
-class BackChannel {
+// The serial-line implementation of ReadyChannel.
+class BackChannel final : public ReadyChannel {
  public:
   explicit BackChannel(SerialPort& port) : port_(port) {}
 
@@ -55,23 +57,23 @@ class BackChannel {
   // when the line is full because the host stopped reading, the READY (or its tail) is dropped
   // and counted, and false is returned; the host recovers through SYNC?. A stuck host must not
   // hold up the swap of every display.
-  bool send_ready(std::uint64_t frame);
+  bool send_ready(std::uint64_t frame) override;
 
   // Emulator end: reads for `duration`, answering every SYNC? with the last READY sent.
   // Returns how many requests were answered.
-  int serve(std::chrono::milliseconds duration);
+  int serve(std::chrono::milliseconds duration) override;
 
   // Host end: waits for READY `expected` (modulo 10^6). Each wait lasts `timeout`; when one
   // runs out the host sends "SYNC? <expected>" and waits again, up to `retries` times. A READY
   // newer than `expected` is accepted (the emulator is past our frame); older ones are ignored.
   WaitResult wait_ready(std::uint64_t expected,
                         std::chrono::milliseconds timeout = kDefaultReadyTimeout,
-                        int retries = kDefaultReadyRetries);
+                        int retries = kDefaultReadyRetries) override;
 
   // Host end: asks for the last READY without waiting for it.
-  void send_sync_request(std::uint64_t expected);
+  void send_sync_request(std::uint64_t expected) override;
 
-  const BackChannelCounts& counts() const;
+  const BackChannelCounts& counts() const override;
   const std::string& name() const { return port_.name(); }
 
  private:

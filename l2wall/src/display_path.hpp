@@ -1,0 +1,96 @@
+// A display path of the live run: how the pipeservers' frames become what the displays show.
+// Two implementations sit beside each other: the DVI path (dvi_path.hpp: this process is the
+// emulated Lightning-2) and the visualization-server path (viz_path.hpp: a compositing server
+// process). The live run drives one path as the lead, whose swaps are the run's frames, and
+// with --path both a second one beside it, whose frames it takes and compares; it talks to
+// this interface only.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host_set.hpp"
+#include "run_pictures.hpp"
+#include "run_report.hpp"
+#include "run_time.hpp"
+
+namespace l2 {
+
+// What the live run checks while a path works; each throws RunFault to end the run.
+struct RunWatch {
+  std::function<void()> processes;  // every process of the run still running well
+  std::function<void()> waiting;    // while waiting: the processes, the stall clock, the
+                                    // back-channels served
+};
+
+// A swap of the lead path: frames up to `lowest` are on every display.
+struct PathSwap {
+  int lowest = 0;
+  std::optional<std::uint64_t> refresh;  // the refresh it swapped in, on a refreshed path
+  RunClock::time_point time{};
+};
+
+class DisplayPath {
+ public:
+  virtual ~DisplayPath() = default;
+
+  // "vizserver": names the pictures of a path that is not the lead ("display-0-vizserver.png").
+  virtual std::string label() const = 0;
+  // "DVI path": how messages name it.
+  virtual std::string name() const = 0;
+  // What the hosts take part in on this path (a link and a back-channel, a server address).
+  virtual void add_host_args(HostLaunch& launch) const = 0;
+  // Before the first frame: waits until the path can take in every host (up to `timeout`).
+  virtual void open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) = 0;
+
+  // --- as the lead: its swaps pace the run ---------------------------------------------------
+  // Whether it counts refreshes (and so measures the one-frame latency).
+  virtual bool refreshed() const = 0;
+  // One step towards frame `next` on the displays: the swap it made, if any. `records` get
+  // each frame's input refresh and route time.
+  virtual std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
+                                       const RunWatch& watch) = 0;
+  // What the pipeservers that delivered wait for from this path ("READY", "SWAPPED").
+  virtual std::string hosts_wait_for() const = 0;
+  // Fault injection after a swap: line noise to the hosts; the bytes written.
+  virtual std::uint64_t inject_noise(HostSet& hosts) = 0;
+
+  // --- what the displays show ------------------------------------------------------------
+  // The displays of frame `frame`, waiting (watched) until this path shows it.
+  virtual DisplayPictures frame_pictures(int frame, const RunWatch& watch) = 0;
+  // What the displays show now, if anything reached them.
+  virtual std::optional<DisplayPictures> shown() const = 0;
+  // The frame the displays show; -1 before the first.
+  virtual int frame_shown() const = 0;
+
+  // --- faults ------------------------------------------------------------------------------
+  // The path's own process ended or its stream broke.
+  virtual bool down() = 0;
+  // Waits up to `grace` for a path that went down to be reaped, so a fault names how it ended.
+  virtual void settle(std::chrono::milliseconds grace) = 0;
+  // The path's failure when it is the cause (it went down without saying why); `kept`: what
+  // the displays show.
+  virtual std::optional<std::string> failure_as_cause(int shown, const std::string& kept) = 0;
+  // The path's failure as the last explanation left.
+  virtual std::optional<std::string> failure(int shown, const std::string& kept) = 0;
+  // A host that gave up on this path while it still runs: the path hangs, named so.
+  virtual std::optional<std::string> hang_behind(const Host& h, int shown,
+                                                 const std::string& kept) = 0;
+  // How messages name the path's own process ("compositing server (vizserver pid 4242)"), or
+  // empty when it has none.
+  virtual std::string process_name() const = 0;
+
+  // --- ending ------------------------------------------------------------------------------
+  // After the last frame: its process must end by itself, successfully.
+  virtual void finish() = 0;
+  // Ends its process, if any, and reaps it.
+  virtual void shut_down() = 0;
+  // Its counts for the report.
+  virtual void add_totals(RunTotals& totals) const = 0;
+};
+
+}  // namespace l2

@@ -1,0 +1,49 @@
+#include "dvi_path.hpp"
+
+#include <algorithm>
+#include <thread>
+
+namespace l2 {
+
+DviPath::DviPath(const Wall& wall, int threads, std::size_t hosts, double refresh_hz, int frames,
+                 int drop_ready)
+    : side_(wall, threads, hosts),
+      clock_(refresh_hz),
+      refresh_hz_(refresh_hz),
+      frames_(frames),
+      drop_ready_(drop_ready) {}
+
+std::optional<PathSwap> DviPath::step(int, HostSet& hosts, std::vector<FrameRecord>& records,
+                                      const RunWatch& watch) {
+  if (refresh_hz_ > 0) clock_.wait_next();
+  watch.processes();
+  const bool fresh = side_.take_in(hosts);
+  hosts.serve_channels();
+  // As fast as possible still means "when there is something to do": re-reading unchanged
+  // links would only take CPU from the hosts.
+  if (refresh_hz_ == 0 && !fresh && !swap_due_) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+    return std::nullopt;
+  }
+  const Emulator::Tick& tick = side_.refresh(hosts, records);
+  swap_due_ = !tick.completed_groups.empty();
+  // READY at once, in the refresh the frame completed (spec §6.4): a host with its next
+  // frame rendered swaps it in now, and it is taken in at the next refresh.
+  dropped_readies_ += static_cast<std::uint64_t>(side_.send_readies(tick, hosts, drop_ready_));
+  if (tick.swapped_groups.empty()) return std::nullopt;
+  PathSwap swap;
+  swap.time = RunClock::now();
+  swap.lowest = side_.lowest_frame_shown(hosts);
+  swap.refresh = tick.index;
+  shown_ = std::min(swap.lowest, frames_ - 1);
+  return swap;
+}
+
+void DviPath::add_totals(RunTotals& totals) const {
+  totals.refreshes = side_.refreshes();
+  totals.frames_predicted = side_.emulator_report().frames_predicted;
+  totals.predictions_missed = side_.emulator_report().predictions_missed;
+  totals.dropped_readies += dropped_readies_;
+}
+
+}  // namespace l2

@@ -1,0 +1,62 @@
+// The DVI path as a display path (display_path.hpp): this process is the Lightning-2 (DviSide),
+// paced by the refresh clock; it takes in every host's DVI link, refreshes, and sends READY in
+// the refresh a frame completed (spec §6.4).
+#pragma once
+
+#include "display_path.hpp"
+#include "dvi_link/refresh_clock.hpp"
+#include "dvi_side.hpp"
+
+namespace l2 {
+
+class DviPath final : public DisplayPath {
+ public:
+  DviPath(const Wall& wall, int threads, std::size_t hosts, double refresh_hz, int frames,
+          int drop_ready);
+
+  std::string label() const override { return "dvi"; }
+  std::string name() const override { return "DVI path"; }
+  void add_host_args(HostLaunch& launch) const override { launch.dvi = true; }
+  void open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) override {
+    hosts.open_links(timeout, watch.processes);
+  }
+
+  bool refreshed() const override { return true; }
+  std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
+                               const RunWatch& watch) override;
+  std::string hosts_wait_for() const override { return "READY"; }
+  std::uint64_t inject_noise(HostSet& hosts) override { return hosts.inject_noise(); }
+
+  DisplayPictures frame_pictures(int, const RunWatch&) override { return pictures(); }
+  std::optional<DisplayPictures> shown() const override { return pictures(); }
+  int frame_shown() const override { return shown_; }
+
+  bool down() override { return false; }
+  void settle(std::chrono::milliseconds) override {}
+  std::optional<std::string> failure_as_cause(int, const std::string&) override { return {}; }
+  std::optional<std::string> failure(int, const std::string&) override { return {}; }
+  std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
+    return {};
+  }
+  std::string process_name() const override { return {}; }
+
+  void finish() override {}
+  void shut_down() override {}
+  void add_totals(RunTotals& totals) const override;
+
+ private:
+  DisplayPictures pictures() const {
+    return [this](int id) -> const RgbImage& { return side_.shown(id); };
+  }
+
+  DviSide side_;
+  RefreshClock clock_;
+  double refresh_hz_;
+  int frames_;
+  int drop_ready_;
+  bool swap_due_ = false;
+  int shown_ = -1;  // the frame the emulator's displays show
+  std::uint64_t dropped_readies_ = 0;
+};
+
+}  // namespace l2

@@ -1,0 +1,54 @@
+#include "viz_path.hpp"
+
+#include <fmt/format.h>
+
+#include "pipeserver/live_exit.hpp"
+
+namespace l2 {
+
+using std::chrono::milliseconds;
+
+std::optional<PathSwap> VizPath::step(int next, HostSet&, std::vector<FrameRecord>&,
+                                      const RunWatch& watch) {
+  wait_for(next, watch);
+  PathSwap swap;
+  swap.lowest = next;
+  swap.time = RunClock::now();
+  return swap;
+}
+
+viz::FramePtr VizPath::wait_for(int frame, const RunWatch& watch) {
+  for (;;) {
+    if (viz::FramePtr f = side_->frame(frame, milliseconds(20))) return f;
+    watch.waiting();
+  }
+}
+
+std::optional<DisplayPictures> VizPath::shown() const {
+  if (!side_->last()) return std::nullopt;
+  return pictures(side_->last());
+}
+
+int VizPath::frame_shown() const {
+  return side_->last() ? static_cast<int>(side_->last()->frame) : -1;
+}
+
+std::optional<std::string> VizPath::failure_as_cause(int shown, const std::string& kept) {
+  if (side_->down() && !side_->said_why()) return side_->describe_down(shown, kept);
+  return std::nullopt;
+}
+
+// A host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout: one
+// that gave up on a server still running means the server hangs.
+std::optional<std::string> VizPath::hang_behind(const Host& h, int shown, const std::string& kept) {
+  if (side_->down() || !h.exit || h.exit->code != kExitLostCompositingServer) return std::nullopt;
+  return fmt::format(
+      "the {} stopped answering: pipeserver {} gave up waiting for it at frame {}; {}",
+      side_->name(), h.server, shown, kept);
+}
+
+void VizPath::finish() {
+  side_->finish(milliseconds(5000));
+}
+
+}  // namespace l2

@@ -1,0 +1,61 @@
+// The visualization-server path as a display path (display_path.hpp): the compositing server
+// process (VizSide) composes the hosts' tiles; its swaps are the frames of this path, and the
+// hosts wait for its SWAPPED instead of READY.
+#pragma once
+
+#include <memory>
+
+#include "display_path.hpp"
+#include "viz_side.hpp"
+
+namespace l2 {
+
+class VizPath final : public DisplayPath {
+ public:
+  explicit VizPath(const VizLaunch& launch) : side_(std::make_unique<VizSide>(launch)) {}
+
+  std::string label() const override { return "vizserver"; }
+  std::string name() const override { return "vizserver path"; }
+  void add_host_args(HostLaunch& launch) const override {
+    launch.viz_address = side_->address();
+    launch.env.push_back(side_->token_variable());
+  }
+  void open(HostSet&, std::chrono::milliseconds, const RunWatch&) override {}
+
+  bool refreshed() const override { return false; }
+  std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
+                               const RunWatch& watch) override;
+  std::string hosts_wait_for() const override { return "SWAPPED"; }
+  std::uint64_t inject_noise(HostSet&) override { return 0; }
+
+  DisplayPictures frame_pictures(int frame, const RunWatch& watch) override {
+    return pictures(wait_for(frame, watch));
+  }
+  std::optional<DisplayPictures> shown() const override;
+  int frame_shown() const override;
+
+  bool down() override { return side_->down(); }
+  void settle(std::chrono::milliseconds grace) override { side_->settle(grace); }
+  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
+  std::optional<std::string> failure(int shown, const std::string& kept) override {
+    return side_->describe_down(shown, kept);
+  }
+  std::optional<std::string> hang_behind(const Host& h, int shown,
+                                         const std::string& kept) override;
+  std::string process_name() const override { return side_->name(); }
+
+  void finish() override;
+  void shut_down() override { side_->shut_down(); }
+  void add_totals(RunTotals&) const override {}
+
+ private:
+  // The compositing server's frame `frame`; while waiting, every process is still watched.
+  viz::FramePtr wait_for(int frame, const RunWatch& watch);
+  static DisplayPictures pictures(const viz::FramePtr& f) {
+    return [f](int id) -> const RgbImage& { return f->displays.at(static_cast<std::size_t>(id)); };
+  }
+
+  std::unique_ptr<VizSide> side_;
+};
+
+}  // namespace l2
