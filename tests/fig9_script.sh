@@ -22,8 +22,10 @@ awk -F, 'NR > 1 {
   if (!ok) { print "FAIL row: " $0; bad = 1 }
   paths = paths $5 "/" $6 " "
 } END { if (paths != "dvi/90 dvi/0 vizserver/0 ") { print "FAIL paths: " paths; bad = 1 }; exit bad }' "$csv" || exit 1
-# At 90 Hz no run is faster than the refresh rate.
-awk -F, '$5 == "dvi" && $6 == 90 && $10 > 90.5 { exit 1 }' "$csv" || fail "faster than 90 Hz: $(cat "$csv")"
+# At 90 Hz the run is paced by the refresh: its frame rate is measured over a few frames, so it
+# may read a little above 90 (the first and last swap fall anywhere in their refresh), but a run
+# that ignored the rate would be several times faster, as the full-speed row is.
+awk -F, '$5 == "dvi" && $6 == 90 && $10 > 99 { exit 1 }' "$csv" || fail "faster than 90 Hz: $(cat "$csv")"
 png=$out/fig9.png
 [[ $(head -c 8 "$png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || fail "$png is no PNG"
 size=$(od -An -tu1 -j16 -N8 "$png" | awk '{ print $3 * 256 + $4 "x" $7 * 256 + $8 }')
