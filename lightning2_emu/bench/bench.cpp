@@ -286,6 +286,26 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
   return f;
 }
 
+// The router's whole frame and a memcpy of the same bytes, timed in alternation (one warm-up
+// pair first): the machine's bandwidth changes from second to second, so a ratio only means
+// something between runs made in the same moments.
+struct RouteAndCopy {
+  Samples route, copy_same;
+};
+RouteAndCopy route_against_memcpy(l2::Router& router, const Built& b, l2::WorkerPool& pool,
+                                  int repetitions) {
+  CopySameBytes memcpy_same(b, pool, false);
+  RouteAndCopy t;
+  for (int r = -1; r < repetitions; ++r) {
+    const Time route_t = timed([&] { router.route(b.views); });
+    const Time memcpy_t = timed(memcpy_same);
+    if (r < 0) continue;
+    t.route.runs.push_back(route_t);
+    t.copy_same.runs.push_back(memcpy_t);
+  }
+  return t;
+}
+
 // The mesh-size sweep: from 4 inputs and 1 display (one board) to 64 inputs and 24 displays
 // (16 x 3 boards), every display 1280x1024 cut into 128x128 tiles, each input carrying the
 // same share. If routing cost grows linearly with the pixels routed, ns per routed byte and the
@@ -310,15 +330,7 @@ void mesh_sweep(int repetitions, int workers) {
     l2::Router router(mesh, s.displays, pool);
     for (int warm = 0; warm < 3; ++warm) router.route(b.views);
     const double router_mib = heap_mib() - before_mib;
-    CopySameBytes memcpy_same(b, pool, false);
-    Samples route, copy_same;
-    for (int r = -1; r < repetitions; ++r) {
-      const Time route_t = timed([&] { router.route(b.views); });
-      const Time memcpy_t = timed(memcpy_same);
-      if (r < 0) continue;
-      route.runs.push_back(route_t);
-      copy_same.runs.push_back(memcpy_t);
-    }
+    const auto [route, copy_same] = route_against_memcpy(router, b, pool, repetitions);
     for (const auto& d : s.displays) {
       if (router.display(router.index_of_display(d.id)).back() !=
           l2::testing::pattern_image(d.id, d.width, d.height)) {
@@ -422,15 +434,7 @@ double run_depth(const DepthScenario& s, int repetitions, int workers) {
       s.displays, pool);
   for (int warm = 0; warm < 3; ++warm) router.route(b.views);
   const double router_mib = heap_mib() - before_mib;
-  CopySameBytes memcpy_same(b, pool, false);
-  Samples route, copy_same;
-  for (int r = -1; r < repetitions; ++r) {
-    const Time route_t = timed([&] { router.route(b.views); });
-    const Time memcpy_t = timed(memcpy_same);
-    if (r < 0) continue;
-    route.runs.push_back(route_t);
-    copy_same.runs.push_back(memcpy_t);
-  }
+  const auto [route, copy_same] = route_against_memcpy(router, b, pool, repetitions);
   for (std::size_t d = 0; d < s.displays.size(); ++d) {
     if (router.display(static_cast<int>(d)).back() != db.expected[d]) {
       fmt::print(stderr, "{}: display {} composited wrong\n", s.name, s.displays[d].id);
