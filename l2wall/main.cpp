@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
@@ -24,28 +25,25 @@ int main(int argc, char** argv) {
       "run",
       "render --frames frames on the wall and write the displays, a per-frame report and a "
       "summary to --out");
-  run->add_option("wall", o.wall,
-                  "wall file (TOML); default: the built-in default wall "
-                  "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
-      ->check(CLI::ExistingFile);
+  l2::add_wall_option(*run, o.wall,
+                      "default: the built-in default wall (walls/kd-2x2.toml: 4 pipeservers, "
+                      "2x2 displays)");
   run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  run->add_option("--out", o.out,
-                  "output folder: frame-<k>/display-<id>.png and wall.png for kept frames, "
-                  "report.csv (one row per frame), summary.txt, host-<i>.log, vizserver.log (the "
-                  "compositing server's lines)")
-      ->check(l2::non_empty_path())
+  l2::add_out_option(*run, o.out,
+                     "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
+                     "row per frame), summary.txt, host-<i>.log, vizserver.log (the compositing "
+                     "server's lines)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")
       ->capture_default_str();
-  run->add_option("--refresh", o.refresh_hz,
-                  "emulator input refresh rate in Hz; 0 = as fast as possible")
-      ->check(l2::rate_hz(true))
+  l2::add_refresh_option(*run, o.refresh_hz, true,
+                         "emulator input refreshes per second; 0 = as fast as possible")
       ->capture_default_str();
   run->add_option("--path", o.path,
                   "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
@@ -73,22 +71,14 @@ int main(int argc, char** argv) {
                   "to l2wall before any pipeserver starts")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  run->add_option("--threads", o.threads, "emulator routing threads (0: one per core)")
-      ->check(CLI::Range(0, 64))
-      ->capture_default_str();
-  run->add_option("--start-timeout", o.start_timeout_ms,
-                  "ms until every pipeserver must have published its first frame")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
-  run->add_option("--stall-timeout", o.stall_timeout_ms,
-                  "ms without a display swap after which the run names the hung pipeserver "
-                  "(or compositing server) and stops")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
-  run->add_option("--ready-timeout", o.ready_timeout_ms,
-                  "ms a pipeserver waits for READY before asking again with SYNC?")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
+  l2::add_threads_option(*run, o.threads);
+  l2::add_timeout_option(*run, "start-timeout", o.start_timeout_ms, false,
+                         "until every pipeserver must have published its first frame");
+  l2::add_timeout_option(*run, "stall-timeout", o.stall_timeout_ms, false,
+                         "without a display swap after which the run names the hung pipeserver "
+                         "(or compositing server) and stops");
+  l2::add_timeout_option(*run, "ready-timeout", o.ready_timeout_ms, false,
+                         "a pipeserver waits for READY before asking again with SYNC?");
   // A plain flag: CLI11 2.1 lists a negated one as "--no-progress{false}".
   run->add_flag_callback(
       "--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");

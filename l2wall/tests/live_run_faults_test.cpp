@@ -27,9 +27,10 @@ using namespace testing_support;
 // How soon after a fault the run must have ended, named it and cleaned up.
 constexpr auto kFaultNoticeBound = 10s;
 
-// What `tilelayout WALL` prints on stdout and stderr, and its exit status.
+// What `tilelayout --wall WALL` prints on stdout and stderr, and its exit status.
 std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
-  FILE* pipe = popen(fmt::format("'{}' '{}' 2>&1", TILELAYOUT_EXE, wall.string()).c_str(), "r");
+  FILE* pipe =
+      popen(fmt::format("'{}' --wall '{}' 2>&1", TILELAYOUT_EXE, wall.string()).c_str(), "r");
   std::string out;
   char buffer[512];
   while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
@@ -47,7 +48,7 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
                          "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 240\n"
                          "[pipeservers]\ncount = 2\nframebuffer_width = 400\n"
                          "framebuffer_height = 300\n";
-  WallRun run("idle", {"--frames", "3", wall.string()});
+  WallRun run("idle", {"--frames", "3", "--wall", wall.string()});
   const ExitStatus status = run.wait(10s);
   const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
   fs::remove(wall);
@@ -73,7 +74,7 @@ TEST(LiveRun, WarnsOfWhatTilelayoutWarnsOf) {
                          "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 320, 200]]\n"
                          "[pipeservers]\ncount = 1\nframebuffer_width = 400\n"
                          "framebuffer_height = 300\n";
-  WallRun run("uncovered", {"--frames", "1", wall.string()});
+  WallRun run("uncovered", {"--frames", "1", "--wall", wall.string()});
   const ExitStatus status = run.wait(60s);
   const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
   fs::remove(wall);
