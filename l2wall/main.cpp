@@ -6,6 +6,7 @@
 #include "command_line/checks.hpp"
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
+#include "command_line/program_paths.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
 #include "pipeserver/model_file.hpp"
@@ -19,8 +20,8 @@ int main(int argc, char** argv) {
       "over one pty per host (the serial back-channels)."};
   app.require_subcommand(1);
   l2::RunOptions o;
-  o.pipeserver = L2_PIPESERVER_PATH;
-  o.vizserver = L2_VIZSERVER_PATH;
+  o.pipeserver = l2::sibling_program("pipeserver").string();
+  o.vizserver = l2::sibling_program("vizserver").string();
   CLI::App* run = app.add_subcommand(
       "run",
       "render --frames frames on the wall and write the displays, a per-frame report and a "

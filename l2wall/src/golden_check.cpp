@@ -107,9 +107,8 @@ std::vector<RgbImage> load_goldens(const GoldenPaths& paths, const GoldenEntry& 
     const auto file = paths.image(entry, id);
     if (!std::filesystem::exists(file)) {
       check.could_not_run(
-          fmt::format("golden image {} is missing (make it with `l2wall golden update "
-                      "--entry {}`)",
-                      file.string(), entry.name));
+          fmt::format("golden image {} is missing (make it with `{}`)", file.string(),
+                      paths.command("update", " --entry " + shell_word(entry.name))));
       return {};
     }
     goldens.push_back(read_png(file));
