@@ -1,5 +1,6 @@
 // l2wall: the command that runs a Lightning-2 wall on one machine.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -11,6 +12,22 @@
 #include "live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
+#include "report_plot.hpp"
+#include "stop_signal.hpp"
+
+namespace {
+
+int plot_run(const std::string& dir) {
+  try {
+    std::printf("plot: %s\n", l2::plot_report(dir).c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall plot: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -118,13 +135,31 @@ int main(int argc, char** argv) {
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
   });
+  bool plot = false;
+  run->add_flag("--plot", plot,
+                "after the run, draw report.csv as OUT/report.png (as `l2wall plot OUT` does)");
+  std::string plot_dir;
+  CLI::App* plot_command = app.add_subcommand(
+      "plot",
+      "draw the report.csv of a run as DIR/report.png with gnuplot: per frame the emulator's "
+      "route and swap time and every pipeserver's render time, titled with what limited the run");
+  plot_command->add_option("DIR", plot_dir, "the --out folder of an `l2wall run`")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   l2::add_golden_command(app);  // `l2wall golden check|update`
   // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
+    if (*plot_command) return plot_run(plot_dir);
     // A damaged model is refused here in one line, before every pipeserver refuses it.
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
-    return l2::run_wall(o);
+    const int status = l2::run_wall(o);
+    // A run stopped by a signal wrote its report too (stop_signal.hpp).
+    const bool reported = status == 0 || status == l2::stopped_exit_status(SIGINT);
+    if (plot && reported) {
+      if (const int plotted = plot_run(o.out); plotted != 0) return plotted;
+    }
+    return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());
     return 1;
