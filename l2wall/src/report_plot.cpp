@@ -63,9 +63,10 @@ std::string script(const std::filesystem::path& csv, const std::filesystem::path
                   "displays swapped)'",
                   colour(1))};
   for (std::size_t i = 0; i < hosts; ++i) {
-    curves.push_back(fmt::format("'' using 1:{} with linespoints lw 2 lc rgb '{}' title 'render, "
-                                 "pipeserver {}'",
-                                 7 + 3 * i, colour(2 + i), i));
+    curves.push_back(
+        fmt::format("'' using 1:{} with linespoints lw 2 lc rgb '{}' title 'render, "
+                    "pipeserver {}'",
+                    7 + 3 * i, colour(2 + i), i));
   }
   std::string text = fmt::format(
       "set terminal pngcairo size 1000,600 font ',11'\n"
@@ -92,8 +93,8 @@ std::filesystem::path plot_report(const std::filesystem::path& run_dir) {
   const std::string known = "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   const std::vector<std::string> columns = list_items(header);
   if (header.rfind(known, 0) != 0 || (columns.size() - 6) % 3 != 0) {
-    throw std::runtime_error(fmt::format("{}:1: not the header of an l2wall run's report: {}",
-                                         csv.string(), header));
+    throw std::runtime_error(
+        fmt::format("{}:1: not the header of an l2wall run's report: {}", csv.string(), header));
   }
   const std::size_t hosts = (columns.size() - 6) / 3;
   const std::string limit = limit_of(run_dir / "summary.txt");
