@@ -26,11 +26,13 @@ std::string find_gnuplot() {
   throw std::runtime_error("gnuplot is not on PATH (Debian package gnuplot-nox)");
 }
 
-std::string first_line(const std::filesystem::path& file) {
+// The header and the first row.
+std::vector<std::string> first_lines(const std::filesystem::path& file) {
   std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  return line;
+  std::vector<std::string> lines(2);
+  std::getline(in, lines[0]);
+  std::getline(in, lines[1]);
+  return lines;
 }
 
 // The summary's "limited by ..." line, or empty.
@@ -53,15 +55,21 @@ std::string colour(std::size_t curve) {
   return kPlotColours[curve % std::size(kPlotColours)];
 }
 
-// The plot commands: route_ms (column 5), swap_ms (6), render_ms_<i> (7 + 3i).
+// The plot commands: route_ms (column 5), swap_ms (6), render_ms_<i> (7 + 3i); without an
+// emulator (the vizserver path: those columns empty) only the render times.
 std::string script(const std::filesystem::path& csv, const std::filesystem::path& png,
-                   std::size_t hosts, const std::string& title) {
-  std::vector<std::string> curves{
-      fmt::format("{} using 1:5 with linespoints lw 2 lc rgb '{}' title 'route (emulator)'",
-                  quoted(csv.string()), colour(0)),
-      fmt::format("'' using 1:6 with linespoints lw 2 lc rgb '{}' title 'swap (input taken in to "
-                  "displays swapped)'",
-                  colour(1))};
+                   std::size_t hosts, bool emulator, const std::string& title) {
+  std::vector<std::string> curves;
+  if (emulator) {
+    curves.push_back(
+        fmt::format("'' using 1:5 with linespoints lw 2 lc rgb '{}' title 'route "
+                    "(emulator)'",
+                    colour(0)));
+    curves.push_back(
+        fmt::format("'' using 1:6 with linespoints lw 2 lc rgb '{}' title 'swap "
+                    "(input taken in to displays swapped)'",
+                    colour(1)));
+  }
   for (std::size_t i = 0; i < hosts; ++i) {
     curves.push_back(
         fmt::format("'' using 1:{} with linespoints lw 2 lc rgb '{}' title 'render, "
@@ -80,7 +88,11 @@ std::string script(const std::filesystem::path& csv, const std::filesystem::path
       "set yrange [0:*]\n"
       "plot ",
       quoted(png.string()), quoted(title));
-  for (std::size_t i = 0; i < curves.size(); ++i) text += (i ? ", \\\n     " : "") + curves[i];
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    // The first curve names the file; '' repeats it.
+    if (i == 0) curves[i] = quoted(csv.string()) + curves[i].substr(2);
+    text += (i ? ", \\\n     " : "") + curves[i];
+  }
   return text + "\n";
 }
 
@@ -88,7 +100,8 @@ std::string script(const std::filesystem::path& csv, const std::filesystem::path
 
 std::filesystem::path plot_report(const std::filesystem::path& run_dir) {
   const auto csv = run_dir / "report.csv";
-  const std::string header = first_line(csv);
+  const std::vector<std::string> lines = first_lines(csv);
+  const std::string& header = lines[0];
   if (header.empty()) throw std::runtime_error(csv.string() + ": cannot read, or empty");
   const std::string known = "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   const std::vector<std::string> columns = list_items(header);
@@ -100,8 +113,10 @@ std::filesystem::path plot_report(const std::filesystem::path& run_dir) {
   const std::string limit = limit_of(run_dir / "summary.txt");
   const std::string title = fmt::format("l2wall run, {} pipeservers: time per frame{}", hosts,
                                         limit.empty() ? "" : " - " + limit);
+  const std::vector<std::string> first_row = list_items(lines[1]);
+  const bool emulator = first_row.size() > 4 && !first_row[4].empty();
   const auto png = run_dir / "report.png", commands = run_dir / "report.gnuplot";
-  if (!(std::ofstream(commands) << script(csv, png, hosts, title)).flush())
+  if (!(std::ofstream(commands) << script(csv, png, hosts, emulator, title)).flush())
     throw std::runtime_error(commands.string() + ": cannot write");
   std::filesystem::remove(png);
   ChildProcess gnuplot({find_gnuplot(), commands.string()});

@@ -70,6 +70,19 @@ TEST_F(ReportPlot, DrawsRouteSwapAndEveryHostsRenderTime) {
       << text;
 }
 
+// The vizserver path has no emulator: its route and swap columns are empty, and not drawn.
+TEST_F(ReportPlot, WithoutAnEmulatorOnlyTheRenderTimes) {
+  std::ofstream(dir_ / "report.csv")
+      << "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms,render_ms_0,"
+         "ready_wait_ms_0,sync_retries_0\n"
+         "0,,,n/a,,,10.000,3.000,0\n"
+         "1,,,n/a,,,12.000,3.000,0\n";
+  const RgbImage picture = read_png(plot_report(dir_));
+  EXPECT_EQ(pixels_of(picture, rgb_of(kPlotColours[0])), 0);
+  EXPECT_EQ(pixels_of(picture, rgb_of(kPlotColours[1])), 0);
+  EXPECT_GT(pixels_of(picture, rgb_of(kPlotColours[2])), 100);
+}
+
 TEST_F(ReportPlot, WhatCannotBePlottedIsOneLine) {
   try {
     plot_report(dir_);
