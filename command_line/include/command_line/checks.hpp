@@ -1,6 +1,6 @@
 // Checks for option values that CLI11's own validators let through: CLI::Range passes NaN
-// (every comparison with it is false), CLI11 clamps
-// an integer too large for its type, and an empty path means the current folder.
+// (every comparison with it is false), CLI11 clamps an integer too large for its type, and an
+// empty path means the current folder. Timeouts: command_line/options.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>
