@@ -44,6 +44,12 @@ TEST_F(GoldenCli, OnePixelChangedInAGoldenImageFailsWithADiffPicture) {
                            " at (100, 50); wrote " + actual.string() + ", " + diff.string();
   EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("FAILED"), std::string::npos);
+  EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
+                          "`l2wall golden update --goldens " +
+                          goldens().string() + " --root " + kSource.string() + " --entry " +
+                          kPattern + "`\n"),
+            std::string::npos)
+      << r.output;
   // Only that display, only against the golden: both paths and the test pattern agree.
   EXPECT_EQ(r.output.find("display 0:"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("vizserver vs"), std::string::npos) << r.output;
