@@ -75,7 +75,7 @@ if grep -E '^[^:]+:  (wall|walls|WALL)( |$)' "$helps"; then
 fi
 for option in --wall --refresh --out --threads --stall-timeout --ready-timeout; do
   users=$(awk -F'|' -v o="$option" '$2 == o {print $1}' "$tmp/options" | sort -u | paste -sd, -)
-  echo "ok   $option, spelled and typed alike in: ${users:-(none)}"
+  echo "     $option is in: ${users:-(none)}"
 done
 
 # Values a program checks, while parsing or right after, refused the same way: the text the
