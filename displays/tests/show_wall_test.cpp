@@ -82,7 +82,7 @@ TEST_F(ShowWall, HelpNamesEveryOption) {
   const ChildRun run = run_show_wall({"--help"}, work_);
   EXPECT_EQ(run.exit_code, 0);
   for (const char* option : {"--displays-from", "--wall", "--show", "--frames", "--screenshot",
-                             "--rate", "--no-vsync", "monitors"}) {
+                             "--refresh", "--no-vsync", "monitors"}) {
     EXPECT_THAT(run.out, HasSubstr(option));
   }
 }
@@ -114,7 +114,7 @@ TEST_F(ShowWall, DefaultWallWindowShowsTheWrittenDisplayImagesExactly) {
   const ChildRun run =
       run_show_wall({"--displays-from", (work_ / "displays").string(), "--wall",
                      (work_ / "default.toml").string(), "--frames", "5", "--screenshot",
-                     (work_ / "shots").string(), "--no-vsync", "--rate", "200"},
+                     (work_ / "shots").string(), "--no-vsync", "--refresh", "200"},
                     work_);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const Display& d : wall.displays) {

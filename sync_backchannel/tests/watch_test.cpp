@@ -72,8 +72,8 @@ TEST(SyncBackchannelExe, HelpListsEverySubcommand) {
     EXPECT_THAT(r.out, HasSubstr(word));
   }
   const ChildResult sub = test::run({kExe, "wait-ready", "--help"}, 5s);
-  EXPECT_THAT(sub.out, HasSubstr("--retries"));
-  EXPECT_THAT(sub.out, HasSubstr("--timeout"));
+  EXPECT_THAT(sub.out, HasSubstr("--ready-retries"));
+  EXPECT_THAT(sub.out, HasSubstr("--ready-timeout MS"));
 }
 
 TEST(SyncBackchannelExe, SendReadyWritesTheExactLine) {
@@ -110,16 +110,16 @@ TEST(SyncBackchannelExe, WatchPrintsDecodedMessagesAndCounts) {
 
 TEST(SyncBackchannelExe, WaitReadyReportsATimeoutAsOneLine) {
   PtyPair pty = PtyPair::open();
-  const ChildResult r = test::run(
-      {kExe, "wait-ready", pty.slave_path(), "--frame", "3", "--timeout", "50", "--retries", "1"},
-      5s);
+  const ChildResult r = test::run({kExe, "wait-ready", pty.slave_path(), "--frame", "3",
+                                   "--ready-timeout", "50", "--ready-retries", "1"},
+                                  5s);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, StartsWith("sync_backchannel: no READY for frame 000003 on " +
                                 pty.slave_path() + " after 1 SYNC? retries (2 waits of 50 ms)\n"));
 }
 
 TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
-  ChildProcess emulator({kExe, "pty", "--interval", "30"});
+  ChildProcess emulator({kExe, "pty", "--refresh", "33"});
   const std::string slave = emulator.read_out_line(5s);
   ASSERT_THAT(slave, StartsWith("/dev/pts/"));
   // A person watching the line sees whole READY lines from frame 0 on (queued on the line
