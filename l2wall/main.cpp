@@ -6,6 +6,8 @@
 #include "command_line/checks.hpp"
 #include "command_line/parse.hpp"
 #include "golden_command.hpp"
+#include "image/movie_file.hpp"
+#include "image/picture_regions.hpp"
 #include "live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
@@ -28,7 +30,8 @@ int main(int argc, char** argv) {
                   "wall file (TOML); default: the built-in default wall "
                   "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
       ->check(CLI::ExistingFile);
-  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
+  run->add_option("--scene", o.scene,
+                  "mesh | strips | isosurface | patches | swap | picture | movie")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
@@ -133,6 +136,8 @@ int main(int argc, char** argv) {
   try {
     // A damaged model is refused here in one line, before every pipeserver refuses it.
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
+    if (o.scene == "picture") l2::PictureRegions{scene.content};
+    if (o.scene == "movie") l2::MovieFile(scene.content).frame(0);
     return l2::run_wall(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());

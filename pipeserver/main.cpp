@@ -91,7 +91,8 @@ int main(int argc, char** argv) {
                  "render frames --frame .. --frame+count-1 (times printed for each); the last is "
                  "written")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
+  app.add_option("--scene", o.scene,
+                 "mesh | strips | isosurface | patches | swap | picture | movie")
       ->check(CLI::IsMember(l2::scene_names()));
   app.add_option("--out", o.out, "PNG file for the scanned-out frame");
   app.add_option("--reference", o.reference,

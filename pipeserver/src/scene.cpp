@@ -52,7 +52,8 @@ void Scene::set_camera(const CameraOptions& camera) {
 }
 
 const std::vector<std::string>& scene_names() {
-  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches", "swap"};
+  static const std::vector<std::string> names{"mesh", "strips",  "isosurface", "patches",
+                                              "swap", "picture", "movie"};
   return names;
 }
 
@@ -71,8 +72,16 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
   if (name == "isosurface") return detail::make_isosurface_scene(options);
   if (name == "patches") return detail::make_patches_scene(options);
   if (name == "swap") return detail::make_swap_scene();
-  throw std::invalid_argument(
-      fmt::format("unknown scene '{}' (expected mesh, strips, isosurface, patches or swap)", name));
+  if (name == "picture" || name == "movie") {
+    if (options.content.empty()) {
+      throw std::invalid_argument(fmt::format("--scene {} needs --content FILE", name));
+    }
+    if (name == "picture") return detail::make_picture_scene(options.content);
+    return detail::make_movie_scene(options.content);
+  }
+  throw std::invalid_argument(fmt::format(
+      "unknown scene '{}' (expected mesh, strips, isosurface, patches, swap, picture or movie)",
+      name));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "image/rgb_image.hpp"
 #include "pipeserver/camera.hpp"
 
 namespace l2 {
@@ -48,6 +49,7 @@ struct SceneOptions {
   int grid = 40;                    // isosurface: cells along each axis
   int tessellation = 16;            // patches: segments along each patch edge
   int patches = 4;                  // patches: patches along each side of the sheet
+  std::filesystem::path content;    // picture, movie: the file shown
   CameraOptions camera;             // every scene
 };
 
@@ -75,6 +77,14 @@ class Scene {
 
   std::size_t triangle_count() const;
 
+  // A scene of pixels rather than geometry (picture, movie) fills each tile with them: `rgb`
+  // becomes the tile's size, rows top to bottom, and is drawn over the cleared tile. false: the
+  // scene has batches only.
+  virtual bool fill_tile(const Canvas& /*canvas*/, const Rect& /*on_canvas*/,
+                         RgbImage& /*rgb*/) const {
+    return false;
+  }
+
  protected:
   // The scene's own animation: batches_ and model_ of frame `frame`.
   virtual void animate(int frame) = 0;
@@ -89,10 +99,13 @@ class Scene {
   CameraOptions camera_;
 };
 
-// "mesh", "strips", "isosurface", "patches" or "swap" (no geometry: frame k is cleared to
-// ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB). Throws
-// std::invalid_argument on an unknown name and std::runtime_error (naming file and line) on an
-// unreadable mesh file.
+// "mesh", "strips", "isosurface", "patches", "swap" (no geometry: frame k is cleared to
+// ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB), "picture"
+// (options.content, any format OpenImageIO reads, panned and zoomed: picture_view.hpp) or
+// "movie" (options.content, any format FFmpeg reads, fitted to the canvas). Throws
+// std::invalid_argument on an unknown name or a picture or movie without a file, and
+// std::runtime_error (naming the file, and the line where there is one) on an unreadable mesh,
+// picture or movie.
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
 const std::vector<std::string>& scene_names();
 
