@@ -122,10 +122,13 @@ MovieDecoder* open_movie(const char* path, std::string* error) try {
   av_log_set_level(AV_LOG_QUIET);  // reasons come back in one line; FFmpeg prints nothing
   AVFormatContext* opened = nullptr;
   if (const int r = avformat_open_input(&opened, path, nullptr, nullptr); r < 0) {
+    // A container that ends before any stream's first packet: a movie of no frames.
+    if (r == AVERROR_EOF) return open_failed_movie(error, "holds no video frames");
     return open_failed_movie(error, "cannot read as a movie: " + av_error(r));
   }
   std::unique_ptr<AVFormatContext, FormatCloser> format(opened);
   if (const int r = avformat_find_stream_info(format.get(), nullptr); r < 0) {
+    if (r == AVERROR_EOF) return open_failed_movie(error, "holds no video frames");
     return open_failed_movie(error, "cannot read as a movie: " + av_error(r));
   }
   const AVCodec* decoder = nullptr;
