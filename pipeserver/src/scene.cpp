@@ -51,9 +51,17 @@ void Scene::set_camera(const CameraOptions& camera) {
   camera_ = camera;
 }
 
+const std::vector<std::string>& built_in_scene_names() {
+  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches", "swap"};
+  return names;
+}
+
 const std::vector<std::string>& scene_names() {
-  static const std::vector<std::string> names{"mesh", "strips",  "isosurface", "patches",
-                                              "swap", "picture", "movie"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = built_in_scene_names();
+    all.insert(all.end(), {"picture", "movie"});
+    return all;
+  }();
   return names;
 }
 

@@ -108,6 +108,9 @@ class Scene {
 // picture or movie.
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
 const std::vector<std::string>& scene_names();
+// The scenes that need no file (every one but picture and movie): what a golden entry, a tool
+// sweeping every scene or a test over every wall may name.
+const std::vector<std::string>& built_in_scene_names();
 
 // The bunny shipped in data/, found relative to the source tree at build time.
 std::filesystem::path default_mesh_file();
