@@ -41,6 +41,7 @@ std::size_t Scene::triangle_count() const {
 }
 
 void Scene::set_frame(int frame) {
+  frame_ = frame;
   model_ = glm::mat4(1.0f);
   animate(frame);
   const float orbit = camera_.orbit.value_or(default_orbit());
@@ -92,10 +93,19 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
       name));
 }
 
+std::function<std::unique_ptr<Scene>()>& replacement() {
+  static std::function<std::unique_ptr<Scene>()> make;
+  return make;
+}
+
 }  // namespace
 
+void replace_scenes(std::function<std::unique_ptr<Scene>()> make) {
+  replacement() = std::move(make);
+}
+
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options) {
-  auto scene = make_named(name, options);
+  auto scene = replacement() ? replacement()() : make_named(name, options);
   scene->set_camera(options.camera);
   scene->set_frame(0);
   return scene;

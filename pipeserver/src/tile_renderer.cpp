@@ -82,6 +82,7 @@ void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
   const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
   glLoadMatrixd(glm::value_ptr(projection));
   glMatrixMode(GL_MODELVIEW);
+  scene_.draw_tile({canvas_, on_canvas, scene_.frame(), tile_matrix(canvas_, on_canvas), camera_});
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
     if (!overlaps(footprints_[i], on_canvas)) continue;

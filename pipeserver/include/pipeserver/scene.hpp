@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,6 +54,19 @@ struct SceneOptions {
   CameraOptions camera;             // every scene
 };
 
+// What a program's own drawing (renderer.hpp) is given for each tile. When it is called, the
+// tile's viewport and scissor are set, GL_PROJECTION holds tile * camera.projection and
+// GL_MODELVIEW camera.view (turned by --camera-orbit, when given), so drawing the whole scene,
+// inside the unit sphere about the origin, draws the tile's part of it; the tile has been cleared
+// to black, colour and depth.
+struct TileView {
+  Canvas canvas;
+  Rect on_canvas;        // the tile's rectangle on the canvas (rows top to bottom)
+  int frame = 0;         // the application frame: every pipeserver draws the same scene for it
+  glm::dmat4 tile{1.0};  // takes the whole canvas's clip space to the tile's
+  Camera camera;         // the wall's camera, the unit sphere framed on the canvas
+};
+
 class Scene {
  public:
   virtual ~Scene() = default;
@@ -60,6 +74,7 @@ class Scene {
   // Makes batches() and model() those of frame `frame`, the camera's orbit included. Same
   // frame, same geometry.
   void set_frame(int frame);
+  int frame() const { return frame_; }
   const CameraOptions& camera() const { return camera_; }
   // An orbit left unset is the scene's default_orbit().
   void set_camera(const CameraOptions& camera);
@@ -84,6 +99,8 @@ class Scene {
                          RgbImage& /*rgb*/) const {
     return false;
   }
+  // A program's own scene (renderer.hpp) draws each tile itself (it has no batches).
+  virtual void draw_tile(const TileView& /*view*/) const {}
 
  protected:
   // The scene's own animation: batches_ and model_ of frame `frame`.
@@ -97,6 +114,7 @@ class Scene {
 
  private:
   CameraOptions camera_;
+  int frame_ = 0;
 };
 
 // "mesh", "strips", "isosurface", "patches", "swap" (no geometry: frame k is cleared to
@@ -107,6 +125,9 @@ class Scene {
 // std::runtime_error (naming the file, and the line where there is one) on an unreadable mesh,
 // picture or movie.
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
+// From now on make_scene() makes `make`'s scene, whatever the name: a program with its own
+// drawing (renderer.hpp) shows it on every path of the pipeserver. An empty `make` undoes it.
+void replace_scenes(std::function<std::unique_ptr<Scene>()> make);
 const std::vector<std::string>& scene_names();
 // The scenes that need no file (every one but picture and movie): what a golden entry, a tool
 // sweeping every scene or a test over every wall may name.
