@@ -9,6 +9,8 @@
 #include "command_line/parse.hpp"
 #include "command_line/program_paths.hpp"
 #include "golden_command.hpp"
+#include "image/movie_file.hpp"
+#include "image/picture_regions.hpp"
 #include "live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
@@ -46,7 +48,8 @@ int main(int argc, char** argv) {
   l2::add_wall_option(*run, o.wall,
                       "default: the built-in default wall (walls/kd-2x2.toml: 4 pipeservers, "
                       "2x2 displays)");
-  run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
+  run->add_option("--scene", o.scene,
+                  "mesh | strips | isosurface | patches | swap | picture | movie")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
@@ -153,6 +156,8 @@ int main(int argc, char** argv) {
     if (*plot_command) return plot_run(plot_dir);
     // A damaged model is refused here in one line, before every pipeserver refuses it.
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
+    if (o.scene == "picture") l2::PictureRegions{scene.content};
+    if (o.scene == "movie") l2::MovieFile(scene.content).frame(0);
     const int status = l2::run_wall(o);
     // A run stopped by a signal wrote its report too (stop_signal.hpp).
     const bool reported = status == 0 || status == l2::stopped_exit_status(SIGINT);

@@ -161,6 +161,9 @@ bad_value "--triangles is an option of --scene strips, not mesh" pipeserver --tr
   --out /tmp/x
 bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene strips \
   --mesh /etc/hostname
+bad_value "--content is an option of --scene picture or movie, not swap" pipeserver \
+  --scene swap --content /etc/hostname --out /tmp/x.png
+bad_value "--scene movie needs --content FILE" l2wall run --scene movie
 # NaN passed CLI::Range and made every pixel of the view NaN (a black wall).
 bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x
 bad_value "nan is not a number in -360..360" l2wall run --camera-orbit nan

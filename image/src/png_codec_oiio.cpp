@@ -18,11 +18,13 @@
 #include <utility>
 #include <vector>
 
+#include "media_oiio.hpp"
 #include "png_codec.hpp"
 
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
+using l2::png_codec::open_failed;
 using l2::png_codec::RgbSink;
 using l2::png_codec::Source;
 
@@ -225,21 +227,6 @@ std::string format_by_signature(const char* path) {
   return {};
 }
 
-// When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
-// .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
-// the file is.
-std::string open_failed(const char* path) {
-  const std::string error = OIIO::geterror();
-  const std::string format = format_by_signature(path);
-  if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
-  const auto reader = OIIO::ImageInput::create(format);
-  OIIO::ImageSpec spec;
-  std::string why = "damaged";
-  if (reader && !reader->open(path, spec)) why = reader->geterror();
-  if (why.empty()) why = "damaged or ends early";
-  return "cannot read: a " + upper(format) + " file: " + why;
-}
-
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
 // in a captured RGBA frame). Grey is spread over R, G and B.
@@ -296,11 +283,35 @@ std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try
   return std::string("cannot read: ") + e.what();
 }
 
-constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb};
+}  // namespace
+
+namespace l2::png_codec {
+
+// When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
+// .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
+// the file is.
+std::string open_failed(const char* path) {
+  const std::string error = OIIO::geterror();
+  const std::string format = format_by_signature(path);
+  if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
+  const auto reader = OIIO::ImageInput::create(format);
+  OIIO::ImageSpec spec;
+  std::string why = "damaged";
+  if (reader && !reader->open(path, spec)) why = reader->geterror();
+  if (why.empty()) why = "damaged or ends early";
+  return "cannot read: a " + upper(format) + " file: " + why;
+}
+
+}  // namespace l2::png_codec
+
+namespace {
+
+constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb, l2::png_codec::open_regions,
+                                      l2::png_codec::open_movie};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v4() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v5() {
   return &kCodec;
 }

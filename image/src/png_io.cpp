@@ -14,11 +14,9 @@
 
 namespace l2 {
 
-namespace {
-
 // The codec module, loaded once per process (png_codec.hpp says why it is not linked) from where
 // the build put it. When it cannot be loaded every picture is an error that says why.
-const png_codec::Codec& codec(const std::filesystem::path& picture) {
+const png_codec::Codec& png_codec::codec(const std::filesystem::path& picture) {
   static const auto loaded = []() -> std::pair<const png_codec::Codec*, std::string> {
     const char* const file = L2_PNG_CODEC_MODULE;
     void* module = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);  // never closed
@@ -37,6 +35,8 @@ const png_codec::Codec& codec(const std::filesystem::path& picture) {
   return *loaded.first;
 }
 
+namespace {
+
 void check(const std::filesystem::path& path, const std::string& error) {
   if (!error.empty()) throw std::runtime_error(path.string() + ": " + error);
 }
@@ -49,7 +49,7 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
   const bool existed = std::filesystem::exists(path, error);
   check_writable(path);  // OpenImageIO says only "Could not open file"
   const std::string failed =
-      codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data());
+      png_codec::codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data());
   // check_writable() made the file: a write that failed leaves no empty file behind.
   if (!failed.empty() && !existed) std::filesystem::remove(path, error);
   check(path, failed);
@@ -86,7 +86,7 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                                 },
                                 kMaxPictureSide};
   png_codec::Source found;
-  const std::string failed = codec(path).read_rgb(path.c_str(), sink, &found);
+  const std::string failed = png_codec::codec(path).read_rgb(path.c_str(), sink, &found);
   if (target.refused) std::rethrow_exception(target.refused);
   check(path, failed);
   if (source) *source = {found.format, found.colour_channels, found.lossy};

@@ -175,7 +175,7 @@ GoldenEntry read_entry(const toml::table& table, const std::string& file) {
       r.fail("mesa", "routing-only entries render nothing: no Mesa version");
     }
   } else {
-    const auto& scenes = scene_names();
+    const auto& scenes = built_in_scene_names();
     if (std::find(scenes.begin(), scenes.end(), e.scene) == scenes.end()) {
       r.fail("scene",
              fmt::format("must be one of {}, got \"{}\"", fmt::join(scenes, ", "), e.scene));

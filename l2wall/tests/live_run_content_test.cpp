@@ -6,35 +6,12 @@
 
 #include "model_files.hpp"
 #include "wall_run.hpp"
+#include "wide_wall.hpp"
 
 namespace l2 {
 namespace {
 
 using namespace testing_support;
-
-// 3x1 displays of 160x120: a 4:1 canvas.
-fs::path write_wide_wall(const fs::path& dir) {
-  const fs::path path = dir / "wide-3x1.toml";
-  std::ofstream(path) << R"(name = "3x1 wide wall"
-[display_grid]
-columns = 3
-rows = 1
-width = 160
-height = 120
-[tiling]
-kind = "kd"
-tile_count = 6
-[pipeservers]
-count = 3
-framebuffer_width = 200
-framebuffer_height = 150
-[mesh]
-board_max_width = 1280
-board_max_height = 1024
-refresh_hz = 60
-)";
-  return path;
-}
 
 // Pixels of a display picture that are not background (black), the frame stamp aside.
 long scene_pixels(const RgbImage& shown) {

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   std::string scene_name = "mesh";
   int frames = 20;
   app.add_option("scene", scene_name, "scene to render")
-      ->check(CLI::IsMember(l2::scene_names()))
+      ->check(CLI::IsMember(l2::built_in_scene_names()))
       ->capture_default_str();
   app.add_option("frames", frames, "frames per pipeserver; figures are medians")
       ->check(CLI::Range(3, 100000))

@@ -42,6 +42,7 @@ std::size_t Scene::triangle_count() const {
 }
 
 void Scene::set_frame(int frame) {
+  frame_ = frame;
   model_ = glm::mat4(1.0f);
   animate(frame);
   const float orbit = camera_.orbit.value_or(default_orbit());
@@ -52,8 +53,17 @@ void Scene::set_camera(const CameraOptions& camera) {
   camera_ = camera;
 }
 
-const std::vector<std::string>& scene_names() {
+const std::vector<std::string>& built_in_scene_names() {
   static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches", "swap"};
+  return names;
+}
+
+const std::vector<std::string>& scene_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = built_in_scene_names();
+    all.insert(all.end(), {"picture", "movie"});
+    return all;
+  }();
   return names;
 }
 
@@ -74,14 +84,31 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
   if (name == "isosurface") return detail::make_isosurface_scene(options);
   if (name == "patches") return detail::make_patches_scene(options);
   if (name == "swap") return detail::make_swap_scene();
-  throw std::invalid_argument(
-      fmt::format("unknown scene '{}' (expected mesh, strips, isosurface, patches or swap)", name));
+  if (name == "picture" || name == "movie") {
+    if (options.content.empty()) {
+      throw std::invalid_argument(fmt::format("--scene {} needs --content FILE", name));
+    }
+    if (name == "picture") return detail::make_picture_scene(options.content);
+    return detail::make_movie_scene(options.content);
+  }
+  throw std::invalid_argument(fmt::format(
+      "unknown scene '{}' (expected mesh, strips, isosurface, patches, swap, picture or movie)",
+      name));
+}
+
+std::function<std::unique_ptr<Scene>()>& replacement() {
+  static std::function<std::unique_ptr<Scene>()> make;
+  return make;
 }
 
 }  // namespace
 
+void replace_scenes(std::function<std::unique_ptr<Scene>()> make) {
+  replacement() = std::move(make);
+}
+
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options) {
-  auto scene = make_named(name, options);
+  auto scene = replacement() ? replacement()() : make_named(name, options);
   scene->set_camera(options.camera);
   scene->set_frame(0);
   return scene;

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "draw_rgb.hpp"
+
 namespace l2 {
 
 namespace {
@@ -75,10 +77,12 @@ void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
     glClearColor(c.r, c.g, c.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
   }
+  if (scene_.fill_tile(canvas_, on_canvas, pixels_)) detail::draw_rgb(pixels_, gl_x, gl_y);
   glMatrixMode(GL_PROJECTION);
   const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
   glLoadMatrixd(glm::value_ptr(projection));
   glMatrixMode(GL_MODELVIEW);
+  scene_.draw_tile({canvas_, on_canvas, scene_.frame(), tile_matrix(canvas_, on_canvas), camera_});
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
     if (!overlaps(footprints_[i], on_canvas)) continue;

@@ -66,7 +66,7 @@ TEST_P(ExampleWall, ReassemblesToTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(Walls, ExampleWall,
                          ::testing::Combine(::testing::ValuesIn(example_walls()),
-                                            ::testing::ValuesIn(scene_names())),
+                                            ::testing::ValuesIn(built_in_scene_names())),
                          [](const auto& param_info) {
                            std::string n = std::get<0>(param_info.param).stem().string() + "_" +
                                            std::get<1>(param_info.param);

@@ -54,7 +54,7 @@ void print_tolerance_table(const std::vector<std::filesystem::path>& walls) {
               "differ", "%", ">1", ">1 %", "max", "@edge");
   for (const auto& path : walls) {
     const l2::TileLayout layout = l2::plan_layout(l2::load_wall(path));
-    for (const auto& name : l2::scene_names()) {
+    for (const auto& name : l2::built_in_scene_names()) {
       auto scene = l2::make_scene(name);
       for (int frame : {0, 17, 40}) {
         const auto check = l2::test::check_wall(layout, *scene, frame, true);
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
   app.add_option("--picture", picture,
                  "write the one --wall given, reassembled, to this PNG (mullions dark grey)");
   app.add_option("--scene", scene_name, "--picture: scene to render")
-      ->check(CLI::IsMember(l2::scene_names()))
+      ->check(CLI::IsMember(l2::built_in_scene_names()))
       ->capture_default_str();
   app.add_option("--frame", picture_frame, "--picture: frame to render")
       ->check(CLI::Range(0, 1 << 30))

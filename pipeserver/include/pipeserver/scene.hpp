@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "image/rgb_image.hpp"
 #include "pipeserver/camera.hpp"
 
 namespace l2 {
@@ -48,7 +50,21 @@ struct SceneOptions {
   int grid = 40;                    // isosurface: cells along each axis
   int tessellation = 16;            // patches: segments along each patch edge
   int patches = 4;                  // patches: patches along each side of the sheet
+  std::filesystem::path content;    // picture, movie: the file shown
   CameraOptions camera;             // every scene
+};
+
+// What a program's own drawing (renderer.hpp) is given for each tile. When it is called, the
+// tile's viewport and scissor are set, GL_PROJECTION holds tile * camera.projection and
+// GL_MODELVIEW camera.view (turned by --camera-orbit, when given), so drawing the whole scene,
+// inside the unit sphere about the origin, draws the tile's part of it; the tile has been cleared
+// to black, colour and depth.
+struct TileView {
+  Canvas canvas;
+  Rect on_canvas;        // the tile's rectangle on the canvas (rows top to bottom)
+  int frame = 0;         // the application frame: every pipeserver draws the same scene for it
+  glm::dmat4 tile{1.0};  // takes the whole canvas's clip space to the tile's
+  Camera camera;         // the wall's camera, the unit sphere framed on the canvas
 };
 
 class Scene {
@@ -58,6 +74,7 @@ class Scene {
   // Makes batches() and model() those of frame `frame`, the camera's orbit included. Same
   // frame, same geometry.
   void set_frame(int frame);
+  int frame() const { return frame_; }
   const CameraOptions& camera() const { return camera_; }
   // An orbit left unset is the scene's default_orbit().
   void set_camera(const CameraOptions& camera);
@@ -75,6 +92,16 @@ class Scene {
 
   std::size_t triangle_count() const;
 
+  // A scene of pixels rather than geometry (picture, movie) fills each tile with them: `rgb`
+  // becomes the tile's size, rows top to bottom, and is drawn over the cleared tile. false: the
+  // scene has batches only.
+  virtual bool fill_tile(const Canvas& /*canvas*/, const Rect& /*on_canvas*/,
+                         RgbImage& /*rgb*/) const {
+    return false;
+  }
+  // A program's own scene (renderer.hpp) draws each tile itself (it has no batches).
+  virtual void draw_tile(const TileView& /*view*/) const {}
+
  protected:
   // The scene's own animation: batches_ and model_ of frame `frame`.
   virtual void animate(int frame) = 0;
@@ -87,14 +114,24 @@ class Scene {
 
  private:
   CameraOptions camera_;
+  int frame_ = 0;
 };
 
-// "mesh", "strips", "isosurface", "patches" or "swap" (no geometry: frame k is cleared to
-// ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB). Throws
-// std::invalid_argument on an unknown name and std::runtime_error (naming file and line) on an
-// unreadable mesh file.
+// "mesh", "strips", "isosurface", "patches", "swap" (no geometry: frame k is cleared to
+// ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB), "picture"
+// (options.content, any format OpenImageIO reads, panned and zoomed: picture_view.hpp) or
+// "movie" (options.content, any format FFmpeg reads, fitted to the canvas). Throws
+// std::invalid_argument on an unknown name or a picture or movie without a file, and
+// std::runtime_error (naming the file, and the line where there is one) on an unreadable mesh,
+// picture or movie.
 std::unique_ptr<Scene> make_scene(const std::string& name, const SceneOptions& options = {});
+// From now on make_scene() makes `make`'s scene, whatever the name: a program with its own
+// drawing (renderer.hpp) shows it on every path of the pipeserver. An empty `make` undoes it.
+void replace_scenes(std::function<std::unique_ptr<Scene>()> make);
 const std::vector<std::string>& scene_names();
+// The scenes that need no file (every one but picture and movie): what a golden entry, a tool
+// sweeping every scene or a test over every wall may name.
+const std::vector<std::string>& built_in_scene_names();
 
 // The bunny shipped in data/, found relative to the source tree at build time.
 std::filesystem::path default_mesh_file();

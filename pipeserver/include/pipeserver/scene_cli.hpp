@@ -16,10 +16,11 @@ namespace l2 {
 
 struct SceneOption {
   CLI::Option* option;
-  const char* scene;  // the scene it belongs to; nullptr: every scene
+  const char* scene;  // the scenes it belongs to, separated by spaces; nullptr: every scene
 };
 
-// Adds --mesh, --triangles, --strip-length, --grid, --tessellation, --patches and the camera's
+// Adds --mesh, --content, --triangles, --strip-length, --grid, --tessellation, --patches and the
+// camera's
 // --camera-distance, --camera-orbit, --camera-fov to `app`, writing into `o`.
 inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o) {
   std::vector<SceneOption> added{
@@ -28,6 +29,11 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "...; default: the bunny)")
            ->check(CLI::ExistingFile),
        "mesh"},
+      {app.add_option("--content", o.content,
+                      "picture scene: a picture, any format OpenImageIO reads, of any size; movie "
+                      "scene: a movie, any format FFmpeg reads")
+           ->check(CLI::ExistingFile),
+       "picture movie"},
       {app.add_option("--triangles", o.triangles, "strips scene: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
        "strips"},
@@ -62,11 +68,22 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
 }
 
 // An option of one scene given for another was ignored without a word: refused instead.
+// A picture or movie scene without its file is refused too.
 inline void check_scene_options(const std::vector<SceneOption>& options, const std::string& scene) {
   for (const SceneOption& s : options) {
-    if (s.scene == nullptr || s.option->count() == 0 || scene == s.scene) continue;
+    if (s.option->get_name() == "--content" && s.option->count() == 0 &&
+        (scene == "picture" || scene == "movie")) {
+      throw CLI::ValidationError(fmt::format("--scene {} needs --content FILE", scene));
+    }
+    if (s.scene == nullptr || s.option->count() == 0) continue;
+    std::string scenes = s.scene;
+    if ((" " + scenes + " ").find(" " + scene + " ") != std::string::npos) continue;
+    for (std::size_t at = scenes.find(' '); at != std::string::npos; at = scenes.find(' ', at)) {
+      scenes.replace(at, 1, " or ");
+      at += 4;
+    }
     throw CLI::ValidationError(
-        fmt::format("{} is an option of --scene {}, not {}", s.option->get_name(), s.scene, scene));
+        fmt::format("{} is an option of --scene {}, not {}", s.option->get_name(), scenes, scene));
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "image/rgb_image.hpp"
 #include "pipeserver/bucketing.hpp"
 #include "pipeserver/camera.hpp"
 #include "pipeserver/scene.hpp"
@@ -35,6 +36,7 @@ class TileRenderer {
   std::vector<Rect> footprints_;
   std::vector<bool> drawn_;
   BucketStats stats_;
+  RgbImage pixels_;  // a picture or movie scene's tile
 };
 
 }  // namespace l2

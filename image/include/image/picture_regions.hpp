@@ -1,0 +1,39 @@
+// A picture of any format OpenImageIO reads, far larger than memory if need be, read a row's
+// part at a time through an image cache of bounded size: a pipeserver showing part of a
+// 16k x 16k picture holds the tiles under that part, not the picture.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+namespace l2 {
+
+namespace png_codec {
+class RegionReader;
+}
+
+class PictureRegions {
+ public:
+  // Throws std::runtime_error naming the file and why, in one line ("pic.tif: cannot read: a
+  // TIFF file: ..."), when it is missing, damaged, empty or not a picture.
+  explicit PictureRegions(const std::filesystem::path& path);
+  ~PictureRegions();
+  PictureRegions(const PictureRegions&) = delete;
+  PictureRegions& operator=(const PictureRegions&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Columns [x_begin, x_end) of row y as 8-bit RGB (grey spread over R, G and B, alpha
+  // dropped) into `rgb`, which holds (x_end - x_begin) * 3 bytes. The range must lie in the
+  // picture. Throws std::runtime_error naming the file when the pixels cannot be read.
+  void read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) const;
+
+ private:
+  std::filesystem::path path_;
+  std::unique_ptr<png_codec::RegionReader> reader_;
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace l2

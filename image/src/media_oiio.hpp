@@ -1,0 +1,18 @@
+// Pieces of the codec module (png_codec.hpp) its source files share: the opening of picture
+// regions and movies, and the wording of a picture that cannot be opened.
+#pragma once
+
+#include <string>
+
+#include "png_codec.hpp"
+
+namespace l2::png_codec {
+
+// Why OpenImageIO could not open `path`, in one line, in the words of the reader that knows
+// the file's content ("cannot read: a TIFF file: ...").
+std::string open_failed(const char* path);
+
+RegionReader* open_regions(const char* path, std::string* error);  // regions_oiio.cpp
+MovieDecoder* open_movie(const char* path, std::string* error);    // movie_ffmpeg.cpp
+
+}  // namespace l2::png_codec

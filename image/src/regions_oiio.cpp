@@ -1,0 +1,102 @@
+// Picture regions through an OpenImageIO ImageCache of its own: rows are read a tile at a time
+// and the cache evicts tiles beyond its memory limit, so showing part of a picture far larger
+// than memory holds only the tiles around that part.
+#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "media_oiio.hpp"
+
+namespace l2::png_codec {
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+// Bounds what a reader holds in decoded tiles, whatever the picture's size.
+constexpr float kCacheMegabytes = 64;
+// Pictures stored as scanlines are read in tiles of this side as well.
+constexpr int kAutoTile = 64;
+
+std::string first_line(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
+
+struct CacheDeleter {
+  void operator()(OIIO::ImageCache* cache) const { OIIO::ImageCache::destroy(cache); }
+};
+
+class CacheRegions final : public RegionReader {
+ public:
+  CacheRegions(std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache, OIIO::ustring file,
+               const OIIO::ImageSpec& spec)
+      : cache_(std::move(cache)),
+        file_(file),
+        width_(spec.width),
+        height_(spec.height),
+        channels_(spec.nchannels >= 3 ? 3 : 1) {}
+
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+
+  std::string read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) override {
+    // Grey is read into the start of the row and spread over R, G and B from the end back.
+    if (!cache_->get_pixels(file_, 0, 0, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
+                            OIIO::TypeDesc::UINT8, rgb)) {
+      const std::string why = first_line(cache_->geterror());
+      return "cannot read row " + std::to_string(y) + ": " + (why.empty() ? "damaged" : why);
+    }
+    if (channels_ == 1) {
+      for (int i = x_end - x_begin - 1; i >= 0; --i) {
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = rgb[i];
+      }
+    }
+    return {};
+  }
+
+ private:
+  std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache_;
+  OIIO::ustring file_;
+  int width_, height_, channels_;
+};
+
+}  // namespace
+
+RegionReader* open_regions(const char* path, std::string* error) try {
+  // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
+  {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+      *error = open_failed(path);
+      return nullptr;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.deep || spec.depth > 1) {
+      *error = "cannot read: a deep or volume image, not a picture";
+      return nullptr;
+    }
+    if (spec.width <= 0 || spec.height <= 0) {
+      *error = "cannot read: the picture has no pixels";
+      return nullptr;
+    }
+  }
+  std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
+  cache->attribute("max_memory_MB", kCacheMegabytes);
+  cache->attribute("autotile", kAutoTile);
+  const OIIO::ustring file(path);
+  OIIO::ImageSpec spec;
+  if (!cache->get_imagespec(file, spec)) {
+    *error = "cannot read: " + first_line(cache->geterror());
+    return nullptr;
+  }
+  return new CacheRegions(std::move(cache), file, spec);
+} catch (const std::exception& e) {
+  *error = std::string("cannot read: ") + e.what();
+  return nullptr;
+}
+
+}  // namespace l2::png_codec

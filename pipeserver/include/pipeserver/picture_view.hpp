@@ -1,0 +1,30 @@
+// Where a picture or a movie frame (the source) lies on the canvas, frame by frame. Canvas
+// pixel (X, Y) shows source pixel
+//   (floor(centre_x + (X + 0.5 - W / 2) * scale), floor(centre_y + (Y + 0.5 - H / 2) * scale))
+// for a W x H canvas, rows top to bottom in both, and black where that lies outside the
+// source: nearest sampling, so every pixel shown is one of the source's, on every tile alike.
+#pragma once
+
+#include "pipeserver/camera.hpp"
+
+namespace l2 {
+
+struct SourceView {
+  double centre_x = 0, centre_y = 0;  // the source point at the canvas's centre
+  double scale = 1;                   // source pixels per canvas pixel
+};
+
+// Frames a zoom takes to go from the picture's cover view to 1:1 and back.
+inline constexpr int kPictureZoomPeriod = 600;
+
+// The picture scene: frame 0 shows the picture as large as it covers the canvas (all of its
+// width or all of its height), centred; it zooms in to one picture pixel per canvas pixel at
+// frame kPictureZoomPeriod / 2 and out again, panning meanwhile along a Lissajous path that
+// keeps the canvas covered. A picture smaller than the canvas stays at its cover view.
+SourceView picture_view(int frame, int source_width, int source_height, const Canvas& canvas);
+
+// The movie scene: the whole frame, as large as fits the canvas, centred (black bars on the
+// other sides).
+SourceView movie_view(int source_width, int source_height, const Canvas& canvas);
+
+}  // namespace l2

@@ -1,0 +1,190 @@
+// The pipeserver program: renders one pipeserver's frame of a wall (tiles at their packed places,
+// strip headers in the gaps, scanned out to 24-bit RGB) and, on request, the reference render of
+// every display of that frame; or, with --live, a host of `l2wall run`. `pipeserver` is this
+// with the built-in scenes, a program of your own (renderer.hpp) this with your drawing.
+#include "pipeserver/renderer.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <optional>
+
+#include "command_line/options.hpp"
+#include "command_line/parse.hpp"
+#include "image/folders.hpp"
+#include "image/png_io.hpp"
+#include "live_host.hpp"
+#include "pipeserver/pipeserver.hpp"
+#include "pipeserver/scene_cli.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+#include "vizserver/socket.hpp"
+
+namespace {
+
+struct Options {
+  std::string wall;  // empty: the built-in default wall
+  int server = 0;
+  int frame = 0;
+  int count = 1;
+  std::string scene = "mesh";
+  std::string out;
+  std::string reference;
+  l2::SceneOptions scene_options;
+};
+
+void print_times(int server, int frame, const l2::FrameTimes& t) {
+  const double share = 100.0 * t.scanout_ms / t.total_ms();
+  std::printf(
+      "server %d frame %d: render %.2f ms, scan-out with headers %.3f ms "
+      "(%.2f%% of %.2f ms); batches %ld, tile draws %ld, overlap %.2f\n",
+      server, frame, t.render_ms, t.scanout_ms, share, t.total_ms(), t.buckets.batches,
+      t.buckets.tile_draws, t.buckets.overlap_factor());
+}
+
+int run(const Options& o) {
+  const l2::Wall wall = o.wall.empty() ? l2::default_wall() : l2::load_wall(o.wall);
+  const l2::TileLayout layout = l2::plan_layout(wall);
+  for (const auto& w : layout.warnings)
+    std::fprintf(stderr, "pipeserver: warning: %s\n", w.c_str());
+  auto scene = l2::make_scene(o.scene, o.scene_options);
+  // The folders before rendering: a folder that could not be made failed after the work.
+  if (!o.out.empty()) l2::make_folders(o.out, "--out");
+  if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");
+
+  if (!o.out.empty()) {
+    l2::Pipeserver ps(layout, o.server);
+    const l2::RgbImage* frame = nullptr;
+    for (int k = o.frame; k < o.frame + o.count; ++k) {
+      frame = &ps.render_frame(k, *scene);
+      print_times(o.server, k, ps.last_times());
+    }
+    // Named as `tilelayout --scanout` names its frames, so that both route the same way.
+    const auto path = std::filesystem::path(o.out) / fmt::format("scanout-{}.png", o.server);
+    l2::write_png(path, *frame);
+    std::printf("wrote %s (%dx%d, %zu tiles)\n", path.c_str(), frame->width(), frame->height(),
+                ps.plan().tiles.size());
+  }
+  if (!o.reference.empty()) {
+    const int last = o.frame + o.count - 1;
+    for (const auto& d : wall.displays) {
+      const auto path = std::filesystem::path(o.reference) / fmt::format("display-{}.png", d.id);
+      l2::write_png(path, l2::render_reference(layout, d.id, *scene, last));
+      std::printf("wrote %s (reference, display %d, frame %d)\n", path.c_str(), d.id, last);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+namespace l2 {
+
+int run_pipeserver(int argc, char** argv) {
+  CLI::App app{
+      "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
+      "pipeserver --server with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
+      "draws the strip headers of spec §4 with the parity of --frame, and writes the scanned-out\n"
+      "24-bit RGB frame to --out DIR. --reference writes what each display should show for that\n"
+      "frame."};
+  Options o;
+  l2::add_wall_option(app, o.wall, "default: the built-in default wall (walls/kd-2x2.toml)");
+  app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::Range(0, 4095));
+  app.add_option("--frame", o.frame, "application frame number (animation, header parity k mod 2)")
+      ->check(CLI::Range(0, 1 << 30));
+  app.add_option("--count", o.count,
+                 "render frames --frame .. --frame+count-1 (times printed for each); the last is "
+                 "written")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--scene", o.scene,
+                 "mesh | strips | isosurface | patches | swap | picture | movie")
+      ->check(CLI::IsMember(l2::scene_names()));
+  l2::add_out_option(app, o.out, "scanout-<server>.png, the scanned-out frame");
+  app.add_option("--reference", o.reference,
+                 "folder for the reference render of each display (display-<id>.png)")
+      ->type_name("DIR");
+  const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(app, o.scene_options);
+  // Live host mode: the run (l2wall run) starts one of these per pipeserver.
+  bool live = false;
+  l2::LiveHostOptions live_options;
+  auto* group = app.add_option_group(
+      "live",
+      "live host mode, as started by `l2wall run` (DVI link in shared memory, READY on "
+      "a serial back-channel)");
+  CLI::Option* const live_flag =
+      group->add_flag("--live", live,
+                      "render --frames frames into the DVI link --link, waiting for READY k-1 on "
+                      "--backchannel before publishing frame k");
+  group->add_option("--frames", live_options.frames, "live: number of frames")
+      ->check(CLI::Range(1, 1 << 30));
+  group->add_option("--link", live_options.link, "live: shared-memory name to create (/l2-...)");
+  group->add_option("--backchannel", live_options.backchannel,
+                    "live: serial device of the back-channel (for example a pty slave)");
+  group
+      ->add_option("--viz", live_options.viz,
+                   "live: host:port of a compositing server; every tile is also sent there "
+                   "(its HELLO carries the run token in L2_VIZ_TOKEN, if set)")
+      ->check(l2::viz::endpoint_error, "HOST:PORT");
+  group->add_option("--report", live_options.report,
+                    "live: file receiving one line per frame (render and READY wait times)");
+  l2::add_timeout_option(*group, "ready-timeout", live_options.ready_timeout_ms, false,
+                         "per READY wait before asking again with SYNC? (live); a wait for the "
+                         "compositing server's SWAPPED (--viz) may last this x (--ready-retries "
+                         "+ 1) (l2wall run passes 1000)");
+  group
+      ->add_option("--ready-retries", live_options.ready_retries,
+                   "live: SYNC? retries before giving up")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  // Every live option needs --live: without it they were ignored and one frame was written.
+  for (CLI::Option* option : group->get_options()) {
+    if (option != live_flag) option->needs(live_flag);
+  }
+  app.callback([&] { l2::check_scene_options(scene_options, o.scene); });
+  bool print_gl_info = false;
+  app.add_flag("--gl-info", print_gl_info,
+               "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
+               "on them: golden images record them) and exit");
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
+  if (print_gl_info) {
+    const l2::GlInfo gl = l2::gl_info();
+    std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\n", gl.version.c_str(),
+                gl.renderer.c_str(), gl.mesa_version().c_str());
+    return 0;
+  }
+  if (live) {
+    const bool dvi = !live_options.link.empty() && !live_options.backchannel.empty();
+    const bool half_dvi = live_options.link.empty() != live_options.backchannel.empty();
+    if (half_dvi || (!dvi && live_options.viz.empty())) {
+      std::fprintf(stderr, "pipeserver: --live needs --link with --backchannel, or --viz\n");
+      return 2;
+    }
+    live_options.wall = o.wall;
+    live_options.server = o.server;
+    live_options.scene = o.scene;
+    live_options.scene_options = o.scene_options;
+    try {
+      return l2::run_live_host(live_options);
+    } catch (const l2::viz::VizError& e) {
+      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+      return l2::kExitLostCompositingServer;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+      return 1;
+    }
+  }
+  if (o.out.empty() && o.reference.empty()) {
+    std::fprintf(stderr, "pipeserver: nothing to do: give --out and/or --reference\n");
+    return 2;
+  }
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pipeserver: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace l2

@@ -1,0 +1,42 @@
+// `picture`: a still picture, of any size and format OpenImageIO reads, panned and zoomed
+// across the canvas (picture_view.hpp). Each tile reads only the rows and columns it shows,
+// through an image cache of bounded size, so a pipeserver never holds the whole picture.
+#include "image/picture_regions.hpp"
+#include "scene_common.hpp"
+#include "source_fill.hpp"
+
+namespace l2::detail {
+
+namespace {
+
+class PictureScene : public Scene {
+ public:
+  explicit PictureScene(const std::filesystem::path& file) : picture_(file) { lit_ = false; }
+  const char* name() const override { return "picture"; }
+
+  bool fill_tile(const Canvas& canvas, const Rect& on_canvas, RgbImage& rgb) const override {
+    const SourceView view = picture_view(frame_, picture_.width(), picture_.height(), canvas);
+    fill_from_source(
+        view, picture_.width(), picture_.height(), canvas, on_canvas,
+        [this](int y, int x_begin, int x_end, std::uint8_t* out) {
+          picture_.read_row(y, x_begin, x_end, out);
+        },
+        rgb);
+    return true;
+  }
+
+ protected:
+  void animate(int frame) override { frame_ = frame; }
+
+ private:
+  PictureRegions picture_;
+  int frame_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file) {
+  return std::make_unique<PictureScene>(file);
+}
+
+}  // namespace l2::detail

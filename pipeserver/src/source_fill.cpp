@@ -1,0 +1,62 @@
+#include "source_fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace l2::detail {
+
+namespace {
+
+// The source pixel canvas pixel `x` of a canvas `size` wide shows along one axis; out of
+// [0, source_size) means none.
+long source_index(double centre, double scale, int size, int x) {
+  return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
+}
+
+}  // namespace
+
+void fill_from_source(const SourceView& view, int source_width, int source_height,
+                      const Canvas& canvas, const Rect& on_canvas, const SourceRows& rows,
+                      RgbImage& rgb) {
+  if (rgb.width() != on_canvas.w || rgb.height() != on_canvas.h) {
+    rgb = RgbImage(on_canvas.w, on_canvas.h);
+  }
+  // The tile's source columns, and the span of the source row that holds them all.
+  std::vector<long> columns(static_cast<std::size_t>(on_canvas.w));
+  long first = source_width, last = -1;
+  for (int i = 0; i < on_canvas.w; ++i) {
+    const long sx = source_index(view.centre_x, view.scale, canvas.width, on_canvas.x + i);
+    columns[static_cast<std::size_t>(i)] = sx;
+    if (sx >= 0 && sx < source_width) {
+      first = std::min(first, sx);
+      last = std::max(last, sx);
+    }
+  }
+  std::vector<std::uint8_t> span(last >= first ? static_cast<std::size_t>(last - first + 1) * 3
+                                               : 0);
+  long span_row = -1;  // the source row in `span`
+  for (int j = 0; j < on_canvas.h; ++j) {
+    std::uint8_t* out = rgb.row(j).data();
+    const long sy = source_index(view.centre_y, view.scale, canvas.height, on_canvas.y + j);
+    if (span.empty() || sy < 0 || sy >= source_height) {
+      std::memset(out, 0, rgb.stride());
+      continue;
+    }
+    if (sy != span_row) {
+      rows(static_cast<int>(sy), static_cast<int>(first), static_cast<int>(last + 1), span.data());
+      span_row = sy;
+    }
+    for (int i = 0; i < on_canvas.w; ++i) {
+      const long sx = columns[static_cast<std::size_t>(i)];
+      if (sx < first || sx > last) {
+        std::memset(out + 3 * i, 0, 3);
+      } else {
+        std::memcpy(out + 3 * i, span.data() + 3 * (sx - first), 3);
+      }
+    }
+  }
+}
+
+}  // namespace l2::detail

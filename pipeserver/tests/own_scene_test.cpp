@@ -1,0 +1,62 @@
+// A program's own drawing (renderer.hpp) on a small wall: every display reassembles to its
+// reference render, also when the drawing leaves the matrices changed (each tile starts as the
+// first did), and the drawing is given the frame and each tile's rectangle.
+#include <GL/gl.h>
+#include <gtest/gtest.h>
+
+#include "pipeserver/pipeserver.hpp"
+#include "pipeserver/renderer.hpp"
+#include "test_support.hpp"
+
+namespace l2 {
+namespace {
+
+// A large orange triangle turned by the frame number, the modelview left turned on return.
+void careless_triangle(const TileView& view) {
+  glRotatef(20.0f * static_cast<float>(view.frame) + 10.0f, 0, 0, 1);
+  glBegin(GL_TRIANGLES);
+  glColor3f(1.0f, 0.5f, 0.0f);
+  glVertex3f(-0.9f, -0.7f, 0.0f);
+  glVertex3f(0.9f, -0.7f, 0.0f);
+  glVertex3f(0.0f, 0.9f, 0.0f);
+  glEnd();
+}
+
+TEST(OwnScene, ReassemblesToTheReferenceWhateverTheDrawingLeavesBehind) {
+  const TileLayout layout = test::small_layout(3, 40, 20, 120, 120);
+  auto scene = make_own_scene(careless_triangle);
+  for (const int frame : {0, 3}) {
+    const auto check = test::check_wall(layout, *scene, frame);
+    EXPECT_EQ(check.reassembly.errors.total(), 0u);
+    long orange = 0;
+    for (std::size_t d = 0; d < check.diffs.size(); ++d) {
+      // One colour rounded to the neighbouring level at most (tile_render_test.cpp says why).
+      EXPECT_LE(check.diffs[d].pixels_differing, 1) << "frame " << frame << " display " << d;
+      EXPECT_EQ(check.diffs[d].pixels_beyond_one, 0) << "frame " << frame << " display " << d;
+      const RgbImage& shown = check.reassembly.displays[d];
+      for (int y = 0; y < shown.height(); ++y)
+        for (int x = 0; x < shown.width(); ++x) orange += shown.at(x, y) == Rgb{255, 128, 0};
+    }
+    EXPECT_GT(orange, 1000) << "frame " << frame;  // of 2 x 64 x 48 display pixels
+  }
+}
+
+TEST(OwnScene, TheDrawingIsGivenTheFrameAndEachTile) {
+  const TileLayout layout = test::small_layout(1, 40, 20, 200, 200);
+  std::vector<Rect> tiles;
+  std::vector<int> frames;
+  auto scene = make_own_scene([&](const TileView& view) {
+    tiles.push_back(view.on_canvas);
+    frames.push_back(view.frame);
+    EXPECT_EQ(view.canvas.width, layout.wall.canvas_width);
+  });
+  Pipeserver(layout, 0).render_frame(7, *scene);
+  ASSERT_EQ(tiles.size(), layout.servers[0].tiles.size());
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    EXPECT_EQ(tiles[i], layout.servers[0].tiles[i].tile.on_canvas);
+    EXPECT_EQ(frames[i], 7);
+  }
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,108 @@
+// The picture scene on a small wall: the routed displays equal the picture's pixels as the
+// view samples them (worked out here from the picture's formula), zoomed out, half way and at
+// 1:1; and the view's path keeps the canvas covered.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "image/png_io.hpp"
+#include "pipeserver/picture_view.hpp"
+#include "pipeserver/pipeserver.hpp"
+#include "test_support.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+Rgb pattern(int x, int y) {
+  return {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y),
+          static_cast<std::uint8_t>(x / 7 + y / 5)};
+}
+
+constexpr int kWidth = 600, kHeight = 400;
+
+fs::path write_pattern(const fs::path& path) {
+  RgbImage picture(kWidth, kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) picture.set(x, y, pattern(x, y));
+  write_png(path, picture);
+  return path;
+}
+
+long sampled(double centre, double scale, int size, int x) {
+  return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
+}
+
+TEST(PictureView, FrameZeroShowsAWholeSideCentred) {
+  const SourceView v = picture_view(0, kWidth, kHeight, {136, 48});
+  EXPECT_DOUBLE_EQ(v.scale, 600.0 / 136);  // the width: 600/136 < 400/48
+  EXPECT_DOUBLE_EQ(v.centre_x, 300);
+  EXPECT_DOUBLE_EQ(v.centre_y, 200);
+  // Half a period on, one picture pixel per canvas pixel.
+  EXPECT_NEAR(picture_view(kPictureZoomPeriod / 2, kWidth, kHeight, {136, 48}).scale, 1, 1e-12);
+  // A picture smaller than the canvas is magnified to cover it, and stays so.
+  EXPECT_DOUBLE_EQ(picture_view(77, 68, 12, {136, 48}).scale, 0.25);
+}
+
+TEST(PictureView, TheCanvasStaysCoveredAllAlongThePath) {
+  const Canvas canvas{136, 48};
+  for (int k = 0; k < 3000; k += 7) {
+    const SourceView v = picture_view(k, kWidth, kHeight, canvas);
+    EXPECT_GE(sampled(v.centre_x, v.scale, canvas.width, 0), 0) << k;
+    EXPECT_LT(sampled(v.centre_x, v.scale, canvas.width, canvas.width - 1), kWidth) << k;
+    EXPECT_GE(sampled(v.centre_y, v.scale, canvas.height, 0), 0) << k;
+    EXPECT_LT(sampled(v.centre_y, v.scale, canvas.height, canvas.height - 1), kHeight) << k;
+  }
+}
+
+TEST(PictureScene, RoutedDisplaysArePicturePixels) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("picture-scene-{}", getpid());
+  SceneOptions options;
+  options.content = write_pattern(dir / "pattern.png");
+  auto scene = make_scene("picture", options);
+  const TileLayout layout = test::small_layout(3, 40, 20, 120, 120);
+  const Canvas canvas = canvas_of(layout.wall);
+  for (const int frame : {0, kPictureZoomPeriod / 4, kPictureZoomPeriod / 2}) {
+    std::vector<RgbImage> frames;
+    for (int s = 0; s < 3; ++s) frames.push_back(Pipeserver(layout, s).render_frame(frame, *scene));
+    const auto r = test::reassemble(layout.wall, frames);
+    EXPECT_EQ(r.errors.total(), 0u);
+    const SourceView v = picture_view(frame, kWidth, kHeight, canvas);
+    for (const Display& d : layout.wall.displays) {
+      const RgbImage& shown = r.displays[static_cast<std::size_t>(d.id)];
+      const Rect on = d.on_canvas();
+      long wrong = 0;
+      for (int y = 0; y < shown.height(); ++y) {
+        const long sy = sampled(v.centre_y, v.scale, canvas.height, on.y + y);
+        for (int x = 0; x < shown.width(); ++x) {
+          const long sx = sampled(v.centre_x, v.scale, canvas.width, on.x + x);
+          wrong += !(shown.at(x, y) == pattern(static_cast<int>(sx), static_cast<int>(sy)));
+        }
+      }
+      EXPECT_EQ(wrong, 0) << "frame " << frame << " display " << d.id;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(PictureScene, ADamagedPictureIsOneLine) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("picture-bad-{}", getpid());
+  fs::create_directories(dir);
+  SceneOptions options;
+  options.content = dir / "text.png";
+  std::ofstream(options.content) << "not a picture\n";
+  try {
+    make_scene("picture", options);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), options.content.string() + ": cannot read: Not a PNG file");
+  }
+  options.content.clear();
+  EXPECT_THROW(make_scene("movie", options), std::invalid_argument);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace l2
