@@ -34,10 +34,11 @@ TEST(ExampleRenderer, LiveFramesRouteExactlyAndShowItsDrawing) {
   std::vector<std::string> route{LIGHTNING2_EMU_PATH, "route", "--wall",
                                  wall_file.string(),  "--out", (dir / "routed").string()};
   for (const ServerPlan& plan : layout.servers) {
-    const fs::path frame = dir / fmt::format("server-{}.png", plan.server);
+    // pipeserver's --out is a folder: it writes scanout-<server>.png into it.
+    const fs::path frame = dir / fmt::format("scanout-{}.png", plan.server);
     ASSERT_TRUE(run_to_end({SPINNING_CUBES_PATH, "--wall", wall_file.string(), "--server",
                             std::to_string(plan.server), "--frame", std::to_string(k), "--out",
-                            frame.string()}));
+                            dir.string()}));
     route.push_back(frame.string());
   }
   ASSERT_TRUE(run_to_end(route));

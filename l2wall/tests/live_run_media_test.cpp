@@ -170,7 +170,7 @@ TEST_F(Media, PictureFillsTheWideWall) {
   expect_clean(run);
 }
 
-// The peak resident memory of `pipeserver --out FILE` with `args`, in KiB.
+// The peak resident memory of `pipeserver --out DIR` with `args`, in KiB.
 long pipeserver_peak_kib(const fs::path& out, std::vector<std::string> args) {
   args.insert(args.begin(), L2_PIPESERVER_PATH);
   args.insert(args.end(), {"--count", "2", "--out", out.string()});
@@ -190,7 +190,7 @@ long pipeserver_peak_kib(const fs::path& out, std::vector<std::string> args) {
 // size. Its libraries (OSMesa, OpenImageIO's) are a large part of any pipeserver's memory, so
 // what the picture adds is measured against the same pipeserver showing the swap scene.
 TEST_F(Media, PipeserverHoldsAPartOfThePicture) {
-  const fs::path out = dir_ / "server-0.png";
+  const fs::path out = dir_ / "scanout";
   const long picture_kib = 3L * kPictureSide * kPictureSide / 1024;
   const long swap = pipeserver_peak_kib(out, {"--scene", "swap"});
   const long shown =
@@ -282,11 +282,13 @@ std::pair<int, std::string> refused(const std::string& name, std::vector<std::st
 TEST_F(Media, MissingDamagedOrEmptyContentIsOneLine) {
   const std::string usage = "Run with --help for more information.\n";
   EXPECT_EQ(refused("no-content", {"--scene", "picture"}),
-            std::pair(2, "--scene picture needs --content FILE\n" + usage));
-  EXPECT_EQ(refused("missing", {"--scene", "movie", "--content", "/nonexistent/movie.mkv"}),
-            std::pair(2, "--content: File does not exist: /nonexistent/movie.mkv\n" + usage));
+            std::pair(2, "l2wall: --scene picture needs --content FILE\n" + usage));
+  EXPECT_EQ(
+      refused("missing", {"--scene", "movie", "--content", "/nonexistent/movie.mkv"}),
+      std::pair(2, "l2wall: --content: File does not exist: /nonexistent/movie.mkv\n" + usage));
   EXPECT_EQ(refused("wrong-scene", {"--scene", "mesh", "--content", picture().string()}),
-            std::pair(2, "--content is an option of --scene picture or movie, not mesh\n" + usage));
+            std::pair(2, "l2wall: --content is an option of --scene picture or movie, not mesh\n" +
+                             usage));
 
   const fs::path empty = dir_ / "empty.tif";
   std::ofstream{empty};
