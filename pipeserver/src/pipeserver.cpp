@@ -6,6 +6,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "pipeserver/depth_out.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "pipeserver/tile_renderer.hpp"
 
@@ -26,6 +27,12 @@ const ServerPlan& plan_of(const TileLayout& layout, int server) {
                                         static_cast<int>(layout.servers.size()) - 1));
   }
   return layout.servers[static_cast<std::size_t>(server)];
+}
+
+glm::vec3 key_colour(std::uint32_t key) {
+  return glm::vec3(static_cast<float>(key >> 16 & 0xFF), static_cast<float>(key >> 8 & 0xFF),
+                   static_cast<float>(key & 0xFF)) /
+         255.0f;
 }
 
 }  // namespace
@@ -56,11 +63,14 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
   scene.set_frame(frame);
 
   auto t0 = Clock::now();
-  TileRenderer renderer(scene, canvas_);
+  TileRenderer renderer(scene, canvas_, {plan_.layer, plan_.layers});
   for (const PackedTile& p : plan_.tiles) {
     const Rect& r = p.tile.on_canvas;
-    // Packed rows count from the top; GL windows from the bottom.
-    renderer.draw_tile(r, p.fb_x, plan_.fb_height - p.fb_y - r.h);
+    // Packed rows count from the top; GL windows from the bottom. A KEY tile is cleared to its
+    // key colour, so what it does not draw is transparent (spec §7).
+    const glm::vec3 clear =
+        p.tile.compositing == Compositing::Key ? key_colour(p.tile.key) : scene.clear_colour();
+    renderer.draw_tile(r, p.fb_x, plan_.fb_height - p.fb_y - r.h, clear);
   }
   glFinish();
   times_.render_ms = ms_since(t0);
@@ -70,6 +80,7 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
   // words, and the render left the gaps black (the scissor keeps tiles out of them).
   t0 = Clock::now();
   scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height, dst, headers_[frame_parity(frame) ? 1 : 0]);
+  scan_out_depth(plan_, plan_.layer == 0 ? kFarDepth - 1 : kFarDepth, dst);
   times_.scanout_ms = ms_since(t0);
   return dst.first(bytes);
 }
