@@ -86,22 +86,21 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometrySha
   }
 }
 
-void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
-  draw_tile(on_canvas, gl_x, gl_y, scene_.clear_colour());
+void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
+  draw_tile(on_canvas, window, scene_.clear_colour());
 }
 
-void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y, glm::vec3 clear) {
-  glViewport(gl_x, gl_y, on_canvas.w, on_canvas.h);
-  glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
+void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear) {
+  glViewport(0, 0, window.w, window.h);
+  // GL rows count from the bottom of the window.
+  glScissor(on_canvas.x - window.x, window.bottom() - on_canvas.bottom(), on_canvas.w, on_canvas.h);
   glEnable(GL_SCISSOR_TEST);
-  // Only the tile takes the scene's colour: the rest of the framebuffer stays black, as the
-  // header gaps and unused rows must (the mesh would read a colour there as strip headers).
-  if (clear != glm::vec3(0.0f)) {
-    glClearColor(clear.r, clear.g, clear.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
+  // Only the tile is cleared: the window may hold tiles of another display from before, and
+  // in a framebuffer the rest must stay black (the mesh would read colour there as headers).
+  glClearColor(clear.r, clear.g, clear.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glMatrixMode(GL_PROJECTION);
-  const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
+  const glm::dmat4 projection = tile_matrix(canvas_, window) * glm::dmat4(camera_.projection);
   glLoadMatrixd(glm::value_ptr(projection));
   glMatrixMode(GL_MODELVIEW);
   const auto& batches = scene_.batches();

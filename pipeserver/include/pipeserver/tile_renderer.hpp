@@ -1,6 +1,9 @@
 // Draws a scene into tiles of the current GL context, sort-first: same camera for every tile,
-// the tile's translate/scale prepended to the projection, viewport and scissor on the tile's
-// place in the framebuffer, and only the batches whose footprint overlaps the tile.
+// and each tile drawn exactly as the window of its display draws it — the display's
+// translate/scale prepended to the projection, the display's viewport — scissored to the tile,
+// with only the batches whose footprint overlaps the tile. So every tile's pixels are the
+// display-sized render's pixels bit for bit: llvmpipe's rounding depends on window
+// coordinates, and even an integer shift of the viewport changes a few colours by a level.
 #pragma once
 
 #include <vector>
@@ -28,11 +31,12 @@ class TileRenderer {
   // to draw.
   TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share = {});
 
-  // Draws the canvas rectangle `on_canvas` into the framebuffer rectangle whose lower-left
-  // corner is (gl_x, gl_y) in GL window coordinates (rows bottom to top), first clearing it to
-  // `clear` (0..1 per channel; the scene's clear colour by default) when that is not black.
-  void draw_tile(const Rect& on_canvas, int gl_x, int gl_y);
-  void draw_tile(const Rect& on_canvas, int gl_x, int gl_y, glm::vec3 clear);
+  // Draws canvas rectangle `on_canvas` as the window showing canvas rectangle `window` — the
+  // current framebuffer, window.w x window.h, its row 0 the window's bottom row — draws it:
+  // only the part inside `on_canvas`, first cleared to `clear` (0..1 per channel; the scene's
+  // clear colour by default) and the far depth.
+  void draw_tile(const Rect& on_canvas, const Rect& window);
+  void draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear);
 
   const BucketStats& stats() const { return stats_; }
 
