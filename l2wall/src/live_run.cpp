@@ -106,14 +106,6 @@ class LiveRun {
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
   // the compositing server, whose frames are taken (and compared) as the lead swaps.
   void make_paths() {
-    // The compositing server places tiles as COPY strips: it would show a depth wall's last
-    // layer, not the composite.
-    if (o_.path != "dvi" && (wall_.depth_layers != 0 || wall_.overlay)) {
-      throw std::invalid_argument(
-          "--path " + o_.path +
-          ": the compositing server does not composite KEY or DEPTH tiles (the wall has "
-          "[depth] or [overlay]); run it on --path dvi");
-    }
     if (o_.path != "vizserver") {
       paths_.push_back(std::make_unique<DviPath>(wall_, o_.threads, layout_.servers.size(),
                                                  o_.refresh_hz, o_.frames, o_.drop_ready));

@@ -66,7 +66,8 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
 }
 
 // The DVI path (shared memory, emulated Lightning-2) and the vizserver path (tiles over TCP to
-// a compositing server) give the same displays, byte for byte, on two example walls.
+// a compositing server) give the same displays, byte for byte, on four example walls: two
+// sort-first, the sort-last and the hybrid one (DEPTH and KEY tiles composited on both).
 struct WallCase {
   const char* file;
   int displays, servers;
@@ -115,21 +116,9 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
 
 INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                          ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
-                                           WallCase{"projectors-2x1.toml", 2, 3}));
-
-// The compositing server places tiles as COPY strips, so a wall that composites by key or depth
-// is refused there before any host starts, in one line.
-TEST(LiveRun, CompositingWallsAreRefusedOnTheVizserverPath) {
-  WallRun run("viz-depth", {fmt::format("{}/walls/hybrid-2x1.toml", L2_SOURCE_DIR), "--frames", "2",
-                            "--path", "both"});
-  const ExitStatus status = run.wait(30s);
-  EXPECT_FALSE(status.ok());
-  EXPECT_NE(run.output().find("l2wall: --path both: the compositing server does not composite "
-                              "KEY or DEPTH tiles (the wall has [depth] or [overlay]); run it on "
-                              "--path dvi\n"),
-            std::string::npos)
-      << run.output();
-}
+                                           WallCase{"projectors-2x1.toml", 2, 3},
+                                           WallCase{"sort-last-512x384.toml", 1, 3},
+                                           WallCase{"hybrid-2x1.toml", 2, 5}));
 
 TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
   WallRun run("viz", {"--frames", "4", "--path", "vizserver", "--keep", "every"});

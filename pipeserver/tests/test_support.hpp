@@ -21,7 +21,7 @@ struct Reassembly {
   StripErrorCounts errors;
   long copies = 0;
   long copied_pixels = 0;
-  long composited_pixels = 0;  // of KEY and DEPTH strips
+  long composited_pixels = 0;      // of KEY and DEPTH strips
   std::vector<int> parities_seen;  // frame bit of every COPY/SKIP header, once per value seen
 };
 
