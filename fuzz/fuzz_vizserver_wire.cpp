@@ -57,8 +57,10 @@ std::size_t take_message(std::span<const std::uint8_t> bytes) {
   if (bytes.size() < viz::kHeaderBytes + fixed) return 0;
   const auto message = bytes.first(viz::kHeaderBytes + fixed);
   std::size_t variable = h.payload_bytes - fixed;
-  if (h.kind == viz::Kind::Tile) {
-    const viz::TileHeader t = viz::decode_tile(message.subspan(viz::kHeaderBytes));
+  if (h.kind == viz::Kind::Tile || h.kind == viz::Kind::TileExt) {
+    const bool ext = h.kind == viz::Kind::TileExt;
+    const auto fixed_part = message.subspan(viz::kHeaderBytes);
+    const viz::TileHeader t = ext ? viz::decode_tile_ext(fixed_part) : viz::decode_tile(fixed_part);
     if (auto bad = viz::validate(t, h.payload_bytes)) {
       l2::fuzz::require_one_line(*bad, "a refused TILE has a one-line reason");
       return 0;
@@ -66,7 +68,8 @@ std::size_t take_message(std::span<const std::uint8_t> bytes) {
     require(t.w >= 1 && t.w <= viz::kMaxTileSide && t.h >= 1 && t.h <= viz::kMaxTileSide,
             "a valid TILE's sides are 1..4095");
     require(t.pixel_bytes() == variable, "a valid TILE's pixels are its payload after 24 bytes");
-    require(same_bytes(viz::encode(t), message), "a valid TILE header encodes back the same");
+    require(ext ? same_bytes(viz::encode_ext(t), message) : same_bytes(viz::encode(t), message),
+            "a valid TILE header encodes back the same");
   } else {
     require(h.kind == viz::Kind::Error || variable == 0, "fixed kinds have no variable part");
     require(round_trips(h.kind, message), "a fixed part encodes back to the same bytes");

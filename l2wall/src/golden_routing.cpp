@@ -7,6 +7,7 @@
 
 #include "image/png_io.hpp"
 #include "lightning2_emu/emulator.hpp"
+#include "pipeserver/viz_target.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "vizserver/compositing_server.hpp"
@@ -77,8 +78,7 @@ std::vector<RgbImage> compose_on_vizserver(const TileLayout& layout,
   for (const ServerPlan& plan : layout.servers) {
     const RgbImage& fb = frames.at(plan.server);
     for (const PackedTile& t : plan.tiles) {
-      const Rect& r = t.tile.on_display;
-      senders[plan.server].send_tile(k, {t.tile.display, r.x, r.y, r.w, r.h},
+      senders[plan.server].send_tile(k, viz_target(t.tile),
                                      fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3,
                                      fb.stride());
     }

@@ -66,7 +66,8 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
 }
 
 // The DVI path (shared memory, emulated Lightning-2) and the vizserver path (tiles over TCP to
-// a compositing server) give the same displays, byte for byte, on two example walls.
+// a compositing server) give the same displays, byte for byte, on four example walls: two
+// sort-first, the sort-last and the hybrid one (DEPTH and KEY tiles composited on both).
 struct WallCase {
   const char* file;
   int displays, servers;
@@ -115,7 +116,9 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
 
 INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                          ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
-                                           WallCase{"projectors-2x1.toml", 2, 3}));
+                                           WallCase{"projectors-2x1.toml", 2, 3},
+                                           WallCase{"sort-last-512x384.toml", 1, 3},
+                                           WallCase{"hybrid-2x1.toml", 2, 5}));
 
 TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
   WallRun run("viz", {"--frames", "4", "--path", "vizserver", "--keep", "every"});

@@ -11,6 +11,7 @@
 
 #include "dvi_link/dvi_link.hpp"
 #include "pipeserver/pipeserver.hpp"
+#include "pipeserver/viz_target.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -67,9 +68,8 @@ struct Report {
 // to the compositing server over TCP.
 void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {
-    const Rect& r = t.tile.on_display;
-    const viz::TileTarget target{t.tile.display, r.x, r.y, r.w, r.h};
-    sender.send_tile(static_cast<std::uint32_t>(frame), target, fb.at(t.fb_x, t.fb_y), fb.stride);
+    sender.send_tile(static_cast<std::uint32_t>(frame), viz_target(t.tile), fb.at(t.fb_x, t.fb_y),
+                     fb.stride);
   }
   sender.finish_frame(static_cast<std::uint32_t>(frame),
                       static_cast<std::uint32_t>(plan.tiles.size()));

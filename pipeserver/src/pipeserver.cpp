@@ -3,9 +3,12 @@
 #include <GL/gl.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 
+#include "pipeserver/depth_out.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "pipeserver/tile_renderer.hpp"
 
@@ -28,14 +31,43 @@ const ServerPlan& plan_of(const TileLayout& layout, int server) {
   return layout.servers[static_cast<std::size_t>(server)];
 }
 
+glm::vec3 key_colour(std::uint32_t key) {
+  return glm::vec3(static_cast<float>(key >> 16 & 0xFF), static_cast<float>(key >> 8 & 0xFF),
+                   static_cast<float>(key & 0xFF)) /
+         255.0f;
+}
+
 }  // namespace
 
 Pipeserver::Pipeserver(const TileLayout& layout, int server)
     : plan_(plan_of(layout, server)),
       canvas_(canvas_of(layout.wall)),
-      gl_(plan_.fb_width, plan_.fb_height),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
-      frame_(plan_.fb_width, plan_.fb_height) {}
+      frame_(plan_.fb_width, plan_.fb_height) {
+  // One GL context per display size: tiles of displays of one size share it, one display at
+  // a time, each tile clearing its own rectangle.
+  std::vector<std::pair<int, int>> sizes;
+  for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
+    const Display& d =
+        layout.wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
+    const auto size = std::pair{d.width, d.height};
+    const auto at = std::find(sizes.begin(), sizes.end(), size);
+    const std::size_t context = static_cast<std::size_t>(at - sizes.begin());
+    if (at == sizes.end()) {
+      sizes.push_back(size);
+      contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
+    }
+    auto w = std::find_if(windows_.begin(), windows_.end(),
+                          [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
+    if (w == windows_.end()) {
+      windows_.push_back({d.on_canvas(), context, {}});
+      w = windows_.end() - 1;
+    }
+    w->tiles.push_back(i);
+  }
+  std::stable_sort(windows_.begin(), windows_.end(),
+                   [](const Window& a, const Window& b) { return a.context < b.context; });
+}
 
 RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
   render_frame(frame, scene, frame_.bytes());
@@ -44,7 +76,7 @@ RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
 
 std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
                                                  std::span<std::uint8_t> dst) {
-  // Checked here although scan_out checks again: a short buffer is refused before the render.
+  // A short buffer is refused before the render.
   const std::size_t bytes =
       static_cast<std::size_t>(plan_.fb_width) * static_cast<std::size_t>(plan_.fb_height) * 3;
   if (dst.size() < bytes) {
@@ -52,33 +84,60 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
         fmt::format("pipeserver {}: frame buffer of {} bytes, a {}x{} frame needs {}", plan_.server,
                     dst.size(), plan_.fb_width, plan_.fb_height, bytes));
   }
-  gl_.make_current();
   scene.set_frame(frame);
-
-  auto t0 = Clock::now();
-  TileRenderer renderer(scene, canvas_);
-  for (const PackedTile& p : plan_.tiles) {
-    const Rect& r = p.tile.on_canvas;
-    // Packed rows count from the top; GL windows from the bottom.
-    renderer.draw_tile(r, p.fb_x, plan_.fb_height - p.fb_y - r.h);
+  // Every pixel is written: black first, then the tiles, then the headers over the gaps.
+  std::memset(dst.data(), 0, bytes);
+  times_ = {};
+  render_windows(scene, dst);
+  const auto t0 = Clock::now();
+  const FrameHeaders& headers = headers_[frame_parity(frame) ? 1 : 0];
+  const std::size_t row_bytes = static_cast<std::size_t>(plan_.fb_width) * 3;
+  for (int y = 0; y < plan_.fb_height; ++y) {
+    headers.draw_row(y, dst.subspan(static_cast<std::size_t>(y) * row_bytes, row_bytes));
   }
-  glFinish();
-  times_.render_ms = ms_since(t0);
-  times_.buckets = renderer.stats();
-
-  // Headers go in during scan-out, each scanline's right after it is converted: they are RGB
-  // words, and the render left the gaps black (the scissor keeps tiles out of them).
-  t0 = Clock::now();
-  scan_out(gl_.rgba(), plan_.fb_width, plan_.fb_height, dst, headers_[frame_parity(frame) ? 1 : 0]);
-  times_.scanout_ms = ms_since(t0);
+  times_.scanout_ms += ms_since(t0);
   return dst.first(bytes);
+}
+
+void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
+  // Layer 0 sends its clear nearer than the far plane (depth_out.hpp).
+  const std::uint32_t far_as = plan_.layer == 0 ? kFarDepth - 1 : kFarDepth;
+  std::unique_ptr<TileRenderer> renderer;
+  std::size_t context = contexts_.size();
+  for (const Window& w : windows_) {
+    auto t0 = Clock::now();
+    if (w.context != context) {
+      context = w.context;
+      contexts_[context]->make_current();
+      renderer =
+          std::make_unique<TileRenderer>(scene, canvas_, GeometryShare{plan_.layer, plan_.layers});
+    }
+    for (int i : w.tiles) {
+      const DisplayTile& t = plan_.tiles[static_cast<std::size_t>(i)].tile;
+      // A KEY tile is cleared to its key colour: what it does not draw is transparent (§7).
+      renderer->draw_tile(
+          t.on_canvas, w.on_canvas,
+          t.compositing == Compositing::Key ? key_colour(t.key) : scene.clear_colour());
+    }
+    glFinish();
+    times_.render_ms += ms_since(t0);
+    t0 = Clock::now();
+    for (int i : w.tiles) {
+      const PackedTile& p = plan_.tiles[static_cast<std::size_t>(i)];
+      const TileInWindow from{*contexts_[context], p.tile.on_canvas.x - w.on_canvas.x,
+                              p.tile.on_canvas.y - w.on_canvas.y};
+      copy_tile_out(p, from, far_as, dst, plan_.fb_width);
+    }
+    times_.scanout_ms += ms_since(t0);
+  }
+  if (renderer) times_.buckets = renderer->stats();
 }
 
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {
   GlContext gl(rect.w, rect.h);
   scene.set_frame(frame);
   TileRenderer renderer(scene, canvas);
-  renderer.draw_tile(rect, 0, 0);
+  renderer.draw_tile(rect, rect);
   glFinish();
   RgbImage image(rect.w, rect.h);
   scan_out(gl.rgba(), rect.w, rect.h, image.bytes());

@@ -100,6 +100,13 @@ void scan_out_rows(const std::uint8_t* rgba, int width, int height, std::uint8_t
 
 }  // namespace
 
+void rgba_to_rgb_row(const std::uint8_t* rgba, std::uint8_t* rgb, int width) {
+#ifdef L2_SCAN_OUT_SSSE3
+  if (have_ssse3()) return rgba_row_to_rgb_ssse3(rgba, rgb, width);
+#endif
+  rgba_row_to_rgb(rgba, rgb, width);
+}
+
 void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb) {
   check_destination(width, height, dst_rgb);
   scan_out_rows(rgba, width, height, dst_rgb.data(), [](int, std::span<std::uint8_t>) {});

@@ -3,6 +3,7 @@
 #define GL_GLEXT_PROTOTYPES 1  // glMultiDrawArrays (GL 1.4), exported by libOSMesa
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "draw_rgb.hpp"
@@ -49,9 +50,15 @@ void setup_state(bool lit) {
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
 }
 
+// Triangles of a triangle batch, strips of a strip batch: the units a share is cut in.
+std::size_t primitives(const Batch& b) {
+  if (b.primitive == Primitive::TriangleStrips) return b.strip_first.size();
+  return (b.indices.empty() ? b.positions.size() : b.indices.size()) / 3;
+}
+
 }  // namespace
 
-TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
+TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share)
     : scene_(scene),
       canvas_(canvas),
       camera_(frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera())),
@@ -64,29 +71,47 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas)
   }
   glMatrixMode(GL_MODELVIEW);
   glLoadMatrixf(glm::value_ptr(camera_.view * scene.model()));
+
+  std::size_t total = 0;
+  for (const auto& b : scene.batches()) total += primitives(b);
+  const auto cut = [&](int layer) {
+    return total * static_cast<std::size_t>(layer) / static_cast<std::size_t>(share.layers);
+  };
+  const std::size_t begin = cut(share.layer), end = cut(share.layer + 1);
+  std::size_t at = 0;
+  for (const auto& b : scene.batches()) {
+    const std::size_t lo = std::clamp(begin, at, at + primitives(b));
+    const std::size_t hi = std::clamp(end, at, at + primitives(b));
+    share_first_.push_back(lo - at);
+    share_count_.push_back(hi - lo);
+    at += primitives(b);
+  }
 }
 
-void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
-  glViewport(gl_x, gl_y, on_canvas.w, on_canvas.h);
+void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
+  draw_tile(on_canvas, window, scene_.clear_colour());
+}
+
+void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear) {
+  glViewport(0, 0, window.w, window.h);
+  // GL rows count from the bottom of the window.
+  const int gl_x = on_canvas.x - window.x, gl_y = window.bottom() - on_canvas.bottom();
   glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
   glEnable(GL_SCISSOR_TEST);
-  // Only the tile takes the scene's colour: the rest of the framebuffer stays black, as the
-  // header gaps and unused rows must (the mesh would read a colour there as strip headers).
-  const glm::vec3 c = scene_.clear_colour();
-  if (c != glm::vec3(0.0f)) {
-    glClearColor(c.r, c.g, c.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
+  // Only the tile is cleared: the window may hold tiles of another display from before, and
+  // in a framebuffer the rest must stay black (the mesh would read colour there as headers).
+  glClearColor(clear.r, clear.g, clear.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (scene_.fill_tile(canvas_, on_canvas, pixels_)) detail::draw_rgb(pixels_, gl_x, gl_y);
   glMatrixMode(GL_PROJECTION);
-  const glm::dmat4 projection = tile_matrix(canvas_, on_canvas) * glm::dmat4(camera_.projection);
-  glLoadMatrixd(glm::value_ptr(projection));
+  const glm::dmat4 to_window = tile_matrix(canvas_, window);
+  glLoadMatrixd(glm::value_ptr(to_window * glm::dmat4(camera_.projection)));
   glMatrixMode(GL_MODELVIEW);
-  scene_.draw_tile({canvas_, on_canvas, scene_.frame(), tile_matrix(canvas_, on_canvas), camera_});
+  scene_.draw_tile({canvas_, on_canvas, scene_.frame(), to_window, camera_});
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
-    if (!overlaps(footprints_[i], on_canvas)) continue;
-    draw_batch(batches[i]);
+    if (share_count_[i] == 0 || !overlaps(footprints_[i], on_canvas)) continue;
+    draw_batch(batches[i], share_first_[i], share_count_[i]);
     ++stats_.tile_draws;
     if (!drawn_[i]) {
       drawn_[i] = true;
@@ -95,18 +120,18 @@ void TileRenderer::draw_tile(const Rect& on_canvas, int gl_x, int gl_y) {
   }
 }
 
-void TileRenderer::draw_batch(const Batch& b) const {
+void TileRenderer::draw_batch(const Batch& b, std::size_t first, std::size_t count) const {
   glVertexPointer(3, GL_FLOAT, 0, b.positions.data());
   glColorPointer(3, GL_FLOAT, 0, b.colours.data());
   if (scene_.lit()) glNormalPointer(GL_FLOAT, 0, b.normals.data());
   if (b.primitive == Primitive::TriangleStrips) {
-    glMultiDrawArrays(GL_TRIANGLE_STRIP, b.strip_first.data(), b.strip_count.data(),
-                      static_cast<GLsizei>(b.strip_first.size()));
+    glMultiDrawArrays(GL_TRIANGLE_STRIP, b.strip_first.data() + first, b.strip_count.data() + first,
+                      static_cast<GLsizei>(count));
   } else if (b.indices.empty()) {
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.positions.size()));
+    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first * 3), static_cast<GLsizei>(count * 3));
   } else {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT,
-                   b.indices.data());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
+                   b.indices.data() + first * 3);
   }
 }
 

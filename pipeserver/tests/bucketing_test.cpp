@@ -59,7 +59,7 @@ TileResult render_centre_tile(const Scene& scene) {
   const Rect tile{40, 20, 40, 40};  // the middle of the canvas, where the triangle is
   GlContext gl(tile.w, tile.h);
   TileRenderer r(scene, canvas);
-  r.draw_tile(tile, 0, 0);
+  r.draw_tile(tile, tile);
   glFinish();
   RgbImage img(tile.w, tile.h);
   scan_out(gl.rgba(), tile.w, tile.h, img.bytes());

@@ -1,6 +1,6 @@
 // The acceptance check on every example wall in walls/ and every scene: the frames of
-// all pipeservers decode with zero spec §3 errors, and routing their COPY strips rebuilds each
-// display equal to its reference render (tolerance: see pipeserver/README.md).
+// all pipeservers decode with zero spec §3 errors, and routing their strips rebuilds each
+// display equal to its reference render, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,13 +15,6 @@
 
 namespace l2 {
 namespace {
-
-// The documented tolerance (README.md, "Reassembly tolerance"): llvmpipe rounds vertex positions
-// and interpolants differently when the same triangle is projected for a different tile, so a
-// few pixels per million differ. Measured worst case over all walls, scenes and frames:
-// 0.0033% of pixels differing at all, 0.0011% by more than one level. Allowed: three times that.
-constexpr double kMaxDifferingFraction = 1e-4;
-constexpr double kMaxBeyondOneFraction = 3e-5;
 
 std::vector<std::filesystem::path> example_walls() {
   std::vector<std::filesystem::path> out;
@@ -52,14 +45,18 @@ TEST_P(ExampleWall, ReassemblesToTheReference) {
       SCOPED_TRACE(path.filename().string() + " " + name);
       EXPECT_EQ(check.reassembly.errors.total(), 0u);
       EXPECT_EQ(check.reassembly.parities_seen, std::vector<int>{frame % 2});
+      // Bit for bit (README.md, "Reassembly is exact"), sort-first, sort-last and hybrid.
       test::ImageDiff all;
       for (const auto& d : check.diffs) all += d;
-      const double n = static_cast<double>(check.display_pixels);
-      EXPECT_LE(all.pixels_differing, static_cast<long>(n * kMaxDifferingFraction));
-      EXPECT_LE(all.pixels_beyond_one, static_cast<long>(n * kMaxBeyondOneFraction))
-          << "max channel diff " << all.max_channel_diff;
-      // Every display pixel arrives, exactly once (tiles cover every display).
-      EXPECT_EQ(check.reassembly.copied_pixels, check.display_pixels);
+      EXPECT_EQ(all.pixels_differing, 0) << "max channel diff " << all.max_channel_diff;
+      // Every tile pixel arrives, exactly once: on a sort-first wall every display pixel (tiles
+      // cover every display), on a depth wall once a layer, and the overlay's.
+      long tile_pixels = 0;
+      for (const DisplayTile& t : layout.tiles) tile_pixels += t.on_display.area();
+      EXPECT_EQ(check.reassembly.copied_pixels + check.reassembly.composited_pixels, tile_pixels);
+      if (layout.wall.depth_layers == 0 && !layout.wall.overlay) {
+        EXPECT_EQ(check.reassembly.copied_pixels, check.display_pixels);
+      }
     }
   }
 }

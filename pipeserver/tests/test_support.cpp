@@ -1,6 +1,7 @@
 #include "test_support.hpp"
 
 #include "pipeserver/pipeserver.hpp"
+#include "verify/verify_run.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -53,6 +54,7 @@ Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames) {
       const std::uint8_t* row = frame.row(y).data();
       parse_scanline(row, frame.width(), 3, out.errors, [&](const ParsedStrip& s) {
         seen[s.header.frame ? 1 : 0] = true;
+        if (s.header.op == StripOp::Ext) out.composited_pixels += s.length;
         if (s.header.op != StripOp::Copy) return;
         ++out.copies;
         out.copied_pixels += s.length;
@@ -127,6 +129,11 @@ WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame, bool loc
   }
   WallCheck out;
   out.reassembly = reassemble(layout.wall, frames);
+  // KEY and DEPTH strips are composited by the emulator's router (spec §7), not by this copy.
+  const bool composited = std::any_of(layout.tiles.begin(), layout.tiles.end(), [](const auto& t) {
+    return t.compositing != Compositing::Copy;
+  });
+  if (composited) out.reassembly.displays = route_on_wall(layout.wall, frames);
   for (const Display& d : layout.wall.displays) {
     const RgbImage& got = out.reassembly.displays[static_cast<std::size_t>(d.id)];
     const RgbImage want = render_reference(layout, d.id, scene, frame);

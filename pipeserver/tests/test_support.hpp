@@ -21,10 +21,12 @@ struct Reassembly {
   StripErrorCounts errors;
   long copies = 0;
   long copied_pixels = 0;
+  long composited_pixels = 0;      // of KEY and DEPTH strips
   std::vector<int> parities_seen;  // frame bit of every COPY/SKIP header, once per value seen
 };
 
-// Routes every COPY strip of every frame to its display, as the emulator would.
+// Routes every COPY strip of every frame to its display, as the emulator would; KEY and DEPTH
+// strips are only counted (check_wall routes walls with them through the emulator).
 Reassembly reassemble(const Wall& wall, const std::vector<RgbImage>& frames);
 
 struct ImageDiff {
@@ -38,8 +40,8 @@ ImageDiff compare(const RgbImage& a, const RgbImage& b);
 // Also counts differing pixels on the border rows/columns of the display's tiles.
 ImageDiff compare(const RgbImage& a, const RgbImage& b, const TileLayout& layout, int display);
 
-// Renders `frame` on every pipeserver of the layout, routes the frames and compares every
-// display with its reference render.
+// Renders `frame` on every pipeserver of the layout, routes the frames (through the emulator's
+// router when the wall composites) and compares every display with its reference render.
 struct WallCheck {
   Reassembly reassembly;
   std::vector<ImageDiff> diffs;  // per display

@@ -27,6 +27,13 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
   }
   l2::write_png(dir / "wall.png", l2::wall_page(layout));
   std::cout << "wrote " << (dir / "wall.png").string() << "\n";
+  // A depth wall's layers cover the same canvas: one picture each (wall.png is layer 0).
+  if (l2::wall_layers(layout) == 1) return;
+  for (int layer = 0; layer < l2::wall_layers(layout); ++layer) {
+    const auto path = dir / fmt::format("wall-layer-{}.png", layer);
+    l2::write_png(path, l2::wall_page(layout, layer));
+    std::cout << "wrote " << path.string() << "\n";
+  }
 }
 
 void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity) {
@@ -71,8 +78,9 @@ int main(int argc, char** argv) {
       app.add_option("--png", png_dir,
                      "write pictures to DIR, each with a legend: pipeserver-N.png (framebuffer: "
                      "header gaps white, tiles coloured by display, labelled D<display> "
-                     "L<logical tile>) and wall.png (tiles coloured by pipeserver, labelled "
-                     "P<pipeserver> L<logical tile>)")
+                     "L<logical tile>; a DEPTH tile's depth pixels darker) and wall.png (tiles "
+                     "coloured by pipeserver, labelled P<pipeserver> L<logical tile>; a depth "
+                     "wall's layers also as wall-layer-N.png, wall.png being layer 0)")
           ->type_name("DIR");
   CLI::Option* const scanout_option =
       app.add_option("--scanout", scanout_dir,

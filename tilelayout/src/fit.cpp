@@ -114,7 +114,10 @@ FitSuggestions suggest_fit(const Wall& wall) {
     if (policy == wall.assignment) continue;
     if (fits(lists_for(wall, t, policy, wall.server_count), w, h)) fit.policies.push_back(policy);
   }
-  const int most = std::min<int>(kMaxPipeservers, static_cast<int>(t.logical.size()));
+  // Past one pipeserver per display tile and layer (and the overlay's), more only idle.
+  const int per_tile = wall.depth_layers > 0 ? wall.depth_layers : 1;
+  const int most = std::min<int>(
+      kMaxPipeservers, static_cast<int>(t.logical.size()) * per_tile + (wall.overlay ? 1 : 0));
   for (int n = 1; n <= most; ++n) {
     if (fits(lists_for(wall, t, wall.assignment, n), w, h)) {
       fit.server_count = n;

@@ -45,6 +45,11 @@ int gap_width(const ServerPlan& plan) {
   return std::max(2, std::max(plan.fb_width, plan.fb_height) / 256);
 }
 
+Rgb darker(Rgb c) {
+  return {static_cast<std::uint8_t>(c.r / 2), static_cast<std::uint8_t>(c.g / 2),
+          static_cast<std::uint8_t>(c.b / 2)};
+}
+
 int wall_scale(const Wall& wall) {
   return std::max(1, (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096);
 }
@@ -83,11 +88,18 @@ Rgb palette_colour(int i) {
 RgbImage framebuffer_picture(const ServerPlan& plan) {
   RgbImage img(plan.fb_width, plan.fb_height, kUnused);
   for (const PackedTile& p : plan.tiles) {
-    const Rect r{p.fb_x, p.fb_y, payload_columns(p.tile), p.tile.on_display.h};
+    const Rect r{p.fb_x, p.fb_y, p.tile.on_display.w, p.tile.on_display.h};
     img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(p.tile.display));
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
-    label(img, r, fmt::format("D{} L{}", p.tile.display, p.tile.logical_tile),
+    const char* kind = p.tile.compositing == Compositing::Key ? " KEY" : "";
+    label(img, r, fmt::format("D{} L{}{}", p.tile.display, p.tile.logical_tile, kind),
           std::to_string(p.tile.display));
+    if (p.tile.compositing != Compositing::Depth) continue;
+    // The depth pixels after the colour ones, in a darker shade of the display's colour.
+    const Rect z{r.right(), r.y, r.w, r.h};
+    img.fill_rect(z.x, z.y, z.w, z.h, darker(palette_colour(p.tile.display)));
+    if (z.w > 8 && z.h > 8) outline(img, z, kOutline, 1);
+    label(img, z, fmt::format("D{} L{} depth", p.tile.display, p.tile.logical_tile), "z");
   }
   // Drawn over the tiles' first columns where a gap is drawn wider than it is, so that it shows
   // when the picture is scaled down.
@@ -103,9 +115,14 @@ RgbImage framebuffer_picture(const ServerPlan& plan) {
 
 RgbImage framebuffer_page(const ServerPlan& plan) {
   const int gap = gap_width(plan);
+  const bool keyed_or_depth = std::any_of(plan.tiles.begin(), plan.tiles.end(), [](const auto& p) {
+    return p.tile.compositing != Compositing::Copy;
+  });
   std::vector<LegendEntry> legend{
-      {gap == 2 ? std::string("header gap: the 2 columns before every tile")
-                : fmt::format("header gap: the 2 columns before every tile (drawn {} wide)", gap),
+      {fmt::format(
+           "header gap: the 2 columns before every tile{}{}",
+           keyed_or_depth ? " (4: header and extension word before KEY and DEPTH tiles)" : "",
+           gap == 2 ? std::string() : fmt::format(" (drawn {} wide)", gap)),
        kGap},
       {"unused (black when scanned out)", kUnused}};
   std::set<int> displays;
@@ -117,7 +134,7 @@ RgbImage framebuffer_page(const ServerPlan& plan) {
   return with_legend(framebuffer_picture(plan), legend);
 }
 
-RgbImage wall_picture(const TileLayout& layout) {
+RgbImage wall_picture(const TileLayout& layout, int layer) {
   const Wall& wall = layout.wall;
   // Large canvases are drawn smaller, by a whole factor, so the picture stays at most 4096
   // pixels on its longer side.
@@ -129,11 +146,18 @@ RgbImage wall_picture(const TileLayout& layout) {
   };
   RgbImage img((wall.canvas_width + scale - 1) / scale, (wall.canvas_height + scale - 1) / scale,
                kUnused);
+  // A layer's tiles, and the overlay over every layer.
+  const auto shown = [&](std::size_t i) {
+    return layout.tiles[i].compositing != Compositing::Depth ||
+           layout.servers[static_cast<std::size_t>(layout.tile_server[i])].layer == layer;
+  };
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+    if (!shown(i)) continue;
     const Rect r = shrink(layout.tiles[i].on_canvas);
     img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(layout.tile_server[i]));
   }
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+    if (!shown(i)) continue;
     const Rect r = shrink(layout.tiles[i].on_canvas);
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
     label(img, r, fmt::format("P{} L{}", layout.tile_server[i], layout.tiles[i].logical_tile),
@@ -143,18 +167,36 @@ RgbImage wall_picture(const TileLayout& layout) {
   return img;
 }
 
-RgbImage wall_page(const TileLayout& layout) {
+int wall_layers(const TileLayout& layout) {
+  int layers = 1;
+  for (const ServerPlan& s : layout.servers) layers = std::max(layers, s.layers);
+  return layers;
+}
+
+RgbImage wall_page(const TileLayout& layout, int layer) {
   std::vector<LegendEntry> legend;
-  for (const ServerPlan& s : layout.servers) {
-    legend.push_back(
-        {fmt::format("tiles pipeserver {} renders", s.server), palette_colour(s.server)});
+  const int layers = wall_layers(layout);
+  for (std::size_t i = 0; i < layout.servers.size(); ++i) {
+    const ServerPlan& s = layout.servers[i];
+    const bool keyed = layout.wall.overlay && s.server == layout.wall.server_count - 1;
+    if (layers > 1 && !keyed && s.layer != layer) continue;
+    legend.push_back({fmt::format("tiles pipeserver {} renders{}", s.server,
+                                  keyed ? " (the overlay, KEY over every layer)" : ""),
+                      palette_colour(s.server)});
+  }
+  if (layers > 1) {
+    legend.push_back({fmt::format("depth layer {} of {}: share {} of the geometry of the "
+                                  "scene (the other layers: wall-layer-N.png)",
+                                  layer, layers, layer),
+                      {},
+                      false});
   }
   legend.push_back({"mullions: canvas no display shows", kUnused});
   legend.push_back({"display edges", {255, 255, 255}});
   legend.push_back({"labels: P pipeserver, L logical tile (tilelayout lists them)", {}, false});
   const int scale = wall_scale(layout.wall);
   if (scale > 1) legend.push_back({fmt::format("drawn at 1/{} size", scale), {}, false});
-  return with_legend(wall_picture(layout), legend);
+  return with_legend(wall_picture(layout, layer), legend);
 }
 
 }  // namespace l2

@@ -18,16 +18,53 @@ const char* link_name(int links) {
   return links == 1 ? "single link" : links == 2 ? "dual link" : "more than dual-link DVI carries";
 }
 
+// " (layer 1 of 2)" for a pipeserver of a depth wall, " (overlay)" for the overlay's.
+std::string role(const TileLayout& layout, const ServerPlan& s) {
+  const Wall& w = layout.wall;
+  if (w.overlay && s.server == w.server_count - 1) return " (overlay)";
+  if (w.depth_layers != 0) return fmt::format(" (layer {} of {})", s.layer, s.layers);
+  return "";
+}
+
+std::string compositing(const DisplayTile& t) {
+  if (t.compositing == Compositing::Depth) return "  DEPTH";
+  if (t.compositing == Compositing::Key) return fmt::format("  KEY {:06x}", t.key);
+  return "";
+}
+
+// What the wall composites: "; depth: 2 layers of 2 pipeservers each (hybrid sort-first /
+// sort-last)", "; overlay: KEY 000000 on display 0 ...".
+std::string compositing_summary(const TileLayout& layout) {
+  const Wall& w = layout.wall;
+  std::string out;
+  if (w.depth_layers != 0) {
+    const int layers = layer_count(w, w.server_count);
+    const int per_layer = (w.server_count - (w.overlay ? 1 : 0)) / layers;
+    out += fmt::format("depth: {} layer{} of {} pipeserver{} each ({})\n", layers,
+                       layers == 1 ? "" : "s", per_layer, per_layer == 1 ? "" : "s",
+                       per_layer == 1 ? "sort-last"
+                       : layers == 1  ? "sort-first, by depth"
+                                      : "hybrid sort-first/sort-last");
+  }
+  if (w.overlay) {
+    const Overlay& o = *w.overlay;
+    out += fmt::format("overlay: display {} {}x{} at {},{}, key colour {:06x}, pipeserver {}\n",
+                       o.display, o.on_display.w, o.on_display.h, o.on_display.x, o.on_display.y,
+                       o.key, w.server_count - 1);
+  }
+  return out;
+}
+
 void servers(const TileLayout& layout, std::string& out) {
   const int hz = layout.wall.refresh_hz;
   for (const ServerPlan& s : layout.servers) {
     long long used = 0;
-    for (const PackedTile& p : s.tiles) used += p.tile.on_display.area();
+    for (const PackedTile& p : s.tiles) used += 1LL * payload_columns(p.tile) * p.tile.on_display.h;
     const double total = double(s.fb_width) * s.fb_height;
     out += fmt::format(
-        "pipeserver {}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
-        s.server, s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s", s.used_height(),
-        s.fb_height, 100.0 * double(used) / total);
+        "pipeserver {}{}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
+        s.server, role(layout, s), s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s",
+        s.used_height(), s.fb_height, 100.0 * double(used) / total);
     const DviTiming link = dvi_timing(s.fb_width, s.fb_height, hz);
     out += fmt::format(
         "  DVI link: {}x{} at {} Hz needs a {:.2f} MHz pixel clock (CVT reduced blanking, {}x{} "
@@ -40,9 +77,9 @@ void servers(const TileLayout& layout, std::string& out) {
       const DisplayTile& t = p.tile;
       out += fmt::format(
           "  tile {:>3}: display {:>2} {:>4}x{:<4} at {:>4},{:<4}  packed at {:>4},{:<4}  "
-          "canvas {},{} (logical tile {})\n",
+          "canvas {},{} (logical tile {}){}\n",
           i, t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y, p.fb_x,
-          p.fb_y, t.on_canvas.x, t.on_canvas.y, t.logical_tile);
+          p.fb_y, t.on_canvas.x, t.on_canvas.y, t.logical_tile, compositing(t));
     }
   }
 }
@@ -79,6 +116,7 @@ std::string format_plan(const TileLayout& layout) {
       kTilingNames[static_cast<int>(w.tiling.kind)], layout.logical_tiles.size(),
       layout.tiles.size(), w.server_count, w.framebuffer_width, w.framebuffer_height,
       to_string(w.assignment));
+  out += compositing_summary(layout);
   servers(layout, out);
   displays(layout, out);
   for (const std::string& warning : layout.warnings) out += warning + "\n";

@@ -37,6 +37,44 @@ std::vector<int> server_of_logical(const Wall& wall, const std::vector<Rect>& lo
                         {0, 0, wall.canvas_width, wall.canvas_height});
 }
 
+// Every display tile of the plan (once per layer in a depth wall, the overlay last) and the
+// pipeserver that renders it. Empty when the layers cannot share the pipeservers evenly.
+struct Distribution {
+  std::vector<DisplayTile> tiles;
+  std::vector<int> server;
+};
+
+DisplayTile overlay_tile(const Wall& wall, int logical_index) {
+  const Overlay& o = *wall.overlay;
+  const Display& d = wall.displays[static_cast<std::size_t>(o.display)];
+  const Rect on_canvas{d.canvas_x + o.on_display.x, d.canvas_y + o.on_display.y, o.on_display.w,
+                       o.on_display.h};
+  return {o.display, o.on_display, on_canvas, logical_index, Compositing::Key, o.key};
+}
+
+Distribution distribute(const Wall& wall, const std::vector<Rect>& logical,
+                        const std::vector<DisplayTile>& tiles, AssignmentPolicy policy,
+                        int server_count) {
+  const int sharing = server_count - (wall.overlay ? 1 : 0);
+  const int layers = layer_count(wall, server_count);
+  if (sharing < 1 || layers < 1 || sharing % layers != 0) return {};
+  const int per_layer = sharing / layers;
+  const std::vector<int> server_of = server_of_logical(wall, logical, tiles, policy, per_layer);
+  Distribution d;
+  for (int layer = 0; layer < layers; ++layer) {
+    for (DisplayTile t : tiles) {
+      if (wall.depth_layers != 0) t.compositing = Compositing::Depth;
+      d.tiles.push_back(t);
+      d.server.push_back(layer * per_layer + server_of[t.logical_tile]);
+    }
+  }
+  if (wall.overlay) {
+    d.tiles.push_back(overlay_tile(wall, static_cast<int>(logical.size())));
+    d.server.push_back(sharing);
+  }
+  return d;
+}
+
 // The error with what would fit appended: "...; fits with framebuffer_height = 200 ...".
 LayoutError not_fitting(const Wall& wall, int line, const std::string& what) {
   const std::string hint = fit_hint(suggest_fit(wall));
@@ -58,13 +96,19 @@ std::optional<std::string> dvi_link_warning(const Wall& wall) {
 
 }  // namespace
 
+int layer_count(const Wall& wall, int server_count) {
+  if (wall.depth_layers == 0) return 1;
+  if (wall.depth_layers != kAllLayers) return wall.depth_layers;
+  return server_count - (wall.overlay ? 1 : 0);
+}
+
 std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
                                                         const std::vector<Rect>& logical,
                                                         const std::vector<DisplayTile>& tiles,
                                                         AssignmentPolicy policy, int server_count) {
-  const std::vector<int> server_of = server_of_logical(wall, logical, tiles, policy, server_count);
-  std::vector<std::vector<DisplayTile>> lists(server_count);
-  for (const DisplayTile& t : tiles) lists[server_of[t.logical_tile]].push_back(t);
+  const Distribution d = distribute(wall, logical, tiles, policy, server_count);
+  std::vector<std::vector<DisplayTile>> lists(static_cast<std::size_t>(std::max(server_count, 0)));
+  for (std::size_t i = 0; i < d.tiles.size(); ++i) lists[d.server[i]].push_back(d.tiles[i]);
   for (auto& list : lists) list = packing_order(std::move(list));
   return lists;
 }
@@ -75,17 +119,30 @@ TileLayout plan_layout(const Wall& wall) {
   layout.logical_tiles = make_logical_tiles(wall);
   layout.tiles = split_at_displays(wall, layout.logical_tiles);
 
-  const std::vector<int> server_of = server_of_logical(wall, layout.logical_tiles, layout.tiles,
-                                                       wall.assignment, wall.server_count);
-  for (const DisplayTile& t : layout.tiles) layout.tile_server.push_back(server_of[t.logical_tile]);
+  const Distribution d =
+      distribute(wall, layout.logical_tiles, layout.tiles, wall.assignment, wall.server_count);
   const std::vector<std::vector<DisplayTile>> lists = server_tile_lists(
       wall, layout.logical_tiles, layout.tiles, wall.assignment, wall.server_count);
+  if (d.tiles.empty()) {
+    throw LayoutError(where(wall, wall.depth_line) +
+                      fmt::format("depth.layers: {} layers do not share {} pipeservers evenly",
+                                  layer_count(wall, wall.server_count), wall.server_count));
+  }
+  layout.tiles = d.tiles;
+  layout.tile_server = d.server;
+  if (wall.overlay) layout.logical_tiles.push_back(layout.tiles.back().on_canvas);
+  const int layers = layer_count(wall, wall.server_count);
+  const int per_layer = (wall.server_count - (wall.overlay ? 1 : 0)) / layers;
   for (int s = 0; s < wall.server_count; ++s) {
     try {
       layout.servers.push_back(
           pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, lists[s]));
     } catch (const LayoutError& e) {
       throw not_fitting(wall, wall.framebuffer_line, e.what());
+    }
+    if (s < per_layer * layers && wall.depth_layers != 0) {
+      layout.servers.back().layer = s / per_layer;
+      layout.servers.back().layers = layers;
     }
   }
   for (const ServerPlan& s : layout.servers) {

@@ -27,9 +27,9 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
     throw LayoutError(
         fmt::format("{}:{}: malformed TOML: {}", source.file, line, printable(e.description())));
   }
-  const TomlFields top(
-      doc, "", source,
-      {"name", "canvas", "display_grid", "display", "tiling", "pipeservers", "mesh"});
+  const TomlFields top(doc, "", source,
+                       {"name", "canvas", "display_grid", "display", "tiling", "pipeservers",
+                        "mesh", "depth", "overlay"});
   Wall wall;
   wall.source = path_for_messages;
   wall.name = top.string("name").value_or(path_for_messages.stem().string());
@@ -37,6 +37,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_canvas(top, wall);
   read_tiling(top, wall);
   read_servers_and_mesh(top, wall);
+  read_compositing(top, wall);
   return wall;
 }
 

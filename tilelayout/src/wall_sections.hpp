@@ -14,5 +14,7 @@ void read_canvas(const TomlFields& top, Wall& wall);
 void read_tiling(const TomlFields& top, Wall& wall);
 // [pipeservers] and [mesh].
 void read_servers_and_mesh(const TomlFields& top, Wall& wall);
+// [depth] and [overlay] (optional): needs the displays and the pipeservers.
+void read_compositing(const TomlFields& top, Wall& wall);
 
 }  // namespace l2

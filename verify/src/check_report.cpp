@@ -17,7 +17,7 @@ std::string refused_strips(const InputCheck& input) {
     if (n != 0) parts.push_back(fmt::format("{} {}", n, what));
   };
   add(input.errors.check_errors, "check-bit errors");
-  add(input.errors.ext_unsupported, "EXT headers");
+  add(input.errors.ext_unsupported, "unsupported EXT strips");
   add(input.errors.zero_width, "zero-width strips");
   add(input.errors.truncations, "truncated strips");
   if (input.to_absent_display != 0) {

@@ -16,12 +16,14 @@ std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
       const std::uint8_t* row = frame.row(y).data();
       parse_scanline(
           row, frame.width(), RgbImage::kChannels, check.errors, [&](const ParsedStrip& s) {
-            if (s.header.op != StripOp::Copy) return;
-            ++check.copy_strips;
-            const std::uint8_t* h =
-                row + static_cast<std::ptrdiff_t>(s.source_x - kHeaderPixels) * 3;
-            strips.push_back(
-                {check.input, y, s.source_x, s.length, header_value(h, h + 3), s.header});
+            if (s.header.op == StripOp::Skip) return;
+            Compositing how = Compositing::Copy;
+            if (s.is(ExtKind::Key)) how = Compositing::Key;
+            if (s.is(ExtKind::Depth)) how = Compositing::Depth;
+            ++(how == Compositing::Copy ? check.copy_strips : check.composited_strips);
+            const std::uint8_t* h = row + static_cast<std::ptrdiff_t>(s.header_x()) * 3;
+            strips.push_back({check.input, y, s.source_x, s.length, header_value(h, h + 3),
+                              s.header, how, s.extension.key, s.depth_x()});
           });
     }
     inputs.push_back(check);

@@ -1,5 +1,5 @@
-// Every COPY strip of a set of scanned-out frames, as the router would find it (spec §3):
-// where it sits in its frame, its header and the parser's errors. Private to the verifier.
+// Every COPY, KEY and DEPTH strip of a set of scanned-out frames, as the router would find it (spec
+// §3): where it sits in its frame, its header and the parser's errors. Private to the verifier.
 #pragma once
 
 #include <cstdint>
@@ -17,10 +17,13 @@ struct FoundStrip {
   int length = 0;       // pixels present in the scanline
   std::uint64_t value;  // the 48-bit header as drawn
   StripHeader header;
+  Compositing how = Compositing::Copy;  // KEY and DEPTH: EXT strips (§7)
+  std::uint32_t key = 0;                // KEY: the key colour
+  int depth_x = 0;                      // DEPTH: column of depth pixel 0 in its frame
 };
 
-// COPY strips of every frame in priority order (inputs ascending, rows top to bottom, left to
-// right); fills `inputs` with one InputCheck per frame (strip and error counts).
+// COPY, KEY and DEPTH strips of every frame in priority order (inputs ascending, rows top to
+// bottom, left to right); fills `inputs` with one InputCheck per frame (strip and error counts).
 std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
                                     std::vector<InputCheck>& inputs);
 

@@ -10,19 +10,52 @@ namespace {
 
 using verify_detail::FoundStrip;
 
-// Who wrote each pixel of one display last, and whether more than one strip did.
+// Who wrote each pixel of one display last, whether more than one COPY strip did, and the
+// depth the composite holds there (spec §7).
 struct Ownership {
   std::vector<int> owner;             // index into the strips; -1: none
-  std::vector<std::uint8_t> written;  // 0, 1, or 2 for two or more
+  std::vector<std::uint8_t> written;  // COPY writes: 0, 1, or 2 for two or more
+  std::vector<std::uint32_t> depth;   // far (FFFFFF) until a strip writes
 };
 
+constexpr std::uint32_t kFar = 0xFFFFFF;
+
+std::uint32_t rgb_value(Rgb c) {
+  return std::uint32_t{c.r} << 16 | std::uint32_t{c.g} << 8 | c.b;
+}
+
+// Applies strip pixel `x` (display column) of `s` as §7 says: COPY and KEY (but for its key
+// colour) write with depth 0, DEPTH where strictly nearer than what the pixel holds.
+void apply(std::span<const RgbImage> frames, const FoundStrip& s, int strip, int x, Ownership& map,
+           std::size_t at) {
+  const int i = x - s.header.x;
+  const RgbImage& frame = frames[s.input];
+  std::uint32_t depth = 0;
+  if (s.how == Compositing::Key && rgb_value(frame.at(s.source_x + i, s.source_row)) == s.key) {
+    return;
+  }
+  if (s.how == Compositing::Depth) {
+    depth = rgb_value(frame.at(s.depth_x + i, s.source_row));
+    if (depth >= map.depth[at]) return;
+  }
+  if (s.how == Compositing::Copy) {
+    map.written[at] = static_cast<std::uint8_t>(std::min(map.written[at] + 1, 2));
+  }
+  map.owner[at] = strip;
+  map.depth[at] = depth;
+}
+
+// The pixels a tile covers; for a KEY tile those its test pattern does not leave transparent.
 std::vector<std::uint8_t> planned_pixels(const TileLayout& layout, const Display& d) {
   std::vector<std::uint8_t> planned(static_cast<std::size_t>(d.width) * d.height, 0);
   for (const DisplayTile& t : layout.tiles) {
     if (t.display != d.id) continue;
     const Rect r = intersect(t.on_display, {0, 0, d.width, d.height});
     for (int y = r.y; y < r.bottom(); ++y) {
-      std::fill_n(planned.begin() + static_cast<std::ptrdiff_t>(y) * d.width + r.x, r.w, 1);
+      for (int x = r.x; x < r.right(); ++x) {
+        if (t.compositing == Compositing::Key && key_test_transparent(x, y)) continue;
+        planned[static_cast<std::size_t>(y) * d.width + x] = 1;
+      }
     }
   }
   return planned;
@@ -30,12 +63,13 @@ std::vector<std::uint8_t> planned_pixels(const TileLayout& layout, const Display
 
 // Writes every strip into the ownership maps, in priority order; what falls past a display's
 // edges becomes a MullionRun, what goes to a display the wall lacks is counted on its input.
-std::vector<Ownership> write_strips(const Wall& wall, const std::vector<FoundStrip>& strips,
-                                    RoutingCheck& check) {
+std::vector<Ownership> write_strips(const Wall& wall, std::span<const RgbImage> frames,
+                                    const std::vector<FoundStrip>& strips, RoutingCheck& check) {
   std::vector<Ownership> maps;
   for (const Display& d : wall.displays) {
     const std::size_t n = static_cast<std::size_t>(d.width) * d.height;
-    maps.push_back({std::vector<int>(n, -1), std::vector<std::uint8_t>(n, 0)});
+    maps.push_back({std::vector<int>(n, -1), std::vector<std::uint8_t>(n, 0),
+                    std::vector<std::uint32_t>(n, kFar)});
   }
   for (std::size_t i = 0; i < strips.size(); ++i) {
     const FoundStrip& s = strips[i];
@@ -48,9 +82,7 @@ std::vector<Ownership> write_strips(const Wall& wall, const std::vector<FoundStr
     const int x0 = s.header.x, y = s.header.y;
     const int x1 = y < d.height ? std::min(x0 + s.length, d.width) : x0;
     for (int x = x0; x < x1; ++x) {
-      const std::size_t at = static_cast<std::size_t>(y) * d.width + x;
-      maps[id].owner[at] = static_cast<int>(i);
-      maps[id].written[at] = static_cast<std::uint8_t>(std::min(maps[id].written[at] + 1, 2));
+      apply(frames, s, static_cast<int>(i), x, maps[id], static_cast<std::size_t>(y) * d.width + x);
     }
     const int visible = std::max(0, x1 - x0);
     if (visible < s.length) {
@@ -182,7 +214,7 @@ RoutingCheck check_routing(const TileLayout& layout, std::span<const RgbImage> f
     display.height = d.height;
     check.displays.push_back(std::move(display));
   }
-  const std::vector<Ownership> maps = write_strips(layout.wall, strips, check);
+  const std::vector<Ownership> maps = write_strips(layout.wall, frames, strips, check);
   for (std::size_t i = 0; i < check.displays.size(); ++i) {
     const RgbImage* picture = i < routed.size() ? routed[i] : nullptr;
     const Display& d = layout.wall.displays[i];

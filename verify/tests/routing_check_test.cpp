@@ -327,3 +327,39 @@ TEST(RoutingCheck, RandomHeadersAreCountedNotTrusted) {
 
 }  // namespace
 }  // namespace l2
+
+namespace l2 {
+namespace {
+
+// The verifier composites KEY and DEPTH strips itself when it judges from the frames alone.
+TEST(RoutingCheck, DepthLayersOutOfBusOrderAreMisplaced) {
+  const TileLayout layout =
+      plan_layout(load_wall(std::filesystem::path(L2_WALLS_DIR) / "sort-last-512x384.toml"));
+  std::vector<RgbImage> frames = verify_test::scanned_out(layout);
+  EXPECT_TRUE(check_routing(layout, frames).clean());
+  // Layers 0 and 1 exchanged on the bus: where layer 0 wins by a tie with layer 1, layer 1 now
+  // comes first and keeps its wrong colour (test_pattern.hpp).
+  std::swap(frames[0], frames[1]);
+  const RoutingCheck swapped = check_routing(layout, frames);
+  EXPECT_FALSE(swapped.clean());
+  EXPECT_GT(swapped.displays[0].misplaced, 0);
+  EXPECT_EQ(swapped.displays[0].missing, 0);
+  EXPECT_EQ(swapped.displays[0].written_twice, 0);  // DEPTH covers by design
+}
+
+TEST(RoutingCheck, AnOverlayWithoutWhatItCoversLeavesItsTransparentPixelsMissing) {
+  const TileLayout layout =
+      plan_layout(load_wall(std::filesystem::path(L2_WALLS_DIR) / "hybrid-2x1.toml"));
+  std::vector<RgbImage> frames = verify_test::scanned_out(layout);
+  EXPECT_TRUE(check_routing(layout, frames).clean());
+  // Layer 0 and 1 frames black (idle): on display 0 only the overlay's opaque pixels arrive,
+  // half of its 160x100 (4x4 blocks in a checkerboard; 160 and 100 are multiples of 8 and 4).
+  for (int s = 0; s < 4; ++s) frames[s] = RgbImage(frames[s].width(), frames[s].height());
+  const RoutingCheck c = check_routing(layout, frames);
+  EXPECT_EQ(c.displays[0].right, 160 * 100 / 2);
+  EXPECT_EQ(c.displays[0].missing, 400 * 300 - 160 * 100 / 2);
+  EXPECT_EQ(c.displays[1].right, 0);
+}
+
+}  // namespace
+}  // namespace l2

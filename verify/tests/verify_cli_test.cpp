@@ -139,5 +139,25 @@ TEST_F(VerifyCli, TilelayoutVerifyScansOutRoutesAndChecks) {
   EXPECT_EQ(read_png(dir / "v/display-1.png").at(40, 7), test_pattern(1, 40, 7));
 }
 
+// The sort-last example wall (DEPTH strips only): clean as scanned out, wrong with two
+// layers exchanged on the bus (the tie rule of spec §7 then keeps the wrong colours).
+TEST_F(VerifyCli, DepthLayersVerifyCleanOnlyInBusOrder) {
+  const std::string depth_wall = std::string(L2_WALLS_DIR) + "/sort-last-512x384.toml";
+  const fs::path v = dir / "depth";
+  Result r = run(fmt::format("{} --wall {} --verify {}", TILELAYOUT_EXE, depth_wall, v.string()));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\ndisplay 0 (512x384) right: 196608 planned pixels: 196608 right, 0 "
+                       "missing, 0 misplaced; 0 written twice, 0 behind mullions\n"),
+            std::string::npos)
+      << r.out;
+  r = run(fmt::format("{} route --wall {} --verify --out {} {} {} {}", L2_EMU_EXE, depth_wall,
+                      (dir / "swapped").string(), (v / "scanout-1.png").string(),
+                      (v / "scanout-0.png").string(), (v / "scanout-2.png").string()));
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("\nrouting wrong: 1 of 1 displays wrong, 0 inputs with refused strips\n"),
+            std::string::npos)
+      << r.out;
+}
+
 }  // namespace
 }  // namespace l2

@@ -4,14 +4,50 @@
 #include <cstring>
 
 namespace l2::viz {
+namespace {
 
-void compose_tile(std::vector<RgbImage>& displays, const TileHeader& tile,
-                  const std::uint8_t* pixels, std::size_t stride, StripErrorCounts& counts) {
+constexpr std::uint32_t kFar = 0xFFFFFF;
+
+std::uint32_t rgb_at(const std::uint8_t* p) {
+  return std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
+}
+
+// Columns [0, n) of one clipped row: `src` colour (and for DEPTH `src_depth`) onto `dst`, whose
+// depths are `depth` (nullptr: the display has no plane).
+void apply_row(const TileHeader& tile, const std::uint8_t* src, const std::uint8_t* src_depth,
+               std::uint8_t* dst, std::uint32_t* depth, long long n) {
+  if (tile.how == TileKind::Copy) {
+    std::memcpy(dst, src, static_cast<std::size_t>(n) * 3);
+    if (depth) std::fill_n(depth, n, 0u);
+    return;
+  }
+  for (long long i = 0; i < n; ++i, src += 3, dst += 3) {
+    std::uint32_t d = 0;
+    if (tile.how == TileKind::Key && rgb_at(src) == tile.key) continue;
+    if (tile.how == TileKind::Depth) {
+      d = rgb_at(src_depth + i * 3);
+      if (d >= depth[i]) continue;
+    }
+    std::memcpy(dst, src, 3);
+    if (depth) depth[i] = d;
+  }
+}
+
+}  // namespace
+
+void compose_tile(std::vector<RgbImage>& displays, std::vector<DepthPlane>& depths,
+                  const TileHeader& tile, const std::uint8_t* pixels, std::size_t stride,
+                  StripErrorCounts& counts) {
   if (tile.display >= displays.size()) {
     counts.missing_display += tile.h;
     return;
   }
   RgbImage& out = displays[tile.display];
+  if (depths.size() < displays.size()) depths.resize(displays.size());
+  DepthPlane& plane = depths[tile.display];
+  if (tile.how == TileKind::Depth && plane.empty()) {
+    plane.assign(static_cast<std::size_t>(out.width()) * out.height(), kFar);
+  }
   // 64-bit arithmetic: dx + w can pass INT_MAX for a hostile header.
   const long long x0 = tile.dx, x1 = x0 + tile.w;
   const long long cx0 = std::max(x0, 0LL), cx1 = std::min<long long>(x1, out.width());
@@ -23,10 +59,19 @@ void compose_tile(std::vector<RgbImage>& displays, const TileHeader& tile,
       continue;
     }
     if (!columns_inside) ++counts.clips;
-    const std::uint8_t* src = pixels + r * stride + static_cast<std::size_t>(cx0 - x0) * 3;
-    std::memcpy(out.row(static_cast<int>(y)).data() + cx0 * 3, src,
-                static_cast<std::size_t>(cx1 - cx0) * 3);
+    const std::uint8_t* row = pixels + r * stride;
+    const std::size_t skip = static_cast<std::size_t>(cx0 - x0) * 3;
+    std::uint32_t* depth =
+        plane.empty() ? nullptr : plane.data() + static_cast<std::size_t>(y) * out.width() + cx0;
+    apply_row(tile, row + skip, row + std::size_t{tile.w} * 3 + skip,
+              out.row(static_cast<int>(y)).data() + cx0 * 3, depth, cx1 - cx0);
   }
+}
+
+void compose_tile(std::vector<RgbImage>& displays, const TileHeader& tile,
+                  const std::uint8_t* pixels, std::size_t stride, StripErrorCounts& counts) {
+  std::vector<DepthPlane> none;
+  compose_tile(displays, none, tile, pixels, stride, counts);
 }
 
 }  // namespace l2::viz

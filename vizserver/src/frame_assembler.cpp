@@ -164,10 +164,21 @@ ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) const 
   out.frame = number;
   out.displays.reserve(sizes_.size());
   for (const auto& [w, h] : sizes_) out.displays.emplace_back(w, h, background_);
+  // A depth plane for every display a DEPTH tile goes to, made before any tile is applied:
+  // COPY and KEY pixels written earlier on the bus must hold depth 0 there too (spec §7).
+  std::vector<DepthPlane> depths(sizes_.size());
+  for (const auto& server_tiles : frame.tiles) {
+    for (const ReceivedTile& t : server_tiles) {
+      if (t.header.how != TileKind::Depth || t.header.display >= sizes_.size()) continue;
+      const auto [w, h] = sizes_[t.header.display];
+      depths[t.header.display].assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
+                                      0xFFFFFF);
+    }
+  }
   // Lower pipeservers first, each in arrival order: later writes win, as on the pixel bus.
   for (auto& server_tiles : frame.tiles) {
     for (ReceivedTile& t : server_tiles) {
-      compose_tile(out.displays, t.header, t.pixels.data(), std::size_t{t.header.w} * 3,
+      compose_tile(out.displays, depths, t.header, t.pixels.data(), t.header.row_bytes(),
                    out.counts);
       ++out.tiles;
     }

@@ -211,8 +211,8 @@ bool ServerLoop::advance(Connection& c) {
       const std::span<const std::uint8_t> fixed(c.head.data() + kHeaderBytes,
                                                 c.head_need - kHeaderBytes);
       std::size_t variable = 0;
-      if (c.header->kind == Kind::Tile) {
-        c.tile = decode_tile(fixed);
+      if (c.header->kind == Kind::Tile || c.header->kind == Kind::TileExt) {
+        c.tile = c.header->kind == Kind::Tile ? decode_tile(fixed) : decode_tile_ext(fixed);
         if (auto bad = validate(*c.tile, c.header->payload_bytes)) {
           close(c, fmt::format("{}: {}", who(c), *bad));
           return false;
@@ -248,7 +248,7 @@ void ServerLoop::dispatch(Connection& c) {
     return;
   }
   std::optional<std::string> error;  // c said HELLO: advance() let nothing else through
-  if (kind == Kind::Tile) {
+  if (kind == Kind::Tile || kind == Kind::TileExt) {
     error = assembler_.add_tile(c.server, ReceivedTile{*c.tile, std::move(c.body)});
   } else if (kind == Kind::FrameDone) {
     error = assembler_.finish(c.server, decode_frame_done(fixed));

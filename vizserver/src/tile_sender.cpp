@@ -85,12 +85,26 @@ void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::
                     "be 1..{}",
                     t.w, t.h, t.display, kMaxTileSide));
   }
-  const TileHeader h{frame, static_cast<std::uint32_t>(t.display), t.x,
-                     t.y,   static_cast<std::uint32_t>(t.w),       static_cast<std::uint32_t>(t.h)};
+  const TileHeader h{frame,
+                     static_cast<std::uint32_t>(t.display),
+                     t.x,
+                     t.y,
+                     static_cast<std::uint32_t>(t.w),
+                     static_cast<std::uint32_t>(t.h),
+                     t.how,
+                     t.key};
+  if (auto bad = validate(h, static_cast<std::uint32_t>(h.fixed_size() + h.pixel_bytes()))) {
+    throw std::invalid_argument("send_tile: " + *bad);
+  }
   const auto head = encode(h);
-  const std::size_t row_bytes = static_cast<std::size_t>(t.w) * 3;
+  const auto head_ext = encode_ext(h);
+  const std::size_t row_bytes = h.row_bytes();
   std::vector<iovec> parts;
-  parts.push_back(part(head.data(), head.size()));
+  if (h.how == TileKind::Copy) {
+    parts.push_back(part(head.data(), head.size()));
+  } else {
+    parts.push_back(part(head_ext.data(), head_ext.size()));
+  }
   if (stride == row_bytes) {
     parts.push_back(part(rgb, row_bytes * static_cast<std::size_t>(t.h)));
   } else {

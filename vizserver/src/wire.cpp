@@ -9,6 +9,8 @@ namespace {
 
 constexpr std::size_t kMaxTilePayload =
     24 + std::size_t{kMaxTileSide} * kMaxTileSide * 3;  // about 48 MiB: one 4095x4095 tile
+constexpr std::size_t kMaxTileExtPayload =
+    32 + std::size_t{kMaxTileSide} * kMaxTileSide * 6;  // a 4095x4095 DEPTH tile
 
 template <std::size_t Fixed>
 std::array<std::uint8_t, kHeaderBytes + Fixed> start(Kind kind, std::size_t extra = 0) {
@@ -18,7 +20,7 @@ std::array<std::uint8_t, kHeaderBytes + Fixed> start(Kind kind, std::size_t extr
 }
 
 bool known_kind(std::uint16_t k) {
-  return k >= 1 && k <= 6;
+  return k >= 1 && k <= 7;
 }
 
 }  // namespace
@@ -59,6 +61,8 @@ std::size_t fixed_bytes(Kind kind) {
       return 4;
     case Kind::Error:
       return 0;
+    case Kind::TileExt:
+      return 32;
   }
   return 0;
 }
@@ -77,6 +81,8 @@ const char* kind_name(Kind kind) {
       return "SWAPPED";
     case Kind::Error:
       return "ERROR";
+    case Kind::TileExt:
+      return "TILE_EXT";
   }
   return "?";
 }
@@ -106,6 +112,15 @@ std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m) {
   put_u32(p + 12, static_cast<std::uint32_t>(m.dy));
   put_u32(p + 16, m.w);
   put_u32(p + 20, m.h);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
+  auto out = start<32>(Kind::TileExt, m.pixel_bytes());
+  const auto tile = encode(m);
+  std::copy(tile.begin() + kHeaderBytes, tile.end(), out.begin() + kHeaderBytes);
+  put_u32(out.data() + 12 + 24, static_cast<std::uint32_t>(m.how));
+  put_u32(out.data() + 12 + 28, m.key);
   return out;
 }
 
@@ -141,9 +156,10 @@ std::variant<Header, std::string> decode_header(std::span<const std::uint8_t, kH
   if (!known_kind(raw_kind)) return fmt::format("unknown message kind {}", raw_kind);
   const Header h{static_cast<Kind>(raw_kind), get_u32(b.data() + 8)};
   const std::size_t fixed = fixed_bytes(h.kind);
-  const std::size_t max = h.kind == Kind::Tile    ? kMaxTilePayload
-                          : h.kind == Kind::Error ? kMaxErrorText
-                                                  : fixed;
+  const std::size_t max = h.kind == Kind::Tile      ? kMaxTilePayload
+                          : h.kind == Kind::TileExt ? kMaxTileExtPayload
+                          : h.kind == Kind::Error   ? kMaxErrorText
+                                                    : fixed;
   if (h.payload_bytes < fixed || h.payload_bytes > max) {
     return fmt::format("{} payload of {} bytes, allowed {}..{}", kind_name(h.kind), h.payload_bytes,
                        fixed, max);
@@ -168,6 +184,12 @@ TileHeader decode_tile(std::span<const std::uint8_t> f) {
           get_u32(p + 16),
           get_u32(p + 20)};
 }
+TileHeader decode_tile_ext(std::span<const std::uint8_t> f) {
+  TileHeader t = decode_tile(f);
+  t.how = static_cast<TileKind>(get_u32(f.data() + 24));
+  t.key = get_u32(f.data() + 28);
+  return t;
+}
 FrameDone decode_frame_done(std::span<const std::uint8_t> f) {
   return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
 }
@@ -179,9 +201,19 @@ std::optional<std::string> validate(const TileHeader& t, std::uint32_t payload_b
   if (t.w < 1 || t.w > kMaxTileSide || t.h < 1 || t.h > kMaxTileSide) {
     return fmt::format("TILE of {}x{} pixels, each side must be 1..{}", t.w, t.h, kMaxTileSide);
   }
-  if (payload_bytes != 24 + t.pixel_bytes()) {
-    return fmt::format("TILE {}x{} needs a payload of {} bytes, header says {}", t.w, t.h,
-                       24 + t.pixel_bytes(), payload_bytes);
+  const bool key = t.how == TileKind::Key, depth = t.how == TileKind::Depth;
+  if (t.how != TileKind::Copy && !key && !depth) {
+    return fmt::format("TILE_EXT of kind {}, expected 1 (KEY) or 2 (DEPTH)",
+                       static_cast<std::uint32_t>(t.how));
+  }
+  if (t.key > 0xFFFFFF || (depth && t.key != 0)) {
+    return fmt::format("TILE_EXT {} with key {:x}, allowed {}", key ? "KEY" : "DEPTH", t.key,
+                       key ? "0..ffffff" : "0 only");
+  }
+  if (payload_bytes != t.fixed_size() + t.pixel_bytes()) {
+    return fmt::format("{} {}x{} needs a payload of {} bytes, header says {}",
+                       t.how == TileKind::Copy ? "TILE" : "TILE_EXT", t.w, t.h,
+                       t.fixed_size() + t.pixel_bytes(), payload_bytes);
   }
   return std::nullopt;
 }

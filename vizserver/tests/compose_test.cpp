@@ -70,5 +70,41 @@ TEST(ComposeTile, HostileOffsetsAndMissingDisplaysWriteNothing) {
   EXPECT_EQ(displays[0], RgbImage(4, 4));
 }
 
+// Spec §7 on one 4x1 display, tiles in bus order, values worked out by hand.
+TEST(ComposeTile, KeyAndDepthCompositeAsTheEmulatorDoes) {
+  std::vector<RgbImage> displays{RgbImage(4, 1)};
+  std::vector<DepthPlane> depths(1, DepthPlane(4, 0xFFFFFF));
+  StripErrorCounts counts;
+  const auto depth_tile = [&](std::vector<std::uint8_t> colour_then_depth) {
+    compose_tile(displays, depths, TileHeader{0, 0, 0, 0, 4, 1, TileKind::Depth, 0},
+                 colour_then_depth.data(), 24, counts);
+  };
+  // Layer A: depths 5, 5, far, 9.
+  depth_tile({1, 0, 0, 2, 0, 0, 3,    0,    0,    4, 0, 0,  // colour
+              0, 0, 5, 0, 0, 5, 0xFF, 0xFF, 0xFF, 0, 0, 9});
+  // Layer B: depths 4 (nearer), 5 (a tie: A stays), 6 (nearer than far), 9 (a tie).
+  depth_tile({10, 0, 0, 20, 0, 0, 30, 0, 0, 40, 0, 0, 0, 0, 4, 0, 0, 5, 0, 0, 6, 0, 0, 9});
+  EXPECT_EQ(displays[0].at(0, 0), (Rgb{10, 0, 0}));
+  EXPECT_EQ(displays[0].at(1, 0), (Rgb{2, 0, 0}));
+  EXPECT_EQ(displays[0].at(2, 0), (Rgb{30, 0, 0}));
+  EXPECT_EQ(displays[0].at(3, 0), (Rgb{4, 0, 0}));
+  EXPECT_EQ(depths[0], (DepthPlane{4, 5, 6, 9}));
+  // A KEY over columns 1..3, key colour 000102 transparent at column 2: opaque, depth 0.
+  const std::vector<std::uint8_t> key{7, 7, 7, 0, 1, 2, 8, 8, 8};
+  compose_tile(displays, depths, TileHeader{0, 0, 1, 0, 3, 1, TileKind::Key, 0x000102}, key.data(),
+               9, counts);
+  EXPECT_EQ(displays[0].at(1, 0), (Rgb{7, 7, 7}));
+  EXPECT_EQ(displays[0].at(2, 0), (Rgb{30, 0, 0}));
+  EXPECT_EQ(depths[0], (DepthPlane{4, 0, 6, 0}));
+  // Depth 0 everywhere: nearer than 4 and 6, so columns 0 and 2 change; the KEY pixels hold
+  // depth 0 already and stay (no DEPTH strip covers an opaque overlay).
+  depth_tile({50, 0, 0, 60, 0, 0, 70, 0, 0, 80, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(displays[0].at(0, 0), (Rgb{50, 0, 0}));
+  EXPECT_EQ(displays[0].at(1, 0), (Rgb{7, 7, 7}));
+  EXPECT_EQ(displays[0].at(2, 0), (Rgb{70, 0, 0}));
+  EXPECT_EQ(displays[0].at(3, 0), (Rgb{8, 8, 8}));
+  EXPECT_EQ(counts, StripErrorCounts{});
+}
+
 }  // namespace
 }  // namespace l2::viz

@@ -46,6 +46,39 @@ TEST(Wire, TileHeaderRoundTripsIncludingNegativeOffsets) {
   EXPECT_EQ(bytes[kHeaderBytes + 11], 0xFF);
 }
 
+TEST(Wire, TileExtCarriesKindAndKeyAfterTheTileFields) {
+  const TileHeader t{7, 2, 3, 4, 2, 5, TileKind::Key, 0x00FF01};
+  const auto bytes = encode_ext(t);
+  // Kind 7, payload 32 + 2·5·3, then the TILE fields and kind 1, key 0x00ff01, little-endian.
+  EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 12),
+            (std::vector<std::uint8_t>{'L', '2', 'V', 'Z', 2, 0, 7, 0, 62, 0, 0, 0}));
+  EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin() + 36, bytes.end()),
+            (std::vector<std::uint8_t>{1, 0, 0, 0, 0x01, 0xFF, 0x00, 0x00}));
+  const auto h = decode_header(head_of(bytes.data()));
+  ASSERT_TRUE(std::holds_alternative<Header>(h));
+  EXPECT_EQ(std::get<Header>(h).kind, Kind::TileExt);
+  const TileHeader back = decode_tile_ext(std::span(bytes).subspan(kHeaderBytes));
+  EXPECT_EQ(back.how, TileKind::Key);
+  EXPECT_EQ(back.key, 0x00FF01u);
+  EXPECT_EQ(back.dy, 4);
+  EXPECT_FALSE(validate(back, 62).has_value());
+  // A DEPTH tile's rows are colour then depth: twice the bytes.
+  const TileHeader depth{0, 0, 0, 0, 2, 5, TileKind::Depth, 0};
+  EXPECT_EQ(depth.pixel_bytes(), 60u);
+  EXPECT_FALSE(validate(depth, 92).has_value());
+  EXPECT_EQ(validate(depth, 62).value_or(""),
+            "TILE_EXT 2x5 needs a payload of 92 bytes, header says 62");
+}
+
+TEST(Wire, TileExtOfAnotherKindOrWithABadKeyIsRefused) {
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind{3}, 0}, 35).value_or(""),
+            "TILE_EXT of kind 3, expected 1 (KEY) or 2 (DEPTH)");
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Depth, 5}, 38).value_or(""),
+            "TILE_EXT DEPTH with key 5, allowed 0 only");
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Key, 0x1000000}, 35).value_or(""),
+            "TILE_EXT KEY with key 1000000, allowed 0..ffffff");
+}
+
 TEST(Wire, FrameDoneAndSwappedRoundTrip) {
   const auto done = encode(FrameDone{1, 99, 12});
   const FrameDone d = decode_frame_done(std::span(done).subspan(kHeaderBytes));

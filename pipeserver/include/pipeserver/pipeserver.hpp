@@ -1,11 +1,12 @@
-// One render node of the wall (spec §1, §4): renders every tile assigned to it at its packed
-// place, draws the strip headers into the gaps with the frame's parity, and scans the
-// framebuffer out as a 24-bit RGB frame.
+// One render node of the wall (spec §1, §4): renders every tile assigned to it as the window of
+// its display would (so its pixels are the display-sized render's), copies it to its packed
+// place in a 24-bit RGB frame, and draws the strip headers into the gaps with the frame's parity.
 #pragma once
 
 #include <array>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "image/rgb_image.hpp"
 #include "pipeserver/bucketing.hpp"
@@ -19,7 +20,7 @@ namespace l2 {
 
 struct FrameTimes {
   double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
-  double scanout_ms = 0;  // RGBA bottom-up -> RGB top-down, strip headers drawn in row by row
+  double scanout_ms = 0;  // tiles RGBA bottom-up -> RGB top-down (and depth), headers, black
   BucketStats buckets;
   double total_ms() const { return render_ms + scanout_ms; }
 };
@@ -54,10 +55,19 @@ class Pipeserver {
   const FrameTimes& last_times() const { return times_; }
 
  private:
+  // The tiles of one display, rendered in a window of the display's size.
+  struct Window {
+    Rect on_canvas;           // the display
+    std::size_t context = 0;  // into contexts_
+    std::vector<int> tiles;   // into plan_.tiles
+  };
+  void render_windows(Scene& scene, std::span<std::uint8_t> dst);
+
   ServerPlan plan_;
   Canvas canvas_;
-  GlContext gl_;
-  std::array<FrameHeaders, 2> headers_;  // encoded once, by frame parity
+  std::vector<std::unique_ptr<GlContext>> contexts_;  // one per display size
+  std::vector<Window> windows_;                       // by context, then display
+  std::array<FrameHeaders, 2> headers_;               // encoded once, by frame parity
   RgbImage frame_;
   FrameTimes times_;
 };

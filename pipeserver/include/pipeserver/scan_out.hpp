@@ -11,6 +11,9 @@
 
 namespace l2 {
 
+// One row: `width` RGBA pixels to RGB (SSSE3 where the CPU has it).
+void rgba_to_rgb_row(const std::uint8_t* rgba, std::uint8_t* rgb, int width);
+
 // Converts a w x h RGBA bottom-up image into w x h RGB top-down in `dst_rgb` (w*h*3 bytes).
 // Throws std::invalid_argument when dst_rgb is too small.
 void scan_out(const std::uint8_t* rgba, int width, int height, std::span<std::uint8_t> dst_rgb);

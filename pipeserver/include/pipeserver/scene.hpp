@@ -63,7 +63,8 @@ struct TileView {
   Canvas canvas;
   Rect on_canvas;        // the tile's rectangle on the canvas (rows top to bottom)
   int frame = 0;         // the application frame: every pipeserver draws the same scene for it
-  glm::dmat4 tile{1.0};  // takes the whole canvas's clip space to the tile's
+  glm::dmat4 tile{1.0};  // takes the whole canvas's clip space to the GL window's (the tile's
+                         // display, or the tile alone; the scissor keeps drawing inside the tile)
   Camera camera;         // the wall's camera, the unit sphere framed on the canvas
 };
 

@@ -12,7 +12,8 @@ Rgb palette_colour(int i);
 
 // One pipeserver framebuffer: header gaps white (wider than 2 columns on large framebuffers, so
 // they show scaled down), tiles in their destination display's colour and labelled "D<display>
-// L<logical tile>" (the display alone where that does not fit), unused space dark grey.
+// L<logical tile>" (the display alone where that does not fit), a DEPTH tile's depth pixels in a
+// darker shade ("... depth"), unused space dark grey.
 RgbImage framebuffer_picture(const ServerPlan& plan);
 // The same with a legend below: what the colours and labels mean (tilelayout --png).
 RgbImage framebuffer_page(const ServerPlan& plan);
@@ -20,8 +21,11 @@ RgbImage framebuffer_page(const ServerPlan& plan);
 // The canvas (shrunk by a whole factor when longer than 4096 pixels): mullions dark grey, display
 // edges outlined, each display tile in its pipeserver's colour with a dark outline and labelled
 // "P<pipeserver> L<logical tile>" (the pipeserver alone where that does not fit).
-RgbImage wall_picture(const TileLayout& layout);
+// In a depth wall, the tiles of one depth layer (0..wall_layers - 1) and the overlay.
+RgbImage wall_picture(const TileLayout& layout, int layer = 0);
 // The same with a legend below (tilelayout --png).
-RgbImage wall_page(const TileLayout& layout);
+RgbImage wall_page(const TileLayout& layout, int layer = 0);
+// Depth layers of the plan: 1 for a wall without [depth].
+int wall_layers(const TileLayout& layout);
 
 }  // namespace l2

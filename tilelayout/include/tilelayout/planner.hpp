@@ -38,8 +38,16 @@ std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>
 // The wall-file name of a policy: "round-robin", "zig-zag", "spiral", "blocks", "area-balanced".
 const char* to_string(AssignmentPolicy policy);
 
+// Layers every display tile is rendered as when the wall has `server_count` pipeservers: 1
+// without [depth], else depth.layers ("all": every pipeserver but the overlay's).
+int layer_count(const Wall& wall, int server_count);
+
 // What assign_servers gives `server_count` pipeservers under `policy`: each one's display
-// tiles in packing order (tallest first, then tiling order), as pack_tiles takes them.
+// tiles in packing order (tallest first, then tiling order), as pack_tiles takes them. In a
+// depth wall the policy deals the logical tiles to the pipeservers of layer 0, G = (pipeservers
+// that share the tiling) / layers of them, and pipeserver j·G + s renders layer j of what
+// pipeserver s renders in layer 0, as DEPTH tiles; the overlay goes to the last pipeserver,
+// alone. Every list is empty when the layers cannot share `server_count` pipeservers evenly.
 std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
                                                         const std::vector<Rect>& logical,
                                                         const std::vector<DisplayTile>& tiles,

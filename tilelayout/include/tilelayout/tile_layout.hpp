@@ -56,6 +56,9 @@ struct PackedRow {
 
 struct ServerPlan {
   int server = 0;
+  // Depth walls: the pipeserver renders share `layer` (0..layers-1) of the scene's geometry, in
+  // draw order. Sort-first pipeservers, and the overlay's, render all of it: layer 0 of 1.
+  int layer = 0, layers = 1;
   int fb_width = 0, fb_height = 0;
   std::vector<PackedTile> tiles;  // in packing order
   std::vector<PackedRow> rows;
@@ -64,9 +67,10 @@ struct ServerPlan {
 
 struct TileLayout {
   Wall wall;
-  std::vector<Rect> logical_tiles;    // canvas rectangles, in tiling order
+  std::vector<Rect> logical_tiles;    // canvas rectangles, in tiling order; the overlay last
   std::vector<DisplayTile> tiles;     // split at display edges; pixels behind mullions dropped
   std::vector<int> tile_server;       // tiles[i] is rendered by pipeserver tile_server[i]
+                                      // (a depth wall lists each display tile once a layer)
   std::vector<ServerPlan> servers;    // one per pipeserver
   std::vector<std::string> warnings;  // for example canvas area left uncovered
 };

@@ -2,7 +2,9 @@
 // where they sit on the logical canvas, the pipeservers, the mesh limits and swap-lock groups.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,18 @@ struct TilingSpec {
   int substrip_count = 0;                 // ... each cut into this many vertical sub-strips
 };
 
+// `[depth] layers = "all"`: as many layers as there are pipeservers to share them (sort-last).
+inline constexpr int kAllLayers = -1;
+
+// `[overlay]`: a rectangle of one display that the last pipeserver renders alone and sends as a
+// KEY strip (spec §7): it covers what the other pipeservers route, except where it shows `key`.
+struct Overlay {
+  int display = 0;
+  Rect on_display;
+  std::uint32_t key = 0;  // R<<16 | G<<8 | B
+  int line = 0;           // of [overlay] in the wall file, for errors found while planning
+};
+
 struct Wall {
   std::filesystem::path source;  // the wall file, for error messages; empty when built in code
   std::string name;
@@ -48,8 +62,13 @@ struct Wall {
   AssignmentPolicy assignment = AssignmentPolicy::RoundRobin;
   int board_max_width = 1280, board_max_height = 1024;  // per-input limit of a board (spec §5)
   int refresh_hz = 60;
+  // Depth compositing (spec §7): every display tile rendered as this many layers, each by a
+  // different pipeserver with its share of the scene's geometry; 0: no depth compositing (sort-
+  // first); kAllLayers: one layer per pipeserver (sort-last).
+  int depth_layers = 0;
+  std::optional<Overlay> overlay;
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
-  int tiling_line = 0, framebuffer_line = 0;
+  int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };
 
 }  // namespace l2

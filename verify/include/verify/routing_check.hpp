@@ -7,7 +7,11 @@
 //
 // The strips are taken as the router takes them (spec §3, §5): every scanline of every input
 // parsed header by header; inputs in ascending order, each top to bottom and left to right, a
-// later strip overwriting an earlier one (the higher input on the bus wins).
+// later strip overwriting an earlier one (the higher input on the bus wins), KEY and DEPTH
+// strips composited as spec §7 says. The test pattern of compositing tiles
+// (tilelayout/test_pattern.hpp) makes their composite the plain pattern, so a depth or keyed
+// wall verifies like any other; only COPY pixels written twice count as written twice, since
+// KEY and DEPTH strips are meant to cover others.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +28,7 @@ namespace l2 {
 // What one display pixel turned out to be.
 enum class PixelKind : std::uint8_t {
   Unplanned,  // no strip wrote it and the wall covers it with no tile: as it should be
-  Right,      // shows the test pattern of its own position, written once
+  Right,      // shows the test pattern of its own position, written once by COPY
   Missing,    // no strip wrote it, though a tile of the wall covers it
   Misplaced,  // shows the pattern of another position (or display), or no pattern at all
   Twice,      // right in the end, but written by two or more strips
@@ -69,6 +73,7 @@ struct DisplayCheck {
 struct InputCheck {
   int input = 0;
   long long copy_strips = 0;
+  long long composited_strips = 0;  // KEY and DEPTH (spec §7)
   StripErrorCounts errors;          // the parser's (§3); its missing_display and clips stay 0
   long long to_absent_display = 0;  // COPY pixels for a display the wall does not have
   bool clean() const { return errors.total() == 0 && to_absent_display == 0; }

@@ -11,6 +11,7 @@
 
 #include "vizserver/run_token.hpp"
 #include "vizserver/socket.hpp"
+#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 
@@ -19,6 +20,8 @@ namespace l2::viz {
 struct TileTarget {
   int display = 0;
   int x = 0, y = 0, w = 0, h = 0;
+  TileKind how = TileKind::Copy;  // KEY and DEPTH go as TILE_EXT (spec §7)
+  std::uint32_t key = 0;          // KEY: the key colour
 };
 
 struct SenderOptions {
@@ -37,7 +40,8 @@ class TileSender {
                             int display_count, SenderOptions options = {});
 
   // Sends one tile: h rows of w RGB pixels, row r starting at rgb + r * stride (stride in
-  // bytes, so a tile inside a bigger framebuffer goes out row span by row span, uncopied).
+  // bytes, so a tile inside a bigger framebuffer goes out row span by row span, uncopied); a
+  // DEPTH tile's rows are 2w pixels, its depth right after its colour as packed (spec §7).
   // Throws std::invalid_argument for sides outside 1..4095, VizError if the server is gone.
   void send_tile(std::uint32_t frame, const TileTarget& tile, const std::uint8_t* rgb,
                  std::size_t stride);
