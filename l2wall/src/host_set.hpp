@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "sync_backchannel/back_channel.hpp"

@@ -33,7 +33,7 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
 
 VizSide::VizSide(const VizLaunch& launch) : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
-  const viz::Fd listener = viz::listen_tcp("127.0.0.1", 0);
+  const Fd listener = viz::listen_tcp("127.0.0.1", 0);
   process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())),
                    std::vector<std::string>{token_variable()});
   accept_stream(listener, launch);
@@ -51,10 +51,10 @@ VizSide::~VizSide() {
   shut_down();
 }
 
-void VizSide::accept_stream(const viz::Fd& listener, const VizLaunch& launch) {
+void VizSide::accept_stream(const Fd& listener, const VizLaunch& launch) {
   const std::string who = name();
   const auto deadline = RunClock::now() + launch.start_timeout;
-  viz::Fd stream;
+  Fd stream;
   while (!stream) {
     if ((exit_ = process_->poll())) {
       throw RunFault(fmt::format("{} {} before it listened", who, exit_->describe()));

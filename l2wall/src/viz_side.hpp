@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
 #include "vizserver/run_token.hpp"
@@ -76,7 +76,7 @@ class VizSide {
   void shut_down();
 
  private:
-  void accept_stream(const viz::Fd& listener, const VizLaunch& launch);
+  void accept_stream(const Fd& listener, const VizLaunch& launch);
 
   std::string host_;
   std::uint16_t port_ = 0;
