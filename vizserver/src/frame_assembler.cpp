@@ -28,44 +28,44 @@ bool FrameAssembler::waits_for(const Server& s, std::uint32_t frame) const {
   return !s.last_done || *s.last_done < frame;
 }
 
-std::optional<std::string> FrameAssembler::connect(int server) {
+Status FrameAssembler::connect(int server) {
   if (server < 0 || server >= server_count()) {
-    return fmt::format("pipeserver id {} is outside 0..{}", server, server_count() - 1);
+    return Failure{fmt::format("pipeserver id {} is outside 0..{}", server, server_count() - 1)};
   }
-  if (servers_[server].connected) return fmt::format("{} is already connected", name(server));
+  if (servers_[server].connected)
+    return Failure{fmt::format("{} is already connected", name(server))};
   servers_[server].connected = true;
-  return std::nullopt;
+  return {};
 }
 
 // A frame another pipeserver starts cannot complete if a pipeserver it waits for has left.
-std::optional<std::string> FrameAssembler::check_new_frame(std::uint32_t frame) const {
+Status FrameAssembler::check_new_frame(std::uint32_t frame) const {
   for (int i = 0; i < server_count(); ++i) {
     const Server& s = servers_[i];
     if (!s.closed || !waits_for(s, frame)) continue;
-    return s.last_done ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
+    return Failure{s.last_done
+                       ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
                                      frame, name(i), *s.last_done)
-                       : fmt::format(
-                             "frame {} can never complete: {} disconnected before "
-                             "finishing any frame",
-                             frame, name(i));
+                       : fmt::format("frame {} can never complete: {} disconnected before "
+                                     "finishing any frame",
+                                     frame, name(i))};
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::check_order(int server, std::uint32_t frame,
-                                                       const char* what) const {
+Status FrameAssembler::check_order(int server, std::uint32_t frame, const char* what) const {
   const Server& s = servers_[server];
   if (s.last_done && frame <= *s.last_done) {
-    return fmt::format(
-        "{}: {} for frame {} after its FRAME_DONE for frame {} (frame numbers "
-        "must increase)",
-        name(server), what, frame, *s.last_done);
+    return Failure{
+        fmt::format("{}: {} for frame {} after its FRAME_DONE for frame {} (frame numbers "
+                    "must increase)",
+                    name(server), what, frame, *s.last_done)};
   }
   if (s.open_frame && frame != *s.open_frame) {
-    return fmt::format("{}: {} for frame {} while frame {} has no FRAME_DONE", name(server), what,
-                       frame, *s.open_frame);
+    return Failure{fmt::format("{}: {} for frame {} while frame {} has no FRAME_DONE", name(server),
+                               what, frame, *s.open_frame)};
   }
-  return std::nullopt;
+  return {};
 }
 
 FrameAssembler::Frame& FrameAssembler::frame_entry(std::uint32_t frame) {
@@ -74,58 +74,59 @@ FrameAssembler::Frame& FrameAssembler::frame_entry(std::uint32_t frame) {
   return f;
 }
 
-std::optional<std::string> FrameAssembler::add_tile(int server, ReceivedTile tile) {
+Status FrameAssembler::add_tile(int server, ReceivedTile tile) {
   const std::uint32_t number = tile.header.frame;
-  if (auto e = check_order(server, number, "TILE")) return e;
+  if (Status e = check_order(server, number, "TILE"); !e.ok()) return e;
   if (!frames_.contains(number)) {
-    if (auto e = check_new_frame(number)) return e;
+    if (Status e = check_new_frame(number); !e.ok()) return e;
   }
   if (buffered_bytes_ + tile.pixels.size() > max_buffered_bytes_) {
-    return fmt::format(
-        "{}: more than {} MiB of tiles buffered waiting for frame {} (is a "
-        "pipeserver behind?)",
-        name(server), max_buffered_bytes_ >> 20, frames_.begin()->first);
+    return Failure{
+        fmt::format("{}: more than {} MiB of tiles buffered waiting for frame {} (is a "
+                    "pipeserver behind?)",
+                    name(server), max_buffered_bytes_ >> 20, frames_.begin()->first)};
   }
   buffered_bytes_ += tile.pixels.size();
   frame_entry(number).tiles[server].push_back(std::move(tile));
   servers_[server].open_frame = number;
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::finish(int server, const FrameDone& done) {
+Status FrameAssembler::finish(int server, const FrameDone& done) {
   if (done.server_id != static_cast<std::uint32_t>(server)) {
-    return fmt::format("{}: FRAME_DONE names pipeserver {}", name(server), done.server_id);
+    return Failure{fmt::format("{}: FRAME_DONE names pipeserver {}", name(server), done.server_id)};
   }
-  if (auto e = check_order(server, done.frame, "FRAME_DONE")) return e;
+  if (Status e = check_order(server, done.frame, "FRAME_DONE"); !e.ok()) return e;
   if (!frames_.contains(done.frame)) {
-    if (auto e = check_new_frame(done.frame)) return e;
+    if (Status e = check_new_frame(done.frame); !e.ok()) return e;
   }
   const std::size_t arrived = frame_entry(done.frame).tiles[server].size();
   if (arrived != done.tile_count) {
-    return fmt::format("{}: FRAME_DONE for frame {} announces {} tiles, {} arrived", name(server),
-                       done.frame, done.tile_count, arrived);
+    return Failure{fmt::format("{}: FRAME_DONE for frame {} announces {} tiles, {} arrived",
+                               name(server), done.frame, done.tile_count, arrived)};
   }
   servers_[server].last_done = done.frame;
   servers_[server].open_frame.reset();
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::disconnect(int server) {
+Status FrameAssembler::disconnect(int server) {
   Server& s = servers_[server];
   s.closed = true;
   if (s.open_frame) {
-    return fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
-                       name(server), *s.open_frame, frames_[*s.open_frame].tiles[server].size());
+    return Failure{fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
+                               name(server), *s.open_frame,
+                               frames_[*s.open_frame].tiles[server].size())};
   }
   if (auto f = frame_waiting_for(server)) {
-    return s.last_done ? fmt::format("{} disconnected after frame {}; frame {} is waiting for it",
+    return Failure{s.last_done
+                       ? fmt::format("{} disconnected after frame {}; frame {} is waiting for it",
                                      name(server), *s.last_done, *f)
-                       : fmt::format(
-                             "{} disconnected before finishing any frame; frame {} is "
-                             "waiting for it",
-                             name(server), *f);
+                       : fmt::format("{} disconnected before finishing any frame; frame {} is "
+                                     "waiting for it",
+                                     name(server), *f)};
   }
-  return std::nullopt;
+  return {};
 }
 
 std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int server) const {

@@ -48,9 +48,7 @@ class ServerLoop {
     Fd fd;
     std::string peer;
     int server = -1;  // pipeserver id once HELLO was accepted
-    std::array<std::uint8_t, kHeaderBytes + kMaxFixedBytes> head{};
-    std::size_t head_got = 0, head_need = kHeaderBytes;
-    std::optional<Header> header;
+    MessageHead head{Protocol::Tiles};
     std::optional<TileHeader> tile;
     std::vector<std::uint8_t> body;
     std::size_t body_got = 0;

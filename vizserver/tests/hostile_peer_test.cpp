@@ -38,7 +38,7 @@ ServerOptions one_display(int servers) {
 std::pair<Kind, std::string> first_reply(int fd) {
   std::uint8_t head[kHeaderBytes];
   recv_all(fd, head, kHeaderBytes, Clock::now() + 3000ms, "server");
-  const auto h = std::get<Header>(decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)));
+  const Header h = decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)).value();
   std::string body(h.payload_bytes, '\0');
   recv_all(fd, reinterpret_cast<std::uint8_t*>(body.data()), body.size(), Clock::now() + 3000ms,
            "server");

@@ -224,7 +224,7 @@ TEST(VizServerNet, BadMagicClosesOnlyThatConnectionAndNamesThePeer) {
   send_all(raw.get(), std::span(&part, 1), Clock::now() + 1000ms, "server");
   std::uint8_t head[kHeaderBytes];
   recv_all(raw.get(), head, kHeaderBytes, Clock::now() + 2000ms, "server");
-  const auto h = std::get<Header>(decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)));
+  const Header h = decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)).value();
   ASSERT_EQ(h.kind, Kind::Error);
   std::string text(h.payload_bytes, '\0');
   recv_all(raw.get(), reinterpret_cast<std::uint8_t*>(text.data()), text.size(),

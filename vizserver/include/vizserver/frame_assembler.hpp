@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/result.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/wire.hpp"
@@ -49,11 +50,11 @@ class FrameAssembler {
 
   // Protocol events of pipeserver `server` (0..server_count-1). An error return is one line,
   // "pipeserver 1: ..."; the pipeserver broke the rules or the run cannot go on.
-  std::optional<std::string> connect(int server);
-  std::optional<std::string> add_tile(int server, ReceivedTile tile);
-  std::optional<std::string> finish(int server, const FrameDone& done);
+  Status connect(int server);
+  Status add_tile(int server, ReceivedTile tile);
+  Status finish(int server, const FrameDone& done);
   // The connection of `server` closed. Error if a frame is, or will be, waiting for it.
-  std::optional<std::string> disconnect(int server);
+  Status disconnect(int server);
 
   // Removes and composes every complete frame, lowest first.
   std::vector<ComposedFrame> take_complete();
@@ -76,8 +77,8 @@ class FrameAssembler {
   };
 
   std::string name(int server) const;
-  std::optional<std::string> check_new_frame(std::uint32_t frame) const;
-  std::optional<std::string> check_order(int server, std::uint32_t frame, const char* what) const;
+  Status check_new_frame(std::uint32_t frame) const;
+  Status check_order(int server, std::uint32_t frame, const char* what) const;
   Frame& frame_entry(std::uint32_t frame);
   bool waits_for(const Server& s, std::uint32_t frame) const;
   ComposedFrame compose(std::uint32_t number, Frame& frame) const;
