@@ -228,4 +228,9 @@ Finished run(std::vector<std::string> argv, milliseconds timeout) {
   return child.finish(timeout);
 }
 
+Finished run_shell(const std::string& command, milliseconds timeout) {
+  ChildProcess child({"/bin/sh", "-c", "exec 2>&1; " + command}, {}, Capture{true, false});
+  return child.finish(timeout);
+}
+
 }  // namespace l2

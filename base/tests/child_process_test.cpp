@@ -151,5 +151,11 @@ TEST(ChildProcess, RunFindsAProgramInPath) {
   EXPECT_EQ(f.out, "sh\n");
 }
 
+TEST(ChildProcess, RunShellJoinsStderrToStdoutInOrder) {
+  const Finished f = run_shell("echo out; echo err >&2; exit 4", 5s);
+  EXPECT_EQ(f.out, "out\nerr\n");
+  EXPECT_EQ(f.status.shell_code(), 4);
+}
+
 }  // namespace
 }  // namespace l2

@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <string>
 #include <thread>
 
+#include "base/child_process.hpp"
 #include "frame_stamp.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/planner.hpp"
@@ -29,12 +29,8 @@ constexpr auto kFaultNoticeBound = 10s;
 
 // What `tilelayout WALL` prints on stdout and stderr, and its exit status.
 std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
-  FILE* pipe = popen(fmt::format("'{}' '{}' 2>&1", TILELAYOUT_EXE, wall.string()).c_str(), "r");
-  std::string out;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const Finished f = run_shell(fmt::format("'{}' '{}'", TILELAYOUT_EXE, wall.string()), 60s);
+  return {f.status.shell_code(), f.out};
 }
 
 TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {

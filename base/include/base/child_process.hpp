@@ -91,5 +91,8 @@ class ChildProcess {
 
 // Runs to completion with both streams captured (bounded by `timeout`).
 Finished run(std::vector<std::string> argv, std::chrono::milliseconds timeout);
+// Runs `command` with /bin/sh, its stderr joined to its stdout in `out` (as a terminal shows
+// them), bounded by `timeout`.
+Finished run_shell(const std::string& command, std::chrono::milliseconds timeout);
 
 }  // namespace l2
