@@ -27,8 +27,9 @@ struct Failure {
 template <class T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : v_(std::in_place_index<0>, std::move(value)) {}            // NOLINT: implicit
-  Result(Failure failure) : v_(std::in_place_index<1>, std::move(failure)) {}  // NOLINT
+  Result(T value) : v_(std::in_place_index<0>, std::move(value)) {}  // implicit: `return value;`
+  Result(Failure failure)
+      : v_(std::in_place_index<1>, std::move(failure)) {}  // and `return Failure{...};`
 
   bool ok() const { return v_.index() == 0; }
   // Throws std::bad_variant_access when it holds a Failure.
@@ -48,14 +49,15 @@ class [[nodiscard]] Result {
 // Nothing, or a Failure: the result of a check or an action that yields no value.
 class [[nodiscard]] Status {
  public:
-  Status() = default;                                              // ok
-  Status(Failure failure) : reason_(std::move(failure.reason)) {}  // NOLINT: implicit
+  Status() = default;                                        // ok
+  Status(Failure failure) : failure_(std::move(failure)) {}  // implicit: `return Failure{...};`
 
-  bool ok() const { return !reason_; }
-  const std::string& reason() const { return reason_ ? *reason_ : no_reason(); }
+  bool ok() const { return !failure_; }
+  const std::string& reason() const { return failure_ ? failure_->reason : no_reason(); }
+  int error() const { return failure_ ? failure_->error : 0; }
 
  private:
-  std::optional<std::string> reason_;
+  std::optional<Failure> failure_;
 };
 
 }  // namespace l2
