@@ -121,16 +121,17 @@ bool VizSide::said_why() const {
          watcher_->ended_with_error_message();
 }
 
-std::string VizSide::describe_down(int shown, const std::string& keep) const {
+std::string VizSide::describe_down(int shown, const std::string& on_displays) const {
   const std::string who = name();
   if (said_why()) {
-    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(), keep);
+    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(),
+                       on_displays);
   }
   if (exit_ && !exit_->ok()) {
-    return fmt::format("{} {} at frame {}; {}", who, exit_->describe(), shown, keep);
+    return fmt::format("{} {} at frame {}; {}", who, exit_->describe(), shown, on_displays);
   }
   return fmt::format("{} at frame {}: {}; {}", who, shown,
-                     stream_error_.value_or("display stream ended"), keep);
+                     stream_error_.value_or("display stream ended"), on_displays);
 }
 
 void VizSide::finish(milliseconds timeout) {

@@ -66,9 +66,10 @@ class VizSide {
   // True when the server ended by its own judgement, saying why (exit code 1 after ERROR):
   // then its words name the cause, which may be a pipeserver.
   bool said_why() const;
-  // "compositing server (vizserver pid 4242) killed by signal 9 (Killed) at frame 12; " + kept
-  // — or "... failed at frame 12: <its reason>; " + kept. `kept`: what the displays show.
-  std::string describe_down(int shown, const std::string& kept) const;
+  // "compositing server (vizserver pid 4242) killed by signal 9 (Killed) at frame 12; " +
+  // on_displays — or "... failed at frame 12: <its reason>; " + on_displays (what the displays
+  // show).
+  std::string describe_down(int shown, const std::string& on_displays) const;
 
   // After the last frame: the server must end by itself, successfully, within `timeout`.
   void finish(std::chrono::milliseconds timeout);

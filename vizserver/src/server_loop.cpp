@@ -117,7 +117,7 @@ std::size_t ServerLoop::count_strangers(Connection** oldest) const {
   std::size_t strangers = 0;
   *oldest = nullptr;
   for (const auto& c : conns_) {
-    if (c->dead || c->server >= 0) continue;
+    if (c->dead || c->pipeserver >= 0) continue;
     ++strangers;
     if (!*oldest || c->connected < (*oldest)->connected) *oldest = c.get();
   }
@@ -130,7 +130,7 @@ void ServerLoop::make_room_for_a_stranger() {
   // A burst of connections can arrive between a pipeserver's connect and our first look at
   // it: its HELLO may already be here, unread. Read before judging who said nothing.
   for (std::size_t i = 0; i < conns_.size() && !failure_; ++i) {
-    if (!conns_[i]->dead && conns_[i]->server < 0) read_some(*conns_[i]);
+    if (!conns_[i]->dead && conns_[i]->pipeserver < 0) read_some(*conns_[i]);
   }
   if (failure_ || count_strangers(&oldest) < kMaxStrangers) return;
   // Logged the first time and every 1000th, so that a flood cannot grow the log without bound.
@@ -144,8 +144,8 @@ void ServerLoop::make_room_for_a_stranger() {
 }
 
 std::string ServerLoop::who(const Connection& c) const {
-  return c.server >= 0 ? fmt::format("pipeserver {} ({})", c.server, c.peer)
-                       : fmt::format("connection from {}", c.peer);
+  return c.pipeserver >= 0 ? fmt::format("pipeserver {} ({})", c.pipeserver, c.peer)
+                           : fmt::format("connection from {}", c.peer);
 }
 
 void ServerLoop::read_some(Connection& c) {
@@ -189,7 +189,7 @@ bool ServerLoop::advance(Connection& c) {
     const Header& header = c.head.header();
     // A peer that has not said HELLO may say HELLO or ERROR, nothing else: refused here,
     // before a TILE's pixels (up to 48 MiB) are allocated for a stranger.
-    if (c.server < 0 && header.kind != Kind::Hello && header.kind != Kind::Error) {
+    if (c.pipeserver < 0 && header.kind != Kind::Hello && header.kind != Kind::Error) {
       close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(header.kind)));
       return false;
     }
@@ -232,9 +232,9 @@ void ServerLoop::dispatch(Connection& c) {
   }
   Status taken;  // c said HELLO: advance() let nothing else through
   if (kind == Kind::Tile) {
-    taken = assembler_.add_tile(c.server, ReceivedTile{*c.tile, std::move(c.body)});
+    taken = assembler_.add_tile(c.pipeserver, ReceivedTile{*c.tile, std::move(c.body)});
   } else if (kind == Kind::FrameDone) {
-    taken = assembler_.finish(c.server, decode_frame_done(fixed));
+    taken = assembler_.finish(c.pipeserver, decode_frame_done(fixed));
   } else {
     taken = Failure{fmt::format("unexpected {} from a pipeserver", kind_name(kind))};
   }
@@ -242,7 +242,7 @@ void ServerLoop::dispatch(Connection& c) {
 }
 
 void ServerLoop::on_hello(Connection& c) {
-  if (c.server >= 0) {
+  if (c.pipeserver >= 0) {
     close(c, fmt::format("{}: second HELLO", who(c)));
     return;
   }
@@ -256,9 +256,9 @@ void ServerLoop::on_hello(Connection& c) {
     refusal = Failure{
         fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
                     hello.server_id, hello.display_count, assembler_.display_count())};
-  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.server_count())) {
+  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.pipeserver_count())) {
     refusal = Failure{fmt::format("pipeserver id {} is outside 0..{}", hello.server_id,
-                                  assembler_.server_count() - 1)};
+                                  assembler_.pipeserver_count() - 1)};
   } else {
     refusal = assembler_.connect(static_cast<int>(hello.server_id));
   }
@@ -270,10 +270,10 @@ void ServerLoop::on_hello(Connection& c) {
     close(c, std::nullopt);
     return;
   }
-  c.server = static_cast<int>(hello.server_id);
+  c.pipeserver = static_cast<int>(hello.server_id);
   ++hellos_;
   const auto welcome = encode(Welcome{hello.server_id, hello.display_count,
-                                      static_cast<std::uint32_t>(assembler_.server_count())});
+                                      static_cast<std::uint32_t>(assembler_.pipeserver_count())});
   queue(c, welcome);
 }
 
@@ -313,8 +313,8 @@ void ServerLoop::send_error(Connection& c, const std::string& text) {
 void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) {
   if (c.dead) return;
   // Record first, tell the peer second: whoever hears the ERROR can already read the record.
-  if (c.server >= 0) {
-    const Status left = assembler_.disconnect(c.server);
+  if (c.pipeserver >= 0) {
+    const Status left = assembler_.disconnect(c.pipeserver);
     if (reason) {
       fail(*reason);
     } else if (!left.ok()) {
@@ -360,32 +360,32 @@ void ServerLoop::publish_swaps() {
       std::lock_guard lock(shared_->mutex);
       shared_->counts += frame->counts;
       shared_->last_swapped = frame->frame;
-      shared_->kept.push_back(frame);
-      while (shared_->kept.size() > std::max<std::size_t>(options_.keep_frames, 1)) {
-        shared_->kept.pop_front();
+      shared_->recent.push_back(frame);
+      while (shared_->recent.size() > std::max<std::size_t>(options_.recent_frames, 1)) {
+        shared_->recent.pop_front();
       }
     }
     shared_->changed.notify_all();
     const auto ack = encode(Swapped{frame->frame});
     for (auto& c : conns_) {
-      if (!c->dead && c->server >= 0) queue(*c, ack);
+      if (!c->dead && c->pipeserver >= 0) queue(*c, ack);
     }
     if (on_swap_) on_swap_(frame);
   }
 }
 
 void ServerLoop::check_timers(Clock::time_point now) {
-  if (hellos_ < assembler_.server_count() && options_.accept_timeout.count() > 0 &&
+  if (hellos_ < assembler_.pipeserver_count() && options_.accept_timeout.count() > 0 &&
       now - started_ > options_.accept_timeout) {
     fail(fmt::format("only {} of {} pipeservers said HELLO within {:.1f} s (listening on {}:{})",
-                     hellos_, assembler_.server_count(), seconds(options_.accept_timeout),
+                     hellos_, assembler_.pipeserver_count(), seconds(options_.accept_timeout),
                      options_.host, port_));
     return;
   }
   for (auto& c : conns_) {
     // A peer that connects and never says HELLO would hold a slot forever: same limit, from
     // when it connected (a peer trickling bytes is active but says nothing).
-    if (!c->dead && c->server < 0 && options_.accept_timeout.count() > 0 &&
+    if (!c->dead && c->pipeserver < 0 && options_.accept_timeout.count() > 0 &&
         now - c->connected > options_.accept_timeout) {
       close(*c, fmt::format("{}: no complete HELLO within {:.1f} s", who(*c),
                             seconds(options_.accept_timeout)));
@@ -393,9 +393,9 @@ void ServerLoop::check_timers(Clock::time_point now) {
   }
   if (options_.stall_timeout.count() <= 0) return;
   for (auto& c : conns_) {
-    if (c->dead || c->server < 0) continue;
+    if (c->dead || c->pipeserver < 0) continue;
     if (stalled_mid_message(*c, now)) return;
-    const auto waiting = assembler_.frame_waiting_for(c->server);
+    const auto waiting = assembler_.frame_waiting_for(c->pipeserver);
     if (waiting != c->waiting_frame) {
       c->waiting_frame = waiting;
       c->waiting_since = now;
