@@ -10,10 +10,8 @@ l2_library(l2_golden
            INCLUDES src
            LINKS PUBLIC l2_wallrun l2_tilelayout l2_image l2_pipeserver l2_strip_headers fmt::fmt
                  PRIVATE l2_emu l2_vizserver PkgConfig::TOMLPP l2_command_line)
-# The default golden folder and wall paths: the source tree this build comes from; the
-# pipeserver beside us renders the references.
-target_compile_definitions(l2_golden PRIVATE L2_SOURCE_DIR="${L2_SOURCE_DIR}"
-                                             L2_PIPESERVER_PATH="$<TARGET_FILE:pipeserver>")
+# The default golden folder, wall paths and pipeserver are found where l2wall runs from
+# (command_line/program_paths.hpp): the installed tree or the working tree of the build.
 add_dependencies(l2_golden pipeserver)
 target_link_libraries(l2wall PRIVATE l2_golden)
 

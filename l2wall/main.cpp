@@ -1,14 +1,33 @@
 // l2wall: the command that runs a Lightning-2 wall on one machine.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
 #include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
+#include "command_line/program_paths.hpp"
 #include "golden_command.hpp"
 #include "live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
+#include "report_plot.hpp"
+#include "stop_signal.hpp"
+
+namespace {
+
+int plot_run(const std::string& dir) {
+  try {
+    std::printf("plot: %s\n", l2::plot_report(dir).c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall plot: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -18,34 +37,31 @@ int main(int argc, char** argv) {
       "over one pty per host (the serial back-channels)."};
   app.require_subcommand(1);
   l2::RunOptions o;
-  o.pipeserver = L2_PIPESERVER_PATH;
-  o.vizserver = L2_VIZSERVER_PATH;
+  o.pipeserver = l2::sibling_program("pipeserver").string();
+  o.vizserver = l2::sibling_program("vizserver").string();
   CLI::App* run = app.add_subcommand(
       "run",
       "render --frames frames on the wall and write the displays, a per-frame report and a "
       "summary to --out");
-  run->add_option("wall", o.wall,
-                  "wall file (TOML); default: the built-in default wall "
-                  "(walls/kd-2x2.toml: 4 pipeservers, 2x2 displays)")
-      ->check(CLI::ExistingFile);
+  l2::add_wall_option(*run, o.wall,
+                      "default: the built-in default wall (walls/kd-2x2.toml: 4 pipeservers, "
+                      "2x2 displays)");
   run->add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  run->add_option("--out", o.out,
-                  "output folder: frame-<k>/display-<id>.png and wall.png for kept frames, "
-                  "report.csv (one row per frame), summary.txt, host-<i>.log, vizserver.log (the "
-                  "compositing server's lines)")
-      ->check(l2::non_empty_path())
+  l2::add_out_option(*run, o.out,
+                     "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
+                     "row per frame), summary.txt, host-<i>.log, vizserver.log (the compositing "
+                     "server's lines)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")
       ->capture_default_str();
-  run->add_option("--refresh", o.refresh_hz,
-                  "emulator input refresh rate in Hz; 0 = as fast as possible")
-      ->check(l2::rate_hz(true))
+  l2::add_refresh_option(*run, o.refresh_hz, true,
+                         "emulator input refreshes per second; 0 = as fast as possible")
       ->capture_default_str();
   run->add_option("--path", o.path,
                   "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
@@ -73,22 +89,14 @@ int main(int argc, char** argv) {
                   "to l2wall before any pipeserver starts")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  run->add_option("--threads", o.threads, "emulator routing threads (0: one per core)")
-      ->check(CLI::Range(0, 64))
-      ->capture_default_str();
-  run->add_option("--start-timeout", o.start_timeout_ms,
-                  "ms until every pipeserver must have published its first frame")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
-  run->add_option("--stall-timeout", o.stall_timeout_ms,
-                  "ms without a display swap after which the run names the hung pipeserver "
-                  "(or compositing server) and stops")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
-  run->add_option("--ready-timeout", o.ready_timeout_ms,
-                  "ms a pipeserver waits for READY before asking again with SYNC?")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
+  l2::add_threads_option(*run, o.threads);
+  l2::add_timeout_option(*run, "start-timeout", o.start_timeout_ms, false,
+                         "until every pipeserver must have published its first frame");
+  l2::add_timeout_option(*run, "stall-timeout", o.stall_timeout_ms, false,
+                         "without a display swap after which the run names the hung pipeserver "
+                         "(or compositing server) and stops");
+  l2::add_timeout_option(*run, "ready-timeout", o.ready_timeout_ms, false,
+                         "a pipeserver waits for READY before asking again with SYNC?");
   // A plain flag: CLI11 2.1 lists a negated one as "--no-progress{false}".
   run->add_flag_callback(
       "--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");
@@ -127,13 +135,31 @@ int main(int argc, char** argv) {
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
   });
+  bool plot = false;
+  run->add_flag("--plot", plot,
+                "after the run, draw report.csv as OUT/report.png (as `l2wall plot OUT` does)");
+  std::string plot_dir;
+  CLI::App* plot_command = app.add_subcommand(
+      "plot",
+      "draw the report.csv of a run as DIR/report.png with gnuplot: per frame the emulator's "
+      "route and swap time and every pipeserver's render time, titled with what limited the run");
+  plot_command->add_option("DIR", plot_dir, "the --out folder of an `l2wall run`")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   l2::add_golden_command(app);  // `l2wall golden check|update`
   // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
+    if (*plot_command) return plot_run(plot_dir);
     // A damaged model is refused here in one line, before every pipeserver refuses it.
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
-    return l2::run_wall(o);
+    const int status = l2::run_wall(o);
+    // A run stopped by a signal wrote its report too (stop_signal.hpp).
+    const bool reported = status == 0 || status == l2::stopped_exit_status(SIGINT);
+    if (plot && reported) {
+      if (const int plotted = plot_run(o.out); plotted != 0) return plotted;
+    }
+    return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());
     return 1;

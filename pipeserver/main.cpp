@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
@@ -47,8 +48,7 @@ int run(const Options& o) {
     std::fprintf(stderr, "pipeserver: warning: %s\n", w.c_str());
   auto scene = l2::make_scene(o.scene, o.scene_options);
   // The folders before rendering: a folder that could not be made failed after the work.
-  const std::filesystem::path out_file(o.out);
-  if (out_file.has_parent_path()) l2::make_folders(out_file.parent_path());
+  if (!o.out.empty()) l2::make_folders(o.out, "--out");
   if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");
 
   if (!o.out.empty()) {
@@ -58,8 +58,10 @@ int run(const Options& o) {
       frame = &ps.render_frame(k, *scene);
       print_times(o.server, k, ps.last_times());
     }
-    l2::write_png(o.out, *frame);
-    std::printf("wrote %s (%dx%d, %zu tiles)\n", o.out.c_str(), frame->width(), frame->height(),
+    // Named as `tilelayout --scanout` names its frames, so that both route the same way.
+    const auto path = std::filesystem::path(o.out) / fmt::format("scanout-{}.png", o.server);
+    l2::write_png(path, *frame);
+    std::printf("wrote %s (%dx%d, %zu tiles)\n", path.c_str(), frame->width(), frame->height(),
                 ps.plan().tiles.size());
   }
   if (!o.reference.empty()) {
@@ -80,10 +82,10 @@ int main(int argc, char** argv) {
       "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
       "pipeserver --server with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
       "draws the strip headers of spec §4 with the parity of --frame, and writes the scanned-out\n"
-      "24-bit RGB frame. --reference writes what each display should show for that frame."};
+      "24-bit RGB frame to --out DIR. --reference writes what each display should show for that\n"
+      "frame."};
   Options o;
-  app.add_option("--wall", o.wall, "wall file (TOML); default: the built-in default wall")
-      ->check(CLI::ExistingFile);
+  l2::add_wall_option(app, o.wall, "default: the built-in default wall (walls/kd-2x2.toml)");
   app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::Range(0, 4095));
   app.add_option("--frame", o.frame, "application frame number (animation, header parity k mod 2)")
       ->check(CLI::Range(0, 1 << 30));
@@ -93,9 +95,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   app.add_option("--scene", o.scene, "mesh | strips | isosurface | patches | swap")
       ->check(CLI::IsMember(l2::scene_names()));
-  app.add_option("--out", o.out, "PNG file for the scanned-out frame");
+  l2::add_out_option(app, o.out, "scanout-<server>.png, the scanned-out frame");
   app.add_option("--reference", o.reference,
-                 "folder for the reference render of each display (display-<id>.png)");
+                 "folder for the reference render of each display (display-<id>.png)")
+      ->type_name("DIR");
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(app, o.scene_options);
   // Live host mode: the run (l2wall run) starts one of these per pipeserver.
   bool live = false;
@@ -120,13 +123,10 @@ int main(int argc, char** argv) {
       ->check(l2::viz::endpoint_error, "HOST:PORT");
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");
-  group
-      ->add_option("--ready-timeout", live_options.ready_timeout_ms,
-                   "live: ms per READY wait before asking again with SYNC?; a wait for the "
-                   "compositing server's SWAPPED (--viz) may last this x (--ready-retries + 1) "
-                   "(l2wall run passes 1000)")
-      ->check(CLI::Range(1, 600000))
-      ->capture_default_str();
+  l2::add_timeout_option(*group, "ready-timeout", live_options.ready_timeout_ms, false,
+                         "per READY wait before asking again with SYNC? (live); a wait for the "
+                         "compositing server's SWAPPED (--viz) may last this x (--ready-retries "
+                         "+ 1) (l2wall run passes 1000)");
   group
       ->add_option("--ready-retries", live_options.ready_retries,
                    "live: SYNC? retries before giving up")

@@ -95,11 +95,11 @@ for size in $sizes; do
     write_wall "$wall" "$w" "$h" "$n"
     # Where the display edge cuts the tile grid (e.g. 512 rows in tiles of 86), a pipeserver gets
     # a few more, thinner tiles: take the framebuffer height tilelayout says would fit.
-    if ! plan=$("$tilelayout" "$wall" 2>&1); then
+    if ! plan=$("$tilelayout" --wall "$wall" 2>&1); then
       fit=$(grep -o -m1 'framebuffer_height = [0-9]*' <<<"$plan" | grep -o '[0-9]*$') ||
         { echo "fig9: $wall: $plan" >&2; exit 1; }
       write_wall "$wall" "$w" "$h" "$n" "$fit"
-      plan=$("$tilelayout" "$wall" 2>&1) || { echo "fig9: $wall: $plan" >&2; exit 1; }
+      plan=$("$tilelayout" --wall "$wall" 2>&1) || { echo "fig9: $wall: $plan" >&2; exit 1; }
     fi
     if grep -q -i warn <<<"$plan"; then grep -i warn <<<"$plan" | sed "s|^|fig9: $wall: |" >&2; fi
     for mode in $modes; do
@@ -114,7 +114,7 @@ for size in $sizes; do
       done_runs=$((done_runs + 1))
       printf '\rfig9: [%d/%d] %s on %d display(s), %s ... (%d s)   ' "$done_runs" "$total" \
         "$size" "$n" "$mode" $((SECONDS - start)) >&2
-      if ! "$l2wall" run "$wall" --scene swap --frames "$frames" --refresh "$refresh" \
+      if ! "$l2wall" run --wall "$wall" --scene swap --frames "$frames" --refresh "$refresh" \
         --path "$path" --out "$run" --no-progress --pipeserver "$pipeserver" \
         --vizserver "$vizserver" >"$run.log" 2>&1; then
         echo >&2

@@ -45,12 +45,13 @@ refused 3 "tilelayout: --scanout $tmp/file: a file, not a folder" tilelayout \
 refused 1 "l2wall: --out $tmp/file/out: $in_the_way" l2wall run --frames 1 --out "$tmp/file/out"
 refused 1 "vizserver: error: --out $tmp/file/out: $in_the_way" vizserver --displays 8x8 \
   --servers 1 --out "$tmp/file/out"
-refused 1 "pipeserver: $tmp/file/out: $in_the_way" pipeserver --out "$tmp/file/out/frame.png"
+refused 1 "pipeserver: --out $tmp/file/out: $in_the_way" pipeserver --out "$tmp/file/out"
+refused 1 "pipeserver: --out $tmp/file: a file, not a folder" pipeserver --out "$tmp/file"
 # Refused before rendering: the scanned-out frame is not written either.
 refused 1 "pipeserver: --reference $tmp/file: a file, not a folder" pipeserver \
-  --out "$tmp/frame.png" --reference "$tmp/file"
-if [[ -e $tmp/frame.png ]]; then
-  echo "FAIL pipeserver wrote $tmp/frame.png before refusing --reference"
+  --out "$tmp/frames" --reference "$tmp/file"
+if [[ -e $tmp/frames/scanout-0.png ]]; then
+  echo "FAIL pipeserver wrote $tmp/frames/scanout-0.png before refusing --reference"
   failed=1
 fi
 

@@ -1,33 +1,81 @@
 #!/usr/bin/env bash
-# Every program the project builds answers --help with its usage (exit 0) and a usage error with
-# an error on stderr and exit status 2, nothing on stdout: the same contract everywhere, so
-# scripts can tell a usage error from a failed run. (CLI11 names a missing subcommand or
-# required option before an unknown one, so the message need not name the option given.)
+# One command-line language across the project's programs. Every program and subcommand answers
+# --help with its usage (exit 0) and a usage error with one error on stderr that starts with the
+# program's name, exit status 2, nothing on stdout: the same contract everywhere, so scripts can
+# tell a usage error from a failed run. (CLI11 names a missing subcommand or required option
+# before an unknown one, so the message need not name the option given.) The same option is
+# spelled, typed and defaulted the same way in every --help (command_line/options.hpp).
 # Arguments: the programs' paths.
 set -uo pipefail
 failed=0
-for program in "$@"; do
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+root=$(cd "$(dirname "$0")/.." && pwd)
+helps=$tmp/helps
+
+# --help and an unknown option of `program words...`, then of each of its subcommands; every
+# help line goes to $helps as "program words: line".
+check_command() {
+  local program=$1 name label help status out err sub
+  shift
   name=$(basename "$program")
-  ok=1
-  help=$("$program" --help 2>&1)
+  label="$name${*:+ $*}"
+  help=$("$program" "$@" --help 2>&1)
   status=$?
   if [[ $status -ne 0 || $help != *"Usage: "* ]]; then
-    echo "FAIL $name --help: exit $status, output: ${help:0:200}"
-    ok=0
-  fi
-  out=$("$program" --no-such-option 2>/tmp/usage_errors.$$)
-  status=$?
-  err=$(cat /tmp/usage_errors.$$)
-  rm -f /tmp/usage_errors.$$
-  if [[ $status -ne 2 || -z $err || -n $out ]]; then
-    echo "FAIL $name --no-such-option: exit $status (want 2), stderr: ${err:0:200}, stdout: ${out:0:200}"
-    ok=0
-  fi
-  if [[ $ok -eq 1 ]]; then
-    echo "ok   $name: --help exits 0; --no-such-option exits 2: ${err%%$'\n'*}"
-  else
+    echo "FAIL $label --help: exit $status, output: ${help:0:200}"
     failed=1
   fi
+  sed "s|^|$label: |" <<<"$help" >>"$helps"
+  out=$("$program" "$@" --no-such-option 2>"$tmp/stderr")
+  status=$?
+  err=$(cat "$tmp/stderr")
+  if [[ $status -ne 2 || $err != "$name: "* || -n $out ]]; then
+    echo "FAIL $label --no-such-option: exit $status (want 2), stderr (want '$name: ...'):" \
+      "${err:0:200}, stdout: ${out:0:200}"
+    failed=1
+  else
+    echo "ok   $label: --help exits 0; --no-such-option exits 2: ${err%%$'\n'*}"
+  fi
+  for sub in $(awk '/^Subcommands:/ {on = 1; next} on && /^$/ {on = 0} on && /^  [a-z]/ {print $1}' \
+    <<<"$help"); do
+    check_command "$program" "$@" "$sub"
+  done
+}
+for program in "$@"; do check_command "$program"; done
+
+# The options of every help: "command|option|what follows the option on its line".
+awk '{
+  label = $0; sub(/: .*/, "", label); line = substr($0, length(label) + 3)
+  if (match(line, /^  (  )?(-[a-zA-Z],)?--[a-z0-9-]+/)) {  # 4 spaces: an option group'"'"'s
+    name = substr(line, RSTART, RLENGTH); sub(/^ +(-[a-zA-Z],)?/, "", name)
+    print label "|" name "|" substr(line, RSTART + RLENGTH)
+  }
+}' "$helps" >"$tmp/options"
+spelling() {
+  echo "FAIL $1: $2"
+  failed=1
+}
+while IFS='|' read -r label name rest; do
+  case $name in
+    --rate | --interval) spelling "$label" "$name: a rate is --refresh HZ everywhere" ;;
+    --host | --port) spelling "$label" "$name: the compositing server's address is --viz-host/--viz-port" ;;
+    --timeout | --retries) spelling "$label" "$name: READY waits are --ready-timeout/--ready-retries" ;;
+    --refresh) [[ $rest == " HZ:"* ]] || spelling "$label" "--refresh$rest: not in HZ" ;;
+    --out) [[ $rest == " DIR"* ]] || spelling "$label" "--out$rest: not a folder (DIR)" ;;
+    --wall) [[ $rest == " FILE"* ]] || spelling "$label" "--wall$rest: not a FILE" ;;
+    --*-timeout | --duration) [[ $rest == " MS:"* ]] || spelling "$label" "$name$rest: not in MS" ;;
+    --threads) [[ $rest == " N:INT in [0 - 64]=1"* ]] ||
+      spelling "$label" "--threads$rest: not 0..64 with the default 1" ;;
+  esac
+done <"$tmp/options"
+# The wall is --wall FILE, never a positional argument.
+if grep -E '^[^:]+:  (wall|walls|WALL)( |$)' "$helps"; then
+  spelling "positional" "a wall given as a positional argument, not --wall"
+fi
+for option in --wall --refresh --out --threads --stall-timeout --ready-timeout; do
+  users=$(awk -F'|' -v o="$option" '$2 == o {print $1}' "$tmp/options" | sort -u | paste -sd, -)
+  echo "     $option is in: ${users:-(none)}"
 done
 
 # Values a program checks, while parsing or right after, refused the same way: the text the
@@ -36,11 +84,10 @@ bad_value() {
   local want=$1 name=$2 program
   shift 2
   for program in "${programs[@]}"; do [[ $(basename "$program") == "$name" ]] && break; done
-  out=$("$program" "$@" 2>/tmp/usage_errors.$$)
+  out=$("$program" "$@" 2>"$tmp/stderr")
   status=$?
-  err=$(cat /tmp/usage_errors.$$)
-  rm -f /tmp/usage_errors.$$
-  if [[ $status -ne 2 || $err != *"$want"* || -n $out ]]; then
+  err=$(cat "$tmp/stderr")
+  if [[ $status -ne 2 || $err != "$name: "* || $err != *"$want"* || -n $out ]]; then
     echo "FAIL $name $*: exit $status (want 2 and '$want'), stderr: ${err:0:200}, stdout: ${out:0:200}"
     failed=1
   else
@@ -55,18 +102,23 @@ bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --servers 1 
 # sscanf's %d wrapped 4294967360 to 64; 1e300 s did not fit the milliseconds it became.
 bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 --servers 1 \
   --out /tmp
-bad_value "1e300 is not 0 (forever) or 0.001..86400 seconds" vizserver --displays 8x8 \
+# Timeouts are whole milliseconds: a fraction, an exponent or NaN is refused, not rounded to 0
+# (forever) or clamped.
+bad_value "1e300 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 \
   --servers 1 --out /tmp --accept-timeout 1e300
-# 1e-9 s became 0 ms, which is forever; NaN too.
-bad_value "1e-9 is not 0 (forever)" vizserver --displays 8x8 --servers 1 --out /tmp \
-  --accept-timeout 1e-9
-bad_value "nan is not 0 (forever)" vizserver --displays 8x8 --servers 1 --out /tmp \
-  --stall-timeout nan
+bad_value "0.5 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --servers 1 \
+  --out /tmp --accept-timeout 0.5
+bad_value "nan is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --servers 1 \
+  --out /tmp --stall-timeout nan
+bad_value "0 is not 1..86400000 ms" l2wall run --stall-timeout 0 --out /tmp
+bad_value "86400001 is not 1..86400000 ms" sync_backchannel wait-ready /dev/null --frame 1 \
+  --ready-timeout 86400001
 # Below 1 Hz the run slept through its stall timeout and stop signals; NaN passed CLI::Range.
 bad_value "0.05 is not 0 (as fast as possible) or 1..1000 Hz" l2wall run --refresh 0.05 \
   --out /tmp
 bad_value "nan is not 0 (as fast as possible) or 1..1000 Hz" l2wall run --refresh nan --out /tmp
-bad_value "nan is not 1..1000 Hz" show_wall --rate nan --displays-from /tmp
+bad_value "nan is not 1..1000 Hz" show_wall --refresh nan --displays-from /tmp
+bad_value "0.5 is not 1..1000 Hz" sync_backchannel pty --refresh 0.5
 # A kept frame past the last one kept nothing, without a word.
 bad_value "--keep: frame 7 is past the last frame" l2wall run --frames 3 --keep 7 --out /tmp
 bad_value "--compare needs --path both" l2wall run --compare --out /tmp
@@ -83,7 +135,12 @@ bad_value "--threads: Value 5000 not in range" lightning2_emu route --displays 8
   --threads 5000 x.png
 # tilelayout ignored these without a word.
 bad_value "--parity requires --scanout" tilelayout --parity 1
-bad_value "WALL excludes --print-default" tilelayout --print-default walls/kd-2x2.toml
+bad_value "--wall excludes --print-default" tilelayout --print-default \
+  --wall "$root/walls/kd-2x2.toml"
+# The wall is an option: a file name alone is an argument no program takes.
+bad_value "The following argument was not expected: $root/walls/kd-2x2.toml" tilelayout \
+  "$root/walls/kd-2x2.toml"
+bad_value "--wall: File does not exist: /nonexistent.toml" l2wall run --wall /nonexistent.toml
 # lightning2_emu: what its options say in their text is a usage error too (it exited 1).
 bad_value "--displays: display 0: '640x' is not WIDTHxHEIGHT" lightning2_emu route \
   --displays 640x --out /tmp x.png
@@ -101,13 +158,13 @@ bad_value "--out: an empty path" lightning2_emu route --displays 8x8 --out '' x.
 bad_value "--out: an empty path" l2wall run --out ''
 # Options of a mode or scene not asked for were ignored without a word.
 bad_value "--triangles is an option of --scene strips, not mesh" pipeserver --triangles 10 \
-  --out /tmp/x.png
+  --out /tmp/x
 bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene strips \
   --mesh /etc/hostname
 # NaN passed CLI::Range and made every pixel of the view NaN (a black wall).
-bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x.png
+bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x
 bad_value "nan is not a number in -360..360" l2wall run --camera-orbit nan
-bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x.png
+bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x
 bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run --viz-port 5000 \
   --out /tmp
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).

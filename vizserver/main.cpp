@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/size_text.hpp"
 #include "image/folders.hpp"
@@ -125,35 +125,32 @@ int main(int argc, char** argv) {
   std::string displays_text, host = "127.0.0.1", out_dir, stream_address, log_path;
   int servers = 1, frames = 1;
   int port = 0;
-  double accept_timeout = 30, stall_timeout = 10;
+  long long accept_timeout_ms = 30000, stall_timeout_ms = 10000;
   app.add_option("--displays", displays_text, "Display sizes in display order: WxH[,WxH...]")
       ->required();
   app.add_option("--servers", servers, "Number of pipeservers that will connect")
       ->check(CLI::Range(1, 4096))
       ->required();
-  app.add_option("--port", port, "TCP port to listen on; 0 picks a free one (printed)")
+  // Named as `l2wall run` names the address it starts this server with.
+  app.add_option("--viz-port", port, "TCP port to listen on; 0 picks a free one (printed)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  app.add_option("--host", host, "Address to listen on (0.0.0.0 for every interface)")
+  app.add_option("--viz-host", host, "Address to listen on (0.0.0.0 for every interface)")
       ->capture_default_str();
   app.add_option("--frames", frames, "Frames to compose and write before exiting")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
-  app.add_option("--out", out_dir, "Folder for display-<d>-frame-<k>.png");
+  l2::add_out_option(app, out_dir, "display-<d>-frame-<k>.png for every swapped frame");
   app.add_option("--display-stream", stream_address,
                  "HOST:PORT of a watcher (l2wall run) to connect to: LISTENING with the bound "
                  "port first, then every swapped frame's display pictures, ERROR before a "
                  "failed run exits (docs/vizserver-protocol.md)")
       ->check(l2::viz::endpoint_error, "HOST:PORT");
   app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
-  app.add_option("--accept-timeout", accept_timeout,
-                 "Seconds for all pipeservers to connect; 0 waits forever")
-      ->check(l2::timeout_seconds())
-      ->capture_default_str();
-  app.add_option("--stall-timeout", stall_timeout,
-                 "Seconds a pipeserver may stay silent while a frame waits for it; 0: forever")
-      ->check(l2::timeout_seconds())
-      ->capture_default_str();
+  l2::add_timeout_option(app, "accept-timeout", accept_timeout_ms, true,
+                         "for all pipeservers to connect; 0 waits forever");
+  l2::add_timeout_option(app, "stall-timeout", stall_timeout_ms, true,
+                         "a pipeserver may stay silent while a frame waits for it; 0: forever");
   std::vector<std::pair<int, int>> sizes;
   app.callback([&] {  // after parsing: a CLI::ValidationError here is a usage error too
     sizes = parse_displays(displays_text);
@@ -168,8 +165,8 @@ int main(int argc, char** argv) {
   options.servers = servers;
   options.host = host;
   options.port = static_cast<std::uint16_t>(port);
-  options.accept_timeout = std::chrono::milliseconds(static_cast<long long>(accept_timeout * 1000));
-  options.stall_timeout = std::chrono::milliseconds(static_cast<long long>(stall_timeout * 1000));
+  options.accept_timeout = std::chrono::milliseconds(accept_timeout_ms);
+  options.stall_timeout = std::chrono::milliseconds(stall_timeout_ms);
   Outputs out;
   out.png_dir = out_dir;
   try {

@@ -7,7 +7,7 @@
 #include <exception>
 #include <thread>
 
-#include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "display_files.hpp"
 #include "displays/wall_presenter.hpp"
@@ -21,7 +21,7 @@ struct Options {
   std::string show = "window";
   long frames = 0;
   std::filesystem::path screenshot_dir;
-  double rate = 60.0;
+  double refresh_hz = 60.0;
   bool no_vsync = false;
 };
 
@@ -41,7 +41,7 @@ void save(l2::WallPresenter& shown, const std::filesystem::path& dir, const std:
   std::fflush(stdout);
 }
 
-// The frame loop: presents at `rate`, reacts to keys, stops after --frames or on quit.
+// The frame loop: presents at --refresh, reacts to keys, stops after --frames or on quit.
 void run(const Options& o, l2::ShowMode mode) {
   std::vector<l2::RgbImage> images;
   const l2::Wall wall = load_wall_or_row(o, images);
@@ -49,7 +49,7 @@ void run(const Options& o, l2::ShowMode mode) {
   const std::filesystem::path shot_dir =
       o.screenshot_dir.empty() ? "screenshots" : o.screenshot_dir;
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-      std::chrono::duration<double>(1.0 / o.rate));
+      std::chrono::duration<double>(1.0 / o.refresh_hz));
   l2::FpsMeter meter;
   l2::FrameInfo info;  // no pipeline behind the images: latency stays unknown
   auto next = std::chrono::steady_clock::now();
@@ -90,9 +90,7 @@ int main(int argc, char** argv) {
                  "Folder with display-0.png, display-1.png, ... (as an emulator run writes them)")
       ->required()
       ->check(CLI::ExistingDirectory);
-  app.add_option("--wall", o.wall_file,
-                 "Wall file (TOML) placing the displays; default: all displays in a row")
-      ->check(CLI::ExistingFile);
+  l2::add_wall_option(app, o.wall_file, "places the displays; default: all displays in a row");
   app.add_option("--show", o.show, "window | monitors")
       ->check(CLI::IsMember({"window", "monitors"}))
       ->capture_default_str();
@@ -101,9 +99,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--screenshot", o.screenshot_dir,
                  "At the end, save what the screens show: DIR/display-<d>.png per display and\n"
-                 "DIR/window-<i>.png per window; the s key saves here too (default ./screenshots)");
-  app.add_option("--rate", o.rate, "Frames per second to present at")
-      ->check(l2::rate_hz(false))
+                 "DIR/window-<i>.png per window; the s key saves here too (default ./screenshots)")
+      ->type_name("DIR");
+  l2::add_refresh_option(app, o.refresh_hz, false, "frames presented per second")
       ->capture_default_str();
   app.add_flag("--no-vsync", o.no_vsync, "Swap at once instead of on vertical blank");
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;

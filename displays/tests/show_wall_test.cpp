@@ -46,7 +46,7 @@ TEST_F(ShowWall, HelpNamesEveryOption) {
   const Finished run = run_show_wall({"--help"});
   EXPECT_EQ(run.status.shell_code(), 0);
   for (const char* option : {"--displays-from", "--wall", "--show", "--frames", "--screenshot",
-                             "--rate", "--no-vsync", "monitors"}) {
+                             "--refresh", "--no-vsync", "monitors"}) {
     EXPECT_THAT(run.out, HasSubstr(option));
   }
 }
@@ -77,7 +77,7 @@ TEST_F(ShowWall, DefaultWallWindowShowsTheWrittenDisplayImagesExactly) {
   const Finished run =
       run_show_wall({"--displays-from", (work_ / "displays").string(), "--wall",
                      (work_ / "default.toml").string(), "--frames", "5", "--screenshot",
-                     (work_ / "shots").string(), "--no-vsync", "--rate", "200"});
+                     (work_ / "shots").string(), "--no-vsync", "--refresh", "200"});
   ASSERT_EQ(run.status.shell_code(), 0) << run.err;
   for (const Display& d : wall.displays) {
     const RgbImage shown = read_png(work_ / "shots" / fmt::format("display-{}.png", d.id));

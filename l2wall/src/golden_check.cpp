@@ -107,9 +107,8 @@ std::vector<RgbImage> load_goldens(const GoldenPaths& paths, const GoldenEntry& 
     const auto file = paths.image(entry, id);
     if (!std::filesystem::exists(file)) {
       check.could_not_run(
-          fmt::format("golden image {} is missing (make it with `l2wall golden update "
-                      "--entry {}`)",
-                      file.string(), entry.name));
+          fmt::format("golden image {} is missing (make it with `{}`)", file.string(),
+                      paths.command("update", " --entry " + shell_word(entry.name))));
       return {};
     }
     goldens.push_back(read_png(file));
@@ -204,6 +203,7 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
     }
   }
   int failed = 0, not_run = 0;
+  std::string failed_entries;  // " --entry NAME" for each, for the update command
   std::optional<GlInfo> gl;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const GoldenEntry& e = *entries[i];
@@ -220,6 +220,7 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
                                                        : "could not run";
     out << fmt::format("{} ({:.1f} s)\n", said, s) << details.str() << std::flush;
     failed += result == EntryResult::Failed;
+    if (result == EntryResult::Failed) failed_entries += " --entry " + shell_word(e.name);
     not_run += result == EntryResult::NotRun;
   }
   if (failed == 0 && not_run == 0) {
@@ -231,6 +232,9 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
         "golden check: {} of {} entries FAILED; actual images and diff pictures in "
         "{}\n",
         failed, entries.size(), o.out.string());
+    out << fmt::format(
+        "golden check: if the change is intended, make them the golden images: `{}`\n",
+        o.paths.command("update", failed_entries));
   }
   if (not_run > 0) {
     // Exit 2 even beside mismatches: a check that was not made is not a pass or a fail.

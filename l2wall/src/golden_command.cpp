@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "command_line/checks.hpp"
+#include "command_line/program_paths.hpp"
 #include "golden_check.hpp"
 #include "golden_update.hpp"
 
@@ -14,9 +15,14 @@ namespace l2 {
 
 namespace {
 
-// The source tree this executable was built from: its golden folder and walls are the defaults.
+// The golden folder and the walls where l2wall runs from: the installed files, or the working
+// tree the build is in, or the one of the current folder. Found nowhere: the relative paths,
+// which the check then names as missing.
 GoldenPaths default_paths() {
-  return {std::filesystem::path(L2_SOURCE_DIR) / "tests" / "golden_images", L2_SOURCE_DIR};
+  const std::filesystem::path goldens = std::filesystem::path("tests") / "golden_images";
+  const std::filesystem::path root =
+      project_files(goldens / "manifest.toml").value_or(std::filesystem::path("."));
+  return {root / goldens, root};
 }
 
 void add_path_options(CLI::App& cmd, GoldenPaths& paths, std::vector<std::string>& entries) {
@@ -46,7 +52,8 @@ template <class Body>
 
 // This l2wall, and the pipeserver built beside it (as `l2wall run` uses by default).
 GoldenTools tools() {
-  return {std::filesystem::read_symlink("/proc/self/exe").string(), L2_PIPESERVER_PATH};
+  return {std::filesystem::read_symlink("/proc/self/exe").string(),
+          sibling_program("pipeserver").string()};
 }
 
 }  // namespace
@@ -74,10 +81,11 @@ void add_golden_command(CLI::App& app) {
       ->check(non_empty_path())
       ->type_name("DIR")
       ->capture_default_str();
-  c->add_option("--inputs", check->inputs,
-                "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
-                "`tilelayout WALL --scanout DIR` names them) through the emulator and compare "
-                "the displays with the golden images of the one routing-only --entry")
+  c->add_option(
+       "--inputs", check->inputs,
+       "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
+       "`tilelayout --wall WALL --scanout DIR` names them) through the emulator and compare "
+       "the displays with the golden images of the one routing-only --entry")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--write-actual", check->write_actual,

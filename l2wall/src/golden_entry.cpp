@@ -12,6 +12,22 @@ std::filesystem::path GoldenPaths::image(const GoldenEntry& e, int display) cons
   return goldens / e.name / fmt::format("display-{}.png", display);
 }
 
+std::string shell_word(const std::string& text) {
+  const bool safe = !text.empty() && text.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyz"
+                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_-./:=+,") == text.npos;
+  if (safe) return text;
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string GoldenPaths::command(const std::string& subcommand, const std::string& extra) const {
+  return fmt::format("l2wall golden {} --goldens {} --root {}{}", subcommand,
+                     shell_word(goldens.string()), shell_word(root.string()), extra);
+}
+
 std::vector<const GoldenEntry*> select_entries(const GoldenManifest& manifest,
                                                const std::vector<std::string>& names) {
   std::vector<const GoldenEntry*> out;

@@ -20,7 +20,13 @@ struct GoldenPaths {
 
   std::filesystem::path manifest() const { return goldens / "manifest.toml"; }
   std::filesystem::path image(const GoldenEntry& e, int display) const;
+  // The command a hint tells the user to run: "l2wall golden <subcommand> --goldens G --root
+  // R" with these folders, quoted for a shell where they need it, then `extra` (" --entry X").
+  std::string command(const std::string& subcommand, const std::string& extra) const;
 };
+
+// `text` as one shell word: as it is when it holds only safe characters, else in single quotes.
+std::string shell_word(const std::string& text);
 
 // The executables rendered entries are made with.
 struct GoldenTools {

@@ -77,6 +77,7 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
   make_folders(run.work);
   std::vector<std::string> live{run.l2wall,
                                 "run",
+                                "--wall",
                                 wall_file.string(),
                                 "--scene",
                                 entry.scene,

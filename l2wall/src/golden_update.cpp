@@ -97,6 +97,13 @@ std::string read_text(const std::filesystem::path& file) {
   return s.str();
 }
 
+// The options of this update besides the folders, as the user gave them.
+std::string update_options(const UpdateOptions& o) {
+  std::string text;
+  for (const std::string& e : o.entries) text += " --entry " + shell_word(e);
+  return text + " --out " + shell_word(o.out.string());
+}
+
 }  // namespace
 
 int run_golden_update(const UpdateOptions& o, std::ostream& out) {
@@ -136,8 +143,8 @@ int run_golden_update(const UpdateOptions& o, std::ostream& out) {
   if (!refusals.empty() && !o.allow_routing_change) {
     out << "golden update: refused, nothing written: routing-only (test-pattern) golden images "
            "must never change; a change means strips are routed elsewhere. If the change is "
-           "intended (the test pattern or a wall file changed), run again with "
-           "--allow-routing-change\n";
+           "intended (the test pattern or a wall file changed), run `"
+        << o.paths.command("update", update_options(o) + " --allow-routing-change") << "`\n";
     return 1;
   }
   int written = 0;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -58,14 +59,19 @@ class LiveRun {
     make_paths();
     hosts_.start(host_launch(), layout_);
     for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
-    run_frames();
+    run_frames_until_stopped();
     if (shown_ < o_.frames) {
-      end_at_quit();  // only --show ends the loop early
+      end_at_quit();  // q under --show, or a stop signal
     } else {
       hosts_.finish(milliseconds(10000));
       for (auto& p : paths_) p->finish();
     }
     write_report();
+    if (stopped_) {
+      std::fprintf(stderr, "l2wall: stopped by signal %d (%s) after %d frames; report: %s\n",
+                   stopped_, strsignal(stopped_), shown_, o_.out.c_str());
+      return stopped_exit_status(stopped_);
+    }
     return latency_ok_ ? 0 : 1;
   }
 
@@ -147,6 +153,19 @@ class LiveRun {
   }
 
   // --- the frames: the lead path's swaps ---------------------------------------------------
+
+  // A stop signal once a frame is shown ends the frames as q does. Ctrl-C reaches the
+  // pipeservers and the compositing server too (one process group): what their end looks
+  // like to the run is the signal's effect, not a fault of theirs.
+  void run_frames_until_stopped() {
+    try {
+      run_frames();
+    } catch (const RunFault&) {
+      if (stop_signal_received() == 0 || shown_ == 0) throw;
+      stopped_ = stop_signal_received();
+      if (o_.progress) std::fputs("\n", stderr);
+    }
+  }
 
   void run_frames() {
     DisplayPath& lead = *paths_.front();
@@ -240,6 +259,7 @@ class LiveRun {
   // A stop signal, a process that ended early, or a path whose process or stream broke: a
   // RunFault naming the cause.
   void check_processes() {
+    if (stopped_) return;  // the processes are ending by the signal; the run is over
     check_stop_signal(shown_, displays_kept());
     Host* ended = hosts_.poll_ended();
     const bool path_down =
@@ -408,6 +428,7 @@ class LiveRun {
   bool progress_shown_ = false;
   int shown_ = 0;  // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
+  int stopped_ = 0;        // the stop signal that ended the frames, or 0
   double writing_ms_ = 0;  // spent writing kept pictures during the run
   double paused_ms_ = 0;   // spent paused by the --show keys
   RunClock::time_point last_swap_{};
@@ -465,7 +486,8 @@ int run_wall(const RunOptions& options) {
         std::fprintf(stderr, "l2wall: displays as they were: %s/fault/\n", options.out.c_str());
       run->shut_down();
     }
-    return 1;
+    const int signal = stop_signal_received();
+    return signal ? stopped_exit_status(signal) : 1;
   } catch (const std::exception& e) {
     if (run && run->progress_shown()) std::fputs("\n", stderr);
     std::fprintf(stderr, "l2wall: %s\n", e.what());

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image/folders.hpp"
+#include "run_stats.hpp"
 
 namespace l2 {
 namespace {
@@ -71,6 +72,24 @@ void write_csv(const std::filesystem::path& path, const RunOptions& o,
   if (!csv.flush()) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
 }
 
+// The times report.csv holds, for the summary's percentiles.
+RunTimes run_times(const RunOptions& o, const std::vector<HostLog>& logs,
+                   const std::vector<FrameRecord>& records) {
+  RunTimes t;
+  for (const HostLog& log : logs) {
+    t.render.emplace_back();
+    for (const HostFrame& f : log.frames) t.render.back().push_back(f.render_ms);
+  }
+  if (o.path != "vizserver") {  // no emulator on the vizserver path
+    for (const FrameRecord& r : records) {
+      t.route.push_back(r.route_ms);
+      t.swap.push_back(ms_between(r.in_time, r.swap_time));
+    }
+    t.refresh_hz = o.refresh_hz;
+  }
+  return t;
+}
+
 }  // namespace
 
 std::string write_run_report(const RunOptions& o, const Wall& wall,
@@ -126,6 +145,7 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
         "different and parsed\n",
         totals.frames_predicted, totals.predictions_missed);
   }
+  summary += spread_lines(run_times(o, logs, records));
   if (o.path != "dvi") summary += fmt::format("paths: {}\n", o.path);
   if (o.compare) {
     summary += fmt::format(

@@ -1,6 +1,7 @@
 // What a live run records per frame, and the report it writes at the end: report.csv (one row
 // per frame: refreshes, latency, route and swap time, per host render time, READY wait, SYNC?
-// retries) and summary.txt (frames per second, measured latency, back-channel counts).
+// retries) and summary.txt (frames per second, measured latency, the spread of render, route
+// and swap time and what limited the run, back-channel counts).
 #pragma once
 
 #include <cstdint>

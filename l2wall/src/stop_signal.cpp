@@ -26,6 +26,10 @@ void catch_stop_signals() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+int stop_signal_received() {
+  return g_stop_signal;
+}
+
 void check_stop_signal(int shown, const std::string& on_displays) {
   if (!g_stop_signal) return;
   const int signal = g_stop_signal;

@@ -1,5 +1,8 @@
-// Ctrl-C or SIGTERM during a live run: the run stops through its normal fault path, so its
-// processes are ended and their shared memory removed instead of left behind.
+// Ctrl-C or SIGTERM during a live run: the run stops as q does under --show — the frames
+// shown so far are the run, its processes are ended and their shared memory removed, the
+// report and summary are written — and l2wall exits 128 + the signal (130 for Ctrl-C), as a
+// shell reports a command a signal ended. Before any frame was shown there is nothing to
+// report: the run ends through its fault path, with the same exit status.
 #pragma once
 
 #include <string>
@@ -8,6 +11,12 @@ namespace l2 {
 
 // Installs the handlers for SIGINT and SIGTERM (they only record the signal).
 void catch_stop_signals();
+// The stop signal that arrived (SIGINT, SIGTERM), or 0.
+int stop_signal_received();
+// The exit status of a run a stop signal ended: 128 + the signal.
+inline int stopped_exit_status(int signal) {
+  return 128 + signal;
+}
 // Throws RunFault "stopped by signal 15 (Terminated) at frame K; " + on_displays once one of
 // them arrived; `shown` is the number of frames on the displays (K), `on_displays` says what
 // they show.

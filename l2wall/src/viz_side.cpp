@@ -20,11 +20,10 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
   std::string sizes;
   for (const auto& [w, h] : l.display_sizes)
     sizes += fmt::format("{}{}x{}", sizes.empty() ? "" : ",", w, h);
-  return {l.vizserver, "--displays", sizes, "--servers", std::to_string(l.servers), "--host",
-          l.host, "--port", std::to_string(l.port), "--frames", std::to_string(l.frames),
+  return {l.vizserver, "--displays", sizes, "--servers", std::to_string(l.servers), "--viz-host",
+          l.host, "--viz-port", std::to_string(l.port), "--frames", std::to_string(l.frames),
           "--display-stream", fmt::format("127.0.0.1:{}", stream_port), "--log", l.log.string(),
-          "--accept-timeout",
-          fmt::format("{:g}", static_cast<double>(l.start_timeout.count()) / 1000.0),
+          "--accept-timeout", std::to_string(l.start_timeout.count()),
           // A pipeserver that hangs is ours to name (the run's stall timeout), not the server's.
           "--stall-timeout", "0"};
 }

@@ -44,6 +44,12 @@ TEST_F(GoldenCli, OnePixelChangedInAGoldenImageFailsWithADiffPicture) {
                            " at (100, 50); wrote " + actual.string() + ", " + diff.string();
   EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("FAILED"), std::string::npos);
+  EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
+                          "`l2wall golden update --goldens " +
+                          goldens().string() + " --root " + kSource.string() + " --entry " +
+                          kPattern + "`\n"),
+            std::string::npos)
+      << r.output;
   // Only that display, only against the golden: both paths and the test pattern agree.
   EXPECT_EQ(r.output.find("display 0:"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("vizserver vs"), std::string::npos) << r.output;
@@ -65,7 +71,7 @@ TEST_F(GoldenCli, OnePixelChangedInAGoldenImageFailsWithADiffPicture) {
 TEST_F(GoldenCli, OneHeaderFieldChangedInAnInputFrameFailsWithADiffPicture) {
   const fs::path inputs = dir_ / "captured";
   const Result scanout =
-      run(std::string(TILELAYOUT_PATH) + " " + quote(kSource / "walls/kd-2x2.toml") +
+      run(std::string(TILELAYOUT_PATH) + " --wall " + quote(kSource / "walls/kd-2x2.toml") +
           " --parity 1 --scanout " + quote(inputs));
   ASSERT_EQ(scanout.code, 0) << scanout.output;
   const std::string check =
@@ -130,7 +136,12 @@ TEST_F(GoldenCli, UpdateRefusesToChangeARoutingOnlyGoldenUnlessAllowed) {
                                            "differs"),
             std::string::npos)
       << refused.output;
-  EXPECT_NE(refused.output.find("--allow-routing-change"), std::string::npos);
+  // The command to run, with the folders and options of this one.
+  EXPECT_NE(refused.output.find("run `l2wall golden update --goldens " + goldens().string() +
+                                " --root " + kSource.string() + " --entry " + kPattern + " --out " +
+                                out().string() + " --allow-routing-change`\n"),
+            std::string::npos)
+      << refused.output;
   EXPECT_TRUE(read_png(golden(kPattern, 1)) == changed);  // nothing written
   EXPECT_EQ(read_png(out() / kPattern / "display-1-diff.png").at(5, 6), kDiffPixel);
 
@@ -138,6 +149,19 @@ TEST_F(GoldenCli, UpdateRefusesToChangeARoutingOnlyGoldenUnlessAllowed) {
   EXPECT_EQ(allowed.code, 0) << allowed.output;
   EXPECT_NE(allowed.output.find("1 image written"), std::string::npos) << allowed.output;
   EXPECT_TRUE(read_png(golden(kPattern, 1)) == original);
+}
+
+// A golden image missing: the command that makes it, with the folders this check used.
+TEST_F(GoldenCli, AMissingGoldenImageNamesTheCommandThatMakesIt) {
+  fs::remove(golden(kPattern, 2));
+  const Result r = l2wall("check " + common() + " --entry " + kPattern);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("golden image " + golden(kPattern, 2).string() +
+                          " is missing (make it with `l2wall golden update --goldens " +
+                          goldens().string() + " --root " + kSource.string() + " --entry " +
+                          kPattern + "`)"),
+            std::string::npos)
+      << r.output;
 }
 
 TEST_F(GoldenCli, UsageErrorsAreOneLine) {

@@ -53,7 +53,7 @@ TEST_P(WideWall, EveryDisplayShowsTheScene) {
   fs::create_directories(dir);
   const fs::path wall = write_wide_wall(dir);
   WallRun run("wide-" + GetParam(),
-              {wall.string(), "--scene", GetParam(), "--frames", "3", "--refresh", "0"});
+              {"--wall", wall.string(), "--scene", GetParam(), "--frames", "3", "--refresh", "0"});
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   for (int d = 0; d < 3; ++d) {
@@ -103,8 +103,8 @@ TEST(ModelOnTheWall, MissingOrDamagedModelIsOneLine) {
   WallRun missing("missing-model", {"--mesh", "/nonexistent/model.glb"});
   EXPECT_EQ(missing.wait(30s).code, 2);
   EXPECT_EQ(missing.output(),
-            "--mesh: File does not exist: /nonexistent/model.glb\nRun with --help for more "
-            "information.\n");
+            "l2wall: --mesh: File does not exist: /nonexistent/model.glb\nRun with --help for "
+            "more information.\n");
 
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-bad-{}", getpid());
   fs::create_directories(dir);

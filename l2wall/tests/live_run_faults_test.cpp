@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -27,9 +28,9 @@ using namespace testing_support;
 // How soon after a fault the run must have ended, named it and cleaned up.
 constexpr auto kFaultNoticeBound = 10s;
 
-// What `tilelayout WALL` prints on stdout and stderr, and its exit status.
+// What `tilelayout --wall WALL` prints on stdout and stderr, and its exit status.
 std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
-  const Finished f = run_shell(fmt::format("'{}' '{}'", TILELAYOUT_EXE, wall.string()), 60s);
+  const Finished f = run_shell(fmt::format("'{}' --wall '{}'", TILELAYOUT_EXE, wall.string()), 60s);
   return {f.status.shell_code(), f.out};
 }
 
@@ -43,7 +44,7 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
                          "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 240\n"
                          "[pipeservers]\ncount = 2\nframebuffer_width = 400\n"
                          "framebuffer_height = 300\n";
-  WallRun run("idle", {"--frames", "3", wall.string()});
+  WallRun run("idle", {"--frames", "3", "--wall", wall.string()});
   const ExitStatus status = run.wait(10s);
   const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
   fs::remove(wall);
@@ -69,7 +70,7 @@ TEST(LiveRun, WarnsOfWhatTilelayoutWarnsOf) {
                          "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 320, 200]]\n"
                          "[pipeservers]\ncount = 1\nframebuffer_width = 400\n"
                          "framebuffer_height = 300\n";
-  WallRun run("uncovered", {"--frames", "1", wall.string()});
+  WallRun run("uncovered", {"--frames", "1", "--wall", wall.string()});
   const ExitStatus status = run.wait(60s);
   const auto [tilelayout_status, tilelayout_out] = tilelayout_on(wall);
   fs::remove(wall);
@@ -207,15 +208,64 @@ TEST(LiveRun, ASlowLastSwapIsNotAStall) {
   expect_clean(run);
 }
 
+// The frames a stopped run showed, from its summary's first line ("l2wall run: N frames ...");
+// -1 without one.
+int summary_frames(const WallRun& run) {
+  const std::string summary = slurp(run.out() / "summary.txt");
+  int frames = -1;
+  return std::sscanf(summary.c_str(), "l2wall run: %d frames", &frames) == 1 ? frames : -1;
+}
+
+// A run a signal stopped after `frames` frames: its report covers exactly those, the last one
+// is kept (--keep last), the summary says what limited it.
+void expect_report_of_stopped_run(const WallRun& run, int frames) {
+  EXPECT_EQ(read_csv(run.out() / "report.csv").size(), static_cast<std::size_t>(frames) + 1);
+  EXPECT_TRUE(fs::exists(run.out() / fmt::format("frame-{}", frames - 1) / "wall.png"));
+  EXPECT_NE(slurp(run.out() / "summary.txt").find("\nlimited by "), std::string::npos);
+}
+
+// SIGTERM to l2wall alone ends the run as q does (stop_signal.hpp): exit 128 + 15.
 TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
   WallRun run("sigterm", {"--frames", "100000", "--refresh", "60"});
   ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
   ASSERT_EQ(kill(run.pid(), SIGTERM), 0);
   const ExitStatus status = run.wait(10s);
   const std::string output = run.output();
-  EXPECT_EQ(status.code, 1) << output;
-  EXPECT_NE(output.find("stopped by signal 15"), std::string::npos) << output;
+  EXPECT_EQ(status.code, 143) << output;
+  const int frames = summary_frames(run);
+  ASSERT_GE(frames, 1) << output;  // the host had published frame 2: frame 0 was shown
+  EXPECT_NE(output.find(fmt::format("l2wall: stopped by signal 15 (Terminated) after {} frames; "
+                                    "report: {}\n",
+                                    frames, run.out().string())),
+            std::string::npos)
+      << output;
+  expect_report_of_stopped_run(run, frames);
   expect_clean(run);
+}
+
+// Ctrl-C: the terminal sends SIGINT to its whole foreground process group, l2wall and every
+// pipeserver at once. The run ends as q does: exit 130, the frames shown are the run, summary
+// and report written, nothing of the session left running.
+TEST(LiveRun, CtrlCEndsTheRunAsQDoesWithItsReport) {
+  WallRun run("sigint", {"--frames", "100000", "--refresh", "60"}, {}, true);
+  ASSERT_GT(running_pipeserver(run, 0), 0) << run.output();
+  ASSERT_EQ(kill(-run.pid(), SIGINT), 0);  // the group l2wall leads
+  const ExitStatus status = run.wait(20s);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 130) << status.describe() << "\n" << output;
+  const int frames = summary_frames(run);
+  ASSERT_GE(frames, 1) << output;
+  EXPECT_NE(output.find(fmt::format("l2wall: stopped by signal 2 (Interrupt) after {} frames; "
+                                    "report: {}\n",
+                                    frames, run.out().string())),
+            std::string::npos)
+      << output;
+  expect_report_of_stopped_run(run, frames);
+  expect_clean(run);
+  // pgrep: no process of the session l2wall led is left (exit status 1: none matched).
+  const Finished pgrep = run_shell(fmt::format("pgrep -s {}", run.pid()), 10s);
+  EXPECT_EQ(pgrep.status.shell_code(), 1);
+  EXPECT_EQ(pgrep.out, "") << "left in the session";
 }
 
 // l2wall itself killed (no chance to stop anyone): the pipeservers see their back-channel hang

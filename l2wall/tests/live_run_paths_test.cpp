@@ -76,8 +76,8 @@ class BothPaths : public ::testing::TestWithParam<WallCase> {};
 TEST_P(BothPaths, GiveIdenticalDisplays) {
   const WallCase& c = GetParam();
   WallRun run(fmt::format("both-{}", c.servers),
-              {fmt::format("{}/walls/{}", L2_SOURCE_DIR, c.file), "--frames", "10", "--refresh",
-               "0", "--path", "both", "--compare"});
+              {"--wall", fmt::format("{}/walls/{}", L2_SOURCE_DIR, c.file), "--frames", "10",
+               "--refresh", "0", "--path", "both", "--compare"});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;

@@ -73,8 +73,9 @@ TEST_P(AtTheRefreshRate, ANewFrameReachesTheDisplaysAtNearlyEveryRefresh) {
 // 90 Hz the run mostly waits for the next refresh, so routing is a small part of its time.
 TEST(LiveRun, RouteTimeCountsEachRefreshOncePerFrame) {
   const int frames = 20;
-  WallRun run("route-ms", {std::string(L2_SOURCE_DIR) + "/walls/wiregl-1600x1200.toml", "--scene",
-                           "swap", "--frames", std::to_string(frames), "--refresh", "90"});
+  WallRun run("route-ms",
+              {"--wall", std::string(L2_SOURCE_DIR) + "/walls/wiregl-1600x1200.toml", "--scene",
+               "swap", "--frames", std::to_string(frames), "--refresh", "90"});
   const ExitStatus status = run.wait(60s);
   const std::string output = run.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;

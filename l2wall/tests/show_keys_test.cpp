@@ -25,8 +25,9 @@ TEST(Show, SpacePausesTheHostsSSavesScreenshotsQEndsTheRunCleanly) {
       write_small_wall(fs::temp_directory_path() / fmt::format("l2wall-keys-{}", getpid()));
   const int planned = 300;
   // READY timeout 300 ms: the pause below outlasts a few of them, SYNC? asked meanwhile.
-  WallRun run("show-keys", {wall.string(), "--show", "window", "--frames", std::to_string(planned),
-                            "--keep", "every", "--refresh", "60", "--ready-timeout", "300"});
+  WallRun run("show-keys",
+              {"--wall", wall.string(), "--show", "window", "--frames", std::to_string(planned),
+               "--keep", "every", "--refresh", "60", "--ready-timeout", "300"});
   testing::XClient x(xvfb.display());
   const unsigned long window = x.wait_for_window(kSmallTitle, 20s);
   ASSERT_NE(window, 0u) << run.output();
@@ -90,7 +91,8 @@ TEST(Show, EscapeEndsTheRunLikeQ) {
   L2_START_XVFB(xvfb, 800, 600);
   const fs::path wall =
       write_small_wall(fs::temp_directory_path() / fmt::format("l2wall-esc-{}", getpid()));
-  WallRun run("show-esc", {wall.string(), "--show", "window", "--frames", "300", "--keep", "last"});
+  WallRun run("show-esc",
+              {"--wall", wall.string(), "--show", "window", "--frames", "300", "--keep", "last"});
   testing::XClient x(xvfb.display());
   const unsigned long window = x.wait_for_window(kSmallTitle, 20s);
   ASSERT_NE(window, 0u) << run.output();

@@ -92,8 +92,8 @@ framebuffer_width = 800
 framebuffer_height = 600
 )";
   WallRun run("show-monitor",
-              {(dir / "one.toml").string(), "--show", "monitors", "--frames", "3", "--refresh", "0",
-               "--keep", "every", "--show-readback", (dir / "screen").string()});
+              {"--wall", (dir / "one.toml").string(), "--show", "monitors", "--frames", "3",
+               "--refresh", "0", "--keep", "every", "--show-readback", (dir / "screen").string()});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;

@@ -17,7 +17,7 @@ struct CommonOptions {
   std::string mesh;      // "RxC" boards; empty: the smallest that fits
   std::string board_max = "1280x1024";
   std::string background = "000000";
-  int threads = 0;
+  int threads = 1;  // --threads (command_line/options.hpp)
   std::filesystem::path out;
   std::vector<std::string> inputs;  // frame files (route) or folders (sequence)
   bool verify = false;              // route --verify: check the displays against the wall

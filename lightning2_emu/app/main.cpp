@@ -3,7 +3,7 @@
 
 #include <exception>
 
-#include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "commands.hpp"
 
@@ -13,8 +13,7 @@ void add_common(CLI::App& cmd, l2::CommonOptions& o) {
   cmd.add_option("--displays", o.displays,
                  "Output displays 0, 1, ... as WxH[,WxH...] (mesh: as many board columns as "
                  "needed)");
-  cmd.add_option("--wall", o.wall,
-                 "Wall file (TOML): displays, swap groups and board limit from the wall");
+  l2::add_wall_option(cmd, o.wall, "displays, swap groups and board limit from the wall");
   cmd.add_option("--groups", o.groups,
                  "Swap-lock group of each display, e.g. 0,0,1,1 (default: all in group 0)");
   cmd.add_option("--mesh", o.mesh,
@@ -24,10 +23,8 @@ void add_common(CLI::App& cmd, l2::CommonOptions& o) {
       ->capture_default_str();
   cmd.add_option("--background", o.background, "Colour of pixels no strip writes, RRGGBB")
       ->capture_default_str();
-  cmd.add_option("--threads", o.threads, "Worker threads (0: one per core)")
-      ->check(CLI::Range(0, 64))
-      ->capture_default_str();
-  cmd.add_option("--out", o.out, "Output folder")->required()->check(l2::non_empty_path());
+  l2::add_threads_option(cmd, o.threads);
+  l2::add_out_option(cmd, o.out, "the displays, the report and the pictures")->required();
 }
 
 }  // namespace
@@ -81,11 +78,9 @@ int main(int argc, char** argv) {
                    "screenshots to OUT/screenshots/, q or Esc stop the sequence there. Needs an "
                    "X display (without one, run under Xvfb)")
       ->check(CLI::IsMember({"window", "monitors"}));
-  sequence
-      ->add_option("--refresh", show.refresh_hz,
-                   "With --show: refreshes per second on screen (default: the wall's "
-                   "refresh_hz, 60 with --displays); 0 = as fast as possible")
-      ->check(l2::rate_hz(true))
+  l2::add_refresh_option(*sequence, show.refresh_hz, true,
+                         "With --show: refreshes per second on screen (default: the wall's "
+                         "refresh_hz, 60 with --displays); 0 = as fast as possible")
       ->needs("--show");
   sequence
       ->add_option("--show-readback", show.readback,

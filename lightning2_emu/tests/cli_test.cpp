@@ -282,8 +282,8 @@ TEST_F(Cli, SequenceShowsEachFrameOneRefreshLater) {
 TEST_F(Cli, RouteWithAWallRebuildsTheTilelayoutScanout) {
   const std::string wall_file = std::string(L2_WALLS_DIR) + "/kd-2x2.toml";
   const std::string scan_dir = (dir / "scan").string();
-  ASSERT_EQ(std::system((std::string(TILELAYOUT_EXE) + " " + wall_file + " --scanout " + scan_dir +
-                         " > /dev/null")
+  ASSERT_EQ(std::system((std::string(TILELAYOUT_EXE) + " --wall " + wall_file + " --scanout " +
+                         scan_dir + " > /dev/null")
                             .c_str()),
             0);
   const Wall wall = load_wall(wall_file);

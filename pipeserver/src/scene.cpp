@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "command_line/program_paths.hpp"
 #include "scene_common.hpp"
 
 namespace l2 {
@@ -56,8 +57,10 @@ const std::vector<std::string>& scene_names() {
   return names;
 }
 
+// Installed beside the walls, or in the working tree (command_line/program_paths.hpp).
 std::filesystem::path default_mesh_file() {
-  return std::filesystem::path(L2_DATA_DIR) / "bunny.ply";
+  const std::filesystem::path bunny = std::filesystem::path("data") / "bunny.ply";
+  return project_files(bunny).value_or(std::filesystem::path()) / bunny;
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "image/png_io.hpp"
 #include "test_support.hpp"
@@ -85,10 +86,9 @@ int main(int argc, char** argv) {
   std::filesystem::path picture;
   std::string scene_name = "mesh";
   int picture_frame = 0;
-  app.add_option("walls", walls, "wall files (TOML); default: every wall in walls/")
-      ->check(CLI::ExistingFile);
+  l2::add_wall_option(app, walls, "repeat for several walls; default: every wall in walls/");
   app.add_option("--picture", picture,
-                 "write the one wall given, reassembled, to this PNG (mullions dark grey)");
+                 "write the one --wall given, reassembled, to this PNG (mullions dark grey)");
   app.add_option("--scene", scene_name, "--picture: scene to render")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();

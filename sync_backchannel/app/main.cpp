@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "command_line/checks.hpp"
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "sync_backchannel/pty_pair.hpp"
@@ -27,8 +27,11 @@ void stop_on_signals() {
   sigaction(SIGTERM, &sa, nullptr);
 }
 
-// Emulator end on a fresh pty pair: READY every `interval_ms`, SYNC? answered in between.
-int run_pty(int interval_ms, long long count, long long start) {
+// Emulator end on a fresh pty pair: READY `refresh_hz` times a second, SYNC? answered in
+// between.
+int run_pty(double refresh_hz, long long count, long long start) {
+  const auto period = std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::duration<double>(1.0 / refresh_hz));
   stop_on_signals();
   l2::PtyPair pty = l2::PtyPair::open();
   std::cout << pty.slave_path() << std::endl;  // first line: where the host connects
@@ -37,7 +40,7 @@ int run_pty(int interval_ms, long long count, long long start) {
     // A host that is not reading fills the line; the READY is dropped and counted, and the
     // host recovers through SYNC? when it reads again.
     channel.send_ready(static_cast<std::uint64_t>(start + sent));
-    channel.serve(std::chrono::milliseconds(interval_ms));
+    channel.serve(period);
   }
   std::cerr << "sync_backchannel pty: " << l2::to_string(channel.counts()) << '\n';
   return 0;
@@ -108,12 +111,10 @@ int main(int argc, char** argv) {
   CLI::App* pty = app.add_subcommand(
       "pty",
       "Emulator end on a new pseudo-terminal pair: prints the slave path (the host's "
-      "device) on the first line, then sends READY every --interval ms and answers SYNC?");
-  int interval_ms = 100;
+      "device) on the first line, then sends READY --refresh times a second and answers SYNC?");
+  double refresh_hz = 10;
   long long count = 0;
-  pty->add_option("--interval", interval_ms, "Milliseconds between READY lines")
-      ->default_val(100)
-      ->check(CLI::Range(1, 60000));
+  l2::add_refresh_option(*pty, refresh_hz, false, "READY lines per second")->capture_default_str();
   pty->add_option("--count", count, "Send this many READY lines, then exit (0: until SIGINT)")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
@@ -144,10 +145,10 @@ int main(int argc, char** argv) {
   wait->add_option("--frame", frame, "Frame number awaited (modulo 1000000)")
       ->required()
       ->check(l2::frame_number());
-  wait->add_option("--timeout", timeout_ms, "Milliseconds of each wait before a SYNC? retry")
-      ->default_val(timeout_ms)
-      ->check(CLI::Range(1, 600000));
-  wait->add_option("--retries", retries, "SYNC? retries before giving up")
+  // Named as pipeserver's options of the same waits.
+  l2::add_timeout_option(*wait, "ready-timeout", timeout_ms, false,
+                         "per READY wait before asking again with SYNC?");
+  wait->add_option("--ready-retries", retries, "SYNC? retries before giving up")
       ->default_val(retries)
       ->check(CLI::Range(0, 1000));
 
@@ -155,9 +156,10 @@ int main(int argc, char** argv) {
       "watch", "Print every decoded message on a line, then the noise/resync/checksum counts");
   add_device(watch);
   int duration_ms = 0;
-  watch->add_option("--duration", duration_ms, "Stop after this many milliseconds (0: SIGINT)")
+  watch->add_option("--duration", duration_ms, "ms to watch for (0: until SIGINT)")
+      ->type_name("MS")
       ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
+      ->check(l2::timeout_ms(true));
   long long watch_count = 0;
   watch->add_option("--count", watch_count, "Stop after this many decoded messages (0: no limit)")
       ->default_val(0)
@@ -165,7 +167,7 @@ int main(int argc, char** argv) {
 
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
-    if (*pty) return run_pty(interval_ms, count, frame);
+    if (*pty) return run_pty(refresh_hz, count, frame);
     if (*send) return run_send_ready(device, baud, frame);
     if (*wait) return run_wait_ready(device, baud, frame, timeout_ms, retries);
     if (*watch) return run_watch(device, baud, duration_ms, watch_count);

@@ -70,8 +70,8 @@ TEST(SyncBackchannelExe, HelpListsEverySubcommand) {
     EXPECT_THAT(r.out, HasSubstr(word));
   }
   const Finished sub = run({kExe, "wait-ready", "--help"}, 5s);
-  EXPECT_THAT(sub.out, HasSubstr("--retries"));
-  EXPECT_THAT(sub.out, HasSubstr("--timeout"));
+  EXPECT_THAT(sub.out, HasSubstr("--ready-retries"));
+  EXPECT_THAT(sub.out, HasSubstr("--ready-timeout MS"));
 }
 
 TEST(SyncBackchannelExe, SendReadyWritesTheExactLine) {
@@ -109,16 +109,16 @@ TEST(SyncBackchannelExe, WatchPrintsDecodedMessagesAndCounts) {
 
 TEST(SyncBackchannelExe, WaitReadyReportsATimeoutAsOneLine) {
   PtyPair pty = PtyPair::open();
-  const Finished r = run(
-      {kExe, "wait-ready", pty.slave_path(), "--frame", "3", "--timeout", "50", "--retries", "1"},
-      5s);
+  const Finished r = run({kExe, "wait-ready", pty.slave_path(), "--frame", "3", "--ready-timeout",
+                          "50", "--ready-retries", "1"},
+                         5s);
   EXPECT_EQ(r.status.shell_code(), 1);
   EXPECT_THAT(r.err, StartsWith("sync_backchannel: no READY for frame 000003 on " +
                                 pty.slave_path() + " after 1 SYNC? retries (2 waits of 50 ms)\n"));
 }
 
 TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
-  ChildProcess emulator({kExe, "pty", "--interval", "30"}, {}, Capture{true, true});
+  ChildProcess emulator({kExe, "pty", "--refresh", "33"}, {}, Capture{true, true});
   const std::string slave = emulator.read_line(Stream::Out, 5s).value_or("");
   ASSERT_THAT(slave, StartsWith("/dev/pts/"));
   // A person watching the line sees whole READY lines from frame 0 on (queued on the line

@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
@@ -57,7 +58,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Plans how a display wall is tiled, which pipeserver renders each tile and where each "
       "tile sits in its framebuffer (spec §4), and prints the plan.\n"
-      "Without WALL it uses the built-in default wall (walls/kd-2x2.toml).\n"
+      "Without --wall it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
       "3 output files could not be written, 4 --verify found pixels out of place."};
   std::string wall_path;
@@ -65,8 +66,7 @@ int main(int argc, char** argv) {
   int parity = 0;
   bool print_default = false, suggest = false;
   CLI::Option* const wall_option =
-      app.add_option("WALL", wall_path, "wall file (TOML); format in docs/wall-file.md")
-          ->type_name("WALL.toml");
+      l2::add_wall_option(app, wall_path, "default: the built-in default wall (walls/kd-2x2.toml)");
   CLI::Option* const png_option =
       app.add_option("--png", png_dir,
                      "write pictures to DIR, each with a legend: pipeserver-N.png (framebuffer: "

@@ -77,7 +77,7 @@ std::string replaced(const std::string& from, const std::string& to) {
 }
 
 TEST_F(Cli, PrintsThePlan) {
-  const ChildRun r = run("'" + write("good.toml", kGood).string() + "'");
+  const ChildRun r = run("--wall '" + write("good.toml", kGood).string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("pipeserver 0: 5 tiles in 1 row, 40 of 200 rows used, framebuffer use "
@@ -91,7 +91,7 @@ TEST_F(Cli, PrintsThePlan) {
 }
 
 TEST_F(Cli, ReportsThePixelClockOfEachPipeserversDviLink) {
-  const ChildRun r = run(std::string("'") + L2_WALLS_DIR + "/monitors-4x3.toml'");
+  const ChildRun r = run(std::string("--wall '") + L2_WALLS_DIR + "/monitors-4x3.toml'");
   EXPECT_EQ(r.status, 0) << r.err;
   // 1328x1560 at 60 Hz with CVT reduced blanking: 1328 + 160 pixels a line; 460 us are 45 lines
   // of 10.39 us; 60 x 1605 x 1488 = 143.29 MHz, rounded down to a multiple of 0.25 MHz.
@@ -119,7 +119,7 @@ TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
   };
   // 2048x1536 at 60 Hz: 2208 pixels a line, 1536 + 44 lines, 209.32 MHz rounded down.
   const auto big = wall("big.toml", 2048, 1536);
-  ChildRun r = run("'" + big.string() + "'");
+  ChildRun r = run("--wall '" + big.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("  DVI link: 2048x1536 at 60 Hz needs a 209.25 MHz pixel clock (CVT "
                        "reduced blanking, 2208x1580 with blanking): dual link\n"),
@@ -133,7 +133,7 @@ TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
       << r.out;
   // 3200x2400: 3360 pixels a line, 2400 + 69 lines, 497.75 MHz.
   const auto huge = wall("huge.toml", 3200, 2400);
-  r = run("'" + huge.string() + "'");
+  r = run("--wall '" + huge.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find(huge.string() +
                        ":14: warning: framebuffers of 3200x2400 at 60 Hz need a 497.75 MHz pixel "
@@ -147,14 +147,14 @@ TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
 // that clear the screen or retitle the terminal) reached the terminal as they were.
 TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
   ChildRun r = run(
-      "'" +
+      "--wall '" +
       write("named.toml", "name = \"\\u001b[2J\\u001b]0;owned\\u0007 wall\"\n" + kGood).string() +
       "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("wall \"\\x1b[2J\\x1b]0;owned\\x07 wall\" (", 0), 0u) << r.out;
   EXPECT_EQ(r.out.find('\x1b'), std::string::npos);
   const fs::path keyed = write("keyed.toml", "\"\\u001b[31mred\" = 1\n" + kGood);
-  r = run("'" + keyed.string() + "'");
+  r = run("--wall '" + keyed.string() + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "tilelayout: " + keyed.string() + ":1: \\x1b[31mred: unknown key\n");
 }
@@ -186,7 +186,7 @@ TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const fs::path wall = write("bad" + std::to_string(i) + ".toml", cases[i].text);
-    const ChildRun r = run("'" + wall.string() + "'");
+    const ChildRun r = run("--wall '" + wall.string() + "'");
     EXPECT_EQ(r.status, 1) << i;
     EXPECT_EQ(r.out, "") << i;
     const std::string prefix = "tilelayout: " + wall.string() + cases[i].error;
@@ -201,7 +201,7 @@ TEST_F(Cli, DeeplyNestedKeysAreAOneLineError) {
   std::string text = "a";
   for (int i = 0; i < 50000; ++i) text += ".a";
   const fs::path wall = write("deep.toml", text + " = 1\n");
-  const ChildRun r = run("'" + wall.string() + "'");
+  const ChildRun r = run("--wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
                        ":1: nested more than 16 levels deep: not a wall file\n");
@@ -211,7 +211,7 @@ TEST_F(Cli, UncoveredCanvasIsAWarningNotAnError) {
   const fs::path wall = write(
       "holes.toml", replaced("kind = \"grid\"\ntile_width = 50\ntile_height = 40",
                              "kind = \"list\"\ntiles = [[0, 0, 100, 80], [110, 0, 100, 40]]"));
-  const ChildRun r = run("'" + wall.string() + "'");
+  const ChildRun r = run("--wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find(wall.string() + ": warning: canvas area 100x40 at 110,40 (display 1: "
                                        "4000 pixels) is not covered by any tile"),
@@ -220,10 +220,10 @@ TEST_F(Cli, UncoveredCanvasIsAWarningNotAnError) {
 }
 
 TEST_F(Cli, MissingFileAndBadOptions) {
-  ChildRun r = run("'" + (dir_ / "none.toml").string() + "'");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err, "tilelayout: " + (dir_ / "none.toml").string() +
-                       ": cannot read: No such file or directory\n");
+  ChildRun r = run("--wall '" + (dir_ / "none.toml").string() + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "tilelayout: --wall: File does not exist: " + (dir_ / "none.toml").string() +
+                       "\nRun with --help for more information.\n");
   r = run("--parity 2");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--parity"), std::string::npos) << r.err;
@@ -269,7 +269,7 @@ class CliWall : public Cli, public ::testing::WithParamInterface<fs::path> {};
 // every visible display pixel exactly once. --png writes its pictures too.
 TEST_P(CliWall, ScanoutFramesRouteEveryDisplayPixelOnce) {
   const fs::path& path = GetParam();
-  const ChildRun r = run("'" + path.string() + "' --parity 1 --scanout '" +
+  const ChildRun r = run("--wall '" + path.string() + "' --parity 1 --scanout '" +
                          (dir_ / "scan").string() + "' --png '" + (dir_ / "png").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const Wall wall = load_wall(path);
@@ -333,7 +333,7 @@ framebuffer_height = 100
 
 TEST_F(Cli, SuggestPrintsWhatFits) {
   const fs::path wall = write("tight.toml", kTightWallFile);
-  ChildRun r = run("--suggest '" + wall.string() + "'");
+  ChildRun r = run("--suggest --wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out,
             "as written (310x100, 2 pipeservers, round-robin): does not fit\n"
@@ -343,7 +343,7 @@ TEST_F(Cli, SuggestPrintsWhatFits) {
             "assignment = \"blocks\" (at 310x100, 2 pipeservers)\n"
             "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)\n"
             "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n");
-  r = run("'" + wall.string() + "'");
+  r = run("--wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
@@ -354,7 +354,7 @@ TEST_F(Cli, SuggestPrintsWhatFits) {
   // A suggested value, written into the wall, plans.
   const fs::path fixed =
       write("fixed.toml", std::string(kTightWallFile) + "assignment = \"blocks\"\n");
-  EXPECT_EQ(run("'" + fixed.string() + "'").status, 0);
+  EXPECT_EQ(run("--wall '" + fixed.string() + "'").status, 0);
 }
 
 TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
@@ -364,7 +364,7 @@ TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
                               "[tiling]\nkind = \"grid\"\ntile_width = 100\ntile_height = 50\n"
                               "[pipeservers]\ncount = 1\nframebuffer_width = 200\n"
                               "framebuffer_height = 60\n");
-  const ChildRun r = run("--suggest '" + wall.string() + "'");
+  const ChildRun r = run("--suggest --wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out,
             "as written (200x60, 1 pipeserver, round-robin): fits\n"

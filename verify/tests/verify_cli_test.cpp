@@ -45,8 +45,8 @@ class VerifyCli : public ::testing::Test {
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::ofstream(wall) << verify_test::kWallToml;
-    const Result r = run(
-        fmt::format("{} {} --scanout {}", TILELAYOUT_EXE, wall.string(), (dir / "scan").string()));
+    const Result r = run(fmt::format("{} --wall {} --scanout {}", TILELAYOUT_EXE, wall.string(),
+                                     (dir / "scan").string()));
     ASSERT_EQ(r.status, 0) << r.out;
   }
   void TearDown() override { fs::remove_all(dir); }
@@ -122,8 +122,8 @@ TEST_F(VerifyCli, RouteVerifyNeedsAWall) {
 }
 
 TEST_F(VerifyCli, TilelayoutVerifyScansOutRoutesAndChecks) {
-  const Result r = run(fmt::format("{} {} --verify {} --parity 1", TILELAYOUT_EXE, wall.string(),
-                                   (dir / "v").string()));
+  const Result r = run(fmt::format("{} --wall {} --verify {} --parity 1", TILELAYOUT_EXE,
+                                   wall.string(), (dir / "v").string()));
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("\ndisplay 0 (64x32) right: 2048 planned pixels: 2048 right, 0 missing, 0 "
                        "misplaced; 0 written twice, 0 behind mullions\n"),

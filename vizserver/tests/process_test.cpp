@@ -103,7 +103,7 @@ TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
 
 TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   const auto dir = fresh_dir("exe");
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--port",
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--viz-port",
                             "0", "--frames", "1", "--out", dir.string()});
   const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
@@ -195,7 +195,7 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
 TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
   const Fd taken = listen_tcp("127.0.0.1", 0);
   const Fd listener = listen_tcp("127.0.0.1", 0);
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--port",
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--viz-port",
                             std::to_string(local_port(taken.get())), "--display-stream",
                             fmt::format("127.0.0.1:{}", local_port(listener.get()))});
   Fd stream = accept_within(listener, 5000ms);
@@ -249,8 +249,9 @@ TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   std::string text;
   while (auto l = help.read_line(Stream::Out, 5000ms)) text += *l + "\n";
   EXPECT_EQ(exit_of(help, 5000ms), 0);
-  for (const char* opt : {"--displays", "--servers", "--port", "--host", "--frames", "--out",
-                          "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
+  for (const char* opt :
+       {"--displays", "--servers", "--viz-port", "--viz-host", "--frames", "--out",
+        "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
     EXPECT_THAT(text, HasSubstr(opt));
   }
   ChildProcess bad =

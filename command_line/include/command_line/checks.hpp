@@ -1,6 +1,6 @@
 // Checks for option values that CLI11's own validators let through: CLI::Range passes NaN
-// (every comparison with it is false), a tiny positive timeout can mean "never", CLI11 clamps
-// an integer too large for its type, and an empty path means the current folder.
+// (every comparison with it is false), CLI11 clamps an integer too large for its type, and an
+// empty path means the current folder. Timeouts: command_line/options.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -26,18 +26,6 @@ inline CLI::Validator rate_hz(bool zero_allowed) {
                                     : " is not 1..1000 Hz");
       },
       zero_allowed ? "0 or 1..1000 Hz" : "1..1000 Hz");
-}
-
-// A timeout in seconds: 0 (wait forever) or 0.001..86400. A smaller positive value became 0 ms,
-// which is forever; NaN too.
-inline CLI::Validator timeout_seconds() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const double s = std::strtod(text.c_str(), nullptr);
-        if (s == 0 || (s >= 0.001 && s <= 86400)) return {};
-        return text + " is not 0 (forever) or 0.001..86400 seconds";
-      },
-      "0 or 0.001..86400 s");
 }
 
 // A number lo..hi, NaN refused (CLI::Range lets it through).

@@ -1,12 +1,16 @@
 // Every program parses its command line with CLI11 and ends the parse the same way: --help
-// prints the usage and exits 0; a usage error prints one error on stderr and exits 2 (CLI11's
-// own codes, 105, 106 and so on, mean nothing to a script); a subcommand that ran in a callback
-// and threw CLI::RuntimeError(status) exits with that status. Checks that need several options
+// prints the usage and exits 0; a usage error prints one error on stderr, starting with the
+// program's name as every other error of the program does, and exits 2 (CLI11's own codes, 105,
+// 106 and so on, mean nothing to a script); a subcommand that ran in a callback and threw
+// CLI::RuntimeError(status) exits with that status. Checks that need several options
 // at once go in the app's callback(), where a CLI::ValidationError is a usage error too.
 #pragma once
 
 #include <CLI/CLI.hpp>
+
+#include <cstdio>
 #include <optional>
+#include <string>
 
 namespace l2 {
 
@@ -20,7 +24,11 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitUsageError;  // --help is a ParseError that exits 0
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help is a ParseError that exits 0
+    const std::string program = argc > 0 ? argv[0] : "";
+    std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n",
+                 program.substr(program.find_last_of('/') + 1).c_str(), e.what());
+    return kExitUsageError;
   }
 }
 

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# `cmake --install` into a fresh prefix, then the installed l2wall run on the default wall for
+# 2 frames from a folder outside the working tree: it must find its pipeserver, the bunny and
+# the golden images in the prefix, not in the build tree.
+# Arguments: the build folder.
+set -uo pipefail
+build=$1
+prefix=$(mktemp -d)
+trap 'rm -rf "$prefix"' EXIT
+fail() {
+  echo "FAIL $*"
+  exit 1
+}
+cmake --install "$build" --prefix "$prefix" >"$prefix/install.log" 2>&1 ||
+  fail "cmake --install: $(tail -5 "$prefix/install.log")"
+for program in l2wall pipeserver vizserver lightning2_emu tilelayout strip_headers \
+  sync_backchannel show_wall; do
+  [[ -x $prefix/bin/$program ]] || fail "no $prefix/bin/$program"
+done
+for file in share/lightning2/walls/kd-2x2.toml share/lightning2/data/bunny.ply \
+  share/lightning2/tests/golden_images/manifest.toml share/doc/lightning2/README.md \
+  share/doc/lightning2/strip-header.md share/doc/lightning2/wall-file.md; do
+  [[ -f $prefix/$file ]] || fail "no $prefix/$file"
+done
+# The defaults in the prefix, as --help shows them.
+help=$("$prefix/bin/l2wall" run --help)
+[[ $help == *"--pipeserver TEXT=$prefix/bin/pipeserver"* ]] ||
+  fail "l2wall run's default --pipeserver is not $prefix/bin/pipeserver: $(grep -A1 -- --pipeserver <<<"$help")"
+help=$("$prefix/bin/l2wall" golden check --help)
+[[ $help == *"--goldens DIR=$prefix/share/lightning2/tests/golden_images"* ]] ||
+  fail "the default --goldens is not in the prefix: $(grep -- --goldens <<<"$help")"
+
+mkdir "$prefix/elsewhere"
+cd "$prefix/elsewhere" || exit 1
+"$prefix/bin/l2wall" run --frames 2 --no-progress --out run >run.log 2>&1
+status=$?
+[[ $status -eq 0 ]] || fail "installed l2wall run: exit $status: $(tail -5 run.log)"
+grep -q '^l2wall run: 2 frames on 4 displays from 4 pipeservers' run/summary.txt ||
+  fail "summary: $(head -1 run/summary.txt)"
+for d in 0 1 2 3; do
+  [[ -s run/frame-1/display-$d.png ]] || fail "no run/frame-1/display-$d.png"
+done
+echo "ok   installed into $prefix; l2wall run from there: $(head -1 run/summary.txt)"
