@@ -1,4 +1,4 @@
-// The first header of the project's precompiled headers (CodePch.cmake, Tests.cmake).
+// The first header of the project's precompiled headers (Targets.cmake).
 //
 // In unoptimised builds fmt's core.h wraps itself in `#pragma GCC optimize("Og")`. With that
 // restored from a precompiled header, GCC 12 made the SSE intrinsics headers included after it

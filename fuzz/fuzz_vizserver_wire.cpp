@@ -45,11 +45,11 @@ bool round_trips(viz::Kind kind, std::span<const std::uint8_t> message) {
 std::size_t take_message(std::span<const std::uint8_t> bytes) {
   if (bytes.size() < viz::kHeaderBytes) return 0;
   const auto decoded = viz::decode_header(bytes.first<viz::kHeaderBytes>());
-  if (const auto* bad = std::get_if<std::string>(&decoded)) {
-    l2::fuzz::require_one_line(*bad, "a refused header has a one-line reason");
+  if (!decoded.ok()) {
+    l2::fuzz::require_one_line(decoded.reason(), "a refused header has a one-line reason");
     return 0;
   }
-  const viz::Header h = std::get<viz::Header>(decoded);
+  const viz::Header h = decoded.value();
   const std::size_t fixed = viz::fixed_bytes(h.kind);
   require(fixed <= viz::kMaxFixedBytes, "a fixed part fits the server's header buffer");
   require(h.payload_bytes >= fixed, "a payload holds its fixed part");
@@ -61,8 +61,8 @@ std::size_t take_message(std::span<const std::uint8_t> bytes) {
     const bool ext = h.kind == viz::Kind::TileExt;
     const auto fixed_part = message.subspan(viz::kHeaderBytes);
     const viz::TileHeader t = ext ? viz::decode_tile_ext(fixed_part) : viz::decode_tile(fixed_part);
-    if (auto bad = viz::validate(t, h.payload_bytes)) {
-      l2::fuzz::require_one_line(*bad, "a refused TILE has a one-line reason");
+    if (const l2::Status tile = viz::validate(t, h.payload_bytes); !tile.ok()) {
+      l2::fuzz::require_one_line(tile.reason(), "a refused TILE has a one-line reason");
       return 0;
     }
     require(t.w >= 1 && t.w <= viz::kMaxTileSide && t.h >= 1 && t.h <= viz::kMaxTileSide,

@@ -11,9 +11,7 @@
 #include "command_line/parse.hpp"
 #include "display_files.hpp"
 #include "displays/wall_presenter.hpp"
-#ifdef L2_HAVE_WALL_FILE
 #include "tilelayout/wall_file.hpp"
-#endif
 
 namespace {
 
@@ -32,14 +30,9 @@ l2::Wall load_wall_or_row(const Options& o, std::vector<l2::RgbImage>& images) {
     images = l2::read_display_files(o.displays_from);
     return l2::row_wall(images, 16);
   }
-#ifdef L2_HAVE_WALL_FILE
   l2::Wall wall = l2::load_wall(o.wall_file);
   images = l2::read_display_files(o.displays_from, wall);
   return wall;
-#else
-  throw std::runtime_error(o.wall_file.string() +
-                           ": wall files are not supported by this build (no tilelayout loader)");
-#endif
 }
 
 void save(l2::WallPresenter& shown, const std::filesystem::path& dir, const std::string& prefix) {

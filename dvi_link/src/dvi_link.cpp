@@ -14,6 +14,8 @@
 
 #include <fmt/format.h>
 
+#include "base/fd.hpp"
+
 namespace l2 {
 namespace detail {
 
@@ -111,24 +113,17 @@ Mapping map_fd(const std::string& name, int fd, std::size_t size) {
   return Mapping(base, size);
 }
 
-// A descriptor closed on every path; the mapping outlives it.
-struct Fd {
-  int fd;
-  ~Fd() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
 // Pid of the writer of an existing segment; -1 when it holds no complete DVI link header
 // (another creator may be half-way through, or it is not ours), 0 when it has vanished since.
 std::int32_t existing_writer(const std::string& name) {
-  Fd fd{::shm_open(name.c_str(), O_RDWR, 0)};
-  if (fd.fd < 0) return 0;
+  const Fd fd(
+      ::shm_open(name.c_str(), O_RDWR, 0));  // closed on every path; the mapping outlives it
+  if (!fd) return 0;
   struct stat st {};
-  if (::fstat(fd.fd, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
+  if (::fstat(fd.get(), &st) != 0 || static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
     return -1;
   }
-  Mapping map = map_fd(name, fd.fd, kHeaderBytes);
+  Mapping map = map_fd(name, fd.get(), kHeaderBytes);
   if (map.header().magic.load(std::memory_order_acquire) != kMagic) return -1;
   return map.header().writer_pid.load();
 }
@@ -202,16 +197,16 @@ DviLinkWriter DviLinkWriter::create(const std::string& name, int width, int heig
   const std::uint64_t pitch = slot_pitch(frame_bytes);
   const std::uint64_t total = kHeaderBytes + 3 * pitch;
 
-  Fd fd{create_segment(name)};
+  const Fd fd(create_segment(name));
   DviLinkWriter writer;
   writer.name_ = name;  // from here on the destructor unlinks the segment on any error
-  if (::ftruncate(fd.fd, static_cast<off_t>(total)) != 0) {
+  if (::ftruncate(fd.get(), static_cast<off_t>(total)) != 0) {
     const int error = errno;
     writer.unlink();
     fail_errno(name, fmt::format("cannot size to {} bytes", total), error);
   }
   try {
-    writer.map_ = map_fd(name, fd.fd, total);
+    writer.map_ = map_fd(name, fd.get(), total);
   } catch (...) {
     writer.unlink();
     throw;
@@ -300,16 +295,16 @@ std::uint64_t DviLinkWriter::publish() {
 
 DviLinkReader DviLinkReader::open(const std::string& name) {
   check_name(name);
-  Fd fd{::shm_open(name.c_str(), O_RDWR | O_CLOEXEC, 0)};
-  if (fd.fd < 0) fail_errno(name, "cannot open shared-memory segment", errno);
+  const Fd fd(::shm_open(name.c_str(), O_RDWR | O_CLOEXEC, 0));
+  if (!fd) fail_errno(name, "cannot open shared-memory segment", errno);
   struct stat st {};
-  if (::fstat(fd.fd, &st) != 0) fail_errno(name, "cannot stat", errno);
+  if (::fstat(fd.get(), &st) != 0) fail_errno(name, "cannot stat", errno);
   const auto size = static_cast<std::uint64_t>(st.st_size);
   if (size < kHeaderBytes) {
     fail(name, fmt::format("segment is {} bytes, too small for a DVI link header", size));
   }
   DviLinkReader reader;
-  reader.map_ = map_fd(name, fd.fd, size);
+  reader.map_ = map_fd(name, fd.get(), size);
   const LinkHeader& h = reader.map_.header();
   const std::uint32_t magic = h.magic.load(std::memory_order_acquire);
   if (magic != kMagic) fail(name, fmt::format("not a DVI link (magic {:#010x})", magic));

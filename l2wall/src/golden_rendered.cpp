@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
 

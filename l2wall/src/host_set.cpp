@@ -91,10 +91,10 @@ Host* HostSet::killed_by_signal() {
   return nullptr;
 }
 
-std::string HostSet::describe_end(const Host& h, const std::string& kept) const {
+std::string HostSet::describe_end(const Host& h, const std::string& on_displays) const {
   return fmt::format("pipeserver {} (pid {}) {} while rendering frame {}; {}", h.server,
                      h.process ? h.process->pid() : -1,
-                     h.exit ? h.exit->describe() : std::string("ended"), delivered(h), kept);
+                     h.exit ? h.exit->describe() : std::string("ended"), delivered(h), on_displays);
 }
 
 void HostSet::open_links(milliseconds timeout, const std::function<void()>& check) {

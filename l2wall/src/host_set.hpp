@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "sync_backchannel/back_channel.hpp"
@@ -73,9 +73,9 @@ class HostSet {
   // Polls every host; the first that was killed by a signal (never the effect of another
   // process's fault, so the cause when several processes ended at once).
   Host* killed_by_signal();
-  // "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while rendering frame 57; " + kept
+  // "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while rendering frame 57; " + on_displays
   // (what the displays keep, e.g. "the displays keep frame 56").
-  std::string describe_end(const Host& h, const std::string& kept) const;
+  std::string describe_end(const Host& h, const std::string& on_displays) const;
 
   // Opens every host's DVI link and waits until each carries a first frame; `check` runs in
   // between (it throws for a host that died). Throws RunFault naming the hosts still silent.

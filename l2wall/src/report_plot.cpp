@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "command_line/size_text.hpp"
 
 namespace l2 {

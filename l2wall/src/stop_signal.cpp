@@ -30,11 +30,11 @@ int stop_signal_received() {
   return g_stop_signal;
 }
 
-void check_stop_signal(int shown, const std::string& kept) {
+void check_stop_signal(int shown, const std::string& on_displays) {
   if (!g_stop_signal) return;
   const int signal = g_stop_signal;
   throw RunFault(fmt::format("stopped by signal {} ({}) at frame {}; {}", signal, strsignal(signal),
-                             shown, kept));
+                             shown, on_displays));
 }
 
 }  // namespace l2

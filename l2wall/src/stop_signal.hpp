@@ -17,8 +17,9 @@ int stop_signal_received();
 inline int stopped_exit_status(int signal) {
   return 128 + signal;
 }
-// Throws RunFault "stopped by signal 15 (Terminated) at frame K; " + kept once one of them
-// arrived; `shown` is the number of frames on the displays (K), `kept` says what they show.
-void check_stop_signal(int shown, const std::string& kept);
+// Throws RunFault "stopped by signal 15 (Terminated) at frame K; " + on_displays once one of
+// them arrived; `shown` is the number of frames on the displays (K), `on_displays` says what
+// they show.
+void check_stop_signal(int shown, const std::string& on_displays);
 
 }  // namespace l2

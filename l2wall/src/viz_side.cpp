@@ -32,7 +32,7 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
 
 VizSide::VizSide(const VizLaunch& launch) : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
-  const viz::Fd listener = viz::listen_tcp("127.0.0.1", 0);
+  const Fd listener = viz::listen_tcp("127.0.0.1", 0);
   process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())),
                    std::vector<std::string>{token_variable()});
   accept_stream(listener, launch);
@@ -50,10 +50,10 @@ VizSide::~VizSide() {
   shut_down();
 }
 
-void VizSide::accept_stream(const viz::Fd& listener, const VizLaunch& launch) {
+void VizSide::accept_stream(const Fd& listener, const VizLaunch& launch) {
   const std::string who = name();
   const auto deadline = RunClock::now() + launch.start_timeout;
-  viz::Fd stream;
+  Fd stream;
   while (!stream) {
     if ((exit_ = process_->poll())) {
       throw RunFault(fmt::format("{} {} before it listened", who, exit_->describe()));
@@ -120,16 +120,17 @@ bool VizSide::said_why() const {
          watcher_->ended_with_error_message();
 }
 
-std::string VizSide::describe_down(int shown, const std::string& keep) const {
+std::string VizSide::describe_down(int shown, const std::string& on_displays) const {
   const std::string who = name();
   if (said_why()) {
-    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(), keep);
+    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(),
+                       on_displays);
   }
   if (exit_ && !exit_->ok()) {
-    return fmt::format("{} {} at frame {}; {}", who, exit_->describe(), shown, keep);
+    return fmt::format("{} {} at frame {}; {}", who, exit_->describe(), shown, on_displays);
   }
   return fmt::format("{} at frame {}: {}; {}", who, shown,
-                     stream_error_.value_or("display stream ended"), keep);
+                     stream_error_.value_or("display stream ended"), on_displays);
 }
 
 void VizSide::finish(milliseconds timeout) {

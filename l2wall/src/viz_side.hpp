@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
 #include "vizserver/run_token.hpp"
@@ -66,9 +66,10 @@ class VizSide {
   // True when the server ended by its own judgement, saying why (exit code 1 after ERROR):
   // then its words name the cause, which may be a pipeserver.
   bool said_why() const;
-  // "compositing server (vizserver pid 4242) killed by signal 9 (Killed) at frame 12; " + kept
-  // — or "... failed at frame 12: <its reason>; " + kept. `kept`: what the displays show.
-  std::string describe_down(int shown, const std::string& kept) const;
+  // "compositing server (vizserver pid 4242) killed by signal 9 (Killed) at frame 12; " +
+  // on_displays — or "... failed at frame 12: <its reason>; " + on_displays (what the displays
+  // show).
+  std::string describe_down(int shown, const std::string& on_displays) const;
 
   // After the last frame: the server must end by itself, successfully, within `timeout`.
   void finish(std::chrono::milliseconds timeout);
@@ -76,7 +77,7 @@ class VizSide {
   void shut_down();
 
  private:
-  void accept_stream(const viz::Fd& listener, const VizLaunch& launch);
+  void accept_stream(const Fd& listener, const VizLaunch& launch);
 
   std::string host_;
   std::uint16_t port_ = 0;

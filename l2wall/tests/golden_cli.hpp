@@ -3,12 +3,12 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <string>
+
+#include "base/child_process.hpp"
 
 namespace l2::test {
 
@@ -20,13 +20,10 @@ struct Result {
 };
 
 inline Result run(const std::string& command) {
+  const Finished f = run_shell(command, std::chrono::minutes(5));
   Result r;
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, p)) r.output.append(buffer, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = f.out;
+  r.code = f.status.shell_code();
   return r;
 }
 

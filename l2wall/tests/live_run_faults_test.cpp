@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <string>
 #include <thread>
 
+#include "base/child_process.hpp"
 #include "frame_stamp.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/planner.hpp"
@@ -30,13 +30,8 @@ constexpr auto kFaultNoticeBound = 10s;
 
 // What `tilelayout --wall WALL` prints on stdout and stderr, and its exit status.
 std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
-  FILE* pipe =
-      popen(fmt::format("'{}' --wall '{}' 2>&1", TILELAYOUT_EXE, wall.string()).c_str(), "r");
-  std::string out;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const Finished f = run_shell(fmt::format("'{}' --wall '{}'", TILELAYOUT_EXE, wall.string()), 60s);
+  return {f.status.shell_code(), f.out};
 }
 
 TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
@@ -268,12 +263,9 @@ TEST(LiveRun, CtrlCEndsTheRunAsQDoesWithItsReport) {
   expect_report_of_stopped_run(run, frames);
   expect_clean(run);
   // pgrep: no process of the session l2wall led is left (exit status 1: none matched).
-  FILE* pgrep = popen(fmt::format("pgrep -s {}", run.pid()).c_str(), "r");
-  ASSERT_NE(pgrep, nullptr);
-  char left[256] = "";
-  const bool any = std::fgets(left, sizeof left, pgrep) != nullptr;
-  EXPECT_EQ(WEXITSTATUS(pclose(pgrep)), 1);
-  EXPECT_FALSE(any) << "left in the session: pid " << left;
+  const Finished pgrep = run_shell(fmt::format("pgrep -s {}", run.pid()), 10s);
+  EXPECT_EQ(pgrep.status.shell_code(), 1);
+  EXPECT_EQ(pgrep.out, "") << "left in the session";
 }
 
 // l2wall itself killed (no chance to stop anyone): the pipeservers see their back-channel hang

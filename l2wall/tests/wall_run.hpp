@@ -18,7 +18,7 @@
 #include <string>
 #include <thread>
 #include <vector>
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "frame_stamp.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/planner.hpp"
@@ -130,18 +130,16 @@ class HeldPort {
     addr.sin_family = AF_INET;
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     socklen_t len = sizeof addr;
-    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
-        listen(fd_, 1) != 0 || getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
+    if (!fd_ || bind(fd_.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+        listen(fd_.get(), 1) != 0 ||
+        getsockname(fd_.get(), reinterpret_cast<sockaddr*>(&addr), &len) != 0)
       ADD_FAILURE() << "cannot hold a TCP port";
     port = ntohs(addr.sin_port);
   }
-  ~HeldPort() { close(fd_); }
-  HeldPort(const HeldPort&) = delete;
-  HeldPort& operator=(const HeldPort&) = delete;
   int port = 0;
 
  private:
-  int fd_;
+  Fd fd_;
 };
 
 inline std::vector<std::vector<std::string>> read_csv(const fs::path& path) {

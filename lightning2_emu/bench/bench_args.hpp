@@ -1,6 +1,5 @@
-// The emulator benchmark's command line, parsed in a file of its own: CLI11 is compiled there as
-// light edge code (cmake/LightCode.cmake), while bench.cpp, whose baselines are measured, keeps
-// the release flags.
+// The emulator benchmark's command line, parsed in a file of its own, apart from bench.cpp,
+// whose baselines are measured.
 #pragma once
 
 #include <optional>

@@ -45,7 +45,7 @@ class Scanner {
       const std::uint8_t* row = f_.row(y);
       if (black_start(row)) {  // END at column 0: most scanlines below the packed tiles
         sc_.seen.clear();
-        keep_end(y, 0);
+        remember_end(y, 0);
         repeatable_ = false;
       } else if (!(repeatable_ && repeat(row, y))) {
         parse(row, y);
@@ -81,9 +81,9 @@ class Scanner {
       if (h.list < 0) {  // a SKIP or an END (a header that cannot repeat is never seen again)
         if (h.value >> header_bits::kOpShift == static_cast<int>(StripOp::Skip)) {
           ++skips_;
-          keep_header(y, h.x, h.value);
+          remember_header(y, h.x, h.value);
         } else {
-          keep_end(y, h.x);
+          remember_end(y, h.x);
         }
         continue;
       }
@@ -109,7 +109,7 @@ class Scanner {
       if (s.header.op == StripOp::Skip) {
         ++skips_;
         sc_.seeing.push_back({x, raw_header(row, x), -1, 0, 0, 0});
-        keep_header(y, x, raw_header(row, x));
+        remember_header(y, x, raw_header(row, x));
         return true;
       }
       ++found_[static_cast<int>(kind_of(s))];
@@ -119,7 +119,7 @@ class Scanner {
     // The parser stopped at an END (it counts any other stop as an error) or at the row's end.
     if (next_header <= f_.width - kHeaderPixels) {
       sc_.seeing.push_back({next_header, raw_header(row, next_header), -1, 0, 0, 0});
-      keep_end(y, next_header);  // or an error, which keeps no layout
+      remember_end(y, next_header);  // or an error, which leaves no layout
     }
     std::swap(sc_.seen, sc_.seeing);
     repeatable_ = errors_.total() == errors_before;
@@ -141,7 +141,7 @@ class Scanner {
       return unrepeatable(x);
     }
     if (s.length == 0) {  // a header in the last two pixels
-      keep_header(y, x, raw_header(row, x));
+      remember_header(y, x, raw_header(row, x));
       return unrepeatable(x);
     }
     if (h.x >= t.width || h.y >= t.height) {
@@ -225,10 +225,12 @@ class Scanner {
     return std::int64_t{f_.stride} * y + std::int64_t{x} * f_.bytes_per_pixel;
   }
   static std::uint64_t message_of(std::uint64_t raw) { return raw >> 3 & ~kMessageFrameBit; }
-  void keep_header(int y, int x, std::uint64_t raw) {
+  void remember_header(int y, int x, std::uint64_t raw) {
     out_.others.push_back({offset(y, x), message_of(raw)});
   }
-  void keep_end(int y, int x) { out_.others.push_back({offset(y, x), KeptHeader::kAnyEnd}); }
+  void remember_end(int y, int x) {
+    out_.others.push_back({offset(y, x), RememberedHeader::kAnyEnd});
+  }
 
   void store_stats(int input) {
     InputFrameStats& st = out_.stats;

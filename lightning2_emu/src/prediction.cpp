@@ -80,14 +80,14 @@ bool InputScan::headers_hold(bool runs) const {
   auto holds = [&](std::int64_t at, std::uint64_t message) {
     const std::uint8_t* p = f.data + at;
     const std::uint64_t raw = header_value(p, p + bpp);
-    if (message == KeptHeader::kAnyEnd) {
+    if (message == RememberedHeader::kAnyEnd) {
       const auto h = decode(raw);
       return h && h->op == StripOp::End;
     }
     return raw == predicted_header(message | bit);
   };
   bool ok = true;
-  const std::vector<KeptHeader>& others = layout_.others;
+  const std::vector<RememberedHeader>& others = layout_.others;
   const std::size_t n = others.size();
   for (std::size_t k = 0; k < n; ++k) {
     if (k + kCheckAhead < n) pixel_copy::prefetch_line(f.data + others[k + kCheckAhead].at);

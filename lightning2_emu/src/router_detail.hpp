@@ -44,7 +44,7 @@ struct Run {
 // A header the last parse read that starts no routed strip (a SKIP, an END, a COPY in the last
 // two pixels), for checking a predicted frame: at `at` bytes from row 0, `message` as in Run,
 // or kAnyEnd when any END header will do (the parser reads nothing else of an END).
-struct KeptHeader {
+struct RememberedHeader {
   std::int64_t at;
   std::uint64_t message;
   static constexpr std::uint64_t kAnyEnd = ~std::uint64_t{0};
@@ -62,14 +62,14 @@ struct SeenHeader {
   StripKind kind = StripKind::Copy;
 };
 
-// What parsing one frame leaves: the runs to write, the headers that start no run (kept for
+// What parsing one frame leaves: the runs to write, the headers that start no run (remembered for
 // checking a prediction) and the counts.
 struct Layout {
   InputFrameStats stats;
-  std::vector<std::vector<Run>> bands;  // [Target::band_offset + band], in write order
-  std::vector<KeptHeader> others;       // headers that start no routed strip, in scan order
-  std::int64_t parity_at = -1;          // the first COPY/SKIP/EXT header, -1 when none
-  std::uint64_t composited = 0;         // bit d: a KEY or DEPTH strip reached display d
+  std::vector<std::vector<Run>> bands;   // [Target::band_offset + band], in write order
+  std::vector<RememberedHeader> others;  // headers that start no routed strip, in scan order
+  std::int64_t parity_at = -1;           // the first COPY/SKIP/EXT header, -1 when none
+  std::uint64_t composited = 0;          // bit d: a KEY or DEPTH strip reached display d
 };
 
 // A parse's working lists, reused from frame to frame.

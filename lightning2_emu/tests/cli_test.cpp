@@ -6,13 +6,13 @@
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <utility>
 
+#include "base/child_process.hpp"
 #include "frame_builder.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/planner.hpp"
@@ -27,19 +27,18 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FrameBuilder;
 
+// Far longer than any of these commands takes, even under the sanitizers: one that hangs
+// fails its test instead of holding up the suite.
+constexpr std::chrono::minutes kCommandBound{2};
+
 struct Result {
   int status;
   std::string output;
 };
 
 Result run(const std::string& args) {
-  const std::string command = std::string(L2_EMU_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const Finished f = run_shell(std::string(L2_EMU_EXE) + " " + args, kCommandBound);
+  return {f.status.shell_code(), f.out};
 }
 
 nlohmann::json read_json(const fs::path& path) {

@@ -1,10 +1,10 @@
 // The strip_headers executable as a user runs it: exact output and exit status.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "base/child_process.hpp"
 #include "image/png_io.hpp"
 #include "strip_headers/extension_word.hpp"
 #include "strip_headers/strip_header.hpp"
@@ -12,19 +12,18 @@
 namespace l2 {
 namespace {
 
+// Far longer than any of these commands takes, even under the sanitizers: one that hangs
+// fails its test instead of holding up the suite.
+constexpr std::chrono::minutes kCommandBound{2};
+
 struct Result {
   int status;
   std::string out;  // stdout and stderr
 };
 
 Result run(const std::string& args) {
-  const std::string command = std::string(STRIP_HEADERS_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const Finished f = run_shell(std::string(STRIP_HEADERS_EXE) + " " + args, kCommandBound);
+  return {f.status.shell_code(), f.out};
 }
 
 TEST(StripHeadersCli, ExtEncodesTheSpecVectors) {

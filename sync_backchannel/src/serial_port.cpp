@@ -100,37 +100,16 @@ SerialPort SerialPort::adopt(int fd, std::string name) {
   return port;
 }
 
-SerialPort::SerialPort(SerialPort&& other) noexcept
-    : fd_(std::exchange(other.fd_, -1)), name_(std::move(other.name_)) {}
-
-SerialPort& SerialPort::operator=(SerialPort&& other) noexcept {
-  if (this != &other) {
-    close();
-    fd_ = std::exchange(other.fd_, -1);
-    name_ = std::move(other.name_);
-  }
-  return *this;
-}
-
-SerialPort::~SerialPort() {
-  close();
-}
-
-void SerialPort::close() noexcept {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
-}
-
 void SerialPort::fail(std::string_view what, int error) const {
   throw SerialError(fmt::format("{} {}: {}", what, name_, errno_text(error)));
 }
 
 short SerialPort::wait_for(short events, std::chrono::steady_clock::time_point deadline) {
-  if (fd_ < 0) throw SerialError(fmt::format("{} is closed", name_));
+  if (!fd_) throw SerialError(fmt::format("{} is closed", name_));
   for (;;) {
     const auto left =
         std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    pollfd p{fd_, events, 0};
+    pollfd p{fd_.get(), events, 0};
     const int n = ::poll(&p, 1, static_cast<int>(std::max<long long>(left.count(), 0)));
     if (n > 0) return p.revents;
     if (n == 0) return 0;
@@ -143,7 +122,7 @@ std::size_t SerialPort::read(std::span<std::uint8_t> buffer, std::chrono::millis
   for (;;) {
     const short revents = wait_for(POLLIN, deadline);
     if (revents == 0) return 0;
-    const ssize_t n = ::read(fd_, buffer.data(), buffer.size());
+    const ssize_t n = ::read(fd_.get(), buffer.data(), buffer.size());
     if (n > 0) return static_cast<std::size_t>(n);
     // n == 0: the other end closed (EOF on a pty slave). EIO: a pty master whose slave is
     // closed. Either way nobody is on the line any more.
@@ -157,7 +136,7 @@ void SerialPort::write_all(std::span<const std::uint8_t> bytes, std::chrono::mil
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   std::size_t done = 0;
   while (done < bytes.size()) {
-    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
+    const ssize_t n = ::write(fd_.get(), bytes.data() + done, bytes.size() - done);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
       continue;
@@ -172,10 +151,10 @@ void SerialPort::write_all(std::span<const std::uint8_t> bytes, std::chrono::mil
 }
 
 std::size_t SerialPort::write_some(std::span<const std::uint8_t> bytes) {
-  if (fd_ < 0) throw SerialError(fmt::format("{} is closed", name_));
+  if (!fd_) throw SerialError(fmt::format("{} is closed", name_));
   std::size_t done = 0;
   while (done < bytes.size()) {
-    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
+    const ssize_t n = ::write(fd_.get(), bytes.data() + done, bytes.size() - done);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
     } else if (n == 0 || errno == EAGAIN) {

@@ -8,7 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "sync_backchannel/pty_pair.hpp"
 
@@ -16,8 +16,6 @@ namespace l2 {
 namespace {
 
 using namespace std::chrono_literals;
-using test::ChildProcess;
-using test::ChildResult;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
@@ -46,8 +44,8 @@ TEST(WatchWithSocat, SocatSeesTheExactReadyLines) {
   // Queued on the line before socat opens it; socat, unlike a host, does not discard them.
   emulator.send_ready(123);
   emulator.send_ready(124);
-  const ChildResult r = test::run(socat_watch(pty.slave_path()), 5s);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const Finished r = run(socat_watch(pty.slave_path()), 5s);
+  EXPECT_EQ(r.status.shell_code(), 0) << r.err;
   EXPECT_EQ(r.out, "READY 000123 6E\r\nREADY 000124 7B\r\n");
 }
 
@@ -55,53 +53,54 @@ TEST(WatchWithSocat, APersonCanTypeASyncRequestThatTheEmulatorAnswers) {
   PtyPair pty = PtyPair::open();
   BackChannel emulator(pty.master());
   emulator.send_ready(5);
-  const ChildResult r = test::run(
-      {"sh", "-c",
-       "printf 'SYNC? 000005 F5\\r\\n' | timeout 5 socat -u STDIN FILE:" + pty.slave_path() +
-           ",raw,echo=0"},
-      5s);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Finished r =
+      run({"sh", "-c",
+           "printf 'SYNC? 000005 F5\\r\\n' | timeout 5 socat -u STDIN FILE:" + pty.slave_path() +
+               ",raw,echo=0"},
+          5s);
+  ASSERT_EQ(r.status.shell_code(), 0) << r.err;
   EXPECT_EQ(emulator.serve(200ms), 1);
   EXPECT_EQ(emulator.counts().sync_answered, 1u);
 }
 
 TEST(SyncBackchannelExe, HelpListsEverySubcommand) {
-  const ChildResult r = test::run({kExe, "--help"}, 5s);
-  EXPECT_EQ(r.exit_code, 0);
+  const Finished r = run({kExe, "--help"}, 5s);
+  EXPECT_EQ(r.status.shell_code(), 0);
   for (const char* word : {"pty", "send-ready", "wait-ready", "watch", "READY", "SYNC?"}) {
     EXPECT_THAT(r.out, HasSubstr(word));
   }
-  const ChildResult sub = test::run({kExe, "wait-ready", "--help"}, 5s);
+  const Finished sub = run({kExe, "wait-ready", "--help"}, 5s);
   EXPECT_THAT(sub.out, HasSubstr("--ready-retries"));
   EXPECT_THAT(sub.out, HasSubstr("--ready-timeout MS"));
 }
 
 TEST(SyncBackchannelExe, SendReadyWritesTheExactLine) {
   PtyPair pty = PtyPair::open();
-  const ChildResult r = test::run({kExe, "send-ready", pty.slave_path(), "--frame", "42"}, 5s);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Finished r = run({kExe, "send-ready", pty.slave_path(), "--frame", "42"}, 5s);
+  ASSERT_EQ(r.status.shell_code(), 0) << r.err;
   EXPECT_EQ(read_for(pty.master(), 100ms), "READY 000042 7C\r\n");
 }
 
 TEST(SyncBackchannelExe, BadDeviceIsOneErrorLine) {
-  const ChildResult r = test::run({kExe, "send-ready", "/dev/l2-nope", "--frame", "1"}, 5s);
-  EXPECT_EQ(r.exit_code, 1);
+  const Finished r = run({kExe, "send-ready", "/dev/l2-nope", "--frame", "1"}, 5s);
+  EXPECT_EQ(r.status.shell_code(), 1);
   EXPECT_EQ(r.err,
             "sync_backchannel: cannot open serial device /dev/l2-nope: No such file or "
             "directory\n");
-  const ChildResult baud =
-      test::run({kExe, "watch", "/dev/null", "--baud", "31337", "--duration", "10"}, 5s);
-  EXPECT_EQ(baud.exit_code, 1);
+  const Finished baud =
+      run({kExe, "watch", "/dev/null", "--baud", "31337", "--duration", "10"}, 5s);
+  EXPECT_EQ(baud.status.shell_code(), 1);
   EXPECT_THAT(baud.err, StartsWith("sync_backchannel: unsupported baud rate 31337 for /dev/null"));
 }
 
 TEST(SyncBackchannelExe, WatchPrintsDecodedMessagesAndCounts) {
   PtyPair pty = PtyPair::open();
-  ChildProcess watch({kExe, "watch", pty.slave_path(), "--count", "2", "--duration", "5000"});
-  ASSERT_EQ(watch.read_err_line(5s), "watching " + pty.slave_path());
+  ChildProcess watch({kExe, "watch", pty.slave_path(), "--count", "2", "--duration", "5000"}, {},
+                     Capture{true, true});
+  ASSERT_EQ(watch.read_line(Stream::Err, 5s), "watching " + pty.slave_path());
   pty.master().write_all("READY 000001 21\r\n#noise#READ\x01SYNC? 000000 EE\r\n", 100ms);
-  const ChildResult r = watch.wait(5s);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const Finished r = watch.finish(5s);
+  EXPECT_EQ(r.status.shell_code(), 0) << r.err;
   EXPECT_EQ(r.out,
             "READY 000001\n"
             "SYNC? 000000\n"
@@ -110,21 +109,21 @@ TEST(SyncBackchannelExe, WatchPrintsDecodedMessagesAndCounts) {
 
 TEST(SyncBackchannelExe, WaitReadyReportsATimeoutAsOneLine) {
   PtyPair pty = PtyPair::open();
-  const ChildResult r = test::run({kExe, "wait-ready", pty.slave_path(), "--frame", "3",
-                                   "--ready-timeout", "50", "--ready-retries", "1"},
-                                  5s);
-  EXPECT_EQ(r.exit_code, 1);
+  const Finished r = run({kExe, "wait-ready", pty.slave_path(), "--frame", "3", "--ready-timeout",
+                          "50", "--ready-retries", "1"},
+                         5s);
+  EXPECT_EQ(r.status.shell_code(), 1);
   EXPECT_THAT(r.err, StartsWith("sync_backchannel: no READY for frame 000003 on " +
                                 pty.slave_path() + " after 1 SYNC? retries (2 waits of 50 ms)\n"));
 }
 
 TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
-  ChildProcess emulator({kExe, "pty", "--refresh", "33"});
-  const std::string slave = emulator.read_out_line(5s);
+  ChildProcess emulator({kExe, "pty", "--refresh", "33"}, {}, Capture{true, true});
+  const std::string slave = emulator.read_line(Stream::Out, 5s).value_or("");
   ASSERT_THAT(slave, StartsWith("/dev/pts/"));
   // A person watching the line sees whole READY lines from frame 0 on (queued on the line
   // since the emulator started; socat, unlike a host, does not discard them).
-  const ChildResult seen = test::run(
+  const Finished seen = run(
       {"timeout", "-s", "INT", "1", "socat", "-u", "FILE:" + slave + ",raw,echo=0", "STDOUT"}, 5s);
   EXPECT_THAT(seen.out, StartsWith("READY 000000 26\r\nREADY 000001 21\r\n"));
   // A host joining late takes the next READY, whatever frame the emulator has reached.
@@ -135,9 +134,9 @@ TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
   const WaitResult next = host.wait_ready(first.frame + 1, 300ms, 3);
   ASSERT_TRUE(next.ok()) << next.error;
   EXPECT_EQ(next.frame, first.frame + 1);
-  emulator.send_signal(SIGTERM);
-  const ChildResult r = emulator.wait(5s);
-  EXPECT_EQ(r.exit_code, 0);
+  emulator.signal(SIGTERM);
+  const Finished r = emulator.finish(5s);
+  EXPECT_EQ(r.status.shell_code(), 0);
   EXPECT_THAT(r.err, HasSubstr("sync_backchannel pty: decoded "));
 }
 

@@ -2,9 +2,9 @@
 // encoder, checked by `lightning2_emu route --verify`; and `tilelayout --verify` in one step.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <fstream>
 
+#include "base/child_process.hpp"
 #include "image/png_io.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "verify/check_picture.hpp"
@@ -17,18 +17,18 @@ namespace fs = std::filesystem;
 using verify_test::header_at;
 using verify_test::set_header;
 
+// Far longer than any of these commands takes, even under the sanitizers: one that hangs
+// fails its test instead of holding up the suite.
+constexpr std::chrono::minutes kCommandBound{2};
+
 struct Result {
   int status;
   std::string out;
 };
 
 Result run(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::string out;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const Finished f = run_shell(command, kCommandBound);
+  return {f.status.shell_code(), f.out};
 }
 
 std::string hex(const StripHeader& h) {

@@ -32,7 +32,7 @@ void BM_LoopbackFrame(benchmark::State& state) {
   const int bands = static_cast<int>(state.range(0));
   l2::viz::ServerOptions o;
   o.display_sizes = {{kW, kH}};
-  o.keep_frames = 1;
+  o.recent_frames = 1;
   l2::viz::CompositingServer server(o);
   server.start();
   auto sender = l2::viz::TileSender::connect("127.0.0.1", server.port(), 0, 1);

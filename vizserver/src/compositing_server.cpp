@@ -38,7 +38,7 @@ void CompositingServer::stop() {
 FramePtr CompositingServer::wait_frame(std::uint32_t frame, std::chrono::milliseconds timeout) {
   std::unique_lock lock(shared_->mutex);
   auto find = [&]() -> FramePtr {
-    for (const FramePtr& f : shared_->kept) {
+    for (const FramePtr& f : shared_->recent) {
       if (f->frame == frame) return f;
     }
     return nullptr;
@@ -53,7 +53,7 @@ FramePtr CompositingServer::wait_frame(std::uint32_t frame, std::chrono::millise
     throw VizError(
         fmt::format("frame {} is not available: no pipeserver sent it, or it was "
                     "swapped more than {} frames ago (last swapped: {})",
-                    frame, options_.keep_frames, *shared_->last_swapped));
+                    frame, options_.recent_frames, *shared_->last_swapped));
   }
   if (shared_->ended) {
     throw VizError(shared_->all_left

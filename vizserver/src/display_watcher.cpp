@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "command_line/printable.hpp"
+#include "message_read.hpp"
 
 namespace l2::viz {
 namespace {
@@ -27,24 +28,17 @@ Fd accept_within(const Fd& listener, std::chrono::milliseconds timeout) {
 }
 
 Listening read_listening(int fd, Clock::time_point deadline, const std::string& peer) {
-  std::array<std::uint8_t, kHeaderBytes + 12> buf{};
-  recv_all(fd, buf.data(), kHeaderBytes, deadline, peer);
-  const auto decoded =
-      decode_stream_header(std::span<const std::uint8_t, kHeaderBytes>(buf.data(), kHeaderBytes));
-  if (const auto* bad = std::get_if<std::string>(&decoded)) {
-    throw VizError(fmt::format("{}: {}", peer, *bad));
+  MessageHead head(Protocol::DisplayStream);
+  recv_header(fd, head, deadline, peer);
+  const Kind kind = head.header().kind;
+  if (kind == Kind::Error) {
+    throw VizError(fmt::format("{}: {}", peer, recv_error_text(fd, head, deadline, peer)));
   }
-  const StreamHeader h = std::get<StreamHeader>(decoded);
-  if (h.kind == StreamKind::Error) {
-    std::string text(h.payload_bytes, '\0');
-    recv_all(fd, reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer);
-    throw VizError(fmt::format("{}: {}", peer, printable(text)));
+  if (kind != Kind::Listening) {
+    throw VizError(fmt::format("{}: {} before LISTENING", peer, kind_name(kind)));
   }
-  if (h.kind != StreamKind::Listening) {
-    throw VizError(fmt::format("{}: {} before LISTENING", peer, kind_name(h.kind)));
-  }
-  recv_all(fd, buf.data() + kHeaderBytes, 12, deadline, peer);
-  return decode_listening(std::span<const std::uint8_t>(buf.data() + kHeaderBytes, 12));
+  recv_fixed(fd, head, deadline, peer);
+  return decode_listening(head.fixed());
 }
 
 DisplayWatcher::DisplayWatcher(Fd fd, std::string peer, std::uint32_t display_count,
@@ -144,8 +138,8 @@ void DisplayWatcher::read_stream() {
       std::unique_lock lock(mutex_);
       changed_.wait(lock, [&] { return held_.size() < max_held_ || stop_; });
     }
-    std::array<std::uint8_t, kHeaderBytes + 20> head{};
-    if (!read_exact(head.data(), kHeaderBytes, true, "message")) {
+    MessageHead head(Protocol::DisplayStream);
+    if (!read_exact(head.space().data(), kHeaderBytes, true, "message")) {
       if (stop_) return finish(fmt::format("{}: no longer watched", peer_), false);
       return finish(open ? fmt::format("{} closed the connection in the middle of frame {} ({} "
                                        "displays sent, no SHOWN)",
@@ -153,24 +147,25 @@ void DisplayWatcher::read_stream() {
                          : fmt::format("{} closed the connection", peer_),
                     false);
     }
-    const auto decoded = decode_stream_header(
-        std::span<const std::uint8_t, kHeaderBytes>(head.data(), kHeaderBytes));
-    if (const auto* bad = std::get_if<std::string>(&decoded)) {
-      throw VizError(fmt::format("{}: {}", peer_, *bad));
+    if (const Status header = head.received(kHeaderBytes); !header.ok()) {
+      throw VizError(fmt::format("{}: {}", peer_, header.reason()));
     }
-    const StreamHeader h = std::get<StreamHeader>(decoded);
-    const std::size_t fixed = fixed_bytes(h.kind);
-    if (!read_exact(head.data() + kHeaderBytes, fixed, false, kind_name(h.kind))) return;
-    const std::span<const std::uint8_t> fixed_part(head.data() + kHeaderBytes, fixed);
-    if (h.kind == StreamKind::Error) {
+    const Header h = head.header();
+    const std::size_t fixed = head.space().size();
+    if (!read_exact(head.space().data(), fixed, false, kind_name(h.kind))) return;
+    (void)head.received(fixed);
+    const std::span<const std::uint8_t> fixed_part = head.fixed();
+    if (h.kind == Kind::Error) {
       std::string text(h.payload_bytes, '\0');
       if (!read_exact(reinterpret_cast<std::uint8_t*>(text.data()), text.size(), false, "ERROR"))
         return;
       return finish(printable(text), true);
     }
-    if (h.kind == StreamKind::Display) {
+    if (h.kind == Kind::Display) {
       const DisplayHeader d = decode_display(fixed_part);
-      if (auto bad = validate(d, h.payload_bytes)) throw VizError(peer_ + ": " + *bad);
+      if (const Status display = validate(d, h.payload_bytes); !display.ok()) {
+        throw VizError(peer_ + ": " + display.reason());
+      }
       if (!open) {
         if (last_arrived_ && d.frame <= *last_arrived_) {
           throw VizError(
@@ -193,7 +188,7 @@ void DisplayWatcher::read_stream() {
       RgbImage image(static_cast<int>(d.width), static_cast<int>(d.height));
       if (!read_exact(image.data(), d.pixel_bytes(), false, "DISPLAY")) return;
       building.displays.push_back(std::move(image));
-    } else if (h.kind == StreamKind::Shown) {
+    } else if (h.kind == Kind::Shown) {
       const Shown s = decode_shown(fixed_part);
       if (!open || s.frame != building.frame || s.display_count != building.displays.size()) {
         throw VizError(fmt::format(

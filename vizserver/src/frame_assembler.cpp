@@ -8,135 +8,139 @@
 
 namespace l2::viz {
 
-FrameAssembler::FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int server_count,
+FrameAssembler::FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int pipeserver_count,
                                Rgb background, std::size_t max_buffered_bytes)
     : sizes_(std::move(display_sizes)),
       background_(background),
       max_buffered_bytes_(max_buffered_bytes) {
-  if (server_count < 1) throw std::invalid_argument("FrameAssembler: need at least 1 pipeserver");
+  if (pipeserver_count < 1)
+    throw std::invalid_argument("FrameAssembler: need at least 1 pipeserver");
   for (const auto& [w, h] : sizes_) {
     if (w < 1 || h < 1) throw std::invalid_argument(fmt::format("display size {}x{}", w, h));
   }
-  servers_.resize(static_cast<std::size_t>(server_count));
+  pipeservers_.resize(static_cast<std::size_t>(pipeserver_count));
 }
 
-std::string FrameAssembler::name(int server) const {
-  return fmt::format("pipeserver {}", server);
+std::string FrameAssembler::name(int pipeserver) const {
+  return fmt::format("pipeserver {}", pipeserver);
 }
 
-bool FrameAssembler::waits_for(const Server& s, std::uint32_t frame) const {
+bool FrameAssembler::waits_for(const Pipeserver& s, std::uint32_t frame) const {
   return !s.last_done || *s.last_done < frame;
 }
 
-std::optional<std::string> FrameAssembler::connect(int server) {
-  if (server < 0 || server >= server_count()) {
-    return fmt::format("pipeserver id {} is outside 0..{}", server, server_count() - 1);
+Status FrameAssembler::connect(int pipeserver) {
+  if (pipeserver < 0 || pipeserver >= pipeserver_count()) {
+    return Failure{
+        fmt::format("pipeserver id {} is outside 0..{}", pipeserver, pipeserver_count() - 1)};
   }
-  if (servers_[server].connected) return fmt::format("{} is already connected", name(server));
-  servers_[server].connected = true;
-  return std::nullopt;
+  if (pipeservers_[pipeserver].connected)
+    return Failure{fmt::format("{} is already connected", name(pipeserver))};
+  pipeservers_[pipeserver].connected = true;
+  return {};
 }
 
 // A frame another pipeserver starts cannot complete if a pipeserver it waits for has left.
-std::optional<std::string> FrameAssembler::check_new_frame(std::uint32_t frame) const {
-  for (int i = 0; i < server_count(); ++i) {
-    const Server& s = servers_[i];
+Status FrameAssembler::check_new_frame(std::uint32_t frame) const {
+  for (int i = 0; i < pipeserver_count(); ++i) {
+    const Pipeserver& s = pipeservers_[i];
     if (!s.closed || !waits_for(s, frame)) continue;
-    return s.last_done ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
+    return Failure{s.last_done
+                       ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
                                      frame, name(i), *s.last_done)
-                       : fmt::format(
-                             "frame {} can never complete: {} disconnected before "
-                             "finishing any frame",
-                             frame, name(i));
+                       : fmt::format("frame {} can never complete: {} disconnected before "
+                                     "finishing any frame",
+                                     frame, name(i))};
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::check_order(int server, std::uint32_t frame,
-                                                       const char* what) const {
-  const Server& s = servers_[server];
+Status FrameAssembler::check_order(int pipeserver, std::uint32_t frame, const char* what) const {
+  const Pipeserver& s = pipeservers_[pipeserver];
   if (s.last_done && frame <= *s.last_done) {
-    return fmt::format(
-        "{}: {} for frame {} after its FRAME_DONE for frame {} (frame numbers "
-        "must increase)",
-        name(server), what, frame, *s.last_done);
+    return Failure{
+        fmt::format("{}: {} for frame {} after its FRAME_DONE for frame {} (frame numbers "
+                    "must increase)",
+                    name(pipeserver), what, frame, *s.last_done)};
   }
   if (s.open_frame && frame != *s.open_frame) {
-    return fmt::format("{}: {} for frame {} while frame {} has no FRAME_DONE", name(server), what,
-                       frame, *s.open_frame);
+    return Failure{fmt::format("{}: {} for frame {} while frame {} has no FRAME_DONE",
+                               name(pipeserver), what, frame, *s.open_frame)};
   }
-  return std::nullopt;
+  return {};
 }
 
 FrameAssembler::Frame& FrameAssembler::frame_entry(std::uint32_t frame) {
   Frame& f = frames_[frame];
-  if (f.tiles.empty()) f.tiles.resize(servers_.size());
+  if (f.tiles.empty()) f.tiles.resize(pipeservers_.size());
   return f;
 }
 
-std::optional<std::string> FrameAssembler::add_tile(int server, ReceivedTile tile) {
+Status FrameAssembler::add_tile(int pipeserver, ReceivedTile tile) {
   const std::uint32_t number = tile.header.frame;
-  if (auto e = check_order(server, number, "TILE")) return e;
+  if (Status e = check_order(pipeserver, number, "TILE"); !e.ok()) return e;
   if (!frames_.contains(number)) {
-    if (auto e = check_new_frame(number)) return e;
+    if (Status e = check_new_frame(number); !e.ok()) return e;
   }
   if (buffered_bytes_ + tile.pixels.size() > max_buffered_bytes_) {
-    return fmt::format(
-        "{}: more than {} MiB of tiles buffered waiting for frame {} (is a "
-        "pipeserver behind?)",
-        name(server), max_buffered_bytes_ >> 20, frames_.begin()->first);
+    return Failure{
+        fmt::format("{}: more than {} MiB of tiles buffered waiting for frame {} (is a "
+                    "pipeserver behind?)",
+                    name(pipeserver), max_buffered_bytes_ >> 20, frames_.begin()->first)};
   }
   buffered_bytes_ += tile.pixels.size();
-  frame_entry(number).tiles[server].push_back(std::move(tile));
-  servers_[server].open_frame = number;
-  return std::nullopt;
+  frame_entry(number).tiles[pipeserver].push_back(std::move(tile));
+  pipeservers_[pipeserver].open_frame = number;
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::finish(int server, const FrameDone& done) {
-  if (done.server_id != static_cast<std::uint32_t>(server)) {
-    return fmt::format("{}: FRAME_DONE names pipeserver {}", name(server), done.server_id);
+Status FrameAssembler::finish(int pipeserver, const FrameDone& done) {
+  if (done.server_id != static_cast<std::uint32_t>(pipeserver)) {
+    return Failure{
+        fmt::format("{}: FRAME_DONE names pipeserver {}", name(pipeserver), done.server_id)};
   }
-  if (auto e = check_order(server, done.frame, "FRAME_DONE")) return e;
+  if (Status e = check_order(pipeserver, done.frame, "FRAME_DONE"); !e.ok()) return e;
   if (!frames_.contains(done.frame)) {
-    if (auto e = check_new_frame(done.frame)) return e;
+    if (Status e = check_new_frame(done.frame); !e.ok()) return e;
   }
-  const std::size_t arrived = frame_entry(done.frame).tiles[server].size();
+  const std::size_t arrived = frame_entry(done.frame).tiles[pipeserver].size();
   if (arrived != done.tile_count) {
-    return fmt::format("{}: FRAME_DONE for frame {} announces {} tiles, {} arrived", name(server),
-                       done.frame, done.tile_count, arrived);
+    return Failure{fmt::format("{}: FRAME_DONE for frame {} announces {} tiles, {} arrived",
+                               name(pipeserver), done.frame, done.tile_count, arrived)};
   }
-  servers_[server].last_done = done.frame;
-  servers_[server].open_frame.reset();
-  return std::nullopt;
+  pipeservers_[pipeserver].last_done = done.frame;
+  pipeservers_[pipeserver].open_frame.reset();
+  return {};
 }
 
-std::optional<std::string> FrameAssembler::disconnect(int server) {
-  Server& s = servers_[server];
+Status FrameAssembler::disconnect(int pipeserver) {
+  Pipeserver& s = pipeservers_[pipeserver];
   s.closed = true;
   if (s.open_frame) {
-    return fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
-                       name(server), *s.open_frame, frames_[*s.open_frame].tiles[server].size());
+    return Failure{fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
+                               name(pipeserver), *s.open_frame,
+                               frames_[*s.open_frame].tiles[pipeserver].size())};
   }
-  if (auto f = frame_waiting_for(server)) {
-    return s.last_done ? fmt::format("{} disconnected after frame {}; frame {} is waiting for it",
-                                     name(server), *s.last_done, *f)
-                       : fmt::format(
-                             "{} disconnected before finishing any frame; frame {} is "
-                             "waiting for it",
-                             name(server), *f);
+  if (auto f = frame_waiting_for(pipeserver)) {
+    return Failure{s.last_done
+                       ? fmt::format("{} disconnected after frame {}; frame {} is waiting for it",
+                                     name(pipeserver), *s.last_done, *f)
+                       : fmt::format("{} disconnected before finishing any frame; frame {} is "
+                                     "waiting for it",
+                                     name(pipeserver), *f)};
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int server) const {
+std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int pipeserver) const {
   for (const auto& entry : frames_) {
-    if (waits_for(servers_[server], entry.first)) return entry.first;
+    if (waits_for(pipeservers_[pipeserver], entry.first)) return entry.first;
   }
   return std::nullopt;
 }
 
 bool FrameAssembler::all_done() const {
-  for (const Server& s : servers_) {
+  for (const Pipeserver& s : pipeservers_) {
     if (!s.connected || !s.closed) return false;
   }
   return frames_.empty();
@@ -146,7 +150,7 @@ std::vector<ComposedFrame> FrameAssembler::take_complete() {
   std::vector<ComposedFrame> out;
   while (!frames_.empty()) {
     auto it = frames_.begin();
-    for (const Server& s : servers_) {
+    for (const Pipeserver& s : pipeservers_) {
       if (waits_for(s, it->first)) return out;
     }
     out.push_back(compose(it->first, it->second));

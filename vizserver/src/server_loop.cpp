@@ -117,7 +117,7 @@ std::size_t ServerLoop::count_strangers(Connection** oldest) const {
   std::size_t strangers = 0;
   *oldest = nullptr;
   for (const auto& c : conns_) {
-    if (c->dead || c->server >= 0) continue;
+    if (c->dead || c->pipeserver >= 0) continue;
     ++strangers;
     if (!*oldest || c->connected < (*oldest)->connected) *oldest = c.get();
   }
@@ -130,7 +130,7 @@ void ServerLoop::make_room_for_a_stranger() {
   // A burst of connections can arrive between a pipeserver's connect and our first look at
   // it: its HELLO may already be here, unread. Read before judging who said nothing.
   for (std::size_t i = 0; i < conns_.size() && !failure_; ++i) {
-    if (!conns_[i]->dead && conns_[i]->server < 0) read_some(*conns_[i]);
+    if (!conns_[i]->dead && conns_[i]->pipeserver < 0) read_some(*conns_[i]);
   }
   if (failure_ || count_strangers(&oldest) < kMaxStrangers) return;
   // Logged the first time and every 1000th, so that a flood cannot grow the log without bound.
@@ -144,29 +144,23 @@ void ServerLoop::make_room_for_a_stranger() {
 }
 
 std::string ServerLoop::who(const Connection& c) const {
-  return c.server >= 0 ? fmt::format("pipeserver {} ({})", c.server, c.peer)
-                       : fmt::format("connection from {}", c.peer);
+  return c.pipeserver >= 0 ? fmt::format("pipeserver {} ({})", c.pipeserver, c.peer)
+                           : fmt::format("connection from {}", c.peer);
 }
 
 void ServerLoop::read_some(Connection& c) {
   std::size_t budget = kReadBudget;
   while (!c.dead && budget > 0) {
-    std::uint8_t* dst;
-    std::size_t want;
-    if (c.head_got < c.head_need) {
-      dst = c.head.data() + c.head_got;
-      want = c.head_need - c.head_got;
-    } else {
-      dst = c.body.data() + c.body_got;
-      want = c.body.size() - c.body_got;
-    }
-    const ssize_t n = ::recv(c.fd.get(), dst, std::min(want, budget), 0);
+    const bool in_head = !c.head.complete();
+    const std::span<std::uint8_t> dst =
+        in_head ? c.head.space()
+                : std::span<std::uint8_t>(c.body.data() + c.body_got, c.body.size() - c.body_got);
+    const ssize_t n = ::recv(c.fd.get(), dst.data(), std::min(dst.size(), budget), 0);
     if (n == 0 || (n < 0 && errno == ECONNRESET)) {
-      close(c, c.header ? std::optional<std::string>(
-                              fmt::format("{} closed the connection in the middle of a {} "
-                                          "message",
-                                          who(c), kind_name(c.header->kind)))
-                        : std::nullopt);
+      close(c, c.head.has_header() ? std::optional<std::string>(fmt::format(
+                                         "{} closed the connection in the middle of a {} message",
+                                         who(c), kind_name(c.head.header().kind)))
+                                   : std::nullopt);
       return;
     }
     if (n < 0) {
@@ -177,8 +171,11 @@ void ServerLoop::read_some(Connection& c) {
     }
     c.last_activity = Clock::now();
     budget -= static_cast<std::size_t>(n);
-    if (c.head_got < c.head_need) {
-      c.head_got += static_cast<std::size_t>(n);
+    if (in_head) {
+      if (const Status header = c.head.received(static_cast<std::size_t>(n)); !header.ok()) {
+        close(c, fmt::format("{}: {}", who(c), header.reason()));
+        return;
+      }
     } else {
       c.body_got += static_cast<std::size_t>(n);
     }
@@ -188,38 +185,28 @@ void ServerLoop::read_some(Connection& c) {
 
 bool ServerLoop::advance(Connection& c) {
   for (;;) {
-    if (!c.header) {
-      if (c.head_got < kHeaderBytes) return true;
-      auto decoded =
-          decode_header(std::span<const std::uint8_t, kHeaderBytes>(c.head.data(), kHeaderBytes));
-      if (auto* bad = std::get_if<std::string>(&decoded)) {
-        close(c, fmt::format("{}: {}", who(c), *bad));
-        return false;
-      }
-      c.header = std::get<Header>(decoded);
-      // A peer that has not said HELLO may say HELLO or ERROR, nothing else: refused here,
-      // before a TILE's pixels (up to 48 MiB) are allocated for a stranger.
-      if (c.server < 0 && c.header->kind != Kind::Hello && c.header->kind != Kind::Error) {
-        close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(c.header->kind)));
-        return false;
-      }
-      c.head_need = kHeaderBytes + fixed_bytes(c.header->kind);
+    if (!c.head.has_header()) return true;
+    const Header& header = c.head.header();
+    // A peer that has not said HELLO may say HELLO or ERROR, nothing else: refused here,
+    // before a TILE's pixels (up to 48 MiB) are allocated for a stranger.
+    if (c.pipeserver < 0 && header.kind != Kind::Hello && header.kind != Kind::Error) {
+      close(c, fmt::format("{}: {} before HELLO", who(c), kind_name(header.kind)));
+      return false;
     }
-    if (c.head_got < c.head_need) return true;
+    if (!c.head.complete()) return true;
     if (!c.body_ready) {
       // The fixed part is in: size the variable part from it, checked before allocating.
-      const std::span<const std::uint8_t> fixed(c.head.data() + kHeaderBytes,
-                                                c.head_need - kHeaderBytes);
       std::size_t variable = 0;
-      if (c.header->kind == Kind::Tile || c.header->kind == Kind::TileExt) {
-        c.tile = c.header->kind == Kind::Tile ? decode_tile(fixed) : decode_tile_ext(fixed);
-        if (auto bad = validate(*c.tile, c.header->payload_bytes)) {
-          close(c, fmt::format("{}: {}", who(c), *bad));
+      if (header.kind == Kind::Tile || header.kind == Kind::TileExt) {
+        c.tile = header.kind == Kind::Tile ? decode_tile(c.head.fixed())
+                                           : decode_tile_ext(c.head.fixed());
+        if (const Status tile = validate(*c.tile, header.payload_bytes); !tile.ok()) {
+          close(c, fmt::format("{}: {}", who(c), tile.reason()));
           return false;
         }
         variable = c.tile->pixel_bytes();
-      } else if (c.header->kind == Kind::Error) {
-        variable = c.header->payload_bytes;
+      } else if (header.kind == Kind::Error) {
+        variable = header.payload_bytes;
       }
       c.body.resize(variable);
       c.body_got = 0;
@@ -228,68 +215,66 @@ bool ServerLoop::advance(Connection& c) {
     if (c.body_got < c.body.size()) return true;
     dispatch(c);
     if (c.dead) return false;
-    c.header.reset();
+    c.head.clear();
     c.tile.reset();
-    c.head_got = 0;
-    c.head_need = kHeaderBytes;
     c.body_ready = false;
     c.body.clear();  // a moved-from tile buffer is left empty; clear() keeps it valid
   }
 }
 
 void ServerLoop::dispatch(Connection& c) {
-  const Kind kind = c.header->kind;
-  const std::span<const std::uint8_t> fixed(c.head.data() + kHeaderBytes,
-                                            c.head_need - kHeaderBytes);
+  const Kind kind = c.head.header().kind;
+  const std::span<const std::uint8_t> fixed = c.head.fixed();
   if (kind == Kind::Hello) return on_hello(c);
   if (kind == Kind::Error) {
     const std::string_view text(reinterpret_cast<const char*>(c.body.data()), c.body.size());
     close(c, fmt::format("{} gave up: {}", who(c), printable(text)));
     return;
   }
-  std::optional<std::string> error;  // c said HELLO: advance() let nothing else through
+  Status taken;  // c said HELLO: advance() let nothing else through
   if (kind == Kind::Tile || kind == Kind::TileExt) {
-    error = assembler_.add_tile(c.server, ReceivedTile{*c.tile, std::move(c.body)});
+    taken = assembler_.add_tile(c.pipeserver, ReceivedTile{*c.tile, std::move(c.body)});
   } else if (kind == Kind::FrameDone) {
-    error = assembler_.finish(c.server, decode_frame_done(fixed));
+    taken = assembler_.finish(c.pipeserver, decode_frame_done(fixed));
   } else {
-    error = fmt::format("unexpected {} from a pipeserver", kind_name(kind));
+    taken = Failure{fmt::format("unexpected {} from a pipeserver", kind_name(kind))};
   }
-  if (error) close(c, fmt::format("{} ({})", *error, c.peer));
+  if (!taken.ok()) close(c, fmt::format("{} ({})", taken.reason(), c.peer));
 }
 
 void ServerLoop::on_hello(Connection& c) {
-  if (c.server >= 0) {
+  if (c.pipeserver >= 0) {
     close(c, fmt::format("{}: second HELLO", who(c)));
     return;
   }
-  const Hello hello = decode_hello(
-      std::span<const std::uint8_t>(c.head.data() + kHeaderBytes, fixed_bytes(Kind::Hello)));
-  std::optional<std::string> refusal;
+  const Hello hello = decode_hello(c.head.fixed());
+  Status refusal;
   // The token first: a stranger learns nothing about the run (ids, displays) without it.
   if (!same_token(hello.token, options_.token)) {
-    refusal = fmt::format("HELLO as pipeserver {} without this run's token", hello.server_id);
+    refusal =
+        Failure{fmt::format("HELLO as pipeserver {} without this run's token", hello.server_id)};
   } else if (hello.display_count != static_cast<std::uint32_t>(assembler_.display_count())) {
-    refusal = fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
-                          hello.server_id, hello.display_count, assembler_.display_count());
-  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.server_count())) {
-    refusal = fmt::format("pipeserver id {} is outside 0..{}", hello.server_id,
-                          assembler_.server_count() - 1);
+    refusal = Failure{
+        fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
+                    hello.server_id, hello.display_count, assembler_.display_count())};
+  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.pipeserver_count())) {
+    refusal = Failure{fmt::format("pipeserver id {} is outside 0..{}", hello.server_id,
+                                  assembler_.pipeserver_count() - 1)};
   } else {
     refusal = assembler_.connect(static_cast<int>(hello.server_id));
   }
-  if (refusal) {
+  if (!refusal.ok()) {
     // A stray or misconfigured peer is turned away with the reason; the run goes on.
-    const std::string line = fmt::format("{}: refused: {}", who(c), *refusal);
+    const std::string line = fmt::format("{}: refused: {}", who(c), refusal.reason());
     log_error(line);
-    send_error(c, *refusal);
+    send_error(c, refusal.reason());
     close(c, std::nullopt);
     return;
   }
-  c.server = static_cast<int>(hello.server_id);
+  c.pipeserver = static_cast<int>(hello.server_id);
   ++hellos_;
   const auto welcome = encode(Welcome{hello.server_id, hello.display_count,
-                                      static_cast<std::uint32_t>(assembler_.server_count())});
+                                      static_cast<std::uint32_t>(assembler_.pipeserver_count())});
   queue(c, welcome);
 }
 
@@ -329,12 +314,12 @@ void ServerLoop::send_error(Connection& c, const std::string& text) {
 void ServerLoop::close(Connection& c, const std::optional<std::string>& reason) {
   if (c.dead) return;
   // Record first, tell the peer second: whoever hears the ERROR can already read the record.
-  if (c.server >= 0) {
-    auto waiting = assembler_.disconnect(c.server);
+  if (c.pipeserver >= 0) {
+    const Status left = assembler_.disconnect(c.pipeserver);
     if (reason) {
       fail(*reason);
-    } else if (waiting) {
-      fail(fmt::format("{} ({})", *waiting, c.peer));
+    } else if (!left.ok()) {
+      fail(fmt::format("{} ({})", left.reason(), c.peer));
     }
   } else if (reason) {
     log_error(*reason);  // never said HELLO: not one of ours, the run goes on
@@ -376,32 +361,32 @@ void ServerLoop::publish_swaps() {
       std::lock_guard lock(shared_->mutex);
       shared_->counts += frame->counts;
       shared_->last_swapped = frame->frame;
-      shared_->kept.push_back(frame);
-      while (shared_->kept.size() > std::max<std::size_t>(options_.keep_frames, 1)) {
-        shared_->kept.pop_front();
+      shared_->recent.push_back(frame);
+      while (shared_->recent.size() > std::max<std::size_t>(options_.recent_frames, 1)) {
+        shared_->recent.pop_front();
       }
     }
     shared_->changed.notify_all();
     const auto ack = encode(Swapped{frame->frame});
     for (auto& c : conns_) {
-      if (!c->dead && c->server >= 0) queue(*c, ack);
+      if (!c->dead && c->pipeserver >= 0) queue(*c, ack);
     }
     if (on_swap_) on_swap_(frame);
   }
 }
 
 void ServerLoop::check_timers(Clock::time_point now) {
-  if (hellos_ < assembler_.server_count() && options_.accept_timeout.count() > 0 &&
+  if (hellos_ < assembler_.pipeserver_count() && options_.accept_timeout.count() > 0 &&
       now - started_ > options_.accept_timeout) {
     fail(fmt::format("only {} of {} pipeservers said HELLO within {:.1f} s (listening on {}:{})",
-                     hellos_, assembler_.server_count(), seconds(options_.accept_timeout),
+                     hellos_, assembler_.pipeserver_count(), seconds(options_.accept_timeout),
                      options_.host, port_));
     return;
   }
   for (auto& c : conns_) {
     // A peer that connects and never says HELLO would hold a slot forever: same limit, from
     // when it connected (a peer trickling bytes is active but says nothing).
-    if (!c->dead && c->server < 0 && options_.accept_timeout.count() > 0 &&
+    if (!c->dead && c->pipeserver < 0 && options_.accept_timeout.count() > 0 &&
         now - c->connected > options_.accept_timeout) {
       close(*c, fmt::format("{}: no complete HELLO within {:.1f} s", who(*c),
                             seconds(options_.accept_timeout)));
@@ -409,9 +394,9 @@ void ServerLoop::check_timers(Clock::time_point now) {
   }
   if (options_.stall_timeout.count() <= 0) return;
   for (auto& c : conns_) {
-    if (c->dead || c->server < 0) continue;
+    if (c->dead || c->pipeserver < 0) continue;
     if (stalled_mid_message(*c, now)) return;
-    const auto waiting = assembler_.frame_waiting_for(c->server);
+    const auto waiting = assembler_.frame_waiting_for(c->pipeserver);
     if (waiting != c->waiting_frame) {
       c->waiting_frame = waiting;
       c->waiting_since = now;
@@ -427,7 +412,7 @@ void ServerLoop::check_timers(Clock::time_point now) {
 }
 
 bool ServerLoop::stalled_mid_message(const Connection& c, Clock::time_point now) {
-  const bool mid_message = c.head_got > 0;
+  const bool mid_message = c.head.bytes_got() > 0;
   if (!mid_message || now - c.last_activity <= options_.stall_timeout) return false;
   fail(fmt::format("{} sent nothing for {:.1f} s in the middle of {}", who(c),
                    seconds(options_.stall_timeout), message_progress(c)));
@@ -437,10 +422,13 @@ bool ServerLoop::stalled_mid_message(const Connection& c, Clock::time_point now)
 // "a TILE message (frame 0, display 0, 4095x4095: 1000 of 50307075 bytes)": what it was
 // sending and how far it got.
 std::string ServerLoop::message_progress(const Connection& c) const {
-  if (!c.header) return fmt::format("a message header ({} of {} bytes)", c.head_got, kHeaderBytes);
-  const char* kind = kind_name(c.header->kind);
+  if (!c.head.has_header()) {
+    return fmt::format("a message header ({} of {} bytes)", c.head.bytes_got(), kHeaderBytes);
+  }
+  const char* kind = kind_name(c.head.header().kind);
   if (!c.body_ready) {
-    return fmt::format("a {} message ({} of {} bytes)", kind, c.head_got, c.head_need);
+    return fmt::format("a {} message ({} of {} bytes)", kind, c.head.bytes_got(),
+                       c.head.bytes_needed());
   }
   if (c.tile) {
     return fmt::format("a {} message (frame {}, display {}, {}x{}: {} of {} bytes)", kind,

@@ -23,7 +23,7 @@ namespace l2::viz {
 struct ServerShared {
   mutable std::mutex mutex;
   std::condition_variable changed;
-  std::deque<FramePtr> kept;  // the last keep_frames swapped frames
+  std::deque<FramePtr> recent;  // the last recent_frames swapped frames
   std::optional<std::uint32_t> last_swapped;
   std::optional<std::string> failure;
   std::vector<std::string> errors;  // the first kKeptErrors, and the failure
@@ -47,10 +47,8 @@ class ServerLoop {
   struct Connection {
     Fd fd;
     std::string peer;
-    int server = -1;  // pipeserver id once HELLO was accepted
-    std::array<std::uint8_t, kHeaderBytes + kMaxFixedBytes> head{};
-    std::size_t head_got = 0, head_need = kHeaderBytes;
-    std::optional<Header> header;
+    int pipeserver = -1;  // its id once HELLO was accepted
+    MessageHead head{Protocol::Tiles};
     std::optional<TileHeader> tile;
     std::vector<std::uint8_t> body;
     std::size_t body_got = 0;

@@ -82,41 +82,22 @@ std::string sockaddr_text(const sockaddr_storage& ss) {
 }
 
 // One non-blocking connect attempt, completed within the deadline. Returns the errno.
-int try_connect(const addrinfo* ai, Clock::time_point deadline, Fd& out) {
+Result<Fd> try_connect(const addrinfo* ai, Clock::time_point deadline) {
+  const auto failed = [](int error) { return Failure{err_text(error), error}; };
   Fd fd(::socket(ai->ai_family, ai->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, ai->ai_protocol));
-  if (!fd) return errno;
+  if (!fd) return failed(errno);
   if (::connect(fd.get(), ai->ai_addr, ai->ai_addrlen) != 0) {
-    if (errno != EINPROGRESS && errno != EINTR) return errno;
-    if (!wait_for(fd.get(), POLLOUT, deadline)) return ETIMEDOUT;
+    if (errno != EINPROGRESS && errno != EINTR) return failed(errno);
+    if (!wait_for(fd.get(), POLLOUT, deadline)) return failed(ETIMEDOUT);
     int so_error = 0;
     socklen_t len = sizeof so_error;
     ::getsockopt(fd.get(), SOL_SOCKET, SO_ERROR, &so_error, &len);
-    if (so_error != 0) return so_error;
+    if (so_error != 0) return failed(so_error);
   }
-  out = std::move(fd);
-  return 0;
-}
-
-}  // namespace
-
-Fd& Fd::operator=(Fd&& o) noexcept {
-  if (this != &o) {
-    reset();
-    fd_ = o.release();
-  }
-  return *this;
-}
-
-int Fd::release() {
-  const int fd = fd_;
-  fd_ = -1;
   return fd;
 }
 
-void Fd::reset() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
-}
+}  // namespace
 
 void set_nonblocking(int fd) {
   const int flags = ::fcntl(fd, F_GETFL, 0);
@@ -198,19 +179,19 @@ Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::millise
   const auto deadline = Clock::now() + timeout;
   const AddrInfoPtr addrs = resolve(host, port, false);
   for (;;) {
-    int last_errno = 0;
+    Failure last{err_text(0), 0};
     for (const addrinfo* ai = addrs.get(); ai; ai = ai->ai_next) {
-      Fd fd;
-      last_errno = try_connect(ai, deadline, fd);
-      if (last_errno == 0) {
-        set_nodelay(fd.get());
-        return fd;
+      Result<Fd> fd = try_connect(ai, deadline);
+      if (fd.ok()) {
+        set_nodelay(fd->get());
+        return std::move(fd).value();
       }
+      last = Failure{fd.reason(), fd.error()};
     }
     // Refused: the server is probably still starting. Anything else will not get better.
-    if (last_errno != ECONNREFUSED || Clock::now() >= deadline) {
+    if (last.error != ECONNREFUSED || Clock::now() >= deadline) {
       throw VizError(fmt::format("cannot connect to {} {}:{} within {} ms: {}", what, host, port,
-                                 timeout.count(), err_text(last_errno)));
+                                 timeout.count(), last.reason));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

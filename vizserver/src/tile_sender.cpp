@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "command_line/printable.hpp"
+#include "message_read.hpp"
 
 #include "vizserver/wire.hpp"
 
@@ -93,8 +93,9 @@ void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::
                      static_cast<std::uint32_t>(t.h),
                      t.how,
                      t.key};
-  if (auto bad = validate(h, static_cast<std::uint32_t>(h.fixed_size() + h.pixel_bytes()))) {
-    throw std::invalid_argument("send_tile: " + *bad);
+  if (const Status tile = validate(h, static_cast<std::uint32_t>(h.fixed_size() + h.pixel_bytes()));
+      !tile.ok()) {
+    throw std::invalid_argument("send_tile: " + tile.reason());
   }
   const auto head = encode(h);
   const auto head_ext = encode_ext(h);
@@ -127,29 +128,15 @@ void TileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds tim
 }
 
 void TileSender::read_message(Clock::time_point deadline, const char* waiting_for) {
-  std::uint8_t buf[kHeaderBytes + kMaxFixedBytes];
-  try {
-    recv_all(fd_.get(), buf, kHeaderBytes, deadline, peer_);
-  } catch (const ConnectionClosed& e) {
-    throw ConnectionClosed(fmt::format("{} (waiting for {})", e.what(), waiting_for));
-  } catch (const VizError& e) {
-    throw VizError(fmt::format("{} (waiting for {})", e.what(), waiting_for));
-  }
-  const auto decoded =
-      decode_header(std::span<const std::uint8_t, kHeaderBytes>(buf, kHeaderBytes));
-  if (const auto* bad = std::get_if<std::string>(&decoded)) {
-    throw VizError(fmt::format("{}: {}", peer_, *bad));
-  }
-  const Header header = std::get<Header>(decoded);
+  MessageHead head(Protocol::Tiles);
+  recv_header(fd_.get(), head, deadline, peer_, waiting_for);
+  const Header& header = head.header();
   if (header.kind == Kind::Error) {
-    std::string text(header.payload_bytes, '\0');
-    recv_all(fd_.get(), reinterpret_cast<std::uint8_t*>(text.data()), text.size(), deadline, peer_);
-    server_error_ = printable(text);
+    server_error_ = recv_error_text(fd_.get(), head, deadline, peer_);
     throw VizError(fmt::format("{}: {}", peer_, server_error_));
   }
-  const std::size_t fixed = fixed_bytes(header.kind);
-  recv_all(fd_.get(), buf + kHeaderBytes, fixed, deadline, peer_);
-  const std::span<const std::uint8_t> body(buf + kHeaderBytes, fixed);
+  recv_fixed(fd_.get(), head, deadline, peer_);
+  const std::span<const std::uint8_t> body = head.fixed();
   if (header.kind == Kind::Swapped) {
     last_swapped_ = decode_swapped(body).frame;
   } else if (header.kind == Kind::Welcome && !welcomed_) {

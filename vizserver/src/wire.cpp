@@ -11,26 +11,36 @@ constexpr std::size_t kMaxTilePayload =
     24 + std::size_t{kMaxTileSide} * kMaxTileSide * 3;  // about 48 MiB: one 4095x4095 tile
 constexpr std::size_t kMaxTileExtPayload =
     32 + std::size_t{kMaxTileSide} * kMaxTileSide * 6;  // a 4095x4095 DEPTH tile
+constexpr std::size_t kMaxDisplayPayload =
+    16 + std::size_t{kMaxDisplaySide} * kMaxDisplaySide * 3;  // 768 MiB: fits the u32 length
 
-template <std::size_t Fixed>
-std::array<std::uint8_t, kHeaderBytes + Fixed> start(Kind kind, std::size_t extra = 0) {
-  std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
-  put_message_header(out.data(), static_cast<std::uint16_t>(kind), Fixed + extra);
-  return out;
+bool of_protocol(std::uint16_t k, Protocol protocol) {
+  if (protocol == Protocol::Tiles) return k >= 1 && k <= 7;
+  return k == 6 || (k >= 16 && k <= 18);
 }
 
-bool known_kind(std::uint16_t k) {
-  return k >= 1 && k <= 7;
+// A refused kind, in the words each protocol's readers have always used.
+std::string foreign_kind(std::uint16_t k, Protocol protocol) {
+  if (protocol == Protocol::Tiles) return fmt::format("unknown message kind {}", k);
+  return fmt::format("message kind {} is not one of the display stream", k);
+}
+
+std::size_t max_payload(Kind kind) {
+  switch (kind) {
+    case Kind::Tile:
+      return kMaxTilePayload;
+    case Kind::TileExt:
+      return kMaxTileExtPayload;
+    case Kind::Display:
+      return kMaxDisplayPayload;
+    case Kind::Error:
+      return kMaxErrorText;
+    default:
+      return fixed_bytes(kind);
+  }
 }
 
 }  // namespace
-
-void put_message_header(std::uint8_t* p, std::uint16_t kind, std::size_t payload_bytes) {
-  put_u32(p, kMagic);
-  put_u16(p + 4, kVersion);
-  put_u16(p + 6, kind);
-  put_u32(p + 8, static_cast<std::uint32_t>(payload_bytes));
-}
 
 void put_u16(std::uint8_t* p, std::uint16_t v) {
   p[0] = static_cast<std::uint8_t>(v);
@@ -63,6 +73,12 @@ std::size_t fixed_bytes(Kind kind) {
       return 0;
     case Kind::TileExt:
       return 32;
+    case Kind::Listening:
+      return 12;
+    case Kind::Display:
+      return 16;
+    case Kind::Shown:
+      return 20;
   }
   return 0;
 }
@@ -83,12 +99,18 @@ const char* kind_name(Kind kind) {
       return "ERROR";
     case Kind::TileExt:
       return "TILE_EXT";
+    case Kind::Listening:
+      return "LISTENING";
+    case Kind::Display:
+      return "DISPLAY";
+    case Kind::Shown:
+      return "SHOWN";
   }
   return "?";
 }
 
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
-  auto out = start<24>(Kind::Hello);
+  auto out = message_start<24>(Kind::Hello);
   put_u32(out.data() + 12, m.server_id);
   put_u32(out.data() + 16, m.display_count);
   std::copy(m.token.begin(), m.token.end(), out.begin() + 20);
@@ -96,7 +118,7 @@ std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m) {
-  auto out = start<12>(Kind::Welcome);
+  auto out = message_start<12>(Kind::Welcome);
   put_u32(out.data() + 12, m.server_id);
   put_u32(out.data() + 16, m.display_count);
   put_u32(out.data() + 20, m.server_count);
@@ -104,7 +126,7 @@ std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m) {
-  auto out = start<24>(Kind::Tile, m.pixel_bytes());
+  auto out = message_start<24>(Kind::Tile, m.pixel_bytes());
   std::uint8_t* p = out.data() + 12;
   put_u32(p, m.frame);
   put_u32(p + 4, m.display);
@@ -116,7 +138,7 @@ std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
-  auto out = start<32>(Kind::TileExt, m.pixel_bytes());
+  auto out = message_start<32>(Kind::TileExt, m.pixel_bytes());
   const auto tile = encode(m);
   std::copy(tile.begin() + kHeaderBytes, tile.end(), out.begin() + kHeaderBytes);
   put_u32(out.data() + 12 + 24, static_cast<std::uint32_t>(m.how));
@@ -125,7 +147,7 @@ std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m) {
-  auto out = start<12>(Kind::FrameDone);
+  auto out = message_start<12>(Kind::FrameDone);
   put_u32(out.data() + 12, m.server_id);
   put_u32(out.data() + 16, m.frame);
   put_u32(out.data() + 20, m.tile_count);
@@ -133,38 +155,53 @@ std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 4> encode(const Swapped& m) {
-  auto out = start<4>(Kind::Swapped);
+  auto out = message_start<4>(Kind::Swapped);
   put_u32(out.data() + 12, m.frame);
   return out;
 }
 
 std::array<std::uint8_t, kHeaderBytes> encode_error_header(std::size_t text_bytes) {
-  return start<0>(Kind::Error, std::min(text_bytes, kMaxErrorText));
+  return message_start<0>(Kind::Error, std::min(text_bytes, kMaxErrorText));
 }
 
-std::variant<Header, std::string> decode_header(std::span<const std::uint8_t, kHeaderBytes> b) {
+Result<Header> decode_header(std::span<const std::uint8_t, kHeaderBytes> b, Protocol protocol) {
   const std::uint32_t magic = get_u32(b.data());
   if (magic != kMagic) {
-    return fmt::format("bad magic 0x{:08x}, expected 0x{:08x} (not a vizserver peer?)", magic,
-                       kMagic);
+    return Failure{
+        fmt::format("bad magic 0x{:08x}, expected 0x{:08x} ({})", magic, kMagic,
+                    protocol == Protocol::Tiles ? "not a vizserver peer?" : "not a vizserver?")};
   }
   const std::uint16_t version = get_u16(b.data() + 4);
   if (version != kVersion) {
-    return fmt::format("protocol version {}, this build speaks {}", version, kVersion);
+    return Failure{fmt::format("protocol version {}, this build speaks {}", version, kVersion)};
   }
   const std::uint16_t raw_kind = get_u16(b.data() + 6);
-  if (!known_kind(raw_kind)) return fmt::format("unknown message kind {}", raw_kind);
+  if (!of_protocol(raw_kind, protocol)) return Failure{foreign_kind(raw_kind, protocol)};
   const Header h{static_cast<Kind>(raw_kind), get_u32(b.data() + 8)};
   const std::size_t fixed = fixed_bytes(h.kind);
-  const std::size_t max = h.kind == Kind::Tile      ? kMaxTilePayload
-                          : h.kind == Kind::TileExt ? kMaxTileExtPayload
-                          : h.kind == Kind::Error   ? kMaxErrorText
-                                                    : fixed;
+  const std::size_t max = max_payload(h.kind);
   if (h.payload_bytes < fixed || h.payload_bytes > max) {
-    return fmt::format("{} payload of {} bytes, allowed {}..{}", kind_name(h.kind), h.payload_bytes,
-                       fixed, max);
+    return Failure{fmt::format("{} payload of {} bytes, allowed {}..{}", kind_name(h.kind),
+                               h.payload_bytes, fixed, max)};
   }
   return h;
+}
+
+Status MessageHead::received(std::size_t n) {
+  got_ += n;
+  if (header_ || got_ < kHeaderBytes) return {};
+  Result<Header> decoded = decode_header(
+      std::span<const std::uint8_t, kHeaderBytes>(bytes_.data(), kHeaderBytes), protocol_);
+  if (!decoded.ok()) return Failure{decoded.reason()};
+  header_ = *decoded;
+  need_ = kHeaderBytes + fixed_bytes(header_->kind);
+  return {};
+}
+
+void MessageHead::clear() {
+  got_ = 0;
+  need_ = kHeaderBytes;
+  header_.reset();
 }
 
 Hello decode_hello(std::span<const std::uint8_t> f) {
@@ -197,25 +234,26 @@ Swapped decode_swapped(std::span<const std::uint8_t> f) {
   return {get_u32(f.data())};
 }
 
-std::optional<std::string> validate(const TileHeader& t, std::uint32_t payload_bytes) {
+Status validate(const TileHeader& t, std::uint32_t payload_bytes) {
   if (t.w < 1 || t.w > kMaxTileSide || t.h < 1 || t.h > kMaxTileSide) {
-    return fmt::format("TILE of {}x{} pixels, each side must be 1..{}", t.w, t.h, kMaxTileSide);
+    return Failure{
+        fmt::format("TILE of {}x{} pixels, each side must be 1..{}", t.w, t.h, kMaxTileSide)};
   }
   const bool key = t.how == TileKind::Key, depth = t.how == TileKind::Depth;
   if (t.how != TileKind::Copy && !key && !depth) {
-    return fmt::format("TILE_EXT of kind {}, expected 1 (KEY) or 2 (DEPTH)",
-                       static_cast<std::uint32_t>(t.how));
+    return Failure{fmt::format("TILE_EXT of kind {}, expected 1 (KEY) or 2 (DEPTH)",
+                               static_cast<std::uint32_t>(t.how))};
   }
   if (t.key > 0xFFFFFF || (depth && t.key != 0)) {
-    return fmt::format("TILE_EXT {} with key {:x}, allowed {}", key ? "KEY" : "DEPTH", t.key,
-                       key ? "0..ffffff" : "0 only");
+    return Failure{fmt::format("TILE_EXT {} with key {:x}, allowed {}", key ? "KEY" : "DEPTH",
+                               t.key, key ? "0..ffffff" : "0 only")};
   }
   if (payload_bytes != t.fixed_size() + t.pixel_bytes()) {
-    return fmt::format("{} {}x{} needs a payload of {} bytes, header says {}",
-                       t.how == TileKind::Copy ? "TILE" : "TILE_EXT", t.w, t.h,
-                       t.fixed_size() + t.pixel_bytes(), payload_bytes);
+    return Failure{fmt::format("{} {}x{} needs a payload of {} bytes, header says {}",
+                               t.how == TileKind::Copy ? "TILE" : "TILE_EXT", t.w, t.h,
+                               t.fixed_size() + t.pixel_bytes(), payload_bytes)};
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace l2::viz

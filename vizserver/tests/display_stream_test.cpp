@@ -82,21 +82,23 @@ TEST(DisplayStreamWire, ListeningDisplayAndShownBytes) {
 TEST(DisplayStreamWire, RefusesOtherKindsAndImpossibleSizes) {
   auto header = encode(DisplayHeader{0, 0, 4, 4});
   put_u16(header.data() + 6, 3);  // a TILE of the pipeserver protocol
-  const auto tile = decode_stream_header(
-      std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes));
-  ASSERT_TRUE(std::holds_alternative<std::string>(tile));
-  EXPECT_EQ(std::get<std::string>(tile), "message kind 3 is not one of the display stream");
+  const auto tile =
+      decode_header(std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes),
+                    Protocol::DisplayStream);
+  ASSERT_FALSE(tile.ok());
+  EXPECT_EQ(tile.reason(), "message kind 3 is not one of the display stream");
   put_u16(header.data() + 6, 18);  // SHOWN claiming more than its fixed 20 bytes
   put_u32(header.data() + 8, 21);
-  const auto shown = decode_stream_header(
-      std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes));
-  ASSERT_TRUE(std::holds_alternative<std::string>(shown));
-  EXPECT_EQ(std::get<std::string>(shown), "SHOWN payload of 21 bytes, allowed 20..20");
-  EXPECT_EQ(validate(DisplayHeader{0, 0, 0, 4}, 16).value_or(""),
+  const auto shown =
+      decode_header(std::span<const std::uint8_t, kHeaderBytes>(header.data(), kHeaderBytes),
+                    Protocol::DisplayStream);
+  ASSERT_FALSE(shown.ok());
+  EXPECT_EQ(shown.reason(), "SHOWN payload of 21 bytes, allowed 20..20");
+  EXPECT_EQ(validate(DisplayHeader{0, 0, 0, 4}, 16).reason(),
             "DISPLAY of 0x4 pixels, each side must be 1..16384");
-  EXPECT_EQ(validate(DisplayHeader{0, 0, 2, 2}, 16 + 11).value_or(""),
+  EXPECT_EQ(validate(DisplayHeader{0, 0, 2, 2}, 16 + 11).reason(),
             "DISPLAY 2x2 needs a payload of 28 bytes, header says 27");
-  EXPECT_FALSE(validate(DisplayHeader{0, 0, 2, 2}, 28));
+  EXPECT_TRUE(validate(DisplayHeader{0, 0, 2, 2}, 28).ok());
 }
 
 TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {

@@ -22,18 +22,18 @@ class Assembler : public ::testing::Test {
  protected:
   FrameAssembler a{{{8, 4}, {4, 4}}, 2};
   void SetUp() override {
-    ASSERT_FALSE(a.connect(0));
-    ASSERT_FALSE(a.connect(1));
+    ASSERT_TRUE(a.connect(0).ok());
+    ASSERT_TRUE(a.connect(1).ok());
   }
 };
 
 TEST_F(Assembler, HigherPipeserverWinsWhateverTheArrivalOrder) {
   // Pipeserver 1's tile arrives first and is finished first; 0's arrives later over it.
-  ASSERT_FALSE(a.add_tile(1, solid(0, 0, 2, 0, 4, 2, kRed)));
-  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 1}));
+  ASSERT_TRUE(a.add_tile(1, solid(0, 0, 2, 0, 4, 2, kRed)).ok());
+  ASSERT_TRUE(a.finish(1, FrameDone{1, 0, 1}).ok());
   EXPECT_TRUE(a.take_complete().empty());  // 0 has not finished
-  ASSERT_FALSE(a.add_tile(0, solid(0, 0, 0, 0, 4, 4, kGreen)));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 1}));
+  ASSERT_TRUE(a.add_tile(0, solid(0, 0, 0, 0, 4, 4, kGreen)).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 1}).ok());
   const auto frames = a.take_complete();
   ASSERT_EQ(frames.size(), 1u);
   const RgbImage& d = frames[0].displays[0];
@@ -48,10 +48,10 @@ TEST_F(Assembler, HigherPipeserverWinsWhateverTheArrivalOrder) {
 }
 
 TEST_F(Assembler, WithinOnePipeserverTheLaterTileWins) {
-  ASSERT_FALSE(a.add_tile(0, solid(0, 1, 0, 0, 2, 2, kRed)));
-  ASSERT_FALSE(a.add_tile(0, solid(0, 1, 1, 1, 2, 2, kBlue)));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 2}));
-  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 0}));
+  ASSERT_TRUE(a.add_tile(0, solid(0, 1, 0, 0, 2, 2, kRed)).ok());
+  ASSERT_TRUE(a.add_tile(0, solid(0, 1, 1, 1, 2, 2, kBlue)).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 2}).ok());
+  ASSERT_TRUE(a.finish(1, FrameDone{1, 0, 0}).ok());
   const auto frames = a.take_complete();
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].displays[1].at(0, 0), kRed);
@@ -60,10 +60,10 @@ TEST_F(Assembler, WithinOnePipeserverTheLaterTileWins) {
 }
 
 TEST_F(Assembler, ClipsAndMissingDisplaysAreCountedPerFrame) {
-  ASSERT_FALSE(a.add_tile(0, solid(3, 1, 2, 3, 4, 2, kRed)));  // 2 of 4 columns, 1 of 2 rows
-  ASSERT_FALSE(a.add_tile(0, solid(3, 9, 0, 0, 1, 5, kRed)));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 3, 2}));
-  ASSERT_FALSE(a.finish(1, FrameDone{1, 3, 0}));
+  ASSERT_TRUE(a.add_tile(0, solid(3, 1, 2, 3, 4, 2, kRed)).ok());  // 2 of 4 columns, 1 of 2 rows
+  ASSERT_TRUE(a.add_tile(0, solid(3, 9, 0, 0, 1, 5, kRed)).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 3, 2}).ok());
+  ASSERT_TRUE(a.finish(1, FrameDone{1, 3, 0}).ok());
   const auto frames = a.take_complete();
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].frame, 3u);
@@ -74,10 +74,10 @@ TEST_F(Assembler, ClipsAndMissingDisplaysAreCountedPerFrame) {
 }
 
 TEST_F(Assembler, FramesCompleteInOrderAndASkippedNumberMeansNoTiles) {
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
-  ASSERT_FALSE(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 1, 1}));
-  ASSERT_FALSE(a.finish(1, FrameDone{1, 1, 0}));  // 1 skipped frame 0
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 0}).ok());
+  ASSERT_TRUE(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 1, 1}).ok());
+  ASSERT_TRUE(a.finish(1, FrameDone{1, 1, 0}).ok());  // 1 skipped frame 0
   const auto frames = a.take_complete();
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_EQ(frames[0].frame, 0u);
@@ -87,56 +87,56 @@ TEST_F(Assembler, FramesCompleteInOrderAndASkippedNumberMeansNoTiles) {
 }
 
 TEST_F(Assembler, ProtocolViolationsAreNamed) {
-  EXPECT_THAT(a.finish(0, FrameDone{0, 0, 2}).value_or(""),
+  EXPECT_THAT(a.finish(0, FrameDone{0, 0, 2}).reason(),
               HasSubstr("pipeserver 0: FRAME_DONE for frame 0 announces 2 tiles, 0 arrived"));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 5, 0}));
-  EXPECT_THAT(a.add_tile(0, solid(4, 0, 0, 0, 1, 1, kRed)).value_or(""),
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 5, 0}).ok());
+  EXPECT_THAT(a.add_tile(0, solid(4, 0, 0, 0, 1, 1, kRed)).reason(),
               HasSubstr("pipeserver 0: TILE for frame 4 after its FRAME_DONE for frame 5"));
-  ASSERT_FALSE(a.add_tile(1, solid(6, 0, 0, 0, 1, 1, kRed)));
-  EXPECT_THAT(a.add_tile(1, solid(7, 0, 0, 0, 1, 1, kRed)).value_or(""),
+  ASSERT_TRUE(a.add_tile(1, solid(6, 0, 0, 0, 1, 1, kRed)).ok());
+  EXPECT_THAT(a.add_tile(1, solid(7, 0, 0, 0, 1, 1, kRed)).reason(),
               HasSubstr("pipeserver 1: TILE for frame 7 while frame 6 has no FRAME_DONE"));
-  EXPECT_THAT(a.finish(1, FrameDone{0, 6, 1}).value_or(""),
+  EXPECT_THAT(a.finish(1, FrameDone{0, 6, 1}).reason(),
               HasSubstr("pipeserver 1: FRAME_DONE names pipeserver 0"));
-  EXPECT_THAT(a.connect(1).value_or(""), HasSubstr("pipeserver 1 is already connected"));
-  EXPECT_THAT(a.connect(2).value_or(""), HasSubstr("outside 0..1"));
+  EXPECT_THAT(a.connect(1).reason(), HasSubstr("pipeserver 1 is already connected"));
+  EXPECT_THAT(a.connect(2).reason(), HasSubstr("outside 0..1"));
 }
 
 TEST_F(Assembler, DisconnectDuringAFrameNamesServerAndFrame) {
-  ASSERT_FALSE(a.add_tile(1, solid(2, 0, 0, 0, 1, 1, kRed)));
+  ASSERT_TRUE(a.add_tile(1, solid(2, 0, 0, 0, 1, 1, kRed)).ok());
   EXPECT_EQ(a.frame_waiting_for(0), 2u);
-  EXPECT_EQ(a.disconnect(1).value_or(""),
+  EXPECT_EQ(a.disconnect(1).reason(),
             "pipeserver 1 disconnected during frame 2 (1 tiles received, no FRAME_DONE)");
 }
 
 TEST_F(Assembler, DisconnectBetweenFramesFailsOnlyWhenAFrameNeedsIt) {
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
-  ASSERT_FALSE(a.finish(1, FrameDone{1, 0, 0}));
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 0}).ok());
+  ASSERT_TRUE(a.finish(1, FrameDone{1, 0, 0}).ok());
   EXPECT_EQ(a.take_complete().size(), 1u);
-  EXPECT_FALSE(a.disconnect(1));
-  EXPECT_THAT(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)).value_or(""),
+  EXPECT_TRUE(a.disconnect(1).ok());
+  EXPECT_THAT(a.add_tile(0, solid(1, 0, 0, 0, 1, 1, kRed)).reason(),
               HasSubstr("frame 1 can never complete: pipeserver 1 disconnected after frame 0"));
-  EXPECT_FALSE(a.disconnect(0));
+  EXPECT_TRUE(a.disconnect(0).ok());
   EXPECT_TRUE(a.all_done());
 }
 
 TEST_F(Assembler, DisconnectWhileAnotherFrameWaitsIsAnError) {
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
-  EXPECT_EQ(a.disconnect(1).value_or(""),
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 0}).ok());
+  EXPECT_EQ(a.disconnect(1).reason(),
             "pipeserver 1 disconnected before finishing any frame; frame 0 is waiting for it");
 }
 
 TEST(AssemblerLimits, BufferedBytesAreBounded) {
   FrameAssembler a({{8, 8}}, 2, {}, 100);
-  ASSERT_FALSE(a.connect(0));
-  ASSERT_FALSE(a.add_tile(0, solid(0, 0, 0, 0, 5, 5, kRed)));  // 75 bytes
-  EXPECT_THAT(a.add_tile(0, solid(0, 0, 0, 0, 3, 3, kRed)).value_or(""),
+  ASSERT_TRUE(a.connect(0).ok());
+  ASSERT_TRUE(a.add_tile(0, solid(0, 0, 0, 0, 5, 5, kRed)).ok());  // 75 bytes
+  EXPECT_THAT(a.add_tile(0, solid(0, 0, 0, 0, 3, 3, kRed)).reason(),
               HasSubstr("tiles buffered waiting for frame 0"));
 }
 
 TEST(AssemblerLimits, BackgroundColourFillsUnwrittenPixels) {
   FrameAssembler a({{2, 2}}, 1, Rgb{1, 2, 3});
-  ASSERT_FALSE(a.connect(0));
-  ASSERT_FALSE(a.finish(0, FrameDone{0, 0, 0}));
+  ASSERT_TRUE(a.connect(0).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 0}).ok());
   const auto frames = a.take_complete();
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].displays[0], RgbImage(2, 2, Rgb{1, 2, 3}));

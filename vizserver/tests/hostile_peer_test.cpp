@@ -21,6 +21,7 @@ namespace l2::viz {
 namespace {
 
 using namespace std::chrono_literals;
+using testing::first_reply;
 using ::testing::HasSubstr;
 using testing::read_until_closed;
 using testing::send_bytes;
@@ -32,17 +33,6 @@ ServerOptions one_display(int servers) {
   o.accept_timeout = 5000ms;
   o.stall_timeout = 5000ms;
   return o;
-}
-
-// The first message the server sends on `fd`: its kind, and its text if it is an ERROR.
-std::pair<Kind, std::string> first_reply(int fd) {
-  std::uint8_t head[kHeaderBytes];
-  recv_all(fd, head, kHeaderBytes, Clock::now() + 3000ms, "server");
-  const auto h = std::get<Header>(decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)));
-  std::string body(h.payload_bytes, '\0');
-  recv_all(fd, reinterpret_cast<std::uint8_t*>(body.data()), body.size(), Clock::now() + 3000ms,
-           "server");
-  return {h.kind, h.kind == Kind::Error ? body : std::string()};
 }
 
 TEST(VizServerHostile, ABurstOfStrangersDoesNotEvictAPipeserverWhoseHelloArrived) {

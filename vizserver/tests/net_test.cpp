@@ -22,6 +22,7 @@ namespace l2::viz {
 namespace {
 
 using namespace std::chrono_literals;
+using testing::first_reply;
 using ::testing::HasSubstr;
 using testing::read_until_closed;
 using testing::send_bytes;
@@ -222,13 +223,8 @@ TEST(VizServerNet, BadMagicClosesOnlyThatConnectionAndNamesThePeer) {
   const std::string junk = "GET / HTTP/1.1\r\n\r\n";
   const iovec part{const_cast<char*>(junk.data()), junk.size()};
   send_all(raw.get(), std::span(&part, 1), Clock::now() + 1000ms, "server");
-  std::uint8_t head[kHeaderBytes];
-  recv_all(raw.get(), head, kHeaderBytes, Clock::now() + 2000ms, "server");
-  const auto h = std::get<Header>(decode_header(std::span<const std::uint8_t, kHeaderBytes>(head)));
-  ASSERT_EQ(h.kind, Kind::Error);
-  std::string text(h.payload_bytes, '\0');
-  recv_all(raw.get(), reinterpret_cast<std::uint8_t*>(text.data()), text.size(),
-           Clock::now() + 2000ms, "server");
+  const auto [kind, text] = first_reply(raw.get());
+  ASSERT_EQ(kind, Kind::Error);
   const std::string expected =
       fmt::format("connection from 127.0.0.1:{}: bad magic 0x20544547", my_port);
   EXPECT_THAT(text, HasSubstr(expected));

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 #include "image/png_io.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
@@ -20,8 +20,18 @@ namespace l2::viz {
 namespace {
 
 using namespace std::chrono_literals;
-using testing::ChildProcess;
 using ::testing::HasSubstr;
+
+// A program with its stdout on a pipe, read line by line.
+ChildProcess spawn(std::vector<std::string> argv) {
+  return ChildProcess(std::move(argv), {}, Capture{true, false});
+}
+
+// What a shell's $? would show once it ends, nullopt while it still runs after `timeout`.
+std::optional<int> exit_of(ChildProcess& child, std::chrono::milliseconds timeout) {
+  const auto status = child.wait_for(timeout);
+  return status ? std::optional<int>(status->shell_code()) : std::nullopt;
+}
 
 ServerOptions options(std::vector<std::pair<int, int>> sizes, int servers) {
   ServerOptions o;
@@ -52,10 +62,10 @@ TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
   CompositingServer server(options({{16, 16}}, 2));
   server.start();
   auto s0 = TileSender::connect("127.0.0.1", server.port(), 0, 1);
-  ChildProcess child(client(server.port(), 1, 1, 0, {"--hang", "0,0,0,4,4,ff0000"}));
-  ASSERT_EQ(child.read_line(5000ms), "sent");
-  child.kill(SIGKILL);
-  ASSERT_EQ(child.wait(2000ms), 128 + SIGKILL);
+  ChildProcess child = spawn(client(server.port(), 1, 1, 0, {"--hang", "0,0,0,4,4,ff0000"}));
+  ASSERT_EQ(child.read_line(Stream::Out, 5000ms), "sent");
+  child.signal(SIGKILL);
+  ASSERT_EQ(exit_of(child, 2000ms), 128 + SIGKILL);
   const auto t0 = Clock::now();
   try {
     server.wait_frame(0, 5000ms);
@@ -77,12 +87,12 @@ TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
 TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
   CompositingServer server(options({{8, 4}, {4, 4}}, 2));
   server.start();
-  ChildProcess c0(client(server.port(), 0, 2, 7, {"0,0,0,6,4,102030", "1,0,0,4,4,405060"}));
-  ChildProcess c1(client(server.port(), 1, 2, 7, {"0,4,0,4,2,708090"}));
-  EXPECT_EQ(c0.read_line(5000ms), "swapped 7");
-  EXPECT_EQ(c1.read_line(5000ms), "swapped 7");
-  EXPECT_EQ(c0.wait(2000ms), 0);
-  EXPECT_EQ(c1.wait(2000ms), 0);
+  ChildProcess c0 = spawn(client(server.port(), 0, 2, 7, {"0,0,0,6,4,102030", "1,0,0,4,4,405060"}));
+  ChildProcess c1 = spawn(client(server.port(), 1, 2, 7, {"0,4,0,4,2,708090"}));
+  EXPECT_EQ(c0.read_line(Stream::Out, 5000ms), "swapped 7");
+  EXPECT_EQ(c1.read_line(Stream::Out, 5000ms), "swapped 7");
+  EXPECT_EQ(exit_of(c0, 2000ms), 0);
+  EXPECT_EQ(exit_of(c1, 2000ms), 0);
   const FramePtr f = server.wait_frame(7, 1000ms);
   RgbImage want0(8, 4), want1(4, 4, Rgb{0x40, 0x50, 0x60});
   want0.fill_rect(0, 0, 6, 4, Rgb{0x10, 0x20, 0x30});
@@ -93,9 +103,9 @@ TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
 
 TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   const auto dir = fresh_dir("exe");
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--viz-port", "0",
-                    "--frames", "1", "--out", dir.string()});
-  const auto line = exe.read_line(5000ms).value_or("");
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--viz-port",
+                            "0", "--frames", "1", "--out", dir.string()});
+  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
   auto s = TileSender::connect("127.0.0.1", port, 0, 2);
@@ -114,9 +124,9 @@ TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   s.send_tile(0, {1, 0, 0, 8, 8}, grey.data(), 24);
   s.finish_frame(0, 2);
   s.wait_swapped(0, 5000ms);
-  EXPECT_EQ(exe.read_line(5000ms),
+  EXPECT_EQ(exe.read_line(Stream::Out, 5000ms),
             "swapped frame 0: 2 tiles, 0 clipped rows, 0 rows for missing displays");
-  EXPECT_EQ(exe.wait(5000ms), 0);
+  EXPECT_EQ(exit_of(exe, 5000ms), 0);
   RgbImage want0(16, 8);
   for (int r = 0; r < 2; ++r) {
     for (int c = 0; c < 3; ++c) {
@@ -131,15 +141,15 @@ TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
 
 TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
   const auto dir = fresh_dir("dies");
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x8", "--servers", "1", "--frames", "1", "--out",
-                    dir.string()});
-  const auto line = exe.read_line(5000ms).value_or("");
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x8", "--servers", "1", "--frames", "1",
+                            "--out", dir.string()});
+  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
-  ChildProcess pipeserver(client(port, 0, 1, 0, {"--hang", "0,0,0,2,2,ffffff"}));
-  ASSERT_EQ(pipeserver.read_line(5000ms), "sent");
-  pipeserver.kill(SIGKILL);
-  EXPECT_EQ(exe.wait(3000ms), 1);
+  ChildProcess pipeserver = spawn(client(port, 0, 1, 0, {"--hang", "0,0,0,2,2,ffffff"}));
+  ASSERT_EQ(pipeserver.read_line(Stream::Out, 5000ms), "sent");
+  pipeserver.signal(SIGKILL);
+  EXPECT_EQ(exit_of(exe, 3000ms), 1);
   EXPECT_FALSE(std::filesystem::exists(dir / "display-0-frame-0.png"));
   std::filesystem::remove_all(dir);
 }
@@ -149,9 +159,10 @@ TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
 TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
   const auto dir = fresh_dir("stream");
   const Fd listener = listen_tcp("127.0.0.1", 0);
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--frames", "2",
-                    "--display-stream", fmt::format("127.0.0.1:{}", local_port(listener.get())),
-                    "--log", (dir / "log.txt").string()});
+  ChildProcess exe =
+      spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--frames", "2",
+             "--display-stream", fmt::format("127.0.0.1:{}", local_port(listener.get())), "--log",
+             (dir / "log.txt").string()});
   Fd stream = accept_within(listener, 5000ms);
   ASSERT_TRUE(stream);
   const Listening l = read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
@@ -172,8 +183,8 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
                        static_cast<std::uint8_t>(0x40 + k)});
     EXPECT_EQ(f->displays.at(0), want) << "frame " << k;
   }
-  EXPECT_EQ(exe.wait(5000ms), 0);
-  EXPECT_EQ(exe.read_line(100ms), std::nullopt) << "lines go to --log, not stdout";
+  EXPECT_EQ(exit_of(exe, 5000ms), 0);
+  EXPECT_EQ(exe.read_line(Stream::Out, 100ms), std::nullopt) << "lines go to --log, not stdout";
   std::ifstream log(dir / "log.txt");
   std::string first;
   std::getline(log, first);
@@ -184,9 +195,9 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
 TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
   const Fd taken = listen_tcp("127.0.0.1", 0);
   const Fd listener = listen_tcp("127.0.0.1", 0);
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--viz-port",
-                    std::to_string(local_port(taken.get())), "--display-stream",
-                    fmt::format("127.0.0.1:{}", local_port(listener.get()))});
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--viz-port",
+                            std::to_string(local_port(taken.get())), "--display-stream",
+                            fmt::format("127.0.0.1:{}", local_port(listener.get()))});
   Fd stream = accept_within(listener, 5000ms);
   ASSERT_TRUE(stream);
   try {
@@ -196,18 +207,19 @@ TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
     EXPECT_THAT(e.what(), HasSubstr(fmt::format("vizserver: cannot listen on 127.0.0.1:{}: ",
                                                 local_port(taken.get()))));
   }
-  EXPECT_EQ(exe.wait(5000ms), 1);
+  EXPECT_EQ(exit_of(exe, 5000ms), 1);
 }
 
 TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
   Fd listener = listen_tcp("127.0.0.1", 0);
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--display-stream",
-                    fmt::format("127.0.0.1:{}", local_port(listener.get()))});
+  ChildProcess exe =
+      spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--display-stream",
+             fmt::format("127.0.0.1:{}", local_port(listener.get()))});
   Fd stream = accept_within(listener, 5000ms);
   ASSERT_TRUE(stream);
   read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
   stream.reset();  // l2wall died: no one is left to compose for
-  EXPECT_EQ(exe.wait(3000ms), 1);
+  EXPECT_EQ(exit_of(exe, 3000ms), 1);
 }
 
 // How l2wall starts it: the run's token in its environment. A HELLO without the token is
@@ -216,10 +228,10 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   const auto dir = fresh_dir("token");
   const RunToken token = new_run_token();
   ::setenv(kTokenVariable, token_text(token).c_str(), 1);
-  ChildProcess exe({VIZSERVER_EXE, "--displays", "4x4", "--servers", "1", "--frames", "1", "--out",
-                    dir.string()});
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "4x4", "--servers", "1", "--frames", "1",
+                            "--out", dir.string()});
   ::unsetenv(kTokenVariable);
-  const auto line = exe.read_line(5000ms).value_or("");
+  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
   EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1), VizError);
@@ -228,33 +240,34 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   auto s = TileSender::connect("127.0.0.1", port, 0, 1, with_token);
   s.finish_frame(0, 0);
   s.wait_swapped(0, 5000ms);
-  EXPECT_EQ(exe.wait(5000ms), 0);
+  EXPECT_EQ(exit_of(exe, 5000ms), 0);
   std::filesystem::remove_all(dir);
 }
 
 TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
-  ChildProcess help({VIZSERVER_EXE, "--help"});
+  ChildProcess help = spawn({VIZSERVER_EXE, "--help"});
   std::string text;
-  while (auto l = help.read_line(5000ms)) text += *l + "\n";
-  EXPECT_EQ(help.wait(5000ms), 0);
+  while (auto l = help.read_line(Stream::Out, 5000ms)) text += *l + "\n";
+  EXPECT_EQ(exit_of(help, 5000ms), 0);
   for (const char* opt :
        {"--displays", "--servers", "--viz-port", "--viz-host", "--frames", "--out",
         "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
     EXPECT_THAT(text, HasSubstr(opt));
   }
-  ChildProcess bad({VIZSERVER_EXE, "--displays", "16y8", "--servers", "1", "--out", "/tmp/x"});
-  EXPECT_EQ(bad.wait(5000ms), 2);
-  ChildProcess nowhere({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1"});
-  EXPECT_EQ(nowhere.wait(5000ms), 2);  // neither --out nor --display-stream
-  ChildProcess bad_stream(
+  ChildProcess bad =
+      spawn({VIZSERVER_EXE, "--displays", "16y8", "--servers", "1", "--out", "/tmp/x"});
+  EXPECT_EQ(exit_of(bad, 5000ms), 2);
+  ChildProcess nowhere = spawn({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1"});
+  EXPECT_EQ(exit_of(nowhere, 5000ms), 2);  // neither --out nor --display-stream
+  ChildProcess bad_stream = spawn(
       {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--display-stream", "localhost"});
-  EXPECT_EQ(bad_stream.wait(5000ms), 2);
+  EXPECT_EQ(exit_of(bad_stream, 5000ms), 2);
   // An --out folder that cannot be made ends the run before it listens (it failed only at the
   // first swap, after the pipeservers had connected).
-  ChildProcess bad_out(
-      {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--out", "/etc/passwd/frames"});
-  EXPECT_EQ(bad_out.read_line(5000ms), std::nullopt);  // no "listening on" line
-  EXPECT_EQ(bad_out.wait(5000ms), 1);
+  ChildProcess bad_out =
+      spawn({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--out", "/etc/passwd/frames"});
+  EXPECT_EQ(bad_out.read_line(Stream::Out, 5000ms), std::nullopt);  // no "listening on" line
+  EXPECT_EQ(exit_of(bad_out, 5000ms), 1);
 }
 
 }  // namespace

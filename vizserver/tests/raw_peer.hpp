@@ -9,8 +9,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
 
 #include "vizserver/socket.hpp"
+#include "vizserver/wire.hpp"
 
 namespace l2::viz::testing {
 
@@ -28,6 +32,19 @@ inline std::optional<std::string> read_until_closed(int fd, std::chrono::millise
     got.append(buf, static_cast<std::size_t>(n));
   }
   return std::nullopt;
+}
+
+// The first message the server sends on `fd`: its kind, and its text if it is an ERROR (the
+// rest of its payload otherwise).
+inline std::pair<Kind, std::string> first_reply(int fd) {
+  const auto deadline = Clock::now() + std::chrono::milliseconds(3000);
+  MessageHead head(Protocol::Tiles);
+  recv_all(fd, head.space().data(), kHeaderBytes, deadline, "server");
+  EXPECT_TRUE(head.received(kHeaderBytes).ok());
+  if (!head.has_header()) return {};
+  std::string body(head.header().payload_bytes, '\0');
+  recv_all(fd, reinterpret_cast<std::uint8_t*>(body.data()), body.size(), deadline, "server");
+  return {head.header().kind, head.header().kind == Kind::Error ? body : std::string()};
 }
 
 inline void send_bytes(int fd, std::span<const std::uint8_t> bytes) {

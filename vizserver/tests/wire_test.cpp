@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace l2::viz {
@@ -31,9 +32,9 @@ TEST(Wire, TileHeaderRoundTripsIncludingNegativeOffsets) {
   const TileHeader t{7, 2, -5, 1200, 640, 3};
   const auto bytes = encode(t);
   const auto h = decode_header(head_of(bytes.data()));
-  ASSERT_TRUE(std::holds_alternative<Header>(h));
-  EXPECT_EQ(std::get<Header>(h).kind, Kind::Tile);
-  EXPECT_EQ(std::get<Header>(h).payload_bytes, 24u + 640u * 3u * 3u);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(h->kind, Kind::Tile);
+  EXPECT_EQ(h->payload_bytes, 24u + 640u * 3u * 3u);
   const TileHeader back = decode_tile(std::span(bytes).subspan(kHeaderBytes));
   EXPECT_EQ(back.frame, 7u);
   EXPECT_EQ(back.display, 2u);
@@ -55,27 +56,27 @@ TEST(Wire, TileExtCarriesKindAndKeyAfterTheTileFields) {
   EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin() + 36, bytes.end()),
             (std::vector<std::uint8_t>{1, 0, 0, 0, 0x01, 0xFF, 0x00, 0x00}));
   const auto h = decode_header(head_of(bytes.data()));
-  ASSERT_TRUE(std::holds_alternative<Header>(h));
-  EXPECT_EQ(std::get<Header>(h).kind, Kind::TileExt);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(h->kind, Kind::TileExt);
   const TileHeader back = decode_tile_ext(std::span(bytes).subspan(kHeaderBytes));
   EXPECT_EQ(back.how, TileKind::Key);
   EXPECT_EQ(back.key, 0x00FF01u);
   EXPECT_EQ(back.dy, 4);
-  EXPECT_FALSE(validate(back, 62).has_value());
+  EXPECT_TRUE(validate(back, 62).ok());
   // A DEPTH tile's rows are colour then depth: twice the bytes.
   const TileHeader depth{0, 0, 0, 0, 2, 5, TileKind::Depth, 0};
   EXPECT_EQ(depth.pixel_bytes(), 60u);
-  EXPECT_FALSE(validate(depth, 92).has_value());
-  EXPECT_EQ(validate(depth, 62).value_or(""),
+  EXPECT_TRUE(validate(depth, 92).ok());
+  EXPECT_EQ(validate(depth, 62).reason(),
             "TILE_EXT 2x5 needs a payload of 92 bytes, header says 62");
 }
 
 TEST(Wire, TileExtOfAnotherKindOrWithABadKeyIsRefused) {
-  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind{3}, 0}, 35).value_or(""),
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind{3}, 0}, 35).reason(),
             "TILE_EXT of kind 3, expected 1 (KEY) or 2 (DEPTH)");
-  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Depth, 5}, 38).value_or(""),
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Depth, 5}, 38).reason(),
             "TILE_EXT DEPTH with key 5, allowed 0 only");
-  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Key, 0x1000000}, 35).value_or(""),
+  EXPECT_EQ(validate(TileHeader{0, 0, 0, 0, 1, 1, TileKind::Key, 0x1000000}, 35).reason(),
             "TILE_EXT KEY with key 1000000, allowed 0..ffffff");
 }
 
@@ -96,43 +97,69 @@ TEST(Wire, BadMagicIsNamed) {
   const std::uint8_t http[kHeaderBytes] = {'G', 'E', 'T', ' ', '/', ' ',
                                            'H', 'T', 'T', 'P', '/', '1'};
   const auto h = decode_header(head_of(http));
-  ASSERT_TRUE(std::holds_alternative<std::string>(h));
-  EXPECT_THAT(std::get<std::string>(h), HasSubstr("bad magic 0x20544547"));
+  ASSERT_FALSE(h.ok());
+  EXPECT_EQ(h.reason(), "bad magic 0x20544547, expected 0x5a56324c (not a vizserver peer?)");
 }
 
 TEST(Wire, WrongVersionAndUnknownKindAreRefused) {
   auto bytes = encode(Swapped{1});
   bytes[4] = 1;  // a build from before HELLO carried the run token
-  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
+  EXPECT_THAT(decode_header(head_of(bytes.data())).reason(),
               HasSubstr("protocol version 1, this build speaks 2"));
   bytes = encode(Swapped{1});
   bytes[6] = 9;
-  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
-              HasSubstr("unknown message kind 9"));
+  EXPECT_THAT(decode_header(head_of(bytes.data())).reason(), HasSubstr("unknown message kind 9"));
 }
 
 TEST(Wire, LengthsAreBoundedPerKindBeforeAnyAllocation) {
   auto bytes = encode(FrameDone{0, 0, 0});
   put_u32(bytes.data() + 8, 13);  // FRAME_DONE is exactly 12
-  EXPECT_THAT(std::get<std::string>(decode_header(head_of(bytes.data()))),
+  EXPECT_THAT(decode_header(head_of(bytes.data())).reason(),
               HasSubstr("FRAME_DONE payload of 13 bytes, allowed 12..12"));
   auto tile = encode(TileHeader{0, 0, 0, 0, 1, 1});
   put_u32(tile.data() + 8, 0xFFFFFFFF);
-  EXPECT_THAT(std::get<std::string>(decode_header(head_of(tile.data()))),
+  EXPECT_THAT(decode_header(head_of(tile.data())).reason(),
               HasSubstr("TILE payload of 4294967295 bytes, allowed 24..50307099"));
   put_u32(tile.data() + 8, 50307099);  // 24 + 4095*4095*3: the largest tile is allowed
-  EXPECT_TRUE(std::holds_alternative<Header>(decode_header(head_of(tile.data()))));
+  EXPECT_TRUE(decode_header(head_of(tile.data())).ok());
   const auto err = encode_error_header(5000);
   EXPECT_EQ(get_u32(err.data() + 8), kMaxErrorText);
 }
 
+TEST(Wire, MessageHeadTakesHeaderThenFixedPartByteByByte) {
+  const auto bytes = encode(FrameDone{1, 99, 12});
+  MessageHead head(Protocol::Tiles);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    ASSERT_FALSE(head.complete()) << "complete after " << i << " bytes";
+    ASSERT_EQ(head.space().size(), (i < kHeaderBytes ? kHeaderBytes : bytes.size()) - i);
+    head.space()[0] = bytes[i];
+    ASSERT_TRUE(head.received(1).ok());
+    EXPECT_EQ(head.has_header(), i + 1 >= kHeaderBytes);
+  }
+  ASSERT_TRUE(head.complete());
+  EXPECT_EQ(head.header().kind, Kind::FrameDone);
+  EXPECT_EQ(decode_frame_done(head.fixed()).frame, 99u);
+  head.clear();
+  EXPECT_FALSE(head.has_header());
+  EXPECT_EQ(head.space().size(), kHeaderBytes);
+}
+
+TEST(Wire, MessageHeadRefusesTheOtherProtocolsKindsOnceTheHeaderIsIn) {
+  const auto swapped = encode(Swapped{3});
+  MessageHead head(Protocol::DisplayStream);
+  std::copy(swapped.begin(), swapped.begin() + kHeaderBytes, head.space().begin());
+  const Status status = head.received(kHeaderBytes);
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.reason(), "message kind 5 is not one of the display stream");
+}
+
 TEST(Wire, TilePayloadMustMatchItsSides) {
-  EXPECT_FALSE(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 18).has_value());
-  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 17).value_or(""),
+  EXPECT_TRUE(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 18).ok());
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 2, 3}, 24 + 17).reason(),
               HasSubstr("TILE 2x3 needs a payload of 42 bytes, header says 41"));
-  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 0, 3}, 24).value_or(""),
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 0, 3}, 24).reason(),
               HasSubstr("each side must be 1..4095"));
-  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 4096, 1}, 24 + 4096 * 3).value_or(""),
+  EXPECT_THAT(validate(TileHeader{0, 0, 0, 0, 4096, 1}, 24 + 4096 * 3).reason(),
               HasSubstr("4096x1"));
 }
 

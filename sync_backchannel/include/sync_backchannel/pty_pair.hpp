@@ -15,25 +15,27 @@ class PtyPair {
   // host unchanged and are not echoed back to the emulator. Throws SerialError.
   static PtyPair open();
 
-  PtyPair(PtyPair&& other) noexcept;
-  PtyPair& operator=(PtyPair&& other) noexcept;
+  PtyPair(PtyPair&& other) noexcept = default;
+  PtyPair& operator=(PtyPair&& other) noexcept = default;
   PtyPair(const PtyPair&) = delete;
   PtyPair& operator=(const PtyPair&) = delete;
-  ~PtyPair();
+  ~PtyPair() = default;
 
   SerialPort& master() { return master_; }
   // For example "/dev/pts/3". A host opens it with SerialPort::open(slave_path()).
   const std::string& slave_path() const { return slave_path_; }
 
  private:
-  PtyPair(SerialPort master, std::string slave_path, int slave_keeper)
-      : master_(std::move(master)), slave_path_(std::move(slave_path)), keeper_(slave_keeper) {}
+  PtyPair(SerialPort master, std::string slave_path, Fd slave_keeper)
+      : master_(std::move(master)),
+        slave_path_(std::move(slave_path)),
+        keeper_(std::move(slave_keeper)) {}
 
   SerialPort master_;
   std::string slave_path_;
   // A slave descriptor we hold open ourselves: on Linux a master reads EIO and loses queued
   // bytes whenever no slave is open, so without it a host that reconnects would break the pair.
-  int keeper_ = -1;
+  Fd keeper_;
 };
 
 }  // namespace l2

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "base/fd.hpp"
+
 namespace l2 {
 
 class SerialError : public std::runtime_error {
@@ -37,11 +39,11 @@ class SerialPort {
   // what error messages call it. Makes the fd non-blocking.
   static SerialPort adopt(int fd, std::string name);
 
-  SerialPort(SerialPort&& other) noexcept;
-  SerialPort& operator=(SerialPort&& other) noexcept;
+  SerialPort(SerialPort&& other) noexcept = default;
+  SerialPort& operator=(SerialPort&& other) noexcept = default;
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
-  ~SerialPort();
+  ~SerialPort() = default;
 
   // Waits up to `timeout` for at least one byte, then returns what is available (up to
   // buffer.size()). Returns 0 when the timeout passed with nothing to read. Throws SerialError
@@ -58,10 +60,10 @@ class SerialPort {
   std::size_t write_some(std::span<const std::uint8_t> bytes);
   std::size_t write_some(std::string_view text);
 
-  void close() noexcept;
-  bool is_open() const { return fd_ >= 0; }
+  void close() noexcept { fd_.reset(); }
+  bool is_open() const { return static_cast<bool>(fd_); }
   const std::string& name() const { return name_; }
-  int fd() const { return fd_; }
+  int fd() const { return fd_.get(); }
 
  private:
   SerialPort(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
@@ -69,7 +71,7 @@ class SerialPort {
   short wait_for(short events, std::chrono::steady_clock::time_point deadline);
   [[noreturn]] void fail(std::string_view what, int error) const;
 
-  int fd_ = -1;
+  Fd fd_;
   std::string name_;
 };
 

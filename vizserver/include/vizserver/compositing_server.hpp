@@ -40,7 +40,7 @@ struct ServerOptions {
   Rgb background{};                                 // pixels no tile writes (spec §5: black)
   std::chrono::milliseconds accept_timeout{30000};  // all HELLOs by then; 0: wait forever
   std::chrono::milliseconds stall_timeout{10000};   // silence while a frame waits; 0: never
-  std::size_t keep_frames = 8;                      // swapped frames wait_frame can still find
+  std::size_t recent_frames = 8;                    // swapped frames wait_frame can still find
   std::size_t max_buffered_bytes = std::size_t{1} << 30;  // tile bytes held for open frames
   RunToken token{};  // a HELLO without it is refused (run_token.hpp); all zero: none needed
 };
@@ -71,8 +71,8 @@ class CompositingServer {
   void stop();
 
   // The displays of `frame` once it is swapped. Throws VizError when the run failed (the
-  // failure line), every pipeserver left without sending it, it is too old to be kept, or
-  // `timeout` passed.
+  // failure line), every pipeserver left without sending it, it is older than the recent
+  // frames (recent_frames), or `timeout` passed.
   FramePtr wait_frame(std::uint32_t frame, std::chrono::milliseconds timeout);
   // Blocks until the loop ends (all pipeservers done, failure, or stop) or timeout; true if it
   // ended.

@@ -14,23 +14,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <span>
-#include <string>
-#include <variant>
 
 #include "vizserver/wire.hpp"
 
 namespace l2::viz {
-
-inline constexpr int kMaxDisplaySide = 16384;  // the vizserver's --displays limit
-
-enum class StreamKind : std::uint16_t {
-  Listening = 16,
-  Display = 17,
-  Shown = 18,
-  Error = 6,  // the same ERROR as the pipeserver protocol
-};
 
 struct Listening {
   std::uint32_t port = 0;
@@ -54,28 +42,17 @@ struct Shown {
   std::uint32_t missing_display_rows = 0;  // rows for displays that do not exist
 };
 
-struct StreamHeader {
-  StreamKind kind{};
-  std::uint32_t payload_bytes = 0;
-};
-
-std::size_t fixed_bytes(StreamKind kind);
-const char* kind_name(StreamKind kind);
-
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Listening& m);
 std::array<std::uint8_t, kHeaderBytes + 16> encode(const DisplayHeader& m);
 std::array<std::uint8_t, kHeaderBytes + 20> encode(const Shown& m);
 
-// Checks magic, version, a display-stream kind and a length possible for it (DISPLAY: its
-// sides 1..kMaxDisplaySide, checked again with the fixed part by validate()) before anything
-// is allocated. Returns the header or a one-line reason.
-std::variant<StreamHeader, std::string> decode_stream_header(
-    std::span<const std::uint8_t, kHeaderBytes> bytes);
-
+// Headers of the stream are read with decode_header(bytes, Protocol::DisplayStream) or a
+// MessageHead of that protocol (wire.hpp): a DISPLAY's length is bounded by kMaxDisplaySide
+// there, and checked again with the fixed part by validate().
 Listening decode_listening(std::span<const std::uint8_t> fixed);
 DisplayHeader decode_display(std::span<const std::uint8_t> fixed);
 Shown decode_shown(std::span<const std::uint8_t> fixed);
 // A DISPLAY whose sides are outside 1..kMaxDisplaySide or whose length is not 16 + w*h*3.
-std::optional<std::string> validate(const DisplayHeader& d, std::uint32_t payload_bytes);
+Status validate(const DisplayHeader& d, std::uint32_t payload_bytes);
 
 }  // namespace l2::viz

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/result.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/wire.hpp"
@@ -41,51 +42,51 @@ struct ComposedFrame {
 
 class FrameAssembler {
  public:
-  FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int server_count,
+  FrameAssembler(std::vector<std::pair<int, int>> display_sizes, int pipeserver_count,
                  Rgb background = {}, std::size_t max_buffered_bytes = std::size_t{1} << 30);
 
-  int server_count() const { return static_cast<int>(servers_.size()); }
+  int pipeserver_count() const { return static_cast<int>(pipeservers_.size()); }
   int display_count() const { return static_cast<int>(sizes_.size()); }
 
-  // Protocol events of pipeserver `server` (0..server_count-1). An error return is one line,
-  // "pipeserver 1: ..."; the pipeserver broke the rules or the run cannot go on.
-  std::optional<std::string> connect(int server);
-  std::optional<std::string> add_tile(int server, ReceivedTile tile);
-  std::optional<std::string> finish(int server, const FrameDone& done);
-  // The connection of `server` closed. Error if a frame is, or will be, waiting for it.
-  std::optional<std::string> disconnect(int server);
+  // Protocol events of pipeserver `pipeserver` (0..pipeserver_count-1). An error return is one
+  // line, "pipeserver 1: ..."; the pipeserver broke the rules or the run cannot go on.
+  Status connect(int pipeserver);
+  Status add_tile(int pipeserver, ReceivedTile tile);
+  Status finish(int pipeserver, const FrameDone& done);
+  // The connection of `pipeserver` closed. Error if a frame is, or will be, waiting for it.
+  Status disconnect(int pipeserver);
 
   // Removes and composes every complete frame, lowest first.
   std::vector<ComposedFrame> take_complete();
 
-  // The lowest frame that exists and still waits for `server`, if any.
-  std::optional<std::uint32_t> frame_waiting_for(int server) const;
+  // The lowest frame that exists and still waits for `pipeserver`, if any.
+  std::optional<std::uint32_t> frame_waiting_for(int pipeserver) const;
   // Every pipeserver connected and disconnected, and no frame is waiting.
   bool all_done() const;
   std::optional<std::uint32_t> last_composed() const { return last_composed_; }
   std::size_t buffered_bytes() const { return buffered_bytes_; }
 
  private:
-  struct Server {
+  struct Pipeserver {
     bool connected = false, closed = false;
     std::optional<std::uint32_t> last_done;   // its last FRAME_DONE
     std::optional<std::uint32_t> open_frame;  // tiles sent, FRAME_DONE not yet
   };
   struct Frame {
-    std::vector<std::vector<ReceivedTile>> tiles;  // [server] in arrival order
+    std::vector<std::vector<ReceivedTile>> tiles;  // [pipeserver] in arrival order
   };
 
-  std::string name(int server) const;
-  std::optional<std::string> check_new_frame(std::uint32_t frame) const;
-  std::optional<std::string> check_order(int server, std::uint32_t frame, const char* what) const;
+  std::string name(int pipeserver) const;
+  Status check_new_frame(std::uint32_t frame) const;
+  Status check_order(int pipeserver, std::uint32_t frame, const char* what) const;
   Frame& frame_entry(std::uint32_t frame);
-  bool waits_for(const Server& s, std::uint32_t frame) const;
+  bool waits_for(const Pipeserver& s, std::uint32_t frame) const;
   ComposedFrame compose(std::uint32_t number, Frame& frame) const;
 
   std::vector<std::pair<int, int>> sizes_;
   Rgb background_;
   std::size_t max_buffered_bytes_;
-  std::vector<Server> servers_;
+  std::vector<Pipeserver> pipeservers_;
   std::map<std::uint32_t, Frame> frames_;
   std::size_t buffered_bytes_ = 0;
   std::optional<std::uint32_t> last_composed_;

@@ -1,4 +1,4 @@
-// Plain POSIX TCP at the edge of the visualization server: an owning descriptor, listen and
+// Plain POSIX TCP at the edge of the visualization server (descriptors owned by l2::Fd): listen and
 // connect with bounded waits, and send/receive loops that survive partial transfers and EINTR.
 // Sockets are non-blocking throughout; "blocking" calls here wait in poll() up to a deadline,
 // so no call can hang on a dead or silent peer.
@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "base/fd.hpp"
 
 namespace l2::viz {
 
@@ -29,25 +31,6 @@ class VizError : public std::runtime_error {
 class ConnectionClosed : public VizError {
  public:
   using VizError::VizError;
-};
-
-class Fd {
- public:
-  Fd() = default;
-  explicit Fd(int fd) : fd_(fd) {}
-  Fd(Fd&& o) noexcept : fd_(o.release()) {}
-  Fd& operator=(Fd&& o) noexcept;
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() { reset(); }
-
-  int get() const { return fd_; }
-  explicit operator bool() const { return fd_ >= 0; }
-  int release();
-  void reset();
-
- private:
-  int fd_ = -1;
 };
 
 // A TCP address as written on a command line (--viz, --display-stream): "HOST:PORT", the host

@@ -3,8 +3,10 @@
 // rule about what a peer may send is tested without sockets.
 //
 // Every message = a 12-byte header (magic, version, kind, payload length; little-endian) and a
-// payload. A payload has a fixed part whose size depends on the kind, and for TILE and ERROR a
-// variable part (pixels, text) whose size follows from the fixed part.
+// payload. A payload has a fixed part whose size depends on the kind, and for TILE, DISPLAY and
+// ERROR a variable part (pixels, text) whose size follows from the fixed part. Both protocols
+// (pipeservers' tiles here, the display stream in display_stream.hpp) share the header, its
+// kinds and MessageHead, the one reader of it.
 #pragma once
 
 #include <array>
@@ -13,8 +15,7 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <variant>
-
+#include "base/result.hpp"
 #include "vizserver/run_token.hpp"
 
 namespace l2::viz {
@@ -24,20 +25,27 @@ inline constexpr std::uint16_t kVersion = 2;         // 2: HELLO carries the run
 inline constexpr std::size_t kHeaderBytes = 12;
 inline constexpr int kMaxTileSide = 4095;  // the 12-bit width limit of a strip header (spec §2)
 inline constexpr std::size_t kMaxErrorText = 1024;
+inline constexpr int kMaxDisplaySide = 16384;      // the vizserver's --displays limit
 inline constexpr std::size_t kMaxFixedBytes = 32;  // the largest fixed part (TILE_EXT)
 
 enum class Kind : std::uint16_t {
-  Hello = 1,      // pipeserver -> server: who I am
-  Welcome = 2,    // server -> pipeserver: accepted
-  Tile = 3,       // pipeserver -> server: one rectangle of one display, RGB rows top to bottom
-  FrameDone = 4,  // pipeserver -> server: my part of this frame is complete
-  Swapped = 5,    // server -> every pipeserver: this frame is on the displays
-  Error = 6,      // either way: why the sender is closing the connection
-  TileExt = 7,    // pipeserver -> server: a KEY or DEPTH tile (spec §7), composited
+  Hello = 1,       // pipeserver -> server: who I am
+  Welcome = 2,     // server -> pipeserver: accepted
+  Tile = 3,        // pipeserver -> server: one rectangle of one display, RGB rows top to bottom
+  FrameDone = 4,   // pipeserver -> server: my part of this frame is complete
+  Swapped = 5,     // server -> every pipeserver: this frame is on the displays
+  Error = 6,       // either way, both protocols: why the sender is closing the connection
+  TileExt = 7,     // pipeserver -> server: a KEY or DEPTH tile (spec §7), composited
+  Listening = 16,  // display stream (display_stream.hpp) from here on
+  Display = 17,
+  Shown = 18,
 };
 
 // How a tile is composited (spec §7), as TILE_EXT carries it; a TILE is Copy.
 enum class TileKind : std::uint32_t { Copy = 0, Key = 1, Depth = 2 };
+
+// Which conversation a reader is in: each refuses the other's kinds.
+enum class Protocol { Tiles, DisplayStream };
 
 struct Header {
   Kind kind{};
@@ -95,10 +103,40 @@ std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m);
 std::array<std::uint8_t, kHeaderBytes + 4> encode(const Swapped& m);
 std::array<std::uint8_t, kHeaderBytes> encode_error_header(std::size_t text_bytes);
 
-// Checks magic, version, kind and that the length is possible for the kind (exact for fixed
-// kinds, bounded for TILE and ERROR) before anyone allocates for it. Returns the header or a
-// one-line reason ("bad magic 0x47455420 (not a vizserver peer?)").
-std::variant<Header, std::string> decode_header(std::span<const std::uint8_t, kHeaderBytes> bytes);
+// Checks magic, version, a kind of `protocol` and that the length is possible for the kind
+// (exact for fixed kinds, bounded for TILE, DISPLAY and ERROR) before anyone allocates for it.
+// Returns the header or a one-line reason ("bad magic 0x47455420 (not a vizserver peer?)").
+Result<Header> decode_header(std::span<const std::uint8_t, kHeaderBytes> bytes,
+                             Protocol protocol = Protocol::Tiles);
+
+// The start of one message as its bytes arrive, for every reader of both protocols: the
+// header, checked as soon as it is complete (before anything is allocated for the message),
+// then the fixed part of its kind. The variable part is the reader's: it goes straight into
+// its final buffer.
+class MessageHead {
+ public:
+  explicit MessageHead(Protocol protocol) : protocol_(protocol) {}
+
+  // Where the next bytes go; empty once header and fixed part are in.
+  std::span<std::uint8_t> space() { return {bytes_.data() + got_, need_ - got_}; }
+  // Counts `n` bytes received into space(). Fails when they complete a header that is bad.
+  Status received(std::size_t n);
+  bool has_header() const { return header_.has_value(); }
+  const Header& header() const { return *header_; }
+  bool complete() const { return header_ && got_ == need_; }
+  std::span<const std::uint8_t> fixed() const {
+    return {bytes_.data() + kHeaderBytes, need_ - kHeaderBytes};
+  }
+  std::size_t bytes_got() const { return got_; }
+  std::size_t bytes_needed() const { return need_; }  // so far: the header, then its fixed part
+  void clear();                                       // ready for the next message
+
+ private:
+  Protocol protocol_;
+  std::array<std::uint8_t, kHeaderBytes + kMaxFixedBytes> bytes_{};
+  std::size_t got_ = 0, need_ = kHeaderBytes;
+  std::optional<Header> header_;
+};
 
 // Decode fixed parts (sizes already checked by decode_header). Values are checked by
 // validate(): a TILE whose payload length does not match w*h*3 (TILE_EXT: its pixel bytes),
@@ -110,7 +148,7 @@ TileHeader decode_tile(std::span<const std::uint8_t> fixed);
 TileHeader decode_tile_ext(std::span<const std::uint8_t> fixed);
 FrameDone decode_frame_done(std::span<const std::uint8_t> fixed);
 Swapped decode_swapped(std::span<const std::uint8_t> fixed);
-std::optional<std::string> validate(const TileHeader& t, std::uint32_t payload_bytes);
+Status validate(const TileHeader& t, std::uint32_t payload_bytes);
 
 // Little-endian helpers, exposed for tests that forge messages byte by byte.
 void put_u16(std::uint8_t* p, std::uint16_t v);
@@ -118,8 +156,16 @@ void put_u32(std::uint8_t* p, std::uint32_t v);
 std::uint16_t get_u16(const std::uint8_t* p);
 std::uint32_t get_u32(const std::uint8_t* p);
 
-// The 12-byte header every message of both vizserver protocols starts with (magic, version,
-// kind, payload length); the tile protocol and the display stream differ only in their kinds.
-void put_message_header(std::uint8_t* p, std::uint16_t kind, std::size_t payload_bytes);
+// A message's header and a zeroed fixed part of `Fixed` bytes; the payload length counts
+// `extra` bytes (pixels, text) the sender sends after it.
+template <std::size_t Fixed>
+std::array<std::uint8_t, kHeaderBytes + Fixed> message_start(Kind kind, std::size_t extra = 0) {
+  std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
+  put_u32(out.data(), kMagic);
+  put_u16(out.data() + 4, kVersion);
+  put_u16(out.data() + 6, static_cast<std::uint16_t>(kind));
+  put_u32(out.data() + 8, static_cast<std::uint32_t>(Fixed + extra));
+  return out;
+}
 
 }  // namespace l2::viz

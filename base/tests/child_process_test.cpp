@@ -1,4 +1,4 @@
-#include "child_process.hpp"
+#include "base/child_process.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -114,6 +114,47 @@ TEST(ChildProcess, ExtraEnvironmentIsAddedAndReplacesAVariableOfTheSameName) {
   std::getline(in, got);
   EXPECT_EQ(got, std::string("replaced|added|") + std::getenv("PATH"));  // the rest inherited
   std::filesystem::remove(out);
+}
+
+TEST(ChildProcess, CapturedLinesArriveInOrderPerStream) {
+  ChildProcess p({"/bin/sh", "-c", "echo one; echo two >&2; echo three; printf four"}, {},
+                 Capture{true, true});
+  EXPECT_EQ(p.read_line(Stream::Err, 5s), "two");
+  EXPECT_EQ(p.read_line(Stream::Out, 5s), "one");
+  EXPECT_EQ(p.read_line(Stream::Out, 5s), "three");
+  const Finished f = p.finish(5s);
+  EXPECT_EQ(f.out, "four");  // the unfinished last line is in what is left
+  EXPECT_EQ(f.err, "");
+  EXPECT_EQ(f.status.describe(), "exited with code 0");
+  EXPECT_FALSE(f.killed);
+}
+
+TEST(ChildProcess, ReadLineGivesUpAtTheDeadlineAndAtTheEnd) {
+  ChildProcess quiet({"/bin/sleep", "5"}, {}, Capture{true, false});
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(quiet.read_line(Stream::Out, 100ms), std::nullopt);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
+  ChildProcess done({"/bin/true"}, {}, Capture{true, false});
+  EXPECT_EQ(done.read_line(Stream::Out, 5s), std::nullopt);  // closed without a line
+}
+
+TEST(ChildProcess, FinishKillsAChildThatOverstays) {
+  const Finished f = run({"/bin/sh", "-c", "echo started; exec sleep 30"}, 300ms);
+  EXPECT_TRUE(f.killed);
+  EXPECT_EQ(f.status.shell_code(), 128 + SIGKILL);
+  EXPECT_EQ(f.out, "started\n");
+}
+
+TEST(ChildProcess, RunFindsAProgramInPath) {
+  const Finished f = run({"sh", "-c", "echo $0"}, 5s);
+  EXPECT_EQ(f.status.shell_code(), 0);
+  EXPECT_EQ(f.out, "sh\n");
+}
+
+TEST(ChildProcess, RunShellJoinsStderrToStdoutInOrder) {
+  const Finished f = run_shell("echo out; echo err >&2; exit 4", 5s);
+  EXPECT_EQ(f.out, "out\nerr\n");
+  EXPECT_EQ(f.status.shell_code(), 4);
 }
 
 }  // namespace

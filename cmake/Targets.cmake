@@ -1,0 +1,153 @@
+# How every part declares what it builds: one call per library, program or test, so a folder's
+# CMakeLists.txt says what each target is made of and links, and every target gets the same
+# treatment: the warning set (Warnings.cmake), fmt, a precompiled header of fmt and the
+# standard library, and the build type's flags with every sanitizer of the preset on every
+# file.
+#
+#   l2_library(<name> [INTERFACE|OBJECT|MODULE] [HOT] [SOURCES <file>...]
+#              [INCLUDES <dir>...] [PRIVATE_INCLUDES <dir>...] [LINKS <item>...])
+#   l2_program(<name> SOURCES <file>... [PRIVATE_INCLUDES <dir>...] [LINKS <item>...])
+#   l2_test(<name> SOURCES <file>... [LINKS <item>...] [LABELS <label>...])
+#
+# INCLUDES are the library's public headers (its users see them), PRIVATE_INCLUDES its own.
+# LINKS is target_link_libraries' list: PUBLIC, PRIVATE and INTERFACE keywords as there, and
+# items before any keyword are PRIVATE (INTERFACE for an INTERFACE library).
+#
+# A static library's files are compiled together, up to 8 per unit (unity build): each unit
+# otherwise re-instantiates what fmt and the standard library leave pending. HOT keeps one
+# object per file: the emulator's hot path, whose objects a test disassembles one by one and
+# whose code the routing benchmark measures.
+#
+# Test code (l2_test) is compiled with L2_TEST_CODE_FLAGS, appended so they override the build
+# type's -O: GoogleTest expands to much inline code in every test file, and optimising it was
+# most of the suite's compile time, while the tests run for seconds. They do not touch the
+# sanitizer flags. The libraries under test keep the build type's flags.
+
+set(L2_TEST_CODE_FLAGS "-O0" CACHE STRING "Flags appended for test code (l2_test)")
+separate_arguments(l2_test_code_flags UNIX_COMMAND "${L2_TEST_CODE_FLAGS}")
+
+# Umbrella targets: the sanitizer runs build just the test executables they run (and what those
+# depend on), not every program and benchmark.
+add_custom_target(l2_asan_tests)
+add_custom_target(l2_tsan_tests)
+
+# The precompiled headers. A target may reuse one only when its flags match, so every target
+# that reuses the code header links fmt (FMT_SHARED) and every test gets the same test flags.
+file(WRITE ${CMAKE_BINARY_DIR}/l2_code_pch.cpp "// the precompiled header's own translation unit\n")
+add_library(l2_code_pch STATIC ${CMAKE_BINARY_DIR}/l2_code_pch.cpp)
+l2_warnings(l2_code_pch)
+target_link_libraries(l2_code_pch PUBLIC fmt::fmt)
+target_precompile_headers(l2_code_pch PRIVATE ${CMAKE_CURRENT_LIST_DIR}/pch_prelude.hpp
+                          <fmt/format.h> <algorithm> <array> <chrono> <cstdint> <cstring>
+                          <filesystem> <fstream> <functional> <memory> <optional> <span>
+                          <stdexcept> <string> <string_view> <thread> <vector>)
+
+if(BUILD_TESTING)
+  file(WRITE ${CMAKE_BINARY_DIR}/l2_test_pch.cpp "// the precompiled header's own translation unit\n")
+  add_library(l2_test_pch STATIC ${CMAKE_BINARY_DIR}/l2_test_pch.cpp)
+  l2_warnings(l2_test_pch)
+  target_compile_options(l2_test_pch PRIVATE ${l2_test_code_flags})
+  target_link_libraries(l2_test_pch PUBLIC GTest::gtest GTest::gmock fmt::fmt)
+  target_precompile_headers(l2_test_pch PRIVATE ${CMAKE_CURRENT_LIST_DIR}/pch_prelude.hpp
+                            <gtest/gtest.h> <gmock/gmock.h> <fmt/format.h>
+                            <algorithm> <chrono> <cstdint> <cstring> <filesystem> <fstream>
+                            <memory> <optional> <stdexcept> <string> <thread> <vector>)
+endif()
+
+# target_link_libraries with items before any keyword given `default` as their scope.
+function(l2_link target default)
+  set(scope ${default})
+  set(items)
+  foreach(item ${ARGN})
+    if(item MATCHES "^(PUBLIC|PRIVATE|INTERFACE)$")
+      if(items)
+        target_link_libraries(${target} ${scope} ${items})
+      endif()
+      set(scope ${item})
+      set(items)
+    else()
+      list(APPEND items ${item})
+    endif()
+  endforeach()
+  if(items)
+    target_link_libraries(${target} ${scope} ${items})
+  endif()
+endfunction()
+
+# What every compiled target of the project shares: warnings, fmt and the code header.
+function(l2_common target)
+  l2_warnings(${target})
+  target_link_libraries(${target} PRIVATE fmt::fmt)
+  target_precompile_headers(${target} REUSE_FROM l2_code_pch)
+endfunction()
+
+function(l2_library name)
+  cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
+                        "SOURCES;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  if(ARG_INTERFACE)
+    add_library(${name} INTERFACE)
+    target_include_directories(${name} INTERFACE ${ARG_INCLUDES})
+    l2_link(${name} INTERFACE ${ARG_LINKS})
+    return()
+  endif()
+  if(ARG_OBJECT)
+    add_library(${name} OBJECT ${ARG_SOURCES})
+  elseif(ARG_MODULE)
+    add_library(${name} MODULE ${ARG_SOURCES})
+  else()
+    add_library(${name} STATIC ${ARG_SOURCES})
+    if(NOT ARG_HOT)
+      set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+    endif()
+  endif()
+  if(ARG_INCLUDES)
+    target_include_directories(${name} PUBLIC ${ARG_INCLUDES})
+  endif()
+  if(ARG_PRIVATE_INCLUDES)
+    target_include_directories(${name} PRIVATE ${ARG_PRIVATE_INCLUDES})
+  endif()
+  l2_link(${name} PRIVATE ${ARG_LINKS})
+  if(ARG_MODULE OR ARG_OBJECT)
+    # Loaded or linked into others with their own flags (a module's hidden visibility):
+    # they parse their headers themselves.
+    l2_warnings(${name})
+  else()
+    l2_common(${name})
+  endif()
+endfunction()
+
+function(l2_program name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  if(ARG_PRIVATE_INCLUDES)
+    target_include_directories(${name} PRIVATE ${ARG_PRIVATE_INCLUDES})
+  endif()
+  l2_link(${name} PRIVATE ${ARG_LINKS})
+  l2_common(${name})
+endfunction()
+
+# A GoogleTest executable registered with CTest as ONE test. Registering every test case as its
+# own process cost about a second each (every binary loading its libraries at start), which
+# tripled the suite; gtest still names each failing case in the output. LABELS ("asan",
+# "tsan") choose the sanitizer runs the executable takes part in. Its files are compiled
+# together, up to 8 per unit (each unit re-instantiates what GoogleTest, fmt and the standard
+# library leave pending): two test files of one executable must not both define a helper of
+# the same name.
+function(l2_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LINKS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  l2_warnings(${name})
+  target_compile_options(${name} PRIVATE ${l2_test_code_flags})
+  target_precompile_headers(${name} REUSE_FROM l2_test_pch)
+  set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+  l2_link(${name} PRIVATE ${ARG_LINKS})
+  target_link_libraries(${name} PRIVATE GTest::gtest_main GTest::gmock fmt::fmt)
+  add_test(NAME ${name} COMMAND ${name} --gtest_brief=1
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 600)
+  foreach(sanitizer asan tsan)
+    if(sanitizer IN_LIST ARG_LABELS)
+      add_dependencies(l2_${sanitizer}_tests ${name})
+    endif()
+  endforeach()
+endfunction()
