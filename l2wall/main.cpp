@@ -10,6 +10,24 @@
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
 
+#ifdef L2_HAVE_MPI
+#include "cluster/mpi_run.hpp"
+#endif
+
+namespace {
+
+int run_over_mpi(const l2::RunOptions& o) {
+#ifdef L2_HAVE_MPI
+  return l2::run_wall_mpi(o);
+#else
+  (void)o;
+  std::fprintf(stderr, "l2wall: --mpi: this l2wall was built without MPI\n");
+  return 1;
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{
       "l2wall: a Lightning-2 wall on one machine. `l2wall run` starts one pipeserver process per\n"
@@ -118,6 +136,11 @@ int main(int argc, char** argv) {
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
+  bool mpi = false;
+  run->add_flag("--mpi", mpi,
+                "run the wall over MPI ranks: mpirun -np N l2wall run WALL --mpi, N = 1 "
+                "coordinator + one rank per pipeserver + one per board column of the mesh, in "
+                "that rank order (docs/mpi-design.md); frames and READY travel as MPI messages");
   // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
   l2::SceneOptions scene;
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
@@ -133,6 +156,7 @@ int main(int argc, char** argv) {
   try {
     // A damaged model is refused here in one line, before every pipeserver refuses it.
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
+    if (mpi) return run_over_mpi(o);
     return l2::run_wall(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s\n", e.what());

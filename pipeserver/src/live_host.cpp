@@ -86,20 +86,27 @@ std::optional<viz::TileSender> connect_viz(const std::string& address, int serve
 
 }  // namespace
 
+MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
+  return [link, backchannel](const TileLayout&, const ServerPlan& plan) {
+    HostLinks links;
+    links.link =
+        std::make_unique<DviLinkWriter>(DviLinkWriter::create(link, plan.fb_width, plan.fb_height));
+    auto port = std::make_shared<SerialPort>(SerialPort::open(backchannel));
+    links.channel = std::make_unique<BackChannel>(*port);
+    links.keeps = port;
+    return links;
+  };
+}
+
 int run_live_host(const LiveHostOptions& o) {
   const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
   const TileLayout layout = plan_layout(wall);
   auto scene = make_scene(o.scene, o.scene_options);
   Pipeserver ps(layout, o.server);
   const ServerPlan& plan = ps.plan();
-  std::optional<DviLinkWriter> link;
-  std::optional<SerialPort> port;
-  std::optional<BackChannel> channel;
-  if (!o.link.empty()) {
-    link.emplace(DviLinkWriter::create(o.link, plan.fb_width, plan.fb_height));
-    port.emplace(SerialPort::open(o.backchannel));
-    channel.emplace(*port);
-  }
+  const HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
+  DviSender* const link = links.link.get();
+  ReadyChannel* const channel = links.channel.get();
   std::optional<viz::TileSender> sender =
       connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
   Report report(o.report);

@@ -1,0 +1,48 @@
+// One process's part in an MPI run of a wall (docs/mpi-design.md): MPI_Init on construction,
+// MPI_Finalize on destruction, and who every rank is (process id and host name, gathered on
+// the coordinator, so a fault names where a rank ran).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace l2 {
+
+struct RankIdentity {
+  int pid = 0;
+  std::string host;
+};
+
+class MpiSession {
+ public:
+  // Errors come back as return codes (MPI_ERRORS_RETURN), not as an abort inside MPI, so a
+  // rank that lost a peer can say which one. Collective: every rank constructs one.
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  // On rank 0: every rank's identity, by rank. Elsewhere: only this rank's.
+  const std::vector<RankIdentity>& identities() const { return identities_; }
+
+  // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed.
+  [[noreturn]] static void abort_all(int code);
+
+ private:
+  int rank_ = 0;
+  int size_ = 0;
+  std::vector<RankIdentity> identities_;
+};
+
+// The rank and size mpirun gave this process, read from its environment before MPI_Init
+// (OMPI_COMM_WORLD_RANK / _SIZE); nullopt outside mpirun.
+struct LaunchedRank {
+  int rank = 0;
+  int size = 0;
+};
+std::optional<LaunchedRank> launched_rank();
+
+}  // namespace l2

@@ -1,0 +1,16 @@
+// A board column as an MPI rank: the boards of one column of the wall's mesh, taking in the
+// frames of the pipeservers whose tiles land on its displays, routing their strips into its
+// up-to-8 displays, and swapping them when the coordinator says so. It runs the coordinator's
+// commands in order: a refresh's take-in and scan (answered with what it saw), the route and
+// completion decided from every column's observations, a fetch of its displays, the end.
+#pragma once
+
+#include "cluster/rank_map.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+// Returns the exit code.
+int run_column(const TileLayout& layout, const RankMap& map, int column, int threads);
+
+}  // namespace l2

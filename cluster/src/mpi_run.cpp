@@ -1,0 +1,124 @@
+#include "cluster/mpi_run.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "cluster/mpi_ready_channel.hpp"
+#include "cluster/mpi_session.hpp"
+#include "cluster/rank_map.hpp"
+#include "column_rank.hpp"
+#include "host_set.hpp"
+#include "image/folders.hpp"
+#include "mpi_dvi_path.hpp"
+#include "run_backends.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+constexpr const char* kOnlyDvi = "--mpi: only --path dvi runs over MPI";
+
+class MpiBackends final : public RunBackends {
+ public:
+  explicit MpiBackends(const RankMap& map) : map_(map) {}
+
+  std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
+                                        const RunOptions& o) const override {
+    return std::make_unique<MpiDviPath>(layout, map_, o);
+  }
+  std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
+    throw std::invalid_argument(kOnlyDvi);
+  }
+  void start_hosts(HostSet& hosts, const HostLaunch& launch,
+                   const TileLayout& layout) const override {
+    hosts.attach(launch, layout, [this](int server) -> std::unique_ptr<ReadyChannel> {
+      const int rank = map_.pipeserver_rank(server);
+      return std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
+    });
+  }
+
+ private:
+  const RankMap& map_;
+};
+
+// Becomes pipeserver `server`; returns only when that failed.
+int exec_pipeserver(const RunOptions& o, int server) {
+  Host h;
+  h.server = server;
+  h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", server)).string();
+  HostLaunch launch = host_launch(o);
+  launch.extra_args = {"--mpi"};
+  // Its report goes to --out on the machine it runs on, which the coordinator may not share.
+  make_folders(o.out, "--out");
+  const std::vector<std::string> args = host_argv(launch, h);
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  std::fprintf(stderr, "l2wall: pipeserver %d: cannot run %s: %s\n", server, argv[0],
+               std::strerror(errno));
+  return 1;
+}
+
+int run_column_rank(const TileLayout& layout, const RankMap& map, int column, int threads,
+                    int rank) {
+  try {
+    return run_column(layout, map, column, threads);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map.role(rank).c_str(), rank, e.what());
+    MpiSession::abort_all(1);
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> mpi_options_error(const RunOptions& o) {
+  if (o.path != "dvi") return kOnlyDvi;
+  if (!o.show.empty()) return "--mpi: --show is not available over MPI";
+  if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
+  return std::nullopt;
+}
+
+int run_wall_mpi(const RunOptions& o) {
+  const auto launched = launched_rank();
+  if (!launched) {
+    std::fprintf(stderr,
+                 "l2wall: --mpi: not started by mpirun (no OMPI_COMM_WORLD_RANK); run "
+                 "mpirun -np N l2wall run WALL --mpi\n");
+    return 1;
+  }
+  // Before MPI_Init every rank checks alike; only rank 0 says why, once, and fails: mpirun
+  // would end the job at the first rank that failed, perhaps before rank 0 has said it.
+  const auto refuse = [&](const std::string& why) {
+    if (launched->rank != 0) return 0;
+    std::fprintf(stderr, "l2wall: %s\n", why.c_str());
+    return 1;
+  };
+  if (auto error = mpi_options_error(o)) return refuse(*error);
+  std::optional<TileLayout> layout;
+  std::optional<RankMap> map;
+  try {
+    layout = plan_layout(o.wall.empty() ? default_wall() : load_wall(o.wall));
+    map = make_rank_map(*layout);
+  } catch (const std::exception& e) {
+    return refuse(e.what());
+  }
+  if (auto error = rank_count_error(*map, launched->size)) return refuse(*error);
+  if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
+
+  MpiSession session;
+  if (const auto column = map->column_of(session.rank()))
+    return run_column_rank(*layout, *map, *column, o.threads, session.rank());
+  const MpiBackends backends(*map);
+  const int code = run_wall(o, backends);
+  if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
+  return 0;
+}
+
+}  // namespace l2

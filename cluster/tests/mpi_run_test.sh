@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# A wall over real mpirun ranks against the same wall on one machine: every display of the
+# last frame must be the same bytes. The TCP transport is forced (--mca btl self,tcp), so the
+# frames really cross sockets. Usage: mpi_run_test.sh L2WALL OUT NP [WALL] (no WALL: the
+# built-in default wall). Also: the wrong -np is refused in one line naming the numbers.
+set -euo pipefail
+l2wall=$1 out=$2 np=$3 wall=${4:-}
+frames=10
+# Root may run mpirun here (containers, CI): said for this test only, never for the user.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpirun=(mpirun --oversubscribe --mca btl self,tcp)
+rm -rf "$out" && mkdir -p "$out"
+
+start=$(date +%s%N)
+"$l2wall" run $wall --frames $frames --refresh 0 --out "$out/one" --no-progress >/dev/null
+one_done=$(date +%s%N)
+"${mpirun[@]}" -np "$np" "$l2wall" run $wall --mpi --frames $frames --refresh 0 \
+  --out "$out/mpi" --no-progress >"$out/mpi.txt"
+mpi_done=$(date +%s%N)
+echo "one machine $(((one_done - start) / 1000000)) ms, MPI $(((mpi_done - one_done) / 1000000)) ms"
+
+shopt -s nullglob
+pictures=("$out"/one/frame-$((frames - 1))/display-*.png)
+[[ ${#pictures[@]} -gt 0 ]] || { echo "FAIL: the one-machine run wrote no displays"; exit 1; }
+for p in "${pictures[@]}"; do
+  m="$out/mpi/frame-$((frames - 1))/$(basename "$p")"
+  cmp "$p" "$m" || { echo "FAIL: $m differs from $p"; exit 1; }
+done
+grep -q "^l2wall run: $frames frames" "$out/mpi.txt" || { echo "FAIL: no summary"; exit 1; }
+echo "same bytes: ${#pictures[@]} displays of frame $((frames - 1))"
+
+# One rank short: refused before anything runs, in one line with the numbers.
+if "${mpirun[@]}" -np $((np - 1)) "$l2wall" run $wall --mpi --frames 1 --out "$out/short" \
+  2>"$out/short.txt" >/dev/null; then
+  echo "FAIL: -np $((np - 1)) was accepted"
+  exit 1
+fi
+grep -qE "^l2wall: --mpi: this wall needs mpirun -np $np \(1 coordinator \+ [0-9]+ pipeservers? \+ [0-9]+ board columns?\), got $((np - 1)) ranks$" \
+  "$out/short.txt" || { echo "FAIL: no one-line -np error:"; cat "$out/short.txt"; exit 1; }
+echo "-np $((np - 1)) refused"
