@@ -2,7 +2,8 @@
 # A wall over real mpirun ranks against the same wall on one machine: every display of the
 # last frame must be the same bytes. The TCP transport is forced (--mca btl self,tcp), so the
 # frames really cross sockets. Usage: mpi_run_test.sh L2WALL OUT NP [WALL] (no WALL: the
-# built-in default wall). Also: the wrong -np is refused in one line naming the numbers.
+# built-in default wall). Also: swap lock held in every refresh, and the wrong -np is refused
+# in one line naming the numbers.
 set -euo pipefail
 l2wall=$1 out=$2 np=$3 wall=${4:-}
 frames=10
@@ -27,6 +28,9 @@ for p in "${pictures[@]}"; do
   cmp "$p" "$m" || { echo "FAIL: $m differs from $p"; exit 1; }
 done
 grep -q "^l2wall run: $frames frames" "$out/mpi.txt" || { echo "FAIL: no summary"; exit 1; }
+# The coordinator checked swap lock in every refresh (a violation would have failed the run).
+grep -E "^swap lock: every display of each of [0-9]+ group\(s\) showed the same frame in all [1-9][0-9]* refreshes" \
+  "$out/mpi.txt" || { echo "FAIL: no swap-lock line"; cat "$out/mpi.txt"; exit 1; }
 echo "same bytes: ${#pictures[@]} displays of frame $((frames - 1))"
 
 # One rank short: refused before anything runs, in one line with the numbers.
