@@ -27,9 +27,12 @@ std::vector<SwapGroup> wall_groups(const Wall& wall) {
 
 }  // namespace
 
-MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, const RunOptions& o)
+MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession& session,
+                       const RunOptions& o)
     : layout_(layout),
       map_(map),
+      session_(session),
+      stall_timeout_ms_(o.stall_timeout_ms),
       clock_(o.refresh_hz),
       refresh_hz_(o.refresh_hz),
       frames_(o.frames),
@@ -40,6 +43,15 @@ MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, const RunOp
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     for (const int id : groups_[g].displays) group_of_display_[id] = static_cast<int>(g);
   }
+  session_.watch_ranks([this](int rank) { return lost_message(rank); });
+}
+
+std::string MpiDviPath::lost_message(int rank) const {
+  const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
+  return fmt::format(
+      "{} (rank {} on {}, pid {}) is gone (its connection to the coordinator closed: killed "
+      "or crashed) while the displays wait for frame {}; {}",
+      map_.role(rank), rank, who.host, who.pid, shown_ + 1, kept());
 }
 
 bool MpiDviPath::take_notices(HostSet& hosts) {
@@ -101,7 +113,7 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
   displays_shown_.clear();
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
-    const Record answer = mpi_wire::receive_watched(rank, mpi_wire::kObservation, watch.waiting);
+    const Record answer = column_answer(c, index, hosts, watch);
     Reader in(answer);
     if (in.next() != index)
       throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
@@ -135,6 +147,37 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
     mpi_wire::send(route, map_.column_rank(c), mpi_wire::kCommand);
   if (auto broken = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_))
     throw RunFault(*broken);
+}
+
+Record MpiDviPath::column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch) {
+  const int rank = map_.column_rank(c);
+  const auto deadline = RunClock::now() + std::chrono::milliseconds(stall_timeout_ms_);
+  return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
+    watch.processes();
+    hosts.serve_channels();
+    if (RunClock::now() < deadline) return;
+    const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
+    throw RunFault(fmt::format(
+        "{} (rank {} on {}, pid {}) did not answer refresh {} within {} ms (stopped or hung) "
+        "while the displays wait for frame {}; {}",
+        map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1, kept()));
+  });
+}
+
+std::string MpiDviPath::kept() const {
+  const int shown = shown_;
+  if (shown < 0) return "no frame reached the displays";
+  return fmt::format("the displays keep frame {}", shown);
+}
+
+bool MpiDviPath::down() {
+  if (!lost_) lost_ = session_.lost_rank();
+  return lost_.has_value();
+}
+
+std::optional<std::string> MpiDviPath::failure_as_cause(int, const std::string&) {
+  if (!lost_) return std::nullopt;
+  return lost_message(*lost_);
 }
 
 std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameRecord>& records,
@@ -180,8 +223,39 @@ DisplayPictures MpiDviPath::frame_pictures(int, const RunWatch&) {
   return [this](int id) -> const RgbImage& { return pictures_.at(id); };
 }
 
+void MpiDviPath::fetch_answering(std::chrono::milliseconds grace) const {
+  for (int c = 0; c < map_.columns; ++c) {
+    const int rank = map_.column_rank(c);
+    if (lost_ == rank) continue;
+    try {
+      mpi_wire::send({mpi_wire::kFetch}, rank, mpi_wire::kCommand);
+      for (const int id : map_.displays_of_column[static_cast<std::size_t>(c)]) {
+        const auto deadline = RunClock::now() + grace;
+        while (!mpi_wire::waiting(rank, mpi_wire::kPicture)) {
+          if (RunClock::now() > deadline) throw std::runtime_error("no answer");
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        const auto d = std::find_if(layout_.wall.displays.begin(), layout_.wall.displays.end(),
+                                    [id](const Display& x) { return x.id == id; });
+        RgbImage picture(d->width, d->height);
+        MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE, rank,
+                 mpi_wire::kPicture, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        pictures_[id] = std::move(picture);
+      }
+    } catch (const std::runtime_error&) {
+      // that column's displays are not saved
+    }
+  }
+}
+
 std::optional<DisplayPictures> MpiDviPath::shown() const {
-  if (pictures_.empty()) return std::nullopt;
+  // Asked after a fault (and only then, since --show does not run over MPI): what the
+  // columns still answering show now.
+  if (!fetched_after_fault_ && !ended_) {
+    fetched_after_fault_ = true;
+    fetch_answering(std::chrono::milliseconds(300));
+  }
+  if (pictures_.size() != layout_.wall.displays.size()) return std::nullopt;
   return [this](int id) -> const RgbImage& { return pictures_.at(id); };
 }
 
@@ -206,8 +280,13 @@ void MpiDviPath::finish() {
 void MpiDviPath::end_columns() {
   if (ended_) return;
   ended_ = true;
-  for (int c = 0; c < map_.columns; ++c)
-    mpi_wire::send({mpi_wire::kEnd}, map_.column_rank(c), mpi_wire::kCommand);
+  for (int c = 0; c < map_.columns; ++c) {
+    try {
+      mpi_wire::send({mpi_wire::kEnd}, map_.column_rank(c), mpi_wire::kCommand);
+    } catch (const std::runtime_error&) {
+      // a column that is gone: the fault's MPI_Abort ends what is left
+    }
+  }
 }
 
 void MpiDviPath::add_totals(RunTotals& totals) const {

@@ -6,9 +6,12 @@
 // complete, and READY goes to the hosts. Swap lock across machines is checked in every refresh.
 #pragma once
 
+#include <atomic>
 #include <map>
 #include <vector>
 
+#include "cluster/mpi_session.hpp"
+#include "cluster/mpi_wire.hpp"
 #include "cluster/rank_map.hpp"
 #include "cluster/swap_lock_check.hpp"
 #include "display_path.hpp"
@@ -20,7 +23,11 @@ namespace l2 {
 
 class MpiDviPath final : public DisplayPath {
  public:
-  MpiDviPath(const TileLayout& layout, const RankMap& map, const RunOptions& options);
+  MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession& session,
+             const RunOptions& options);
+  ~MpiDviPath() override { session_.stop_watching(); }
+  MpiDviPath(const MpiDviPath&) = delete;
+  MpiDviPath& operator=(const MpiDviPath&) = delete;
 
   std::string label() const override { return "dvi"; }
   std::string name() const override { return "DVI path"; }
@@ -36,11 +43,16 @@ class MpiDviPath final : public DisplayPath {
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override;
   std::optional<DisplayPictures> shown() const override;
   int frame_shown() const override { return shown_; }
+  // The line for rank `rank` gone; from any thread.
+  std::string lost_message(int rank) const;
 
-  bool down() override { return false; }
+  // A rank whose process is gone (MpiSession::lost_rank).
+  bool down() override;
   void settle(std::chrono::milliseconds) override {}
-  std::optional<std::string> failure_as_cause(int, const std::string&) override { return {}; }
-  std::optional<std::string> failure(int, const std::string&) override { return {}; }
+  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
+  std::optional<std::string> failure(int shown, const std::string& kept) override {
+    return failure_as_cause(shown, kept);
+  }
   std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
     return {};
   }
@@ -57,10 +69,20 @@ class MpiDviPath final : public DisplayPath {
   // One refresh over every column; the tick's decision.
   void refresh(HostSet& hosts, const RunWatch& watch);
   void end_columns();
+  // What the columns still answering show, each waited for up to `grace` (after a fault).
+  void fetch_answering(std::chrono::milliseconds grace) const;
+  // Receives column `c`'s answer to refresh `index`, watching the run; a column that does
+  // not answer within the stall timeout is named (the pipeservers it stopped taking frames
+  // from wait on it).
+  mpi_wire::Record column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch);
+  std::string kept() const;
   std::uint64_t groups_of_displays(std::uint64_t displays) const;
 
   const TileLayout& layout_;
   const RankMap& map_;
+  MpiSession& session_;
+  int stall_timeout_ms_;
+  std::optional<int> lost_;  // a rank that is gone
   RefreshClock clock_;
   double refresh_hz_;
   int frames_;
@@ -80,9 +102,10 @@ class MpiDviPath final : public DisplayPath {
   bool swap_due_ = false;
   bool unseen_ = false;  // notices taken in that no refresh has taken in yet
   bool ended_ = false;
-  int shown_ = -1;
+  std::atomic<int> shown_{-1};  // read by the session's watcher thread too
   std::uint64_t dropped_readies_ = 0;
-  std::map<int, RgbImage> pictures_;  // by display id: fetched from the columns
+  mutable std::map<int, RgbImage> pictures_;  // by display id: fetched from the columns
+  mutable bool fetched_after_fault_ = false;
 };
 
 }  // namespace l2

@@ -26,11 +26,11 @@ constexpr const char* kOnlyDvi = "--mpi: only --path dvi runs over MPI";
 
 class MpiBackends final : public RunBackends {
  public:
-  explicit MpiBackends(const RankMap& map) : map_(map) {}
+  MpiBackends(const RankMap& map, MpiSession& session) : map_(map), session_(session) {}
 
   std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                         const RunOptions& o) const override {
-    return std::make_unique<MpiDviPath>(layout, map_, o);
+    return std::make_unique<MpiDviPath>(layout, map_, session_, o);
   }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
     throw std::invalid_argument(kOnlyDvi);
@@ -41,10 +41,16 @@ class MpiBackends final : public RunBackends {
       const int rank = map_.pipeserver_rank(server);
       return std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
     });
+    for (Host& h : hosts.hosts()) {
+      const int rank = map_.pipeserver_rank(h.server);
+      const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
+      h.place = fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid);
+    }
   }
 
  private:
   const RankMap& map_;
+  MpiSession& session_;
 };
 
 // Becomes pipeserver `server`; returns only when that failed.
@@ -115,7 +121,7 @@ int run_wall_mpi(const RunOptions& o) {
   MpiSession session;
   if (const auto column = map->column_of(session.rank()))
     return run_column_rank(*layout, *map, *column, o.threads, session.rank());
-  const MpiBackends backends(*map);
+  const MpiBackends backends(*map, session);
   const int code = run_wall(o, backends);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
   return 0;

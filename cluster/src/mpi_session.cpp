@@ -1,12 +1,20 @@
 #include "cluster/mpi_session.hpp"
 
+#include <fcntl.h>
+#include <fmt/format.h>
 #include <mpi.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+
+#include "vizserver/socket.hpp"
 
 namespace l2 {
 namespace {
@@ -32,10 +40,99 @@ MpiSession::MpiSession() {
   MPI_Gather(&self, sizeof self, MPI_BYTE, all.data(), sizeof self, MPI_BYTE, 0, MPI_COMM_WORLD);
   if (rank_ != 0) all.push_back(self);
   for (const WireIdentity& w : all) identities_.push_back({w.pid, std::string(w.host.data())});
+  connect_liveness();
 }
 
 MpiSession::~MpiSession() {
+  stop_watching();
+  for (const int fd : liveness_) {
+    if (fd < 0) continue;
+    // An end, not a death: the coordinator no longer takes this connection's close as a fault.
+    if (rank_ != 0) send(fd, "e", 1, MSG_NOSIGNAL);
+    close(fd);
+  }
   MPI_Finalize();
+}
+
+void MpiSession::connect_liveness() {
+  std::array<char, 128> address{};
+  viz::Fd listener;
+  if (rank_ == 0) {
+    listener = viz::listen_tcp("0.0.0.0", 0);
+    std::array<char, kHostBytes> host{};
+    gethostname(host.data(), host.size() - 1);
+    const std::string text = fmt::format("{}:{}", host.data(), viz::local_port(listener.get()));
+    std::memcpy(address.data(), text.data(), std::min(text.size(), address.size() - 1));
+  }
+  MPI_Bcast(address.data(), static_cast<int>(address.size()), MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (rank_ != 0) {
+    const viz::Endpoint at = viz::parse_endpoint(address.data());
+    viz::Fd fd = viz::connect_tcp(at.host, at.port, std::chrono::seconds(30), "the coordinator");
+    const std::int32_t me = rank_;
+    if (send(fd.get(), &me, sizeof me, MSG_NOSIGNAL) != sizeof me)
+      throw std::runtime_error("cannot tell the coordinator who this rank is");
+    liveness_.push_back(fd.release());
+    return;
+  }
+  liveness_.assign(static_cast<std::size_t>(size_), -1);
+  // Every other rank connects now: wait for each (the listener is non-blocking).
+  fcntl(listener.get(), F_SETFL, fcntl(listener.get(), F_GETFL) & ~O_NONBLOCK);
+  for (int n = 1; n < size_; ++n) {
+    const int fd = accept(listener.get(), nullptr, nullptr);
+    std::int32_t who = -1;
+    if (fd < 0 || recv(fd, &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 || who >= size_)
+      throw std::runtime_error("a rank's liveness connection failed");
+    liveness_[static_cast<std::size_t>(who)] = fd;
+  }
+}
+
+void MpiSession::watch_ranks(std::function<std::string(int)> describe) {
+  describe_ = std::move(describe);
+  watcher_ = std::jthread([this](std::stop_token stop) { watch(stop); });
+}
+
+void MpiSession::stop_watching() {
+  if (!watcher_.joinable()) return;
+  watcher_.request_stop();
+  watcher_.join();
+}
+
+void MpiSession::watch(std::stop_token stop) {
+  while (!stop.stop_requested() && lost_ < 0) {
+    std::vector<pollfd> fds;
+    for (const int fd : liveness_) {
+      if (fd >= 0) fds.push_back({fd, POLLIN, 0});
+    }
+    if (fds.empty()) return;
+    if (poll(fds.data(), fds.size(), 5) <= 0) continue;
+    for (const pollfd& p : fds) {
+      if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const auto r = static_cast<std::size_t>(std::find(liveness_.begin(), liveness_.end(), p.fd) -
+                                              liveness_.begin());
+      char byte = 0;
+      if (recv(p.fd, &byte, 1, MSG_DONTWAIT) > 0) {  // the rank ended well
+        close(p.fd);
+        liveness_[r] = -1;
+        continue;
+      }
+      lost_ = static_cast<int>(r);
+      break;
+    }
+  }
+  if (lost_ < 0) return;
+  const std::string line = describe_(lost_);
+  for (int i = 0; i < 30 && !stop.stop_requested(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (claimed_) return;
+  }
+  if (!claimed_.exchange(true)) std::fprintf(stderr, "l2wall: %s\n", line.c_str());
+}
+
+std::optional<int> MpiSession::lost_rank() {
+  const int r = lost_;
+  if (r < 0) return std::nullopt;
+  claimed_ = true;
+  return r;
 }
 
 void MpiSession::abort_all(int code) {

@@ -194,8 +194,8 @@ std::string HostSet::late_hosts(int shown) const {
   std::string culprits;
   for (const Host& h : hosts_) {
     if (delivered(h) < shown + 1)
-      culprits += fmt::format("{}pipeserver {} (pid {})", culprits.empty() ? "" : ", ", h.server,
-                              h.process ? h.process->pid() : -1);
+      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.server,
+                              h.process ? fmt::format("pid {}", h.process->pid()) : h.place);
   }
   return culprits;
 }

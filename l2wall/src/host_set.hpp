@@ -33,6 +33,7 @@ struct Host {
   std::unique_ptr<ReadyChannel> channel;  // the serial line over the pty
   std::unique_ptr<DviReceiver> reader;    // shared memory on one machine
   std::optional<ChildProcess> process;
+  std::string place;  // a host this process did not start: "rank 3 on node-a, pid 4242"
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far
   int accepted = -1;           // the frame number of the last new frame the emulator took in

@@ -3,8 +3,12 @@
 // the coordinator, so a fault names where a rank ran).
 #pragma once
 
+#include <atomic>
+#include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace l2 {
@@ -28,13 +32,32 @@ class MpiSession {
   // On rank 0: every rank's identity, by rank. Elsewhere: only this rank's.
   const std::vector<RankIdentity>& identities() const { return identities_; }
 
+  // On rank 0, every rank holds a TCP connection to it for its whole life, beside MPI: when a
+  // rank's process is gone its connection closes (without the word a rank sends as it ends
+  // well), at once, and the coordinator can name the rank before mpirun ends the job. A thread
+  // watches them: after a loss it waits briefly for the run to take it up (lost_rank()), and
+  // otherwise prints `describe(rank)` itself ("l2wall: ..."), since mpirun may be ending this
+  // process already.
+  void watch_ranks(std::function<std::string(int rank)> describe);
+  void stop_watching();
+  // The rank found gone, or nullopt; the run reports it from here on.
+  std::optional<int> lost_rank();
+
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed.
   [[noreturn]] static void abort_all(int code);
 
  private:
+  void connect_liveness();
+  void watch(std::stop_token stop);
+
   int rank_ = 0;
   int size_ = 0;
   std::vector<RankIdentity> identities_;
+  std::vector<int> liveness_;  // rank 0: by rank, the connection's fd (-1: none); else one fd
+  std::function<std::string(int)> describe_;
+  std::atomic<int> lost_{-1};
+  std::atomic<bool> claimed_{false};
+  std::jthread watcher_;
 };
 
 // The rank and size mpirun gave this process, read from its environment before MPI_Init
