@@ -94,13 +94,14 @@ int run_live(const l2::LiveHostOptions& o) {
 int run_mpi_host(l2::LiveHostOptions& o) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
-  o.links = [](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
-    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server);
+  const auto sent = std::make_shared<std::uint64_t>(0);
+  o.links = [sent](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
+    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server, sent);
     return l2::HostLinks{nullptr, std::move(mpi.link), std::move(mpi.channel)};
   };
   const int code = run_live(o);
   if (code != 0) l2::MpiSession::abort_all(code);
-  l2::report_host_done();
+  l2::report_host_done(*sent);
   return 0;
 #else
   (void)o;

@@ -21,10 +21,11 @@ void check_link(int code, const char* what, int peer) {
 }  // namespace
 
 MpiDviSender::MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width,
-                           int height)
+                           int height, std::shared_ptr<std::uint64_t> bytes_sent)
     : columns_(std::move(column_ranks)),
       coordinator_(coordinator_rank),
-      message_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel) {}
+      message_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
+      bytes_sent_(std::move(bytes_sent)) {}
 
 std::span<std::uint8_t> MpiDviSender::back_frame() {
   return std::span<std::uint8_t>(message_).subspan(kSequenceBytes);
@@ -41,7 +42,7 @@ std::uint64_t MpiDviSender::publish() {
   }
   check_link(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
              "sending a frame", columns_.empty() ? -1 : columns_.front());
-  bytes_sent_ += message_.size() * columns_.size();
+  *bytes_sent_ += message_.size() * columns_.size();
   mpi_wire::send({static_cast<std::int64_t>(sequence_)}, coordinator_, mpi_wire::kNotice);
   return sequence_;
 }

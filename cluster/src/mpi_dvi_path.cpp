@@ -106,6 +106,7 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
   for (const Host& h : hosts.hosts()) tick.push_back(static_cast<std::int64_t>(h.sequence));
   for (int c = 0; c < map_.columns; ++c)
     mpi_wire::send(tick, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += tick.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
 
   observations_.assign(static_cast<std::size_t>(map_.mesh_inputs), FrameObservation{});
   stamps_.assign(static_cast<std::size_t>(map_.mesh_inputs), -1);
@@ -114,6 +115,7 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
     const Record answer = column_answer(c, index, hosts, watch);
+    control_bytes_ += answer.size() * sizeof(std::int64_t);
     Reader in(answer);
     if (in.next() != index)
       throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
@@ -145,6 +147,7 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
   route.insert(route.end(), decision_.completed_groups.begin(), decision_.completed_groups.end());
   for (int c = 0; c < map_.columns; ++c)
     mpi_wire::send(route, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += route.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
   if (auto broken = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_))
     throw RunFault(*broken);
 }
@@ -260,6 +263,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
 }
 
 void MpiDviPath::finish() {
+  std::uint64_t frame_bytes = 0;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
   for (int s = 0; s < map_.servers; ++s) {
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
@@ -268,13 +272,20 @@ void MpiDviPath::finish() {
                                    map_.pipeserver_rank(s)));
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    mpi_wire::receive(map_.pipeserver_rank(s), mpi_wire::kDone);
+    const Record done = mpi_wire::receive(map_.pipeserver_rank(s), mpi_wire::kDone);
+    frame_bytes += static_cast<std::uint64_t>(Reader(done).next());
   }
   end_columns();
   std::printf(
       "swap lock: every display of each of %zu group(s) showed the same frame in all %llu "
       "refreshes, over %d board column rank(s)\n",
       groups_.size(), static_cast<unsigned long long>(refreshes_), map_.columns);
+  const double frames = frames_ > 0 ? frames_ : 1;
+  std::printf(
+      "network: %.3f MB per frame of DVI frames (each to the columns it feeds), %.2f KB per "
+      "frame of refresh records between the coordinator and the columns\n",
+      static_cast<double>(frame_bytes) / frames / 1e6,
+      static_cast<double>(control_bytes_) / frames / 1e3);
 }
 
 void MpiDviPath::end_columns() {

@@ -99,6 +99,7 @@ class MpiDviPath final : public DisplayPath {
   std::vector<int> stamp_shown_;                // by host: its stamp on its display
   std::vector<DisplayShown> displays_shown_;
   std::uint64_t refreshes_ = 0;
+  std::uint64_t control_bytes_ = 0;  // refresh records to and from the columns
   bool swap_due_ = false;
   bool unseen_ = false;  // notices taken in that no refresh has taken in yet
   bool ended_ = false;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -19,22 +20,21 @@ namespace l2 {
 
 class MpiDviSender final : public DviSender {
  public:
-  MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width, int height);
+  // `bytes_sent` counts the bytes of frames sent (every column's copy), for the run's figures.
+  MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width, int height,
+               std::shared_ptr<std::uint64_t> bytes_sent);
 
   std::span<std::uint8_t> back_frame() override;
   // Sends the back frame to every column (returning once they have it, so the frame can be
   // drawn again), then the notice to the coordinator. Throws std::runtime_error when MPI fails.
   std::uint64_t publish() override;
 
-  // Bytes of frames sent so far (every column's copy counted).
-  std::uint64_t bytes_sent() const { return bytes_sent_; }
-
  private:
   std::vector<int> columns_;
   int coordinator_;
   std::vector<std::uint8_t> message_;  // sequence number, then the frame
   std::uint64_t sequence_ = 0;
-  std::uint64_t bytes_sent_ = 0;
+  std::shared_ptr<std::uint64_t> bytes_sent_;
 };
 
 // One input of a board column. A receive is always posted, so a frame moves while the column

@@ -2,6 +2,7 @@
 // tiles land on, its READYs from the coordinator.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "dvi_link/dvi_link.hpp"
@@ -15,10 +16,13 @@ struct MpiHostLinks {
   std::unique_ptr<ReadyChannel> channel;
 };
 
-// For pipeserver `server` of `layout`; MPI must be initialised (MpiSession).
-MpiHostLinks mpi_host_links(const TileLayout& layout, int server);
+// For pipeserver `server` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
+// counts the bytes of the frames it sends.
+MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
+                            std::shared_ptr<std::uint64_t> bytes_sent);
 
-// Tells the coordinator this host ended well, its report written (it reads the reports next).
-void report_host_done();
+// Tells the coordinator this host ended well, its report written (it reads the reports next),
+// and how many bytes of frames it sent.
+void report_host_done(std::uint64_t bytes_sent);
 
 }  // namespace l2
