@@ -91,13 +91,18 @@ int run_live(const l2::LiveHostOptions& o) {
 }
 
 // A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
-int run_mpi_host(l2::LiveHostOptions& o) {
+int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const auto sent = std::make_shared<std::uint64_t>(0);
-  o.links = [sent](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
+  o.links = [sent, tiles](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
     l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server, sent);
-    return l2::HostLinks{nullptr, std::move(mpi.link), std::move(mpi.channel)};
+    l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
+    if (tiles) {
+      links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
+          l2::MpiTileSender(layout, plan.server));
+    }
+    return links;
   };
   const int code = run_live(o);
   if (code != 0) l2::MpiSession::abort_all(code);
@@ -105,6 +110,7 @@ int run_mpi_host(l2::LiveHostOptions& o) {
   return 0;
 #else
   (void)o;
+  (void)tiles;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -174,6 +180,11 @@ int main(int argc, char** argv) {
                   "live: a rank of `mpirun ... l2wall run --mpi`: frames go to the board column "
                   "ranks and READY comes from the coordinator as MPI messages (instead of "
                   "--link and --backchannel)");
+  bool mpi_viz = false;
+  group->add_flag("--mpi-viz", mpi_viz,
+                  "live, with --mpi: also send every tile to the board column rank owning its "
+                  "display (the visualization-server path over MPI), waiting for SWAPPED from "
+                  "the coordinator");
   // Every live option needs --live: without it they were ignored and one frame was written.
   for (CLI::Option* option : group->get_options()) {
     if (option != live_flag) option->needs(live_flag);
@@ -204,7 +215,7 @@ int main(int argc, char** argv) {
     live_options.scene_options = o.scene_options;
     if (dvi)
       live_options.links = l2::shared_memory_links(live_options.link, live_options.backchannel);
-    if (mpi) return run_mpi_host(live_options);
+    if (mpi) return run_mpi_host(live_options, mpi_viz);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <functional>
+#include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cluster/mpi_dvi_link.hpp"
@@ -10,6 +14,7 @@
 #include "frame_stamp.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
+#include "vizserver/frame_assembler.hpp"
 
 namespace l2 {
 namespace {
@@ -25,7 +30,7 @@ struct ColumnInput {
 
 class Column {
  public:
-  Column(const TileLayout& layout, const RankMap& map, int column, int threads)
+  Column(const TileLayout& layout, const RankMap& map, int column, int threads, bool composite)
       : layout_(layout),
         map_(map),
         column_(column),
@@ -43,6 +48,12 @@ class Column {
       inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
                                                              plan.fb_height)});
     }
+    if (composite) {
+      std::vector<std::pair<int, int>> sizes;
+      for (const Display& d : layout.wall.displays) sizes.emplace_back(d.width, d.height);
+      assembler_.emplace(std::move(sizes), map.servers);
+      for (int s = 0; s < map.servers; ++s) assembler_->connect(s);
+    }
     std::vector<DisplaySpec> all;
     for (const Display& d : layout.wall.displays)
       all.push_back({d.id, d.width, d.height, d.swap_group});
@@ -56,7 +67,8 @@ class Column {
 
   void run() {
     for (;;) {
-      const Record command = mpi_wire::receive(RankMap::kCoordinator, mpi_wire::kCommand);
+      const Record command =
+          mpi_wire::receive_watched(RankMap::kCoordinator, mpi_wire::kCommand, pump_);
       Reader in(command);
       switch (in.next()) {
         case mpi_wire::kTick:
@@ -67,6 +79,9 @@ class Column {
           break;
         case mpi_wire::kFetch:
           send_pictures();
+          break;
+        case mpi_wire::kFetchComposed:
+          send_composed(static_cast<std::uint32_t>(in.next()));
           break;
         case mpi_wire::kEnd:
           return;
@@ -104,7 +119,7 @@ class Column {
     std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
     for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
     for (ColumnInput& input : inputs_) {
-      input.receiver->take(sequences[static_cast<std::size_t>(input.server)], [] {});
+      input.receiver->take(sequences[static_cast<std::size_t>(input.server)], pump_);
       const auto f = input.receiver->latest();
       InputFrame& frame = frames_[static_cast<std::size_t>(input.server)];
       frame = {};
@@ -173,6 +188,58 @@ class Column {
     }
   }
 
+  // Takes in every tile and frame end waiting; sends the coordinator each frame composed.
+  void pump_tiles() {
+    if (!assembler_) return;
+    for (;;) {
+      int flag = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, mpi_wire::kTile, MPI_COMM_WORLD, &flag, &status);
+      if (!flag) break;
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      tile_bytes_.resize(static_cast<std::size_t>(bytes));
+      MPI_Recv(tile_bytes_.data(), bytes, MPI_BYTE, status.MPI_SOURCE, mpi_wire::kTile,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi_wire::TileMessage m;
+      if (tile_bytes_.size() < sizeof m) throw std::runtime_error("a tile message too short");
+      std::memcpy(&m, tile_bytes_.data(), sizeof m);
+      const auto server = map_.server_of(status.MPI_SOURCE);
+      if (!server) throw std::runtime_error("a tile from a rank that is no pipeserver");
+      std::optional<std::string> error;
+      if (m.kind == mpi_wire::kTileKind) {
+        viz::ReceivedTile tile{
+            {m.frame, m.display, m.dx, m.dy, m.w, m.h},
+            std::vector<std::uint8_t>(tile_bytes_.begin() + sizeof m, tile_bytes_.end())};
+        if (tile.pixels.size() != tile.header.pixel_bytes())
+          throw std::runtime_error("a tile message of the wrong size");
+        error = assembler_->add_tile(*server, std::move(tile));
+      } else {
+        error =
+            assembler_->finish(*server, {static_cast<std::uint32_t>(*server), m.frame, m.tiles});
+      }
+      if (error) throw std::runtime_error(*error);
+    }
+    for (viz::ComposedFrame& f : assembler_->take_complete()) {
+      mpi_wire::send({static_cast<std::int64_t>(f.frame)}, RankMap::kCoordinator,
+                     mpi_wire::kComposed);
+      composed_[f.frame] = std::move(f.displays);
+      while (composed_.size() > 4) composed_.erase(composed_.begin());  // the run takes each
+    }
+  }
+
+  void send_composed(std::uint32_t frame) {
+    const auto it = composed_.find(frame);
+    if (it == composed_.end()) throw std::runtime_error("asked for a frame not composed here");
+    for (std::size_t i = 0; i < layout_.wall.displays.size(); ++i) {
+      const int id = layout_.wall.displays[i].id;
+      if (router_.index_of_display(id) < 0) continue;  // another column's
+      const RgbImage& picture = it->second[i];
+      MPI_Send(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
+               RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
+    }
+  }
+
   void send_pictures() {
     for (int d = 0; d < router_.display_count(); ++d) {
       const RgbImage& front = router_.display(d).front();
@@ -191,12 +258,17 @@ class Column {
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
   std::vector<DisplayFrameStats> finished_;
+  std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
+  std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
+  std::vector<std::uint8_t> tile_bytes_;
+  const std::function<void()> pump_ = [this] { pump_tiles(); };
 };
 
 }  // namespace
 
-int run_column(const TileLayout& layout, const RankMap& map, int column, int threads) {
-  Column c(layout, map, column, threads);
+int run_column(const TileLayout& layout, const RankMap& map, int column, int threads,
+               bool composite) {
+  Column c(layout, map, column, threads, composite);
   c.run();
   return 0;
 }

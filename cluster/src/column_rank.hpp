@@ -3,6 +3,8 @@
 // up-to-8 displays, and swapping them when the coordinator says so. It runs the coordinator's
 // commands in order: a refresh's take-in and scan (answered with what it saw), the route and
 // completion decided from every column's observations, a fetch of its displays, the end.
+// With the visualization-server path it also composites the tiles the pipeservers send for
+// its displays (the compositing server's FrameAssembler), between and during commands.
 #pragma once
 
 #include "cluster/rank_map.hpp"
@@ -10,7 +12,9 @@
 
 namespace l2 {
 
-// Returns the exit code.
-int run_column(const TileLayout& layout, const RankMap& map, int column, int threads);
+// Returns the exit code. `composite`: the visualization-server path runs too, and this column
+// composites the tiles of its displays.
+int run_column(const TileLayout& layout, const RankMap& map, int column, int threads,
+               bool composite);
 
 }  // namespace l2

@@ -15,6 +15,7 @@
 #include "host_set.hpp"
 #include "image/folders.hpp"
 #include "mpi_dvi_path.hpp"
+#include "mpi_viz_path.hpp"
 #include "run_backends.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -22,18 +23,21 @@
 namespace l2 {
 namespace {
 
-constexpr const char* kOnlyDvi = "--mpi: only --path dvi runs over MPI";
+constexpr const char* kOnlyDvi =
+    "--mpi: --path vizserver does not run over MPI alone; --path dvi or both";
 
 class MpiBackends final : public RunBackends {
  public:
-  MpiBackends(const RankMap& map, MpiSession& session) : map_(map), session_(session) {}
+  MpiBackends(const TileLayout& layout, const RankMap& map, MpiSession& session,
+              const RunOptions& o)
+      : layout_(layout), map_(map), session_(session), stall_timeout_ms_(o.stall_timeout_ms) {}
 
   std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                         const RunOptions& o) const override {
     return std::make_unique<MpiDviPath>(layout, map_, session_, o);
   }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
-    throw std::invalid_argument(kOnlyDvi);
+    return std::make_unique<MpiVizPath>(layout_, map_, stall_timeout_ms_);
   }
   void start_hosts(HostSet& hosts, const HostLaunch& launch,
                    const TileLayout& layout) const override {
@@ -49,8 +53,10 @@ class MpiBackends final : public RunBackends {
   }
 
  private:
+  const TileLayout& layout_;
   const RankMap& map_;
   MpiSession& session_;
+  int stall_timeout_ms_;
 };
 
 // Becomes pipeserver `server`; returns only when that failed.
@@ -60,6 +66,7 @@ int exec_pipeserver(const RunOptions& o, int server) {
   h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", server)).string();
   HostLaunch launch = host_launch(o);
   launch.extra_args = {"--mpi"};
+  if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.
   make_folders(o.out, "--out");
   const std::vector<std::string> args = host_argv(launch, h);
@@ -72,10 +79,10 @@ int exec_pipeserver(const RunOptions& o, int server) {
   return 1;
 }
 
-int run_column_rank(const TileLayout& layout, const RankMap& map, int column, int threads,
+int run_column_rank(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
                     int rank) {
   try {
-    return run_column(layout, map, column, threads);
+    return run_column(layout, map, column, o.threads, o.path == "both");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map.role(rank).c_str(), rank, e.what());
     MpiSession::abort_all(1);
@@ -85,7 +92,7 @@ int run_column_rank(const TileLayout& layout, const RankMap& map, int column, in
 }  // namespace
 
 std::optional<std::string> mpi_options_error(const RunOptions& o) {
-  if (o.path != "dvi") return kOnlyDvi;
+  if (o.path == "vizserver") return kOnlyDvi;
   if (!o.show.empty()) return "--mpi: --show is not available over MPI";
   if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
   return std::nullopt;
@@ -120,8 +127,8 @@ int run_wall_mpi(const RunOptions& o) {
 
   MpiSession session;
   if (const auto column = map->column_of(session.rank()))
-    return run_column_rank(*layout, *map, *column, o.threads, session.rank());
-  const MpiBackends backends(*map, session);
+    return run_column_rank(*layout, *map, *column, o, session.rank());
+  const MpiBackends backends(*layout, *map, session, o);
   const int code = run_wall(o, backends);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
   return 0;

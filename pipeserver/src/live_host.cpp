@@ -65,7 +65,7 @@ struct Report {
 
 // The visualization-server path: every tile of the frame, read back from the framebuffer, goes
 // to the compositing server over TCP.
-void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan, int frame) {
+void send_tiles(TileSink& sender, FramePixels fb, const ServerPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {
     const Rect& r = t.tile.on_display;
     const viz::TileTarget target{t.tile.display, r.x, r.y, r.w, r.h};
@@ -75,13 +75,13 @@ void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan,
                       static_cast<std::uint32_t>(plan.tiles.size()));
 }
 
-std::optional<viz::TileSender> connect_viz(const std::string& address, int server,
-                                           int display_count) {
-  if (address.empty()) return std::nullopt;
+std::unique_ptr<TileSink> connect_viz(const std::string& address, int server, int display_count) {
+  if (address.empty()) return nullptr;
   const viz::Endpoint at = viz::parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
-  return viz::TileSender::connect(at.host, at.port, server, display_count, options);
+  return std::make_unique<TileSinkOf<viz::TileSender>>(
+      viz::TileSender::connect(at.host, at.port, server, display_count, options));
 }
 
 }  // namespace
@@ -104,11 +104,12 @@ int run_live_host(const LiveHostOptions& o) {
   auto scene = make_scene(o.scene, o.scene_options);
   Pipeserver ps(layout, o.server);
   const ServerPlan& plan = ps.plan();
-  const HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
+  HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
   DviSender* const link = links.link.get();
   ReadyChannel* const channel = links.channel.get();
-  std::optional<viz::TileSender> sender =
-      connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
+  const std::unique_ptr<TileSink> sender =
+      links.tiles ? std::move(links.tiles)
+                  : connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
 

@@ -3,6 +3,9 @@
 // READY of the previous frame on its serial back-channel before publishing (spec §6.1).
 #pragma once
 
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -12,8 +15,41 @@
 #include "pipeserver/scene.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "vizserver/tile_sender.hpp"
 
 namespace l2 {
+
+// Where a host's tiles go on the visualization-server path: a compositing server over TCP
+// (viz::TileSender), or the board columns owning their displays over MPI.
+class TileSink {
+ public:
+  virtual ~TileSink() = default;
+  virtual void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                         std::size_t stride) = 0;
+  virtual void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) = 0;
+  // Throws (viz::VizError for the compositing server) when `frame` is not swapped in time.
+  virtual void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) = 0;
+};
+
+// A TileSink of any sender with these three calls.
+template <typename Sender>
+class TileSinkOf final : public TileSink {
+ public:
+  explicit TileSinkOf(Sender sender) : sender_(std::move(sender)) {}
+  void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                 std::size_t stride) override {
+    sender_.send_tile(frame, tile, rgb, stride);
+  }
+  void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) override {
+    sender_.finish_frame(frame, tiles_sent);
+  }
+  void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) override {
+    sender_.wait_swapped(frame, timeout);
+  }
+
+ private:
+  Sender sender_;
+};
 
 // The DVI link a host publishes its frames on and the back-channel its READYs come on: shared
 // memory and a serial line on one machine, MPI messages in a run across machines. Made once,
@@ -22,6 +58,7 @@ struct HostLinks {
   std::shared_ptr<void> keeps;  // what the two use, so it outlives them (the serial port)
   std::unique_ptr<DviSender> link;
   std::unique_ptr<ReadyChannel> channel;
+  std::unique_ptr<TileSink> tiles;  // the visualization-server path over MPI; else --viz
 };
 using MakeHostLinks = std::function<HostLinks(const TileLayout& layout, const ServerPlan& plan)>;
 

@@ -2,12 +2,16 @@
 // tiles land on, its READYs from the coordinator.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "dvi_link/dvi_link.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "vizserver/tile_sender.hpp"
 
 namespace l2 {
 
@@ -20,6 +24,23 @@ struct MpiHostLinks {
 // counts the bytes of the frames it sends.
 MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
                             std::shared_ptr<std::uint64_t> bytes_sent);
+
+// The visualization-server path over MPI, host side: each tile to the board column owning its
+// display, the end of each frame to every column, SWAPPED from the coordinator.
+class MpiTileSender {
+ public:
+  MpiTileSender(const TileLayout& layout, int server);
+  void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                 std::size_t stride);
+  void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
+  // Throws std::runtime_error when no SWAPPED for `frame` (or later) came within `timeout`.
+  void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout);
+
+ private:
+  std::vector<int> column_ranks_;
+  std::vector<std::uint8_t> message_;
+  std::optional<std::uint32_t> swapped_;
+};
 
 // Tells the coordinator this host ended well, its report written (it reads the reports next),
 // and how many bytes of frames it sent.

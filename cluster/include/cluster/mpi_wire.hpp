@@ -19,11 +19,26 @@ enum Tag : int {
   kCommand = 5,      // coordinator -> column: a Command record
   kObservation = 6,  // column -> coordinator: what it saw in a refresh
   kPicture = 7,      // column -> coordinator: one display's front buffer
-  kDone = 8,         // pipeserver -> coordinator: its exit code, once its report is complete
+  kDone = 8,         // pipeserver -> coordinator: bytes of frames it sent, its report complete
+  kTile = 9,         // pipeserver -> column: a TileMessage header, then the tile's pixels
+  kComposed = 10,    // column -> coordinator: the frame its compositing completed
+  kSwapped = 11,     // coordinator -> pipeserver: frames up to this one are composed everywhere
 };
 
+// The visualization-server path over MPI: a tile (kind 1, to the column owning its display)
+// or the end of a pipeserver's frame (kind 2, to every column), one tag, so they keep order.
+struct TileMessage {
+  std::int32_t kind = 0;
+  std::uint32_t frame = 0;
+  std::uint32_t display = 0;
+  std::int32_t dx = 0, dy = 0;
+  std::uint32_t w = 0, h = 0;
+  std::uint32_t tiles = 0;  // kind 2: how many tiles the pipeserver sent for the frame
+};
+inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2;
+
 // What the coordinator asks of a column (the first word of a record).
-enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4 };
+enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4, kFetchComposed = 5 };
 
 using Record = std::vector<std::int64_t>;
 
