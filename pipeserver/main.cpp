@@ -95,18 +95,19 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const auto sent = std::make_shared<std::uint64_t>(0);
-  o.links = [sent, tiles](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
+  const auto tiles_sent = std::make_shared<std::uint64_t>(0);
+  o.links = [sent, tiles, tiles_sent](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
     l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server, sent);
     l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
-          l2::MpiTileSender(layout, plan.server));
+          l2::MpiTileSender(layout, tiles_sent));
     }
     return links;
   };
   const int code = run_live(o);
   if (code != 0) l2::MpiSession::abort_all(code);
-  l2::report_host_done(*sent);
+  l2::report_host_done(*sent, *tiles_sent);
   return 0;
 #else
   (void)o;

@@ -256,6 +256,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
   // columns still answering show now.
   if (!fetched_after_fault_ && !ended_) {
     fetched_after_fault_ = true;
+    session_.stop_watching();  // the fault is named: later losses are its effects
     fetch_answering(std::chrono::milliseconds(300));
   }
   if (pictures_.size() != layout_.wall.displays.size()) return std::nullopt;
@@ -263,7 +264,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
 }
 
 void MpiDviPath::finish() {
-  std::uint64_t frame_bytes = 0;
+  std::uint64_t frame_bytes = 0, tile_bytes = 0;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
   for (int s = 0; s < map_.servers; ++s) {
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
@@ -273,7 +274,9 @@ void MpiDviPath::finish() {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     const Record done = mpi_wire::receive(map_.pipeserver_rank(s), mpi_wire::kDone);
-    frame_bytes += static_cast<std::uint64_t>(Reader(done).next());
+    Reader in(done);
+    frame_bytes += static_cast<std::uint64_t>(in.next());
+    tile_bytes += static_cast<std::uint64_t>(in.next());
   }
   end_columns();
   std::printf(
@@ -286,6 +289,10 @@ void MpiDviPath::finish() {
       "frame of refresh records between the coordinator and the columns\n",
       static_cast<double>(frame_bytes) / frames / 1e6,
       static_cast<double>(control_bytes_) / frames / 1e3);
+  if (tile_bytes > 0) {
+    std::printf("network: %.3f MB per frame of tiles to the columns (vizserver path)\n",
+                static_cast<double>(tile_bytes) / frames / 1e6);
+  }
 }
 
 void MpiDviPath::end_columns() {

@@ -30,7 +30,8 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
   return links;
 }
 
-MpiTileSender::MpiTileSender(const TileLayout& layout, int) {
+MpiTileSender::MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint64_t> bytes_sent)
+    : bytes_sent_(std::move(bytes_sent)) {
   const RankMap map = make_rank_map(layout);
   for (int c = 0; c < map.columns; ++c) column_ranks_.push_back(map.column_rank(c));
 }
@@ -55,6 +56,7 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
   if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,
                MPI_COMM_WORLD) != MPI_SUCCESS)
     throw std::runtime_error(fmt::format("sending a tile to rank {} failed", to));
+  *bytes_sent_ += message_.size();
 }
 
 void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) {
@@ -62,6 +64,7 @@ void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) 
   for (const int to : column_ranks_) {
     if (MPI_Send(&m, sizeof m, MPI_BYTE, to, mpi_wire::kTile, MPI_COMM_WORLD) != MPI_SUCCESS)
       throw std::runtime_error(fmt::format("sending the end of a frame to rank {} failed", to));
+    *bytes_sent_ += sizeof m;
   }
 }
 
@@ -80,8 +83,9 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
   }
 }
 
-void report_host_done(std::uint64_t bytes_sent) {
-  mpi_wire::send({static_cast<std::int64_t>(bytes_sent)}, RankMap::kCoordinator, mpi_wire::kDone);
+void report_host_done(std::uint64_t frame_bytes, std::uint64_t tile_bytes) {
+  mpi_wire::send({static_cast<std::int64_t>(frame_bytes), static_cast<std::int64_t>(tile_bytes)},
+                 RankMap::kCoordinator, mpi_wire::kDone);
 }
 
 }  // namespace l2

@@ -95,6 +95,13 @@ void MpiSession::stop_watching() {
   if (!watcher_.joinable()) return;
   watcher_.request_stop();
   watcher_.join();
+  report_unclaimed();
+}
+
+void MpiSession::report_unclaimed() {
+  const std::lock_guard lock(line_mutex_);
+  if (!lost_line_.empty() && !claimed_.exchange(true))
+    std::fprintf(stderr, "l2wall: %s\n", lost_line_.c_str());
 }
 
 void MpiSession::watch(std::stop_token stop) {
@@ -115,17 +122,20 @@ void MpiSession::watch(std::stop_token stop) {
         liveness_[r] = -1;
         continue;
       }
+      {
+        const std::lock_guard lock(line_mutex_);
+        lost_line_ = describe_(static_cast<int>(r));
+      }
       lost_ = static_cast<int>(r);
       break;
     }
   }
   if (lost_ < 0) return;
-  const std::string line = describe_(lost_);
-  for (int i = 0; i < 30 && !stop.stop_requested(); ++i) {
+  // The run takes the loss up within milliseconds when it can; if it does not, this process
+  // may be ending already (mpirun's SIGTERM): the line must be out first.
+  for (int i = 0; i < 30 && !stop.stop_requested() && !claimed_; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    if (claimed_) return;
-  }
-  if (!claimed_.exchange(true)) std::fprintf(stderr, "l2wall: %s\n", line.c_str());
+  report_unclaimed();
 }
 
 std::optional<int> MpiSession::lost_rank() {

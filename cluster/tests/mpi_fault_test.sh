@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # A rank of an MPI run killed (SIGKILL) or stopped (SIGSTOP) mid-run, on the default wall
 # (6 ranks: coordinator, pipeservers 0-3 as ranks 1-4, board column 0 as rank 5): the run must
-# end within the stall timeout (plus mpirun's teardown) with one line naming the rank, its role,
-# its host and the frame, exit non-zero, and leave no process of the run behind.
+# end within the stall timeout (plus saving the displays and mpirun's teardown) with one line
+# naming the rank, its role, its host and the frame, exit non-zero, and leave no process of the
+# run behind. The hosts wait longer for READY than that, so none gives up first.
 # Usage: mpi_fault_test.sh L2WALL OUT
 set -euo pipefail
 l2wall=$1 out=$2
 stall_ms=2000
-slack_ms=3000  # MPI_Abort and mpirun's teardown of every rank
+slack_ms=4000  # saving the displays, MPI_Abort and mpirun's teardown of every rank
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 rm -rf "$out" && mkdir -p "$out"
 
@@ -28,7 +29,8 @@ rank_pid() {
 fault() {
   local signal=$1 rank=$2 role=$3 dir="$out/$1-$2"
   mpirun --oversubscribe --mca btl self,tcp -np 6 "$l2wall" run --mpi --frames 100000 \
-    --stall-timeout $stall_ms --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+    --stall-timeout $stall_ms --ready-timeout 3000 --out "$dir" --no-progress >"$dir.out" \
+    2>"$dir.err" &
   local run=$!
   # Until the displays have swapped a few frames (the reports grow a line per frame).
   for _ in $(seq 600); do

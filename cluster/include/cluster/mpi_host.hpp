@@ -29,7 +29,8 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
 // display, the end of each frame to every column, SWAPPED from the coordinator.
 class MpiTileSender {
  public:
-  MpiTileSender(const TileLayout& layout, int server);
+  // `bytes_sent` counts the bytes of the tile messages it sends.
+  MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint64_t> bytes_sent);
   void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
                  std::size_t stride);
   void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
@@ -40,10 +41,11 @@ class MpiTileSender {
   std::vector<int> column_ranks_;
   std::vector<std::uint8_t> message_;
   std::optional<std::uint32_t> swapped_;
+  std::shared_ptr<std::uint64_t> bytes_sent_;
 };
 
 // Tells the coordinator this host ended well, its report written (it reads the reports next),
-// and how many bytes of frames it sent.
-void report_host_done(std::uint64_t bytes_sent);
+// and how many bytes of frames and of tiles it sent.
+void report_host_done(std::uint64_t frame_bytes, std::uint64_t tile_bytes);
 
 }  // namespace l2

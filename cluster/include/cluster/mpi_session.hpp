@@ -49,6 +49,8 @@ class MpiSession {
  private:
   void connect_liveness();
   void watch(std::stop_token stop);
+  // Prints the line of a rank found gone, unless the run reported it.
+  void report_unclaimed();
 
   int rank_ = 0;
   int size_ = 0;
@@ -57,6 +59,8 @@ class MpiSession {
   std::function<std::string(int)> describe_;
   std::atomic<int> lost_{-1};
   std::atomic<bool> claimed_{false};
+  std::mutex line_mutex_;
+  std::string lost_line_;
   std::jthread watcher_;
 };
 
