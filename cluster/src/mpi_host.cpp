@@ -34,6 +34,7 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint
     : bytes_sent_(std::move(bytes_sent)) {
   const RankMap map = make_rank_map(layout);
   for (int c = 0; c < map.columns; ++c) column_ranks_.push_back(map.column_rank(c));
+  sent_.assign(column_ranks_.size(), 0);
 }
 
 void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
@@ -52,16 +53,20 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
   for (int y = 0; y < t.h; ++y)
     std::memcpy(message_.data() + sizeof m + row * static_cast<std::size_t>(y),
                 rgb + stride * static_cast<std::size_t>(y), row);
-  const int to = column_ranks_[static_cast<std::size_t>(Mesh::column_of_display(t.display))];
+  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
+  const int to = column_ranks_[column];
+  ++sent_[column];
   if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,
                MPI_COMM_WORLD) != MPI_SUCCESS)
     throw std::runtime_error(fmt::format("sending a tile to rank {} failed", to));
   *bytes_sent_ += message_.size();
 }
 
-void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) {
-  const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, tiles_sent};
-  for (const int to : column_ranks_) {
+void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t) {
+  for (std::size_t c = 0; c < column_ranks_.size(); ++c) {
+    const int to = column_ranks_[c];
+    const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, sent_[c]};
+    sent_[c] = 0;
     if (MPI_Send(&m, sizeof m, MPI_BYTE, to, mpi_wire::kTile, MPI_COMM_WORLD) != MPI_SUCCESS)
       throw std::runtime_error(fmt::format("sending the end of a frame to rank {} failed", to));
     *bytes_sent_ += sizeof m;

@@ -26,7 +26,8 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
                             std::shared_ptr<std::uint64_t> bytes_sent);
 
 // The visualization-server path over MPI, host side: each tile to the board column owning its
-// display, the end of each frame to every column, SWAPPED from the coordinator.
+// display, the end of each frame to every column (with the number of tiles it sent that
+// column), SWAPPED from the coordinator.
 class MpiTileSender {
  public:
   // `bytes_sent` counts the bytes of the tile messages it sends.
@@ -39,6 +40,7 @@ class MpiTileSender {
 
  private:
   std::vector<int> column_ranks_;
+  std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
   std::vector<std::uint8_t> message_;
   std::optional<std::uint32_t> swapped_;
   std::shared_ptr<std::uint64_t> bytes_sent_;
