@@ -16,6 +16,15 @@
 
 namespace {
 
+std::optional<std::string> mpi_error(const l2::RunOptions& o) {
+#ifdef L2_HAVE_MPI
+  return l2::mpi_options_error(o);
+#else
+  (void)o;
+  return "--mpi: this l2wall was built without MPI";
+#endif
+}
+
 int run_over_mpi(const l2::RunOptions& o) {
 #ifdef L2_HAVE_MPI
   return l2::run_wall_mpi(o);
@@ -145,8 +154,9 @@ int main(int argc, char** argv) {
   l2::SceneOptions scene;
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
   // Options that make no run together are usage errors too (exit 2), not a failed run.
-  run->callback([&o, &scene_options] {
+  run->callback([&o, &scene_options, &mpi] {
     if (auto error = l2::run_options_error(o)) throw CLI::ValidationError(*error);
+    if (auto error = mpi ? mpi_error(o) : std::nullopt) throw CLI::ValidationError(*error);
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
   });
