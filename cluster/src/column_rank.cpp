@@ -33,7 +33,6 @@ class Column {
   Column(const TileLayout& layout, const RankMap& map, int column, int threads, bool composite)
       : layout_(layout),
         map_(map),
-        column_(column),
         pool_(threads),
         router_(mesh(layout.wall), specs(layout.wall, map.displays_of_column[column]), pool_),
         frames_(static_cast<std::size_t>(map.mesh_inputs)),
@@ -250,7 +249,6 @@ class Column {
 
   const TileLayout& layout_;
   const RankMap& map_;
-  int column_;
   WorkerPool pool_;
   Router router_;
   std::vector<ColumnInput> inputs_;
