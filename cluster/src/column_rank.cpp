@@ -222,6 +222,10 @@ class Column {
     for (viz::ComposedFrame& f : assembler_->take_complete()) {
       mpi_wire::send({static_cast<std::int64_t>(f.frame)}, RankMap::kCoordinator,
                      mpi_wire::kComposed);
+      // Only this column's displays are kept (the assembler composes every display's image).
+      for (std::size_t i = 0; i < f.displays.size(); ++i) {
+        if (router_.index_of_display(layout_.wall.displays[i].id) < 0) f.displays[i] = RgbImage();
+      }
       composed_[f.frame] = std::move(f.displays);
       while (composed_.size() > 4) composed_.erase(composed_.begin());  // the run takes each
     }
