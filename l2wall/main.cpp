@@ -31,6 +31,33 @@ int plot_run(const std::string& dir) {
 
 }  // namespace
 
+#ifdef L2_HAVE_MPI
+#include "cluster/mpi_run.hpp"
+#endif
+
+namespace {
+
+std::optional<std::string> mpi_error(const l2::RunOptions& o) {
+#ifdef L2_HAVE_MPI
+  return l2::mpi_options_error(o);
+#else
+  (void)o;
+  return "--mpi: this l2wall was built without MPI";
+#endif
+}
+
+int run_over_mpi(const l2::RunOptions& o) {
+#ifdef L2_HAVE_MPI
+  return l2::run_wall_mpi(o);
+#else
+  (void)o;
+  std::fprintf(stderr, "l2wall: --mpi: this l2wall was built without MPI\n");
+  return 1;
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{
       "l2wall: a Lightning-2 wall on one machine. `l2wall run` starts one pipeserver process per\n"
@@ -129,12 +156,18 @@ int main(int argc, char** argv) {
                   "fault injection: hold back the READY of frame K to pipeserver 0 until it "
                   "asks with SYNC?")
       ->check(CLI::Range(0, 1000000));
+  bool mpi = false;
+  run->add_flag("--mpi", mpi,
+                "run the wall over MPI ranks: mpirun -np N l2wall run --wall WALL --mpi, N = 1 "
+                "coordinator + one rank per pipeserver + one per board column of the mesh, in "
+                "that rank order (docs/mpi-design.md); frames and READY travel as MPI messages");
   // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
   l2::SceneOptions scene;
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
   // Options that make no run together are usage errors too (exit 2), not a failed run.
-  run->callback([&o, &scene_options] {
+  run->callback([&o, &scene_options, &mpi] {
     if (auto error = l2::run_options_error(o)) throw CLI::ValidationError(*error);
+    if (auto error = mpi ? mpi_error(o) : std::nullopt) throw CLI::ValidationError(*error);
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
   });
@@ -158,7 +191,7 @@ int main(int argc, char** argv) {
     if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
     if (o.scene == "picture") l2::PictureRegions{scene.content};
     if (o.scene == "movie") l2::MovieFile(scene.content).frame(0);
-    const int status = l2::run_wall(o);
+    const int status = mpi ? run_over_mpi(o) : l2::run_wall(o);
     // A run stopped by a signal wrote its report too (stop_signal.hpp).
     const bool reported = status == 0 || status == l2::stopped_exit_status(SIGINT);
     if (plot && reported) {

@@ -122,6 +122,8 @@ bad_value "0.5 is not 1..1000 Hz" sync_backchannel pty --refresh 0.5
 # A kept frame past the last one kept nothing, without a word.
 bad_value "--keep: frame 7 is past the last frame" l2wall run --frames 3 --keep 7 --out /tmp
 bad_value "--compare needs --path both" l2wall run --compare --out /tmp
+bad_value "--mpi: --path vizserver does not run over MPI alone" l2wall run --mpi --path vizserver \
+  --out /tmp
 bad_value "--inject-noise: frame 99 is past the last frame" l2wall run --frames 3 \
   --inject-noise 99 --out /tmp
 # --start near LLONG_MAX overflowed start + lines sent (signed: undefined).

@@ -26,17 +26,16 @@ EmulatorConfig emulator_config(const Wall& wall, int threads) {
 DviSide::DviSide(const Wall& wall, int threads, std::size_t hosts)
     : emulator_(emulator_config(wall, threads)), inputs_(hosts) {}
 
-const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>& records) {
-  const auto t0 = RunClock::now();
-  const Emulator::Tick& tick = emulator_.tick(inputs_);
-  const double route_ms = ms_between(t0, RunClock::now());
-  ++refreshes_;
+void record_new_frames(HostSet& hosts, std::vector<FrameRecord>& records,
+                       std::span<const FrameKind> kinds,
+                       const std::function<int(std::size_t)>& stamp, std::uint64_t refresh,
+                       RunClock::time_point t0, double route_ms) {
   const int frames = static_cast<int>(records.size());
   std::vector<int> credited;  // frames this refresh's time is already counted in
   for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
-    if (tick.kinds.size() <= i || tick.kinds[i] != FrameKind::New) continue;
+    if (kinds.size() <= i || kinds[i] != FrameKind::New) continue;
     Host& h = hosts.hosts()[i];
-    h.accepted = decode_stamp(inputs_[i].row(h.fb_y) + h.fb_x * 3);
+    h.accepted = stamp(i);
     if (h.accepted < 0 || h.accepted >= frames)
       throw RunFault(
           fmt::format("pipeserver {}: frame stamp {} out of range", h.server, h.accepted));
@@ -45,9 +44,37 @@ const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>&
       credited.push_back(h.accepted);
       r.route_ms += route_ms;  // once per frame, however many of its hosts came in now
     }
-    r.in_refresh = tick.index;  // the last input taken in decides
+    r.in_refresh = refresh;  // the last input taken in decides
     r.in_time = t0;
   }
+}
+
+int send_readies(std::span<const int> ready_inputs, HostSet& hosts, int drop_ready) {
+  int held = 0;
+  for (int i : ready_inputs) {
+    Host& h = hosts.hosts()[static_cast<std::size_t>(i)];
+    if (i == 0 && h.accepted == drop_ready) {
+      h.held_ready = h.accepted;  // lost on the line: the host must ask with SYNC?
+      ++held;
+      continue;
+    }
+    h.channel->send_ready(static_cast<std::uint64_t>(h.accepted));
+  }
+  return held;
+}
+
+const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>& records) {
+  const auto t0 = RunClock::now();
+  const Emulator::Tick& tick = emulator_.tick(inputs_);
+  const double route_ms = ms_between(t0, RunClock::now());
+  ++refreshes_;
+  record_new_frames(
+      hosts, records, tick.kinds,
+      [&](std::size_t i) {
+        const Host& h = hosts.hosts()[i];
+        return decode_stamp(inputs_[i].row(h.fb_y) + h.fb_x * 3);
+      },
+      tick.index, t0, route_ms);
   return tick;
 }
 
@@ -61,17 +88,7 @@ int DviSide::lowest_frame_shown(const HostSet& hosts) const {
 }
 
 int DviSide::send_readies(const Emulator::Tick& tick, HostSet& hosts, int drop_ready) {
-  int held = 0;
-  for (int i : tick.ready_inputs) {
-    Host& h = hosts.hosts()[static_cast<std::size_t>(i)];
-    if (i == 0 && h.accepted == drop_ready) {
-      h.held_ready = h.accepted;  // lost on the line: the host must ask with SYNC?
-      ++held;
-      continue;
-    }
-    h.channel->send_ready(static_cast<std::uint64_t>(h.accepted));
-  }
-  return held;
+  return l2::send_readies(tick.ready_inputs, hosts, drop_ready);
 }
 
 }  // namespace l2

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "host_set.hpp"
@@ -12,6 +14,19 @@
 #include "tilelayout/wall.hpp"
 
 namespace l2 {
+
+// The parts of a refresh every Lightning-2 of a live run shares, in one process or over MPI
+// ranks (cluster/): for each host whose frame is new in refresh `refresh`, its frame stamp
+// (`stamp(i)` for host i) becomes Host::accepted and that frame's record gets the refresh and
+// the route time (once per frame). Throws RunFault for a stamp outside 0..frames-1.
+void record_new_frames(HostSet& hosts, std::vector<FrameRecord>& records,
+                       std::span<const FrameKind> kinds,
+                       const std::function<int(std::size_t)>& stamp, std::uint64_t refresh,
+                       RunClock::time_point t0, double route_ms);
+// READY for the frame accepted from each host of `ready_inputs`. Fault injection: host 0's
+// READY of frame `drop_ready` is held back until it asks with SYNC?. Returns how many READYs
+// were held back.
+int send_readies(std::span<const int> ready_inputs, HostSet& hosts, int drop_ready);
 
 class DviSide {
  public:

@@ -21,6 +21,8 @@ int frames_reported(const std::string& host_log) {
   return frames;
 }
 
+}  // namespace
+
 std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
   std::vector<std::string> argv{l.pipeserver,      "--live",
                                 "--server",        std::to_string(h.server),
@@ -46,6 +48,20 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
   return argv;
 }
 
+namespace {
+
+// Where host i's frame stamp is: its first tile's framebuffer pixel and the display pixel it
+// lands on.
+void place_stamp(Host& h, const ServerPlan& plan) {
+  if (plan.tiles.empty()) return;
+  const PackedTile& t = plan.tiles.front();
+  h.fb_x = t.fb_x;
+  h.fb_y = t.fb_y;
+  h.display = t.tile.display;
+  h.dx = t.tile.on_display.x;
+  h.dy = t.tile.on_display.y;
+}
+
 }  // namespace
 
 void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
@@ -59,16 +75,22 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
     std::filesystem::remove(h.report_path);
     h.pty = std::make_unique<PtyPair>(PtyPair::open());
     h.channel = std::make_unique<BackChannel>(h.pty->master());
-    const ServerPlan& plan = layout.servers[i];
-    if (!plan.tiles.empty()) {
-      const PackedTile& t = plan.tiles.front();
-      h.fb_x = t.fb_x;
-      h.fb_y = t.fb_y;
-      h.display = t.tile.display;
-      h.dx = t.tile.on_display.x;
-      h.dy = t.tile.on_display.y;
-    }
+    place_stamp(h, layout.servers[i]);
     h.process.emplace(host_argv(launch, h), launch.env);
+  }
+}
+
+void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
+                     const std::function<std::unique_ptr<ReadyChannel>(int server)>& channel) {
+  dvi_ = launch.dvi;
+  frames_ = launch.frames;
+  for (std::size_t i = 0; i < layout.servers.size(); ++i) {
+    Host& h = hosts_.emplace_back();
+    h.server = static_cast<int>(i);
+    // Its own (it may have started writing it already).
+    h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
+    h.channel = channel(h.server);
+    place_stamp(h, layout.servers[i]);
   }
 }
 
@@ -156,6 +178,7 @@ std::uint64_t HostSet::inject_noise() {
   static const char kNoise[] = "RE\x01\xffz9 READY 12 ZZ\r\nSYNC? 0\x7f\x80 R";
   std::uint64_t bytes = 0;
   for (Host& h : hosts_) {
+    if (!h.pty) continue;  // no serial line to put noise on
     h.pty->master().write_some(std::span<const std::uint8_t>(
         reinterpret_cast<const std::uint8_t*>(kNoise), sizeof kNoise - 1));
     bytes += sizeof kNoise - 1;
@@ -171,8 +194,8 @@ std::string HostSet::late_hosts(int shown) const {
   std::string culprits;
   for (const Host& h : hosts_) {
     if (delivered(h) < shown + 1)
-      culprits += fmt::format("{}pipeserver {} (pid {})", culprits.empty() ? "" : ", ", h.server,
-                              h.process ? h.process->pid() : -1);
+      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.server,
+                              h.process ? fmt::format("pid {}", h.process->pid()) : h.place);
   }
   return culprits;
 }
@@ -198,6 +221,7 @@ void HostSet::finish(milliseconds timeout) {
     serve_channels();
     bool all = true;
     for (Host& h : hosts_) {
+      if (!h.process) continue;  // not ours to wait for
       if (!h.exit) h.exit = h.process->poll();
       if (!h.exit) {
         all = false;
@@ -223,6 +247,7 @@ void HostSet::shut_down() {
     if (h.process && !h.exit) h.exit = h.process->terminate(milliseconds(500));
     h.process.reset();
     h.reader.reset();
+    if (h.link_name.empty()) continue;  // none of ours
     try {
       remove_stale(h.link_name);
     } catch (const std::exception& e) {

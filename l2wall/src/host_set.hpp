@@ -33,6 +33,7 @@ struct Host {
   std::unique_ptr<ReadyChannel> channel;  // the serial line over the pty
   std::unique_ptr<DviReceiver> reader;    // shared memory on one machine
   std::optional<ChildProcess> process;
+  std::string place;  // a host this process did not start: "rank 3 on node-a, pid 4242"
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far
   int accepted = -1;           // the frame number of the last new frame the emulator took in
@@ -57,10 +58,18 @@ struct HostLaunch {
   std::vector<std::string> env;         // "NAME=value" added to every host's environment
 };
 
+// The command line of host `h`'s pipeserver process.
+std::vector<std::string> host_argv(const HostLaunch& launch, const Host& h);
+
 class HostSet {
  public:
   // Starts one process per pipeserver of the layout.
   void start(const HostLaunch& launch, const TileLayout& layout);
+  // Hosts this process did not start (MPI ranks, cluster/): no process, no link reader here;
+  // `channel(server)` is each one's back-channel. Their links are taken in elsewhere, and the
+  // path that does records Host::sequence.
+  void attach(const HostLaunch& launch, const TileLayout& layout,
+              const std::function<std::unique_ptr<ReadyChannel>(int server)>& channel);
 
   std::deque<Host>& hosts() { return hosts_; }
   const std::deque<Host>& hosts() const { return hosts_; }

@@ -23,6 +23,7 @@
 #include "image/folders.hpp"
 #include "live_show.hpp"
 #include "pipeserver/live_exit.hpp"
+#include "run_backends.hpp"
 #include "run_fault.hpp"
 #include "run_pictures.hpp"
 #include "run_report.hpp"
@@ -39,8 +40,9 @@ using std::chrono::milliseconds;
 
 class LiveRun {
  public:
-  explicit LiveRun(const RunOptions& o)
+  LiveRun(const RunOptions& o, const RunBackends& backends)
       : o_(o),
+        backends_(backends),
         keep_(parse_keep(o.keep)),
         wall_(o.wall.empty() ? default_wall() : load_wall(o.wall)),
         layout_(plan_layout(wall_)),
@@ -57,7 +59,7 @@ class LiveRun {
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     make_paths();
-    hosts_.start(host_launch(), layout_);
+    backends_.start_hosts(hosts_, launch_hosts(), layout_);
     for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
     run_frames_until_stopped();
     if (shown_ < o_.frames) {
@@ -112,23 +114,12 @@ class LiveRun {
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
   // the compositing server, whose frames are taken (and compared) as the lead swaps.
   void make_paths() {
-    if (o_.path != "vizserver") {
-      paths_.push_back(std::make_unique<DviPath>(wall_, o_.threads, layout_.servers.size(),
-                                                 o_.refresh_hz, o_.frames, o_.drop_ready));
-    }
-    if (o_.path != "dvi") paths_.push_back(std::make_unique<VizPath>(viz_launch()));
+    if (o_.path != "vizserver") paths_.push_back(backends_.dvi_path(layout_, o_));
+    if (o_.path != "dvi") paths_.push_back(backends_.viz_path(viz_launch()));
   }
 
-  HostLaunch host_launch() const {
-    HostLaunch l;
-    l.pipeserver = o_.pipeserver;
-    l.wall = o_.wall;
-    l.scene = o_.scene;
-    l.scene_args = o_.scene_args;
-    l.out = o_.out;
-    l.frames = o_.frames;
-    l.ready_timeout_ms = o_.ready_timeout_ms;
-    l.dvi = false;  // unless a path links the hosts
+  HostLaunch launch_hosts() const {
+    HostLaunch l = host_launch(o_);
     for (const auto& p : paths_) p->add_host_args(l);
     if (show_) l.extra_args = LiveShow::host_args();
     return l;
@@ -411,6 +402,7 @@ class LiveRun {
   }
 
   RunOptions o_;
+  const RunBackends& backends_;
   KeepSet keep_;
   Wall wall_;
   TileLayout layout_;
@@ -434,7 +426,41 @@ class LiveRun {
   RunClock::time_point last_swap_{};
 };
 
+class OneMachine final : public RunBackends {
+ public:
+  std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
+                                        const RunOptions& o) const override {
+    return std::make_unique<DviPath>(layout.wall, o.threads, layout.servers.size(), o.refresh_hz,
+                                     o.frames, o.drop_ready);
+  }
+  std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
+    return std::make_unique<VizPath>(launch);
+  }
+  void start_hosts(HostSet& hosts, const HostLaunch& launch,
+                   const TileLayout& layout) const override {
+    hosts.start(launch, layout);
+  }
+};
+
 }  // namespace
+
+const RunBackends& one_machine_backends() {
+  static const OneMachine backends;
+  return backends;
+}
+
+HostLaunch host_launch(const RunOptions& o) {
+  HostLaunch l;
+  l.pipeserver = o.pipeserver;
+  l.wall = o.wall;
+  l.scene = o.scene;
+  l.scene_args = o.scene_args;
+  l.out = o.out;
+  l.frames = o.frames;
+  l.ready_timeout_ms = o.ready_timeout_ms;
+  l.dvi = false;  // unless a path links the hosts
+  return l;
+}
 
 std::optional<std::string> run_options_error(const RunOptions& o) {
   if (o.path != "dvi" && o.path != "vizserver" && o.path != "both")
@@ -473,10 +499,14 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
 }
 
 int run_wall(const RunOptions& options) {
+  return run_wall(options, one_machine_backends());
+}
+
+int run_wall(const RunOptions& options, const RunBackends& backends) {
   catch_stop_signals();
   std::unique_ptr<LiveRun> run;
   try {
-    run = std::make_unique<LiveRun>(options);
+    run = std::make_unique<LiveRun>(options, backends);
     return run->run();
   } catch (const RunFault& e) {
     if (run && run->progress_shown()) std::fputs("\n", stderr);

@@ -66,7 +66,7 @@ struct Report {
 
 // The visualization-server path: every tile of the frame, read back from the framebuffer, goes
 // to the compositing server over TCP.
-void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan, int frame) {
+void send_tiles(TileSink& sender, FramePixels fb, const ServerPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {
     sender.send_tile(static_cast<std::uint32_t>(frame), viz_target(t.tile), fb.at(t.fb_x, t.fb_y),
                      fb.stride);
@@ -75,16 +75,28 @@ void send_tiles(viz::TileSender& sender, FramePixels fb, const ServerPlan& plan,
                       static_cast<std::uint32_t>(plan.tiles.size()));
 }
 
-std::optional<viz::TileSender> connect_viz(const std::string& address, int server,
-                                           int display_count) {
-  if (address.empty()) return std::nullopt;
+std::unique_ptr<TileSink> connect_viz(const std::string& address, int server, int display_count) {
+  if (address.empty()) return nullptr;
   const viz::Endpoint at = viz::parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
-  return viz::TileSender::connect(at.host, at.port, server, display_count, options);
+  return std::make_unique<TileSinkOf<viz::TileSender>>(
+      viz::TileSender::connect(at.host, at.port, server, display_count, options));
 }
 
 }  // namespace
+
+MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
+  return [link, backchannel](const TileLayout&, const ServerPlan& plan) {
+    HostLinks links;
+    links.link =
+        std::make_unique<DviLinkWriter>(DviLinkWriter::create(link, plan.fb_width, plan.fb_height));
+    auto port = std::make_shared<SerialPort>(SerialPort::open(backchannel));
+    links.channel = std::make_unique<BackChannel>(*port);
+    links.keeps = port;
+    return links;
+  };
+}
 
 int run_live_host(const LiveHostOptions& o) {
   const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
@@ -92,16 +104,12 @@ int run_live_host(const LiveHostOptions& o) {
   auto scene = make_scene(o.scene, o.scene_options);
   Pipeserver ps(layout, o.server);
   const ServerPlan& plan = ps.plan();
-  std::optional<DviLinkWriter> link;
-  std::optional<SerialPort> port;
-  std::optional<BackChannel> channel;
-  if (!o.link.empty()) {
-    link.emplace(DviLinkWriter::create(o.link, plan.fb_width, plan.fb_height));
-    port.emplace(SerialPort::open(o.backchannel));
-    channel.emplace(*port);
-  }
-  std::optional<viz::TileSender> sender =
-      connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
+  HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
+  DviSender* const link = links.link.get();
+  ReadyChannel* const channel = links.channel.get();
+  const std::unique_ptr<TileSink> sender =
+      links.tiles ? std::move(links.tiles)
+                  : connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
 

@@ -3,12 +3,67 @@
 // READY of the previous frame on its serial back-channel before publishing (spec §6.1).
 #pragma once
 
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 
+#include "dvi_link/dvi_link.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "pipeserver/scene.hpp"
+#include "sync_backchannel/ready_channel.hpp"
+#include "tilelayout/tile_layout.hpp"
+#include "vizserver/tile_sender.hpp"
 
 namespace l2 {
+
+// Where a host's tiles go on the visualization-server path: a compositing server over TCP
+// (viz::TileSender), or the board columns owning their displays over MPI.
+class TileSink {
+ public:
+  virtual ~TileSink() = default;
+  virtual void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                         std::size_t stride) = 0;
+  virtual void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) = 0;
+  // Throws (viz::VizError for the compositing server) when `frame` is not swapped in time.
+  virtual void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) = 0;
+};
+
+// A TileSink of any sender with these three calls.
+template <typename Sender>
+class TileSinkOf final : public TileSink {
+ public:
+  explicit TileSinkOf(Sender sender) : sender_(std::move(sender)) {}
+  void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                 std::size_t stride) override {
+    sender_.send_tile(frame, tile, rgb, stride);
+  }
+  void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) override {
+    sender_.finish_frame(frame, tiles_sent);
+  }
+  void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) override {
+    sender_.wait_swapped(frame, timeout);
+  }
+
+ private:
+  Sender sender_;
+};
+
+// The DVI link a host publishes its frames on and the back-channel its READYs come on: shared
+// memory and a serial line on one machine, MPI messages in a run across machines. Made once,
+// where the host starts.
+struct HostLinks {
+  std::shared_ptr<void> keeps;  // what the two use, so it outlives them (the serial port)
+  std::unique_ptr<DviSender> link;
+  std::unique_ptr<ReadyChannel> channel;
+  std::unique_ptr<TileSink> tiles;  // the visualization-server path over MPI; else --viz
+};
+using MakeHostLinks = std::function<HostLinks(const TileLayout& layout, const ServerPlan& plan)>;
+
+// The shared-memory link `link` and the serial line `backchannel` (l2wall run on one machine).
+MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel);
 
 struct LiveHostOptions {
   std::string wall;  // empty: the built-in default wall
@@ -18,6 +73,7 @@ struct LiveHostOptions {
   int frames = 10;
   std::string link;         // shared-memory name this host creates ("/l2-..."); empty: none
   std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
+  MakeHostLinks links;      // how the link and back-channel are made; empty: none (--viz only)
   std::string viz;          // "host:port" of a compositing server to send tiles to; empty: none
   std::string report;       // file: one line per frame (render and wait times)
   int ready_timeout_ms = 200;

@@ -22,6 +22,11 @@
 #include "tilelayout/wall_file.hpp"
 #include "vizserver/socket.hpp"
 
+#ifdef L2_HAVE_MPI
+#include "cluster/mpi_host.hpp"
+#include "cluster/mpi_session.hpp"
+#endif
+
 namespace {
 
 struct Options {
@@ -76,6 +81,45 @@ int run(const Options& o) {
     }
   }
   return 0;
+}
+
+int run_live(const l2::LiveHostOptions& o) {
+  try {
+    return l2::run_live_host(o);
+  } catch (const l2::viz::VizError& e) {
+    std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+    return l2::kExitLostCompositingServer;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+    return 1;
+  }
+}
+
+// A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
+int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
+#ifdef L2_HAVE_MPI
+  l2::MpiSession session;
+  const auto sent = std::make_shared<std::uint64_t>(0);
+  const auto tiles_sent = std::make_shared<std::uint64_t>(0);
+  o.links = [sent, tiles, tiles_sent](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
+    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server, sent);
+    l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
+    if (tiles) {
+      links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
+          l2::MpiTileSender(layout, tiles_sent));
+    }
+    return links;
+  };
+  const int code = run_live(o);
+  if (code != 0) l2::MpiSession::abort_all(code);
+  l2::report_host_done(*sent, *tiles_sent);
+  return 0;
+#else
+  (void)o;
+  (void)tiles;
+  std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
+  return 2;
+#endif
 }
 
 }  // namespace
@@ -138,6 +182,16 @@ int run_pipeserver(int argc, char** argv) {
                    "live: SYNC? retries before giving up")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
+  bool mpi = false;
+  group->add_flag("--mpi", mpi,
+                  "live: a rank of `mpirun ... l2wall run --mpi`: frames go to the board column "
+                  "ranks and READY comes from the coordinator as MPI messages (instead of "
+                  "--link and --backchannel)");
+  bool mpi_viz = false;
+  group->add_flag("--mpi-viz", mpi_viz,
+                  "live, with --mpi: also send every tile to the board column rank owning its "
+                  "display (the visualization-server path over MPI), waiting for SWAPPED from "
+                  "the coordinator");
   // Every live option needs --live: without it they were ignored and one frame was written.
   for (CLI::Option* option : group->get_options()) {
     if (option != live_flag) option->needs(live_flag);
@@ -157,23 +211,19 @@ int run_pipeserver(int argc, char** argv) {
   if (live) {
     const bool dvi = !live_options.link.empty() && !live_options.backchannel.empty();
     const bool half_dvi = live_options.link.empty() != live_options.backchannel.empty();
-    if (half_dvi || (!dvi && live_options.viz.empty())) {
-      std::fprintf(stderr, "pipeserver: --live needs --link with --backchannel, or --viz\n");
+    if (half_dvi || (dvi && mpi) || (!dvi && !mpi && live_options.viz.empty())) {
+      std::fprintf(stderr,
+                   "pipeserver: --live needs --link with --backchannel, or --mpi, or --viz\n");
       return 2;
     }
     live_options.wall = o.wall;
     live_options.server = o.server;
     live_options.scene = o.scene;
     live_options.scene_options = o.scene_options;
-    try {
-      return l2::run_live_host(live_options);
-    } catch (const l2::viz::VizError& e) {
-      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
-      return l2::kExitLostCompositingServer;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
-      return 1;
-    }
+    if (dvi)
+      live_options.links = l2::shared_memory_links(live_options.link, live_options.backchannel);
+    if (mpi) return run_mpi_host(live_options, mpi_viz);
+    return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {
     std::fprintf(stderr, "pipeserver: nothing to do: give --out and/or --reference\n");

@@ -1,0 +1,70 @@
+// The DVI link as MPI messages (the MPI backend of dvi_link.hpp's interfaces): a pipeserver's
+// scanned-out frame goes to every board column its tiles land on, as the DVI repeaters give a
+// column every input it needs, and to no other; the coordinator hears of each frame in a
+// small notice, so it can tell every column which frame of an input a refresh takes in.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <mpi.h>
+
+#include "dvi_link/dvi_link.hpp"
+
+namespace l2 {
+
+class MpiDviSender final : public DviSender {
+ public:
+  // `bytes_sent` counts the bytes of frames sent (every column's copy), for the run's figures.
+  MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width, int height,
+               std::shared_ptr<std::uint64_t> bytes_sent);
+
+  std::span<std::uint8_t> back_frame() override;
+  // Sends the back frame to every column (returning once they have it, so the frame can be
+  // drawn again), then the notice to the coordinator. Throws std::runtime_error when MPI fails.
+  std::uint64_t publish() override;
+
+ private:
+  std::vector<int> columns_;
+  int coordinator_;
+  std::vector<std::uint8_t> message_;  // sequence number, then the frame
+  std::uint64_t sequence_ = 0;
+  std::shared_ptr<std::uint64_t> bytes_sent_;
+};
+
+// One input of a board column. A receive is always posted, so a frame moves while the column
+// routes; take() makes the frame of the sequence number the coordinator named the latest().
+class MpiDviReceiver final : public DviReceiver {
+ public:
+  MpiDviReceiver(int source_rank, int width, int height);
+  ~MpiDviReceiver() override;
+  MpiDviReceiver(const MpiDviReceiver&) = delete;
+  MpiDviReceiver& operator=(const MpiDviReceiver&) = delete;
+
+  // Waits for frame `sequence` (0: none yet, nothing to wait for), calling `watch` meanwhile;
+  // older frames are dropped.
+  void take(std::uint64_t sequence, const std::function<void()>& watch);
+  std::optional<FrameView> latest() override;
+
+ private:
+  // Completes the posted receive if it is done and posts the next; true when one completed.
+  bool poll();
+  void post();
+  static std::uint64_t sequence_of(const std::vector<std::uint8_t>& m);
+
+  int source_;
+  int width_, height_;
+  std::size_t bytes_;
+  std::vector<std::uint8_t> posted_;
+  MPI_Request request_ = MPI_REQUEST_NULL;
+  std::deque<std::vector<std::uint8_t>> arrived_;  // oldest first
+  std::vector<std::vector<std::uint8_t>> spare_;
+  std::optional<std::vector<std::uint8_t>> current_;
+};
+
+}  // namespace l2

@@ -1,0 +1,53 @@
+// A pipeserver's DVI link and back-channel in an MPI run: its frames to the board columns its
+// tiles land on, its READYs from the coordinator.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "dvi_link/dvi_link.hpp"
+#include "sync_backchannel/ready_channel.hpp"
+#include "tilelayout/tile_layout.hpp"
+#include "vizserver/tile_sender.hpp"
+
+namespace l2 {
+
+struct MpiHostLinks {
+  std::unique_ptr<DviSender> link;
+  std::unique_ptr<ReadyChannel> channel;
+};
+
+// For pipeserver `server` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
+// counts the bytes of the frames it sends.
+MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
+                            std::shared_ptr<std::uint64_t> bytes_sent);
+
+// The visualization-server path over MPI, host side: each tile to the board column owning its
+// display, the end of each frame to every column (with the number of tiles it sent that
+// column), SWAPPED from the coordinator.
+class MpiTileSender {
+ public:
+  // `bytes_sent` counts the bytes of the tile messages it sends.
+  MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint64_t> bytes_sent);
+  void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
+                 std::size_t stride);
+  void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
+  // Throws std::runtime_error when no SWAPPED for `frame` (or later) came within `timeout`.
+  void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout);
+
+ private:
+  std::vector<int> column_ranks_;
+  std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
+  std::vector<std::uint8_t> message_;
+  std::optional<std::uint32_t> swapped_;
+  std::shared_ptr<std::uint64_t> bytes_sent_;
+};
+
+// Tells the coordinator this host ended well, its report written (it reads the reports next),
+// and how many bytes of frames and of tiles it sent.
+void report_host_done(std::uint64_t frame_bytes, std::uint64_t tile_bytes);
+
+}  // namespace l2

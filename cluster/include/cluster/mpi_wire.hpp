@@ -1,0 +1,66 @@
+// The messages of an MPI run, one tag each (docs/mpi-design.md), and the few calls every role
+// makes with them: blocking sends of small integer records and a receive that keeps watching
+// while it waits.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace l2::mpi_wire {
+
+enum Tag : int {
+  kFrame = 1,        // pipeserver -> column: 8-byte sequence number, then the RGB frame
+  kNotice = 2,       // pipeserver -> coordinator: the sequence number just published
+  kReady = 3,        // coordinator -> pipeserver: a 17-byte READY line (docs/ready-protocol.md)
+  kSync = 4,         // pipeserver -> coordinator: a 17-byte SYNC? line
+  kCommand = 5,      // coordinator -> column: a Command record
+  kObservation = 6,  // column -> coordinator: what it saw in a refresh
+  kPicture = 7,      // column -> coordinator: one display's front buffer
+  kDone = 8,         // pipeserver -> coordinator: bytes of frames it sent, its report complete
+  kTile = 9,         // pipeserver -> column: a TileMessage header, then the tile's pixels
+  kComposed = 10,    // column -> coordinator: the frame its compositing completed
+  kSwapped = 11,     // coordinator -> pipeserver: frames up to this one are composed everywhere
+};
+
+// The visualization-server path over MPI: a tile (kind 1, to the column owning its display)
+// or the end of a pipeserver's frame (kind 2, to every column), one tag, so they keep order.
+struct TileMessage {
+  std::int32_t kind = 0;
+  std::uint32_t frame = 0;
+  std::uint32_t display = 0;
+  std::int32_t dx = 0, dy = 0;
+  std::uint32_t w = 0, h = 0;
+  std::uint32_t tiles = 0;  // kind 2: how many tiles the pipeserver sent for the frame
+};
+inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2;
+
+// What the coordinator asks of a column (the first word of a record).
+enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4, kFetchComposed = 5 };
+
+using Record = std::vector<std::int64_t>;
+
+// Throws std::runtime_error naming the call and the peer when MPI reports an error.
+void send(const Record& record, int to, int tag);
+// Whether a message of `tag` from `from` is waiting (MPI_ANY_SOURCE allowed); its size in
+// bytes.
+std::optional<int> waiting(int from, int tag);
+Record receive(int from, int tag);
+// Waits for a record, calling `watch` (which may throw) about every millisecond meanwhile.
+Record receive_watched(int from, int tag, const std::function<void()>& watch);
+
+// A cursor over a received record; throws std::runtime_error past its end.
+class Reader {
+ public:
+  explicit Reader(const Record& r) : r_(r) {}
+  std::int64_t next();
+  int next_int() { return static_cast<int>(next()); }
+
+ private:
+  const Record& r_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace l2::mpi_wire

@@ -1,0 +1,39 @@
+// Who does what in an MPI run of a wall, from rank order (docs/mpi-design.md): rank 0 the
+// coordinator, ranks 1..S the pipeservers, ranks S+1..S+C the board columns of the wall's mesh.
+// Which columns each pipeserver's frames go to (the DVI repeaters: only the columns whose
+// displays its tiles land on). Pure logic: no MPI here.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+struct RankMap {
+  static constexpr int kCoordinator = 0;
+  int servers = 0;
+  int columns = 0;
+  int mesh_inputs = 0;
+  std::vector<std::vector<int>> columns_of_server;   // ascending column numbers
+  std::vector<std::vector<int>> servers_of_column;   // ascending server numbers
+  std::vector<std::vector<int>> displays_of_column;  // display ids, ascending
+
+  int size() const { return 1 + servers + columns; }
+  int pipeserver_rank(int server) const { return 1 + server; }
+  int column_rank(int column) const { return 1 + servers + column; }
+  std::optional<int> server_of(int rank) const;
+  std::optional<int> column_of(int rank) const;
+  // "coordinator", "pipeserver 2", "board column 1"
+  std::string role(int rank) const;
+};
+
+// Throws MeshError for a wall no mesh can take (as the one-machine run would).
+RankMap make_rank_map(const TileLayout& layout);
+
+// The one-line error for an mpirun with the wrong number of ranks, or nullopt.
+std::optional<std::string> rank_count_error(const RankMap& map, int ranks);
+
+}  // namespace l2

@@ -1,0 +1,281 @@
+#include "column_rank.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "cluster/mpi_dvi_link.hpp"
+#include "cluster/mpi_wire.hpp"
+#include "frame_stamp.hpp"
+#include "lightning2_emu/router.hpp"
+#include "lightning2_emu/swap_group.hpp"
+#include "vizserver/frame_assembler.hpp"
+
+namespace l2 {
+namespace {
+
+using mpi_wire::Reader;
+using mpi_wire::Record;
+
+struct ColumnInput {
+  int server = 0;
+  std::unique_ptr<MpiDviReceiver> receiver;
+  int stamp = -1;  // the frame stamp of the frame taken in
+};
+
+class Column {
+ public:
+  Column(const TileLayout& layout, const RankMap& map, int column, int threads, bool composite)
+      : layout_(layout),
+        map_(map),
+        pool_(threads),
+        router_(mesh(layout.wall), specs(layout.wall, map.displays_of_column[column]), pool_),
+        frames_(static_cast<std::size_t>(map.mesh_inputs)),
+        back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
+        done_frame_(back_frame_),
+        shown_frame_(back_frame_) {
+    // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be a
+    // second round trip to the coordinator.
+    router_.predict_layouts(false);
+    for (const int s : map.servers_of_column[column]) {
+      const ServerPlan& plan = layout.servers[static_cast<std::size_t>(s)];
+      inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
+                                                             plan.fb_height)});
+    }
+    if (composite) {
+      std::vector<std::pair<int, int>> sizes;
+      for (const Display& d : layout.wall.displays) sizes.emplace_back(d.width, d.height);
+      assembler_.emplace(std::move(sizes), map.servers);
+      for (int s = 0; s < map.servers; ++s) {
+        if (const Status joined = assembler_->connect(s); !joined.ok())
+          throw std::runtime_error(joined.reason());
+      }
+    }
+    std::vector<DisplaySpec> all;
+    for (const Display& d : layout.wall.displays)
+      all.push_back({d.id, d.width, d.height, d.swap_group});
+    for (const SwapGroup& g : make_swap_groups(all)) {
+      std::vector<int>& own = group_indices_.emplace_back();
+      for (const int id : g.displays) {
+        if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
+      }
+    }
+  }
+
+  void run() {
+    for (;;) {
+      const Record command =
+          mpi_wire::receive_watched(RankMap::kCoordinator, mpi_wire::kCommand, pump_);
+      Reader in(command);
+      switch (in.next()) {
+        case mpi_wire::kTick:
+          tick(in);
+          break;
+        case mpi_wire::kRoute:
+          route(in);
+          break;
+        case mpi_wire::kFetch:
+          send_pictures();
+          break;
+        case mpi_wire::kFetchComposed:
+          send_composed(static_cast<std::uint32_t>(in.next()));
+          break;
+        case mpi_wire::kEnd:
+          return;
+        default:
+          throw std::runtime_error("unknown command from the coordinator");
+      }
+    }
+  }
+
+ private:
+  static Mesh mesh(const Wall& wall) {
+    return Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+                     {wall.board_max_width, wall.board_max_height});
+  }
+
+  static std::vector<DisplaySpec> specs(const Wall& wall, const std::vector<int>& ids) {
+    std::vector<DisplaySpec> out;
+    for (const Display& d : wall.displays) {
+      if (std::find(ids.begin(), ids.end(), d.id) != ids.end())
+        out.push_back({d.id, d.width, d.height, d.swap_group});
+    }
+    return out;
+  }
+
+  // [kTick, refresh, n, swapped group indices..., n, sequence per server...]
+  void tick(Reader& in) {
+    const std::int64_t refresh = in.next();
+    for (int n = in.next_int(); n > 0; --n) {
+      for (const int index : group_indices_[static_cast<std::size_t>(in.next_int())]) {
+        router_.display(index).swap();
+        shown_frame_[static_cast<std::size_t>(index)] =
+            done_frame_[static_cast<std::size_t>(index)];
+      }
+    }
+    std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
+    for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
+    for (ColumnInput& input : inputs_) {
+      input.receiver->take(sequences[static_cast<std::size_t>(input.server)], pump_);
+      const auto f = input.receiver->latest();
+      InputFrame& frame = frames_[static_cast<std::size_t>(input.server)];
+      frame = {};
+      if (!f) continue;
+      frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
+      const ServerPlan& plan = layout_.servers[static_cast<std::size_t>(input.server)];
+      input.stamp =
+          plan.tiles.empty()
+              ? -1
+              : decode_stamp(frame.row(plan.tiles.front().fb_y) + plan.tiles.front().fb_x * 3);
+    }
+    router_.scan(frames_);
+    mpi_wire::send(observation(refresh), RankMap::kCoordinator, mpi_wire::kObservation);
+  }
+
+  // [refresh, n, (server, present, idle, torn, parity, displays fed, stamp)...,
+  //  n, (server, stamp on its display)..., n, (display, frame shown)...]
+  Record observation(std::int64_t refresh) const {
+    Record r{refresh, static_cast<std::int64_t>(inputs_.size())};
+    for (const ColumnInput& input : inputs_) {
+      const InputFrameStats& st = router_.scanned(input.server);
+      r.insert(r.end(), {input.server, st.present, st.idle(), st.torn(), st.parity(),
+                         static_cast<std::int64_t>(st.displays_fed), input.stamp});
+    }
+    Record shown;
+    for (const ServerPlan& plan : layout_.servers) {
+      if (plan.tiles.empty()) continue;
+      const DisplayTile& t = plan.tiles.front().tile;
+      const int index = router_.index_of_display(t.display);
+      if (index < 0) continue;
+      const RgbImage& front = router_.display(index).front();
+      shown.insert(shown.end(), {plan.server, decode_stamp(front.row(t.on_display.y).data() +
+                                                           t.on_display.x * 3)});
+    }
+    r.push_back(static_cast<std::int64_t>(shown.size() / 2));
+    r.insert(r.end(), shown.begin(), shown.end());
+    r.push_back(router_.display_count());
+    for (int d = 0; d < router_.display_count(); ++d)
+      r.insert(r.end(), {router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)]});
+    return r;
+  }
+
+  // [kRoute, n, route per mesh input..., n, completed group indices...]
+  void route(Reader& in) {
+    std::vector<std::uint8_t> chosen(static_cast<std::size_t>(in.next_int()));
+    for (auto& c : chosen) c = static_cast<std::uint8_t>(in.next());
+    router_.write(chosen);
+    // The frame a display's next picture holds: the newest stamp routed into it.
+    for (const ColumnInput& input : inputs_) {
+      if (!chosen[static_cast<std::size_t>(input.server)]) continue;
+      const std::uint64_t fed = router_.scanned(input.server).displays_fed;
+      for (int d = 0; d < router_.display_count(); ++d) {
+        if (fed >> router_.display(d).id() & 1) {
+          int& f = back_frame_[static_cast<std::size_t>(d)];
+          f = std::max(f, input.stamp);
+        }
+      }
+    }
+    for (int n = in.next_int(); n > 0; --n) {
+      const std::vector<int>& own = group_indices_[static_cast<std::size_t>(in.next_int())];
+      router_.finish(own, finished_);
+      for (const int index : own) {
+        done_frame_[static_cast<std::size_t>(index)] = back_frame_[static_cast<std::size_t>(index)];
+        back_frame_[static_cast<std::size_t>(index)] = -1;
+      }
+    }
+  }
+
+  // Takes in every tile and frame end waiting; sends the coordinator each frame composed.
+  void pump_tiles() {
+    if (!assembler_) return;
+    for (;;) {
+      int flag = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, mpi_wire::kTile, MPI_COMM_WORLD, &flag, &status);
+      if (!flag) break;
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      tile_bytes_.resize(static_cast<std::size_t>(bytes));
+      MPI_Recv(tile_bytes_.data(), bytes, MPI_BYTE, status.MPI_SOURCE, mpi_wire::kTile,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi_wire::TileMessage m;
+      if (tile_bytes_.size() < sizeof m) throw std::runtime_error("a tile message too short");
+      std::memcpy(&m, tile_bytes_.data(), sizeof m);
+      const auto server = map_.server_of(status.MPI_SOURCE);
+      if (!server) throw std::runtime_error("a tile from a rank that is no pipeserver");
+      Status taken;
+      if (m.kind == mpi_wire::kTileKind) {
+        viz::ReceivedTile tile{
+            {m.frame, m.display, m.dx, m.dy, m.w, m.h},
+            std::vector<std::uint8_t>(tile_bytes_.begin() + sizeof m, tile_bytes_.end())};
+        if (tile.pixels.size() != tile.header.pixel_bytes())
+          throw std::runtime_error("a tile message of the wrong size");
+        taken = assembler_->add_tile(*server, std::move(tile));
+      } else {
+        taken =
+            assembler_->finish(*server, {static_cast<std::uint32_t>(*server), m.frame, m.tiles});
+      }
+      if (!taken.ok()) throw std::runtime_error(taken.reason());
+    }
+    for (viz::ComposedFrame& f : assembler_->take_complete()) {
+      mpi_wire::send({static_cast<std::int64_t>(f.frame)}, RankMap::kCoordinator,
+                     mpi_wire::kComposed);
+      // Only this column's displays are kept (the assembler composes every display's image).
+      for (std::size_t i = 0; i < f.displays.size(); ++i) {
+        if (router_.index_of_display(layout_.wall.displays[i].id) < 0) f.displays[i] = RgbImage();
+      }
+      composed_[f.frame] = std::move(f.displays);
+      while (composed_.size() > 4) composed_.erase(composed_.begin());  // the run takes each
+    }
+  }
+
+  void send_composed(std::uint32_t frame) {
+    const auto it = composed_.find(frame);
+    if (it == composed_.end()) throw std::runtime_error("asked for a frame not composed here");
+    for (std::size_t i = 0; i < layout_.wall.displays.size(); ++i) {
+      const int id = layout_.wall.displays[i].id;
+      if (router_.index_of_display(id) < 0) continue;  // another column's
+      const RgbImage& picture = it->second[i];
+      MPI_Send(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
+               RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
+    }
+  }
+
+  void send_pictures() {
+    for (int d = 0; d < router_.display_count(); ++d) {
+      const RgbImage& front = router_.display(d).front();
+      MPI_Send(front.data(), static_cast<int>(front.bytes().size()), MPI_BYTE,
+               RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
+    }
+  }
+
+  const TileLayout& layout_;
+  const RankMap& map_;
+  WorkerPool pool_;
+  Router router_;
+  std::vector<ColumnInput> inputs_;
+  std::vector<InputFrame> frames_;               // by mesh input; absent: no signal here
+  std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
+  std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
+  std::vector<DisplayFrameStats> finished_;
+  std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
+  std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
+  std::vector<std::uint8_t> tile_bytes_;
+  const std::function<void()> pump_ = [this] { pump_tiles(); };
+};
+
+}  // namespace
+
+int run_column(const TileLayout& layout, const RankMap& map, int column, int threads,
+               bool composite) {
+  Column c(layout, map, column, threads, composite);
+  c.run();
+  return 0;
+}
+
+}  // namespace l2

@@ -1,0 +1,315 @@
+#include "mpi_dvi_path.hpp"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <climits>
+#include <cstdio>
+#include <thread>
+#include <utility>
+
+#include "cluster/mpi_wire.hpp"
+#include "dvi_side.hpp"
+#include "run_fault.hpp"
+
+namespace l2 {
+namespace {
+
+using mpi_wire::Reader;
+using mpi_wire::Record;
+
+std::vector<SwapGroup> wall_groups(const Wall& wall) {
+  std::vector<DisplaySpec> specs;
+  for (const Display& d : wall.displays) specs.push_back({d.id, d.width, d.height, d.swap_group});
+  return make_swap_groups(specs);
+}
+
+}  // namespace
+
+MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession& session,
+                       const RunOptions& o)
+    : layout_(layout),
+      map_(map),
+      session_(session),
+      stall_timeout_ms_(o.stall_timeout_ms),
+      clock_(o.refresh_hz),
+      refresh_hz_(o.refresh_hz),
+      frames_(o.frames),
+      drop_ready_(o.drop_ready),
+      groups_(wall_groups(layout.wall)),
+      sequencer_(map.mesh_inputs, static_cast<int>(groups_.size())),
+      lock_check_(groups_) {
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    for (const int id : groups_[g].displays) group_of_display_[id] = static_cast<int>(g);
+  }
+  session_.watch_ranks([this](int rank) { return lost_message(rank); });
+}
+
+std::string MpiDviPath::lost_message(int rank) const {
+  const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
+  return fmt::format(
+      "{} (rank {} on {}, pid {}) is gone (its connection to the coordinator closed: killed "
+      "or crashed) while the displays wait for frame {}; {}",
+      map_.role(rank), rank, who.host, who.pid, shown_ + 1, kept());
+}
+
+bool MpiDviPath::take_notices(HostSet& hosts) {
+  bool fresh = false;
+  for (Host& h : hosts.hosts()) {
+    const int rank = map_.pipeserver_rank(h.server);
+    while (mpi_wire::waiting(rank, mpi_wire::kNotice)) {
+      const Record notice = mpi_wire::receive(rank, mpi_wire::kNotice);
+      h.sequence = static_cast<std::uint64_t>(Reader(notice).next());
+      fresh = true;
+    }
+  }
+  return fresh;
+}
+
+void MpiDviPath::open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) {
+  const auto deadline = RunClock::now() + timeout;
+  for (;;) {
+    watch.processes();
+    take_notices(hosts);
+    const auto& all = hosts.hosts();
+    // As on one machine: the refreshes start once every input carries a signal.
+    if (std::all_of(all.begin(), all.end(), [](const Host& h) { return h.sequence > 0; })) {
+      unseen_ = true;  // the first frames are still to be taken in
+      return;
+    }
+    if (RunClock::now() > deadline) {
+      std::string missing;
+      for (const Host& h : all)
+        if (h.sequence == 0) missing += fmt::format(" {}", h.server);
+      throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
+                                 timeout.count(), missing));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+std::uint64_t MpiDviPath::groups_of_displays(std::uint64_t displays) const {
+  std::uint64_t groups = 0;
+  for (const auto& [id, group] : group_of_display_) {
+    if (displays >> id & 1) groups |= std::uint64_t{1} << group;
+  }
+  return groups;
+}
+
+void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
+  const auto index = static_cast<std::int64_t>(refreshes_++);
+  sequencer_.refresh(swapped_);
+  Record tick{mpi_wire::kTick, index, static_cast<std::int64_t>(swapped_.size())};
+  tick.insert(tick.end(), swapped_.begin(), swapped_.end());
+  tick.push_back(static_cast<std::int64_t>(hosts.hosts().size()));
+  for (const Host& h : hosts.hosts()) tick.push_back(static_cast<std::int64_t>(h.sequence));
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send(tick, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += tick.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
+
+  observations_.assign(static_cast<std::size_t>(map_.mesh_inputs), FrameObservation{});
+  stamps_.assign(static_cast<std::size_t>(map_.mesh_inputs), -1);
+  stamp_shown_.assign(hosts.hosts().size(), INT_MAX);
+  displays_shown_.clear();
+  for (int c = 0; c < map_.columns; ++c) {
+    const int rank = map_.column_rank(c);
+    const Record answer = column_answer(c, index, hosts, watch);
+    control_bytes_ += answer.size() * sizeof(std::int64_t);
+    Reader in(answer);
+    if (in.next() != index)
+      throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
+    for (int n = in.next_int(); n > 0; --n) {
+      const int server = in.next_int();
+      FrameObservation& o = observations_[static_cast<std::size_t>(server)];
+      o.present = in.next() != 0;
+      o.idle = in.next() != 0;
+      o.torn = in.next() != 0;
+      o.parity = in.next_int();
+      // Each column sees the strips for its own displays: together, every display fed.
+      o.groups_fed |= groups_of_displays(static_cast<std::uint64_t>(in.next()));
+      stamps_[static_cast<std::size_t>(server)] = in.next_int();
+    }
+    for (int n = in.next_int(); n > 0; --n) {
+      const int server = in.next_int();
+      stamp_shown_[static_cast<std::size_t>(server)] = in.next_int();
+    }
+    for (int n = in.next_int(); n > 0; --n) {
+      const int display = in.next_int();
+      displays_shown_.push_back({display, in.next_int(), rank});
+    }
+  }
+  sequencer_.decide(observations_, decision_);
+  sequencer_.commit(observations_, decision_);
+  Record route{mpi_wire::kRoute, static_cast<std::int64_t>(decision_.route.size())};
+  route.insert(route.end(), decision_.route.begin(), decision_.route.end());
+  route.push_back(static_cast<std::int64_t>(decision_.completed_groups.size()));
+  route.insert(route.end(), decision_.completed_groups.begin(), decision_.completed_groups.end());
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send(route, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += route.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
+  if (auto broken = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_))
+    throw RunFault(*broken);
+}
+
+Record MpiDviPath::column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch) {
+  const int rank = map_.column_rank(c);
+  const auto deadline = RunClock::now() + std::chrono::milliseconds(stall_timeout_ms_);
+  return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
+    watch.processes();
+    hosts.serve_channels();
+    if (RunClock::now() < deadline) return;
+    const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
+    throw RunFault(fmt::format(
+        "{} (rank {} on {}, pid {}) did not answer refresh {} within {} ms (stopped or hung) "
+        "while the displays wait for frame {}; {}",
+        map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1, kept()));
+  });
+}
+
+std::string MpiDviPath::kept() const {
+  const int shown = shown_;
+  if (shown < 0) return "no frame reached the displays";
+  return fmt::format("the displays keep frame {}", shown);
+}
+
+bool MpiDviPath::down() {
+  if (!lost_) lost_ = session_.lost_rank();
+  return lost_.has_value();
+}
+
+std::optional<std::string> MpiDviPath::failure_as_cause(int, const std::string&) {
+  if (!lost_) return std::nullopt;
+  return lost_message(*lost_);
+}
+
+std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameRecord>& records,
+                                         const RunWatch& watch) {
+  if (refresh_hz_ > 0) clock_.wait_next();
+  watch.processes();
+  const bool fresh = take_notices(hosts) || std::exchange(unseen_, false);
+  hosts.serve_channels();
+  if (refresh_hz_ == 0 && !fresh && !swap_due_) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+    return std::nullopt;
+  }
+  const auto t0 = RunClock::now();
+  refresh(hosts, watch);
+  record_new_frames(
+      hosts, records, decision_.kinds, [&](std::size_t i) { return stamps_[i]; }, refreshes_ - 1,
+      t0, ms_between(t0, RunClock::now()));
+  swap_due_ = !decision_.completed_groups.empty();
+  dropped_readies_ +=
+      static_cast<std::uint64_t>(send_readies(decision_.ready_inputs, hosts, drop_ready_));
+  if (swapped_.empty()) return std::nullopt;
+  PathSwap swap;
+  swap.time = RunClock::now();
+  swap.lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
+  swap.refresh = refreshes_ - 1;
+  shown_ = std::min(swap.lowest, frames_ - 1);
+  return swap;
+}
+
+DisplayPictures MpiDviPath::frame_pictures(int, const RunWatch&) {
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send({mpi_wire::kFetch}, map_.column_rank(c), mpi_wire::kCommand);
+  for (int c = 0; c < map_.columns; ++c) {
+    for (const int id : map_.displays_of_column[static_cast<std::size_t>(c)]) {
+      const auto d = std::find_if(layout_.wall.displays.begin(), layout_.wall.displays.end(),
+                                  [id](const Display& x) { return x.id == id; });
+      RgbImage& picture = pictures_[id];
+      if (picture.empty()) picture = RgbImage(d->width, d->height);
+      MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
+               map_.column_rank(c), mpi_wire::kPicture, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    }
+  }
+  return [this](int id) -> const RgbImage& { return pictures_.at(id); };
+}
+
+void MpiDviPath::fetch_answering(std::chrono::milliseconds grace) const {
+  for (int c = 0; c < map_.columns; ++c) {
+    const int rank = map_.column_rank(c);
+    if (lost_ == rank) continue;
+    try {
+      mpi_wire::send({mpi_wire::kFetch}, rank, mpi_wire::kCommand);
+      for (const int id : map_.displays_of_column[static_cast<std::size_t>(c)]) {
+        const auto deadline = RunClock::now() + grace;
+        while (!mpi_wire::waiting(rank, mpi_wire::kPicture)) {
+          if (RunClock::now() > deadline) throw std::runtime_error("no answer");
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        const auto d = std::find_if(layout_.wall.displays.begin(), layout_.wall.displays.end(),
+                                    [id](const Display& x) { return x.id == id; });
+        RgbImage picture(d->width, d->height);
+        MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE, rank,
+                 mpi_wire::kPicture, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        pictures_[id] = std::move(picture);
+      }
+    } catch (const std::runtime_error&) {
+      // that column's displays are not saved
+    }
+  }
+}
+
+std::optional<DisplayPictures> MpiDviPath::shown() const {
+  // Asked after a fault (and only then, since --show does not run over MPI): what the
+  // columns still answering show now.
+  if (!fetched_after_fault_ && !ended_) {
+    fetched_after_fault_ = true;
+    session_.stop_watching();  // the fault is named: later losses are its effects
+    fetch_answering(std::chrono::milliseconds(300));
+  }
+  if (pictures_.size() != layout_.wall.displays.size()) return std::nullopt;
+  return [this](int id) -> const RgbImage& { return pictures_.at(id); };
+}
+
+void MpiDviPath::finish() {
+  std::uint64_t frame_bytes = 0, tile_bytes = 0;
+  const auto deadline = RunClock::now() + std::chrono::seconds(10);
+  for (int s = 0; s < map_.servers; ++s) {
+    while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
+      if (RunClock::now() > deadline)
+        throw RunFault(fmt::format("pipeserver {} (rank {}) did not end after the last frame", s,
+                                   map_.pipeserver_rank(s)));
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    const Record done = mpi_wire::receive(map_.pipeserver_rank(s), mpi_wire::kDone);
+    Reader in(done);
+    frame_bytes += static_cast<std::uint64_t>(in.next());
+    tile_bytes += static_cast<std::uint64_t>(in.next());
+  }
+  end_columns();
+  std::printf(
+      "swap lock: every display of each of %zu group(s) showed the same frame in all %llu "
+      "refreshes, over %d board column rank(s)\n",
+      groups_.size(), static_cast<unsigned long long>(refreshes_), map_.columns);
+  const double frames = frames_ > 0 ? frames_ : 1;
+  std::printf(
+      "network: %.3f MB per frame of DVI frames (each to the columns it feeds), %.2f KB per "
+      "frame of refresh records between the coordinator and the columns\n",
+      static_cast<double>(frame_bytes) / frames / 1e6,
+      static_cast<double>(control_bytes_) / frames / 1e3);
+  if (tile_bytes > 0) {
+    std::printf("network: %.3f MB per frame of tiles to the columns (vizserver path)\n",
+                static_cast<double>(tile_bytes) / frames / 1e6);
+  }
+}
+
+void MpiDviPath::end_columns() {
+  if (ended_) return;
+  ended_ = true;
+  for (int c = 0; c < map_.columns; ++c) {
+    try {
+      mpi_wire::send({mpi_wire::kEnd}, map_.column_rank(c), mpi_wire::kCommand);
+    } catch (const std::runtime_error&) {
+      // a column that is gone: the fault's MPI_Abort ends what is left
+    }
+  }
+}
+
+void MpiDviPath::add_totals(RunTotals& totals) const {
+  totals.refreshes = refreshes_;
+  totals.dropped_readies += dropped_readies_;
+}
+
+}  // namespace l2

@@ -1,0 +1,112 @@
+// The DVI path over MPI ranks, on the coordinator (display_path.hpp): the §6 sequencer runs
+// here and the board columns route. Each refresh, every column is told which groups swap now
+// and which frame of each input to take in; it answers with what it saw (each input's parity,
+// the displays its strips reached, its frame stamp, and the frame each of its displays shows);
+// from every column's answer the sequencer decides which inputs are routed and which groups
+// complete, and READY goes to the hosts. Swap lock across machines is checked in every refresh.
+#pragma once
+
+#include <atomic>
+#include <map>
+#include <vector>
+
+#include "cluster/mpi_session.hpp"
+#include "cluster/mpi_wire.hpp"
+#include "cluster/rank_map.hpp"
+#include "cluster/swap_lock_check.hpp"
+#include "display_path.hpp"
+#include "dvi_link/refresh_clock.hpp"
+#include "lightning2_emu/frame_sequencer.hpp"
+#include "live_run.hpp"
+
+namespace l2 {
+
+class MpiDviPath final : public DisplayPath {
+ public:
+  MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession& session,
+             const RunOptions& options);
+  ~MpiDviPath() override { session_.stop_watching(); }
+  MpiDviPath(const MpiDviPath&) = delete;
+  MpiDviPath& operator=(const MpiDviPath&) = delete;
+
+  std::string label() const override { return "dvi"; }
+  std::string name() const override { return "DVI path"; }
+  void add_host_args(HostLaunch& launch) const override { launch.dvi = true; }
+  void open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) override;
+
+  bool refreshed() const override { return true; }
+  std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
+                               const RunWatch& watch) override;
+  std::string hosts_wait_for() const override { return "READY"; }
+  std::uint64_t inject_noise(HostSet&) override { return 0; }  // no serial line to disturb
+
+  DisplayPictures frame_pictures(int frame, const RunWatch& watch) override;
+  std::optional<DisplayPictures> shown() const override;
+  int frame_shown() const override { return shown_; }
+  // The line for rank `rank` gone; from any thread.
+  std::string lost_message(int rank) const;
+
+  // A rank whose process is gone (MpiSession::lost_rank).
+  bool down() override;
+  void settle(std::chrono::milliseconds) override {}
+  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
+  std::optional<std::string> failure(int shown, const std::string& kept) override {
+    return failure_as_cause(shown, kept);
+  }
+  std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
+    return {};
+  }
+  std::string process_name() const override { return {}; }
+
+  // Waits for every host's end (its report complete), then ends the columns.
+  void finish() override;
+  void shut_down() override { end_columns(); }
+  void add_totals(RunTotals& totals) const override;
+
+ private:
+  // Takes in every host's notices of frames published; true when one is new.
+  bool take_notices(HostSet& hosts);
+  // One refresh over every column; the tick's decision.
+  void refresh(HostSet& hosts, const RunWatch& watch);
+  void end_columns();
+  // What the columns still answering show, each waited for up to `grace` (after a fault).
+  void fetch_answering(std::chrono::milliseconds grace) const;
+  // Receives column `c`'s answer to refresh `index`, watching the run; a column that does
+  // not answer within the stall timeout is named (the pipeservers it stopped taking frames
+  // from wait on it).
+  mpi_wire::Record column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch);
+  std::string kept() const;
+  std::uint64_t groups_of_displays(std::uint64_t displays) const;
+
+  const TileLayout& layout_;
+  const RankMap& map_;
+  MpiSession& session_;
+  int stall_timeout_ms_;
+  std::optional<int> lost_;  // a rank that is gone
+  RefreshClock clock_;
+  double refresh_hz_;
+  int frames_;
+  int drop_ready_;
+  std::vector<SwapGroup> groups_;
+  std::map<int, int> group_of_display_;  // display id -> group index
+  FrameSequencer sequencer_;
+  SwapLockCheck lock_check_;
+  // This refresh: what the sequencer decided, and what the columns saw.
+  FrameSequencer::Decision decision_;
+  std::vector<int> swapped_;
+  std::vector<FrameObservation> observations_;  // by mesh input
+  std::vector<int> stamps_;                     // by mesh input: the frame taken in
+  std::vector<int> stamp_shown_;                // by host: its stamp on its display
+  std::vector<DisplayShown> displays_shown_;
+  std::uint64_t refreshes_ = 0;
+  std::uint64_t control_bytes_ = 0;  // refresh records to and from the columns
+  bool swap_due_ = false;
+  bool unseen_ = false;  // notices taken in that no refresh has taken in yet
+  bool ended_ = false;
+  std::atomic<int> shown_{-1};  // read by the session's watcher thread too
+  std::uint64_t dropped_readies_ = 0;
+  mutable std::map<int, RgbImage> pictures_;  // by display id: fetched from the columns
+  mutable bool fetched_after_fault_ = false;
+};
+
+}  // namespace l2

@@ -1,0 +1,137 @@
+#include "cluster/mpi_run.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "cluster/mpi_ready_channel.hpp"
+#include "cluster/mpi_session.hpp"
+#include "cluster/rank_map.hpp"
+#include "column_rank.hpp"
+#include "host_set.hpp"
+#include "image/folders.hpp"
+#include "mpi_dvi_path.hpp"
+#include "mpi_viz_path.hpp"
+#include "run_backends.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+constexpr const char* kOnlyDvi =
+    "--mpi: --path vizserver does not run over MPI alone; --path dvi or both";
+
+class MpiBackends final : public RunBackends {
+ public:
+  MpiBackends(const TileLayout& layout, const RankMap& map, MpiSession& session,
+              const RunOptions& o)
+      : layout_(layout), map_(map), session_(session), stall_timeout_ms_(o.stall_timeout_ms) {}
+
+  std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
+                                        const RunOptions& o) const override {
+    return std::make_unique<MpiDviPath>(layout, map_, session_, o);
+  }
+  std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
+    return std::make_unique<MpiVizPath>(layout_, map_, stall_timeout_ms_);
+  }
+  void start_hosts(HostSet& hosts, const HostLaunch& launch,
+                   const TileLayout& layout) const override {
+    hosts.attach(launch, layout, [this](int server) -> std::unique_ptr<ReadyChannel> {
+      const int rank = map_.pipeserver_rank(server);
+      return std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
+    });
+    for (Host& h : hosts.hosts()) {
+      const int rank = map_.pipeserver_rank(h.server);
+      const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
+      h.place = fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid);
+    }
+  }
+
+ private:
+  const TileLayout& layout_;
+  const RankMap& map_;
+  MpiSession& session_;
+  int stall_timeout_ms_;
+};
+
+// Becomes pipeserver `server`; returns only when that failed.
+int exec_pipeserver(const RunOptions& o, int server) {
+  Host h;
+  h.server = server;
+  h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", server)).string();
+  HostLaunch launch = host_launch(o);
+  launch.extra_args = {"--mpi"};
+  if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
+  // Its report goes to --out on the machine it runs on, which the coordinator may not share.
+  make_folders(o.out, "--out");
+  const std::vector<std::string> args = host_argv(launch, h);
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  std::fprintf(stderr, "l2wall: pipeserver %d: cannot run %s: %s\n", server, argv[0],
+               std::strerror(errno));
+  return 1;
+}
+
+int run_column_rank(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+                    int rank) {
+  try {
+    return run_column(layout, map, column, o.threads, o.path == "both");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map.role(rank).c_str(), rank, e.what());
+    MpiSession::abort_all(1);
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> mpi_options_error(const RunOptions& o) {
+  if (o.path == "vizserver") return kOnlyDvi;
+  if (!o.show.empty()) return "--mpi: --show is not available over MPI";
+  if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
+  return std::nullopt;
+}
+
+int run_wall_mpi(const RunOptions& o) {
+  const auto launched = launched_rank();
+  if (!launched) {
+    std::fprintf(stderr,
+                 "l2wall: --mpi: not started by mpirun (no OMPI_COMM_WORLD_RANK); run "
+                 "mpirun -np N l2wall run --wall WALL --mpi\n");
+    return 1;
+  }
+  // Before MPI_Init every rank checks alike; only rank 0 says why, once, and fails: mpirun
+  // would end the job at the first rank that failed, perhaps before rank 0 has said it.
+  const auto refuse = [&](const std::string& why) {
+    if (launched->rank != 0) return 0;
+    std::fprintf(stderr, "l2wall: %s\n", why.c_str());
+    return 1;
+  };
+  if (auto error = mpi_options_error(o)) return refuse(*error);
+  std::optional<TileLayout> layout;
+  std::optional<RankMap> map;
+  try {
+    layout = plan_layout(o.wall.empty() ? default_wall() : load_wall(o.wall));
+    map = make_rank_map(*layout);
+  } catch (const std::exception& e) {
+    return refuse(e.what());
+  }
+  if (auto error = rank_count_error(*map, launched->size)) return refuse(*error);
+  if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
+
+  MpiSession session;
+  if (const auto column = map->column_of(session.rank()))
+    return run_column_rank(*layout, *map, *column, o, session.rank());
+  const MpiBackends backends(*layout, *map, session, o);
+  const int code = run_wall(o, backends);
+  if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
+  return 0;
+}
+
+}  // namespace l2

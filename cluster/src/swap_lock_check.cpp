@@ -1,0 +1,31 @@
+#include "cluster/swap_lock_check.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace l2 {
+
+std::optional<std::string> SwapLockCheck::check(std::uint64_t refresh,
+                                                std::span<const DisplayShown> shown) const {
+  for (const SwapGroup& g : groups_) {
+    const DisplayShown* first = nullptr;
+    for (const int id : g.displays) {
+      const auto it = std::find_if(shown.begin(), shown.end(),
+                                   [id](const DisplayShown& s) { return s.display == id; });
+      if (it == shown.end() || it->frame < 0) continue;
+      if (!first) {
+        first = &*it;
+      } else if (it->frame != first->frame) {
+        return fmt::format(
+            "swap lock broken in refresh {}: group {}: display {} (rank {}) shows frame {}, "
+            "display {} (rank {}) frame {}",
+            refresh, g.id, it->display, it->rank, it->frame, first->display, first->rank,
+            first->frame);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace l2
