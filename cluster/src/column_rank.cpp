@@ -211,10 +211,13 @@ class Column {
       Status taken;
       if (m.kind == mpi_wire::kTileKind) {
         viz::ReceivedTile tile{
-            {m.frame, m.display, m.dx, m.dy, m.w, m.h},
+            {m.frame, m.display, m.dx, m.dy, m.w, m.h, viz::TileKind{m.how}, m.key},
             std::vector<std::uint8_t>(tile_bytes_.begin() + sizeof m, tile_bytes_.end())};
-        if (tile.pixels.size() != tile.header.pixel_bytes())
-          throw std::runtime_error("a tile message of the wrong size");
+        if (const Status valid = viz::validate(
+                tile.header,
+                static_cast<std::uint32_t>(tile.header.fixed_size() + tile.pixels.size()));
+            !valid.ok())
+          throw std::runtime_error("a tile message: " + valid.reason());
         taken = assembler_->add_tile(*server, std::move(tile));
       } else {
         taken =

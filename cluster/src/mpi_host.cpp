@@ -46,8 +46,11 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                           t.y,
                           static_cast<std::uint32_t>(t.w),
                           static_cast<std::uint32_t>(t.h),
-                          0};
-  const std::size_t row = static_cast<std::size_t>(t.w) * 3;
+                          0,
+                          static_cast<std::uint32_t>(t.how),
+                          t.key};
+  const std::size_t row =
+      static_cast<std::size_t>(t.w) * 3 * (t.how == viz::TileKind::Depth ? 2 : 1);
   message_.resize(sizeof m + row * static_cast<std::size_t>(t.h));
   std::memcpy(message_.data(), &m, sizeof m);
   for (int y = 0; y < t.h; ++y)
@@ -65,7 +68,7 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
 void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t) {
   for (std::size_t c = 0; c < column_ranks_.size(); ++c) {
     const int to = column_ranks_[c];
-    const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, sent_[c]};
+    const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, sent_[c], 0, 0};
     sent_[c] = 0;
     if (MPI_Send(&m, sizeof m, MPI_BYTE, to, mpi_wire::kTile, MPI_COMM_WORLD) != MPI_SUCCESS)
       throw std::runtime_error(fmt::format("sending the end of a frame to rank {} failed", to));

@@ -34,6 +34,10 @@ struct TileMessage {
   std::int32_t dx = 0, dy = 0;
   std::uint32_t w = 0, h = 0;
   std::uint32_t tiles = 0;  // kind 2: how many tiles the pipeserver sent for the frame
+  // Kind 1: how the tile is composited (viz::TileKind, spec §7) and a KEY tile's key colour;
+  // a DEPTH tile's rows are its colour, then its depth, as in TILE_EXT.
+  std::uint32_t how = 0;
+  std::uint32_t key = 0;
 };
 inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2;
 
