@@ -29,6 +29,7 @@
 #include "run_report.hpp"
 #include "run_time.hpp"
 #include "stop_signal.hpp"
+#include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "viz_path.hpp"
@@ -55,6 +56,7 @@ class LiveRun {
     // The planner refused what no run can use (plan_layout); what it only warns of, tilelayout
     // prints too, in the same words.
     for (const std::string& w : layout_.warnings) std::fprintf(stderr, "l2wall: %s\n", w.c_str());
+    cap_refresh_at_the_link();
     make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
@@ -75,6 +77,22 @@ class LiveRun {
       return stopped_exit_status(stopped_);
     }
     return latency_ok_ ? 0 : 1;
+  }
+
+  // A DVI link carries no more refreshes than its pixel clock allows (dual link, CVT reduced
+  // blanking): asked for more, the emulator refreshes as fast as the link could carry frames.
+  void cap_refresh_at_the_link() {
+    if (o_.refresh_hz <= 0) return;
+    const int w = wall_.framebuffer_width, h = wall_.framebuffer_height;
+    const int most = max_refresh_hz(w, h, kDualLinkDviMhz);
+    if (o_.refresh_hz <= most) return;
+    std::fprintf(stderr,
+                 "l2wall: warning: framebuffers of %dx%d at %g Hz need a %.2f MHz pixel clock, "
+                 "more than dual-link DVI carries (%g MHz): the emulator refreshes at %d Hz\n",
+                 w, h, o_.refresh_hz,
+                 dvi_timing(w, h, static_cast<int>(o_.refresh_hz)).pixel_clock_mhz, kDualLinkDviMhz,
+                 most);
+    o_.refresh_hz = most;
   }
 
   // Whether a progress line is on stderr (an error then starts a line of its own).

@@ -120,6 +120,20 @@ INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                                            WallCase{"sort-last-512x384.toml", 1, 3},
                                            WallCase{"hybrid-2x1.toml", 2, 5}));
 
+// Asked for more refreshes than a DVI link carries, the emulator refreshes as fast as the link
+// could (dvi_timing_test.cpp works the default wall's 800x600 framebuffers out by hand).
+TEST(LiveRun, TheRefreshRateIsWhatTheLinkCarries) {
+  WallRun run("link-cap", {"--frames", "3", "--refresh", "1000"});
+  ASSERT_EQ(run.wait(60s).code, 0) << run.output();
+  EXPECT_NE(run.output().find("l2wall: warning: framebuffers of 800x600 at 1000 Hz need a 1067.50 "
+                              "MHz pixel clock, more than dual-link DVI carries (330 MHz): the "
+                              "emulator refreshes at 453 Hz\n"),
+            std::string::npos)
+      << run.output();
+  EXPECT_NE(slurp(run.out() / "summary.txt").find(" refreshes at 453 Hz)"), std::string::npos)
+      << slurp(run.out() / "summary.txt");
+}
+
 TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
   WallRun run("viz", {"--frames", "4", "--path", "vizserver", "--keep", "every"});
   const ExitStatus status = run.wait(30s);

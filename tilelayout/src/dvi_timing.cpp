@@ -44,4 +44,11 @@ DviTiming dvi_timing(int width, int height, int refresh_hz) {
   return t;
 }
 
+int max_refresh_hz(int width, int height, double link_mhz) {
+  // The clock grows with the rate: the last rate before the first that does not fit.
+  int hz = 0;
+  while (hz < 1000 && dvi_timing(width, height, hz + 1).pixel_clock_mhz <= link_mhz) ++hz;
+  return hz;
+}
+
 }  // namespace l2

@@ -52,5 +52,17 @@ TEST(DviTiming, AWidthOffTheCharacterCellsIsRoundedUp) {
   EXPECT_DOUBLE_EQ(t.pixel_clock_mhz, 120.50);  // 41 x 2610 x 1128 = 120.706 MHz
 }
 
+TEST(DviTiming, TheFastestRefreshALinkCarries) {
+  // 800x600 by hand: 960 pixels a line; at 453 Hz a frame is 2207.5 us, a line (2207.5 - 460) /
+  // 600 = 2.9125 us, so 158 blanking lines and 758 in all: 453 x 758 x 960 = 329.64 MHz, 329.5
+  // after rounding, within a dual link. At 454 Hz 159 lines: 454 x 759 x 960 = 330.8 MHz.
+  EXPECT_EQ(max_refresh_hz(800, 600, kDualLinkDviMhz), 453);
+  EXPECT_LE(dvi_timing(800, 600, 453).pixel_clock_mhz, kDualLinkDviMhz);
+  EXPECT_GT(dvi_timing(800, 600, 454).pixel_clock_mhz, kDualLinkDviMhz);
+  // Within the rates a run takes, a small frame fits at any of them; nothing fits a 0 MHz link.
+  EXPECT_EQ(max_refresh_hz(64, 48, kDualLinkDviMhz), 1000);
+  EXPECT_EQ(max_refresh_hz(800, 600, 0.0), 0);
+}
+
 }  // namespace
 }  // namespace l2

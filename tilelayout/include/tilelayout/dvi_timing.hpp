@@ -23,4 +23,8 @@ struct DviTiming {
 // width, height >= 1, refresh_hz 1..1000 (as a wall file allows).
 DviTiming dvi_timing(int width, int height, int refresh_hz);
 
+// The highest whole refresh rate, 1..1000 Hz, whose pixel clock a link of `link_mhz` carries at
+// width x height (0 when not even 1 Hz does): what the emulator refreshes at, at most.
+int max_refresh_hz(int width, int height, double link_mhz);
+
 }  // namespace l2
