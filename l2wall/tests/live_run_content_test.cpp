@@ -76,6 +76,33 @@ TEST(ModelOnTheWall, GltfBaseColourReachesTheDisplays) {
   fs::remove_all(dir);
 }
 
+// The same square on the wide wall (three displays side by side): framed to the canvas, it
+// reaches every display, in its base colour.
+TEST(ModelOnTheWall, GltfModelSpansTheWideWall) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-gltf-wide-{}", getpid());
+  fs::create_directories(dir);
+  const float green[3] = {0.1f, 0.9f, 0.3f};
+  write_gltf_square(dir / "square.gltf", green);
+  const fs::path wall = write_wide_wall(dir);
+  WallRun run("gltf-wide", {"--wall", wall.string(), "--mesh", (dir / "square.gltf").string(),
+                            "--camera-orbit", "0", "--frames", "2", "--refresh", "0"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  for (int d = 0; d < 3; ++d) {
+    const RgbImage shown = read_png(run.out() / "frame-1" / fmt::format("display-{}.png", d));
+    long square = 0;
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        const Rgb p = shown.at(x, y);
+        square += p.g > 100 && std::abs(p.r * 9 - p.g) <= 12 && std::abs(p.b * 3 - p.g) <= 6;
+      }
+    }
+    EXPECT_GT(square, 200) << "display " << d;
+  }
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
 TEST(ModelOnTheWall, MissingOrDamagedModelIsOneLine) {
   WallRun missing("missing-model", {"--mesh", "/nonexistent/model.glb"});
   EXPECT_EQ(missing.wait(30s).code, 2);
