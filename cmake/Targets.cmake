@@ -4,9 +4,10 @@
 # standard library, and the build type's flags with every sanitizer of the preset on every
 # file.
 #
-#   l2_library(<name> [INTERFACE|OBJECT|MODULE] [HOT] [SOURCES <file>...]
+#   l2_library(<name> [INTERFACE|OBJECT|MODULE] [HOT] [SOURCES <file>...] [COMMAND_LINE <file>...]
 #              [INCLUDES <dir>...] [PRIVATE_INCLUDES <dir>...] [LINKS <item>...])
-#   l2_program(<name> SOURCES <file>... [PRIVATE_INCLUDES <dir>...] [LINKS <item>...])
+#   l2_program(<name> SOURCES <file>... [COMMAND_LINE <file>...] [PRIVATE_INCLUDES <dir>...]
+#              [LINKS <item>...])
 #   l2_test(<name> SOURCES <file>... [LINKS <item>...] [LABELS <label>...])
 #
 # INCLUDES are the library's public headers (its users see them), PRIVATE_INCLUDES its own.
@@ -22,6 +23,13 @@
 # type's -O: GoogleTest expands to much inline code in every test file, and optimising it was
 # most of the suite's compile time, while the tests run for seconds. They do not touch the
 # sanitizer flags. The libraries under test keep the build type's flags.
+
+# A program's COMMAND_LINE files hold only its command line (CLI11, header-only in the Debian
+# version, instantiated anew in every program): compiled with L2_COMMAND_LINE_FLAGS, appended,
+# outside the precompiled header and the unity build. Optimising CLI11's inline code was the
+# largest part of each program's build, for code that runs once at start. Sanitizer flags stay.
+set(L2_COMMAND_LINE_FLAGS "-O0" CACHE STRING "Flags appended for command-line files (l2_program)")
+separate_arguments(l2_command_line_flags UNIX_COMMAND "${L2_COMMAND_LINE_FLAGS}")
 
 set(L2_TEST_CODE_FLAGS "-O0" CACHE STRING "Flags appended for test code (l2_test)")
 separate_arguments(l2_test_code_flags UNIX_COMMAND "${L2_TEST_CODE_FLAGS}")
@@ -81,15 +89,25 @@ function(l2_common target)
   target_precompile_headers(${target} REUSE_FROM l2_code_pch)
 endfunction()
 
+# The COMMAND_LINE files of a target, with the flags above.
+function(l2_command_line_files target)
+  if(ARGN)
+    set_source_files_properties(${ARGN} TARGET_DIRECTORY ${target} PROPERTIES
+                                COMPILE_OPTIONS "${l2_command_line_flags}"
+                                SKIP_PRECOMPILE_HEADERS ON SKIP_UNITY_BUILD_INCLUSION ON)
+  endif()
+endfunction()
+
 function(l2_library name)
   cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
-                        "SOURCES;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
+                        "SOURCES;COMMAND_LINE;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
   if(ARG_INTERFACE)
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${ARG_INCLUDES})
     l2_link(${name} INTERFACE ${ARG_LINKS})
     return()
   endif()
+  list(APPEND ARG_SOURCES ${ARG_COMMAND_LINE})
   if(ARG_OBJECT)
     add_library(${name} OBJECT ${ARG_SOURCES})
   elseif(ARG_MODULE)
@@ -107,6 +125,7 @@ function(l2_library name)
     target_include_directories(${name} PRIVATE ${ARG_PRIVATE_INCLUDES})
   endif()
   l2_link(${name} PRIVATE ${ARG_LINKS})
+  l2_command_line_files(${name} ${ARG_COMMAND_LINE})
   if(ARG_MODULE OR ARG_OBJECT)
     # Loaded or linked into others with their own flags (a module's hidden visibility):
     # they parse their headers themselves.
@@ -117,8 +136,9 @@ function(l2_library name)
 endfunction()
 
 function(l2_program name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;PRIVATE_INCLUDES;LINKS" ${ARGN})
-  add_executable(${name} ${ARG_SOURCES})
+  cmake_parse_arguments(ARG "" "" "SOURCES;COMMAND_LINE;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES} ${ARG_COMMAND_LINE})
+  l2_command_line_files(${name} ${ARG_COMMAND_LINE})
   if(ARG_PRIVATE_INCLUDES)
     target_include_directories(${name} PRIVATE ${ARG_PRIVATE_INCLUDES})
   endif()

@@ -6,7 +6,7 @@ pkg_check_modules(TOMLPP REQUIRED IMPORTED_TARGET tomlplusplus)
 l2_library(l2_golden
            SOURCES src/golden_manifest.cpp src/golden_routing.cpp src/golden_rendered.cpp
                    src/golden_entry.cpp src/golden_check.cpp src/golden_update.cpp
-                   src/golden_command.cpp
+           COMMAND_LINE src/golden_command.cpp
            INCLUDES src
            LINKS PUBLIC l2_wallrun l2_tilelayout l2_image l2_pipeserver l2_strip_headers fmt::fmt
                  PRIVATE l2_emu l2_vizserver PkgConfig::TOMLPP l2_command_line)
