@@ -2,128 +2,20 @@
 
 #include <array>
 
-#include <fmt/format.h>
-
 namespace l2 {
-namespace {
 
-using Clock = std::chrono::steady_clock;
-
-std::uint32_t reduce(std::uint64_t frame) {
-  return static_cast<std::uint32_t>(frame % kFrameModulus);
+bool BackChannel::send_line(const std::string& line, MessageKind kind) {
+  // READY never waits for a host that stopped reading; a SYNC? waits a bounded time.
+  if (kind == MessageKind::Ready) return port_.write_some(line) == line.size();
+  port_.write_all(line, kWriteTimeout);
+  return true;
 }
 
-std::chrono::milliseconds left_until(Clock::time_point deadline) {
-  const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
-  return left.count() > 0 ? left : std::chrono::milliseconds{0};
-}
-
-}  // namespace
-
-std::string to_string(const BackChannelCounts& c) {
-  return fmt::format(
-      "decoded {}, noise bytes {}, resyncs {}, bad checksums {}, READY sent {}, READY dropped {}, "
-      "SYNC? sent {}, "
-      "SYNC? answered {}, SYNC? unanswered {}, wait timeouts {}, stale {}, duplicates {}, "
-      "ahead {}, unexpected {}",
-      c.parser.messages, c.parser.noise_bytes, c.parser.resyncs, c.parser.bad_checksums,
-      c.ready_sent, c.ready_dropped, c.sync_sent, c.sync_answered, c.sync_unanswered,
-      c.wait_timeouts, c.stale, c.duplicates, c.ahead, c.unexpected);
-}
-
-const BackChannelCounts& BackChannel::counts() const {
-  counts_.parser = parser_.counts();
-  return counts_;
-}
-
-bool BackChannel::send_ready(std::uint64_t frame) {
-  // Remembered even when dropped: SYNC? repeats it once the host reads again.
-  last_sent_ = reduce(frame);
-  ++counts_.ready_sent;
-  const std::string line = format_message(MessageKind::Ready, frame);
-  if (port_.write_some(line) == line.size()) return true;
-  ++counts_.ready_dropped;
-  return false;
-}
-
-void BackChannel::send_sync_request(std::uint64_t expected) {
-  ++counts_.sync_sent;
-  port_.write_all(format_message(MessageKind::SyncRequest, expected), kWriteTimeout);
-}
-
-bool BackChannel::pump(std::chrono::milliseconds timeout) {
+bool BackChannel::receive(MessageKind /*awaited*/, std::chrono::milliseconds timeout) {
   std::array<std::uint8_t, 256> buffer;
   const std::size_t n = port_.read(buffer, timeout);
-  parser_.feed(std::span<const std::uint8_t>(buffer.data(), n),
-               [&](const Message& m) { inbox_.push_back(m); });
+  feed(std::span<const std::uint8_t>(buffer.data(), n));
   return n > 0;
-}
-
-int BackChannel::serve(std::chrono::milliseconds duration) {
-  const auto deadline = Clock::now() + duration;
-  int answered = 0;
-  do {
-    pump(left_until(deadline));
-    while (!inbox_.empty()) {
-      const Message m = inbox_.front();
-      inbox_.pop_front();
-      if (m.kind != MessageKind::SyncRequest) {
-        ++counts_.unexpected;
-      } else if (!last_sent_) {
-        ++counts_.sync_unanswered;  // nothing swapped yet; the host keeps waiting
-      } else {
-        ++counts_.sync_answered;
-        ++answered;
-        send_ready(*last_sent_);
-      }
-    }
-  } while (Clock::now() < deadline);
-  return answered;
-}
-
-bool BackChannel::accept(std::uint32_t frame, std::uint32_t expected) {
-  const std::uint32_t distance = (frame + kFrameModulus - expected) % kFrameModulus;
-  if (distance == 0) return true;
-  if (distance < kFrameModulus / 2) {
-    ++counts_.ahead;
-    return true;
-  }
-  if (last_accepted_ == frame) {
-    ++counts_.duplicates;
-  } else {
-    ++counts_.stale;
-  }
-  return false;
-}
-
-WaitResult BackChannel::wait_ready(std::uint64_t expected_frame, std::chrono::milliseconds timeout,
-                                   int retries) {
-  const std::uint32_t expected = reduce(expected_frame);
-  for (int attempt = 0;; ++attempt) {
-    const auto deadline = Clock::now() + timeout;
-    for (;;) {
-      while (!inbox_.empty()) {
-        const Message m = inbox_.front();
-        inbox_.pop_front();
-        if (m.kind != MessageKind::Ready) {
-          ++counts_.unexpected;
-        } else if (accept(m.frame, expected)) {
-          last_accepted_ = m.frame;
-          return WaitResult{WaitStatus::Ok, m.frame, attempt, {}};
-        }
-      }
-      if (Clock::now() >= deadline) break;
-      pump(left_until(deadline));
-    }
-    ++counts_.wait_timeouts;
-    if (attempt == retries) {
-      return WaitResult{
-          WaitStatus::Timeout, expected, attempt,
-          fmt::format("no READY for frame {:06d} on {} after {} SYNC? retries ({} waits of {} ms)",
-                      expected, port_.name(), retries, retries + 1, timeout.count())};
-    }
-    send_sync_request(expected);
-  }
 }
 
 }  // namespace l2
