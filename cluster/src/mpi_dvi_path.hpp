@@ -48,15 +48,10 @@ class MpiDviPath final : public DisplayPath {
 
   // A rank whose process is gone (MpiSession::lost_rank).
   bool down() override;
-  void settle(std::chrono::milliseconds) override {}
   std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
   std::optional<std::string> failure(int shown, const std::string& kept) override {
     return failure_as_cause(shown, kept);
   }
-  std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
-    return {};
-  }
-  std::string process_name() const override { return {}; }
 
   // Waits for every host's end (its report complete), then ends the columns.
   void finish() override;

@@ -37,16 +37,7 @@ class MpiVizPath final : public DisplayPath {
   // Never down by itself; asked at every check of the run, so it also takes in what the
   // columns composed and sends SWAPPED.
   bool down() override;
-  void settle(std::chrono::milliseconds) override {}
-  std::optional<std::string> failure_as_cause(int, const std::string&) override { return {}; }
-  std::optional<std::string> failure(int, const std::string&) override { return {}; }
-  std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
-    return {};
-  }
-  std::string process_name() const override { return {}; }
 
-  void finish() override {}
-  void shut_down() override {}
   void add_totals(RunTotals&) const override {}
 
  private:

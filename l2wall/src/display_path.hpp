@@ -68,27 +68,35 @@ class DisplayPath {
   virtual int frame_shown() const = 0;
 
   // --- faults ------------------------------------------------------------------------------
+  // The defaults are those of a path with no process or stream of its own (the emulator in
+  // this process): it never goes down and has nothing to say of a fault.
   // The path's own process ended or its stream broke.
-  virtual bool down() = 0;
+  virtual bool down() { return false; }
   // Waits up to `grace` for a path that went down to be reaped, so a fault names how it ended.
-  virtual void settle(std::chrono::milliseconds grace) = 0;
+  virtual void settle(std::chrono::milliseconds /*grace*/) {}
   // The path's failure when it is the cause (it went down without saying why); `kept`: what
   // the displays show.
-  virtual std::optional<std::string> failure_as_cause(int shown, const std::string& kept) = 0;
+  virtual std::optional<std::string> failure_as_cause(int /*shown*/, const std::string& /*kept*/) {
+    return std::nullopt;
+  }
   // The path's failure as the last explanation left.
-  virtual std::optional<std::string> failure(int shown, const std::string& kept) = 0;
+  virtual std::optional<std::string> failure(int /*shown*/, const std::string& /*kept*/) {
+    return std::nullopt;
+  }
   // A host that gave up on this path while it still runs: the path hangs, named so.
-  virtual std::optional<std::string> hang_behind(const Host& h, int shown,
-                                                 const std::string& kept) = 0;
+  virtual std::optional<std::string> hang_behind(const Host& /*h*/, int /*shown*/,
+                                                 const std::string& /*kept*/) {
+    return std::nullopt;
+  }
   // How messages name the path's own process ("compositing server (vizserver pid 4242)"), or
   // empty when it has none.
-  virtual std::string process_name() const = 0;
+  virtual std::string process_name() const { return {}; }
 
   // --- ending ------------------------------------------------------------------------------
   // After the last frame: its process must end by itself, successfully.
-  virtual void finish() = 0;
+  virtual void finish() {}
   // Ends its process, if any, and reaps it.
-  virtual void shut_down() = 0;
+  virtual void shut_down() {}
   // Its counts for the report.
   virtual void add_totals(RunTotals& totals) const = 0;
 };

@@ -31,17 +31,6 @@ class DviPath final : public DisplayPath {
   std::optional<DisplayPictures> shown() const override { return pictures(); }
   int frame_shown() const override { return shown_; }
 
-  bool down() override { return false; }
-  void settle(std::chrono::milliseconds) override {}
-  std::optional<std::string> failure_as_cause(int, const std::string&) override { return {}; }
-  std::optional<std::string> failure(int, const std::string&) override { return {}; }
-  std::optional<std::string> hang_behind(const Host&, int, const std::string&) override {
-    return {};
-  }
-  std::string process_name() const override { return {}; }
-
-  void finish() override {}
-  void shut_down() override {}
   void add_totals(RunTotals& totals) const override;
 
  private:
