@@ -114,12 +114,12 @@ void MpiDviPath::refresh(HostSet& hosts) {
   displays_shown_.clear();
   // A column that failed: the others still answer (they swapped with it), so what the
   // displays keep is known before the fault is named and the displays are saved.
-  std::optional<std::string> column_failed;
+  std::optional<int> column_failed;
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
     const std::optional<Record> answer = column_answer(c, hosts);
     if (!answer) {
-      if (!column_failed) column_failed = column_failure(c, index);
+      if (!column_failed) column_failed = c;
       continue;
     }
     control_bytes_ += answer->size() * sizeof(std::int64_t);
@@ -148,7 +148,7 @@ void MpiDviPath::refresh(HostSet& hosts) {
   }
   if (column_failed) {
     if (!swapped_.empty()) note_swap();
-    throw RunFault(*column_failed);
+    throw RunFault(column_failure(*column_failed, index));  // names the frame kept now
   }
   sequencer_.decide(observations_, decision_);
   sequencer_.commit(observations_, decision_);
