@@ -57,8 +57,10 @@ MpiDviReceiver::MpiDviReceiver(int source_rank, int width, int height)
 
 MpiDviReceiver::~MpiDviReceiver() {
   if (request_ != MPI_REQUEST_NULL) {
+    // Waited for, not freed: a receive still in flight would write into the freed buffer
+    // (a column resumed after a stop, ending while its pipeservers still send).
     MPI_Cancel(&request_);
-    MPI_Request_free(&request_);
+    MPI_Wait(&request_, MPI_STATUS_IGNORE);
   }
 }
 

@@ -97,7 +97,7 @@ std::uint64_t MpiDviPath::groups_of_displays(std::uint64_t displays) const {
   return groups;
 }
 
-void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
+void MpiDviPath::refresh(HostSet& hosts) {
   const auto index = static_cast<std::int64_t>(refreshes_++);
   sequencer_.refresh(swapped_);
   Record tick{mpi_wire::kTick, index, static_cast<std::int64_t>(swapped_.size())};
@@ -112,11 +112,18 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
   stamps_.assign(static_cast<std::size_t>(map_.mesh_inputs), -1);
   stamp_shown_.assign(hosts.hosts().size(), INT_MAX);
   displays_shown_.clear();
+  // A column that failed: the others still answer (they swapped with it), so what the
+  // displays keep is known before the fault is named and the displays are saved.
+  std::optional<int> column_failed;
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
-    const Record answer = column_answer(c, index, hosts, watch);
-    control_bytes_ += answer.size() * sizeof(std::int64_t);
-    Reader in(answer);
+    const std::optional<Record> answer = column_answer(c, hosts);
+    if (!answer) {
+      if (!column_failed) column_failed = c;
+      continue;
+    }
+    control_bytes_ += answer->size() * sizeof(std::int64_t);
+    Reader in(*answer);
     if (in.next() != index)
       throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
     for (int n = in.next_int(); n > 0; --n) {
@@ -139,6 +146,10 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
       displays_shown_.push_back({display, in.next_int(), rank});
     }
   }
+  if (column_failed) {
+    if (!swapped_.empty()) note_swap();
+    throw RunFault(column_failure(*column_failed, index));  // names the frame kept now
+  }
   sequencer_.decide(observations_, decision_);
   sequencer_.commit(observations_, decision_);
   Record route{mpi_wire::kRoute, static_cast<std::int64_t>(decision_.route.size())};
@@ -152,19 +163,40 @@ void MpiDviPath::refresh(HostSet& hosts, const RunWatch& watch) {
     throw RunFault(*broken);
 }
 
-Record MpiDviPath::column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch) {
+std::optional<Record> MpiDviPath::column_answer(int c, HostSet& hosts) {
   const int rank = map_.column_rank(c);
   const auto deadline = RunClock::now() + std::chrono::milliseconds(stall_timeout_ms_);
-  return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
-    watch.processes();
-    hosts.serve_channels();
-    if (RunClock::now() < deadline) return;
-    const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
-    throw RunFault(fmt::format(
-        "{} (rank {} on {}, pid {}) did not answer refresh {} within {} ms (stopped or hung) "
-        "while the displays wait for frame {}; {}",
-        map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1, kept()));
-  });
+  // Only this column's own loss ends the wait: a pipeserver gone is taken up after this
+  // refresh, once the frame the displays keep is known.
+  struct Failed {};
+  try {
+    return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
+      if (down() && *lost_ == rank) throw Failed{};
+      hosts.serve_channels();
+      if (RunClock::now() >= deadline) {
+        stuck_ = rank;
+        throw Failed{};
+      }
+    });
+  } catch (const Failed&) {
+    return std::nullopt;
+  }
+}
+
+std::string MpiDviPath::column_failure(int c, std::int64_t index) const {
+  const int rank = map_.column_rank(c);
+  if (lost_ == rank) return lost_message(rank);
+  const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
+  return fmt::format(
+      "{} (rank {} on {}, pid {}) did not answer refresh {} within {} ms (stopped or hung) "
+      "while the displays wait for frame {}; {}",
+      map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1, kept());
+}
+
+void MpiDviPath::note_swap() {
+  // Hosts on no answering column are INT_MAX: the frame kept is that of the displays left.
+  const int lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
+  if (lowest != INT_MAX) shown_ = std::min(lowest, frames_ - 1);
 }
 
 std::string MpiDviPath::kept() const {
@@ -194,7 +226,12 @@ std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameR
     return std::nullopt;
   }
   const auto t0 = RunClock::now();
-  refresh(hosts, watch);
+  refresh(hosts);
+  if (!swapped_.empty()) note_swap();
+  // A rank lost during the refresh is named now, with the frame the displays keep, and before
+  // READY is sent: MPI traffic to a rank that is gone ends this process (Open MPI's TCP
+  // transport aborts), and the displays would not be saved.
+  watch.processes();
   record_new_frames(
       hosts, records, decision_.kinds, [&](std::size_t i) { return stamps_[i]; }, refreshes_ - 1,
       t0, ms_between(t0, RunClock::now()));
@@ -206,7 +243,6 @@ std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameR
   swap.time = RunClock::now();
   swap.lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
   swap.refresh = refreshes_ - 1;
-  shown_ = std::min(swap.lowest, frames_ - 1);
   return swap;
 }
 
@@ -227,9 +263,10 @@ DisplayPictures MpiDviPath::frame_pictures(int, const RunWatch&) {
 }
 
 void MpiDviPath::fetch_answering(std::chrono::milliseconds grace) const {
+  pictures_.clear();  // a kept frame's: not what a column that is gone showed last
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
-    if (lost_ == rank) continue;
+    if (lost_ == rank || stuck_ == rank) continue;  // its displays are lost with it
     try {
       mpi_wire::send({mpi_wire::kFetch}, rank, mpi_wire::kCommand);
       for (const int id : map_.displays_of_column[static_cast<std::size_t>(c)]) {
@@ -259,8 +296,13 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
     session_.stop_watching();  // the fault is named: later losses are its effects
     fetch_answering(std::chrono::milliseconds(300));
   }
-  if (pictures_.size() != layout_.wall.displays.size()) return std::nullopt;
-  return [this](int id) -> const RgbImage& { return pictures_.at(id); };
+  // The displays of a column that is gone or stopped are lost with it: empty pictures.
+  if (pictures_.empty()) return std::nullopt;
+  return [this](int id) -> const RgbImage& {
+    static const RgbImage lost;
+    const auto it = pictures_.find(id);
+    return it == pictures_.end() ? lost : it->second;
+  };
 }
 
 void MpiDviPath::finish() {

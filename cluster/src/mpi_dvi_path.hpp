@@ -61,15 +61,20 @@ class MpiDviPath final : public DisplayPath {
  private:
   // Takes in every host's notices of frames published; true when one is new.
   bool take_notices(HostSet& hosts);
-  // One refresh over every column; the tick's decision.
-  void refresh(HostSet& hosts, const RunWatch& watch);
+  // One refresh over every column; the tick's decision. A column that fails is named after
+  // the others answered.
+  void refresh(HostSet& hosts);
+  // After a refresh that swapped: the frame the displays keep, from the columns' answers.
+  void note_swap();
   void end_columns();
   // What the columns still answering show, each waited for up to `grace` (after a fault).
   void fetch_answering(std::chrono::milliseconds grace) const;
-  // Receives column `c`'s answer to refresh `index`, watching the run; a column that does
-  // not answer within the stall timeout is named (the pipeservers it stopped taking frames
-  // from wait on it).
-  mpi_wire::Record column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch);
+  // Column `c`'s answer to this refresh; nullopt when it is gone or did not answer within the
+  // stall timeout (stopped or hung: the pipeservers it stopped taking frames from wait on it,
+  // so they are not the cause).
+  std::optional<mpi_wire::Record> column_answer(int c, HostSet& hosts);
+  // The line naming column `c`, which failed refresh `index`.
+  std::string column_failure(int c, std::int64_t index) const;
   std::string kept() const;
   std::uint64_t groups_of_displays(std::uint64_t displays) const;
 
@@ -78,6 +83,7 @@ class MpiDviPath final : public DisplayPath {
   MpiSession& session_;
   int stall_timeout_ms_;
   std::optional<int> lost_;  // a rank that is gone
+  int stuck_ = -1;           // a column rank that stopped answering
   RefreshClock clock_;
   double refresh_hz_;
   int frames_;

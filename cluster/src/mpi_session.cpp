@@ -46,12 +46,9 @@ MpiSession::MpiSession() {
 
 MpiSession::~MpiSession() {
   stop_watching();
-  for (const int fd : liveness_) {
-    if (fd < 0) continue;
-    // An end, not a death: the coordinator no longer takes this connection's close as a fault.
-    if (rank_ != 0) send(fd, "e", 1, MSG_NOSIGNAL);
-    close(fd);
-  }
+  // An end, not a death: the coordinator no longer takes this connection's close as a fault.
+  if (rank_ != 0 && !liveness_.empty()) send(liveness_.front().get(), "e", 1, MSG_NOSIGNAL);
+  liveness_.clear();
   MPI_Finalize();
 }
 
@@ -72,18 +69,19 @@ void MpiSession::connect_liveness() {
     const std::int32_t me = rank_;
     if (send(fd.get(), &me, sizeof me, MSG_NOSIGNAL) != sizeof me)
       throw std::runtime_error("cannot tell the coordinator who this rank is");
-    liveness_.push_back(fd.release());
+    liveness_.push_back(std::move(fd));
     return;
   }
-  liveness_.assign(static_cast<std::size_t>(size_), -1);
+  liveness_.resize(static_cast<std::size_t>(size_));
   // Every other rank connects now: wait for each (the listener is non-blocking).
   fcntl(listener.get(), F_SETFL, fcntl(listener.get(), F_GETFL) & ~O_NONBLOCK);
   for (int n = 1; n < size_; ++n) {
-    const int fd = accept(listener.get(), nullptr, nullptr);
+    Fd fd(accept(listener.get(), nullptr, nullptr));
     std::int32_t who = -1;
-    if (fd < 0 || recv(fd, &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 || who >= size_)
+    if (!fd || recv(fd.get(), &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 ||
+        who >= size_)
       throw std::runtime_error("a rank's liveness connection failed");
-    liveness_[static_cast<std::size_t>(who)] = fd;
+    liveness_[static_cast<std::size_t>(who)] = std::move(fd);
   }
 }
 
@@ -108,19 +106,20 @@ void MpiSession::report_unclaimed() {
 void MpiSession::watch(std::stop_token stop) {
   while (!stop.stop_requested() && lost_ < 0) {
     std::vector<pollfd> fds;
-    for (const int fd : liveness_) {
-      if (fd >= 0) fds.push_back({fd, POLLIN, 0});
+    std::vector<std::size_t> ranks;  // by entry of fds
+    for (std::size_t r = 0; r < liveness_.size(); ++r) {
+      if (!liveness_[r]) continue;
+      fds.push_back({liveness_[r].get(), POLLIN, 0});
+      ranks.push_back(r);
     }
     if (fds.empty()) return;
     if (poll(fds.data(), fds.size(), 5) <= 0) continue;
-    for (const pollfd& p : fds) {
-      if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      const auto r = static_cast<std::size_t>(std::find(liveness_.begin(), liveness_.end(), p.fd) -
-                                              liveness_.begin());
+    for (std::size_t i = 0; i < fds.size(); ++i) {
+      if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const std::size_t r = ranks[i];
       char byte = 0;
-      if (recv(p.fd, &byte, 1, MSG_DONTWAIT) > 0) {  // the rank ended well
-        close(p.fd);
-        liveness_[r] = -1;
+      if (recv(fds[i].fd, &byte, 1, MSG_DONTWAIT) > 0) {  // the rank ended well
+        liveness_[r].reset();
         continue;
       }
       {

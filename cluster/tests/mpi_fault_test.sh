@@ -1,15 +1,23 @@
 #!/usr/bin/env bash
-# A rank of an MPI run killed (SIGKILL) or stopped (SIGSTOP) mid-run, on the default wall
-# (6 ranks: coordinator, pipeservers 0-3 as ranks 1-4, board column 0 as rank 5): the run must
-# end within the stall timeout (plus saving the displays and mpirun's teardown) with one line
-# naming the rank, its role, its host and the frame, exit non-zero, and leave no process of the
-# run behind. The hosts wait longer for READY than that, so none gives up first.
-# Usage: mpi_fault_test.sh L2WALL OUT
+# A rank of an MPI run killed (SIGKILL) or stopped (SIGSTOP) mid-run: on the default wall
+# (6 ranks: coordinator, pipeservers 0-3 as ranks 1-4, board column 0 as rank 5) and on a
+# two-column wall (5 ranks: pipeservers 0-1, columns 0-1 as ranks 3-4). The run must end within
+# the stall timeout (plus saving the displays and mpirun's teardown) with one line naming the
+# rank, its role, its host and the frame, exit non-zero, and leave no process of the run and
+# no shared memory behind. What the displays showed is saved in OUT/fault/, by the coordinator
+# from every column still answering (after a rank stopped; after one killed, when that beats
+# mpirun's end of the job): each saved display must be the one-machine run's picture
+# of the frame the line says the displays keep; a lost column's displays are named, not saved.
+# The hosts wait longer for READY than that, so none gives up first.
+# Usage: mpi_fault_test.sh L2WALL OUT TWO_COLUMN_WALL
 set -euo pipefail
-l2wall=$1 out=$2
-stall_ms=2000
+l2wall=$1 out=$2 two_columns=$3
+stall_ms=1000
 slack_ms=4000  # saving the displays, MPI_Abort and mpirun's teardown of every rank
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# hwloc's GL plugin (Open MPI's topology) opens X display :0 in every rank; an X server there
+# that goes away (another test's Xvfb) ends the rank with an X I/O error.
+export HWLOC_COMPONENTS=-gl
 rm -rf "$out" && mkdir -p "$out"
 
 # The pid of MPI rank $2 among the processes of run folder $1 (no folder name is a prefix of
@@ -25,27 +33,46 @@ rank_pid() {
   done
 }
 
-# fault SIGNAL RANK ROLE
+# The displays saved in $1/fault/ against the one-machine run of wall $2 (empty: the default)
+# at frame $3; $4: the display ids that must be there, the others must not.
+check_saved() {
+  local dir=$1 wall=${2:+--wall $2} frame=$3 expected=$4 id
+  "$l2wall" run $wall --frames $((frame + 1)) --refresh 0 --out "$dir-one" --no-progress >/dev/null
+  for p in "$dir-one/frame-$frame"/display-*.png; do
+    id=$(basename "$p" .png) id=${id#display-}
+    if [[ " $expected " == *" $id "* ]]; then
+      cmp "$p" "$dir/fault/display-$id.png" || { echo "FAIL: saved display $id is not frame $frame"; exit 1; }
+    elif [[ -e $dir/fault/display-$id.png ]]; then
+      echo "FAIL: display $id saved, but its column is gone"
+      exit 1
+    fi
+  done
+  echo "  saved displays $expected: frame $frame's pixels"
+}
+
+# fault SIGNAL RANK ROLE NP WALL SAVED (the display ids saved; empty: none, no fault/ folder;
+# maybe:IDS: those if any)
 fault() {
-  local signal=$1 rank=$2 role=$3 dir="$out/$1-$2"
-  mpirun --oversubscribe --mca btl self,tcp -np 6 "$l2wall" run --mpi --frames 100000 \
-    --stall-timeout $stall_ms --ready-timeout 3000 --out "$dir" --no-progress >"$dir.out" \
-    2>"$dir.err" &
+  local signal=$1 rank=$2 role=$3 np=$4 wall=$5 saved=$6 dir="$out/$1-$2-$4"
+  mpirun -q --oversubscribe --mca btl self,tcp -np "$np" "$l2wall" run ${wall:+--wall "$wall"} --mpi \
+    --frames 100000 --stall-timeout $stall_ms --ready-timeout 3000 --out "$dir" --no-progress \
+    >"$dir.out" 2>"$dir.err" &
   local run=$!
   # Until the displays have swapped a few frames (the reports grow a line per frame).
   for _ in $(seq 600); do
-    [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 20 ]] && break
+    [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
     sleep 0.05
   done
-  local pid
+  local pid pids
   pid=$(rank_pid "$dir" "$rank")
+  pids=$(pgrep -f -- "$dir" || true)
   [[ -n $pid ]] || { echo "FAIL: no process of rank $rank"; kill "$run"; exit 1; }
   local t0 status=0
   t0=$(date +%s%N)
   kill -s "$signal" "$pid"
   wait "$run" || status=$?
   local took=$((($(date +%s%N) - t0) / 1000000))
-  echo "$signal rank $rank ($role): ended after $took ms, exit $status"
+  echo "$signal rank $rank ($role, -np $np): ended after $took ms, exit $status"
   [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
   ((took <= stall_ms + slack_ms)) || { echo "FAIL: took $took ms"; exit 1; }
   local line
@@ -53,11 +80,38 @@ fault() {
     { echo "FAIL: no line naming rank $rank:"; cat "$dir.err"; exit 1; }
   echo "  $line"
   [[ $(grep -c "^l2wall: " "$dir.err") -le 2 ]] || { echo "FAIL: more than one fault line"; exit 1; }
+  # mpirun -q: none of mpirun's own messages beside ours.
+  if grep -v "^l2wall: " "$dir.err"; then echo "FAIL: other lines on stderr"; exit 1; fi
+  # A rank killed: mpirun ends every rank within about a second, and the coordinator does not
+  # always have the displays saved first; when it does, they must be right.
+  if [[ $saved == maybe:* ]]; then
+    saved=${saved#maybe:}
+    grep -q "displays as they were" "$dir.err" || { echo "  (not saved before mpirun's end)"; saved=""; }
+  fi
+  if [[ -n $saved ]]; then
+    local frame note=""
+    frame=$(sed -nE 's/.*the displays keep frame ([0-9]+)$/\1/p' <<<"$line")
+    [[ -n $frame ]] || { echo "FAIL: the line names no frame kept"; exit 1; }
+    [[ $saved == "0 1 2 3 4 5 6 7" ]] && note=" (not display 8: lost with its rank)"
+    grep -qxF "l2wall: displays as they were: $dir/fault/$note" "$dir.err" ||
+      { echo "FAIL: no line saying where the displays are:"; cat "$dir.err"; exit 1; }
+    check_saved "$dir" "$wall" "$frame" "$saved"
+  elif [[ $6 != maybe:* ]] && { [[ -e $dir/fault ]] || grep -q "displays as they were" "$dir.err"; }; then
+    echo "FAIL: displays saved, but every display was on the rank that is gone"
+    exit 1
+  fi
   sleep 0.2
   if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
+  # No shared memory: neither the links of the run's processes nor mpirun's session folder.
+  local p
+  for p in $pids; do
+    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
+  done
+  if compgen -G "/tmp/ompi.*/pid.$run" >/dev/null; then echo "FAIL: mpirun's session left"; exit 1; fi
 }
 
-fault KILL 2 "pipeserver 1"
-fault STOP 3 "pipeserver 2"
-fault KILL 5 "board column 0"
-fault STOP 5 "board column 0"
+fault KILL 2 "pipeserver 1" 6 "" "maybe:0 1 2 3"
+fault STOP 3 "pipeserver 2" 6 "" "0 1 2 3"
+fault KILL 5 "board column 0" 6 "" ""
+# A column stopped: column 1 (display 8) on the two-column wall; column 0's displays are saved.
+fault STOP 4 "board column 1" 5 "$two_columns" "0 1 2 3 4 5 6 7"

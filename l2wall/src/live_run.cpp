@@ -5,6 +5,7 @@
 #include "live_run.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -98,21 +99,24 @@ class LiveRun {
   // Whether a progress line is on stderr (an error then starts a line of its own).
   bool progress_shown() const { return progress_shown_; }
 
-  // After a fault: what the displays show now goes to DIR/fault/. False if there was nothing.
-  bool save_displays_after_fault() {
+  // After a fault: what the displays show now goes to DIR/fault/. Nullopt if there was
+  // nothing; else what is not there (displays lost with a rank of an MPI run), or empty.
+  std::optional<std::string> save_displays_after_fault() {
     try {
       const auto dir = std::filesystem::path(o_.out) / "fault";
-      bool saved = false;
+      std::optional<std::string> saved;
       for (std::size_t i = 0; i < paths_.size(); ++i) {
         if (const auto pictures = paths_[i]->shown()) {
-          write_display_pictures(dir, wall_, *pictures, picture_suffix(i));
-          saved = true;
+          const auto missing = write_display_pictures(dir, wall_, *pictures, picture_suffix(i));
+          saved = missing.empty() ? ""
+                                  : fmt::format(" (not display {}: lost with its rank)",
+                                                fmt::join(missing, ", "));
         }
       }
       return saved;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "l2wall: could not save the displays: %s\n", e.what());
-      return false;
+      return std::nullopt;
     }
   }
 
@@ -530,8 +534,9 @@ int run_wall(const RunOptions& options, const RunBackends& backends) {
     if (run && run->progress_shown()) std::fputs("\n", stderr);
     std::fprintf(stderr, "l2wall: %s\n", e.what());
     if (run) {
-      if (run->save_displays_after_fault())
-        std::fprintf(stderr, "l2wall: displays as they were: %s/fault/\n", options.out.c_str());
+      if (const auto note = run->save_displays_after_fault())
+        std::fprintf(stderr, "l2wall: displays as they were: %s/fault/%s\n", options.out.c_str(),
+                     note->c_str());
       run->shut_down();
     }
     const int signal = stop_signal_received();

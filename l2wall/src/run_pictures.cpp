@@ -12,12 +12,21 @@
 
 namespace l2 {
 
-void write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
-                            const DisplayPictures& display, const std::string& suffix) {
+std::vector<int> write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
+                                        const DisplayPictures& display, const std::string& suffix) {
   make_folders(dir);
-  for (const Display& d : wall.displays)
-    write_png(dir / fmt::format("display-{}{}.png", d.id, suffix), display(d.id));
-  write_png(dir / fmt::format("wall{}.png", suffix), compose_wall_picture(wall, display));
+  std::vector<int> missing;
+  for (const Display& d : wall.displays) {
+    const RgbImage& picture = display(d.id);
+    if (picture.empty()) {
+      missing.push_back(d.id);
+      continue;
+    }
+    write_png(dir / fmt::format("display-{}{}.png", d.id, suffix), picture);
+  }
+  if (missing.empty())
+    write_png(dir / fmt::format("wall{}.png", suffix), compose_wall_picture(wall, display));
+  return missing;
 }
 
 int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,

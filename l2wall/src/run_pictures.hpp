@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "image/rgb_image.hpp"
 #include "tilelayout/wall.hpp"
@@ -13,9 +14,12 @@ namespace l2 {
 
 using DisplayPictures = std::function<const RgbImage&(int display)>;
 
-// DIR/display-<id><suffix>.png for every display of the wall and DIR/wall<suffix>.png.
-void write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
-                            const DisplayPictures& display, const std::string& suffix = "");
+// DIR/display-<id><suffix>.png for every display of the wall and DIR/wall<suffix>.png. A
+// display whose picture is empty (its process is gone, over MPI) is not written, nor then the
+// wall picture: returns those displays' ids.
+std::vector<int> write_display_pictures(const std::filesystem::path& dir, const Wall& wall,
+                                        const DisplayPictures& display,
+                                        const std::string& suffix = "");
 
 // --path both --compare: every display of `frame` must be identical byte for byte on the DVI
 // path and the vizserver path. On the first that is not, writes

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "image/png_io.hpp"
 #include "run_pictures.hpp"
 
 namespace l2 {
@@ -35,6 +36,31 @@ TEST(RemoveEarlierPictures, OnlyFoldersNamedAsARunNamesThem) {
                                             "summary.txt"}));
   fs::remove_all(out);
   remove_earlier_pictures(out);  // a folder that does not exist yet: nothing to do, no error
+}
+
+TEST(WriteDisplayPictures, AnEmptyPictureIsNotWrittenNorTheWall) {
+  // Over MPI the displays of a column whose rank is gone come back empty after a fault.
+  const fs::path dir = fs::temp_directory_path() / "l2wall-display-pictures";
+  fs::remove_all(dir);
+  Wall wall;
+  wall.canvas_width = 8;
+  wall.canvas_height = 2;
+  wall.displays = {{0, 4, 2, 0, 0, 0, ""}, {1, 4, 2, 4, 0, 0, ""}};
+  RgbImage shown(4, 2);
+  shown.set(1, 1, Rgb{200, 10, 20});
+  const RgbImage lost;
+  const DisplayPictures pictures = [&](int id) -> const RgbImage& {
+    return id == 0 ? shown : lost;
+  };
+  EXPECT_EQ(write_display_pictures(dir, wall, pictures), std::vector<int>{1});
+  EXPECT_EQ(read_png(dir / "display-0.png").at(1, 1), (Rgb{200, 10, 20}));
+  EXPECT_FALSE(fs::exists(dir / "display-1.png"));
+  EXPECT_FALSE(fs::exists(dir / "wall.png"));  // not a wall with a hole in it
+  fs::remove_all(dir);
+  const DisplayPictures both = [&](int) -> const RgbImage& { return shown; };
+  EXPECT_TRUE(write_display_pictures(dir, wall, both).empty());
+  EXPECT_TRUE(fs::exists(dir / "wall.png"));
+  fs::remove_all(dir);
 }
 
 // std::filesystem's "filesystem error: cannot remove all: Operation not permitted [...]" reached

@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "base/fd.hpp"
+
 namespace l2 {
 
 struct RankIdentity {
@@ -55,7 +57,7 @@ class MpiSession {
   int rank_ = 0;
   int size_ = 0;
   std::vector<RankIdentity> identities_;
-  std::vector<int> liveness_;  // rank 0: by rank, the connection's fd (-1: none); else one fd
+  std::vector<Fd> liveness_;  // rank 0: by rank, the connection (none for itself); else one
   std::function<std::string(int)> describe_;
   std::atomic<int> lost_{-1};
   std::atomic<bool> claimed_{false};
