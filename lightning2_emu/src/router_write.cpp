@@ -88,15 +88,11 @@ bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, 
   for (int k = 0; k < std::min<int>(kPrefetchRows, r.rows); ++k) {
     prefetch_bytes(src - head + k * src_stride, bytes);
   }
-  std::uint64_t message = r.message | frame_bit;
+  const router_detail::RunHeaders headers(r.message | frame_bit);
   bool held = true;
   for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
     if (k + kPrefetchRows < r.rows) prefetch_bytes(src - head + kPrefetchRows * src_stride, bytes);
-    if constexpr (kCheck) {
-      held &=
-          header_value(src - head, src - head + bpp) == router_detail::predicted_header(message);
-      message += router_detail::kMessageOneRow;
-    }
+    if constexpr (kCheck) held &= router_detail::header_before(src, bpp) == headers.strip(k);
     copy_row(dst, src, k);
   }
   return held;
