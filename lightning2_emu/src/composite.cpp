@@ -33,17 +33,58 @@ inline std::uint32_t rgb_at(const std::uint8_t* p) {
   }
 }
 
+// Pixels a span is taken in at a time: its byte masks stay in the first-level cache.
+constexpr int kChunk = 64;
+
+// n strip pixels onto a row span, pixel i written where rule(i, rank[i], new_rank) says, with
+// the rank new_rank. RGB pixels go in two passes a chunk: the ranks and a mask a colour byte,
+// then the colour bytes blended as bytes, so that the colours are not taken apart into R, G
+// and B lanes and put together again (most of the shuffles of a one-pass loop).
+template <int kBpp, class Rule>
+[[gnu::always_inline]] inline void apply_span(std::uint8_t* __restrict dst,
+                                              std::uint32_t* __restrict rank,
+                                              const std::uint8_t* __restrict src, int n, int bpp,
+                                              Rule rule) {
+  if constexpr (kBpp != 3) {
+    const int step = kBpp ? kBpp : bpp;
+    for (int i = 0; i < n; ++i) {
+      std::uint32_t r;
+      const bool write = rule(i, rank[i], r);
+      select(dst, rank, i, src + i * step, r, write);
+    }
+  } else {
+    for (int at = 0; at < n; at += kChunk) {
+      const int len = n - at < kChunk ? n - at : kChunk;
+      std::uint8_t mask[3 * kChunk];
+      std::uint32_t* __restrict rk = rank + at;
+      for (int i = 0; i < len; ++i) {
+        std::uint32_t r;
+        const std::uint32_t m = rule(at + i, rk[i], r) ? ~0u : 0u;
+        rk[i] = (r & m) | (rk[i] & ~m);
+        const auto m8 = static_cast<std::uint8_t>(m);
+        mask[3 * i] = m8;
+        mask[3 * i + 1] = m8;
+        mask[3 * i + 2] = m8;
+      }
+      std::uint8_t* __restrict d = dst + 3 * at;
+      const std::uint8_t* __restrict s = src + 3 * at;
+      for (int j = 0; j < 3 * len; ++j) {
+        d[j] = static_cast<std::uint8_t>((s[j] & mask[j]) | (d[j] & ~mask[j]));
+      }
+    }
+  }
+}
+
 template <bool kKeyed, int kBpp>
 [[gnu::always_inline]] inline void overlay_span(std::uint8_t* __restrict dst,
                                                 std::uint32_t* __restrict rank,
                                                 const std::uint8_t* __restrict src, int n, int bpp,
                                                 std::uint32_t key, std::uint32_t r) {
   const int step = kBpp ? kBpp : bpp;
-  for (int i = 0; i < n; ++i) {
-    const std::uint8_t* s = src + i * step;
-    const bool write = (r <= rank[i]) & (!kKeyed | (rgb_at(s) != key));
-    select(dst, rank, i, s, r, write);
-  }
+  apply_span<kBpp>(dst, rank, src, n, bpp, [&](int i, std::uint32_t old, std::uint32_t& to) {
+    to = r;
+    return (r <= old) & (!kKeyed | (rgb_at(src + i * step) != key));
+  });
 }
 
 template <int kBpp>
@@ -53,12 +94,12 @@ template <int kBpp>
                                               const std::uint8_t* __restrict depth, int n, int bpp,
                                               std::uint32_t tag) {
   const int step = kBpp ? kBpp : bpp;
-  for (int i = 0; i < n; ++i) {
+  apply_span<kBpp>(dst, rank, src, n, bpp, [&](int i, std::uint32_t old, std::uint32_t& to) {
     const std::uint32_t d = rgb_at(depth + i * step);
-    std::uint32_t r = (d + 1) << 8 | tag;
-    r = r < kFar - 1 ? r : kFar - 1;  // depth FFFFFE from input 255 ranks as input 254's
-    select(dst, rank, i, src + i * step, r, (d < kFarDepth) & (r < rank[i]));
-  }
+    const std::uint32_t r = (d + 1) << 8 | tag;
+    to = r < kFar - 1 ? r : kFar - 1;  // depth FFFFFE from input 255 ranks as input 254's
+    return (d < kFarDepth) & (to < old);
+  });
 }
 
 // One entry point per loop shape: the clones are made per function.
