@@ -26,8 +26,8 @@ inline std::uint32_t opaque_rank(int input) {
   return 255u - static_cast<std::uint32_t>(input);
 }
 
-// The per-pixel loops, one display row span a call (composite.cpp). `bpp` is 3 or 4 (RGB or
-// RGBA strip pixels).
+// The per-pixel loops, one display row span a call (composite.cpp). `bpp`: bytes a strip pixel
+// (3 RGB, 4 RGBA; wider pixels take a loop that is not vectorised).
 // COPY (keyed false) or KEY pixels of input `input`: n colour pixels.
 void overlay(bool keyed, std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src, int n,
              int bpp, std::uint32_t key, int input);
