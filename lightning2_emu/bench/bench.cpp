@@ -2,7 +2,7 @@
 // rate of the Lightning-2 headline case (WireGL figure 9: one 3200x2400 output fed by 12 inputs
 // of 1280x1024; the hardware held 90 Hz). Prints peak memory.
 //
-//   lightning2_emu_bench [repetitions]
+//   lightning2_emu_bench [repetitions] [--sweep | --small-tiles | --compositing]
 //
 // The memcpy baseline copies the same number of bytes out of the same input frames into a
 // buffer the size of the displays, in one memcpy per input, on the same worker pool: what the
@@ -490,10 +490,10 @@ int main(int argc, char** argv) {
     mesh_sweep(repetitions, cores);
     return 0;
   }
-  const Scenario headline{"headline (WireGL fig. 9)", {{0, 3200, 2400, 0}}, 12, 200, 200};
-  run(headline, repetitions, 1, true);
-  const Figures h = run(headline, repetitions, cores, false);
-
+  if (args.compositing_only) {
+    run_compositing(repetitions, cores);
+    return 0;
+  }
   // Many small strips: the per-strip cost shows here.
   const Scenario wall{
       "wall of 4 displays, small tiles",
@@ -501,8 +501,19 @@ int main(int argc, char** argv) {
       8,
       64,
       48};
+  if (args.small_tiles_only) {
+    run(wall, repetitions, 1, true);
+    const Figures w = run(wall, repetitions, cores, false);
+    fmt::print("SMALL TILES routing/memcpy on {} cores (median of pairs): {:.2f}\n", cores,
+               w.wall_ratio);
+    return 0;
+  }
+  const Scenario headline{"headline (WireGL fig. 9)", {{0, 3200, 2400, 0}}, 12, 200, 200};
+  run(headline, repetitions, 1, true);
+  const Figures h = run(headline, repetitions, cores, false);
+
   run(wall, repetitions, 1, true);
-  run(wall, repetitions, cores, false);
+  const Figures w = run(wall, repetitions, cores, false);
 
   fmt::print(
       "\nHEADLINE routing/memcpy on {} cores: {:.2f} (median of pairs {:.2f}, by CPU time "
@@ -513,6 +524,8 @@ int main(int argc, char** argv) {
       "HEADLINE 3200x2400 from 12 inputs on {} cores: {:.1f} frames/s = {:.2f}x the "
       "hardware's 90 Hz (target 1.0, aim 2.0)\n",
       cores, 1.0 / h.route_s, 1.0 / h.route_s / 90.0);
+  fmt::print("SMALL TILES routing/memcpy on {} cores (median of pairs): {:.2f}\n", cores,
+             w.wall_ratio);
   run_compositing(repetitions, cores);
   mesh_sweep(std::max(3, repetitions / 4), cores);
   rusage usage{};

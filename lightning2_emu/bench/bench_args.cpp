@@ -20,5 +20,9 @@ std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args) {
                "only the mesh-size sweep (4 inputs x 1 display to 64 inputs x 24 displays), with "
                "`repetitions` runs per point; without it the sweep runs last, with a quarter of "
                "them");
+  app.add_flag("--small-tiles", args.small_tiles_only,
+               "only the 4-display wall of 64x48 tiles (the per-strip cost)");
+  app.add_flag("--compositing", args.compositing_only,
+               "only the DEPTH compositing cases (sort-last and hybrid)");
   return l2::parse_command_line(app, argc, argv);
 }

@@ -15,7 +15,6 @@
 // fit, depth FFFFFE from input 255 of a 64-row mesh, is taken as input 254's.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 
 namespace l2::composite {
@@ -27,62 +26,17 @@ inline std::uint32_t opaque_rank(int input) {
   return 255u - static_cast<std::uint32_t>(input);
 }
 
-inline std::uint32_t rgb_at(const std::uint8_t* p) {
-  return std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
-}
-
-// One pixel: the colour and rank replaced where `write`. Masks, not branches: the loops
-// compile to straight-line code.
-inline void select(std::uint8_t* __restrict dst, std::uint32_t& __restrict rank,
-                   const std::uint8_t* __restrict src, std::uint32_t new_rank, bool write) {
-  const std::uint32_t m = 0u - static_cast<std::uint32_t>(write);
-  const auto m8 = static_cast<std::uint8_t>(m);
-  rank = (new_rank & m) | (rank & ~m);
-  dst[0] = static_cast<std::uint8_t>((src[0] & m8) | (dst[0] & ~m8));
-  dst[1] = static_cast<std::uint8_t>((src[1] & m8) | (dst[1] & ~m8));
-  dst[2] = static_cast<std::uint8_t>((src[2] & m8) | (dst[2] & ~m8));
-}
-
-// COPY (kKeyed false) or KEY pixels of input `input`: n colour pixels bpp bytes apart.
-template <bool kKeyed, int kBpp>
-void overlay(std::uint8_t* __restrict dst, std::uint32_t* __restrict rank,
-             const std::uint8_t* __restrict src, int n, int bpp, std::uint32_t key, int input) {
-  const int step = kBpp ? kBpp : bpp;
-  const std::uint32_t r = opaque_rank(input);
-  for (int i = 0; i < n; ++i) {
-    const std::uint8_t* s = src + i * step;
-    const bool write = (r <= rank[i]) & (!kKeyed | (rgb_at(s) != key));
-    select(dst + 3 * i, rank[i], s, r, write);
-  }
-}
-
+// The per-pixel loops, one display row span a call (composite.cpp). `bpp`: bytes a strip pixel
+// (3 RGB, 4 RGBA; wider pixels take a loop that is not vectorised).
+// COPY (keyed false) or KEY pixels of input `input`: n colour pixels.
+void overlay(bool keyed, std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src, int n,
+             int bpp, std::uint32_t key, int input);
 // DEPTH pixels of input `input`: n colour pixels, their depths at `depth`.
-template <int kBpp>
-void depth(std::uint8_t* __restrict dst, std::uint32_t* __restrict rank,
-           const std::uint8_t* __restrict src, const std::uint8_t* __restrict depth, int n, int bpp,
-           int input) {
-  const int step = kBpp ? kBpp : bpp;
-  const std::uint32_t tag = static_cast<std::uint32_t>(input);
-  for (int i = 0; i < n; ++i) {
-    const std::uint32_t d = rgb_at(depth + i * step);
-    const std::uint32_t r = std::min((d + 1) << 8 | tag, kFar - 1);
-    select(dst + 3 * i, rank[i], src + i * step, r, (d < kFarDepth) & (r < rank[i]));
-  }
-}
-
+void depth(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src,
+           const std::uint8_t* depth, int n, int bpp, int input);
 // One display row after the frame's strips: background where nothing was written, every rank
 // back to kFar for the next frame. Returns the pixels written.
-inline int settle(std::uint8_t* __restrict dst, std::uint32_t* __restrict rank, int n,
-                  std::uint8_t r, std::uint8_t g, std::uint8_t b) {
-  int written = 0;
-  for (int i = 0; i < n; ++i) {
-    const bool empty = rank[i] == kFar;
-    written += static_cast<int>(!empty);
-    const std::uint8_t bg[3] = {r, g, b};
-    select(dst + 3 * i, rank[i], bg, kFar, empty);
-    rank[i] = kFar;
-  }
-  return written;
-}
+int settle(std::uint8_t* dst, std::uint32_t* rank, int n, std::uint8_t r, std::uint8_t g,
+           std::uint8_t b);
 
 }  // namespace l2::composite

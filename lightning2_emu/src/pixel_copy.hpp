@@ -52,7 +52,7 @@ inline void stream_bytes(std::uint8_t* dst, const std::uint8_t* src, std::size_t
     std::memcpy(dst, src, bytes);
     return;
   }
-  copy_short(dst, src, head);
+  if (head) copy_short(dst, src, head);  // a strip that starts a line: no partial line
   std::size_t at = head;
   for (; at + kLine <= bytes; at += kLine) {
     const auto* s = reinterpret_cast<const __m128i*>(src + at);
@@ -64,7 +64,7 @@ inline void stream_bytes(std::uint8_t* dst, const std::uint8_t* src, std::size_t
     _mm_stream_si128(d + 2, c);
     _mm_stream_si128(d + 3, e);
   }
-  copy_short(dst + at, src + at, bytes - at);
+  if (at < bytes) copy_short(dst + at, src + at, bytes - at);
 #else
   std::memcpy(dst, src, bytes);
 #endif

@@ -99,12 +99,13 @@ bool InputScan::headers_hold(bool runs) const {
       // A KEY or DEPTH strip's header is followed by its extension word, which must repeat too.
       const int gap = r.ext ? kHeaderPixels + kExtensionPixels : kHeaderPixels;
       const std::int64_t first = r.src - std::int64_t{gap} * bpp;
-      std::uint64_t m = r.message;
-      for (int k = 0; k < r.rows; ++k, m += kMessageOneRow) {
+      const RunHeaders headers(r.message | bit);
+      for (int k = 0; k < r.rows; ++k) {
         if (k + kCheckAhead < r.rows) {
           pixel_copy::prefetch_line(f.data + first + (k + kCheckAhead) * f.stride);
         }
-        ok &= holds(first + k * f.stride, m);
+        const std::uint8_t* p = f.data + first + k * f.stride;
+        ok &= header_value(p, p + bpp) == headers.strip(k);
         if (r.ext) {
           const std::uint8_t* w = f.data + first + k * f.stride + kHeaderPixels * bpp;
           ok &= header_value(w, w + bpp) == r.ext;

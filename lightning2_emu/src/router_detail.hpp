@@ -2,7 +2,9 @@
 // finds, and what each band of display rows wrote.
 #pragma once
 
+#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "band_coverage.hpp"
@@ -138,6 +140,54 @@ inline std::uint64_t predicted_header(std::uint64_t message) {
 inline constexpr std::uint64_t kMessageFrameBit = std::uint64_t{1}
                                                   << (header_bits::kFrameShift - 3);
 inline constexpr std::uint64_t kMessageOneRow = std::uint64_t{1} << (header_bits::kYShift - 3);
+
+// The check bits of a header's y field alone, for every y: the CRC is linear in the message, so
+// a header's check bits are those of its other fields XOR these.
+struct YCheckBits {
+  std::uint8_t of[4096]{};
+  constexpr YCheckBits() {
+    for (std::uint64_t y = 0; y < 4096; ++y) {
+      of[y] = header_bits::remainder_bitwise(y << header_bits::kYShift);
+    }
+  }
+};
+inline constexpr YCheckBits kYCheckBits;
+
+// The predicted headers of a run's strips: strip k's is the first's with y + k. One table load a
+// strip instead of a CRC over all the header's bytes.
+class RunHeaders {
+ public:
+  explicit RunHeaders(std::uint64_t message)
+      : message_(message),
+        rest_(message & ~kYField),
+        rest_check_(crc3(message & ~kYField)),
+        y0_(static_cast<int>(message >> kYAt & header_bits::k12Bits)) {}
+  std::uint64_t strip(int k) const {
+    const int y = y0_ + k;
+    if (y > static_cast<int>(header_bits::k12Bits)) {  // y carries into x: no run does this
+      return predicted_header(message_ + static_cast<std::uint64_t>(k) * kMessageOneRow);
+    }
+    return (rest_ | std::uint64_t(y) << kYAt) << 3 | (rest_check_ ^ kYCheckBits.of[y]);
+  }
+
+ private:
+  static constexpr int kYAt = header_bits::kYShift - 3;  // the y field's place in a message
+  static constexpr std::uint64_t kYField = header_bits::k12Bits << kYAt;
+  std::uint64_t message_, rest_;
+  std::uint8_t rest_check_;
+  int y0_;
+};
+
+// The raw header in the two pixels before `pixels`, which hold at least one pixel of the
+// strip: with RGB pixels the header's six bytes and the next two are one load.
+inline std::uint64_t header_before(const std::uint8_t* pixels, int bpp) {
+  const std::uint8_t* h = pixels - kHeaderPixels * bpp;
+  if (bpp != 3) return header_value(h, h + bpp);
+  std::uint64_t v;
+  std::memcpy(&v, h, sizeof v);
+  if constexpr (std::endian::native == std::endian::little) v = __builtin_bswap64(v);
+  return v >> 16;
+}
 
 // A band of display rows: one task's share. One area per run written (appending is all the
 // copy does); coverage, overdraw and the strip count are worked out from them when the frame

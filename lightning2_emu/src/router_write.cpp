@@ -88,15 +88,11 @@ bool copy_run(const Run& r, const std::uint8_t* src, std::ptrdiff_t src_stride, 
   for (int k = 0; k < std::min<int>(kPrefetchRows, r.rows); ++k) {
     prefetch_bytes(src - head + k * src_stride, bytes);
   }
-  std::uint64_t message = r.message | frame_bit;
+  const router_detail::RunHeaders headers(r.message | frame_bit);
   bool held = true;
   for (int k = 0; k < r.rows; ++k, src += src_stride, dst += stride) {
     if (k + kPrefetchRows < r.rows) prefetch_bytes(src - head + kPrefetchRows * src_stride, bytes);
-    if constexpr (kCheck) {
-      held &=
-          header_value(src - head, src - head + bpp) == router_detail::predicted_header(message);
-      message += router_detail::kMessageOneRow;
-    }
+    if constexpr (kCheck) held &= router_detail::header_before(src, bpp) == headers.strip(k);
     copy_row(dst, src, k);
   }
   return held;
@@ -226,11 +222,13 @@ void Router::composite_band(int task, std::span<const std::uint8_t> route_input)
       std::uint8_t* dst = back.data() + r.dst_y * stride + r.dst_x * 3;
       std::uint32_t* rank =
           ds.plane.data() + static_cast<std::size_t>(r.dst_y) * back.width() + r.dst_x;
+      // A strip's colour pixels, and for DEPTH its depth pixels depth_at pixels on.
+      const int read_bytes =
+          (r.kind == router_detail::StripKind::Depth ? r.depth_at + r.length : r.length) * bpp;
       const auto each_row = [&](auto&& apply) {
         for (int k = 0; k < r.rows; ++k, src += frame.stride, dst += stride, rank += back.width()) {
           if (k + kPrefetchRows < r.rows) {
-            prefetch_bytes(src + kPrefetchRows * frame.stride,
-                           (r.kind == router_detail::StripKind::Depth ? 2 : 1) * r.depth_at * bpp);
+            prefetch_bytes(src + kPrefetchRows * frame.stride, read_bytes);
           }
           apply();
         }
@@ -238,22 +236,15 @@ void Router::composite_band(int task, std::span<const std::uint8_t> route_input)
       const int n = r.length;
       switch (r.kind) {
         case router_detail::StripKind::Copy:
-          each_row([&] {
-            bpp == 3 ? composite::overlay<false, 3>(dst, rank, src, n, bpp, 0, i)
-                     : composite::overlay<false, 0>(dst, rank, src, n, bpp, 0, i);
-          });
+        case router_detail::StripKind::Key: {
+          const bool keyed = r.kind == router_detail::StripKind::Key;
+          each_row([&] { composite::overlay(keyed, dst, rank, src, n, bpp, r.key, i); });
           break;
-        case router_detail::StripKind::Key:
-          each_row([&] {
-            bpp == 3 ? composite::overlay<true, 3>(dst, rank, src, n, bpp, r.key, i)
-                     : composite::overlay<true, 0>(dst, rank, src, n, bpp, r.key, i);
-          });
-          break;
+        }
         case router_detail::StripKind::Depth:
           each_row([&] {
             const std::uint8_t* depth = src + std::ptrdiff_t{r.depth_at} * bpp;
-            bpp == 3 ? composite::depth<3>(dst, rank, src, depth, n, bpp, i)
-                     : composite::depth<0>(dst, rank, src, depth, n, bpp, i);
+            composite::depth(dst, rank, src, depth, n, bpp, i);
           });
           break;
       }

@@ -2,7 +2,9 @@
 // display's buffer, a test-pattern tile. Rows are contiguous so strips copy as spans.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -11,6 +13,21 @@ namespace l2 {
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;
   friend bool operator==(const Rgb&, const Rgb&) = default;
+};
+
+// Pixels start on a cache line: a row span whose width is a multiple of 64 bytes (a 64-pixel
+// tile of a display whose row is too) then covers whole lines, which the emulator's router
+// writes with streaming stores instead of reading partial lines in first.
+template <class T>
+struct CacheLineAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t kAlign{64};
+  CacheLineAllocator() = default;
+  template <class U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlign)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlign); }
+  friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) = default;
 };
 
 class RgbImage {
@@ -45,7 +62,7 @@ class RgbImage {
  private:
   int width_ = 0;
   int height_ = 0;
-  std::vector<std::uint8_t> bytes_;
+  std::vector<std::uint8_t, CacheLineAllocator<std::uint8_t>> bytes_;
 };
 
 }  // namespace l2
