@@ -57,6 +57,9 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
   const FrameTimes& t = ps.last_times();
   EXPECT_GT(t.render_ms, 0.0);
   EXPECT_GT(t.scanout_ms, 0.0);
+  // Every tile's own time (the load balancer's measure, CPU time).
+  ASSERT_EQ(t.tile_ms.size(), ps.plan().tiles.size());
+  for (double ms : t.tile_ms) EXPECT_GT(ms, 0.0);
   EXPECT_GT(t.buckets.batches, 0);
   EXPECT_GE(t.buckets.tile_draws, t.buckets.batches);
   // Fewer draws than drawing every batch into every tile: bucketing saved something.

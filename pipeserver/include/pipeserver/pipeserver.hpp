@@ -22,6 +22,9 @@ struct FrameTimes {
   double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
   double scanout_ms = 0;  // tiles RGBA bottom-up -> RGB top-down (and depth), headers, black
   BucketStats buckets;
+  // Each tile's draw, glFinish included, by plan().tiles index, in CPU time of the process:
+  // the load balancer's measure (balance/). It leaves out each display window's set-up.
+  std::vector<double> tile_ms;
   double total_ms() const { return render_ms + scanout_ms; }
 };
 
