@@ -53,19 +53,33 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
       canvas_(canvas_of(layout.wall)),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       frame_(plan_.fb_width, plan_.fb_height) {
+  make_windows(layout.wall);
+}
+
+void Pipeserver::set_layout(const TileLayout& layout) {
+  const ServerPlan& plan = plan_of(layout, plan_.server);
+  if (plan.fb_width != plan_.fb_width || plan.fb_height != plan_.fb_height) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {}: a new layout's framebuffer is {}x{}, this one's {}x{}",
+                    plan_.server, plan.fb_width, plan.fb_height, plan_.fb_width, plan_.fb_height));
+  }
+  plan_ = plan;
+  canvas_ = canvas_of(layout.wall);
+  headers_ = {FrameHeaders(plan_, false), FrameHeaders(plan_, true)};
+  make_windows(layout.wall);
+}
+
+void Pipeserver::make_windows(const Wall& wall) {
   // One GL context per display size: tiles of displays of one size share it, one display at
-  // a time, each tile clearing its own rectangle.
-  std::vector<std::pair<int, int>> sizes;
+  // a time, each tile clearing its own rectangle. A new layout keeps the contexts it can.
+  windows_.clear();
   for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
-    const Display& d =
-        layout.wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
-    const auto size = std::pair{d.width, d.height};
-    const auto at = std::find(sizes.begin(), sizes.end(), size);
-    const std::size_t context = static_cast<std::size_t>(at - sizes.begin());
-    if (at == sizes.end()) {
-      sizes.push_back(size);
-      contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
-    }
+    const Display& d = wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
+    const auto at = std::find_if(contexts_.begin(), contexts_.end(), [&](const auto& c) {
+      return c->width() == d.width && c->height() == d.height;
+    });
+    const std::size_t context = static_cast<std::size_t>(at - contexts_.begin());
+    if (at == contexts_.end()) contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
     auto w = std::find_if(windows_.begin(), windows_.end(),
                           [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
     if (w == windows_.end()) {

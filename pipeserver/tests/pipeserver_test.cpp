@@ -67,6 +67,23 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
             static_cast<long>(scene->batches().size() * ps.plan().tiles.size()));
 }
 
+TEST(Pipeserver, ANewLayoutRendersAsAPipeserverMadeForIt) {
+  // The same wall cut two ways (what the load balancer does between frames).
+  const TileLayout before = test::small_layout(2, 40, 32, 160, 120);
+  const TileLayout after = test::small_layout(2, 34, 24, 160, 120);
+  Pipeserver moved(before, 1);
+  auto scene = make_scene("patches", test::small_options());
+  moved.render_frame(2, *scene);
+  moved.set_layout(after);
+  Pipeserver fresh(after, 1);
+  const RgbImage a = moved.render_frame(3, *scene);
+  const RgbImage b = fresh.render_frame(3, *scene);
+  EXPECT_EQ(moved.plan().tiles.size(), fresh.plan().tiles.size());
+  EXPECT_TRUE(a.bytes().size() == b.bytes().size() &&
+              std::equal(a.bytes().begin(), a.bytes().end(), b.bytes().begin()));
+  EXPECT_THROW(moved.set_layout(test::small_layout(2, 40, 32, 200, 120)), std::invalid_argument);
+}
+
 TEST(Pipeserver, RendersIntoACallersBufferEveryPixelAsIntoItsOwn) {
   const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
   Pipeserver ps(layout, 1);
