@@ -71,7 +71,9 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
     }
     std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", servers.size(), o.mode.c_str(), o.assign ? 1 : 0, k,
                 load.frame_seconds * 1000, load.imbalance, step.changed ? 1 : 0);
-    if (step.changed) servers = pipeservers_of(balancer.layout());
+    if (step.changed) {
+      for (auto& ps : servers) ps->set_layout(balancer.layout());
+    }
   }
   return 0;
 }
