@@ -6,7 +6,8 @@
 # (frame time per frame) and OUT/balance-summary.txt (median speed-up over static per frame).
 #
 #   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"] [--scene S]
-#                            [--build DIR] [-- SCENE OPTIONS...]
+#                            [--build DIR] [--plot-only] [-- SCENE OPTIONS...]
+# --plot-only draws the PNG and the summary again from an existing OUT/balance.csv.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,7 +17,8 @@ pipeservers="4 8"
 scene=strips
 build=$root/build/default
 scene_args=()
-usage() { sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; }
+plot_only=0
+usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --out) out=$2; shift 2 ;;
@@ -24,19 +26,21 @@ while (($#)); do
     --pipeservers) pipeservers=$2; shift 2 ;;
     --scene) scene=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
+    --plot-only) plot_only=1; shift ;;
     --) shift; scene_args=("$@"); break ;;
     -h | --help) usage; exit 0 ;;
     *) echo "balance-bench: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
 bench=$build/balance/balance_bench
-[[ -x $bench ]] || { echo "balance-bench: $bench not built (cmake --build --preset default --target balance_bench)" >&2; exit 1; }
+((plot_only)) || [[ -x $bench ]] || { echo "balance-bench: $bench not built (cmake --build --preset default --target balance_bench)" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "balance-bench: gnuplot not installed (scripts/install-deps.sh)" >&2; exit 1; }
 mkdir -p "$out"
 csv=$out/balance.csv
 # One rendering thread: every pipeserver is timed alone, so the times compare across runs
 # whatever else the machine runs.
 export LP_NUM_THREADS=1
+if ((!plot_only)); then
 echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled" >"$csv"
 for p in $pipeservers; do
   for mode in static strips kd; do
@@ -48,17 +52,18 @@ for p in $pipeservers; do
     done
   done
 done
+fi
 
 # Per configuration, the median over frames of static's frame time over its own (same
 # pipeserver count, same frame), and its median imbalance.
 summary=$out/balance-summary.txt
 {
   echo "pipeservers mode assign median_speedup median_imbalance"
-  awk -F, 'NR > 1 { key = $1 " " $2 " " $3; print key, $4, $5, $6 }' "$csv" | sort -k1,1n -k2,2 -k3,3n -k4,4n |
-    awk '{ key = $1 " " $2 " " $3
-           if ($2 == "static" && $3 == 0) base[$1 " " $4] = $5
-           ratio[key] = ratio[key] " " (base[$1 " " $4] / $5); imb[key] = imb[key] " " $6; keys[key] = 1 }
-         END { for (k in keys) print k "|" ratio[k] "|" imb[k] }' |
+  # Static's frame times first (the whole file), then each row against the same frame's.
+  awk -F, 'NR == FNR { if (FNR > 1 && $2 == "static" && $3 == 0) base[$1 " " $4] = $5; next }
+           FNR > 1 { key = $1 " " $2 " " $3; ratio[key] = ratio[key] " " base[$1 " " $4] / $5
+                     imb[key] = imb[key] " " $6 }
+           END { for (k in ratio) print k "|" ratio[k] "|" imb[k] }' "$csv" "$csv" |
     while IFS='|' read -r key ratios imbalances; do
       median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
       printf '%s %.3f %.3f\n' "$key" "$(median <<<"$ratios")" "$(median <<<"$imbalances")"

@@ -29,7 +29,7 @@ struct Options {
   std::string scene = "strips";
   int frames = 30;
   int pipeservers = 0;  // 0: the wall's count
-  std::string mode = "static";
+  std::string mode;     // empty: the wall's [balance] mode
   bool assign = false;
   bool header = false;
 };
@@ -45,9 +45,9 @@ std::vector<std::unique_ptr<l2::Pipeserver>> pipeservers_of(const l2::TileLayout
 int run(const Options& o, const l2::SceneOptions& scene_options) {
   l2::Wall wall = o.wall.empty() ? l2::default_wall() : l2::load_wall(o.wall);
   if (o.pipeservers > 0) wall.server_count = o.pipeservers;
-  l2::BalanceSettings settings;
-  settings.mode = *l2::parse_balance_mode(o.mode);
-  settings.assign = o.assign;
+  l2::BalanceSettings settings = l2::balance_settings(wall);
+  if (!o.mode.empty()) settings.mode = *l2::parse_balance_mode(o.mode);
+  settings.assign = settings.assign || o.assign;
   l2::Balancer balancer(wall, settings);
   auto scene = l2::make_scene(o.scene, scene_options);
   auto servers = pipeservers_of(balancer.layout());
@@ -69,8 +69,9 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
       std::fprintf(stderr, "balance_bench: frame %d: next layout not used: %s\n", k,
                    step.rejected.c_str());
     }
-    std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", servers.size(), o.mode.c_str(), o.assign ? 1 : 0, k,
-                load.frame_seconds * 1000, load.imbalance, step.changed ? 1 : 0);
+    std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", servers.size(), l2::to_string(settings.mode),
+                settings.assign ? 1 : 0, k, load.frame_seconds * 1000, load.imbalance,
+                step.changed ? 1 : 0);
     if (step.changed) {
       for (auto& ps : servers) ps->set_layout(balancer.layout());
     }
@@ -96,12 +97,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--pipeservers", o.pipeservers, "pipeserver count instead of the wall's")
       ->check(CLI::Range(1, l2::kMaxPipeservers));
-  app.add_option("--mode", o.mode, "static, strips or kd (as [balance] mode)")
-      ->check(CLI::IsMember({"static", "strips", "kd"}))
-      ->capture_default_str();
+  app.add_option("--mode", o.mode, "static, strips or kd (default: the wall's [balance] mode)")
+      ->check(CLI::IsMember({"static", "strips", "kd"}));
   app.add_flag("--assign", o.assign,
                "heaviest tile first to the pipeserver that finishes first, instead of the wall's "
-               "assignment policy");
+               "assignment policy (as [balance] assignment = \"heaviest-first\")");
   app.add_flag("--header", o.header, "print the CSV header line first");
   const auto scene_opts = l2::add_scene_options(app, scene_options);
   app.callback([&] { l2::check_scene_options(scene_opts, o.scene); });

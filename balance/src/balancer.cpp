@@ -9,8 +9,6 @@
 namespace l2 {
 namespace {
 
-constexpr std::string_view kModes[] = {"static", "strips", "kd"};
-
 StripEdges first_strips(const Wall& wall) {
   if (wall.tiling.kind == TilingKind::Strips) {
     return {wall.canvas_width, wall.canvas_height, wall.tiling.strip_count,
@@ -45,14 +43,21 @@ Wall with_kd(const Wall& wall, std::vector<std::vector<double>> grid) {
 }  // namespace
 
 std::optional<BalanceMode> parse_balance_mode(std::string_view name) {
-  for (std::size_t i = 0; i < std::size(kModes); ++i) {
-    if (kModes[i] == name) return static_cast<BalanceMode>(i);
+  for (std::size_t i = 0; i < std::size(kBalanceModeNames); ++i) {
+    if (kBalanceModeNames[i] == name) return static_cast<BalanceMode>(i);
   }
   return std::nullopt;
 }
 
 const char* to_string(BalanceMode mode) {
-  return kModes[static_cast<int>(mode)].data();
+  return kBalanceModeNames[static_cast<int>(mode)].data();
+}
+
+BalanceSettings balance_settings(const Wall& wall) {
+  BalanceSettings s;
+  s.mode = wall.balance.mode;
+  s.assign = wall.balance.heaviest_first;
+  return s;
 }
 
 Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), settings_(settings) {

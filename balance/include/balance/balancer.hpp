@@ -15,13 +15,8 @@
 
 namespace l2 {
 
-enum class BalanceMode {
-  Static,  // the wall's own tiling, every frame
-  Strips,  // horizontal strips with vertical sub-strips, edges moving toward equal cost
-  Kd,      // the k-d split re-cut over a cost grid of the last frame's times
-};
-
-// "static", "strips", "kd"; nullopt for anything else.
+// BalanceMode (tilelayout/wall.hpp) by its wall-file name ("static", "strips", "kd"); nullopt
+// for anything else.
 std::optional<BalanceMode> parse_balance_mode(std::string_view name);
 const char* to_string(BalanceMode mode);
 
@@ -32,6 +27,9 @@ struct BalanceSettings {
   EdgeMotion motion;    // strip edges, and the blending of the k-d cost grid
   int kd_grid_columns = 32, kd_grid_rows = 32;
 };
+
+// What the wall's [balance] asks for, with the default motion and grid.
+BalanceSettings balance_settings(const Wall& wall);
 
 struct BalanceStep {
   bool changed = false;  // the next frame's tiles or their pipeservers differ
