@@ -131,6 +131,14 @@ class LiveRun {
  private:
   void check_options() const {
     if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
+    // The pipeservers cannot take a new layout from the run yet: a wall that asks for
+    // balancing is refused rather than run static without a word.
+    if (wall_.balance.mode != BalanceMode::Static || wall_.balance.heaviest_first) {
+      throw LayoutError(fmt::format(
+          "{}:{}: balance: l2wall run does not re-tile live yet (scripts/balance-bench.sh "
+          "measures balancing)",
+          wall_.source.string(), wall_.balance.line));
+    }
   }
 
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it

@@ -34,6 +34,23 @@ std::pair<int, std::string> tilelayout_on(const fs::path& wall) {
   return {f.status.shell_code(), f.out};
 }
 
+TEST(LiveRun, AWallThatAsksForBalancingIsRefusedBeforeAnythingStarts) {
+  const fs::path wall = fs::temp_directory_path() / fmt::format("l2-balance-{}.toml", getpid());
+  std::ofstream(wall) << "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
+                         "[tiling]\nkind = \"grid\"\ntile_width = 160\ntile_height = 240\n"
+                         "[pipeservers]\ncount = 2\nframebuffer_width = 400\n"
+                         "framebuffer_height = 300\n[balance]\nmode = \"strips\"\n";
+  WallRun run("balance", {"--frames", "3", "--wall", wall.string()});
+  const ExitStatus status = run.wait(10s);
+  fs::remove(wall);
+  EXPECT_EQ(status.code, 1);
+  EXPECT_EQ(run.output(), "l2wall: " + wall.string() +
+                              ":14: balance: l2wall run does not re-tile live yet "
+                              "(scripts/balance-bench.sh measures balancing)\n");
+  EXPECT_FALSE(fs::exists(run.out() / "host-0.log")) << "a pipeserver was started";
+  expect_clean(run);
+}
+
 TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
   // One tile, two pipeservers: pipeserver 1 scanned out idle frames, never got READY, and the
   // run ended 11 s later with "pipeservers did not end after the last frame". tilelayout

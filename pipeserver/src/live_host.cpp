@@ -84,6 +84,30 @@ std::unique_ptr<TileSink> connect_viz(const std::string& address, int server, in
       viz::TileSender::connect(at.host, at.port, server, display_count, options));
 }
 
+// Frame k's tile times to the coordinator.
+void send_times(ControlChannel& control, const Pipeserver& ps, int frame) {
+  TimesMessage m{frame, ps.plan().server, {}};
+  for (double ms : ps.last_times().tile_ms) m.seconds.push_back(ms / 1000);
+  control.send_line(encode(m));
+}
+
+// Frame `frame`'s layout from the coordinator, taken on by `ps`. Throws ControlError when none
+// comes within `timeout` or it is for another frame, LayoutError when it cannot be planned.
+void take_layout(ControlChannel& control, const Wall& wall, Pipeserver& ps, int frame,
+                 std::chrono::milliseconds timeout) {
+  const std::optional<std::string> line = control.receive_line(timeout);
+  if (!line) {
+    throw ControlError(fmt::format("control channel: no LAYOUT for frame {} within {} ms", frame,
+                                   timeout.count()));
+  }
+  const LayoutMessage m = decode_layout(*line);
+  if (m.frame != frame) {
+    throw ControlError(
+        fmt::format("control channel: LAYOUT for frame {} while frame {} is next", m.frame, frame));
+  }
+  ps.set_layout(plan_from_message(wall, m));
+}
+
 }  // namespace
 
 MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
@@ -122,6 +146,8 @@ int run_live_host(const LiveHostOptions& o) {
     stamp_frame(fb, plan, k);
     if (sender) send_tiles(*sender, fb, plan, k);
     const double render_ms = ms_since(t0);
+    // Sent before the READY wait, so the coordinator plans the next frame meanwhile.
+    if (o.control) send_times(*o.control, ps, k);
     const auto t1 = Clock::now();
     int retries = 0;
     if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
@@ -144,6 +170,9 @@ int run_live_host(const LiveHostOptions& o) {
     }
     const double wait_ms = ms_since(t1);
     if (link) link->publish();
+    if (o.control && k + 1 < o.frames) {
+      take_layout(*o.control, wall, ps, k + 1, timeout * (o.ready_retries + 1));
+    }
     // The bucketing figures too: how many tiles a batch lands in, which a large model drives up.
     const BucketStats& b = ps.last_times().buckets;
     report.line(fmt::format(

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "balance/control_channel.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "pipeserver/scene.hpp"
@@ -78,6 +79,10 @@ struct LiveHostOptions {
   std::string report;       // file: one line per frame (render and wait times)
   int ready_timeout_ms = 200;
   int ready_retries = 3;
+  // Load balancing (balance/): after each frame the tiles' render times go out as TIMES, and
+  // frame k+1 is rendered in the layout of the LAYOUT k+1 that comes back. Empty: the wall's
+  // layout every frame.
+  std::shared_ptr<ControlChannel> control;
 };
 
 // Every frame carries its frame number in the first pixel of the host's first tile (24 bits,

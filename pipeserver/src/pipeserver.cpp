@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <ctime>
 #include <stdexcept>
 
 #include "pipeserver/depth_out.hpp"
@@ -20,6 +21,14 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// CPU time of the whole process (OSMesa's rendering threads included), in ms: what a tile costs
+// whatever else the machine runs at the same time.
+double cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
 }
 
 const ServerPlan& plan_of(const TileLayout& layout, int server) {
@@ -44,19 +53,33 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
       canvas_(canvas_of(layout.wall)),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       frame_(plan_.fb_width, plan_.fb_height) {
+  make_windows(layout.wall);
+}
+
+void Pipeserver::set_layout(const TileLayout& layout) {
+  const ServerPlan& plan = plan_of(layout, plan_.server);
+  if (plan.fb_width != plan_.fb_width || plan.fb_height != plan_.fb_height) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {}: a new layout's framebuffer is {}x{}, this one's {}x{}",
+                    plan_.server, plan.fb_width, plan.fb_height, plan_.fb_width, plan_.fb_height));
+  }
+  plan_ = plan;
+  canvas_ = canvas_of(layout.wall);
+  headers_ = {FrameHeaders(plan_, false), FrameHeaders(plan_, true)};
+  make_windows(layout.wall);
+}
+
+void Pipeserver::make_windows(const Wall& wall) {
   // One GL context per display size: tiles of displays of one size share it, one display at
-  // a time, each tile clearing its own rectangle.
-  std::vector<std::pair<int, int>> sizes;
+  // a time, each tile clearing its own rectangle. A new layout keeps the contexts it can.
+  windows_.clear();
   for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
-    const Display& d =
-        layout.wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
-    const auto size = std::pair{d.width, d.height};
-    const auto at = std::find(sizes.begin(), sizes.end(), size);
-    const std::size_t context = static_cast<std::size_t>(at - sizes.begin());
-    if (at == sizes.end()) {
-      sizes.push_back(size);
-      contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
-    }
+    const Display& d = wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
+    const auto at = std::find_if(contexts_.begin(), contexts_.end(), [&](const auto& c) {
+      return c->width() == d.width && c->height() == d.height;
+    });
+    const std::size_t context = static_cast<std::size_t>(at - contexts_.begin());
+    if (at == contexts_.end()) contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
     auto w = std::find_if(windows_.begin(), windows_.end(),
                           [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
     if (w == windows_.end()) {
@@ -88,6 +111,7 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
   // Every pixel is written: black first, then the tiles, then the headers over the gaps.
   std::memset(dst.data(), 0, bytes);
   times_ = {};
+  times_.tile_ms.assign(plan_.tiles.size(), 0.0);
   render_windows(scene, dst);
   const auto t0 = Clock::now();
   const FrameHeaders& headers = headers_[frame_parity(frame) ? 1 : 0];
@@ -114,12 +138,15 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
     }
     for (int i : w.tiles) {
       const DisplayTile& t = plan_.tiles[static_cast<std::size_t>(i)].tile;
+      const double tile_start = cpu_ms();
       // A KEY tile is cleared to its key colour: what it does not draw is transparent (§7).
       renderer->draw_tile(
           t.on_canvas, w.on_canvas,
           t.compositing == Compositing::Key ? key_colour(t.key) : scene.clear_colour());
+      // OSMesa has no timer queries: the tile's time is the CPU's until its pixels are done.
+      glFinish();
+      times_.tile_ms[static_cast<std::size_t>(i)] = cpu_ms() - tile_start;
     }
-    glFinish();
     times_.render_ms += ms_since(t0);
     t0 = Clock::now();
     for (int i : w.tiles) {

@@ -171,6 +171,12 @@ int run_pipeserver(int argc, char** argv) {
                    "live: host:port of a compositing server; every tile is also sent there "
                    "(its HELLO carries the run token in L2_VIZ_TOKEN, if set)")
       ->check(l2::viz::endpoint_error, "HOST:PORT");
+  int control_fd = -1;
+  group
+      ->add_option("--control-fd", control_fd,
+                   "live: inherited socket of the load balancer's control channel (TIMES out, "
+                   "LAYOUT in, one line each: balance/)")
+      ->check(CLI::Range(3, 1 << 20));
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");
   l2::add_timeout_option(*group, "ready-timeout", live_options.ready_timeout_ms, false,
@@ -222,6 +228,9 @@ int run_pipeserver(int argc, char** argv) {
     live_options.scene_options = o.scene_options;
     if (dvi)
       live_options.links = l2::shared_memory_links(live_options.link, live_options.backchannel);
+    if (control_fd >= 0) {
+      live_options.control = std::make_shared<l2::SocketControlChannel>(l2::Fd(control_fd));
+    }
     if (mpi) return run_mpi_host(live_options, mpi_viz);
     return run_live(live_options);
   }

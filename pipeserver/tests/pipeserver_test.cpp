@@ -57,11 +57,31 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
   const FrameTimes& t = ps.last_times();
   EXPECT_GT(t.render_ms, 0.0);
   EXPECT_GT(t.scanout_ms, 0.0);
+  // Every tile's own time (the load balancer's measure, CPU time).
+  ASSERT_EQ(t.tile_ms.size(), ps.plan().tiles.size());
+  for (double ms : t.tile_ms) EXPECT_GT(ms, 0.0);
   EXPECT_GT(t.buckets.batches, 0);
   EXPECT_GE(t.buckets.tile_draws, t.buckets.batches);
   // Fewer draws than drawing every batch into every tile: bucketing saved something.
   EXPECT_LT(t.buckets.tile_draws,
             static_cast<long>(scene->batches().size() * ps.plan().tiles.size()));
+}
+
+TEST(Pipeserver, ANewLayoutRendersAsAPipeserverMadeForIt) {
+  // The same wall cut two ways (what the load balancer does between frames).
+  const TileLayout before = test::small_layout(2, 40, 32, 160, 120);
+  const TileLayout after = test::small_layout(2, 34, 24, 160, 120);
+  Pipeserver moved(before, 1);
+  auto scene = make_scene("patches", test::small_options());
+  moved.render_frame(2, *scene);
+  moved.set_layout(after);
+  Pipeserver fresh(after, 1);
+  const RgbImage a = moved.render_frame(3, *scene);
+  const RgbImage b = fresh.render_frame(3, *scene);
+  EXPECT_EQ(moved.plan().tiles.size(), fresh.plan().tiles.size());
+  EXPECT_TRUE(a.bytes().size() == b.bytes().size() &&
+              std::equal(a.bytes().begin(), a.bytes().end(), b.bytes().begin()));
+  EXPECT_THROW(moved.set_layout(test::small_layout(2, 40, 32, 200, 120)), std::invalid_argument);
 }
 
 TEST(Pipeserver, RendersIntoACallersBufferEveryPixelAsIntoItsOwn) {

@@ -52,14 +52,16 @@ DisplayTile overlay_tile(const Wall& wall, int logical_index) {
   return {o.display, o.on_display, on_canvas, logical_index, Compositing::Key, o.key};
 }
 
+// `given`: the pipeserver of each logical tile, chosen by the caller instead of the policy.
 Distribution distribute(const Wall& wall, const std::vector<Rect>& logical,
                         const std::vector<DisplayTile>& tiles, AssignmentPolicy policy,
-                        int server_count) {
+                        int server_count, const std::vector<int>* given = nullptr) {
   const int sharing = server_count - (wall.overlay ? 1 : 0);
   const int layers = layer_count(wall, server_count);
   if (sharing < 1 || layers < 1 || sharing % layers != 0) return {};
   const int per_layer = sharing / layers;
-  const std::vector<int> server_of = server_of_logical(wall, logical, tiles, policy, per_layer);
+  const std::vector<int> server_of =
+      given ? *given : server_of_logical(wall, logical, tiles, policy, per_layer);
   Distribution d;
   for (int layer = 0; layer < layers; ++layer) {
     for (DisplayTile t : tiles) {
@@ -102,27 +104,39 @@ int layer_count(const Wall& wall, int server_count) {
   return server_count - (wall.overlay ? 1 : 0);
 }
 
-std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
-                                                        const std::vector<Rect>& logical,
-                                                        const std::vector<DisplayTile>& tiles,
-                                                        AssignmentPolicy policy, int server_count) {
-  const Distribution d = distribute(wall, logical, tiles, policy, server_count);
+namespace {
+
+std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int server_count) {
   std::vector<std::vector<DisplayTile>> lists(static_cast<std::size_t>(std::max(server_count, 0)));
   for (std::size_t i = 0; i < d.tiles.size(); ++i) lists[d.server[i]].push_back(d.tiles[i]);
   for (auto& list : lists) list = packing_order(std::move(list));
   return lists;
 }
 
-TileLayout plan_layout(const Wall& wall) {
+TileLayout plan(const Wall& wall, const std::vector<int>* server_of_logical) {
   TileLayout layout;
   layout.wall = wall;
   layout.logical_tiles = make_logical_tiles(wall);
   layout.tiles = split_at_displays(wall, layout.logical_tiles);
+  if (server_of_logical && (wall.depth_layers != 0 || wall.overlay ||
+                            server_of_logical->size() != layout.logical_tiles.size())) {
+    throw LayoutError(where(wall, 0) +
+                      fmt::format("a given assignment needs a sort-first wall without overlay "
+                                  "and one pipeserver for each of its {} logical tiles, got {}",
+                                  layout.logical_tiles.size(), server_of_logical->size()));
+  }
+  if (server_of_logical) {
+    for (int s : *server_of_logical) {
+      if (s < 0 || s >= wall.server_count) {
+        throw LayoutError(where(wall, 0) + fmt::format("assigned pipeserver {} is not 0..{}", s,
+                                                       wall.server_count - 1));
+      }
+    }
+  }
 
-  const Distribution d =
-      distribute(wall, layout.logical_tiles, layout.tiles, wall.assignment, wall.server_count);
-  const std::vector<std::vector<DisplayTile>> lists = server_tile_lists(
-      wall, layout.logical_tiles, layout.tiles, wall.assignment, wall.server_count);
+  const Distribution d = distribute(wall, layout.logical_tiles, layout.tiles, wall.assignment,
+                                    wall.server_count, server_of_logical);
+  const std::vector<std::vector<DisplayTile>> lists = tile_lists(d, wall.server_count);
   if (d.tiles.empty()) {
     throw LayoutError(where(wall, wall.depth_line) +
                       fmt::format("depth.layers: {} layers do not share {} pipeservers evenly",
@@ -159,6 +173,23 @@ TileLayout plan_layout(const Wall& wall) {
   if (auto w = dvi_link_warning(wall))
     layout.warnings.push_back(where(wall, wall.framebuffer_line) + *w);
   return layout;
+}
+
+}  // namespace
+
+std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
+                                                        const std::vector<Rect>& logical,
+                                                        const std::vector<DisplayTile>& tiles,
+                                                        AssignmentPolicy policy, int server_count) {
+  return tile_lists(distribute(wall, logical, tiles, policy, server_count), server_count);
+}
+
+TileLayout plan_layout(const Wall& wall) {
+  return plan(wall, nullptr);
+}
+
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& server_of_logical) {
+  return plan(wall, &server_of_logical);
 }
 
 }  // namespace l2

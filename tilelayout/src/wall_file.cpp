@@ -29,7 +29,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   }
   const TomlFields top(doc, "", source,
                        {"name", "canvas", "display_grid", "display", "tiling", "pipeservers",
-                        "mesh", "depth", "overlay"});
+                        "mesh", "depth", "overlay", "balance"});
   Wall wall;
   wall.source = path_for_messages;
   wall.name = top.string("name").value_or(path_for_messages.stem().string());
@@ -38,6 +38,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_tiling(top, wall);
   read_servers_and_mesh(top, wall);
   read_compositing(top, wall);
+  read_balance(top, wall);
   return wall;
 }
 

@@ -274,6 +274,31 @@ TEST(Planner, TilesThatDoNotFitSayWhatWould) {
   EXPECT_THROW(plan_layout(w), LayoutError);
 }
 
+TEST(Planner, GivenAssignmentReplacesThePolicy) {
+  const char* kWall =
+      "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 80\n"
+      "[pipeservers]\ncount = 2\nframebuffer_width = 200\nframebuffer_height = 100\n";
+  const TileLayout layout = plan_layout(parse_wall(kWall, "g.toml"), {1, 0});
+  EXPECT_EQ(layout.tile_server, (std::vector<int>{1, 0}));
+  ASSERT_EQ(layout.servers[0].tiles.size(), 1u);
+  EXPECT_EQ(layout.servers[0].tiles[0].tile.logical_tile, 1);
+  try {
+    plan_layout(parse_wall(kWall, "g.toml"), {0, 2});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(), "g.toml: assigned pipeserver 2 is not 0..1");
+  }
+  try {
+    plan_layout(parse_wall(kWall, "g.toml"), {0});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "g.toml: a given assignment needs a sort-first wall without overlay and one "
+                 "pipeserver for each of its 2 logical tiles, got 1");
+  }
+}
+
 TEST(Planner, PipeserverWithoutTilesIsRefused) {
   try {
     plan_layout(

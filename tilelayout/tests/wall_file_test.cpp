@@ -360,3 +360,36 @@ TEST(WallFile, DefaultWallIsTheFileInWalls) {
 
 }  // namespace
 }  // namespace l2
+
+namespace l2 {
+namespace {
+
+TEST(WallFile, BalanceSection) {
+  EXPECT_EQ(parse_wall(kBase, "t.toml").balance.mode, BalanceMode::Static);
+  const Wall w = parse_wall(
+      kBase + "[balance]\nmode = \"strips\"\nassignment = \"heaviest-first\"\n", "t.toml");
+  EXPECT_EQ(w.balance.mode, BalanceMode::Strips);
+  EXPECT_TRUE(w.balance.heaviest_first);
+  EXPECT_EQ(w.balance.line, 16);
+  EXPECT_EQ(parse_wall(kBase + "[balance]\nmode = \"kd\"\n", "t.toml").balance.mode,
+            BalanceMode::Kd);
+  EXPECT_FALSE(parse_wall(kBase + "[balance]\nmode = \"kd\"\n", "t.toml").balance.heaviest_first);
+}
+
+TEST(WallFile, BalanceErrorsNameTheLineAndField) {
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"dynamic\"\n"),
+            "walls/t.toml:17: balance.mode: must be one of static, strips, kd, got \"dynamic\"");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = 1\n"),
+            "walls/t.toml:17: balance.mode: must be a string, got an integer");
+  EXPECT_EQ(error_of(kBase + "[balance]\nassignment = \"fastest\"\n"),
+            "walls/t.toml:17: balance.assignment: must be one of policy, heaviest-first, got "
+            "\"fastest\"");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmodes = \"kd\"\n"),
+            "walls/t.toml:17: balance.modes: unknown key");
+  EXPECT_EQ(error_of(kBase + "[depth]\nlayers = 2\n[balance]\nmode = \"strips\"\n"),
+            "walls/t.toml:19: balance.mode: cannot balance a wall with [depth]: its tiles are "
+            "shared by layer, not by render time");
+}
+
+}  // namespace
+}  // namespace l2

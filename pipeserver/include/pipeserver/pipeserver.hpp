@@ -22,6 +22,9 @@ struct FrameTimes {
   double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
   double scanout_ms = 0;  // tiles RGBA bottom-up -> RGB top-down (and depth), headers, black
   BucketStats buckets;
+  // Each tile's draw, glFinish included, by plan().tiles index, in CPU time of the process:
+  // the load balancer's measure (balance/). It leaves out each display window's set-up.
+  std::vector<double> tile_ms;
   double total_ms() const { return render_ms + scanout_ms; }
 };
 
@@ -51,6 +54,11 @@ class Pipeserver {
   // std::invalid_argument when `dst` is smaller than a frame.
   std::span<std::uint8_t> render_frame(int frame, Scene& scene, std::span<std::uint8_t> dst);
 
+  // The same pipeserver in another layout of its wall (the load balancer's next frame): its
+  // plan, headers and windows anew, its GL contexts kept. Throws std::out_of_range as the
+  // constructor does, std::invalid_argument when the framebuffer size differs (the DVI link's).
+  void set_layout(const TileLayout& layout);
+
   const ServerPlan& plan() const { return plan_; }
   const FrameTimes& last_times() const { return times_; }
 
@@ -62,6 +70,7 @@ class Pipeserver {
     std::vector<int> tiles;   // into plan_.tiles
   };
   void render_windows(Scene& scene, std::span<std::uint8_t> dst);
+  void make_windows(const Wall& wall);
 
   ServerPlan plan_;
   Canvas canvas_;

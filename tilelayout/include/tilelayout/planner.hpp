@@ -17,6 +17,12 @@ namespace l2 {
 // and refuse the same walls with the same words.
 TileLayout plan_layout(const Wall& wall);
 
+// The same plan and checks with the pipeserver of every logical tile given (in tiling order)
+// instead of the wall's assignment policy: the load balancer's choice. Sort-first walls
+// without an overlay only; any other wall, a list of another length or a pipeserver out of
+// range is a LayoutError.
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& server_of_logical);
+
 // The steps of plan_layout, exposed so each can be checked on its own.
 
 // Logical tiles on the canvas, in tiling order (row-major for grid and strips; k-d tiles in

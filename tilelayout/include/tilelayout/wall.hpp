@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tilelayout/geometry.hpp"
@@ -51,6 +52,20 @@ struct Overlay {
   int line = 0;           // of [overlay] in the wall file, for errors found while planning
 };
 
+// `[balance]`: how the tiling follows the load, frame by frame (balance/): the wall's own tiling
+// every frame, horizontal strips with vertical sub-strips whose edges move toward equal render
+// time, or the k-d split re-cut over the last frame's times. Named as in the wall file.
+enum class BalanceMode { Static, Strips, Kd };
+inline constexpr std::string_view kBalanceModeNames[] = {"static", "strips", "kd"};
+
+struct BalanceSpec {
+  BalanceMode mode = BalanceMode::Static;
+  // `assignment = "heaviest-first"`: the heaviest tile to the pipeserver that finishes first,
+  // instead of [pipeservers] assignment ("policy").
+  bool heaviest_first = false;
+  int line = 0;  // of [balance], for errors found later
+};
+
 struct Wall {
   std::filesystem::path source;  // the wall file, for error messages; empty when built in code
   std::string name;
@@ -67,6 +82,7 @@ struct Wall {
   // first); kAllLayers: one layer per pipeserver (sort-last).
   int depth_layers = 0;
   std::optional<Overlay> overlay;
+  BalanceSpec balance;
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
   int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };

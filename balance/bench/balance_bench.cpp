@@ -1,0 +1,115 @@
+// balance_bench: how much the load balancer (balance/) shortens frames. Renders a fixed
+// camera path on every pipeserver of a wall, in this one process and one pipeserver after the
+// other, so each pipeserver's render time is measured alone on a machine whose cores the
+// pipeservers of a live run would share. Between frames the balancer plans the next frame's
+// layout from the tiles' times, as a live run's coordinator would. Prints one CSV row a frame:
+// the frame time (the slowest pipeserver's render time: the frame waits for it) and the
+// imbalance (that over the mean). Render times are the tiles' CPU times (FrameTimes::tile_ms),
+// which other work on the machine does not lengthen.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "balance/balancer.hpp"
+#include "balance/frame_load.hpp"
+#include "command_line/options.hpp"
+#include "command_line/parse.hpp"
+#include "pipeserver/pipeserver.hpp"
+#include "pipeserver/scene_cli.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace {
+
+struct Options {
+  std::string wall;
+  std::string scene = "strips";
+  int frames = 30;
+  int pipeservers = 0;  // 0: the wall's count
+  std::string mode;     // empty: the wall's [balance] mode
+  bool assign = false;
+  bool header = false;
+};
+
+std::vector<std::unique_ptr<l2::Pipeserver>> pipeservers_of(const l2::TileLayout& layout) {
+  std::vector<std::unique_ptr<l2::Pipeserver>> out;
+  for (std::size_t s = 0; s < layout.servers.size(); ++s) {
+    out.push_back(std::make_unique<l2::Pipeserver>(layout, static_cast<int>(s)));
+  }
+  return out;
+}
+
+int run(const Options& o, const l2::SceneOptions& scene_options) {
+  l2::Wall wall = o.wall.empty() ? l2::default_wall() : l2::load_wall(o.wall);
+  if (o.pipeservers > 0) wall.server_count = o.pipeservers;
+  l2::BalanceSettings settings = l2::balance_settings(wall);
+  if (!o.mode.empty()) settings.mode = *l2::parse_balance_mode(o.mode);
+  settings.assign = settings.assign || o.assign;
+  l2::Balancer balancer(wall, settings);
+  auto scene = l2::make_scene(o.scene, scene_options);
+  auto servers = pipeservers_of(balancer.layout());
+  if (o.header) std::printf("pipeservers,mode,assign,frame,frame_ms,imbalance,retiled\n");
+  int rejected = 0;
+  for (int k = 0; k < o.frames; ++k) {
+    l2::TileSeconds tile_seconds, server_seconds;
+    for (auto& ps : servers) {
+      ps->render_frame(k, *scene);
+      const l2::FrameTimes& t = ps->last_times();
+      std::vector<double>& tiles = tile_seconds.emplace_back();
+      for (double ms : t.tile_ms) tiles.push_back(ms / 1000);
+      server_seconds.push_back(tiles);
+    }
+    const l2::FrameLoad load = l2::frame_load(server_seconds);
+    const l2::BalanceStep step = balancer.next(tile_seconds);
+    if (!step.rejected.empty()) {
+      ++rejected;
+      std::fprintf(stderr, "balance_bench: frame %d: next layout not used: %s\n", k,
+                   step.rejected.c_str());
+    }
+    std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", servers.size(), l2::to_string(settings.mode),
+                settings.assign ? 1 : 0, k, load.frame_seconds * 1000, load.imbalance,
+                step.changed ? 1 : 0);
+    if (step.changed) {
+      for (auto& ps : servers) ps->set_layout(balancer.layout());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "balance_bench: renders a scene's fixed camera path on every pipeserver of a wall and\n"
+      "prints a CSV row per frame: frame time (the slowest pipeserver's render time, ms) and\n"
+      "imbalance (slowest over mean), with the wall re-tiled between frames by --mode."};
+  Options o;
+  l2::SceneOptions scene_options;
+  l2::add_wall_option(app, o.wall, "default: the built-in default wall");
+  app.add_option("--scene", o.scene, "scene to render")
+      ->check(CLI::IsMember(l2::built_in_scene_names()))
+      ->capture_default_str();
+  app.add_option("--frames", o.frames, "frames of the camera path")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  app.add_option("--pipeservers", o.pipeservers, "pipeserver count instead of the wall's")
+      ->check(CLI::Range(1, l2::kMaxPipeservers));
+  app.add_option("--mode", o.mode, "static, strips or kd (default: the wall's [balance] mode)")
+      ->check(CLI::IsMember({"static", "strips", "kd"}));
+  app.add_flag("--assign", o.assign,
+               "heaviest tile first to the pipeserver that finishes first, instead of the wall's "
+               "assignment policy (as [balance] assignment = \"heaviest-first\")");
+  app.add_flag("--header", o.header, "print the CSV header line first");
+  const auto scene_opts = l2::add_scene_options(app, scene_options);
+  app.callback([&] { l2::check_scene_options(scene_opts, o.scene); });
+  if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
+  try {
+    return run(o, scene_options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "balance_bench: %s\n", e.what());
+    return 1;
+  }
+}

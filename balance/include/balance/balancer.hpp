@@ -1,0 +1,63 @@
+// The layout of the next frame from the render times of the last: `[balance] mode` of a wall
+// file. Every layout it hands out has passed tilelayout's planner (tiles fit their
+// framebuffers, every pipeserver has a tile); one that would not is not used, and the step
+// says why.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "balance/cost_estimate.hpp"
+#include "balance/edge_motion.hpp"
+#include "balance/strip_edges.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+// BalanceMode (tilelayout/wall.hpp) by its wall-file name ("static", "strips", "kd"); nullopt
+// for anything else.
+std::optional<BalanceMode> parse_balance_mode(std::string_view name);
+const char* to_string(BalanceMode mode);
+
+struct BalanceSettings {
+  BalanceMode mode = BalanceMode::Static;
+  bool assign = false;  // heaviest tile first to the pipeserver that finishes first, instead
+                        // of the wall's assignment policy
+  EdgeMotion motion;    // strip edges, and the blending of the k-d cost grid
+  int kd_grid_columns = 32, kd_grid_rows = 32;
+};
+
+// What the wall's [balance] asks for, with the default motion and grid.
+BalanceSettings balance_settings(const Wall& wall);
+
+struct BalanceStep {
+  bool changed = false;  // the next frame's tiles or their pipeservers differ
+  std::string rejected;  // the planner's error when the new layout did not fit; the old stays
+};
+
+class Balancer {
+ public:
+  // The first frame's layout: the wall's (static, kd) or even strips (strips mode: the
+  // wall's strip counts, or one strip per pipeserver cut into as many sub-strips as it has
+  // tiles per pipeserver). Throws LayoutError when it cannot be planned, or when a balancing
+  // mode meets a depth or overlay wall (their tiles are shared by layers, not by cost).
+  Balancer(const Wall& wall, BalanceSettings settings);
+
+  const TileLayout& layout() const { return layout_; }
+  const BalanceSettings& settings() const { return settings_; }
+
+  // Frame k's render times, measured on layout(): makes layout() frame k+1's.
+  BalanceStep next(const TileSeconds& seconds);
+
+ private:
+  TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
+
+  Wall wall_;
+  BalanceSettings settings_;
+  std::optional<StripEdges> strips_;
+  std::vector<std::vector<double>> grid_;  // kd: the blended cost grid
+  TileLayout layout_;
+};
+
+}  // namespace l2

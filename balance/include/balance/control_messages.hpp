@@ -1,0 +1,53 @@
+// The balancing control channel's messages (a pipeserver and the run's coordinator): after each
+// frame a pipeserver sends its tiles' render times; before the next, the coordinator sends
+// every pipeserver that frame's tiling, the same to all, so all switch together. One text line
+// each, whatever moves them (control_channel.hpp).
+//
+//   TIMES <frame> <server> <n> <seconds>...          n = the server's packed tiles
+//   LAYOUT <frame> <n> (<x> <y> <w> <h> <server>)... n = logical tiles, in tiling order
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+struct TimesMessage {
+  int frame = 0, server = 0;
+  std::vector<double> seconds;  // by packed tile, as the pipeserver's plan orders them
+};
+
+struct LayoutMessage {
+  int frame = 0;
+  std::vector<Rect> tiles;   // the logical tiles on the canvas
+  std::vector<int> servers;  // the pipeserver of each
+};
+
+// A line that is not a message, or one whose numbers are out of range: what() is one line
+// quoting at most the start of the line.
+class ControlError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// More tiles than a wall can have (every tile is at least one canvas pixel of a 4095-square
+// display, but a line this long is already a wrong peer): refused before anything is kept.
+inline constexpr int kMaxControlTiles = 65536;
+
+std::string encode(const TimesMessage& m);
+std::string encode(const LayoutMessage& m);
+TimesMessage decode_times(std::string_view line);
+LayoutMessage decode_layout(std::string_view line);
+
+// What the coordinator sends every pipeserver: `layout` as frame `frame`'s tiling.
+LayoutMessage layout_message(int frame, const TileLayout& layout);
+// The layout a pipeserver plans from the message: `wall` with the message's tiles as a list
+// tiling and its pipeservers as the assignment, through the planner (its checks and its
+// LayoutError), so every pipeserver packs the same plan as the coordinator.
+TileLayout plan_from_message(const Wall& wall, const LayoutMessage& m);
+
+}  // namespace l2

@@ -1,0 +1,131 @@
+#include "balance/control_messages.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "tilelayout/planner.hpp"
+
+namespace l2 {
+namespace {
+
+// Reads the space-separated words of one line, each checked as it is taken.
+class Words {
+ public:
+  explicit Words(std::string_view line) : line_(line), rest_(line) {}
+
+  void keyword(std::string_view want) {
+    if (next() != want) fail(fmt::format("not a {} message", want));
+  }
+  long long integer(const char* what, long long min, long long max) {
+    const std::string_view w = next();
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size() || v < min || v > max) {
+      fail(fmt::format("{} must be an integer {}..{}, got '{}'", what, min, max, clip(w)));
+    }
+    return v;
+  }
+  double seconds() {
+    const std::string_view w = next();
+    double v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v) || v < 0) {
+      fail(fmt::format("a render time must be seconds >= 0, got '{}'", clip(w)));
+    }
+    return v;
+  }
+  void end() {
+    if (!next().empty()) fail("more words than its count says");
+  }
+  [[noreturn]] void fail(const std::string& why) const {
+    throw ControlError(fmt::format("control line '{}': {}", clip(line_), why));
+  }
+
+ private:
+  static std::string clip(std::string_view s) {
+    std::string out;
+    for (char c : s.substr(0, 40)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
+    return s.size() > 40 ? out + "..." : out;
+  }
+  std::string_view next() {
+    while (!rest_.empty() && rest_.front() == ' ') rest_.remove_prefix(1);
+    const std::size_t n = std::min(rest_.find(' '), rest_.size());
+    const std::string_view w = rest_.substr(0, n);
+    rest_.remove_prefix(n);
+    return w;
+  }
+  std::string_view line_, rest_;
+};
+
+constexpr long long kMaxFrame = 1LL << 30;
+
+}  // namespace
+
+std::string encode(const TimesMessage& m) {
+  std::string out = fmt::format("TIMES {} {} {}", m.frame, m.server, m.seconds.size());
+  for (double s : m.seconds) out += fmt::format(" {}", s);  // shortest exact form
+  return out;
+}
+
+std::string encode(const LayoutMessage& m) {
+  std::string out = fmt::format("LAYOUT {} {}", m.frame, m.tiles.size());
+  for (std::size_t i = 0; i < m.tiles.size(); ++i) {
+    const Rect& r = m.tiles[i];
+    out += fmt::format(" {} {} {} {} {}", r.x, r.y, r.w, r.h, m.servers[i]);
+  }
+  return out;
+}
+
+TimesMessage decode_times(std::string_view line) {
+  Words w(line);
+  w.keyword("TIMES");
+  TimesMessage m;
+  m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
+  m.server = static_cast<int>(w.integer("server", 0, kMaxPipeservers - 1));
+  const auto n = w.integer("tile count", 0, kMaxControlTiles);
+  for (long long i = 0; i < n; ++i) m.seconds.push_back(w.seconds());
+  w.end();
+  return m;
+}
+
+LayoutMessage decode_layout(std::string_view line) {
+  Words w(line);
+  w.keyword("LAYOUT");
+  LayoutMessage m;
+  m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
+  const auto n = w.integer("tile count", 1, kMaxControlTiles);
+  for (long long i = 0; i < n; ++i) {
+    Rect r;
+    r.x = static_cast<int>(w.integer("x", 0, 65535));
+    r.y = static_cast<int>(w.integer("y", 0, 65535));
+    r.w = static_cast<int>(w.integer("width", 1, 65535));
+    r.h = static_cast<int>(w.integer("height", 1, 65535));
+    m.tiles.push_back(r);
+    m.servers.push_back(static_cast<int>(w.integer("server", 0, kMaxPipeservers - 1)));
+  }
+  w.end();
+  return m;
+}
+
+LayoutMessage layout_message(int frame, const TileLayout& layout) {
+  LayoutMessage m;
+  m.frame = frame;
+  m.tiles = layout.logical_tiles;
+  m.servers.assign(layout.logical_tiles.size(), 0);
+  for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+    m.servers[static_cast<std::size_t>(layout.tiles[i].logical_tile)] = layout.tile_server[i];
+  }
+  return m;
+}
+
+TileLayout plan_from_message(const Wall& wall, const LayoutMessage& m) {
+  Wall w = wall;
+  w.tiling = {};
+  w.tiling.kind = TilingKind::List;
+  w.tiling.rects = m.tiles;
+  return plan_layout(w, m.servers);
+}
+
+}  // namespace l2

@@ -1,0 +1,108 @@
+#include "balance/balancer.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "test_walls.hpp"
+
+#include "tilelayout/planner.hpp"
+
+namespace l2 {
+namespace {
+
+using test::strips_wall;
+
+BalanceSettings strips(bool assign = false) {
+  BalanceSettings s;
+  s.mode = BalanceMode::Strips;
+  s.assign = assign;
+  s.motion = {1.0, 0};
+  return s;
+}
+
+// The top-left tile at 3 per thousand pixels, the others at 1 (strip_edges_test's estimate).
+const TileSeconds kHeavyTopLeft = {{7.5, 2.5}, {2.5, 2.5}};
+
+TEST(Balancer, ModeNames) {
+  EXPECT_EQ(parse_balance_mode("strips"), BalanceMode::Strips);
+  EXPECT_EQ(parse_balance_mode("kd"), BalanceMode::Kd);
+  EXPECT_EQ(parse_balance_mode("static"), BalanceMode::Static);
+  EXPECT_EQ(parse_balance_mode("Strips"), std::nullopt);
+  EXPECT_STREQ(to_string(BalanceMode::Kd), "kd");
+}
+
+TEST(Balancer, StripsMoveToTheCostAndKeepThePolicy) {
+  Balancer b(strips_wall(), strips());
+  ASSERT_EQ(b.layout().logical_tiles.size(), 4u);
+  const BalanceStep step = b.next(kHeavyTopLeft);
+  EXPECT_TRUE(step.changed);
+  EXPECT_EQ(step.rejected, "");
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 33, 38}, {33, 0, 67, 38}, {0, 38, 43, 62}, {43, 38, 57, 62}}));
+  EXPECT_EQ(b.layout().tile_server, (std::vector<int>{0, 1, 0, 1}));
+}
+
+TEST(Balancer, AssignmentGivesTheHeaviestTileToTheFirstToFinish) {
+  Balancer b(strips_wall(), strips(true));
+  b.next(kHeavyTopLeft);
+  // Predicted costs of the new tiles: 3.762, 3.838, 3.698, 3.702. 3.838 -> 0, 3.762 -> 1,
+  // 3.702 -> 1 (at 3.762 it finishes first), 3.698 -> 0.
+  EXPECT_EQ(b.layout().tile_server, (std::vector<int>{1, 0, 0, 1}));
+}
+
+TEST(Balancer, ALayoutThatDoesNotFitIsNotUsed) {
+  // All the time in the top strip: its edge moves to row 25, and the bottom tiles, 75 rows,
+  // do not fit a 64-row framebuffer.
+  Balancer b(strips_wall(104, 64), strips());
+  const std::vector<Rect> before = b.layout().logical_tiles;
+  const BalanceStep step = b.next({{10, 0}, {10, 0}});
+  EXPECT_FALSE(step.changed);
+  EXPECT_THAT(step.rejected, testing::HasSubstr("does not fit the 104x64 framebuffer: needs 75 "
+                                                "rows, 11 too many"));
+  EXPECT_EQ(b.layout().logical_tiles, before);
+  // The edges went back too: even times leave the even layout.
+  const BalanceStep even = b.next({{1, 1}, {1, 1}});
+  EXPECT_FALSE(even.changed);
+  EXPECT_EQ(even.rejected, "");
+}
+
+TEST(Balancer, KdRecutsOverTheMeasuredGrid) {
+  Wall w = strips_wall();
+  w.tiling = {};
+  w.tiling.kind = TilingKind::KdSplit;
+  w.tiling.tile_count = 2;
+  BalanceSettings s;
+  s.mode = BalanceMode::Kd;
+  s.motion = {1.0, 0};
+  s.kd_grid_columns = 4;
+  s.kd_grid_rows = 1;
+  Balancer b(w, s);
+  ASSERT_EQ(b.layout().logical_tiles, (std::vector<Rect>{{0, 0, 50, 100}, {50, 0, 50, 100}}));
+  // Cells of 25 columns cost 1.5, 1.5, 0.5, 0.5: half of 4 at 25 + 25 / 3 = 33.3.
+  EXPECT_TRUE(b.next({{3}, {1}}).changed);
+  EXPECT_EQ(b.layout().logical_tiles, (std::vector<Rect>{{0, 0, 33, 100}, {33, 0, 67, 100}}));
+}
+
+TEST(Balancer, StaticKeepsTheWallsLayout) {
+  Balancer b(strips_wall(), {});
+  const TileLayout planned = plan_layout(strips_wall());
+  EXPECT_FALSE(b.next(kHeavyTopLeft).changed);
+  EXPECT_EQ(b.layout().logical_tiles, planned.logical_tiles);
+}
+
+TEST(Balancer, RefusesADepthWall) {
+  Wall w = strips_wall();
+  w.depth_layers = 2;
+  try {
+    Balancer b(w, strips());
+    FAIL() << "a depth wall was balanced";
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "balance.mode: strips needs a sort-first wall without [depth] or "
+                 "[overlay]");
+  }
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,91 @@
+#include "balance/control_messages.hpp"
+
+#include <gtest/gtest.h>
+
+#include "test_walls.hpp"
+
+#include "balance/balancer.hpp"
+
+namespace l2 {
+namespace {
+
+using test::strips_wall;
+
+TEST(ControlMessages, TimesRoundTrip) {
+  const std::string line = encode(TimesMessage{7, 2, {0.0125, 0.5, 0}});
+  EXPECT_EQ(line, "TIMES 7 2 3 0.0125 0.5 0");
+  const TimesMessage m = decode_times(line);
+  EXPECT_EQ(m.frame, 7);
+  EXPECT_EQ(m.server, 2);
+  EXPECT_EQ(m.seconds, (std::vector<double>{0.0125, 0.5, 0}));
+}
+
+TEST(ControlMessages, LayoutRoundTrip) {
+  const LayoutMessage m{3, {{0, 0, 33, 38}, {33, 0, 67, 38}}, {1, 0}};
+  EXPECT_EQ(encode(m), "LAYOUT 3 2 0 0 33 38 1 33 0 67 38 0");
+  const LayoutMessage d = decode_layout(encode(m));
+  EXPECT_EQ(d.frame, 3);
+  EXPECT_EQ(d.tiles, m.tiles);
+  EXPECT_EQ(d.servers, m.servers);
+}
+
+void expect_error(std::string_view line, bool layout, const std::string& what) {
+  try {
+    if (layout)
+      decode_layout(line);
+    else
+      decode_times(line);
+    ADD_FAILURE() << "accepted: " << line;
+  } catch (const ControlError& e) {
+    EXPECT_EQ(e.what(), what);
+  }
+}
+
+TEST(ControlMessages, BadLinesAreOneLineErrors) {
+  expect_error("READY 1", false, "control line 'READY 1': not a TIMES message");
+  expect_error("TIMES 1 300 0", false,
+               "control line 'TIMES 1 300 0': server must be an integer 0..255, got '300'");
+  expect_error("TIMES 1 0 2 0.5", false,
+               "control line 'TIMES 1 0 2 0.5': a render time must be seconds >= 0, got ''");
+  expect_error("TIMES 1 0 1 -1", false,
+               "control line 'TIMES 1 0 1 -1': a render time must be seconds >= 0, got '-1'");
+  expect_error("TIMES 1 0 1 0.5 9", false,
+               "control line 'TIMES 1 0 1 0.5 9': more words than its count says");
+  expect_error("TIMES 1 0 99999999999", false,
+               "control line 'TIMES 1 0 99999999999': tile count must be an integer 0..65536, "
+               "got '99999999999'");
+  expect_error("LAYOUT 0 1 0 0 0 10 0", true,
+               "control line 'LAYOUT 0 1 0 0 0 10 0': width must be an integer 1..65535, got '0'");
+  expect_error(std::string("LAYOUT \x1b[2J") + std::string(60, '9'), true,
+               "control line 'LAYOUT ?[2J" + std::string(29, '9') +
+                   "...': frame must be an "
+                   "integer 0..1073741824, got '?[2J" +
+                   std::string(36, '9') + "...'");
+}
+
+TEST(ControlMessages, APipeserverPlansWhatTheCoordinatorPlanned) {
+  BalanceSettings s;
+  s.mode = BalanceMode::Strips;
+  s.assign = true;
+  s.motion = {1.0, 0};
+  Balancer b(strips_wall(), s);
+  b.next({{7.5, 2.5}, {2.5, 2.5}});
+  const TileLayout& planned = b.layout();
+  const TileLayout heard =
+      plan_from_message(strips_wall(), decode_layout(encode(layout_message(1, planned))));
+  EXPECT_EQ(heard.logical_tiles, planned.logical_tiles);
+  EXPECT_EQ(heard.tile_server, planned.tile_server);
+  ASSERT_EQ(heard.servers.size(), planned.servers.size());
+  for (std::size_t i = 0; i < heard.servers.size(); ++i) {
+    ASSERT_EQ(heard.servers[i].tiles.size(), planned.servers[i].tiles.size());
+    for (std::size_t t = 0; t < heard.servers[i].tiles.size(); ++t) {
+      EXPECT_EQ(heard.servers[i].tiles[t].fb_x, planned.servers[i].tiles[t].fb_x);
+      EXPECT_EQ(heard.servers[i].tiles[t].fb_y, planned.servers[i].tiles[t].fb_y);
+      EXPECT_EQ(heard.servers[i].tiles[t].tile.on_canvas,
+                planned.servers[i].tiles[t].tile.on_canvas);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace l2

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# The load balancer's benchmark (balance/, issue 21): a fixed camera path rendered on 4 and 8
+# pipeservers of the default wall, tiled static, by strips and by k-d re-split, each with and
+# without the heaviest-first assignment. Writes OUT/balance.csv (a row per frame: frame time =
+# the slowest pipeserver's render time, imbalance = that over the mean), OUT/balance.png
+# (frame time per frame) and OUT/balance-summary.txt (median speed-up over static per frame).
+#
+#   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"] [--scene S]
+#                            [--build DIR] [--plot-only] [-- SCENE OPTIONS...]
+# --plot-only draws the PNG and the summary again from an existing OUT/balance.csv.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=$root/build/balance-bench
+frames=40
+pipeservers="4 8"
+scene=strips
+build=$root/build/default
+scene_args=()
+plot_only=0
+usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
+while (($#)); do
+  case $1 in
+    --out) out=$2; shift 2 ;;
+    --frames) frames=$2; shift 2 ;;
+    --pipeservers) pipeservers=$2; shift 2 ;;
+    --scene) scene=$2; shift 2 ;;
+    --build) build=$2; shift 2 ;;
+    --plot-only) plot_only=1; shift ;;
+    --) shift; scene_args=("$@"); break ;;
+    -h | --help) usage; exit 0 ;;
+    *) echo "balance-bench: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+bench=$build/balance/balance_bench
+((plot_only)) || [[ -x $bench ]] || { echo "balance-bench: $bench not built (cmake --build --preset default --target balance_bench)" >&2; exit 1; }
+command -v gnuplot >/dev/null || { echo "balance-bench: gnuplot not installed (scripts/install-deps.sh)" >&2; exit 1; }
+mkdir -p "$out"
+csv=$out/balance.csv
+# One rendering thread: every pipeserver is timed alone, so the times compare across runs
+# whatever else the machine runs.
+export LP_NUM_THREADS=1
+if ((!plot_only)); then
+echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled" >"$csv"
+for p in $pipeservers; do
+  for mode in static strips kd; do
+    for assign in 0 1; do
+      flag=()
+      ((assign)) && flag=(--assign)
+      "$bench" --pipeservers "$p" --mode "$mode" "${flag[@]}" --frames "$frames" \
+        --scene "$scene" "${scene_args[@]}" >>"$csv"
+    done
+  done
+done
+fi
+
+# Per configuration, the median over frames of static's frame time over its own (same
+# pipeserver count, same frame), and its median imbalance.
+summary=$out/balance-summary.txt
+{
+  echo "pipeservers mode assign median_speedup median_imbalance"
+  # Static's frame times first (the whole file), then each row against the same frame's.
+  awk -F, 'NR == FNR { if (FNR > 1 && $2 == "static" && $3 == 0) base[$1 " " $4] = $5; next }
+           FNR > 1 { key = $1 " " $2 " " $3; ratio[key] = ratio[key] " " base[$1 " " $4] / $5
+                     imb[key] = imb[key] " " $6 }
+           END { for (k in ratio) print k "|" ratio[k] "|" imb[k] }' "$csv" "$csv" |
+    while IFS='|' read -r key ratios imbalances; do
+      median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+      printf '%s %.3f %.3f\n' "$key" "$(median <<<"$ratios")" "$(median <<<"$imbalances")"
+    done | sort -k1,1n -k2,2 -k3,3n
+} >"$summary"
+
+plot=$out/balance.gnuplot
+{
+  echo "set terminal pngcairo size 1000,900 font ',11'"
+  echo "set output '$out/balance.png'"
+  echo "set datafile separator ','"
+  echo "set multiplot layout $(wc -w <<<"$pipeservers"),1 title 'frame time per frame (slowest pipeserver), scene $scene, default wall'"
+  for p in $pipeservers; do
+    echo "set title '$p pipeservers'"
+    echo "set xlabel 'frame'"
+    echo "set ylabel 'frame time (ms)'"
+    echo "set key outside right"
+    echo "set grid"
+    curves=()
+    for mode in static strips kd; do
+      for assign in 0 1; do
+        name=$mode
+        ((assign)) && name="$mode + assignment"
+        curves+=("'$csv' using (\$1 == $p && strcol(2) eq '$mode' && \$3 == $assign ? \$4 : 1/0):5 with lines lw 2 title '$name'")
+      done
+    done
+    printf 'plot %s\n' "$(IFS=,; echo "${curves[*]}")"
+  done
+  echo "unset multiplot"
+} >"$plot"
+gnuplot "$plot"
+cat "$summary"
+echo "balance-bench: $csv"
+echo "balance-bench: $out/balance.png"
