@@ -82,7 +82,7 @@ int exec_pipeserver(const RunOptions& o, int server) {
 int run_column_rank(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
                     int rank) {
   try {
-    return run_column(layout, map, column, o.threads, o.path == "both");
+    return run_column(layout, map, column, o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map.role(rank).c_str(), rank, e.what());
     MpiSession::abort_all(1);
@@ -93,7 +93,9 @@ int run_column_rank(const TileLayout& layout, const RankMap& map, int column, co
 
 std::optional<std::string> mpi_options_error(const RunOptions& o) {
   if (o.path == "vizserver") return kOnlyDvi;
-  if (!o.show.empty()) return "--mpi: --show is not available over MPI";
+  if (o.show == "window")
+    return "--mpi: --show window is one machine's; --show monitors shows each column's displays "
+           "on its own machine's monitors";
   if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
   return std::nullopt;
 }
@@ -128,8 +130,12 @@ int run_wall_mpi(const RunOptions& o) {
   MpiSession session;
   if (const auto column = map->column_of(session.rank()))
     return run_column_rank(*layout, *map, *column, o, session.rank());
-  const MpiBackends backends(*layout, *map, session, o);
-  const int code = run_wall(o, backends);
+  // The coordinator shows nothing: the columns show their displays (column_show.hpp).
+  RunOptions coordinator = o;
+  coordinator.show.clear();
+  coordinator.show_readback.clear();
+  const MpiBackends backends(*layout, *map, session, coordinator);
+  const int code = run_wall(coordinator, backends);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
   return 0;
 }
