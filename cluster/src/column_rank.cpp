@@ -31,7 +31,8 @@ struct ColumnInput {
 
 class Column {
  public:
-  Column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o)
+  Column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+         ColumnShow* show)
       : layout_(layout),
         map_(map),
         pool_(o.threads),
@@ -39,7 +40,8 @@ class Column {
         frames_(static_cast<std::size_t>(map.mesh_inputs)),
         back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
         done_frame_(back_frame_),
-        shown_frame_(back_frame_) {
+        shown_frame_(back_frame_),
+        show_(show) {
     // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be a
     // second round trip to the coordinator.
     router_.predict_layouts(false);
@@ -65,12 +67,6 @@ class Column {
       for (const int id : g.displays) {
         if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
       }
-    }
-    if (!o.show.empty()) {
-      std::vector<int> ids;
-      for (int d = 0; d < router_.display_count(); ++d) ids.push_back(router_.display(d).id());
-      // Vsync paces a refresh-rate run like a real display; --refresh 0 asks for full speed.
-      show_.emplace(layout.wall, ids, o.refresh_hz > 0, o.show_readback);
     }
   }
 
@@ -148,9 +144,10 @@ class Column {
   }
 
   void present() {
-    std::vector<const RgbImage*> fronts;
-    for (int d = 0; d < router_.display_count(); ++d) fronts.push_back(&router_.display(d).front());
-    show_->present(*std::min_element(shown_frame_.begin(), shown_frame_.end()), fronts);
+    show_->present(*std::min_element(shown_frame_.begin(), shown_frame_.end()),
+                   [this](int id) -> const RgbImage& {
+                     return router_.display(router_.index_of_display(id)).front();
+                   });
   }
 
   // [refresh, n, (server, present, idle, torn, parity, displays fed, stamp)...,
@@ -285,14 +282,15 @@ class Column {
   std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
   std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
   std::vector<std::uint8_t> tile_bytes_;
-  std::optional<ColumnShow> show_;  // --show monitors
+  ColumnShow* show_;  // --show monitors, or null
   const std::function<void()> pump_ = [this] { pump_tiles(); };
 };
 
 }  // namespace
 
-int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o) {
-  Column c(layout, map, column, o);
+int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+               ColumnShow* show) {
+  Column c(layout, map, column, o, show);
   c.run();
   return 0;
 }

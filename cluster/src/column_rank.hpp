@@ -9,14 +9,16 @@
 #pragma once
 
 #include "cluster/rank_map.hpp"
+#include "column_show.hpp"
 #include "live_run.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 
 // Returns the exit code. From `o`: --threads; --path both (the visualization-server path runs
-// too, and this column composites the tiles of its displays); --show monitors and
-// --show-readback (column_show.hpp). Throws DisplayError when the monitors cannot be opened.
-int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o);
+// too, and this column composites the tiles of its displays). `show`: --show monitors, shown
+// after every swap, or null.
+int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+               ColumnShow* show);
 
 }  // namespace l2

@@ -33,8 +33,8 @@ ColumnShow::ColumnShow(const Wall& wall, const std::vector<int>& ids, bool vsync
   images_.resize(wall_.displays.size());
 }
 
-void ColumnShow::present(int frame, const std::vector<const RgbImage*>& displays) {
-  for (std::size_t d = 0; d < images_.size(); ++d) images_[d] = *displays[d];
+void ColumnShow::present(int frame, const std::function<const RgbImage&(int)>& display) {
+  for (std::size_t d = 0; d < images_.size(); ++d) images_[d] = display(wall_.displays[d].id);
   presenter_->present({frame, 0.0, 1, false}, images_);
   // Keys are the one-machine run's; the events are still taken so the windows stay responsive.
   while (presenter_->poll_events() != UserAction::None) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -16,14 +17,15 @@ namespace l2 {
 
 class ColumnShow {
  public:
-  // `ids`: the column's display ids, in the order present() gets their pictures. `readback`:
-  // empty, or the --show-readback folder. Throws DisplayError (one line) as the presenter does.
+  // `ids`: the column's display ids. `readback`: empty, or the --show-readback folder. Throws
+  // DisplayError (one line) as the presenter does.
   ColumnShow(const Wall& wall, const std::vector<int>& ids, bool vsync,
              std::filesystem::path readback);
 
-  // After a swap: shows the displays' pictures; `frame` (the oldest frame they show, -1 for
-  // none yet) names the readback folder, DIR/frame-<k>/display-<id>.png.
-  void present(int frame, const std::vector<const RgbImage*>& displays);
+  // After a swap: shows the displays' pictures (display(id): display id's); `frame` (the
+  // oldest frame they show, -1 for none yet) names the readback folder,
+  // DIR/frame-<k>/display-<id>.png.
+  void present(int frame, const std::function<const RgbImage&(int)>& display);
 
  private:
   Wall wall_;  // the column's displays only

@@ -41,3 +41,17 @@ fi
 grep -qx "l2wall: --mpi: --show window is one machine's; --show monitors shows each column's displays on its own machine's monitors" \
   "$out/window.txt" || { echo "FAIL: no one-line --show window error:"; cat "$out/window.txt"; exit 1; }
 echo "--show window refused"
+
+# A column whose displays outnumber its machine's monitors fails before MPI starts: one line
+# naming its rank and the monitors it sees, and nothing of the run left running.
+if "${mpirun[@]}" -np 6 "$l2wall" run --mpi --show monitors --frames 3 --out "$out/few" \
+  --no-progress >/dev/null 2>"$out/few.txt"; then
+  echo "FAIL: 4 displays on 1 monitor were accepted"
+  exit 1
+fi
+[[ $(<"$out/few.txt") == 'l2wall: board column 0 (rank 5): walls/kd-2x2.toml (built in): --show monitors needs one monitor per display: 4 displays, but GLFW sees 1 monitor: [0] "screen" 800x600 at (0,0)' ]] ||
+  { echo "FAIL: not the one line:"; cat "$out/few.txt"; exit 1; }
+if pgrep -f -- "--out $out/few" >/dev/null; then
+  echo "FAIL: left running:"; pgrep -af -- "--out $out/few"; exit 1
+fi
+echo "too few monitors refused in one line"
