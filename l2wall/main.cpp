@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
                   "each display fullscreen on the monitor its wall-file `monitor` names. Keys: "
                   "space pauses the run (READY is held back, the hosts wait), s saves a "
                   "screenshot of every display to OUT/screenshots/, q or Esc ends the run as "
-                  "after its last frame")
+                  "after its last frame. With --mpi: monitors only, each board column rank "
+                  "showing its own displays on its machine's DISPLAY; no keys")
       ->check(CLI::IsMember({"window", "monitors"}));
   run->add_option("--show-readback", o.show_readback,
                   "verification aid for --show: after every presented frame, read the windows "

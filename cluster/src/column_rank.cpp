@@ -11,6 +11,7 @@
 
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
+#include "column_show.hpp"
 #include "frame_stamp.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
@@ -30,15 +31,17 @@ struct ColumnInput {
 
 class Column {
  public:
-  Column(const TileLayout& layout, const RankMap& map, int column, int threads, bool composite)
+  Column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+         ColumnShow* show)
       : layout_(layout),
         map_(map),
-        pool_(threads),
+        pool_(o.threads),
         router_(mesh(layout.wall), specs(layout.wall, map.displays_of_column[column]), pool_),
         frames_(static_cast<std::size_t>(map.mesh_inputs)),
         back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
         done_frame_(back_frame_),
-        shown_frame_(back_frame_) {
+        shown_frame_(back_frame_),
+        show_(show) {
     // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be a
     // second round trip to the coordinator.
     router_.predict_layouts(false);
@@ -47,7 +50,7 @@ class Column {
       inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
                                                              plan.fb_height)});
     }
-    if (composite) {
+    if (o.path == "both") {
       std::vector<std::pair<int, int>> sizes;
       for (const Display& d : layout.wall.displays) sizes.emplace_back(d.width, d.height);
       assembler_.emplace(std::move(sizes), map.servers);
@@ -111,13 +114,16 @@ class Column {
   // [kTick, refresh, n, swapped group indices..., n, sequence per server...]
   void tick(Reader& in) {
     const std::int64_t refresh = in.next();
+    bool swapped = false;
     for (int n = in.next_int(); n > 0; --n) {
       for (const int index : group_indices_[static_cast<std::size_t>(in.next_int())]) {
         router_.display(index).swap();
         shown_frame_[static_cast<std::size_t>(index)] =
             done_frame_[static_cast<std::size_t>(index)];
+        swapped = true;
       }
     }
+    if (swapped && show_) present();
     std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
     for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
     for (ColumnInput& input : inputs_) {
@@ -135,6 +141,13 @@ class Column {
     }
     router_.scan(frames_);
     mpi_wire::send(observation(refresh), RankMap::kCoordinator, mpi_wire::kObservation);
+  }
+
+  void present() {
+    show_->present(*std::min_element(shown_frame_.begin(), shown_frame_.end()),
+                   [this](int id) -> const RgbImage& {
+                     return router_.display(router_.index_of_display(id)).front();
+                   });
   }
 
   // [refresh, n, (server, present, idle, torn, parity, displays fed, stamp)...,
@@ -269,14 +282,15 @@ class Column {
   std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
   std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
   std::vector<std::uint8_t> tile_bytes_;
+  ColumnShow* show_;  // --show monitors, or null
   const std::function<void()> pump_ = [this] { pump_tiles(); };
 };
 
 }  // namespace
 
-int run_column(const TileLayout& layout, const RankMap& map, int column, int threads,
-               bool composite) {
-  Column c(layout, map, column, threads, composite);
+int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+               ColumnShow* show) {
+  Column c(layout, map, column, o, show);
   c.run();
   return 0;
 }

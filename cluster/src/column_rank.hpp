@@ -4,17 +4,21 @@
 // commands in order: a refresh's take-in and scan (answered with what it saw), the route and
 // completion decided from every column's observations, a fetch of its displays, the end.
 // With the visualization-server path it also composites the tiles the pipeservers send for
-// its displays (the compositing server's FrameAssembler), between and during commands.
+// its displays (the compositing server's FrameAssembler), between and during commands. With
+// --show monitors it shows its displays on its own machine's monitors after every swap.
 #pragma once
 
 #include "cluster/rank_map.hpp"
+#include "column_show.hpp"
+#include "live_run.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 
-// Returns the exit code. `composite`: the visualization-server path runs too, and this column
-// composites the tiles of its displays.
-int run_column(const TileLayout& layout, const RankMap& map, int column, int threads,
-               bool composite);
+// Returns the exit code. From `o`: --threads; --path both (the visualization-server path runs
+// too, and this column composites the tiles of its displays). `show`: --show monitors, shown
+// after every swap, or null.
+int run_column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
+               ColumnShow* show);
 
 }  // namespace l2

@@ -289,7 +289,7 @@ void MpiDviPath::fetch_answering(std::chrono::milliseconds grace) const {
 }
 
 std::optional<DisplayPictures> MpiDviPath::shown() const {
-  // Asked after a fault (and only then, since --show does not run over MPI): what the
+  // Asked after a fault (and only then: the coordinator shows nothing under --mpi): what the
   // columns still answering show now.
   if (!fetched_after_fault_ && !ended_) {
     fetched_after_fault_ = true;

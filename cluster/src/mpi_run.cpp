@@ -80,9 +80,9 @@ int exec_pipeserver(const RunOptions& o, int server) {
 }
 
 int run_column_rank(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
-                    int rank) {
+                    int rank, ColumnShow* show) {
   try {
-    return run_column(layout, map, column, o.threads, o.path == "both");
+    return run_column(layout, map, column, o, show);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map.role(rank).c_str(), rank, e.what());
     MpiSession::abort_all(1);
@@ -93,7 +93,9 @@ int run_column_rank(const TileLayout& layout, const RankMap& map, int column, co
 
 std::optional<std::string> mpi_options_error(const RunOptions& o) {
   if (o.path == "vizserver") return kOnlyDvi;
-  if (!o.show.empty()) return "--mpi: --show is not available over MPI";
+  if (o.show == "window")
+    return "--mpi: --show window is one machine's; --show monitors shows each column's displays "
+           "on its own machine's monitors";
   if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
   return std::nullopt;
 }
@@ -124,12 +126,30 @@ int run_wall_mpi(const RunOptions& o) {
   }
   if (auto error = rank_count_error(*map, launched->size)) return refuse(*error);
   if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
+  const auto column = map->column_of(launched->rank);
+  std::optional<ColumnShow> show;
+  if (column && !o.show.empty()) {
+    // Before MPI_Init: a column that cannot show fails alone, and mpirun ends the job.
+    try {
+      // Vsync paces a refresh-rate run like a real display; --refresh 0 asks for full speed.
+      show.emplace(layout->wall, map->displays_of_column[static_cast<std::size_t>(*column)],
+                   o.refresh_hz > 0, o.show_readback);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "l2wall: %s (rank %d): %s\n", map->role(launched->rank).c_str(),
+                   launched->rank, e.what());
+      return 1;
+    }
+  }
 
   MpiSession session;
-  if (const auto column = map->column_of(session.rank()))
-    return run_column_rank(*layout, *map, *column, o, session.rank());
-  const MpiBackends backends(*layout, *map, session, o);
-  const int code = run_wall(o, backends);
+  if (column)
+    return run_column_rank(*layout, *map, *column, o, session.rank(), show ? &*show : nullptr);
+  // The coordinator shows nothing: the columns show their displays (column_show.hpp).
+  RunOptions coordinator = o;
+  coordinator.show.clear();
+  coordinator.show_readback.clear();
+  const MpiBackends backends(*layout, *map, session, coordinator);
+  const int code = run_wall(coordinator, backends);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
   return 0;
 }
