@@ -80,8 +80,13 @@ fault() {
     { echo "FAIL: no line naming rank $rank:"; cat "$dir.err"; exit 1; }
   echo "  $line"
   [[ $(grep -c "^l2wall: " "$dir.err") -le 2 ]] || { echo "FAIL: more than one fault line"; exit 1; }
-  # mpirun -q: none of mpirun's own messages beside ours.
-  if grep -v "^l2wall: " "$dir.err"; then echo "FAIL: other lines on stderr"; exit 1; fi
+  # mpirun -q: none of mpirun's own messages beside ours. Open MPI's event library may still warn
+  # once about the dead rank's socket ("[warn] Epoll MOD(1) on fd 25 failed ... Bad file
+  # descriptor"), one run in a few: that line is the runtime's, which -q does not reach.
+  if grep -v -e "^l2wall: " -e "^\[warn\] Epoll [A-Z]*([0-9]*) on fd [0-9]* failed" "$dir.err"; then
+    echo "FAIL: other lines on stderr"
+    exit 1
+  fi
   # A rank killed: mpirun ends every rank within about a second, and the coordinator does not
   # always have the displays saved first; when it does, they must be right.
   if [[ $saved == maybe:* ]]; then

@@ -188,7 +188,7 @@ pid_t reporting_pipeserver(const WallRun& run, int server) {
 TEST_P(StoppedPipeserver, IsNamedNotTheHostsThatGaveUpWaitingForIt) {
   const std::string path = GetParam();
   WallRun run("stopped-" + path, {"--frames", "100000", "--refresh", "0", "--path", path,
-                                  "--ready-timeout", "300", "--stall-timeout", "60000"});
+                                  "--ready-timeout", "500", "--stall-timeout", "60000"});
   const pid_t victim = reporting_pipeserver(run, 2);
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGSTOP), 0);

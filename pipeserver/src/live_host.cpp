@@ -108,6 +108,14 @@ void take_layout(ControlChannel& control, const Wall& wall, Pipeserver& ps, int 
   ps.set_layout(plan_from_message(wall, m));
 }
 
+// The SYNC? retries (or, for SWAPPED, the timeouts) a host allows the swap of `frame`. The swap
+// of frame 0 also waits for every other host's start-up (GL context, first render), which on a
+// loaded machine can take seconds: that wait gets more, whichever path paces the host and
+// whether it is the run's last frame or not.
+int swap_retries(const LiveHostOptions& o, int frame) {
+  return frame == 0 ? std::max(o.ready_retries, 30) : o.ready_retries;
+}
+
 }  // namespace
 
 MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
@@ -150,10 +158,8 @@ int run_live_host(const LiveHostOptions& o) {
     if (o.control) send_times(*o.control, ps, k);
     const auto t1 = Clock::now();
     int retries = 0;
+    const int retries_allowed = swap_retries(o, k - 1);
     if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
-      // READY 0 also waits for every other host's start-up (GL context, first render), which
-      // on a loaded machine can take seconds: that first wait gets more retries.
-      const int retries_allowed = k == 1 ? std::max(o.ready_retries, 30) : o.ready_retries;
       const WaitResult r =
           channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, retries_allowed);
       retries = r.retries;
@@ -166,7 +172,7 @@ int run_live_host(const LiveHostOptions& o) {
     // both paths it is read too: a host that exits with SWAPPED unread resets the connection,
     // and the server could lose tiles it had not read yet.
     if (k > 0 && sender) {
-      sender->wait_swapped(static_cast<std::uint32_t>(k - 1), timeout * (o.ready_retries + 1));
+      sender->wait_swapped(static_cast<std::uint32_t>(k - 1), timeout * (retries_allowed + 1));
     }
     const double wait_ms = ms_since(t1);
     if (link) link->publish();
@@ -181,9 +187,10 @@ int run_live_host(const LiveHostOptions& o) {
         k, render_ms, wait_ms, retries, b.batches, b.tile_draws, b.overlap_factor()));
   }
   // Stay until the last frame is taken in and complete: the run reads our link until then.
+  const int last_retries = swap_retries(o, o.frames - 1);
   if (o.frames > 0 && channel) {
     const WaitResult r =
-        channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, o.ready_retries);
+        channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, last_retries);
     if (!r.ok()) {
       std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.server, o.frames - 1,
                    r.error.c_str());
@@ -191,7 +198,7 @@ int run_live_host(const LiveHostOptions& o) {
     }
   }
   if (o.frames > 0 && sender) {
-    sender->wait_swapped(static_cast<std::uint32_t>(o.frames - 1), timeout * (o.ready_retries + 1));
+    sender->wait_swapped(static_cast<std::uint32_t>(o.frames - 1), timeout * (last_retries + 1));
   }
   if (channel) {
     const BackChannelCounts& c = channel->counts();

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "base/child_process.hpp"
 #include "image/png_io.hpp"
@@ -242,6 +244,41 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   s.wait_swapped(0, 5000ms);
   EXPECT_EQ(exit_of(exe, 5000ms), 0);
   std::filesystem::remove_all(dir);
+}
+
+// A pipeserver paced by the compositing server alone (no back-channel) waits for the swap of
+// frame 0 as long as one paced by READY does: that swap also waits for the other pipeservers'
+// start-up. With 250 ms waits it gave up after 1 s ("timed out (waiting for SWAPPED for frame
+// 0)"), while the run's other hosts were still starting on a loaded machine. The other three
+// pipeservers of the default wall (four 640x480 displays) come 1.5 s late here; frame 0 is the
+// last frame of the first run and the first of two in the second.
+TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
+  for (const int frames : {1, 2}) {
+    const auto dir = fresh_dir(fmt::format("late-start-{}", frames));
+    ChildProcess exe =
+        spawn({VIZSERVER_EXE, "--displays", "640x480,640x480,640x480,640x480", "--servers", "4",
+               "--viz-port", "0", "--frames", std::to_string(frames), "--accept-timeout", "20000",
+               "--out", dir.string()});
+    const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
+    ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
+    const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
+    ChildProcess pipeserver({PIPESERVER_EXE, "--live", "--server", "0", "--frames",
+                             std::to_string(frames), "--viz", fmt::format("127.0.0.1:{}", port),
+                             "--ready-timeout", "250", "--report", (dir / "host-0.log").string()},
+                            {}, Capture{false, true});
+    std::this_thread::sleep_for(1500ms);
+    std::vector<TileSender> late;
+    for (int id = 1; id < 4; ++id) late.push_back(TileSender::connect("127.0.0.1", port, id, 4));
+    for (int k = 0; k < frames; ++k) {
+      const auto frame = static_cast<std::uint32_t>(k);
+      for (TileSender& s : late) s.finish_frame(frame, 0);
+      for (TileSender& s : late) s.wait_swapped(frame, 20000ms);
+    }
+    const Finished f = pipeserver.finish(20000ms);
+    EXPECT_EQ(f.status.shell_code(), 0) << frames << " frames: " << f.err;
+    EXPECT_EQ(exit_of(exe, 5000ms), 0) << frames << " frames";
+    std::filesystem::remove_all(dir);
+  }
 }
 
 TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
