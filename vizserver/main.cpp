@@ -16,11 +16,11 @@
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/size_text.hpp"
+#include "display_sender.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "swap_queue.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/display_sender.hpp"
-#include "vizserver/swap_queue.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "command_line/printable.hpp"
-#include "message_read.hpp"
+#include "vizserver/message_read.hpp"
 
 namespace l2::viz {
 namespace {
