@@ -81,7 +81,8 @@ void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Output
     }
     // The loop hands over its last frames before it ends: look again once it has ended.
     if (server.wait_finished(std::chrono::milliseconds(0)) && queue.empty()) {
-      if (auto failure = server.failure()) throw l2::viz::VizError(*failure);
+      if (const l2::Status failure = server.failure(); !failure.ok())
+        throw l2::viz::VizError(failure.reason());
       throw l2::viz::VizError(
           fmt::format("every pipeserver disconnected after {} of {} frames", written, frames));
     }

@@ -48,9 +48,9 @@ class MpiDviPath final : public DisplayPath {
 
   // A rank whose process is gone (MpiSession::lost_rank).
   bool down() override;
-  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
-  std::optional<std::string> failure(int shown, const std::string& kept) override {
-    return failure_as_cause(shown, kept);
+  std::optional<std::string> failure_as_cause(int shown, const std::string& showing) override;
+  std::optional<std::string> failure(int shown, const std::string& showing) override {
+    return failure_as_cause(shown, showing);
   }
 
   // Waits for every host's end (its report complete), then ends the columns.
@@ -70,7 +70,7 @@ class MpiDviPath final : public DisplayPath {
   // not answer within the stall timeout is named (the pipeservers it stopped taking frames
   // from wait on it).
   mpi_wire::Record column_answer(int c, std::int64_t index, HostSet& hosts, const RunWatch& watch);
-  std::string kept() const;
+  std::string displays_showing() const;
   std::uint64_t groups_of_displays(std::uint64_t displays) const;
 
   const TileLayout& layout_;
