@@ -14,6 +14,7 @@
 #include <string>
 
 #include "base/result.hpp"
+#include "image/text.hpp"
 
 namespace l2::png_codec {
 
@@ -67,13 +68,14 @@ struct Codec {
   Status (*read_rgb)(const char* path, RgbSink sink, Source* source);
   Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
+  Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v6";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v7";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

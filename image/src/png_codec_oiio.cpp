@@ -319,11 +319,11 @@ std::string open_failed(const char* path) {
 namespace {
 
 constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb, l2::png_codec::open_regions,
-                                      l2::png_codec::open_movie};
+                                      l2::png_codec::open_movie, l2::png_codec::render_text};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v6() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v7() {
   return &kCodec;
 }
