@@ -8,9 +8,11 @@
 #              [INCLUDES <dir>...] [PRIVATE_INCLUDES <dir>...] [LINKS <item>...])
 #   l2_program(<name> SOURCES <file>... [COMMAND_LINE <file>...] [PRIVATE_INCLUDES <dir>...]
 #              [LINKS <item>...])
-#   l2_test(<name> SOURCES <file>... [LINKS <item>...] [LABELS <label>...])
+#   l2_test(<name> SOURCES <file>... [PRIVATE_INCLUDES <dir>...] [LINKS <item>...]
+#           [LABELS <label>...])
 #
-# INCLUDES are the library's public headers (its users see them), PRIVATE_INCLUDES its own.
+# INCLUDES are the library's public headers (its users see them), PRIVATE_INCLUDES its own (a
+# test's: the private headers of the part it tests).
 # LINKS is target_link_libraries' list: PUBLIC, PRIVATE and INTERFACE keywords as there, and
 # items before any keyword are PRIVATE (INTERFACE for an INTERFACE library).
 #
@@ -154,8 +156,11 @@ endfunction()
 # library leave pending): two test files of one executable must not both define a helper of
 # the same name.
 function(l2_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LINKS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;PRIVATE_INCLUDES;LINKS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
+  if(ARG_PRIVATE_INCLUDES)
+    target_include_directories(${name} PRIVATE ${ARG_PRIVATE_INCLUDES})
+  endif()
   l2_warnings(${name})
   target_compile_options(${name} PRIVATE ${l2_test_code_flags})
   target_precompile_headers(${name} REUSE_FROM l2_test_pch)

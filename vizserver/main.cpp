@@ -16,11 +16,11 @@
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/size_text.hpp"
+#include "display_sender.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "swap_queue.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/display_sender.hpp"
-#include "vizserver/swap_queue.hpp"
 
 namespace {
 
@@ -81,7 +81,8 @@ void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Output
     }
     // The loop hands over its last frames before it ends: look again once it has ended.
     if (server.wait_finished(std::chrono::milliseconds(0)) && queue.empty()) {
-      if (auto failure = server.failure()) throw l2::viz::VizError(*failure);
+      if (const l2::Status failure = server.failure(); !failure.ok())
+        throw l2::viz::VizError(failure.reason());
       throw l2::viz::VizError(
           fmt::format("every pipeserver disconnected after {} of {} frames", written, frames));
     }

@@ -51,7 +51,7 @@ std::string MpiDviPath::lost_message(int rank) const {
   return fmt::format(
       "{} (rank {} on {}, pid {}) is gone (its connection to the coordinator closed: killed "
       "or crashed) while the displays wait for frame {}; {}",
-      map_.role(rank), rank, who.host, who.pid, shown_ + 1, kept());
+      map_.role(rank), rank, who.host, who.pid, shown_ + 1, displays_showing());
 }
 
 bool MpiDviPath::take_notices(HostSet& hosts) {
@@ -190,7 +190,8 @@ std::string MpiDviPath::column_failure(int c, std::int64_t index) const {
   return fmt::format(
       "{} (rank {} on {}, pid {}) did not answer refresh {} within {} ms (stopped or hung) "
       "while the displays wait for frame {}; {}",
-      map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1, kept());
+      map_.role(rank), rank, who.host, who.pid, index, stall_timeout_ms_, shown_ + 1,
+      displays_showing());
 }
 
 void MpiDviPath::note_swap() {
@@ -199,7 +200,7 @@ void MpiDviPath::note_swap() {
   if (lowest != INT_MAX) shown_ = std::min(lowest, frames_ - 1);
 }
 
-std::string MpiDviPath::kept() const {
+std::string MpiDviPath::displays_showing() const {
   const int shown = shown_;
   if (shown < 0) return "no frame reached the displays";
   return fmt::format("the displays keep frame {}", shown);

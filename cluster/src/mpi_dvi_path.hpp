@@ -48,9 +48,9 @@ class MpiDviPath final : public DisplayPath {
 
   // A rank whose process is gone (MpiSession::lost_rank).
   bool down() override;
-  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
-  std::optional<std::string> failure(int shown, const std::string& kept) override {
-    return failure_as_cause(shown, kept);
+  std::optional<std::string> failure_as_cause(int shown, const std::string& showing) override;
+  std::optional<std::string> failure(int shown, const std::string& showing) override {
+    return failure_as_cause(shown, showing);
   }
 
   // Waits for every host's end (its report complete), then ends the columns.
@@ -75,7 +75,7 @@ class MpiDviPath final : public DisplayPath {
   std::optional<mpi_wire::Record> column_answer(int c, HostSet& hosts);
   // The line naming column `c`, which failed refresh `index`.
   std::string column_failure(int c, std::int64_t index) const;
-  std::string kept() const;
+  std::string displays_showing() const;
   std::uint64_t groups_of_displays(std::uint64_t displays) const;
 
   const TileLayout& layout_;

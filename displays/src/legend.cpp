@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "displays/bitmap_font.hpp"
+#include "displays/label_text.hpp"
 
 namespace l2 {
 namespace {
@@ -17,7 +17,7 @@ int legend_scale(int width) {
 
 RgbImage with_legend(const RgbImage& picture, std::span<const LegendEntry> entries) {
   const int s = legend_scale(picture.width());
-  const int line = (kGlyphHeight + 3) * s, text_x = (kGlyphHeight + 5) * s;
+  const int line = (kTextHeight + 3) * s, text_x = (kTextHeight + 5) * s;
   int width = picture.width();
   for (const LegendEntry& e : entries) {
     width = std::max(width, text_x + text_width(e.text, s) + 2 * s);
@@ -29,7 +29,7 @@ RgbImage with_legend(const RgbImage& picture, std::span<const LegendEntry> entri
   }
   int y = picture.height() + 2 * s;
   for (const LegendEntry& e : entries) {
-    if (e.swatch) out.fill_rect(2 * s, y, kGlyphHeight * s, kGlyphHeight * s, e.colour);
+    if (e.swatch) out.fill_rect(2 * s, y, kTextHeight * s, kTextHeight * s, e.colour);
     draw_text(out, text_x, y, e.text, kText, s);
     y += line;
   }

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "displays/bitmap_font.hpp"
 #include "displays/colours.hpp"
+#include "displays/label_text.hpp"
 
 namespace l2 {
 
@@ -23,8 +23,8 @@ std::string overlay_line(const FrameInfo& info) {
 RgbImage render_overlay(const std::string& line, int width, int height) {
   RgbImage bar(std::max(1, width), std::max(1, height), kMullionColour);
   // Twice the font size when there is room: readable on a large wall window.
-  const int scale = height >= 2 * kGlyphHeight + 4 ? 2 : 1;
-  const int y = std::max(0, (height - kGlyphHeight * scale) / 2);
+  const int scale = height >= 2 * kTextHeight + 4 ? 2 : 1;
+  const int y = std::max(0, (height - kTextHeight * scale) / 2);
   draw_text(bar, 4, y, line, kOverlayTextColour, scale);
   return bar;
 }

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "displays/bitmap_font.hpp"
+#include "displays/label_text.hpp"
 
 namespace l2 {
 namespace {

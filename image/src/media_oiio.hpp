@@ -12,7 +12,8 @@ namespace l2::png_codec {
 // the file's content ("cannot read: a TIFF file: ...").
 std::string open_failed(const char* path);
 
-RegionReader* open_regions(const char* path, std::string* error);  // regions_oiio.cpp
-MovieDecoder* open_movie(const char* path, std::string* error);    // movie_ffmpeg.cpp
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
+Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp
+Result<TextMask> render_text(const char* text, int cap_height);        // text_oiio.cpp
 
 }  // namespace l2::png_codec

@@ -52,50 +52,49 @@ class FfmpegMovie final : public MovieDecoder {
   int width() const override { return codec_->width; }
   int height() const override { return codec_->height; }
 
-  std::string next_frame(std::uint8_t* rgb, bool* ended) override {
-    *ended = false;
-    if (!packet_ || !frame_) return "cannot decode: out of memory";
+  Result<bool> next_frame(std::uint8_t* rgb) override {
+    if (!packet_ || !frame_) return Failure{"cannot decode: out of memory"};
     for (;;) {
       const int received = avcodec_receive_frame(codec_.get(), frame_.get());
-      if (received == 0) return convert(rgb);
-      if (received == AVERROR_EOF) {
-        *ended = true;
-        return {};
+      if (received == 0) {
+        if (Status converted = convert(rgb); !converted.ok()) return Failure{converted.reason()};
+        return true;
       }
-      if (received != AVERROR(EAGAIN)) return "cannot decode frame: " + av_error(received);
-      if (const std::string why = feed(); !why.empty()) return why;
+      if (received == AVERROR_EOF) return false;
+      if (received != AVERROR(EAGAIN)) return Failure{"cannot decode frame: " + av_error(received)};
+      if (Status fed = feed(); !fed.ok()) return Failure{fed.reason()};
     }
   }
 
  private:
   // One packet of the video stream into the decoder, or the end of the file (draining it).
-  std::string feed() {
+  Status feed() {
     for (;;) {
       const int read = av_read_frame(format_.get(), packet_.get());
       if (read == AVERROR_EOF) {
         avcodec_send_packet(codec_.get(), nullptr);
         return {};
       }
-      if (read < 0) return "cannot read: " + av_error(read);
+      if (read < 0) return Failure{"cannot read: " + av_error(read)};
       const bool ours = packet_->stream_index == stream_;
       const int sent = ours ? avcodec_send_packet(codec_.get(), packet_.get()) : 0;
       av_packet_unref(packet_.get());
-      if (sent < 0) return "cannot decode: " + av_error(sent);
+      if (sent < 0) return Failure{"cannot decode: " + av_error(sent)};
       if (ours) return {};
     }
   }
 
-  std::string convert(std::uint8_t* rgb) {
+  Status convert(std::uint8_t* rgb) {
     const int w = codec_->width, h = codec_->height;
     if (frame_->width != w || frame_->height != h) {
-      return "cannot decode: a frame of " + std::to_string(frame_->width) + "x" +
-             std::to_string(frame_->height) + " in a " + std::to_string(w) + "x" +
-             std::to_string(h) + " movie";
+      return Failure{"cannot decode: a frame of " + std::to_string(frame_->width) + "x" +
+                     std::to_string(frame_->height) + " in a " + std::to_string(w) + "x" +
+                     std::to_string(h) + " movie"};
     }
     scale_.reset(sws_getCachedContext(scale_.release(), w, h,
                                       static_cast<AVPixelFormat>(frame_->format), w, h,
                                       AV_PIX_FMT_RGB24, SWS_POINT, nullptr, nullptr, nullptr));
-    if (!scale_) return "cannot convert its pixel format to RGB";
+    if (!scale_) return Failure{"cannot convert its pixel format to RGB"};
     std::uint8_t* planes[1] = {rgb};
     const int strides[1] = {3 * w};
     sws_scale(scale_.get(), frame_->data, frame_->linesize, 0, h, planes, strides);
@@ -111,44 +110,40 @@ class FfmpegMovie final : public MovieDecoder {
   std::unique_ptr<SwsContext, ScaleFreer> scale_;
 };
 
-MovieDecoder* open_failed_movie(std::string* error, std::string why) {
-  *error = std::move(why);
-  return nullptr;
-}
-
 }  // namespace
 
-MovieDecoder* open_movie(const char* path, std::string* error) try {
+Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path) try {
   av_log_set_level(AV_LOG_QUIET);  // reasons come back in one line; FFmpeg prints nothing
   AVFormatContext* opened = nullptr;
   if (const int r = avformat_open_input(&opened, path, nullptr, nullptr); r < 0) {
     // A container that ends before any stream's first packet: a movie of no frames.
-    if (r == AVERROR_EOF) return open_failed_movie(error, "holds no video frames");
-    return open_failed_movie(error, "cannot read as a movie: " + av_error(r));
+    if (r == AVERROR_EOF) return Failure{"holds no video frames"};
+    return Failure{"cannot read as a movie: " + av_error(r)};
   }
   std::unique_ptr<AVFormatContext, FormatCloser> format(opened);
   if (const int r = avformat_find_stream_info(format.get(), nullptr); r < 0) {
-    if (r == AVERROR_EOF) return open_failed_movie(error, "holds no video frames");
-    return open_failed_movie(error, "cannot read as a movie: " + av_error(r));
+    if (r == AVERROR_EOF) return Failure{"holds no video frames"};
+    return Failure{"cannot read as a movie: " + av_error(r)};
   }
   const AVCodec* decoder = nullptr;
   const int stream = av_find_best_stream(format.get(), AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
-  if (stream == AVERROR_STREAM_NOT_FOUND) return open_failed_movie(error, "holds no video stream");
+  if (stream == AVERROR_STREAM_NOT_FOUND) return Failure{"holds no video stream"};
   if (stream < 0 || !decoder) {
-    return open_failed_movie(error, "no decoder for its video stream: " + av_error(stream));
+    return Failure{"no decoder for its video stream: " + av_error(stream)};
   }
   std::unique_ptr<AVCodecContext, CodecFreer> codec(avcodec_alloc_context3(decoder));
-  if (!codec) return open_failed_movie(error, "cannot decode: out of memory");
+  if (!codec) return Failure{"cannot decode: out of memory"};
   avcodec_parameters_to_context(codec.get(), format->streams[stream]->codecpar);
   if (const int r = avcodec_open2(codec.get(), decoder, nullptr); r < 0) {
-    return open_failed_movie(error, "cannot open its video decoder: " + av_error(r));
+    return Failure{"cannot open its video decoder: " + av_error(r)};
   }
   if (codec->width <= 0 || codec->height <= 0) {
-    return open_failed_movie(error, "its video stream has no frame size");
+    return Failure{"its video stream has no frame size"};
   }
-  return new FfmpegMovie(std::move(format), std::move(codec), stream);
+  return std::unique_ptr<MovieDecoder>(
+      new FfmpegMovie(std::move(format), std::move(codec), stream));
 } catch (const std::exception& e) {
-  return open_failed_movie(error, std::string("cannot read as a movie: ") + e.what());
+  return Failure{std::string("cannot read as a movie: ") + e.what()};
 }
 
 }  // namespace l2::png_codec

@@ -24,21 +24,20 @@ MovieFile::MovieFile(const std::filesystem::path& path) : path_(path) {
 MovieFile::~MovieFile() = default;
 
 void MovieFile::reopen() {
-  std::string error;
   decoder_.reset(nullptr);
-  decoder_.reset(png_codec::codec(path_).open_movie(path_.c_str(), &error));
-  if (!decoder_) throw std::runtime_error(path_.string() + ": " + error);
+  auto opened = png_codec::codec(path_).open_movie(path_.c_str());
+  if (!opened.ok()) throw std::runtime_error(path_.string() + ": " + opened.reason());
+  decoder_ = std::move(opened).value();
   decoded_ = -1;
 }
 
 bool MovieFile::decode_next() {
-  bool ended = false;
-  const std::string failed = decoder_->next_frame(frame_.data(), &ended);
-  if (!failed.empty()) {
+  const Result<bool> decoded = decoder_->next_frame(frame_.data());
+  if (!decoded.ok()) {
     throw std::runtime_error(path_.string() + ": frame " + std::to_string(decoded_ + 1) + ": " +
-                             failed);
+                             decoded.reason());
   }
-  if (ended) return false;
+  if (!*decoded) return false;
   ++decoded_;
   return true;
 }

@@ -8,9 +8,9 @@
 namespace l2 {
 
 PictureRegions::PictureRegions(const std::filesystem::path& path) : path_(path) {
-  std::string error;
-  reader_.reset(png_codec::codec(path).open_regions(path.c_str(), &error));
-  if (!reader_) throw std::runtime_error(path.string() + ": " + error);
+  auto opened = png_codec::codec(path).open_regions(path.c_str());
+  if (!opened.ok()) throw std::runtime_error(path.string() + ": " + opened.reason());
+  reader_ = std::move(opened).value();
   width_ = reader_->width();
   height_ = reader_->height();
 }
@@ -23,8 +23,8 @@ void PictureRegions::read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) 
                             std::to_string(x_begin) + ".." + std::to_string(x_end) +
                             " lie outside the picture");
   }
-  const std::string failed = reader_->read_row(y, x_begin, x_end, rgb);
-  if (!failed.empty()) throw std::runtime_error(path_.string() + ": " + failed);
+  const Status read = reader_->read_row(y, x_begin, x_end, rgb);
+  if (!read.ok()) throw std::runtime_error(path_.string() + ": " + read.reason());
 }
 
 }  // namespace l2

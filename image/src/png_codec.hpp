@@ -10,7 +10,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
+
+#include "base/result.hpp"
+#include "image/text.hpp"
 
 namespace l2::png_codec {
 
@@ -42,9 +46,8 @@ class RegionReader {
   virtual ~RegionReader() = default;
   virtual int width() const = 0;
   virtual int height() const = 0;
-  // Columns [x_begin, x_end) of row y (all within the picture) as 8-bit RGB into `rgb`; an
-  // empty string on success, otherwise the reason.
-  virtual std::string read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
+  // Columns [x_begin, x_end) of row y (all within the picture) as 8-bit RGB into `rgb`.
+  virtual Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
 };
 
 // A movie's video stream decoded frame by frame into 8-bit RGB (image/movie_file.hpp).
@@ -53,25 +56,26 @@ class MovieDecoder {
   virtual ~MovieDecoder() = default;
   virtual int width() const = 0;
   virtual int height() const = 0;
-  // The next frame into `rgb` (width x height x 3 bytes), or *ended = true (nothing written) when
-  // the stream has no more; an empty string on success, otherwise the reason.
-  virtual std::string next_frame(std::uint8_t* rgb, bool* ended) = 0;
+  // The next frame into `rgb` (width x height x 3 bytes): true, or false (nothing written) when
+  // the stream has no more.
+  virtual Result<bool> next_frame(std::uint8_t* rgb) = 0;
 };
 
-// Each returns an empty string on success, otherwise the reason (without the file's name); the
-// open_ functions return nullptr with the reason in *error.
+// A failure's reason does not name the file. read_rgb() is ok, reading nothing, when the sink's
+// `accept` refused the size (the caller knows why).
 struct Codec {
-  std::string (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
-  std::string (*read_rgb)(const char* path, RgbSink sink, Source* source);
-  RegionReader* (*open_regions)(const char* path, std::string* error);
-  MovieDecoder* (*open_movie)(const char* path, std::string* error);
+  Status (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
+  Status (*read_rgb)(const char* path, RgbSink sink, Source* source);
+  Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
+  Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
+  Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v5";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v7";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

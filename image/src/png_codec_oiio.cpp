@@ -24,17 +24,21 @@
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
+using l2::Failure;
+using l2::Status;
 using l2::png_codec::open_failed;
 using l2::png_codec::RgbSink;
 using l2::png_codec::Source;
 
-std::string write_rgb(const char* path, int width, int height, const std::uint8_t* rgb) try {
+l2::Status write_rgb(const char* path, int width, int height, const std::uint8_t* rgb) try {
   auto out = OIIO::ImageOutput::create(path);
   if (!out) {
     OIIO::geterror();  // cleared: our wording replaces OpenImageIO's
     const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext.empty()) return "cannot write: no extension to choose a picture format by (give .png)";
-    return "cannot write: no picture format is known for '" + ext + "' (give .png)";
+    if (ext.empty()) {
+      return Failure{"cannot write: no extension to choose a picture format by (give .png)"};
+    }
+    return Failure{"cannot write: no picture format is known for '" + ext + "' (give .png)"};
   }
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   // libpng's defaults (every row filter tried, zlib level 6) took 108-117 ms for a 1984x768
@@ -44,11 +48,11 @@ std::string write_rgb(const char* path, int width, int height, const std::uint8_
   spec.attribute("png:filter", PNG_FILTER_UP);
   spec.attribute("png:compressionLevel", 1);
   if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb) || !out->close()) {
-    return "cannot write: " + out->geterror();
+    return Failure{"cannot write: " + out->geterror()};
   }
   return {};
 } catch (const std::exception& e) {
-  return std::string("cannot write: ") + e.what();
+  return Failure{std::string("cannot write: ") + e.what()};
 }
 
 // --- PNG files, read with libpng itself ------------------------------------------------------
@@ -144,11 +148,16 @@ std::optional<std::string> refusal(const RgbSink& sink, long width, long height)
   return std::nullopt;
 }
 
-// Empty on success, the reason otherwise.
-std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
+// refusal()'s reason as a Status: a size the caller refused is no failure of ours.
+Status refused(const std::string& why) {
+  if (why.empty()) return {};
+  return Failure{why};
+}
+
+Status read_png_file(PngRead& read, RgbSink sink, Source& source) {
   read.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &read, png_failed, png_warned);
   if (read.png) read.info = png_create_info_struct(read.png);
-  if (!read.png || !read.info) return "cannot read: out of memory";
+  if (!read.png || !read.info) return Failure{"cannot read: out of memory"};
   struct Sizing {
     RgbSink sink;
     std::string refused;
@@ -170,10 +179,10 @@ std::string read_png_file(PngRead& read, RgbSink sink, Source& source) {
     source = {"png", (read.colour_type & PNG_COLOR_MASK_COLOR) ? 3 : 1, false};
   }
   if (!read_all) {
-    if (read.ended_early) return "cannot read: the PNG file ends early (truncated)";
-    return std::string("cannot read: a damaged PNG (") + read.error + ")";
+    if (read.ended_early) return Failure{"cannot read: the PNG file ends early (truncated)"};
+    return Failure{std::string("cannot read: a damaged PNG (") + read.error + ")"};
   }
-  return sizing.refused;
+  return refused(sizing.refused);
 }
 
 // --- other formats, through OpenImageIO ---------------------------------------------------
@@ -230,57 +239,60 @@ std::string format_by_signature(const char* path) {
 // An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
 // stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
 // in a captured RGBA frame). Grey is spread over R, G and B.
-std::string read_rgb(const char* path, RgbSink sink, Source* source_or_null) try {
+Status read_rgb(const char* path, RgbSink sink, Source* source_or_null) try {
   Source ignored;
   Source& source = source_or_null ? *source_or_null : ignored;
   {
     PngRead read;
     read.file = std::fopen(path, "rb");
     // OpenImageIO said only "Could not open file" (and of a folder, "Not a PNG file").
-    if (!read.file) return std::string("cannot read: ") + std::strerror(errno);
+    if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
     struct stat file_status {};
     if (::fstat(::fileno(read.file), &file_status) == 0 && S_ISDIR(file_status.st_mode)) {
-      return "cannot read: a folder, not a file";
+      return Failure{"cannot read: a folder, not a file"};
     }
     if (is_png(read.file)) return read_png_file(read, sink, source);
     if (const auto screen = gif_screen(read.file)) {
-      if (const auto why = refusal(sink, screen->first, screen->second)) return *why;
+      if (const auto why = refusal(sink, screen->first, screen->second)) return refused(*why);
     }
   }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) return open_failed(path);
+  if (!in) return Failure{open_failed(path)};
   const OIIO::ImageSpec& spec = in->spec();
   const std::string compression = spec.get_string_attribute("compression");
   source = {in->format_name(), spec.nchannels >= 3 ? 3 : 1,
             std::string(in->format_name()) == "jpeg" || compression.rfind("jpeg", 0) == 0};
-  if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) return "not an image with pixels";
+  if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) {
+    return Failure{"not an image with pixels"};
+  }
   // OpenImageIO picks the reader by content, not by name: a volume or deep image (a DDS volume
   // texture named .png) reads width x height x depth pixels, more than the picture holds.
   if (spec.depth != 1 || spec.deep) {
-    return spec.deep ? std::string("a deep image, not a picture")
-                     : "a volume (depth " + std::to_string(spec.depth) + "), not a picture";
+    return Failure{spec.deep
+                       ? std::string("a deep image, not a picture")
+                       : "a volume (depth " + std::to_string(spec.depth) + "), not a picture"};
   }
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
-  if (const auto why = refusal(sink, spec.width, spec.height)) return *why;
+  if (const auto why = refusal(sink, spec.width, spec.height)) return refused(*why);
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
-  if (!dst) return "cannot read: out of memory";
+  if (!dst) return Failure{"cannot read: out of memory"};
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
-      return read_failed(in->format_name(), in->geterror());
+      return Failure{read_failed(in->format_name(), in->geterror())};
     }
     return {};
   }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
   std::vector<std::uint8_t> grey(count);
   if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
-    return read_failed(in->format_name(), in->geterror());
+    return Failure{read_failed(in->format_name(), in->geterror())};
   }
   for (std::size_t i = 0; i < count; ++i) dst[i * 3] = dst[i * 3 + 1] = dst[i * 3 + 2] = grey[i];
   return {};
 } catch (const std::exception& e) {
-  return std::string("cannot read: ") + e.what();
+  return Failure{std::string("cannot read: ") + e.what()};
 }
 
 }  // namespace
@@ -307,11 +319,11 @@ std::string open_failed(const char* path) {
 namespace {
 
 constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb, l2::png_codec::open_regions,
-                                      l2::png_codec::open_movie};
+                                      l2::png_codec::open_movie, l2::png_codec::render_text};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v5() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v7() {
   return &kCodec;
 }

@@ -37,8 +37,8 @@ const png_codec::Codec& png_codec::codec(const std::filesystem::path& picture) {
 
 namespace {
 
-void check(const std::filesystem::path& path, const std::string& error) {
-  if (!error.empty()) throw std::runtime_error(path.string() + ": " + error);
+void check(const std::filesystem::path& path, const Status& status) {
+  if (!status.ok()) throw std::runtime_error(path.string() + ": " + status.reason());
 }
 
 }  // namespace
@@ -48,11 +48,11 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
   std::error_code error;
   const bool existed = std::filesystem::exists(path, error);
   check_writable(path);  // OpenImageIO says only "Could not open file"
-  const std::string failed =
+  const Status written =
       png_codec::codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data());
   // check_writable() made the file: a write that failed leaves no empty file behind.
-  if (!failed.empty() && !existed) std::filesystem::remove(path, error);
-  check(path, failed);
+  if (!written.ok() && !existed) std::filesystem::remove(path, error);
+  check(path, written);
 }
 
 RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
@@ -86,9 +86,9 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                                 },
                                 kMaxPictureSide};
   png_codec::Source found;
-  const std::string failed = png_codec::codec(path).read_rgb(path.c_str(), sink, &found);
+  const Status read = png_codec::codec(path).read_rgb(path.c_str(), sink, &found);
   if (target.refused) std::rethrow_exception(target.refused);
-  check(path, failed);
+  check(path, read);
   if (source) *source = {found.format, found.colour_channels, found.lossy};
   return std::move(target.image);
 }

@@ -43,12 +43,13 @@ class CacheRegions final : public RegionReader {
   int width() const override { return width_; }
   int height() const override { return height_; }
 
-  std::string read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) override {
+  Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) override {
     // Grey is read into the start of the row and spread over R, G and B from the end back.
     if (!cache_->get_pixels(file_, 0, 0, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
                             OIIO::TypeDesc::UINT8, rgb)) {
       const std::string why = first_line(cache_->geterror());
-      return "cannot read row " + std::to_string(y) + ": " + (why.empty() ? "damaged" : why);
+      return Failure{"cannot read row " + std::to_string(y) + ": " +
+                     (why.empty() ? "damaged" : why)};
     }
     if (channels_ == 1) {
       for (int i = x_end - x_begin - 1; i >= 0; --i) {
@@ -66,22 +67,19 @@ class CacheRegions final : public RegionReader {
 
 }  // namespace
 
-RegionReader* open_regions(const char* path, std::string* error) try {
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
   {
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
-      *error = open_failed(path);
-      return nullptr;
+      return Failure{open_failed(path)};
     }
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.deep || spec.depth > 1) {
-      *error = "cannot read: a deep or volume image, not a picture";
-      return nullptr;
+      return Failure{"cannot read: a deep or volume image, not a picture"};
     }
     if (spec.width <= 0 || spec.height <= 0) {
-      *error = "cannot read: the picture has no pixels";
-      return nullptr;
+      return Failure{"cannot read: the picture has no pixels"};
     }
   }
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
@@ -90,13 +88,11 @@ RegionReader* open_regions(const char* path, std::string* error) try {
   const OIIO::ustring file(path);
   OIIO::ImageSpec spec;
   if (!cache->get_imagespec(file, spec)) {
-    *error = "cannot read: " + first_line(cache->geterror());
-    return nullptr;
+    return Failure{"cannot read: " + first_line(cache->geterror())};
   }
-  return new CacheRegions(std::move(cache), file, spec);
+  return std::unique_ptr<RegionReader>(new CacheRegions(std::move(cache), file, spec));
 } catch (const std::exception& e) {
-  *error = std::string("cannot read: ") + e.what();
-  return nullptr;
+  return Failure{std::string("cannot read: ") + e.what()};
 }
 
 }  // namespace l2::png_codec

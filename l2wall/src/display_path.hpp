@@ -74,18 +74,19 @@ class DisplayPath {
   virtual bool down() { return false; }
   // Waits up to `grace` for a path that went down to be reaped, so a fault names how it ended.
   virtual void settle(std::chrono::milliseconds /*grace*/) {}
-  // The path's failure when it is the cause (it went down without saying why); `kept`: what
+  // The path's failure when it is the cause (it went down without saying why); `showing`: what
   // the displays show.
-  virtual std::optional<std::string> failure_as_cause(int /*shown*/, const std::string& /*kept*/) {
+  virtual std::optional<std::string> failure_as_cause(int /*shown*/,
+                                                      const std::string& /*showing*/) {
     return std::nullopt;
   }
   // The path's failure as the last explanation left.
-  virtual std::optional<std::string> failure(int /*shown*/, const std::string& /*kept*/) {
+  virtual std::optional<std::string> failure(int /*shown*/, const std::string& /*showing*/) {
     return std::nullopt;
   }
   // A host that gave up on this path while it still runs: the path hangs, named so.
   virtual std::optional<std::string> hang_behind(const Host& /*h*/, int /*shown*/,
-                                                 const std::string& /*kept*/) {
+                                                 const std::string& /*showing*/) {
     return std::nullopt;
   }
   // How messages name the path's own process ("compositing server (vizserver pid 4242)"), or

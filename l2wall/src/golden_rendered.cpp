@@ -102,12 +102,12 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
   rendering.finish(run.timeout);
 
   EntryDisplays out;
-  const auto kept = run.work / "live" / fmt::format("frame-{}", entry.frame);
+  const auto saved = run.work / "live" / fmt::format("frame-{}", entry.frame);
   for (const Display& d : layout.wall.displays) {
     const std::string name = fmt::format("display-{}", d.id);
     out.ids.push_back(d.id);
-    out.emulator.push_back(read_png(kept / (name + ".png")));
-    if (entry.vizserver) out.vizserver.push_back(read_png(kept / (name + "-vizserver.png")));
+    out.emulator.push_back(read_png(saved / (name + ".png")));
+    if (entry.vizserver) out.vizserver.push_back(read_png(saved / (name + "-vizserver.png")));
     out.reference.push_back(read_png(reference / (name + ".png")));
   }
   stamp_references(layout, entry.frame, out.reference);

@@ -1,7 +1,8 @@
 // The live run's orchestration: which display paths run for --path, the loop of the lead path's
-// swaps, what happens on each swap (latency, compare, keep), and naming the cause when a process
-// fails. The parts: host_set (pipeservers), the display paths behind display_path.hpp (dvi_path:
-// the emulated Lightning-2; viz_path: the compositing server process), run_pictures, run_report.
+// swaps, what happens on each swap (latency, compare, saved frames), and naming the cause when a
+// process fails. The parts: host_set (pipeservers), the display paths behind display_path.hpp
+// (dvi_path: the emulated Lightning-2; viz_path: the compositing server process), run_pictures,
+// run_report.
 #include "live_run.hpp"
 
 #include <fmt/format.h>
@@ -45,7 +46,7 @@ class LiveRun {
   LiveRun(const RunOptions& o, const RunBackends& backends)
       : o_(o),
         backends_(backends),
-        keep_(parse_keep(o.keep)),
+        saved_(parse_saved_frames(o.keep)),
         wall_(o.wall.empty() ? default_wall() : load_wall(o.wall)),
         layout_(plan_layout(wall_)),
         records_(static_cast<std::size_t>(o.frames)) {}
@@ -219,7 +220,7 @@ class LiveRun {
         r.in_time = now;
       }
       take_from_other_paths(shown_);
-      if (keep_.keeps(shown_, o_.frames)) keep_frame(shown_);
+      if (saved_.saves(shown_, o_.frames)) save_frame(shown_);
       if (shown_ == o_.noise_after) {
         for (auto& p : paths_) totals_.noise_bytes += p->inject_noise(hosts_);
       }
@@ -257,7 +258,7 @@ class LiveRun {
     }
   }
 
-  void keep_frame(int frame) {
+  void save_frame(int frame) {
     const Timed timed(writing_ms_);
     const auto dir = std::filesystem::path(o_.out) / fmt::format("frame-{}", frame);
     // A picture that cannot be written stops the run: the error also says what OUT holds.
@@ -281,7 +282,7 @@ class LiveRun {
   // RunFault naming the cause.
   void check_processes() {
     if (stopped_) return;  // the processes are ending by the signal; the run is over
-    check_stop_signal(shown_, displays_kept());
+    check_stop_signal(shown_, displays_showing());
     Host* ended = hosts_.poll_ended();
     const bool path_down =
         std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
@@ -296,9 +297,9 @@ class LiveRun {
   std::string blame() {
     for (auto& p : paths_) p->settle(milliseconds(300));
     if (Host* killed = hosts_.killed_by_signal())
-      return hosts_.describe_end(*killed, displays_kept());
+      return hosts_.describe_end(*killed, displays_showing());
     for (auto& p : paths_) {
-      if (auto why = p->failure_as_cause(shown_, displays_kept())) return *why;
+      if (auto why = p->failure_as_cause(shown_, displays_showing())) return *why;
     }
     if (Host* ended = hosts_.poll_ended()) {
       // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
@@ -309,16 +310,16 @@ class LiveRun {
               "pipeserver {} (pid {}) stopped answering{}: it did not deliver frame {}, and "
               "pipeserver {} gave up {} ({}); {}",
               hung->server, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
-              ended->server, waiting_for(*ended), ended->exit->describe(), displays_kept());
+              ended->server, waiting_for(*ended), ended->exit->describe(), displays_showing());
         }
       }
       for (auto& p : paths_) {
-        if (auto why = p->hang_behind(*ended, shown_, displays_kept())) return *why;
+        if (auto why = p->hang_behind(*ended, shown_, displays_showing())) return *why;
       }
-      return hosts_.describe_end(*ended, displays_kept());
+      return hosts_.describe_end(*ended, displays_showing());
     }
     for (auto& p : paths_) {
-      if (auto why = p->failure(shown_, displays_kept())) return *why;
+      if (auto why = p->failure(shown_, displays_showing())) return *why;
     }
     return "a process of the run ended";
   }
@@ -365,19 +366,19 @@ class LiveRun {
       culprits = "the " + server;
     throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
                                limit_ms, culprits.empty() ? "no host" : culprits, shown_, note,
-                               displays_kept()));
+                               displays_showing()));
   }
 
   // What the displays show now, for a fault message. With both paths they can differ by a
   // frame: the emulator swapped frame K while the run waited for the compositing server's K.
-  std::string displays_kept() const {
+  std::string displays_showing() const {
     if (paths_.empty()) return "no frame reached the displays";
-    const int kept = paths_.front()->frame_shown();
+    const int frame = paths_.front()->frame_shown();
     const bool same = std::all_of(paths_.begin(), paths_.end(),
-                                  [&](const auto& p) { return p->frame_shown() == kept; });
+                                  [&](const auto& p) { return p->frame_shown() == frame; });
     if (same) {
-      if (kept < 0) return "no frame reached the displays";  // not "frame -1"
-      return fmt::format("the displays keep frame {}", kept);
+      if (frame < 0) return "no frame reached the displays";  // not "frame -1"
+      return fmt::format("the displays keep frame {}", frame);
     }
     std::string each;
     for (const auto& p : paths_)
@@ -401,12 +402,12 @@ class LiveRun {
   }
 
   // q / Esc: the frames shown so far are the run, as if --frames had said so. The hosts, still
-  // rendering the rest, are stopped; --keep last keeps this frame.
+  // rendering the rest, are stopped; --keep last saves this frame.
   void end_at_quit() {
-    const bool kept = keep_.keeps(shown_ - 1, o_.frames);
+    const bool saved = saved_.saves(shown_ - 1, o_.frames);
     o_.frames = shown_;
     records_.resize(static_cast<std::size_t>(shown_));
-    if (!kept && keep_.keeps(shown_ - 1, o_.frames)) keep_frame(shown_ - 1);
+    if (!saved && saved_.saves(shown_ - 1, o_.frames)) save_frame(shown_ - 1);
     shut_down();
   }
 
@@ -433,7 +434,7 @@ class LiveRun {
 
   RunOptions o_;
   const RunBackends& backends_;
-  KeepSet keep_;
+  SavedFrames saved_;
   Wall wall_;
   TileLayout layout_;
   std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
@@ -451,7 +452,7 @@ class LiveRun {
   int shown_ = 0;  // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
   int stopped_ = 0;        // the stop signal that ended the frames, or 0
-  double writing_ms_ = 0;  // spent writing kept pictures during the run
+  double writing_ms_ = 0;  // spent writing saved pictures during the run
   double paused_ms_ = 0;   // spent paused by the --show keys
   RunClock::time_point last_swap_{};
 };
@@ -503,9 +504,9 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
   // There is no compositing server on the DVI path: an address for it would go unused.
   if (o.path == "dvi" && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
     return "--viz-host and --viz-port need --path vizserver or both";
-  KeepSet keep;
+  SavedFrames saved;
   try {
-    keep = parse_keep(o.keep);
+    saved = parse_saved_frames(o.keep);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -516,8 +517,8 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
     return fmt::format("{}: frame {} is past the last frame (--frames {} renders 0..{})", option,
                        frame, o.frames, o.frames - 1);
   };
-  if (!keep.frames.empty()) {
-    if (auto error = past_the_last("--keep", *keep.frames.rbegin())) return error;
+  if (!saved.frames.empty()) {
+    if (auto error = past_the_last("--keep", *saved.frames.rbegin())) return error;
   }
   for (const auto& [option, frame] : {std::pair{"--inject-noise", o.noise_after},
                                       std::pair{"--inject-mismatch", o.inject_mismatch},

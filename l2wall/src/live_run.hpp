@@ -1,7 +1,7 @@
 // `l2wall run`: the live run on one machine. One pipeserver process per input renders into its
 // DVI link (shared memory) and waits for READY on its own pty back-channel; this process is the
 // Lightning-2: it takes in every link at the refresh rate, routes, swaps, sends READY, writes
-// the displays it was asked to keep and a per-frame report, and proves the one-frame latency
+// the displays it was asked to save and a per-frame report, and proves the one-frame latency
 // from frame numbers stamped into the pixels. With --path vizserver or both, the compositing
 // server runs as its own process (`vizserver`): the pipeservers send it their tiles over TCP
 // and it streams the composed displays back to this process (docs/vizserver-protocol.md).
@@ -42,17 +42,18 @@ struct RunOptions {
   int drop_ready = -1;       // do not send READY for this frame to host 0 (it asks SYNC?)
 };
 
-// Parses --keep; throws std::invalid_argument naming the bad item.
-struct KeepSet {
+// The frames whose displays are saved (--keep). Parses --keep; throws std::invalid_argument
+// naming the bad item.
+struct SavedFrames {
   bool every = false, last = false;
   std::set<int> frames;
-  bool keeps(int frame, int frame_count) const {
+  bool saves(int frame, int frame_count) const {
     return every || (last && frame == frame_count - 1) || frames.count(frame) > 0;
   }
 };
-KeepSet parse_keep(const std::string& text);
+SavedFrames parse_saved_frames(const std::string& text);
 
-// Why these options cannot make a run ("--compare needs --path both", a bad --keep, a kept
+// Why these options cannot make a run ("--compare needs --path both", a bad --keep, a saved
 // frame past the last one...), or nullopt. The command line checks it while parsing, so that
 // such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
 std::optional<std::string> run_options_error(const RunOptions& options);

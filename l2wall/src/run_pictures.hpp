@@ -1,4 +1,4 @@
-// The pictures a live run writes: a frame's displays (kept frames, the displays after a fault)
+// The pictures a live run writes: a frame's displays (saved frames, the displays after a fault)
 // and, when the two paths disagree, both pictures of the display and where they differ.
 #pragma once
 

@@ -107,8 +107,8 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
     min_latency = std::min(min_latency, latency_of(r));
     max_latency = std::max(max_latency, latency_of(r));
   }
-  // Up to the last swap: writing the kept PNGs afterwards is not part of the frame rate, and
-  // neither are --show pauses (the hosts wait). Pictures kept during the run are: the hosts
+  // Up to the last swap: writing the saved PNGs afterwards is not part of the frame rate, and
+  // neither are --show pauses (the hosts wait). Pictures saved during the run are: the hosts
   // render the next frame meanwhile, so taking that time out would count their work as free.
   const double seconds =
       records.empty()

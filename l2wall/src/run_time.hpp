@@ -1,5 +1,5 @@
 // Time in the live run: one clock, milliseconds between two points, and the time spent writing
-// kept pictures (PNG writing is not part of the frame rate, so it is measured and taken out).
+// saved pictures (PNG writing is not part of the frame rate, so it is measured and taken out).
 #pragma once
 
 #include <chrono>

@@ -36,12 +36,12 @@ class VizPath final : public DisplayPath {
 
   bool down() override { return side_->down(); }
   void settle(std::chrono::milliseconds grace) override { side_->settle(grace); }
-  std::optional<std::string> failure_as_cause(int shown, const std::string& kept) override;
-  std::optional<std::string> failure(int shown, const std::string& kept) override {
-    return side_->describe_down(shown, kept);
+  std::optional<std::string> failure_as_cause(int shown, const std::string& showing) override;
+  std::optional<std::string> failure(int shown, const std::string& showing) override {
+    return side_->describe_down(shown, showing);
   }
   std::optional<std::string> hang_behind(const Host& h, int shown,
-                                         const std::string& kept) override;
+                                         const std::string& showing) override;
   std::string process_name() const override { return side_->name(); }
 
   void finish() override;

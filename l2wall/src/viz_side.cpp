@@ -13,7 +13,7 @@ namespace {
 using std::chrono::milliseconds;
 
 // Swapped frames the stream reader holds for us; the server waits (and so do the pipeservers)
-// when we fall further behind, e.g. while writing kept pictures.
+// when we fall further behind, e.g. while writing saved pictures.
 constexpr std::size_t kHeldFrames = 4;
 
 std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream_port) {
@@ -107,7 +107,7 @@ bool VizSide::down() {
 
 void VizSide::settle(milliseconds grace) {
   // Its stream ended: the process is gone or going, give the kernel a moment to say how.
-  const bool going = stream_error_ || (watcher_ && watcher_->ended());
+  const bool going = stream_error_ || (watcher_ && !watcher_->ended().ok());
   const auto deadline = RunClock::now() + (going ? grace : grace / 3);
   while (!exit_ && process_ && RunClock::now() < deadline) {
     exit_ = process_->poll();
@@ -123,7 +123,7 @@ bool VizSide::said_why() const {
 std::string VizSide::describe_down(int shown, const std::string& on_displays) const {
   const std::string who = name();
   if (said_why()) {
-    return fmt::format("{} failed at frame {}: {}; {}", who, shown, *watcher_->ended(),
+    return fmt::format("{} failed at frame {}: {}; {}", who, shown, watcher_->ended().reason(),
                        on_displays);
   }
   if (exit_ && !exit_->ok()) {

@@ -14,7 +14,7 @@ namespace l2 {
 namespace router_detail {
 namespace {
 
-// Kept headers ahead whose lines headers_hold() asks for while it reads one.
+// Headers of the last parse, ahead, whose lines headers_hold() asks for while it reads one.
 constexpr int kCheckAhead = 8;
 
 }  // namespace

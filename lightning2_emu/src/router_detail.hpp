@@ -103,8 +103,8 @@ class alignas(64) InputScan {
   void parse(const InputFrame& frame, const std::vector<Target>& targets);
   // Predicts `frame` from the last parse; false, changing nothing, when it must be parsed.
   bool predict(const InputFrame& frame);
-  // Whether a predicted frame's headers hold that write() does not check in the copy: the kept
-  // ones always, the runs' too when `runs` (not copied, or not checked while copied).
+  // Whether a predicted frame's headers hold that write() does not check in the copy: the last
+  // parse's ones always, the runs' too when `runs` (not copied, or not checked while copied).
   bool headers_hold(bool runs) const;
   // Every check held: the prediction is the frame's parse.
   void verified() { state_ = State::Parsed; }

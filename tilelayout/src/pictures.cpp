@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "displays/bitmap_font.hpp"
+#include "displays/label_text.hpp"
 #include "displays/legend.hpp"
 
 namespace l2 {
@@ -30,9 +30,9 @@ void outline(RgbImage& img, const Rect& r, Rgb c, int thickness) {
 // where it does not fit; none if neither does.
 void label(RgbImage& img, const Rect& r, const std::string& text, const std::string& fallback) {
   for (const std::string& t : {text, fallback}) {
-    int scale = std::max(1, std::min(r.h / 4 / kGlyphHeight, 12));
+    int scale = std::max(1, std::min(r.h / 4 / kTextHeight, 12));
     while (scale > 1 && text_width(t, scale) > r.w - 4) --scale;
-    const int w = text_width(t, scale), h = kGlyphHeight * scale;
+    const int w = text_width(t, scale), h = kTextHeight * scale;
     if (w > r.w - 2 || h > r.h - 2) continue;
     draw_text(img, r.x + (r.w - w) / 2, r.y + (r.h - h) / 2, t, kLabel, scale);
     return;

@@ -56,13 +56,29 @@ TEST(Pictures, HeaderGapsOfLargeFramebuffersAreDrawnWider) {
 }
 
 TEST(Pictures, TilesAreLabelledWithDisplayAndLogicalTile) {
-  // "D3 L0" in the 5x7 font at scale 1 is 29 pixels wide: centred in the 40x30 tile at
-  // columns 2..41, it starts at column 2 + (40 - 29) / 2 = 7, row (30 - 7) / 2 = 11. The D's
-  // top row is ink in its first four columns.
+  // "D3 L0", capitals 7 pixels tall (scale 1: 30 / 4 / 7 rounds down to 1), centred in the
+  // 40x30 tile at columns 2..41: the capitals' top row is (30 - 7) / 2 = 11, the text's middle
+  // the tile's, column 21 or 22. The tile has a one-pixel black outline. Ink is black blended over
+  // the tile's colour at its edges.
   const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
   const RgbImage pic = framebuffer_picture(plan);
-  EXPECT_EQ(pic.at(7, 11), (Rgb{0, 0, 0}));
-  EXPECT_EQ(pic.at(6, 11), palette_colour(3));
+  const Rgb paper = palette_colour(3);
+  int left = 1000, right = -1, top = 1000, bottom = -1, dark = 0;
+  for (int y = 1; y < 29; ++y) {  // inside the tile's one-pixel outline
+    for (int x = 3; x < 41; ++x) {
+      const Rgb c = pic.at(x, y);
+      if (c.r >= paper.r || c.g >= paper.g || c.b >= paper.b) continue;  // no ink
+      dark += c.r < paper.r / 2 && c.g < paper.g / 2 && c.b < paper.b / 2;
+      left = std::min(left, x), right = std::max(right, x);
+      top = std::min(top, y), bottom = std::max(bottom, y);
+    }
+  }
+  EXPECT_GT(dark, 20);  // strokes more ink than paper
+  EXPECT_GE(top, 11);   // the capitals' top row
+  EXPECT_LE(top, 12);
+  EXPECT_LE(bottom, 11 + 7);                     // no descenders in "D3 L0"
+  EXPECT_NEAR((left + right) / 2.0, 21.5, 2.5);  // centred
+  EXPECT_GT(right - left, 20);                   // five characters
 }
 
 TEST(Pictures, PagesCarryALegend) {

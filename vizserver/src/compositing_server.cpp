@@ -72,9 +72,10 @@ bool CompositingServer::wait_finished(std::chrono::milliseconds timeout) {
   return shared_->changed.wait_for(lock, timeout, [&] { return shared_->ended; });
 }
 
-std::optional<std::string> CompositingServer::failure() const {
+Status CompositingServer::failure() const {
   std::lock_guard lock(shared_->mutex);
-  return shared_->failure;
+  if (shared_->failure) return Failure{*shared_->failure};
+  return {};
 }
 
 std::vector<std::string> CompositingServer::errors() const {

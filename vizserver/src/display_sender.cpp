@@ -1,4 +1,4 @@
-#include "vizserver/display_sender.hpp"
+#include "display_sender.hpp"
 
 #include <poll.h>
 #include <sys/socket.h>

@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "command_line/printable.hpp"
-#include "message_read.hpp"
+#include "vizserver/message_read.hpp"
 
 namespace l2::viz {
 namespace {
@@ -79,9 +79,10 @@ FramePtr DisplayWatcher::take(std::uint32_t frame, std::chrono::milliseconds tim
   return nullptr;
 }
 
-std::optional<std::string> DisplayWatcher::ended() const {
+Status DisplayWatcher::ended() const {
   std::lock_guard lock(mutex_);
-  return ended_;
+  if (ended_) return Failure{*ended_};
+  return {};
 }
 
 bool DisplayWatcher::ended_with_error_message() const {

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "vizserver/compose.hpp"
+#include "compose.hpp"
 
 namespace l2::viz {
 

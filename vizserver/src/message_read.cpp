@@ -1,4 +1,4 @@
-#include "message_read.hpp"
+#include "vizserver/message_read.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "vizserver/swap_queue.hpp"
+#include "swap_queue.hpp"
 
 namespace l2::viz {
 

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "message_read.hpp"
+#include "vizserver/message_read.hpp"
 
 #include "vizserver/wire.hpp"
 

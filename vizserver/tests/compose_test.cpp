@@ -1,4 +1,4 @@
-#include "vizserver/compose.hpp"
+#include "compose.hpp"
 
 #include <gtest/gtest.h>
 

@@ -15,10 +15,10 @@
 #include <thread>
 #include <vector>
 
-#include "vizserver/display_sender.hpp"
+#include "display_sender.hpp"
+#include "swap_queue.hpp"
 #include "vizserver/display_stream.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/swap_queue.hpp"
 
 namespace l2::viz {
 namespace {

@@ -104,9 +104,9 @@ class Router {
     int display, band;
   };
 
-  // write() for one choice; false when a predicted frame turned out different, having kept
-  // nothing of this call (pixels it wrote outside earlier calls' strips get the background in
-  // finish() unless written again), the input parsed.
+  // write() for one choice; false when a predicted frame turned out different, having
+  // retained nothing of this call (pixels it wrote outside earlier calls' strips get the background
+  // in finish() unless written again), the input parsed.
   bool write_checked(std::span<const std::uint8_t> route_input);
   void write_band(int band_list, std::span<const std::uint8_t> route_input);
   // Checks every predicted input's headers that the copy did not (all of them unless `copied`),

@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "base/result.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_stream.hpp"
 #include "vizserver/socket.hpp"
@@ -47,9 +48,9 @@ class DisplayWatcher {
   // `frame` without it.
   FramePtr take(std::uint32_t frame, std::chrono::milliseconds timeout);
 
-  // Why the stream ended, once it has; and whether that was the server's own ERROR (a server
-  // that says why it stops is not one that died).
-  std::optional<std::string> ended() const;
+  // Failed, with why the stream ended, once it has (ok while it runs); and whether that was
+  // the server's own ERROR (a server that says why it stops is not one that died).
+  Status ended() const;
   bool ended_with_error_message() const;
 
  private:

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/result.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/frame_assembler.hpp"
@@ -78,7 +79,8 @@ class CompositingServer {
   // ended.
   bool wait_finished(std::chrono::milliseconds timeout);
 
-  std::optional<std::string> failure() const;  // the line that ended the run, if any
+  // Failed, with the line that ended the run, once one did; ok while it runs or ended well.
+  Status failure() const;
   // The first kKeptErrors connection errors, and the failure; error_count() counts them all,
   // so that a flood of strangers costs a number, not a line each.
   std::vector<std::string> errors() const;

@@ -7,30 +7,30 @@
 namespace l2 {
 namespace {
 
-TEST(ParseKeep, Words) {
-  EXPECT_TRUE(parse_keep("every").keeps(3, 10));
-  EXPECT_TRUE(parse_keep("last").keeps(9, 10));
-  EXPECT_FALSE(parse_keep("last").keeps(8, 10));
-  EXPECT_FALSE(parse_keep("none").keeps(9, 10));
+TEST(ParseSavedFrames, Words) {
+  EXPECT_TRUE(parse_saved_frames("every").saves(3, 10));
+  EXPECT_TRUE(parse_saved_frames("last").saves(9, 10));
+  EXPECT_FALSE(parse_saved_frames("last").saves(8, 10));
+  EXPECT_FALSE(parse_saved_frames("none").saves(9, 10));
 }
 
-TEST(ParseKeep, FrameList) {
-  const KeepSet keep = parse_keep("0,4,7");
-  EXPECT_TRUE(keep.keeps(0, 10));
-  EXPECT_TRUE(keep.keeps(4, 10));
-  EXPECT_FALSE(keep.keeps(5, 10));
-  EXPECT_FALSE(keep.keeps(9, 10));
+TEST(ParseSavedFrames, FrameList) {
+  const SavedFrames saved = parse_saved_frames("0,4,7");
+  EXPECT_TRUE(saved.saves(0, 10));
+  EXPECT_TRUE(saved.saves(4, 10));
+  EXPECT_FALSE(saved.saves(5, 10));
+  EXPECT_FALSE(saved.saves(9, 10));
 }
 
-TEST(ParseKeep, BadItemIsNamed) {
+TEST(ParseSavedFrames, BadItemIsNamed) {
   try {
-    parse_keep("1,x2");
+    parse_saved_frames("1,x2");
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "--keep: 'x2' is not every, last, none or a frame number");
   }
-  EXPECT_THROW(parse_keep("3,-1"), std::invalid_argument);
-  EXPECT_THROW(parse_keep("3,"), std::invalid_argument);
+  EXPECT_THROW(parse_saved_frames("3,-1"), std::invalid_argument);
+  EXPECT_THROW(parse_saved_frames("3,"), std::invalid_argument);
 }
 
 TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {

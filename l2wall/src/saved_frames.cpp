@@ -1,4 +1,4 @@
-// --keep: which frames' displays the run writes (KeepSet, live_run.hpp).
+// --keep: which frames' displays the run writes (SavedFrames, live_run.hpp).
 #include <fmt/format.h>
 
 #include <sstream>
@@ -8,12 +8,12 @@
 
 namespace l2 {
 
-KeepSet parse_keep(const std::string& text) {
-  KeepSet keep;
+SavedFrames parse_saved_frames(const std::string& text) {
+  SavedFrames saved;
   if (text == "every") {
-    keep.every = true;
+    saved.every = true;
   } else if (text == "last") {
-    keep.last = true;
+    saved.last = true;
   } else if (text != "none") {
     if (text.empty() || text.back() == ',')
       throw std::invalid_argument(fmt::format("--keep: '{}' ends without a frame number", text));
@@ -30,10 +30,10 @@ KeepSet parse_keep(const std::string& text) {
       if (used != item.size() || item.empty() || k < 0)
         throw std::invalid_argument(
             fmt::format("--keep: '{}' is not every, last, none or a frame number", item));
-      keep.frames.insert(k);
+      saved.frames.insert(k);
     }
   }
-  return keep;
+  return saved;
 }
 
 }  // namespace l2

@@ -1,5 +1,5 @@
 // A legend under a picture written for people: one line per entry, a colour swatch and what it
-// means, in the built-in font (bitmap_font.hpp), large enough to read when the picture is
+// means, in the label text (label_text.hpp), large enough to read when the picture is
 // viewed scaled down to a screen.
 #pragma once
 
