@@ -50,6 +50,9 @@ class DviSide {
   std::uint64_t refreshes() const { return refreshes_; }
   const RunReport& emulator_report() const { return emulator_.report(); }
 
+  // The frame host `h`'s stamp on the displays says.
+  int frame_shown(const Host& h) const;
+
  private:
   Emulator emulator_;
   std::vector<InputFrame> inputs_;
