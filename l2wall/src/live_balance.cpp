@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <stdexcept>
 
 #include "balance/control_messages.hpp"
 #include "run_fault.hpp"
@@ -18,7 +20,10 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       have_(start.servers.size(), false),
       frame_layout_(static_cast<std::size_t>(std::max(frames, 1)), 0),
       strips_(1, 0),
-      first_frame_(1, 0) {}
+      first_frame_(1, 0),
+      lines_(static_cast<std::size_t>(std::max(frames, 1))) {
+  lines_[0] = encode(layout_message(0, start));
+}
 
 int LiveBalance::layout_of(int frame) const {
   const int last = static_cast<int>(frame_layout_.size()) - 1;
@@ -83,6 +88,7 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
     }
   }
   hosts.place_stamps(layout, frame);
+  lines_[static_cast<std::size_t>(frame)] = line;
   int id = layout_of(frame - 1);
   if (changed) {
     id = static_cast<int>(strips_.size());
@@ -116,6 +122,12 @@ std::string LiveBalance::summary() const {
                    swaps_checked_);
   for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);
   return s;
+}
+
+void LiveBalance::write_layouts(const std::filesystem::path& file) const {
+  std::ofstream out(file);
+  for (const std::string& line : lines_) out << line << '\n';
+  if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }
 
 }  // namespace l2

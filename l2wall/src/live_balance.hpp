@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ class LiveBalance {
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
   // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans.
   std::string summary() const;
+  // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every host got it (frame 0: the
+  // wall's plan, which the hosts start in).
+  void write_layouts(const std::filesystem::path& file) const;
 
  private:
   void send_layout(HostSet& hosts, int frame);
@@ -48,6 +52,7 @@ class LiveBalance {
   std::uint64_t mixed_swaps_ = 0;
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
+  std::vector<std::string> lines_;  // by frame, the LAYOUT line
 };
 
 }  // namespace l2

@@ -428,6 +428,7 @@ class LiveRun {
   }
 
   void write_report() {
+    if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     std::vector<std::string> host_logs;
     for (const Host& h : hosts_.hosts()) host_logs.push_back(h.report_path);
