@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   l2::add_out_option(*run, o.out,
                      "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
                      "row per frame), summary.txt, host-<i>.log, vizserver.log (the compositing "
-                     "server's lines)")
+                     "server's lines), layouts.txt (--balance: each frame's layout)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")

@@ -23,6 +23,7 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       first_frame_(1, 0),
       lines_(static_cast<std::size_t>(std::max(frames, 1))) {
   lines_[0] = encode(layout_message(0, start));
+  last_tiles_ = lines_[0];
 }
 
 int LiveBalance::layout_of(int frame) const {
@@ -67,11 +68,9 @@ void LiveBalance::serve(HostSet& hosts) {
 // Frame 0 was rendered in the wall's plan, not in the balancer's first layout: frame 1 takes
 // that layout, and from then on each frame's times move it.
 void LiveBalance::send_layout(HostSet& hosts, int frame) {
-  bool changed = frame == 1;
   if (frame > 1) {
     try {
       const BalanceStep step = balancer_.next(pending_);
-      changed = step.changed;
       if (!step.rejected.empty())
         rejected_.push_back(fmt::format("frame {}: {}", frame, step.rejected));
     } catch (const std::invalid_argument& e) {
@@ -89,11 +88,14 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
   }
   hosts.place_stamps(layout, frame);
   lines_[static_cast<std::size_t>(frame)] = line;
+  // A new layout when its tiles or their pipeservers differ from the last frame's.
+  const std::string tiles = encode(layout_message(0, layout));
   int id = layout_of(frame - 1);
-  if (changed) {
+  if (tiles != last_tiles_) {
     id = static_cast<int>(strips_.size());
     strips_.push_back(0);
     first_frame_.push_back(frame);
+    last_tiles_ = tiles;
   }
   std::fill(frame_layout_.begin() + frame, frame_layout_.end(), id);
 }

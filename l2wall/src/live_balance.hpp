@@ -53,6 +53,7 @@ class LiveBalance {
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
   std::vector<std::string> lines_;  // by frame, the LAYOUT line
+  std::string last_tiles_;          // the last layout's tiles and pipeservers, as a line
 };
 
 }  // namespace l2
