@@ -35,11 +35,7 @@ std::optional<PathSwap> DviPath::step(int, HostSet& hosts, std::vector<FrameReco
   // frame rendered swaps it in now, and it is taken in at the next refresh.
   dropped_readies_ += static_cast<std::uint64_t>(side_.send_readies(tick, hosts, drop_ready_));
   if (tick.swapped_groups.empty()) return std::nullopt;
-  if (balance_) {
-    std::vector<int> shown;
-    for (const Host& h : hosts.hosts()) shown.push_back(side_.frame_shown(h));
-    balance_->check_swap(shown);
-  }
+  if (balance_) check_groups_for_balance(tick, hosts);
   PathSwap swap;
   swap.time = RunClock::now();
   swap.lowest = side_.lowest_frame_shown(hosts);
@@ -55,6 +51,23 @@ void DviPath::count_for_balance(const Emulator::Tick& tick, const HostSet& hosts
       routed[i] = tick.inputs[i].routed_strips;
   }
   balance_->count_strips(hosts, routed);
+}
+
+// Each swapped group: the frames its displays show, by the stamps on them, must share a layout.
+void DviPath::check_groups_for_balance(const Emulator::Tick& tick, const HostSet& hosts) {
+  for (const int id : tick.swapped_groups) {
+    const auto& groups = side_.emulator_groups();
+    const auto g = std::find_if(groups.begin(), groups.end(),
+                                [&](const SwapGroup& sg) { return sg.id == id; });
+    if (g == groups.end()) continue;
+    std::vector<int> shown;
+    for (const Host& h : hosts.hosts()) {
+      const int frame = side_.frame_shown(h);
+      if (std::binary_search(g->displays.begin(), g->displays.end(), h.stamp(frame).display))
+        shown.push_back(frame);
+    }
+    balance_->check_swap(shown);
+  }
 }
 
 void DviPath::add_totals(RunTotals& totals) const {

@@ -36,6 +36,7 @@ class DviPath final : public DisplayPath {
 
  private:
   void count_for_balance(const Emulator::Tick& tick, const HostSet& hosts);
+  void check_groups_for_balance(const Emulator::Tick& tick, const HostSet& hosts);
   DisplayPictures pictures() const {
     return [this](int id) -> const RgbImage& { return side_.shown(id); };
   }

@@ -106,12 +106,12 @@ void LiveBalance::count_strips(const HostSet& hosts,
     strips_[static_cast<std::size_t>(layout_of(hosts.hosts()[i].accepted))] += routed_by_host[i];
 }
 
-void LiveBalance::check_swap(const std::vector<int>& shown_by_host) {
-  if (shown_by_host.empty()) return;
+void LiveBalance::check_swap(const std::vector<int>& shown) {
+  if (shown.empty()) return;
   ++swaps_checked_;
-  const int first = layout_of(shown_by_host.front());
-  const bool mixed = std::any_of(shown_by_host.begin(), shown_by_host.end(),
-                                 [&](int f) { return layout_of(f) != first; });
+  const int first = layout_of(shown.front());
+  const bool mixed =
+      std::any_of(shown.begin(), shown.end(), [&](int f) { return layout_of(f) != first; });
   mixed_swaps_ += mixed ? 1 : 0;
 }
 
@@ -120,7 +120,7 @@ std::string LiveBalance::summary() const {
                               to_string(balancer_.settings().mode), strips_.size());
   for (std::size_t l = 0; l < strips_.size(); ++l)
     s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
-  s += fmt::format("\nbalance: {} of {} swaps showed frames of two layouts\n", mixed_swaps_,
+  s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
   for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);
   return s;

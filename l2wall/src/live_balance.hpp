@@ -3,7 +3,7 @@
 // host's times of frame k are in, the Balancer plans frame k+1 and the same LAYOUT goes to every
 // host, so all switch together. It also says where each frame's stamps are (the layout moves
 // them) and counts, from the stamps the run reads, the strips routed in each layout and the
-// swaps that showed frames of two layouts at once.
+// group swaps that showed frames of two layouts at once.
 #pragma once
 
 #include <cstdint>
@@ -26,8 +26,9 @@ class LiveBalance {
   void serve(HostSet& hosts);
   // After a refresh: counts the strips each host's new frame routed, by that frame's layout.
   void count_strips(const HostSet& hosts, const std::vector<std::uint64_t>& routed_by_host);
-  // After a swap: whether the frames the displays now show (one per host) share one layout.
-  void check_swap(const std::vector<int>& shown_by_host);
+  // After a swap group swapped: whether the frames its displays now show (by the stamps on
+  // them) share one layout.
+  void check_swap(const std::vector<int>& shown);
 
   // The layout frame `frame` is rendered in (0: the start, then one more each change).
   int layout_of(int frame) const;
