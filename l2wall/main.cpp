@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   l2::add_out_option(*run, o.out,
                      "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
                      "row per frame), summary.txt, host-<i>.log, vizserver.log (the compositing "
-                     "server's lines)")
+                     "server's lines), layouts.txt (--balance: each frame's layout)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")
@@ -100,6 +100,12 @@ int main(int argc, char** argv) {
                   "both at once")
       ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
       ->capture_default_str();
+  run->add_option("--balance", o.balance,
+                  "re-tile live from the last frame's render times, over the wall file's "
+                  "[balance] mode: static (the wall's tiling), strips (horizontal strips with "
+                  "vertical sub-strips moving toward equal load) or kd (the k-d tiling re-cut "
+                  "over a cost grid); --path dvi only, not with --mpi (docs/wall-file.md)")
+      ->check(CLI::IsMember({"static", "strips", "kd"}));
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "

@@ -124,6 +124,7 @@ int run_wall_mpi(const RunOptions& o) {
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
+  if (auto error = balance_refusal(o, layout->wall, true)) return refuse(*error);
   if (auto error = rank_count_error(*map, launched->size)) return refuse(*error);
   if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
   const auto column = map->column_of(launched->rank);

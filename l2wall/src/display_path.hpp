@@ -20,6 +20,8 @@
 
 namespace l2 {
 
+class LiveBalance;
+
 // What the live run checks while a path works; each throws RunFault to end the run.
 struct RunWatch {
   std::function<void()> processes;  // every process of the run still running well
@@ -100,6 +102,9 @@ class DisplayPath {
   virtual void shut_down() {}
   // Its counts for the report.
   virtual void add_totals(RunTotals& totals) const = 0;
+  // A balanced run: the path serves the control channels and checks its swaps against the
+  // layouts. Only the DVI path can (LiveRun refuses the others).
+  virtual void follow_layouts(LiveBalance& /*balance*/) {}
 };
 
 }  // namespace l2

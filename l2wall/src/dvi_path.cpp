@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <thread>
 
+#include "live_balance.hpp"
+
 namespace l2 {
 
 DviPath::DviPath(const Wall& wall, int threads, std::size_t hosts, double refresh_hz, int frames,
@@ -19,6 +21,7 @@ std::optional<PathSwap> DviPath::step(int, HostSet& hosts, std::vector<FrameReco
   watch.processes();
   const bool fresh = side_.take_in(hosts);
   hosts.serve_channels();
+  if (balance_) balance_->serve(hosts);
   // As fast as possible still means "when there is something to do": re-reading unchanged
   // links would only take CPU from the hosts.
   if (refresh_hz_ == 0 && !fresh && !swap_due_) {
@@ -27,16 +30,44 @@ std::optional<PathSwap> DviPath::step(int, HostSet& hosts, std::vector<FrameReco
   }
   const Emulator::Tick& tick = side_.refresh(hosts, records);
   swap_due_ = !tick.completed_groups.empty();
+  if (balance_) count_for_balance(tick, hosts);
   // READY at once, in the refresh the frame completed (spec §6.4): a host with its next
   // frame rendered swaps it in now, and it is taken in at the next refresh.
   dropped_readies_ += static_cast<std::uint64_t>(side_.send_readies(tick, hosts, drop_ready_));
   if (tick.swapped_groups.empty()) return std::nullopt;
+  if (balance_) check_groups_for_balance(tick, hosts);
   PathSwap swap;
   swap.time = RunClock::now();
   swap.lowest = side_.lowest_frame_shown(hosts);
   swap.refresh = tick.index;
   shown_ = std::min(swap.lowest, frames_ - 1);
   return swap;
+}
+
+void DviPath::count_for_balance(const Emulator::Tick& tick, const HostSet& hosts) {
+  std::vector<std::uint64_t> routed(hosts.hosts().size(), 0);
+  for (std::size_t i = 0; i < routed.size() && i < tick.kinds.size(); ++i) {
+    if (tick.kinds[i] == FrameKind::New && i < tick.inputs.size())
+      routed[i] = tick.inputs[i].routed_strips;
+  }
+  balance_->count_strips(hosts, routed);
+}
+
+// Each swapped group: the frames its displays show, by the stamps on them, must share a layout.
+void DviPath::check_groups_for_balance(const Emulator::Tick& tick, const HostSet& hosts) {
+  for (const int id : tick.swapped_groups) {
+    const auto& groups = side_.emulator_groups();
+    const auto g = std::find_if(groups.begin(), groups.end(),
+                                [&](const SwapGroup& sg) { return sg.id == id; });
+    if (g == groups.end()) continue;
+    std::vector<int> shown;
+    for (const Host& h : hosts.hosts()) {
+      const int frame = side_.frame_shown(h);
+      if (std::binary_search(g->displays.begin(), g->displays.end(), h.stamp(frame).display))
+        shown.push_back(frame);
+    }
+    balance_->check_swap(shown);
+  }
 }
 
 void DviPath::add_totals(RunTotals& totals) const {

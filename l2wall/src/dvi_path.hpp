@@ -32,8 +32,11 @@ class DviPath final : public DisplayPath {
   int frame_shown() const override { return shown_; }
 
   void add_totals(RunTotals& totals) const override;
+  void follow_layouts(LiveBalance& balance) override { balance_ = &balance; }
 
  private:
+  void count_for_balance(const Emulator::Tick& tick, const HostSet& hosts);
+  void check_groups_for_balance(const Emulator::Tick& tick, const HostSet& hosts);
   DisplayPictures pictures() const {
     return [this](int id) -> const RgbImage& { return side_.shown(id); };
   }
@@ -46,6 +49,7 @@ class DviPath final : public DisplayPath {
   bool swap_due_ = false;
   int shown_ = -1;  // the frame the emulator's displays show
   std::uint64_t dropped_readies_ = 0;
+  LiveBalance* balance_ = nullptr;
 };
 
 }  // namespace l2

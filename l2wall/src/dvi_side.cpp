@@ -71,19 +71,32 @@ const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>&
   record_new_frames(
       hosts, records, tick.kinds,
       [&](std::size_t i) {
+        // A host delivers its frames in order: the new one is the one after the last, and its
+        // layout says where its stamp is.
         const Host& h = hosts.hosts()[i];
-        return decode_stamp(inputs_[i].row(h.fb_y) + h.fb_x * 3);
+        const StampSpot& s = h.stamp(h.accepted + 1);
+        return decode_stamp(inputs_[i].row(s.fb_y) + s.fb_x * 3);
       },
       tick.index, t0, route_ms);
   return tick;
 }
 
+int DviSide::frame_shown(const Host& h) const {
+  // The displays show the frame the host delivered last, or (its next one taken in during the
+  // swap's refresh) the one before; a balanced run may have moved the stamp between them.
+  const auto read = [&](int frame) {
+    const StampSpot& s = h.stamp(frame);
+    return decode_stamp(emulator_.shown(s.display).row(s.dy).data() + s.dx * 3);
+  };
+  for (int frame : {h.accepted, h.accepted - 1}) {
+    if (read(frame) == frame) return frame;
+  }
+  return read(h.accepted);
+}
+
 int DviSide::lowest_frame_shown(const HostSet& hosts) const {
   int lowest = 1 << 30;
-  for (const Host& h : hosts.hosts()) {
-    const RgbImage& shown = emulator_.shown(h.display);
-    lowest = std::min(lowest, decode_stamp(shown.row(h.dy).data() + h.dx * 3));
-  }
+  for (const Host& h : hosts.hosts()) lowest = std::min(lowest, frame_shown(h));
   return lowest;
 }
 

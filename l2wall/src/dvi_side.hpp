@@ -49,6 +49,10 @@ class DviSide {
   const RgbImage& shown(int display) const { return emulator_.shown(display); }
   std::uint64_t refreshes() const { return refreshes_; }
   const RunReport& emulator_report() const { return emulator_.report(); }
+  const std::vector<SwapGroup>& emulator_groups() const { return emulator_.groups(); }
+
+  // The frame host `h`'s stamp on the displays says.
+  int frame_shown(const Host& h) const;
 
  private:
   Emulator emulator_;

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <fcntl.h>
+
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 #include <thread>
 
 #include "run_fault.hpp"
@@ -50,19 +53,35 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
 
 namespace {
 
-// Where host i's frame stamp is: its first tile's framebuffer pixel and the display pixel it
-// lands on.
-void place_stamp(Host& h, const ServerPlan& plan) {
-  if (plan.tiles.empty()) return;
+StampSpot stamp_spot(const ServerPlan& plan) {
+  if (plan.tiles.empty()) return {};
   const PackedTile& t = plan.tiles.front();
-  h.fb_x = t.fb_x;
-  h.fb_y = t.fb_y;
-  h.display = t.tile.display;
-  h.dx = t.tile.on_display.x;
-  h.dy = t.tile.on_display.y;
+  return {t.fb_x, t.fb_y, t.tile.display, t.tile.on_display.x, t.tile.on_display.y};
+}
+
+// The pipeserver's end gets a descriptor number on its command line; ours must not leak into
+// the other hosts, or a dead host's channel would never read as closed.
+// Returns the pipeserver's end, to be closed here once the process holds its copy.
+std::optional<SocketControlChannel> open_control(Host& h, std::vector<std::string>& argv) {
+  auto [ours, theirs] = control_socket_pair();
+  if (::fcntl(ours.fd(), F_SETFD, FD_CLOEXEC) != 0)
+    throw std::runtime_error("control channel: fcntl(FD_CLOEXEC) failed");
+  argv.push_back("--control-fd");
+  argv.push_back(std::to_string(theirs.fd()));
+  h.control = std::make_unique<SocketControlChannel>(std::move(ours));
+  return std::move(theirs);
 }
 
 }  // namespace
+
+void HostSet::place_stamps(const TileLayout& layout, int from) {
+  for (std::size_t i = 0; i < hosts_.size(); ++i) {
+    Host& h = hosts_[i];
+    h.stamps.resize(static_cast<std::size_t>(std::max(frames_, 1)));
+    for (std::size_t k = static_cast<std::size_t>(std::max(from, 0)); k < h.stamps.size(); ++k)
+      h.stamps[k] = stamp_spot(layout.servers[i]);
+  }
+}
 
 void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
   dvi_ = launch.dvi;
@@ -75,9 +94,11 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
     std::filesystem::remove(h.report_path);
     h.pty = std::make_unique<PtyPair>(PtyPair::open());
     h.channel = std::make_unique<BackChannel>(h.pty->master());
-    place_stamp(h, layout.servers[i]);
-    h.process.emplace(host_argv(launch, h), launch.env);
+    std::vector<std::string> argv = host_argv(launch, h);
+    const auto theirs = launch.control ? open_control(h, argv) : std::nullopt;
+    h.process.emplace(argv, launch.env);
   }
+  place_stamps(layout, 0);
 }
 
 void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
@@ -90,8 +111,8 @@ void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
     // Its own (it may have started writing it already).
     h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
     h.channel = channel(h.server);
-    place_stamp(h, layout.servers[i]);
   }
+  place_stamps(layout, 0);
 }
 
 Host* HostSet::poll_ended() {

@@ -4,6 +4,7 @@
 // ends and reaps them and removes the links a dead host left behind.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "balance/control_channel.hpp"
 #include "base/child_process.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "lightning2_emu/input_frame.hpp"
@@ -22,6 +24,12 @@
 #include "tilelayout/planner.hpp"
 
 namespace l2 {
+
+// Where a frame's stamp is: its host's first tile's framebuffer pixel and the display pixel it
+// lands on (they move with the layout).
+struct StampSpot {
+  int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
+};
 
 // One pipeserver. Members are destroyed in reverse: the process is ended and reaped before the
 // link reader and the pty go away.
@@ -37,8 +45,15 @@ struct Host {
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far
   int accepted = -1;           // the frame number of the last new frame the emulator took in
-  // Where the frame stamp is: framebuffer pixel and the display pixel it lands on.
-  int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
+  // Where each frame's stamp is, by frame (a balanced run re-tiles); frames past the end, and
+  // before 0, use the nearest.
+  std::vector<StampSpot> stamps;
+  const StampSpot& stamp(int frame) const {
+    return stamps[static_cast<std::size_t>(
+        std::clamp(frame, 0, static_cast<int>(stamps.size()) - 1))];
+  }
+  // Balancing: this end of the host's control channel (TIMES in, LAYOUT out).
+  std::unique_ptr<SocketControlChannel> control;
   // Fault injection: a READY held back until the host asks with SYNC?.
   std::optional<int> held_ready;
 };
@@ -56,6 +71,7 @@ struct HostLaunch {
   std::string viz_address;              // HOST:PORT of the compositing server; empty: none
   std::vector<std::string> extra_args;  // appended to every host's arguments
   std::vector<std::string> env;         // "NAME=value" added to every host's environment
+  bool control = false;                 // a control channel per host (--control-fd): balancing
 };
 
 // The command line of host `h`'s pipeserver process.
@@ -70,6 +86,9 @@ class HostSet {
   // path that does records Host::sequence.
   void attach(const HostLaunch& launch, const TileLayout& layout,
               const std::function<std::unique_ptr<ReadyChannel>(int server)>& channel);
+
+  // Frames `from` on carry their stamps where `layout` puts them.
+  void place_stamps(const TileLayout& layout, int from);
 
   std::deque<Host>& hosts() { return hosts_; }
   const std::deque<Host>& hosts() const { return hosts_; }

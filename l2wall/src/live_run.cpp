@@ -23,6 +23,7 @@
 #include "dvi_path.hpp"
 #include "host_set.hpp"
 #include "image/folders.hpp"
+#include "live_balance.hpp"
 #include "live_show.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "run_backends.hpp"
@@ -63,6 +64,7 @@ class LiveRun {
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     make_paths();
+    start_balance();
     backends_.start_hosts(hosts_, launch_hosts(), layout_);
     for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
     run_frames_until_stopped();
@@ -132,14 +134,17 @@ class LiveRun {
  private:
   void check_options() const {
     if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
-    // The pipeservers cannot take a new layout from the run yet: a wall that asks for
-    // balancing is refused rather than run static without a word.
-    if (wall_.balance.mode != BalanceMode::Static || wall_.balance.heaviest_first) {
-      throw LayoutError(fmt::format(
-          "{}:{}: balance: l2wall run does not re-tile live yet (scripts/balance-bench.sh "
-          "measures balancing)",
-          wall_.source.string(), wall_.balance.line));
-    }
+    if (auto refusal = balance_refusal(o_, wall_, false)) throw LayoutError(*refusal);
+  }
+
+  // A balanced run: the coordinator, and the DVI path following its layouts.
+  void start_balance() {
+    const BalanceSpec spec = run_balance(o_, wall_);
+    if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return;
+    Wall wall = wall_;
+    wall.balance = spec;
+    balance_ = std::make_unique<LiveBalance>(wall, balance_settings(wall), layout_, o_.frames);
+    paths_.front()->follow_layouts(*balance_);
   }
 
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
@@ -153,6 +158,7 @@ class LiveRun {
     HostLaunch l = host_launch(o_);
     for (const auto& p : paths_) p->add_host_args(l);
     if (show_) l.extra_args = LiveShow::host_args();
+    l.control = balance_ != nullptr;
     return l;
   }
 
@@ -423,11 +429,13 @@ class LiveRun {
   }
 
   void write_report() {
+    if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     std::vector<std::string> host_logs;
     for (const Host& h : hosts_.hosts()) host_logs.push_back(h.report_path);
-    const std::string summary = write_run_report(o_, wall_, host_logs, records_, totals_,
-                                                 show_ ? show_->summary(shown_) : std::string());
+    const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
+                              (balance_ ? balance_->summary() : std::string());
+    const std::string summary = write_run_report(o_, wall_, host_logs, records_, totals_, extra);
     if (o_.progress) std::fputs("\n", stderr);
     std::fputs(summary.c_str(), stdout);
   }
@@ -439,6 +447,7 @@ class LiveRun {
   TileLayout layout_;
   std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
+  std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
   HostSet hosts_;  // after paths_: destroyed first, so hosts end before the compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
@@ -526,6 +535,25 @@ std::optional<std::string> run_options_error(const RunOptions& o) {
     if (auto error = past_the_last(option, frame)) return error;
   }
   if (o.inject_mismatch >= 0 && !o.compare) return "--inject-mismatch needs --compare";
+  return std::nullopt;
+}
+
+BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
+  BalanceSpec spec = wall.balance;
+  if (const auto mode = parse_balance_mode(o.balance)) spec.mode = *mode;
+  return spec;
+}
+
+std::optional<std::string> balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
+  const BalanceSpec spec = run_balance(o, wall);
+  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return std::nullopt;
+  // Where the request came from, for the error.
+  const std::string asked = !o.balance.empty() && o.balance != "static"
+                                ? "--balance " + o.balance
+                                : fmt::format("{}:{}: balance", wall.source.string(), spec.line);
+  if (mpi) return asked + ": balancing does not run over MPI (--mpi) yet";
+  if (o.path != "dvi")
+    return asked + ": balancing runs on --path dvi only (the compositing server keeps one layout)";
   return std::nullopt;
 }
 

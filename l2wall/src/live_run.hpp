@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "tilelayout/wall.hpp"
+
 namespace l2 {
 
 struct RunOptions {
@@ -27,6 +29,7 @@ struct RunOptions {
   std::string viz_host = "127.0.0.1";  // where the compositing server listens for tiles
   int viz_port = 0;                    // its port; 0: a free one, which it reports
   std::string path = "dvi";            // dvi | vizserver | both
+  std::string balance;                 // static | strips | kd; empty: the wall's [balance]
   bool compare = false;                // both: every display identical byte for byte on both paths
   int threads = 1;                     // emulator routing threads
   int start_timeout_ms = 60000;        // until every link carries its first frame
@@ -57,6 +60,12 @@ SavedFrames parse_saved_frames(const std::string& text);
 // frame past the last one...), or nullopt. The command line checks it while parsing, so that
 // such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
 std::optional<std::string> run_options_error(const RunOptions& options);
+
+// The wall's [balance] with --balance over its mode.
+BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
+// Why this run cannot balance as asked (--path vizserver or both, --mpi), or nullopt: one line
+// naming the option or the wall file's line.
+std::optional<std::string> balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
 
 // Returns the exit code: 0 when every frame reached the displays with one frame of latency.
 int run_wall(const RunOptions& options);

@@ -1,0 +1,135 @@
+#include "live_balance.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <stdexcept>
+
+#include "balance/control_messages.hpp"
+#include "run_fault.hpp"
+
+namespace l2 {
+
+LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileLayout& start,
+                         int frames)
+    : balancer_(wall, settings),
+      frames_(frames),
+      pending_(start.servers.size()),
+      have_(start.servers.size(), false),
+      frame_layout_(static_cast<std::size_t>(std::max(frames, 1)), 0),
+      strips_(1, 0),
+      first_frame_(1, 0),
+      lines_(static_cast<std::size_t>(std::max(frames, 1))) {
+  lines_[0] = encode(layout_message(0, start));
+  last_tiles_ = lines_[0];
+}
+
+int LiveBalance::layout_of(int frame) const {
+  const int last = static_cast<int>(frame_layout_.size()) - 1;
+  return frame_layout_[static_cast<std::size_t>(std::clamp(frame, 0, last))];
+}
+
+void LiveBalance::serve(HostSet& hosts) {
+  for (Host& h : hosts.hosts()) {
+    if (!h.control) continue;
+    const std::size_t i = static_cast<std::size_t>(h.server);
+    while (!have_[i]) {
+      std::optional<std::string> line;
+      try {
+        line = h.control->receive_line(std::chrono::milliseconds(0));
+      } catch (const ControlError&) {
+        return;  // the host is gone: the run names it from its exit
+      }
+      if (!line) break;
+      TimesMessage m;
+      try {
+        m = decode_times(*line);
+      } catch (const ControlError& e) {
+        throw RunFault(fmt::format("pipeserver {}: {}", h.server, e.what()));
+      }
+      if (m.frame != next_times_ || m.server != h.server) {
+        throw RunFault(
+            fmt::format("pipeserver {}: TIMES for frame {} of server {} while frame {} "
+                        "is due",
+                        h.server, m.frame, m.server, next_times_));
+      }
+      pending_[i] = std::move(m.seconds);
+      have_[i] = true;
+    }
+  }
+  if (std::find(have_.begin(), have_.end(), false) != have_.end()) return;
+  const int frame = next_times_++;
+  std::fill(have_.begin(), have_.end(), false);
+  if (frame + 1 < frames_) send_layout(hosts, frame + 1);
+}
+
+// Frame 0 was rendered in the wall's plan, not in the balancer's first layout: frame 1 takes
+// that layout, and from then on each frame's times move it.
+void LiveBalance::send_layout(HostSet& hosts, int frame) {
+  if (frame > 1) {
+    try {
+      const BalanceStep step = balancer_.next(pending_);
+      if (!step.rejected.empty())
+        rejected_.push_back(fmt::format("frame {}: {}", frame, step.rejected));
+    } catch (const std::invalid_argument& e) {
+      throw RunFault(fmt::format("balancing frame {}: {}", frame, e.what()));
+    }
+  }
+  const TileLayout& layout = balancer_.layout();
+  const std::string line = encode(layout_message(frame, layout));
+  for (Host& h : hosts.hosts()) {
+    try {
+      if (h.control) h.control->send_line(line);
+    } catch (const ControlError&) {
+      // the host is gone: the run names it from its exit
+    }
+  }
+  hosts.place_stamps(layout, frame);
+  lines_[static_cast<std::size_t>(frame)] = line;
+  // A new layout when its tiles or their pipeservers differ from the last frame's.
+  const std::string tiles = encode(layout_message(0, layout));
+  int id = layout_of(frame - 1);
+  if (tiles != last_tiles_) {
+    id = static_cast<int>(strips_.size());
+    strips_.push_back(0);
+    first_frame_.push_back(frame);
+    last_tiles_ = tiles;
+  }
+  std::fill(frame_layout_.begin() + frame, frame_layout_.end(), id);
+}
+
+void LiveBalance::count_strips(const HostSet& hosts,
+                               const std::vector<std::uint64_t>& routed_by_host) {
+  for (std::size_t i = 0; i < routed_by_host.size() && i < hosts.hosts().size(); ++i)
+    strips_[static_cast<std::size_t>(layout_of(hosts.hosts()[i].accepted))] += routed_by_host[i];
+}
+
+void LiveBalance::check_swap(const std::vector<int>& shown) {
+  if (shown.empty()) return;
+  ++swaps_checked_;
+  const int first = layout_of(shown.front());
+  const bool mixed =
+      std::any_of(shown.begin(), shown.end(), [&](int f) { return layout_of(f) != first; });
+  mixed_swaps_ += mixed ? 1 : 0;
+}
+
+std::string LiveBalance::summary() const {
+  std::string s = fmt::format("balance {}: {} layouts, strips routed per layout:",
+                              to_string(balancer_.settings().mode), strips_.size());
+  for (std::size_t l = 0; l < strips_.size(); ++l)
+    s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
+  s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
+                   swaps_checked_);
+  for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);
+  return s;
+}
+
+void LiveBalance::write_layouts(const std::filesystem::path& file) const {
+  std::ofstream out(file);
+  for (const std::string& line : lines_) out << line << '\n';
+  if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace l2

@@ -1,0 +1,60 @@
+// Balancing in a live run (`[balance]`, `l2wall run --balance`): the coordinator side of the
+// control channel. Each pipeserver sends its tiles' times after every frame (TIMES); once every
+// host's times of frame k are in, the Balancer plans frame k+1 and the same LAYOUT goes to every
+// host, so all switch together. It also says where each frame's stamps are (the layout moves
+// them) and counts, from the stamps the run reads, the strips routed in each layout and the
+// group swaps that showed frames of two layouts at once.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "balance/balancer.hpp"
+#include "host_set.hpp"
+
+namespace l2 {
+
+class LiveBalance {
+ public:
+  // Frame 0 is rendered in `start` (the wall's plan, as every pipeserver starts).
+  LiveBalance(const Wall& wall, BalanceSettings settings, const TileLayout& start, int frames);
+
+  // Reads every TIMES line waiting, and sends LAYOUT k+1 once frame k's times are all in.
+  // Throws RunFault for a line that is not the expected TIMES.
+  void serve(HostSet& hosts);
+  // After a refresh: counts the strips each host's new frame routed, by that frame's layout.
+  void count_strips(const HostSet& hosts, const std::vector<std::uint64_t>& routed_by_host);
+  // After a swap group swapped: whether the frames its displays now show (by the stamps on
+  // them) share one layout.
+  void check_swap(const std::vector<int>& shown);
+
+  // The layout frame `frame` is rendered in (0: the start, then one more each change).
+  int layout_of(int frame) const;
+  std::uint64_t mixed_swaps() const { return mixed_swaps_; }
+  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans.
+  std::string summary() const;
+  // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every host got it (frame 0: the
+  // wall's plan, which the hosts start in).
+  void write_layouts(const std::filesystem::path& file) const;
+
+ private:
+  void send_layout(HostSet& hosts, int frame);
+
+  Balancer balancer_;
+  int frames_;
+  int next_times_ = 0;                        // the frame whose times are being collected
+  std::vector<std::vector<double>> pending_;  // by host, that frame's times (empty: not in)
+  std::vector<bool> have_;
+  std::vector<int> frame_layout_;      // by frame
+  std::vector<std::uint64_t> strips_;  // by layout
+  std::vector<int> first_frame_;       // by layout
+  std::uint64_t mixed_swaps_ = 0;
+  std::uint64_t swaps_checked_ = 0;
+  std::vector<std::string> rejected_;
+  std::vector<std::string> lines_;  // by frame, the LAYOUT line
+  std::string last_tiles_;          // the last layout's tiles and pipeservers, as a line
+};
+
+}  // namespace l2

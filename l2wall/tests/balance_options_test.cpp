@@ -1,0 +1,46 @@
+// Which balancing a run asks for (the wall's [balance], --balance over its mode), and where
+// l2wall refuses it, in the words the user sees.
+#include <gtest/gtest.h>
+
+#include "live_run.hpp"
+#include "tilelayout/wall_file.hpp"
+
+namespace l2 {
+namespace {
+
+Wall strips_wall() {
+  Wall wall = default_wall();
+  wall.source = "walls/x.toml";
+  wall.balance.mode = BalanceMode::Strips;
+  wall.balance.line = 14;
+  return wall;
+}
+
+TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
+  RunOptions o;
+  EXPECT_EQ(run_balance(o, strips_wall()).mode, BalanceMode::Strips);
+  o.balance = "static";
+  EXPECT_EQ(run_balance(o, strips_wall()).mode, BalanceMode::Static);
+  o.balance = "kd";
+  EXPECT_EQ(run_balance(o, default_wall()).mode, BalanceMode::Kd);
+}
+
+TEST(BalanceOptions, OnlyTheDviPathWithoutMpiBalances) {
+  RunOptions o;
+  EXPECT_EQ(balance_refusal(o, strips_wall(), false), std::nullopt);
+  o.path = "both";
+  EXPECT_EQ(balance_refusal(o, strips_wall(), false),
+            "walls/x.toml:14: balance: balancing runs on --path dvi only (the compositing server "
+            "keeps one layout)");
+  o.path = "dvi";
+  o.balance = "strips";
+  EXPECT_EQ(balance_refusal(o, default_wall(), true),
+            "--balance strips: balancing does not run over MPI (--mpi) yet");
+  // Static asks for nothing to refuse.
+  o.balance = "static";
+  o.path = "vizserver";
+  EXPECT_EQ(balance_refusal(o, strips_wall(), true), std::nullopt);
+}
+
+}  // namespace
+}  // namespace l2
