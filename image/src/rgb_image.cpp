@@ -1,13 +1,31 @@
 #include "image/rgb_image.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace l2 {
 
+CacheLineBytes::CacheLineBytes(std::size_t size)
+    : bytes_(size ? new (kAlign) std::uint8_t[size] : nullptr), size_(size) {}
+
+CacheLineBytes::CacheLineBytes(const CacheLineBytes& other) : CacheLineBytes(other.size_) {
+  if (size_) std::memcpy(bytes_.get(), other.bytes_.get(), size_);
+}
+
+CacheLineBytes& CacheLineBytes::operator=(const CacheLineBytes& other) {
+  if (this != &other) *this = CacheLineBytes(other);
+  return *this;
+}
+
+bool operator==(const CacheLineBytes& a, const CacheLineBytes& b) {
+  return a.size_ == b.size_ && (a.size_ == 0 || std::memcmp(a.data(), b.data(), a.size_) == 0);
+}
+
 RgbImage::RgbImage(int width, int height, Rgb fill_colour) : width_(width), height_(height) {
   if (width < 0 || height < 0) throw std::invalid_argument("RgbImage: negative size");
-  bytes_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * kChannels);
+  bytes_ = CacheLineBytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                          kChannels);
   fill(fill_colour);
 }
 

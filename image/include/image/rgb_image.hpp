@@ -4,9 +4,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <new>
 #include <span>
-#include <vector>
+#include <utility>
 
 namespace l2 {
 
@@ -17,17 +18,37 @@ struct Rgb {
 
 // Pixels start on a cache line: a row span whose width is a multiple of 64 bytes (a 64-pixel
 // tile of a display whose row is too) then covers whole lines, which the emulator's router
-// writes with streaming stores instead of reading partial lines in first.
-template <class T>
-struct CacheLineAllocator {
-  using value_type = T;
+// writes with streaming stores instead of reading partial lines in first. Not a std::vector
+// with an aligning allocator: a vector built, copied or destroyed through any allocator but
+// std::allocator goes byte by byte, which the unoptimised command-line and test files
+// (cmake/Targets.cmake) paid for every picture.
+class CacheLineBytes {
+ public:
+  CacheLineBytes() = default;
+  explicit CacheLineBytes(std::size_t size);  // uninitialised
+  CacheLineBytes(const CacheLineBytes& other);
+  CacheLineBytes& operator=(const CacheLineBytes& other);
+  CacheLineBytes(CacheLineBytes&& other) noexcept
+      : bytes_(std::move(other.bytes_)), size_(std::exchange(other.size_, 0)) {}
+  CacheLineBytes& operator=(CacheLineBytes&& other) noexcept {
+    bytes_ = std::move(other.bytes_);
+    size_ = std::exchange(other.size_, 0);
+    return *this;
+  }
+
+  std::uint8_t* data() { return bytes_.get(); }
+  const std::uint8_t* data() const { return bytes_.get(); }
+  std::size_t size() const { return size_; }
+
+  friend bool operator==(const CacheLineBytes& a, const CacheLineBytes& b);
+
+ private:
   static constexpr std::align_val_t kAlign{64};
-  CacheLineAllocator() = default;
-  template <class U>
-  CacheLineAllocator(const CacheLineAllocator<U>&) {}
-  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlign)); }
-  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlign); }
-  friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) = default;
+  struct Free {
+    void operator()(std::uint8_t* p) const { ::operator delete[](p, kAlign); }
+  };
+  std::unique_ptr<std::uint8_t[], Free> bytes_;
+  std::size_t size_ = 0;
 };
 
 class RgbImage {
@@ -48,8 +69,9 @@ class RgbImage {
   }
   std::uint8_t* data() { return bytes_.data(); }
   const std::uint8_t* data() const { return bytes_.data(); }
-  std::span<std::uint8_t> bytes() { return bytes_; }  // every row, stride() bytes each
-  std::span<const std::uint8_t> bytes() const { return bytes_; }
+  // Every row, stride() bytes each.
+  std::span<std::uint8_t> bytes() { return {bytes_.data(), bytes_.size()}; }
+  std::span<const std::uint8_t> bytes() const { return {bytes_.data(), bytes_.size()}; }
 
   Rgb at(int x, int y) const;
   void set(int x, int y, Rgb c);
@@ -62,7 +84,7 @@ class RgbImage {
  private:
   int width_ = 0;
   int height_ = 0;
-  std::vector<std::uint8_t, CacheLineAllocator<std::uint8_t>> bytes_;
+  CacheLineBytes bytes_;
 };
 
 }  // namespace l2
