@@ -37,12 +37,12 @@ int plot_run(const std::string& dir) {
 
 namespace {
 
-std::optional<std::string> mpi_error(const l2::RunOptions& o) {
+l2::Status mpi_error(const l2::RunOptions& o) {
 #ifdef L2_HAVE_MPI
   return l2::mpi_options_error(o);
 #else
   (void)o;
-  return "--mpi: this l2wall was built without MPI";
+  return l2::Failure{"--mpi: this l2wall was built without MPI"};
 #endif
 }
 
@@ -173,8 +173,10 @@ int main(int argc, char** argv) {
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
   // Options that make no run together are usage errors too (exit 2), not a failed run.
   run->callback([&o, &scene_options, &mpi] {
-    if (auto error = l2::run_options_error(o)) throw CLI::ValidationError(*error);
-    if (auto error = mpi ? mpi_error(o) : std::nullopt) throw CLI::ValidationError(*error);
+    if (const l2::Status s = l2::run_options_error(o); !s.ok())
+      throw CLI::ValidationError(s.reason());
+    if (const l2::Status s = mpi ? mpi_error(o) : l2::Status{}; !s.ok())
+      throw CLI::ValidationError(s.reason());
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
   });

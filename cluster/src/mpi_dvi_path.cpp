@@ -159,8 +159,9 @@ void MpiDviPath::refresh(HostSet& hosts) {
   for (int c = 0; c < map_.columns; ++c)
     mpi_wire::send(route, map_.column_rank(c), mpi_wire::kCommand);
   control_bytes_ += route.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
-  if (auto broken = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_))
-    throw RunFault(*broken);
+  if (const Status s = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_);
+      !s.ok())
+    throw RunFault(s.reason());
 }
 
 std::optional<Record> MpiDviPath::column_answer(int c, HostSet& hosts) {
@@ -211,9 +212,9 @@ bool MpiDviPath::down() {
   return lost_.has_value();
 }
 
-std::optional<std::string> MpiDviPath::failure_as_cause(int, const std::string&) {
-  if (!lost_) return std::nullopt;
-  return lost_message(*lost_);
+Status MpiDviPath::failure_as_cause(int, const std::string&) {
+  if (!lost_) return {};
+  return Failure{lost_message(*lost_)};
 }
 
 std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameRecord>& records,

@@ -48,8 +48,8 @@ class MpiDviPath final : public DisplayPath {
 
   // A rank whose process is gone (MpiSession::lost_rank).
   bool down() override;
-  std::optional<std::string> failure_as_cause(int shown, const std::string& showing) override;
-  std::optional<std::string> failure(int shown, const std::string& showing) override {
+  Status failure_as_cause(int shown, const std::string& showing) override;
+  Status failure(int shown, const std::string& showing) override {
     return failure_as_cause(shown, showing);
   }
 

@@ -91,13 +91,14 @@ int run_column_rank(const TileLayout& layout, const RankMap& map, int column, co
 
 }  // namespace
 
-std::optional<std::string> mpi_options_error(const RunOptions& o) {
-  if (o.path == "vizserver") return kOnlyDvi;
+Status mpi_options_error(const RunOptions& o) {
+  if (o.path == "vizserver") return Failure{kOnlyDvi};
   if (o.show == "window")
-    return "--mpi: --show window is one machine's; --show monitors shows each column's displays "
-           "on its own machine's monitors";
-  if (o.noise_after >= 0) return "--mpi: --inject-noise needs a serial line (no --mpi)";
-  return std::nullopt;
+    return Failure{
+        "--mpi: --show window is one machine's; --show monitors shows each column's displays "
+        "on its own machine's monitors"};
+  if (o.noise_after >= 0) return Failure{"--mpi: --inject-noise needs a serial line (no --mpi)"};
+  return {};
 }
 
 int run_wall_mpi(const RunOptions& o) {
@@ -115,7 +116,7 @@ int run_wall_mpi(const RunOptions& o) {
     std::fprintf(stderr, "l2wall: %s\n", why.c_str());
     return 1;
   };
-  if (auto error = mpi_options_error(o)) return refuse(*error);
+  if (const Status s = mpi_options_error(o); !s.ok()) return refuse(s.reason());
   std::optional<TileLayout> layout;
   std::optional<RankMap> map;
   try {
@@ -124,8 +125,8 @@ int run_wall_mpi(const RunOptions& o) {
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
-  if (auto error = balance_refusal(o, layout->wall, true)) return refuse(*error);
-  if (auto error = rank_count_error(*map, launched->size)) return refuse(*error);
+  if (const Status s = balance_refusal(o, layout->wall, true); !s.ok()) return refuse(s.reason());
+  if (const Status s = rank_count_error(*map, launched->size); !s.ok()) return refuse(s.reason());
   if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
   const auto column = map->column_of(launched->rank);
   std::optional<ColumnShow> show;

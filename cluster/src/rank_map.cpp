@@ -54,14 +54,14 @@ RankMap make_rank_map(const TileLayout& layout) {
   return map;
 }
 
-std::optional<std::string> rank_count_error(const RankMap& map, int ranks) {
-  if (ranks == map.size()) return std::nullopt;
+Status rank_count_error(const RankMap& map, int ranks) {
+  if (ranks == map.size()) return {};
   const auto count = [](int n, const char* what) {
     return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
   };
-  return fmt::format("--mpi: this wall needs mpirun -np {} (1 coordinator + {} + {}), got {} ranks",
-                     map.size(), count(map.servers, "pipeserver"),
-                     count(map.columns, "board column"), ranks);
+  return Failure{fmt::format(
+      "--mpi: this wall needs mpirun -np {} (1 coordinator + {} + {}), got {} ranks", map.size(),
+      count(map.servers, "pipeserver"), count(map.columns, "board column"), ranks)};
 }
 
 }  // namespace l2

@@ -6,8 +6,7 @@
 
 namespace l2 {
 
-std::optional<std::string> SwapLockCheck::check(std::uint64_t refresh,
-                                                std::span<const DisplayShown> shown) const {
+Status SwapLockCheck::check(std::uint64_t refresh, std::span<const DisplayShown> shown) const {
   for (const SwapGroup& g : groups_) {
     const DisplayShown* first = nullptr;
     for (const int id : g.displays) {
@@ -17,15 +16,15 @@ std::optional<std::string> SwapLockCheck::check(std::uint64_t refresh,
       if (!first) {
         first = &*it;
       } else if (it->frame != first->frame) {
-        return fmt::format(
+        return Failure{fmt::format(
             "swap lock broken in refresh {}: group {}: display {} (rank {}) shows frame {}, "
             "display {} (rank {}) frame {}",
             refresh, g.id, it->display, it->rank, it->frame, first->display, first->rank,
-            first->frame);
+            first->frame)};
       }
     }
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace l2

@@ -46,8 +46,8 @@ TEST(RankMap, TwelveMonitorsAreTwoColumns) {
 
 TEST(RankMap, WrongRankCountIsOneLineWithTheNumbers) {
   const RankMap map = make_rank_map(plan_layout(default_wall()));
-  EXPECT_FALSE(rank_count_error(map, 6));
-  EXPECT_EQ(rank_count_error(map, 4).value_or(""),
+  EXPECT_TRUE(rank_count_error(map, 6).ok());
+  EXPECT_EQ(rank_count_error(map, 4).reason(),
             "--mpi: this wall needs mpirun -np 6 (1 coordinator + 4 pipeservers + 1 board "
             "column), got 4 ranks");
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "host_set.hpp"
 #include "run_pictures.hpp"
 #include "run_report.hpp"
@@ -76,20 +77,15 @@ class DisplayPath {
   virtual bool down() { return false; }
   // Waits up to `grace` for a path that went down to be reaped, so a fault names how it ended.
   virtual void settle(std::chrono::milliseconds /*grace*/) {}
-  // The path's failure when it is the cause (it went down without saying why); `showing`: what
-  // the displays show.
-  virtual std::optional<std::string> failure_as_cause(int /*shown*/,
-                                                      const std::string& /*showing*/) {
-    return std::nullopt;
-  }
+  // Each of these fails, with the line naming the path, when the path explains the fault; ok
+  // when it does not. `shown`, `showing`: the frame the displays show, and those words.
+  // The path's failure when it is the cause (it went down without saying why).
+  virtual Status failure_as_cause(int /*shown*/, const std::string& /*showing*/) { return {}; }
   // The path's failure as the last explanation left.
-  virtual std::optional<std::string> failure(int /*shown*/, const std::string& /*showing*/) {
-    return std::nullopt;
-  }
+  virtual Status failure(int /*shown*/, const std::string& /*showing*/) { return {}; }
   // A host that gave up on this path while it still runs: the path hangs, named so.
-  virtual std::optional<std::string> hang_behind(const Host& /*h*/, int /*shown*/,
-                                                 const std::string& /*showing*/) {
-    return std::nullopt;
+  virtual Status hang_behind(const Host& /*h*/, int /*shown*/, const std::string& /*showing*/) {
+    return {};
   }
   // How messages name the path's own process ("compositing server (vizserver pid 4242)"), or
   // empty when it has none.

@@ -133,8 +133,8 @@ class LiveRun {
 
  private:
   void check_options() const {
-    if (auto error = run_options_error(o_)) throw std::invalid_argument(*error);
-    if (auto refusal = balance_refusal(o_, wall_, false)) throw LayoutError(*refusal);
+    if (const Status s = run_options_error(o_); !s.ok()) throw std::invalid_argument(s.reason());
+    if (const Status s = balance_refusal(o_, wall_, false); !s.ok()) throw LayoutError(s.reason());
   }
 
   // A balanced run: the coordinator, and the DVI path following its layouts.
@@ -305,7 +305,8 @@ class LiveRun {
     if (Host* killed = hosts_.killed_by_signal())
       return hosts_.describe_end(*killed, displays_showing());
     for (auto& p : paths_) {
-      if (auto why = p->failure_as_cause(shown_, displays_showing())) return *why;
+      if (const Status why = p->failure_as_cause(shown_, displays_showing()); !why.ok())
+        return why.reason();
     }
     if (Host* ended = hosts_.poll_ended()) {
       // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
@@ -320,12 +321,13 @@ class LiveRun {
         }
       }
       for (auto& p : paths_) {
-        if (auto why = p->hang_behind(*ended, shown_, displays_showing())) return *why;
+        if (const Status why = p->hang_behind(*ended, shown_, displays_showing()); !why.ok())
+          return why.reason();
       }
       return hosts_.describe_end(*ended, displays_showing());
     }
     for (auto& p : paths_) {
-      if (auto why = p->failure(shown_, displays_showing())) return *why;
+      if (const Status why = p->failure(shown_, displays_showing()); !why.ok()) return why.reason();
     }
     return "a process of the run ended";
   }
@@ -502,40 +504,40 @@ HostLaunch host_launch(const RunOptions& o) {
   return l;
 }
 
-std::optional<std::string> run_options_error(const RunOptions& o) {
+Status run_options_error(const RunOptions& o) {
   if (o.path != "dvi" && o.path != "vizserver" && o.path != "both")
-    return "--path: expected dvi, vizserver or both, got " + o.path;
-  if (o.compare && o.path != "both") return "--compare needs --path both";
+    return Failure{"--path: expected dvi, vizserver or both, got " + o.path};
+  if (o.compare && o.path != "both") return Failure{"--compare needs --path both"};
   if (o.path != "dvi" && o.vizserver.empty())
-    return "--vizserver: no compositing server executable given";
+    return Failure{"--vizserver: no compositing server executable given"};
   if (o.viz_port < 0 || o.viz_port > 65535)
-    return fmt::format("--viz-port: {} is not 0..65535", o.viz_port);
+    return Failure{fmt::format("--viz-port: {} is not 0..65535", o.viz_port)};
   // There is no compositing server on the DVI path: an address for it would go unused.
   if (o.path == "dvi" && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
-    return "--viz-host and --viz-port need --path vizserver or both";
+    return Failure{"--viz-host and --viz-port need --path vizserver or both"};
   SavedFrames saved;
   try {
     saved = parse_saved_frames(o.keep);
   } catch (const std::invalid_argument& e) {
-    return e.what();
+    return Failure{e.what()};
   }
   // A frame the run never renders would silently keep nothing, or inject no fault, and the
   // run would pass as if the fault had been survived.
-  const auto past_the_last = [&o](const char* option, int frame) -> std::optional<std::string> {
-    if (frame < o.frames) return std::nullopt;
-    return fmt::format("{}: frame {} is past the last frame (--frames {} renders 0..{})", option,
-                       frame, o.frames, o.frames - 1);
+  const auto past_the_last = [&o](const char* option, int frame) -> Status {
+    if (frame < o.frames) return {};
+    return Failure{fmt::format("{}: frame {} is past the last frame (--frames {} renders 0..{})",
+                               option, frame, o.frames, o.frames - 1)};
   };
   if (!saved.frames.empty()) {
-    if (auto error = past_the_last("--keep", *saved.frames.rbegin())) return error;
+    if (Status s = past_the_last("--keep", *saved.frames.rbegin()); !s.ok()) return s;
   }
   for (const auto& [option, frame] : {std::pair{"--inject-noise", o.noise_after},
                                       std::pair{"--inject-mismatch", o.inject_mismatch},
                                       std::pair{"--drop-ready", o.drop_ready}}) {
-    if (auto error = past_the_last(option, frame)) return error;
+    if (Status s = past_the_last(option, frame); !s.ok()) return s;
   }
-  if (o.inject_mismatch >= 0 && !o.compare) return "--inject-mismatch needs --compare";
-  return std::nullopt;
+  if (o.inject_mismatch >= 0 && !o.compare) return Failure{"--inject-mismatch needs --compare"};
+  return {};
 }
 
 BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
@@ -544,17 +546,18 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   return spec;
 }
 
-std::optional<std::string> balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
+Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const BalanceSpec spec = run_balance(o, wall);
-  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return std::nullopt;
+  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return {};
   // Where the request came from, for the error.
   const std::string asked = !o.balance.empty() && o.balance != "static"
                                 ? "--balance " + o.balance
                                 : fmt::format("{}:{}: balance", wall.source.string(), spec.line);
-  if (mpi) return asked + ": balancing does not run over MPI (--mpi) yet";
+  if (mpi) return Failure{asked + ": balancing does not run over MPI (--mpi) yet"};
   if (o.path != "dvi")
-    return asked + ": balancing runs on --path dvi only (the compositing server keeps one layout)";
-  return std::nullopt;
+    return Failure{asked +
+                   ": balancing runs on --path dvi only (the compositing server keeps one layout)"};
+  return {};
 }
 
 int run_wall(const RunOptions& options) {

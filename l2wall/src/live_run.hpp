@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {
@@ -59,13 +60,13 @@ SavedFrames parse_saved_frames(const std::string& text);
 // Why these options cannot make a run ("--compare needs --path both", a bad --keep, a saved
 // frame past the last one...), or nullopt. The command line checks it while parsing, so that
 // such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
-std::optional<std::string> run_options_error(const RunOptions& options);
+Status run_options_error(const RunOptions& options);
 
 // The wall's [balance] with --balance over its mode.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
 // Why this run cannot balance as asked (--path vizserver or both, --mpi), or nullopt: one line
 // naming the option or the wall file's line.
-std::optional<std::string> balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
+Status balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
 
 // Returns the exit code: 0 when every frame reached the displays with one frame of latency.
 int run_wall(const RunOptions& options);

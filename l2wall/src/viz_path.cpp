@@ -33,19 +33,18 @@ int VizPath::frame_shown() const {
   return side_->last() ? static_cast<int>(side_->last()->frame) : -1;
 }
 
-std::optional<std::string> VizPath::failure_as_cause(int shown, const std::string& showing) {
-  if (side_->down() && !side_->said_why()) return side_->describe_down(shown, showing);
-  return std::nullopt;
+Status VizPath::failure_as_cause(int shown, const std::string& showing) {
+  if (side_->down() && !side_->said_why()) return Failure{side_->describe_down(shown, showing)};
+  return {};
 }
 
 // A host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout: one
 // that gave up on a server still running means the server hangs.
-std::optional<std::string> VizPath::hang_behind(const Host& h, int shown,
-                                                const std::string& showing) {
-  if (side_->down() || !h.exit || h.exit->code != kExitLostCompositingServer) return std::nullopt;
-  return fmt::format(
-      "the {} stopped answering: pipeserver {} gave up waiting for it at frame {}; {}",
-      side_->name(), h.server, shown, showing);
+Status VizPath::hang_behind(const Host& h, int shown, const std::string& showing) {
+  if (side_->down() || !h.exit || h.exit->code != kExitLostCompositingServer) return {};
+  return Failure{
+      fmt::format("the {} stopped answering: pipeserver {} gave up waiting for it at frame {}; {}",
+                  side_->name(), h.server, shown, showing)};
 }
 
 void VizPath::finish() {

@@ -36,12 +36,11 @@ class VizPath final : public DisplayPath {
 
   bool down() override { return side_->down(); }
   void settle(std::chrono::milliseconds grace) override { side_->settle(grace); }
-  std::optional<std::string> failure_as_cause(int shown, const std::string& showing) override;
-  std::optional<std::string> failure(int shown, const std::string& showing) override {
-    return side_->describe_down(shown, showing);
+  Status failure_as_cause(int shown, const std::string& showing) override;
+  Status failure(int shown, const std::string& showing) override {
+    return Failure{side_->describe_down(shown, showing)};
   }
-  std::optional<std::string> hang_behind(const Host& h, int shown,
-                                         const std::string& showing) override;
+  Status hang_behind(const Host& h, int shown, const std::string& showing) override;
   std::string process_name() const override { return side_->name(); }
 
   void finish() override;

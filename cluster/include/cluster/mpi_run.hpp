@@ -13,7 +13,7 @@
 namespace l2 {
 
 // What --mpi cannot run with, or nullopt.
-std::optional<std::string> mpi_options_error(const RunOptions& options);
+Status mpi_options_error(const RunOptions& options);
 
 // Returns the exit code. A fault ends every rank (MPI_Abort) after its message.
 int run_wall_mpi(const RunOptions& options);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -34,6 +35,6 @@ struct RankMap {
 RankMap make_rank_map(const TileLayout& layout);
 
 // The one-line error for an mpirun with the wrong number of ranks, or nullopt.
-std::optional<std::string> rank_count_error(const RankMap& map, int ranks);
+Status rank_count_error(const RankMap& map, int ranks);
 
 }  // namespace l2

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "lightning2_emu/swap_group.hpp"
 
 namespace l2 {
@@ -27,8 +28,7 @@ class SwapLockCheck {
   // One line naming refresh, group, display and rank when a display of a group shows another
   // frame than the group's first display that shows one; nullopt when the refresh is in lock.
   // Displays without a frame yet are not compared.
-  std::optional<std::string> check(std::uint64_t refresh,
-                                   std::span<const DisplayShown> shown) const;
+  Status check(std::uint64_t refresh, std::span<const DisplayShown> shown) const;
 
  private:
   std::vector<SwapGroup> groups_;
