@@ -3,6 +3,9 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "command_line/checks.hpp"
 #include "command_line/options.hpp"
@@ -16,6 +19,7 @@
 #include "pipeserver/scene_cli.hpp"
 #include "report_plot.hpp"
 #include "stop_signal.hpp"
+#include "tilelayout/wall.hpp"
 
 namespace {
 
@@ -105,7 +109,8 @@ int main(int argc, char** argv) {
                   "[balance] mode: static (the wall's tiling), strips (horizontal strips with "
                   "vertical sub-strips moving toward equal load) or kd (the k-d tiling re-cut "
                   "over a cost grid); --path dvi only, not with --mpi (docs/wall-file.md)")
-      ->check(CLI::IsMember({"static", "strips", "kd"}));
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
+                                                     std::end(l2::kBalanceModeNames))));
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "

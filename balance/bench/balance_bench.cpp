@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,7 +99,8 @@ int main(int argc, char** argv) {
   app.add_option("--pipeservers", o.pipeservers, "pipeserver count instead of the wall's")
       ->check(CLI::Range(1, l2::kMaxPipeservers));
   app.add_option("--mode", o.mode, "static, strips or kd (default: the wall's [balance] mode)")
-      ->check(CLI::IsMember({"static", "strips", "kd"}));
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
+                                                     std::end(l2::kBalanceModeNames))));
   app.add_flag("--assign", o.assign,
                "heaviest tile first to the pipeserver that finishes first, instead of the wall's "
                "assignment policy (as [balance] assignment = \"heaviest-first\")");

@@ -74,12 +74,15 @@ std::optional<SocketControlChannel> open_control(Host& h, std::vector<std::strin
 
 }  // namespace
 
+// One entry a frame up to `from`, the frames between keeping the previous layout's spot: a
+// long run re-tiled at every frame then costs one entry a frame, not a fill to its end.
 void HostSet::place_stamps(const TileLayout& layout, int from) {
+  const auto at = static_cast<std::size_t>(std::max(from, 0));
   for (std::size_t i = 0; i < hosts_.size(); ++i) {
     Host& h = hosts_[i];
-    h.stamps.resize(static_cast<std::size_t>(std::max(frames_, 1)));
-    for (std::size_t k = static_cast<std::size_t>(std::max(from, 0)); k < h.stamps.size(); ++k)
-      h.stamps[k] = stamp_spot(layout.servers[i]);
+    const StampSpot before = h.stamps.empty() ? StampSpot{} : h.stamps.back();
+    h.stamps.resize(at, before);
+    h.stamps.push_back(stamp_spot(layout.servers[i]));
   }
 }
 

@@ -45,8 +45,8 @@ struct Host {
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far
   int accepted = -1;           // the frame number of the last new frame the emulator took in
-  // Where each frame's stamp is, by frame (a balanced run re-tiles); frames past the end, and
-  // before 0, use the nearest.
+  // Where each frame's stamp is, by frame up to the last re-tiling (a balanced run re-tiles);
+  // later frames use the last entry, frames before 0 the first.
   std::vector<StampSpot> stamps;
   const StampSpot& stamp(int frame) const {
     return stamps[static_cast<std::size_t>(

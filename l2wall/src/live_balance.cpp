@@ -18,13 +18,11 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       frames_(frames),
       pending_(start.servers.size()),
       have_(start.servers.size(), false),
-      frame_layout_(static_cast<std::size_t>(std::max(frames, 1)), 0),
+      frame_layout_(1, 0),
       strips_(1, 0),
       first_frame_(1, 0),
-      lines_(static_cast<std::size_t>(std::max(frames, 1))) {
-  lines_[0] = encode(layout_message(0, start));
-  last_tiles_ = lines_[0];
-}
+      last_(layout_message(0, start)),
+      lines_{encode(last_)} {}
 
 int LiveBalance::layout_of(int frame) const {
   const int last = static_cast<int>(frame_layout_.size()) - 1;
@@ -78,7 +76,8 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
     }
   }
   const TileLayout& layout = balancer_.layout();
-  const std::string line = encode(layout_message(frame, layout));
+  LayoutMessage m = layout_message(frame, layout);
+  const std::string line = encode(m);
   for (Host& h : hosts.hosts()) {
     try {
       if (h.control) h.control->send_line(line);
@@ -87,17 +86,19 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
     }
   }
   hosts.place_stamps(layout, frame);
-  lines_[static_cast<std::size_t>(frame)] = line;
+  // Frames are sent in order, one each: the vectors by frame grow by this one.
+  lines_.resize(static_cast<std::size_t>(frame));
+  lines_.push_back(line);
   // A new layout when its tiles or their pipeservers differ from the last frame's.
-  const std::string tiles = encode(layout_message(0, layout));
   int id = layout_of(frame - 1);
-  if (tiles != last_tiles_) {
+  if (m.tiles != last_.tiles || m.servers != last_.servers) {
     id = static_cast<int>(strips_.size());
     strips_.push_back(0);
     first_frame_.push_back(frame);
-    last_tiles_ = tiles;
+    last_ = std::move(m);
   }
-  std::fill(frame_layout_.begin() + frame, frame_layout_.end(), id);
+  frame_layout_.resize(static_cast<std::size_t>(frame), frame_layout_.back());
+  frame_layout_.push_back(id);
 }
 
 void LiveBalance::count_strips(const HostSet& hosts,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "balance/balancer.hpp"
+#include "balance/control_messages.hpp"
 #include "host_set.hpp"
 
 namespace l2 {
@@ -45,16 +46,16 @@ class LiveBalance {
   Balancer balancer_;
   int frames_;
   int next_times_ = 0;                        // the frame whose times are being collected
-  std::vector<std::vector<double>> pending_;  // by host, that frame's times (empty: not in)
-  std::vector<bool> have_;
-  std::vector<int> frame_layout_;      // by frame
+  std::vector<std::vector<double>> pending_;  // by host, that frame's times
+  std::vector<bool> have_;                    // by host, whether they are in
+  std::vector<int> frame_layout_;      // by frame sent so far; later frames are in the last layout
   std::vector<std::uint64_t> strips_;  // by layout
   std::vector<int> first_frame_;       // by layout
   std::uint64_t mixed_swaps_ = 0;
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
-  std::vector<std::string> lines_;  // by frame, the LAYOUT line
-  std::string last_tiles_;          // the last layout's tiles and pipeservers, as a line
+  LayoutMessage last_;              // the last layout's tiles and pipeservers
+  std::vector<std::string> lines_;  // by frame sent so far, the LAYOUT line
 };
 
 }  // namespace l2

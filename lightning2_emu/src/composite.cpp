@@ -22,17 +22,23 @@ inline std::uint32_t rgb_at(const std::uint8_t* p) {
   return std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
 }
 
-// Pixel i: colour and rank replaced where `write`, by masks, not branches.
+// Pixel i's colour replaced where `write`, by masks, not branches.
+[[gnu::always_inline]] inline void select_colour(std::uint8_t* __restrict dst, int i,
+                                                 const std::uint8_t* __restrict src, bool write) {
+  const auto m8 = static_cast<std::uint8_t>(write ? 0xFF : 0);
+  for (int c = 0; c < 3; ++c) {
+    dst[3 * i + c] = static_cast<std::uint8_t>((src[c] & m8) | (dst[3 * i + c] & ~m8));
+  }
+}
+
+// Pixel i: colour and rank replaced where `write`.
 [[gnu::always_inline]] inline void select(std::uint8_t* __restrict dst,
                                           std::uint32_t* __restrict rank, int i,
                                           const std::uint8_t* __restrict src,
                                           std::uint32_t new_rank, bool write) {
   const std::uint32_t m = write ? ~0u : 0u;
-  const auto m8 = static_cast<std::uint8_t>(m);
   rank[i] = (new_rank & m) | (rank[i] & ~m);
-  for (int c = 0; c < 3; ++c) {
-    dst[3 * i + c] = static_cast<std::uint8_t>((src[c] & m8) | (dst[3 * i + c] & ~m8));
-  }
+  select_colour(dst, i, src, write);
 }
 
 // Pixels a span is taken in at a time: its byte masks stay in the first-level cache.
@@ -141,7 +147,7 @@ L2_COMPOSITE_CLONES int settle_span(std::uint8_t* __restrict dst, std::uint32_t*
   for (int i = 0; i < n; ++i) {
     const bool empty = rank[i] == kFar;
     written += static_cast<int>(!empty);
-    select(dst, rank, i, bg, kFar, empty);
+    select_colour(dst, i, bg, empty);
     rank[i] = kFar;
   }
   return written;
