@@ -59,6 +59,7 @@ spelling() {
 while IFS='|' read -r label name rest; do
   case $name in
     --rate | --interval) spelling "$label" "$name: a rate is --refresh HZ everywhere" ;;
+    --server | --servers) spelling "$label" "$name: a pipeserver is --pipeserver, their count --pipeservers" ;;
     --host | --port) spelling "$label" "$name: the compositing server's address is --viz-host/--viz-port" ;;
     --timeout | --retries) spelling "$label" "$name: READY waits are --ready-timeout/--ready-retries" ;;
     --refresh) [[ $rest == " HZ:"* ]] || spelling "$label" "--refresh$rest: not in HZ" ;;
@@ -100,8 +101,8 @@ bad_value "'127.0.0.1:abc' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:a
 bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --pipeservers 1 \
   --display-stream 127.0.0.1:0
 # sscanf's %d wrapped 4294967360 to 64; 1e300 s did not fit the milliseconds it became.
-bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 --pipeservers 1 \
-  --out /tmp
+bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 \
+  --pipeservers 1 --out /tmp
 # Timeouts are whole milliseconds: a fraction, an exponent or NaN is refused, not rounded to 0
 # (forever) or clamped.
 bad_value "1e300 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 \

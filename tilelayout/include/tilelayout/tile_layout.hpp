@@ -83,8 +83,8 @@ class LayoutError : public std::runtime_error {
 };
 
 // Packs tiles into one framebuffer exactly per spec §4 rules 1, 2 and 5, KEY and DEPTH tiles
-// with their four-column gaps and payloads (§7). Throws LayoutError naming the pipeserver, the tile
-// and by how much it does not fit.
+// with their four-column gaps and payloads (§7). Throws LayoutError naming the pipeserver, the
+// tile and by how much it does not fit.
 PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
                           const std::vector<DisplayTile>& tiles);
 
