@@ -161,13 +161,13 @@ int run_live_host(const LiveHostOptions& o) {
     int retries = 0;
     const int retries_allowed = swap_retries(o, k - 1);
     if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
-      const WaitResult r =
+      const Result<ReadyAck> r =
           channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, retries_allowed);
-      retries = r.retries;
       if (!r.ok()) {
-        std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.pipeserver, k, r.error.c_str());
+        std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.pipeserver, k, r.reason().c_str());
         return kExitNoReady;
       }
+      retries = r->retries;
     }
     // The compositing server's SWAPPED paces the vizserver path (alone, instead of READY). With
     // both paths it is read too: a host that exits with SWAPPED unread resets the connection,
@@ -190,11 +190,11 @@ int run_live_host(const LiveHostOptions& o) {
   // Stay until the last frame is taken in and complete: the run reads our link until then.
   const int last_retries = swap_retries(o, o.frames - 1);
   if (o.frames > 0 && channel) {
-    const WaitResult r =
+    const Result<ReadyAck> r =
         channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, last_retries);
     if (!r.ok()) {
       std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.pipeserver, o.frames - 1,
-                   r.error.c_str());
+                   r.reason().c_str());
       return kExitNoReady;
     }
   }
