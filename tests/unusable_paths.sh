@@ -44,7 +44,7 @@ refused 3 "tilelayout: --scanout $tmp/file: a file, not a folder" tilelayout \
   --scanout "$tmp/file"
 refused 1 "l2wall: --out $tmp/file/out: $in_the_way" l2wall run --frames 1 --out "$tmp/file/out"
 refused 1 "vizserver: error: --out $tmp/file/out: $in_the_way" vizserver --displays 8x8 \
-  --servers 1 --out "$tmp/file/out"
+  --pipeservers 1 --out "$tmp/file/out"
 refused 1 "pipeserver: --out $tmp/file/out: $in_the_way" pipeserver --out "$tmp/file/out"
 refused 1 "pipeserver: --out $tmp/file: a file, not a folder" pipeserver --out "$tmp/file"
 # Refused before rendering: the scanned-out frame is not written either.

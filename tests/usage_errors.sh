@@ -59,6 +59,7 @@ spelling() {
 while IFS='|' read -r label name rest; do
   case $name in
     --rate | --interval) spelling "$label" "$name: a rate is --refresh HZ everywhere" ;;
+    --server | --servers) spelling "$label" "$name: a pipeserver is --pipeserver, their count --pipeservers" ;;
     --host | --port) spelling "$label" "$name: the compositing server's address is --viz-host/--viz-port" ;;
     --timeout | --retries) spelling "$label" "$name: READY waits are --ready-timeout/--ready-retries" ;;
     --refresh) [[ $rest == " HZ:"* ]] || spelling "$label" "--refresh$rest: not in HZ" ;;
@@ -97,18 +98,18 @@ bad_value() {
 programs=("$@")
 bad_value "'127.0.0.1:99999' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:99999
 bad_value "'127.0.0.1:abc' is not HOST:PORT" pipeserver --live --viz 127.0.0.1:abc
-bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --servers 1 \
+bad_value "'127.0.0.1:0' is not HOST:PORT" vizserver --displays 8x4 --pipeservers 1 \
   --display-stream 127.0.0.1:0
 # sscanf's %d wrapped 4294967360 to 64; 1e300 s did not fit the milliseconds it became.
-bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 --servers 1 \
-  --out /tmp
+bad_value "'4294967360x64' is not WIDTHxHEIGHT" vizserver --displays 4294967360x64 \
+  --pipeservers 1 --out /tmp
 # Timeouts are whole milliseconds: a fraction, an exponent or NaN is refused, not rounded to 0
 # (forever) or clamped.
 bad_value "1e300 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 \
-  --servers 1 --out /tmp --accept-timeout 1e300
-bad_value "0.5 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --servers 1 \
+  --pipeservers 1 --out /tmp --accept-timeout 1e300
+bad_value "0.5 is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --pipeservers 1 \
   --out /tmp --accept-timeout 0.5
-bad_value "nan is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --servers 1 \
+bad_value "nan is not 0 (forever) or 1..86400000 ms" vizserver --displays 8x8 --pipeservers 1 \
   --out /tmp --stall-timeout nan
 bad_value "0 is not 1..86400000 ms" l2wall run --stall-timeout 0 --out /tmp
 bad_value "86400001 is not 1..86400000 ms" sync_backchannel wait-ready /dev/null --frame 1 \

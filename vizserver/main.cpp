@@ -124,12 +124,12 @@ int main(int argc, char** argv) {
       "With L2_VIZ_TOKEN (32 hex digits) in the environment, a HELLO without that token is "
       "refused (l2wall run sets one for every run); without it any peer may say HELLO."};
   std::string displays_text, host = "127.0.0.1", out_dir, stream_address, log_path;
-  int servers = 1, frames = 1;
+  int pipeservers = 1, frames = 1;
   int port = 0;
   long long accept_timeout_ms = 30000, stall_timeout_ms = 10000;
   app.add_option("--displays", displays_text, "Display sizes in display order: WxH[,WxH...]")
       ->required();
-  app.add_option("--servers", servers, "Number of pipeservers that will connect")
+  app.add_option("--pipeservers", pipeservers, "Number of pipeservers that will connect")
       ->check(CLI::Range(1, 4096))
       ->required();
   // Named as `l2wall run` names the address it starts this server with.
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
 
   l2::viz::ServerOptions options;
   options.display_sizes = sizes;
-  options.servers = servers;
+  options.pipeservers = pipeservers;
   options.host = host;
   options.port = static_cast<std::uint16_t>(port);
   options.accept_timeout = std::chrono::milliseconds(accept_timeout_ms);
@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
     server.start();
     if (out.stream) {
       out.stream->send_listening({server.port(), static_cast<std::uint32_t>(sizes.size()),
-                                  static_cast<std::uint32_t>(servers)});
+                                  static_cast<std::uint32_t>(pipeservers)});
     }
     fmt::print(out.log, "listening on {}:{}\n", host, server.port());
     std::fflush(out.log);

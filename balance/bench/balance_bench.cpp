@@ -37,7 +37,7 @@ struct Options {
 
 std::vector<std::unique_ptr<l2::Pipeserver>> pipeservers_of(const l2::TileLayout& layout) {
   std::vector<std::unique_ptr<l2::Pipeserver>> out;
-  for (std::size_t s = 0; s < layout.servers.size(); ++s) {
+  for (std::size_t s = 0; s < layout.pipeservers.size(); ++s) {
     out.push_back(std::make_unique<l2::Pipeserver>(layout, static_cast<int>(s)));
   }
   return out;
@@ -45,36 +45,36 @@ std::vector<std::unique_ptr<l2::Pipeserver>> pipeservers_of(const l2::TileLayout
 
 int run(const Options& o, const l2::SceneOptions& scene_options) {
   l2::Wall wall = o.wall.empty() ? l2::default_wall() : l2::load_wall(o.wall);
-  if (o.pipeservers > 0) wall.server_count = o.pipeservers;
+  if (o.pipeservers > 0) wall.pipeserver_count = o.pipeservers;
   l2::BalanceSettings settings = l2::balance_settings(wall);
   if (!o.mode.empty()) settings.mode = *l2::parse_balance_mode(o.mode);
   settings.assign = settings.assign || o.assign;
   l2::Balancer balancer(wall, settings);
   auto scene = l2::make_scene(o.scene, scene_options);
-  auto servers = pipeservers_of(balancer.layout());
+  auto pipeservers = pipeservers_of(balancer.layout());
   if (o.header) std::printf("pipeservers,mode,assign,frame,frame_ms,imbalance,retiled\n");
   int rejected = 0;
   for (int k = 0; k < o.frames; ++k) {
-    l2::TileSeconds tile_seconds, server_seconds;
-    for (auto& ps : servers) {
+    l2::TileSeconds tile_seconds, pipeserver_seconds;
+    for (auto& ps : pipeservers) {
       ps->render_frame(k, *scene);
       const l2::FrameTimes& t = ps->last_times();
       std::vector<double>& tiles = tile_seconds.emplace_back();
       for (double ms : t.tile_ms) tiles.push_back(ms / 1000);
-      server_seconds.push_back(tiles);
+      pipeserver_seconds.push_back(tiles);
     }
-    const l2::FrameLoad load = l2::frame_load(server_seconds);
+    const l2::FrameLoad load = l2::frame_load(pipeserver_seconds);
     const l2::BalanceStep step = balancer.next(tile_seconds);
     if (!step.rejected.empty()) {
       ++rejected;
       std::fprintf(stderr, "balance_bench: frame %d: next layout not used: %s\n", k,
                    step.rejected.c_str());
     }
-    std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", servers.size(), l2::to_string(settings.mode),
+    std::printf("%zu,%s,%d,%d,%.4f,%.4f,%d\n", pipeservers.size(), l2::to_string(settings.mode),
                 settings.assign ? 1 : 0, k, load.frame_seconds * 1000, load.imbalance,
                 step.changed ? 1 : 0);
     if (step.changed) {
-      for (auto& ps : servers) ps->set_layout(balancer.layout());
+      for (auto& ps : pipeservers) ps->set_layout(balancer.layout());
     }
   }
   return 0;

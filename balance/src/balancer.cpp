@@ -15,7 +15,7 @@ StripEdges first_strips(const Wall& wall) {
             wall.tiling.substrip_count};
   }
   const int tiles = static_cast<int>(make_logical_tiles(wall).size());
-  const int strips = std::clamp(wall.server_count, 1, wall.canvas_height);
+  const int strips = std::clamp(wall.pipeserver_count, 1, wall.canvas_height);
   return {wall.canvas_width, wall.canvas_height, strips,
           std::clamp(tiles / strips, 1, wall.canvas_width)};
 }
@@ -84,7 +84,7 @@ TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const 
   if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
   std::vector<double> cost;
   for (const Rect& r : make_logical_tiles(wall)) cost.push_back(estimate->cost(r));
-  return plan_layout(wall, assign_heaviest_first(cost, wall.server_count));
+  return plan_layout(wall, assign_heaviest_first(cost, wall.pipeserver_count));
 }
 
 BalanceStep Balancer::next(const TileSeconds& seconds) {
@@ -109,8 +109,8 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
     return {false, e.what()};
   }
   grid_ = std::move(grid);
-  const bool changed =
-      planned.logical_tiles != layout_.logical_tiles || planned.tile_server != layout_.tile_server;
+  const bool changed = planned.logical_tiles != layout_.logical_tiles ||
+                       planned.tile_pipeserver != layout_.tile_pipeserver;
   layout_ = std::move(planned);
   return {changed, ""};
 }

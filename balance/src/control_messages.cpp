@@ -64,7 +64,7 @@ constexpr long long kMaxFrame = 1LL << 30;
 }  // namespace
 
 std::string encode(const TimesMessage& m) {
-  std::string out = fmt::format("TIMES {} {} {}", m.frame, m.server, m.seconds.size());
+  std::string out = fmt::format("TIMES {} {} {}", m.frame, m.pipeserver, m.seconds.size());
   for (double s : m.seconds) out += fmt::format(" {}", s);  // shortest exact form
   return out;
 }
@@ -73,7 +73,7 @@ std::string encode(const LayoutMessage& m) {
   std::string out = fmt::format("LAYOUT {} {}", m.frame, m.tiles.size());
   for (std::size_t i = 0; i < m.tiles.size(); ++i) {
     const Rect& r = m.tiles[i];
-    out += fmt::format(" {} {} {} {} {}", r.x, r.y, r.w, r.h, m.servers[i]);
+    out += fmt::format(" {} {} {} {} {}", r.x, r.y, r.w, r.h, m.pipeservers[i]);
   }
   return out;
 }
@@ -83,7 +83,7 @@ TimesMessage decode_times(std::string_view line) {
   w.keyword("TIMES");
   TimesMessage m;
   m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
-  m.server = static_cast<int>(w.integer("server", 0, kMaxPipeservers - 1));
+  m.pipeserver = static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1));
   const auto n = w.integer("tile count", 0, kMaxControlTiles);
   for (long long i = 0; i < n; ++i) m.seconds.push_back(w.seconds());
   w.end();
@@ -103,7 +103,7 @@ LayoutMessage decode_layout(std::string_view line) {
     r.w = static_cast<int>(w.integer("width", 1, 65535));
     r.h = static_cast<int>(w.integer("height", 1, 65535));
     m.tiles.push_back(r);
-    m.servers.push_back(static_cast<int>(w.integer("server", 0, kMaxPipeservers - 1)));
+    m.pipeservers.push_back(static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1)));
   }
   w.end();
   return m;
@@ -113,9 +113,10 @@ LayoutMessage layout_message(int frame, const TileLayout& layout) {
   LayoutMessage m;
   m.frame = frame;
   m.tiles = layout.logical_tiles;
-  m.servers.assign(layout.logical_tiles.size(), 0);
+  m.pipeservers.assign(layout.logical_tiles.size(), 0);
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
-    m.servers[static_cast<std::size_t>(layout.tiles[i].logical_tile)] = layout.tile_server[i];
+    m.pipeservers[static_cast<std::size_t>(layout.tiles[i].logical_tile)] =
+        layout.tile_pipeserver[i];
   }
   return m;
 }
@@ -125,7 +126,7 @@ TileLayout plan_from_message(const Wall& wall, const LayoutMessage& m) {
   w.tiling = {};
   w.tiling.kind = TilingKind::List;
   w.tiling.rects = m.tiles;
-  return plan_layout(w, m.servers);
+  return plan_layout(w, m.pipeservers);
 }
 
 }  // namespace l2

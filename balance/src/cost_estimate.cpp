@@ -62,12 +62,12 @@ CostEstimate::CostEstimate(std::vector<CostPatch> patches) : patches_(std::move(
 }
 
 CostEstimate CostEstimate::from_layout(const TileLayout& layout, const TileSeconds& seconds) {
-  if (seconds.size() != layout.servers.size()) {
+  if (seconds.size() != layout.pipeservers.size()) {
     throw std::invalid_argument("render times: one list per pipeserver needed");
   }
   std::vector<CostPatch> patches;
   for (std::size_t s = 0; s < seconds.size(); ++s) {
-    const auto& tiles = layout.servers[s].tiles;
+    const auto& tiles = layout.pipeservers[s].tiles;
     if (seconds[s].size() != tiles.size()) {
       throw std::invalid_argument("render times: one time per packed tile needed");
     }

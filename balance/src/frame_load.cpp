@@ -8,8 +8,8 @@ namespace l2 {
 FrameLoad frame_load(const TileSeconds& seconds) {
   if (seconds.empty()) return {};
   double max = 0, sum = 0;
-  for (const auto& server : seconds) {
-    const double t = std::accumulate(server.begin(), server.end(), 0.0);
+  for (const auto& pipeserver : seconds) {
+    const double t = std::accumulate(pipeserver.begin(), pipeserver.end(), 0.0);
     max = std::max(max, t);
     sum += t;
   }

@@ -40,7 +40,7 @@ TEST(Balancer, StripsMoveToTheCostAndKeepThePolicy) {
   EXPECT_EQ(
       b.layout().logical_tiles,
       (std::vector<Rect>{{0, 0, 33, 38}, {33, 0, 67, 38}, {0, 38, 43, 62}, {43, 38, 57, 62}}));
-  EXPECT_EQ(b.layout().tile_server, (std::vector<int>{0, 1, 0, 1}));
+  EXPECT_EQ(b.layout().tile_pipeserver, (std::vector<int>{0, 1, 0, 1}));
 }
 
 TEST(Balancer, AssignmentGivesTheHeaviestTileToTheFirstToFinish) {
@@ -48,7 +48,7 @@ TEST(Balancer, AssignmentGivesTheHeaviestTileToTheFirstToFinish) {
   b.next(kHeavyTopLeft);
   // Predicted costs of the new tiles: 3.762, 3.838, 3.698, 3.702. 3.838 -> 0, 3.762 -> 1,
   // 3.702 -> 1 (at 3.762 it finishes first), 3.698 -> 0.
-  EXPECT_EQ(b.layout().tile_server, (std::vector<int>{1, 0, 0, 1}));
+  EXPECT_EQ(b.layout().tile_pipeserver, (std::vector<int>{1, 0, 0, 1}));
 }
 
 TEST(Balancer, ALayoutThatDoesNotFitIsNotUsed) {

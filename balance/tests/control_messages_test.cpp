@@ -16,7 +16,7 @@ TEST(ControlMessages, TimesRoundTrip) {
   EXPECT_EQ(line, "TIMES 7 2 3 0.0125 0.5 0");
   const TimesMessage m = decode_times(line);
   EXPECT_EQ(m.frame, 7);
-  EXPECT_EQ(m.server, 2);
+  EXPECT_EQ(m.pipeserver, 2);
   EXPECT_EQ(m.seconds, (std::vector<double>{0.0125, 0.5, 0}));
 }
 
@@ -26,7 +26,7 @@ TEST(ControlMessages, LayoutRoundTrip) {
   const LayoutMessage d = decode_layout(encode(m));
   EXPECT_EQ(d.frame, 3);
   EXPECT_EQ(d.tiles, m.tiles);
-  EXPECT_EQ(d.servers, m.servers);
+  EXPECT_EQ(d.pipeservers, m.pipeservers);
 }
 
 void expect_error(std::string_view line, bool layout, const std::string& what) {
@@ -44,7 +44,7 @@ void expect_error(std::string_view line, bool layout, const std::string& what) {
 TEST(ControlMessages, BadLinesAreOneLineErrors) {
   expect_error("READY 1", false, "control line 'READY 1': not a TIMES message");
   expect_error("TIMES 1 300 0", false,
-               "control line 'TIMES 1 300 0': server must be an integer 0..255, got '300'");
+               "control line 'TIMES 1 300 0': pipeserver must be an integer 0..255, got '300'");
   expect_error("TIMES 1 0 2 0.5", false,
                "control line 'TIMES 1 0 2 0.5': a render time must be seconds >= 0, got ''");
   expect_error("TIMES 1 0 1 -1", false,
@@ -74,15 +74,15 @@ TEST(ControlMessages, APipeserverPlansWhatTheCoordinatorPlanned) {
   const TileLayout heard =
       plan_from_message(strips_wall(), decode_layout(encode(layout_message(1, planned))));
   EXPECT_EQ(heard.logical_tiles, planned.logical_tiles);
-  EXPECT_EQ(heard.tile_server, planned.tile_server);
-  ASSERT_EQ(heard.servers.size(), planned.servers.size());
-  for (std::size_t i = 0; i < heard.servers.size(); ++i) {
-    ASSERT_EQ(heard.servers[i].tiles.size(), planned.servers[i].tiles.size());
-    for (std::size_t t = 0; t < heard.servers[i].tiles.size(); ++t) {
-      EXPECT_EQ(heard.servers[i].tiles[t].fb_x, planned.servers[i].tiles[t].fb_x);
-      EXPECT_EQ(heard.servers[i].tiles[t].fb_y, planned.servers[i].tiles[t].fb_y);
-      EXPECT_EQ(heard.servers[i].tiles[t].tile.on_canvas,
-                planned.servers[i].tiles[t].tile.on_canvas);
+  EXPECT_EQ(heard.tile_pipeserver, planned.tile_pipeserver);
+  ASSERT_EQ(heard.pipeservers.size(), planned.pipeservers.size());
+  for (std::size_t i = 0; i < heard.pipeservers.size(); ++i) {
+    ASSERT_EQ(heard.pipeservers[i].tiles.size(), planned.pipeservers[i].tiles.size());
+    for (std::size_t t = 0; t < heard.pipeservers[i].tiles.size(); ++t) {
+      EXPECT_EQ(heard.pipeservers[i].tiles[t].fb_x, planned.pipeservers[i].tiles[t].fb_x);
+      EXPECT_EQ(heard.pipeservers[i].tiles[t].fb_y, planned.pipeservers[i].tiles[t].fb_y);
+      EXPECT_EQ(heard.pipeservers[i].tiles[t].tile.on_canvas,
+                planned.pipeservers[i].tiles[t].tile.on_canvas);
     }
   }
 }

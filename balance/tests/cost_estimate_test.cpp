@@ -49,7 +49,7 @@ Wall two_tile_wall() {
   w.canvas_height = 50;
   w.tiling.kind = TilingKind::List;
   w.tiling.rects = {{0, 0, 50, 50}, {50, 0, 50, 50}};
-  w.server_count = 2;
+  w.pipeserver_count = 2;
   w.framebuffer_width = 128;
   w.framebuffer_height = 64;
   return w;

@@ -15,7 +15,7 @@ inline Wall strips_wall(int fb_width = 256, int fb_height = 256) {
   w.canvas_width = w.canvas_height = 100;
   w.tiling.kind = TilingKind::Strips;
   w.tiling.strip_count = w.tiling.substrip_count = 2;
-  w.server_count = 2;
+  w.pipeserver_count = 2;
   w.framebuffer_width = fb_width;
   w.framebuffer_height = fb_height;
   return w;

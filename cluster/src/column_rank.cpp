@@ -24,7 +24,7 @@ using mpi_wire::Reader;
 using mpi_wire::Record;
 
 struct ColumnInput {
-  int server = 0;
+  int pipeserver = 0;
   std::unique_ptr<MpiDviReceiver> receiver;
   int stamp = -1;  // the frame stamp of the frame taken in
 };
@@ -45,16 +45,16 @@ class Column {
     // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be a
     // second round trip to the coordinator.
     router_.predict_layouts(false);
-    for (const int s : map.servers_of_column[column]) {
-      const ServerPlan& plan = layout.servers[static_cast<std::size_t>(s)];
+    for (const int s : map.pipeservers_of_column[column]) {
+      const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(s)];
       inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
                                                              plan.fb_height)});
     }
     if (o.path == "both") {
       std::vector<std::pair<int, int>> sizes;
       for (const Display& d : layout.wall.displays) sizes.emplace_back(d.width, d.height);
-      assembler_.emplace(std::move(sizes), map.servers);
-      for (int s = 0; s < map.servers; ++s) {
+      assembler_.emplace(std::move(sizes), map.pipeservers);
+      for (int s = 0; s < map.pipeservers; ++s) {
         if (const Status joined = assembler_->connect(s); !joined.ok())
           throw std::runtime_error(joined.reason());
       }
@@ -98,7 +98,7 @@ class Column {
 
  private:
   static Mesh mesh(const Wall& wall) {
-    return Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+    return Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                      {wall.board_max_width, wall.board_max_height});
   }
 
@@ -111,7 +111,7 @@ class Column {
     return out;
   }
 
-  // [kTick, refresh, n, swapped group indices..., n, sequence per server...]
+  // [kTick, refresh, n, swapped group indices..., n, sequence per pipeserver...]
   void tick(Reader& in) {
     const std::int64_t refresh = in.next();
     bool swapped = false;
@@ -127,13 +127,13 @@ class Column {
     std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
     for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
     for (ColumnInput& input : inputs_) {
-      input.receiver->take(sequences[static_cast<std::size_t>(input.server)], pump_);
+      input.receiver->take(sequences[static_cast<std::size_t>(input.pipeserver)], pump_);
       const auto f = input.receiver->latest();
-      InputFrame& frame = frames_[static_cast<std::size_t>(input.server)];
+      InputFrame& frame = frames_[static_cast<std::size_t>(input.pipeserver)];
       frame = {};
       if (!f) continue;
       frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
-      const ServerPlan& plan = layout_.servers[static_cast<std::size_t>(input.server)];
+      const PipeserverPlan& plan = layout_.pipeservers[static_cast<std::size_t>(input.pipeserver)];
       input.stamp =
           plan.tiles.empty()
               ? -1
@@ -150,24 +150,24 @@ class Column {
                    });
   }
 
-  // [refresh, n, (server, present, idle, torn, parity, displays fed, stamp)...,
-  //  n, (server, stamp on its display)..., n, (display, frame shown)...]
+  // [refresh, n, (pipeserver, present, idle, torn, parity, displays fed, stamp)...,
+  //  n, (pipeserver, stamp on its display)..., n, (display, frame shown)...]
   Record observation(std::int64_t refresh) const {
     Record r{refresh, static_cast<std::int64_t>(inputs_.size())};
     for (const ColumnInput& input : inputs_) {
-      const InputFrameStats& st = router_.scanned(input.server);
-      r.insert(r.end(), {input.server, st.present, st.idle(), st.torn(), st.parity(),
+      const InputFrameStats& st = router_.scanned(input.pipeserver);
+      r.insert(r.end(), {input.pipeserver, st.present, st.idle(), st.torn(), st.parity(),
                          static_cast<std::int64_t>(st.displays_fed), input.stamp});
     }
     Record shown;
-    for (const ServerPlan& plan : layout_.servers) {
+    for (const PipeserverPlan& plan : layout_.pipeservers) {
       if (plan.tiles.empty()) continue;
       const DisplayTile& t = plan.tiles.front().tile;
       const int index = router_.index_of_display(t.display);
       if (index < 0) continue;
       const RgbImage& front = router_.display(index).front();
-      shown.insert(shown.end(), {plan.server, decode_stamp(front.row(t.on_display.y).data() +
-                                                           t.on_display.x * 3)});
+      shown.insert(shown.end(), {plan.pipeserver, decode_stamp(front.row(t.on_display.y).data() +
+                                                               t.on_display.x * 3)});
     }
     r.push_back(static_cast<std::int64_t>(shown.size() / 2));
     r.insert(r.end(), shown.begin(), shown.end());
@@ -184,8 +184,8 @@ class Column {
     router_.write(chosen);
     // The frame a display's next picture holds: the newest stamp routed into it.
     for (const ColumnInput& input : inputs_) {
-      if (!chosen[static_cast<std::size_t>(input.server)]) continue;
-      const std::uint64_t fed = router_.scanned(input.server).displays_fed;
+      if (!chosen[static_cast<std::size_t>(input.pipeserver)]) continue;
+      const std::uint64_t fed = router_.scanned(input.pipeserver).displays_fed;
       for (int d = 0; d < router_.display_count(); ++d) {
         if (fed >> router_.display(d).id() & 1) {
           int& f = back_frame_[static_cast<std::size_t>(d)];
@@ -219,8 +219,8 @@ class Column {
       mpi_wire::TileMessage m;
       if (tile_bytes_.size() < sizeof m) throw std::runtime_error("a tile message too short");
       std::memcpy(&m, tile_bytes_.data(), sizeof m);
-      const auto server = map_.server_of(status.MPI_SOURCE);
-      if (!server) throw std::runtime_error("a tile from a rank that is no pipeserver");
+      const auto pipeserver = map_.pipeserver_of(status.MPI_SOURCE);
+      if (!pipeserver) throw std::runtime_error("a tile from a rank that is no pipeserver");
       Status taken;
       if (m.kind == mpi_wire::kTileKind) {
         viz::ReceivedTile tile{
@@ -231,10 +231,10 @@ class Column {
                 static_cast<std::uint32_t>(tile.header.fixed_size() + tile.pixels.size()));
             !valid.ok())
           throw std::runtime_error("a tile message: " + valid.reason());
-        taken = assembler_->add_tile(*server, std::move(tile));
+        taken = assembler_->add_tile(*pipeserver, std::move(tile));
       } else {
-        taken =
-            assembler_->finish(*server, {static_cast<std::uint32_t>(*server), m.frame, m.tiles});
+        taken = assembler_->finish(*pipeserver,
+                                   {static_cast<std::uint32_t>(*pipeserver), m.frame, m.tiles});
       }
       if (!taken.ok()) throw std::runtime_error(taken.reason());
     }

@@ -57,7 +57,7 @@ std::string MpiDviPath::lost_message(int rank) const {
 bool MpiDviPath::take_notices(HostSet& hosts) {
   bool fresh = false;
   for (Host& h : hosts.hosts()) {
-    const int rank = map_.pipeserver_rank(h.server);
+    const int rank = map_.pipeserver_rank(h.pipeserver);
     while (mpi_wire::waiting(rank, mpi_wire::kNotice)) {
       const Record notice = mpi_wire::receive(rank, mpi_wire::kNotice);
       h.sequence = static_cast<std::uint64_t>(Reader(notice).next());
@@ -81,7 +81,7 @@ void MpiDviPath::open(HostSet& hosts, std::chrono::milliseconds timeout, const R
     if (RunClock::now() > deadline) {
       std::string missing;
       for (const Host& h : all)
-        if (h.sequence == 0) missing += fmt::format(" {}", h.server);
+        if (h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
     }
@@ -127,19 +127,19 @@ void MpiDviPath::refresh(HostSet& hosts) {
     if (in.next() != index)
       throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
     for (int n = in.next_int(); n > 0; --n) {
-      const int server = in.next_int();
-      FrameObservation& o = observations_[static_cast<std::size_t>(server)];
+      const int pipeserver = in.next_int();
+      FrameObservation& o = observations_[static_cast<std::size_t>(pipeserver)];
       o.present = in.next() != 0;
       o.idle = in.next() != 0;
       o.torn = in.next() != 0;
       o.parity = in.next_int();
       // Each column sees the strips for its own displays: together, every display fed.
       o.groups_fed |= groups_of_displays(static_cast<std::uint64_t>(in.next()));
-      stamps_[static_cast<std::size_t>(server)] = in.next_int();
+      stamps_[static_cast<std::size_t>(pipeserver)] = in.next_int();
     }
     for (int n = in.next_int(); n > 0; --n) {
-      const int server = in.next_int();
-      stamp_shown_[static_cast<std::size_t>(server)] = in.next_int();
+      const int pipeserver = in.next_int();
+      stamp_shown_[static_cast<std::size_t>(pipeserver)] = in.next_int();
     }
     for (int n = in.next_int(); n > 0; --n) {
       const int display = in.next_int();
@@ -310,7 +310,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
 void MpiDviPath::finish() {
   std::uint64_t frame_bytes = 0, tile_bytes = 0;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
-  for (int s = 0; s < map_.servers; ++s) {
+  for (int s = 0; s < map_.pipeservers; ++s) {
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
       if (RunClock::now() > deadline)
         throw RunFault(fmt::format("pipeserver {} (rank {}) did not end after the last frame", s,

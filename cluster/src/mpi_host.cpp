@@ -15,13 +15,13 @@
 
 namespace l2 {
 
-MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
                             std::shared_ptr<std::uint64_t> bytes_sent) {
   const RankMap map = make_rank_map(layout);
   std::vector<int> ranks;
-  for (const int c : map.columns_of_server[static_cast<std::size_t>(server)])
+  for (const int c : map.columns_of_pipeserver[static_cast<std::size_t>(pipeserver)])
     ranks.push_back(map.column_rank(c));
-  const ServerPlan& plan = layout.servers[static_cast<std::size_t>(server)];
+  const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(pipeserver)];
   MpiHostLinks links;
   links.link = std::make_unique<MpiDviSender>(std::move(ranks), RankMap::kCoordinator,
                                               plan.fb_width, plan.fb_height, std::move(bytes_sent));

@@ -41,12 +41,12 @@ class MpiBackends final : public RunBackends {
   }
   void start_hosts(HostSet& hosts, const HostLaunch& launch,
                    const TileLayout& layout) const override {
-    hosts.attach(launch, layout, [this](int server) -> std::unique_ptr<ReadyChannel> {
-      const int rank = map_.pipeserver_rank(server);
+    hosts.attach(launch, layout, [this](int pipeserver) -> std::unique_ptr<ReadyChannel> {
+      const int rank = map_.pipeserver_rank(pipeserver);
       return std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
     });
     for (Host& h : hosts.hosts()) {
-      const int rank = map_.pipeserver_rank(h.server);
+      const int rank = map_.pipeserver_rank(h.pipeserver);
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
       h.place = fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid);
     }
@@ -59,11 +59,11 @@ class MpiBackends final : public RunBackends {
   int stall_timeout_ms_;
 };
 
-// Becomes pipeserver `server`; returns only when that failed.
-int exec_pipeserver(const RunOptions& o, int server) {
+// Becomes pipeserver `pipeserver`; returns only when that failed.
+int exec_pipeserver(const RunOptions& o, int pipeserver) {
   Host h;
-  h.server = server;
-  h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", server)).string();
+  h.pipeserver = pipeserver;
+  h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", pipeserver)).string();
   HostLaunch launch = host_launch(o);
   launch.extra_args = {"--mpi"};
   if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
@@ -74,7 +74,7 @@ int exec_pipeserver(const RunOptions& o, int server) {
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   execv(argv[0], argv.data());
-  std::fprintf(stderr, "l2wall: pipeserver %d: cannot run %s: %s\n", server, argv[0],
+  std::fprintf(stderr, "l2wall: pipeserver %d: cannot run %s: %s\n", pipeserver, argv[0],
                std::strerror(errno));
   return 1;
 }
@@ -127,7 +127,8 @@ int run_wall_mpi(const RunOptions& o) {
   }
   if (const Status s = balance_refusal(o, layout->wall, true); !s.ok()) return refuse(s.reason());
   if (const Status s = rank_count_error(*map, launched->size); !s.ok()) return refuse(s.reason());
-  if (const auto server = map->server_of(launched->rank)) return exec_pipeserver(o, *server);
+  if (const auto pipeserver = map->pipeserver_of(launched->rank))
+    return exec_pipeserver(o, *pipeserver);
   const auto column = map->column_of(launched->rank);
   std::optional<ColumnShow> show;
   if (column && !o.show.empty()) {

@@ -30,7 +30,7 @@ void MpiVizPath::pump() {
   const long everywhere = *std::min_element(composed_.begin(), composed_.end());
   if (everywhere <= swapped_) return;
   swapped_ = everywhere;
-  for (int s = 0; s < map_.servers; ++s)
+  for (int s = 0; s < map_.pipeservers; ++s)
     mpi_wire::send({swapped_}, map_.pipeserver_rank(s), mpi_wire::kSwapped);
 }
 

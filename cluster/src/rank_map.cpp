@@ -8,39 +8,39 @@
 
 namespace l2 {
 
-std::optional<int> RankMap::server_of(int rank) const {
-  if (rank >= 1 && rank <= servers) return rank - 1;
+std::optional<int> RankMap::pipeserver_of(int rank) const {
+  if (rank >= 1 && rank <= pipeservers) return rank - 1;
   return std::nullopt;
 }
 
 std::optional<int> RankMap::column_of(int rank) const {
-  if (rank > servers && rank < size()) return rank - 1 - servers;
+  if (rank > pipeservers && rank < size()) return rank - 1 - pipeservers;
   return std::nullopt;
 }
 
 std::string RankMap::role(int rank) const {
   if (rank == kCoordinator) return "coordinator";
-  if (const auto s = server_of(rank)) return fmt::format("pipeserver {}", *s);
+  if (const auto s = pipeserver_of(rank)) return fmt::format("pipeserver {}", *s);
   if (const auto c = column_of(rank)) return fmt::format("board column {}", *c);
   return fmt::format("rank {} (none of the wall's roles)", rank);
 }
 
 RankMap make_rank_map(const TileLayout& layout) {
   const Wall& wall = layout.wall;
-  const Mesh mesh = Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+  const Mesh mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                               {wall.board_max_width, wall.board_max_height});
   RankMap map;
-  map.servers = static_cast<int>(layout.servers.size());
+  map.pipeservers = static_cast<int>(layout.pipeservers.size());
   map.columns = mesh.columns();
   map.mesh_inputs = mesh.input_count();
-  map.columns_of_server.resize(static_cast<std::size_t>(map.servers));
-  map.servers_of_column.resize(static_cast<std::size_t>(map.columns));
+  map.columns_of_pipeserver.resize(static_cast<std::size_t>(map.pipeservers));
+  map.pipeservers_of_column.resize(static_cast<std::size_t>(map.columns));
   map.displays_of_column.resize(static_cast<std::size_t>(map.columns));
   for (const Display& d : wall.displays)
     map.displays_of_column[static_cast<std::size_t>(Mesh::column_of_display(d.id))].push_back(d.id);
   for (auto& ids : map.displays_of_column) std::sort(ids.begin(), ids.end());
-  for (const ServerPlan& plan : layout.servers) {
-    auto& columns = map.columns_of_server[static_cast<std::size_t>(plan.server)];
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    auto& columns = map.columns_of_pipeserver[static_cast<std::size_t>(plan.pipeserver)];
     for (const PackedTile& t : plan.tiles)
       columns.push_back(Mesh::column_of_display(t.tile.display));
     // A host with no tile still shows a signal (only its headers' absence): column 0 takes it
@@ -49,7 +49,7 @@ RankMap make_rank_map(const TileLayout& layout) {
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     for (const int c : columns)
-      map.servers_of_column[static_cast<std::size_t>(c)].push_back(plan.server);
+      map.pipeservers_of_column[static_cast<std::size_t>(c)].push_back(plan.pipeserver);
   }
   return map;
 }
@@ -61,7 +61,7 @@ Status rank_count_error(const RankMap& map, int ranks) {
   };
   return Failure{fmt::format(
       "--mpi: this wall needs mpirun -np {} (1 coordinator + {} + {}), got {} ranks", map.size(),
-      count(map.servers, "pipeserver"), count(map.columns, "board column"), ranks)};
+      count(map.pipeservers, "pipeserver"), count(map.columns, "board column"), ranks)};
 }
 
 }  // namespace l2

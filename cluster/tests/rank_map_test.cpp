@@ -11,7 +11,7 @@ namespace {
 
 TEST(RankMap, DefaultWallIsOneColumnOfFourInputs) {
   const RankMap map = make_rank_map(plan_layout(default_wall()));
-  EXPECT_EQ(map.servers, 4);
+  EXPECT_EQ(map.pipeservers, 4);
   EXPECT_EQ(map.columns, 1);
   EXPECT_EQ(map.size(), 6);
   EXPECT_EQ(map.role(0), "coordinator");
@@ -19,15 +19,15 @@ TEST(RankMap, DefaultWallIsOneColumnOfFourInputs) {
   EXPECT_EQ(map.role(4), "pipeserver 3");
   EXPECT_EQ(map.role(5), "board column 0");
   EXPECT_EQ(map.column_rank(0), 5);
-  EXPECT_EQ(map.servers_of_column[0], (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(map.pipeservers_of_column[0], (std::vector<int>{0, 1, 2, 3}));
   EXPECT_EQ(map.displays_of_column[0], (std::vector<int>{0, 1, 2, 3}));
-  for (const auto& columns : map.columns_of_server) EXPECT_EQ(columns, std::vector<int>{0});
+  for (const auto& columns : map.columns_of_pipeserver) EXPECT_EQ(columns, std::vector<int>{0});
 }
 
 TEST(RankMap, TwelveMonitorsAreTwoColumns) {
   const RankMap map =
       make_rank_map(plan_layout(load_wall(L2_SOURCE_DIR "/walls/monitors-4x3.toml")));
-  EXPECT_EQ(map.servers, 8);
+  EXPECT_EQ(map.pipeservers, 8);
   EXPECT_EQ(map.columns, 2);
   EXPECT_EQ(map.size(), 11);
   EXPECT_EQ(map.role(9), "board column 0");
@@ -35,11 +35,11 @@ TEST(RankMap, TwelveMonitorsAreTwoColumns) {
   EXPECT_EQ(map.displays_of_column[0], (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_EQ(map.displays_of_column[1], (std::vector<int>{8, 9, 10, 11}));
   // Every input reaches some column, and a column takes in exactly the inputs that feed it.
-  for (int s = 0; s < map.servers; ++s) {
-    ASSERT_FALSE(map.columns_of_server[s].empty());
-    for (const int c : map.columns_of_server[s]) {
-      const auto& fed = map.servers_of_column[c];
-      EXPECT_NE(std::find(fed.begin(), fed.end(), s), fed.end()) << "server " << s;
+  for (int s = 0; s < map.pipeservers; ++s) {
+    ASSERT_FALSE(map.columns_of_pipeserver[s].empty());
+    for (const int c : map.columns_of_pipeserver[s]) {
+      const auto& fed = map.pipeservers_of_column[c];
+      EXPECT_NE(std::find(fed.begin(), fed.end(), s), fed.end()) << "pipeserver " << s;
     }
   }
 }

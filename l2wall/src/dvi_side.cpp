@@ -15,7 +15,7 @@ EmulatorConfig emulator_config(const Wall& wall, int threads) {
   EmulatorConfig config;
   for (const Display& d : wall.displays)
     config.displays.push_back({d.id, d.width, d.height, d.swap_group});
-  config.mesh = Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+  config.mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                           {wall.board_max_width, wall.board_max_height});
   config.workers = threads;
   return config;
@@ -38,7 +38,7 @@ void record_new_frames(HostSet& hosts, std::vector<FrameRecord>& records,
     h.accepted = stamp(i);
     if (h.accepted < 0 || h.accepted >= frames)
       throw RunFault(
-          fmt::format("pipeserver {}: frame stamp {} out of range", h.server, h.accepted));
+          fmt::format("pipeserver {}: frame stamp {} out of range", h.pipeserver, h.accepted));
     FrameRecord& r = records[static_cast<std::size_t>(h.accepted)];
     if (std::find(credited.begin(), credited.end(), h.accepted) == credited.end()) {
       credited.push_back(h.accepted);

@@ -64,7 +64,7 @@ void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>
   const Rgb stamp{static_cast<std::uint8_t>(frame & 0xFF),
                   static_cast<std::uint8_t>((frame >> 8) & 0xFF),
                   static_cast<std::uint8_t>((frame >> 16) & 0xFF)};
-  for (const ServerPlan& plan : layout.servers) {
+  for (const PipeserverPlan& plan : layout.pipeservers) {
     if (plan.tiles.empty()) continue;
     const DisplayTile& t = plan.tiles.front().tile;
     references.at(t.display).set(t.on_display.x, t.on_display.y, stamp);

@@ -29,7 +29,7 @@ EmulatorConfig emulator_config(const Wall& wall) {
   for (const Display& d : wall.displays) {
     config.displays.push_back({d.id, d.width, d.height, d.swap_group});
   }
-  config.mesh = Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+  config.mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                           {wall.board_max_width, wall.board_max_height});
   config.workers = 1;  // the result does not depend on it; one keeps the check light
   return config;
@@ -63,26 +63,26 @@ std::vector<RgbImage> compose_on_vizserver(const TileLayout& layout,
   viz::ServerOptions options;
   for (const Display& d : layout.wall.displays)
     options.display_sizes.emplace_back(d.width, d.height);
-  options.servers = static_cast<int>(layout.servers.size());
+  options.pipeservers = static_cast<int>(layout.pipeservers.size());
   options.accept_timeout = milliseconds(10000);
   viz::CompositingServer server(options);
   server.start();
   const int display_count = static_cast<int>(layout.wall.displays.size());
   std::vector<viz::TileSender> senders;
-  for (const ServerPlan& plan : layout.servers) {
+  for (const PipeserverPlan& plan : layout.pipeservers) {
     senders.push_back(
-        viz::TileSender::connect("127.0.0.1", server.port(), plan.server, display_count));
+        viz::TileSender::connect("127.0.0.1", server.port(), plan.pipeserver, display_count));
   }
   // Each pipeserver sends its tiles straight out of its scanned-out frame, as a live host does.
   const auto k = static_cast<std::uint32_t>(frame);
-  for (const ServerPlan& plan : layout.servers) {
-    const RgbImage& fb = frames.at(plan.server);
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    const RgbImage& fb = frames.at(plan.pipeserver);
     for (const PackedTile& t : plan.tiles) {
-      senders[plan.server].send_tile(k, viz_target(t.tile),
-                                     fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3,
-                                     fb.stride());
+      senders[plan.pipeserver].send_tile(
+          k, viz_target(t.tile), fb.row(t.fb_y).data() + static_cast<std::size_t>(t.fb_x) * 3,
+          fb.stride());
     }
-    senders[plan.server].finish_frame(k, static_cast<std::uint32_t>(plan.tiles.size()));
+    senders[plan.pipeserver].finish_frame(k, static_cast<std::uint32_t>(plan.tiles.size()));
   }
   const viz::FramePtr composed = server.wait_frame(k, milliseconds(30000));
   // Read SWAPPED before closing, so no connection is reset with a message unread.
@@ -107,7 +107,8 @@ EntryDisplays produce_test_pattern(const TileLayout& layout, int frame, bool viz
   EntryDisplays out;
   out.ids = display_ids(layout.wall);
   std::vector<RgbImage> frames;
-  for (const ServerPlan& plan : layout.servers) frames.push_back(test_frame(plan, frame % 2 == 1));
+  for (const PipeserverPlan& plan : layout.pipeservers)
+    frames.push_back(test_frame(plan, frame % 2 == 1));
   out.emulator = emulate_displays(layout, frames, out.input_errors);
   if (vizserver) out.vizserver = compose_on_vizserver(layout, frames, frame);
   out.reference = test_pattern_displays(layout);
@@ -120,13 +121,13 @@ EntryDisplays produce_from_captured(const TileLayout& layout, const std::filesys
   out.ids = display_ids(layout.wall);
   std::vector<RgbImage> frames;
   std::vector<std::string> names;
-  for (const ServerPlan& plan : layout.servers) {
-    const auto file = dir / fmt::format("scanout-{}.png", plan.server);
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    const auto file = dir / fmt::format("scanout-{}.png", plan.pipeserver);
     if (!std::filesystem::exists(file)) {
       throw std::runtime_error(
           fmt::format("{}: missing: the wall has {} pipeservers, give "
                       "scanout-0.png .. scanout-{}.png",
-                      file.string(), layout.servers.size(), layout.servers.size() - 1));
+                      file.string(), layout.pipeservers.size(), layout.pipeservers.size() - 1));
     }
     frames.push_back(read_scanned_frame(file));
     names.push_back(file.string());

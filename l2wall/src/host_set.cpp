@@ -28,7 +28,7 @@ int frames_reported(const std::string& host_log) {
 
 std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
   std::vector<std::string> argv{l.pipeserver,      "--live",
-                                "--server",        std::to_string(h.server),
+                                "--pipeserver",    std::to_string(h.pipeserver),
                                 "--frames",        std::to_string(l.frames),
                                 "--scene",         l.scene,
                                 "--report",        h.report_path,
@@ -53,7 +53,7 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
 
 namespace {
 
-StampSpot stamp_spot(const ServerPlan& plan) {
+StampSpot stamp_spot(const PipeserverPlan& plan) {
   if (plan.tiles.empty()) return {};
   const PackedTile& t = plan.tiles.front();
   return {t.fb_x, t.fb_y, t.tile.display, t.tile.on_display.x, t.tile.on_display.y};
@@ -82,16 +82,16 @@ void HostSet::place_stamps(const TileLayout& layout, int from) {
     Host& h = hosts_[i];
     const StampSpot before = h.stamps.empty() ? StampSpot{} : h.stamps.back();
     h.stamps.resize(at, before);
-    h.stamps.push_back(stamp_spot(layout.servers[i]));
+    h.stamps.push_back(stamp_spot(layout.pipeservers[i]));
   }
 }
 
 void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
-  for (std::size_t i = 0; i < layout.servers.size(); ++i) {
+  for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
     Host& h = hosts_.emplace_back();
-    h.server = static_cast<int>(i);
+    h.pipeserver = static_cast<int>(i);
     h.link_name = dvi_link_name(fmt::format("in{}", i));
     h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
     std::filesystem::remove(h.report_path);
@@ -105,15 +105,15 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
 }
 
 void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
-                     const std::function<std::unique_ptr<ReadyChannel>(int server)>& channel) {
+                     const std::function<std::unique_ptr<ReadyChannel>(int pipeserver)>& channel) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
-  for (std::size_t i = 0; i < layout.servers.size(); ++i) {
+  for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
     Host& h = hosts_.emplace_back();
-    h.server = static_cast<int>(i);
+    h.pipeserver = static_cast<int>(i);
     // Its own (it may have started writing it already).
     h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
-    h.channel = channel(h.server);
+    h.channel = channel(h.pipeserver);
   }
   place_stamps(layout, 0);
 }
@@ -138,7 +138,7 @@ Host* HostSet::killed_by_signal() {
 }
 
 std::string HostSet::describe_end(const Host& h, const std::string& on_displays) const {
-  return fmt::format("pipeserver {} (pid {}) {} while rendering frame {}; {}", h.server,
+  return fmt::format("pipeserver {} (pid {}) {} while rendering frame {}; {}", h.pipeserver,
                      h.process ? h.process->pid() : -1,
                      h.exit ? h.exit->describe() : std::string("ended"), delivered(h), on_displays);
 }
@@ -164,7 +164,7 @@ void HostSet::open_links(milliseconds timeout, const std::function<void()>& chec
     if (RunClock::now() > deadline) {
       std::string missing;
       for (const Host& h : hosts_)
-        if (!h.reader || h.sequence == 0) missing += fmt::format(" {}", h.server);
+        if (!h.reader || h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
     }
@@ -218,7 +218,7 @@ std::string HostSet::late_hosts(int shown) const {
   std::string culprits;
   for (const Host& h : hosts_) {
     if (delivered(h) < shown + 1)
-      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.server,
+      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.pipeserver,
                               h.process ? fmt::format("pid {}", h.process->pid()) : h.place);
   }
   return culprits;
@@ -251,7 +251,7 @@ void HostSet::finish(milliseconds timeout) {
         all = false;
       } else if (!h.exit->ok()) {
         throw RunFault(
-            fmt::format("pipeserver {} {} after the last frame", h.server, h.exit->describe()));
+            fmt::format("pipeserver {} {} after the last frame", h.pipeserver, h.exit->describe()));
       }
     }
     if (all) return;

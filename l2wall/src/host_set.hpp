@@ -34,7 +34,7 @@ struct StampSpot {
 // One pipeserver. Members are destroyed in reverse: the process is ended and reaped before the
 // link reader and the pty go away.
 struct Host {
-  int server = 0;
+  int pipeserver = 0;
   std::string link_name;
   std::string report_path;
   std::unique_ptr<PtyPair> pty;
@@ -82,10 +82,10 @@ class HostSet {
   // Starts one process per pipeserver of the layout.
   void start(const HostLaunch& launch, const TileLayout& layout);
   // Hosts this process did not start (MPI ranks, cluster/): no process, no link reader here;
-  // `channel(server)` is each one's back-channel. Their links are taken in elsewhere, and the
+  // `channel(pipeserver)` is each one's back-channel. Their links are taken in elsewhere, and the
   // path that does records Host::sequence.
   void attach(const HostLaunch& launch, const TileLayout& layout,
-              const std::function<std::unique_ptr<ReadyChannel>(int server)>& channel);
+              const std::function<std::unique_ptr<ReadyChannel>(int pipeserver)>& channel);
 
   // Frames `from` on carry their stamps where `layout` puts them.
   void place_stamps(const TileLayout& layout, int from);

@@ -16,8 +16,8 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
                          int frames)
     : balancer_(wall, settings),
       frames_(frames),
-      pending_(start.servers.size()),
-      have_(start.servers.size(), false),
+      pending_(start.pipeservers.size()),
+      have_(start.pipeservers.size(), false),
       frame_layout_(1, 0),
       strips_(1, 0),
       first_frame_(1, 0),
@@ -32,7 +32,7 @@ int LiveBalance::layout_of(int frame) const {
 void LiveBalance::serve(HostSet& hosts) {
   for (Host& h : hosts.hosts()) {
     if (!h.control) continue;
-    const std::size_t i = static_cast<std::size_t>(h.server);
+    const std::size_t i = static_cast<std::size_t>(h.pipeserver);
     while (!have_[i]) {
       std::optional<std::string> line;
       try {
@@ -45,13 +45,13 @@ void LiveBalance::serve(HostSet& hosts) {
       try {
         m = decode_times(*line);
       } catch (const ControlError& e) {
-        throw RunFault(fmt::format("pipeserver {}: {}", h.server, e.what()));
+        throw RunFault(fmt::format("pipeserver {}: {}", h.pipeserver, e.what()));
       }
-      if (m.frame != next_times_ || m.server != h.server) {
+      if (m.frame != next_times_ || m.pipeserver != h.pipeserver) {
         throw RunFault(
-            fmt::format("pipeserver {}: TIMES for frame {} of server {} while frame {} "
+            fmt::format("pipeserver {}: TIMES for frame {} of pipeserver {} while frame {} "
                         "is due",
-                        h.server, m.frame, m.server, next_times_));
+                        h.pipeserver, m.frame, m.pipeserver, next_times_));
       }
       pending_[i] = std::move(m.seconds);
       have_[i] = true;
@@ -91,7 +91,7 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
   lines_.push_back(line);
   // A new layout when its tiles or their pipeservers differ from the last frame's.
   int id = layout_of(frame - 1);
-  if (m.tiles != last_.tiles || m.servers != last_.servers) {
+  if (m.tiles != last_.tiles || m.pipeservers != last_.pipeservers) {
     id = static_cast<int>(strips_.size());
     strips_.push_back(0);
     first_frame_.push_back(frame);

@@ -168,7 +168,7 @@ class LiveRun {
     l.host = o_.viz_host;
     l.port = o_.viz_port;
     for (const Display& d : wall_.displays) l.display_sizes.emplace_back(d.width, d.height);
-    l.servers = static_cast<int>(layout_.servers.size());
+    l.pipeservers = static_cast<int>(layout_.pipeservers.size());
     l.frames = o_.frames;
     l.start_timeout = milliseconds(o_.start_timeout_ms);
     l.log = std::filesystem::path(o_.out) / "vizserver.log";
@@ -316,8 +316,8 @@ class LiveRun {
           return fmt::format(
               "pipeserver {} (pid {}) stopped answering{}: it did not deliver frame {}, and "
               "pipeserver {} gave up {} ({}); {}",
-              hung->server, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
-              ended->server, waiting_for(*ended), ended->exit->describe(), displays_showing());
+              hung->pipeserver, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
+              ended->pipeserver, waiting_for(*ended), ended->exit->describe(), displays_showing());
         }
       }
       for (auto& p : paths_) {
@@ -472,8 +472,8 @@ class OneMachine final : public RunBackends {
  public:
   std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                         const RunOptions& o) const override {
-    return std::make_unique<DviPath>(layout.wall, o.threads, layout.servers.size(), o.refresh_hz,
-                                     o.frames, o.drop_ready);
+    return std::make_unique<DviPath>(layout.wall, o.threads, layout.pipeservers.size(),
+                                     o.refresh_hz, o.frames, o.drop_ready);
   }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
     return std::make_unique<VizPath>(launch);

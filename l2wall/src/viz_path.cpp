@@ -44,7 +44,7 @@ Status VizPath::hang_behind(const Host& h, int shown, const std::string& showing
   if (side_->down() || !h.exit || h.exit->code != kExitLostCompositingServer) return {};
   return Failure{
       fmt::format("the {} stopped answering: pipeserver {} gave up waiting for it at frame {}; {}",
-                  side_->name(), h.server, shown, showing)};
+                  side_->name(), h.pipeserver, shown, showing)};
 }
 
 void VizPath::finish() {

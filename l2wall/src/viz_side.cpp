@@ -20,10 +20,10 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
   std::string sizes;
   for (const auto& [w, h] : l.display_sizes)
     sizes += fmt::format("{}{}x{}", sizes.empty() ? "" : ",", w, h);
-  return {l.vizserver, "--displays", sizes, "--servers", std::to_string(l.servers), "--viz-host",
-          l.host, "--viz-port", std::to_string(l.port), "--frames", std::to_string(l.frames),
-          "--display-stream", fmt::format("127.0.0.1:{}", stream_port), "--log", l.log.string(),
-          "--accept-timeout", std::to_string(l.start_timeout.count()),
+  return {l.vizserver, "--displays", sizes, "--pipeservers", std::to_string(l.pipeservers),
+          "--viz-host", l.host, "--viz-port", std::to_string(l.port), "--frames",
+          std::to_string(l.frames), "--display-stream", fmt::format("127.0.0.1:{}", stream_port),
+          "--log", l.log.string(), "--accept-timeout", std::to_string(l.start_timeout.count()),
           // A pipeserver that hangs is ours to name (the run's stall timeout), not the server's.
           "--stall-timeout", "0"};
 }
@@ -71,10 +71,10 @@ void VizSide::accept_stream(const Fd& listener, const VizLaunch& launch) {
     throw RunFault(e.what());  // e.g. "...: cannot listen on 127.0.0.1:5000: Address in use"
   }
   if (listening.display_count != launch.display_sizes.size() ||
-      listening.server_count != static_cast<std::uint32_t>(launch.servers)) {
+      listening.pipeserver_count != static_cast<std::uint32_t>(launch.pipeservers)) {
     throw RunFault(fmt::format("{} composes {} displays for {} pipeservers, the wall has {} and {}",
-                               who, listening.display_count, listening.server_count,
-                               launch.display_sizes.size(), launch.servers));
+                               who, listening.display_count, listening.pipeserver_count,
+                               launch.display_sizes.size(), launch.pipeservers));
   }
   port_ = static_cast<std::uint16_t>(listening.port);
   watcher_ = std::make_unique<viz::DisplayWatcher>(std::move(stream), who, listening.display_count,

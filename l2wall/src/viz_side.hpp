@@ -26,7 +26,7 @@ struct VizLaunch {
   std::string host = "127.0.0.1";
   int port = 0;  // 0: a free one
   std::vector<std::pair<int, int>> display_sizes;
-  int servers = 0;
+  int pipeservers = 0;
   int frames = 0;
   std::chrono::milliseconds start_timeout{60000};  // to listen, and for every HELLO
   std::filesystem::path log;                       // its listening and per-swap lines

@@ -81,7 +81,7 @@ TEST_F(GoldenCli, OneHeaderFieldChangedInAnInputFrameFailsWithADiffPicture) {
   EXPECT_NE(clean.output.find("DVI path only"), std::string::npos) << clean.output;
 
   const TileLayout layout = plan_layout(load_wall(kSource / "walls/kd-2x2.toml"));
-  const PackedTile& t = layout.servers[1].tiles[0];
+  const PackedTile& t = layout.pipeservers[1].tiles[0];
   const Rect& d = t.tile.on_display;
   const int r = 10;
   RgbImage frame = read_png(inputs / "scanout-1.png");

@@ -52,8 +52,8 @@ TEST(GoldenRouting, TestPatternArrivesInPlaceOnBothPaths) {
 TEST(GoldenRouting, AWrongHeaderFieldMovesItsStrip) {
   const TileLayout layout = example("kd-2x2.toml");
   std::vector<RgbImage> frames;
-  for (const ServerPlan& p : layout.servers) frames.push_back(test_frame(p, true));
-  const PackedTile& t = layout.servers[1].tiles[0];
+  for (const PipeserverPlan& p : layout.pipeservers) frames.push_back(test_frame(p, true));
+  const PackedTile& t = layout.pipeservers[1].tiles[0];
   const int r = 10;
   std::uint8_t* h = frames[1].row(t.fb_y + r).data() + (t.fb_x - 2) * 3;
   const Rect& d = t.tile.on_display;

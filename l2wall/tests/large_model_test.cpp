@@ -36,8 +36,8 @@ TEST(LargeModel, MillionTriangleSphereRendersLive) {
   // projects: the overlap factor (tile draws / batches) lies between 1 and the host's tiles.
   const TileLayout layout = plan_layout(default_wall());
   const std::regex figures("batches ([0-9]+) tile_draws ([0-9]+) overlap ([0-9.]+)");
-  for (const ServerPlan& plan : layout.servers) {
-    const std::string log = slurp(run.out() / fmt::format("host-{}.log", plan.server));
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    const std::string log = slurp(run.out() / fmt::format("host-{}.log", plan.pipeserver));
     int frames = 0;
     for (auto it = std::sregex_iterator(log.begin(), log.end(), figures);
          it != std::sregex_iterator(); ++it, ++frames) {

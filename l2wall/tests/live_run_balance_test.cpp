@@ -37,7 +37,7 @@ using Spot = std::pair<int, int>;
 // Where each pipeserver's stamp lands on display `d` in `layout`.
 std::vector<Spot> stamps_on(const TileLayout& layout, int d) {
   std::vector<Spot> spots;
-  for (const ServerPlan& plan : layout.servers) {
+  for (const PipeserverPlan& plan : layout.pipeservers) {
     const DisplayTile& t = plan.tiles.front().tile;
     if (t.display == d) spots.emplace_back(t.on_display.x, t.on_display.y);
   }

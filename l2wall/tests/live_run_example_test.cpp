@@ -33,11 +33,11 @@ TEST(ExampleRenderer, LiveFramesRouteExactlyAndShowItsDrawing) {
   const TileLayout layout = plan_layout(wall);
   std::vector<std::string> route{LIGHTNING2_EMU_PATH, "route", "--wall",
                                  wall_file.string(),  "--out", (dir / "routed").string()};
-  for (const ServerPlan& plan : layout.servers) {
-    // pipeserver's --out is a folder: it writes scanout-<server>.png into it.
-    const fs::path frame = dir / fmt::format("scanout-{}.png", plan.server);
-    ASSERT_TRUE(run_to_end({SPINNING_CUBES_PATH, "--wall", wall_file.string(), "--server",
-                            std::to_string(plan.server), "--frame", std::to_string(k), "--out",
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    // pipeserver's --out is a folder: it writes scanout-<pipeserver>.png into it.
+    const fs::path frame = dir / fmt::format("scanout-{}.png", plan.pipeserver);
+    ASSERT_TRUE(run_to_end({SPINNING_CUBES_PATH, "--wall", wall_file.string(), "--pipeserver",
+                            std::to_string(plan.pipeserver), "--frame", std::to_string(k), "--out",
                             dir.string()}));
     route.push_back(frame.string());
   }
@@ -51,7 +51,7 @@ TEST(ExampleRenderer, LiveFramesRouteExactlyAndShowItsDrawing) {
     ASSERT_EQ(shown.height(), routed.height());
     // Each live host stamps its frame number into the first pixel of its first tile.
     std::vector<std::pair<int, int>> stamps;
-    for (const ServerPlan& plan : layout.servers) {
+    for (const PipeserverPlan& plan : layout.pipeservers) {
       const DisplayTile& t = plan.tiles.front().tile;
       if (t.display == d.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
     }

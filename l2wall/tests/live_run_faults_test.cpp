@@ -174,14 +174,14 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
 // the stopped one, and what the others were waiting for.
 class StoppedPipeserver : public ::testing::TestWithParam<const char*> {};
 
-// Pipeserver `server` once it has reported a few frames, found by its report file (the
+// Pipeserver `pipeserver` once it has reported a few frames, found by its report file (the
 // vizserver path has no links to find it by); its pid.
-pid_t reporting_pipeserver(const WallRun& run, int server) {
+pid_t reporting_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + 20s;
-  const std::string report = fmt::format("host-{}.log", server);
+  const std::string report = fmt::format("host-{}.log", pipeserver);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.processes_naming(report);
-    if (pids.size() == 1 && run.host_log_lines(server) >= 3) return pids.front();
+    if (pids.size() == 1 && run.host_log_lines(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(20ms);
   }
   return -1;

@@ -107,7 +107,7 @@ long wrong_pixels(const WallRun& run, const fs::path& wall_file, int frame, cons
     const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
                                     fmt::format("display-{}.png", display.id));
     std::vector<std::pair<int, int>> stamps;
-    for (const ServerPlan& plan : layout.servers) {
+    for (const PipeserverPlan& plan : layout.pipeservers) {
       const DisplayTile& t = plan.tiles.front().tile;
       if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
     }

@@ -52,13 +52,14 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
   // host's first tile, the number of the frame it was kept for.
   const TileLayout layout = plan_layout(default_wall());
   for (int k = 0; k < frames; ++k) {
-    for (const ServerPlan& plan : layout.servers) {
+    for (const PipeserverPlan& plan : layout.pipeservers) {
       const DisplayTile& t = plan.tiles.front().tile;
       const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", k) /
                                       fmt::format("display-{}.png", t.display));
       const Rgb px = shown.at(t.on_display.x, t.on_display.y);
       const std::uint8_t bytes[3] = {px.r, px.g, px.b};
-      EXPECT_EQ(decode_stamp(bytes), k) << "server " << plan.server << " display " << t.display;
+      EXPECT_EQ(decode_stamp(bytes), k)
+          << "pipeserver " << plan.pipeserver << " display " << t.display;
     }
   }
   EXPECT_TRUE(fs::exists(run.out() / "frame-0" / "wall.png"));
@@ -70,20 +71,20 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
 // sort-first, the sort-last and the hybrid one (DEPTH and KEY tiles composited on both).
 struct WallCase {
   const char* file;
-  int displays, servers;
+  int displays, pipeservers;
 };
 class BothPaths : public ::testing::TestWithParam<WallCase> {};
 
 TEST_P(BothPaths, GiveIdenticalDisplays) {
   const WallCase& c = GetParam();
-  WallRun run(fmt::format("both-{}", c.servers),
+  WallRun run(fmt::format("both-{}", c.pipeservers),
               {"--wall", fmt::format("{}/walls/{}", L2_SOURCE_DIR, c.file), "--frames", "10",
                "--refresh", "0", "--path", "both", "--compare"});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
-  EXPECT_NE(output.find(
-                fmt::format("10 frames on {} displays from {} pipeservers", c.displays, c.servers)),
+  EXPECT_NE(output.find(fmt::format("10 frames on {} displays from {} pipeservers", c.displays,
+                                    c.pipeservers)),
             std::string::npos)
       << output;
   EXPECT_NE(output.find(fmt::format("compare: {} display pictures identical byte for byte",
@@ -99,7 +100,7 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
       std::regex("emulator: ([0-9]+) input frames predicted from their input's last layout, "
                  "([0-9]+) of them found different")))
       << output;
-  EXPECT_GE(std::stoi(predicted[1]), 9 * c.servers) << output;
+  EXPECT_GE(std::stoi(predicted[1]), 9 * c.pipeservers) << output;
   EXPECT_EQ(predicted[2], "0") << output;
   // The kept pictures of both paths are there and equal, read back from the files.
   for (int d = 0; d < c.displays; ++d) {
@@ -141,7 +142,7 @@ TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
   const TileLayout layout = plan_layout(default_wall());
   for (int k = 0; k < 4; ++k) {
-    const DisplayTile& t = layout.servers.front().tiles.front().tile;
+    const DisplayTile& t = layout.pipeservers.front().tiles.front().tile;
     const RgbImage shown =
         read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", t.display));
     const Rgb px = shown.at(t.on_display.x, t.on_display.y);
@@ -171,13 +172,13 @@ TEST(LiveRun, SwapSceneShowsEachFramesColourAndItsStamp) {
       const RgbImage shown =
           read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", d));
       std::vector<std::pair<int, int>> stamps;
-      for (const ServerPlan& plan : layout.servers) {
+      for (const PipeserverPlan& plan : layout.pipeservers) {
         const DisplayTile& t = plan.tiles.front().tile;
         if (t.display != d) continue;
         stamps.emplace_back(t.on_display.x, t.on_display.y);
         const Rgb px = shown.at(t.on_display.x, t.on_display.y);
         const std::uint8_t bytes[3] = {px.r, px.g, px.b};
-        EXPECT_EQ(decode_stamp(bytes), k) << "server " << plan.server;
+        EXPECT_EQ(decode_stamp(bytes), k) << "pipeserver " << plan.pipeserver;
       }
       long other = 0;
       for (int y = 0; y < shown.height(); ++y) {

@@ -28,7 +28,7 @@ using namespace testing_support;
 // The frame number host 0 stamped into a display picture of the default wall.
 int stamped_frame(const fs::path& picture_dir, const std::string& suffix) {
   const TileLayout layout = plan_layout(default_wall());
-  const DisplayTile& t = layout.servers.front().tiles.front().tile;
+  const DisplayTile& t = layout.pipeservers.front().tiles.front().tile;
   const RgbImage shown = read_png(picture_dir / fmt::format("display-{}{}.png", t.display, suffix));
   const Rgb px = shown.at(t.on_display.x, t.on_display.y);
   const std::uint8_t bytes[3] = {px.r, px.g, px.b};

@@ -84,10 +84,10 @@ class WallRun {
     return names;
   }
   // Processes whose command line names one of this run's links: its pipeservers.
-  std::vector<pid_t> pipeservers(int server = -1) const {
+  std::vector<pid_t> pipeservers(int pipeserver = -1) const {
     std::vector<pid_t> pids;
     const std::string needle =
-        "/" + link_prefix() + (server >= 0 ? fmt::format("{}", server) + '\0' : "");
+        "/" + link_prefix() + (pipeserver >= 0 ? fmt::format("{}", pipeserver) + '\0' : "");
     for (const auto& e : fs::directory_iterator("/proc")) {
       const std::string n = e.path().filename().string();
       if (n.find_first_not_of("0123456789") != std::string::npos) continue;
@@ -110,8 +110,8 @@ class WallRun {
     return pids;
   }
   std::vector<pid_t> vizservers() const { return processes_naming("vizserver.log"); }
-  int host_log_lines(int server) const {
-    std::ifstream in(out() / fmt::format("host-{}.log", server));
+  int host_log_lines(int pipeserver) const {
+    std::ifstream in(out() / fmt::format("host-{}.log", pipeserver));
     int lines = 0;
     for (std::string l; std::getline(in, l);) ++lines;
     return lines;
@@ -162,12 +162,12 @@ inline void expect_clean(const WallRun& run) {
   EXPECT_TRUE(children.empty()) << "orphan process pid " << children.front();
 }
 
-// Waits until pipeserver `server` has published a few frames; returns its pid.
-inline pid_t running_pipeserver(const WallRun& run, int server) {
+// Waits until pipeserver `pipeserver` has published a few frames; returns its pid.
+inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while (std::chrono::steady_clock::now() < deadline) {
-    const auto pids = run.pipeservers(server);
-    if (pids.size() == 1 && run.host_log_lines(server) >= 3) return pids.front();
+    const auto pids = run.pipeservers(pipeserver);
+    if (pids.size() == 1 && run.host_log_lines(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return -1;

@@ -34,7 +34,7 @@ Setup make_setup(const CommonOptions& o) {
       setup.placements.push_back({d.id, d.canvas_x, d.canvas_y});
     }
     limit = {wall.board_max_width, wall.board_max_height};
-    mesh_inputs = wall.server_count;
+    mesh_inputs = wall.pipeserver_count;
   } else {
     setup.config.displays = parse_display_list(o.displays);
     if (!o.groups.empty()) apply_group_list(o.groups, setup.config.displays);

@@ -383,7 +383,7 @@ DepthBuilt build(const DepthScenario& s) {
   Built& b = out.b;
   b.input_bytes.assign(s.inputs, 0);
   for (int i = 0; i < s.inputs; ++i) {
-    const l2::ServerPlan plan = l2::pack_tiles(i, s.fb_width, s.fb_height, tiles[i]);
+    const l2::PipeserverPlan plan = l2::pack_tiles(i, s.fb_width, s.fb_height, tiles[i]);
     b.frames.emplace_back(s.fb_width, s.fb_height);
     l2::RgbImage& fb = b.frames.back();
     l2::draw_headers(plan, false, fb);

@@ -289,7 +289,7 @@ TEST_F(Cli, RouteWithAWallRebuildsTheTilelayoutScanout) {
   const Wall wall = load_wall(wall_file);
   const TileLayout layout = plan_layout(wall);
   std::string inputs;
-  for (int s = 0; s < wall.server_count; ++s) {
+  for (int s = 0; s < wall.pipeserver_count; ++s) {
     inputs += " " + scan_dir + "/scanout-" + std::to_string(s) + ".png";
   }
   const Result r = run("route --wall " + wall_file + " --out " + (dir / "out").string() + inputs);

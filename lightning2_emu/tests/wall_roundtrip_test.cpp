@@ -43,7 +43,7 @@ std::vector<RgbImage> place_tiles(const TileLayout& layout, Pixel&& pixel) {
 void expect_routed(const Wall& wall, const std::vector<RgbImage>& frames,
                    const std::vector<RgbImage>& expected, int workers, const std::string& name) {
   WorkerPool pool(workers);
-  Router router(Mesh::fit(wall.server_count, static_cast<int>(wall.displays.size()),
+  Router router(Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                           {wall.board_max_width, wall.board_max_height}),
                 display_specs(wall), pool, kBackground);
   std::vector<InputFrame> views;
@@ -66,7 +66,7 @@ TEST(WallRoundTrip, ExampleWallScanoutsRebuildTheTestPattern) {
     const TileLayout layout = plan_layout(wall);
     std::vector<RgbImage> frames;
     const bool parity = walls % 2 == 1;  // both parities over the set of walls
-    for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, parity));
+    for (const PipeserverPlan& s : layout.pipeservers) frames.push_back(test_frame(s, parity));
     expect_routed(wall, frames,
                   place_tiles(layout, [](int d, int x, int y) { return test_pattern(d, x, y); }), 2,
                   entry.path().filename().string());
@@ -115,7 +115,7 @@ Wall random_wall(std::mt19937& rng) {
       wall.tiling.substrip_count = uni(1, 6);
   }
   wall.assignment = static_cast<AssignmentPolicy>(uni(0, 4));
-  wall.server_count = uni(1, 8);
+  wall.pipeserver_count = uni(1, 8);
   wall.framebuffer_width = wall.board_max_width = uni(400, 1280);
   wall.framebuffer_height = wall.board_max_height = uni(300, 1024);
   return wall;
@@ -135,12 +135,13 @@ TEST(WallRoundTrip, RandomWallsRouteToTheDirectlyPlacedTilePixels) {
       continue;  // tiles that do not fit the framebuffers: a planning error, not ours
     }
     std::vector<RgbImage> frames;
-    for (int s = 0; s < wall.server_count; ++s) {
+    for (int s = 0; s < wall.pipeserver_count; ++s) {
       std::vector<DisplayTile> tiles;
       for (std::size_t t = 0; t < layout.tiles.size(); ++t) {
-        if (layout.tile_server[t] == s) tiles.push_back(layout.tiles[t]);
+        if (layout.tile_pipeserver[t] == s) tiles.push_back(layout.tiles[t]);
       }
-      const ServerPlan plan = pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, tiles);
+      const PipeserverPlan plan =
+          pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, tiles);
       RgbImage fb(wall.framebuffer_width, wall.framebuffer_height);
       draw_headers(plan, (attempt & 1) != 0, fb);
       for (const PackedTile& p : plan.tiles) {

@@ -63,13 +63,13 @@ int main(int argc, char** argv) {
   auto scene = l2::make_scene(scene_name);
   std::printf("default wall '%s': canvas %dx%d, %zu displays, %zu pipeservers, framebuffer %dx%d\n",
               layout.wall.name.c_str(), layout.wall.canvas_width, layout.wall.canvas_height,
-              layout.wall.displays.size(), layout.servers.size(), layout.wall.framebuffer_width,
+              layout.wall.displays.size(), layout.pipeservers.size(), layout.wall.framebuffer_width,
               layout.wall.framebuffer_height);
   std::printf("scene %s (%zu triangles), %d frames per pipeserver, medians:\n", scene_name.c_str(),
               scene->triangle_count(), frames);
   const double period_ms = 1000.0 / layout.wall.refresh_hz;
   double worst_share = 0, worst_bare = 0;
-  for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
+  for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
     l2::Pipeserver ps(layout, s);
     std::vector<double> render, scan, share, bare, overlap;
     for (int k = 0; k < frames; ++k) {
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
     worst_share = std::max(worst_share, median(share));
     worst_bare = std::max(worst_bare, median(bare));
     std::printf(
-        "  server %d: %zu tiles; render %.2f ms, scan-out with headers %.3f ms "
+        "  pipeserver %d: %zu tiles; render %.2f ms, scan-out with headers %.3f ms "
         "(%.2fx a memcpy of the RGBA framebuffer, %.3f ms); headers+scan-out %.2f%% of the frame "
         "time, %.2f%% of the bare render+scan-out; overlap %.2f\n",
         s, plan.tiles.size(), median(render), median(scan), median(scan) / base, base,

@@ -38,7 +38,7 @@ struct FramePixels {
 
 // The frame number goes into the first pixel of the first tile, where the strip header's COPY
 // sends it to a known display pixel: the run decodes it there (latency proof).
-void stamp_frame(FramePixels fb, const ServerPlan& plan, int frame) {
+void stamp_frame(FramePixels fb, const PipeserverPlan& plan, int frame) {
   if (plan.tiles.empty()) return;
   const PackedTile& t = plan.tiles.front();
   std::uint8_t* p = fb.at(t.fb_x, t.fb_y);
@@ -66,7 +66,7 @@ struct Report {
 
 // The visualization-server path: every tile of the frame, read back from the framebuffer, goes
 // to the compositing server over TCP.
-void send_tiles(TileSink& sender, FramePixels fb, const ServerPlan& plan, int frame) {
+void send_tiles(TileSink& sender, FramePixels fb, const PipeserverPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {
     sender.send_tile(static_cast<std::uint32_t>(frame), viz_target(t.tile), fb.at(t.fb_x, t.fb_y),
                      fb.stride);
@@ -75,18 +75,19 @@ void send_tiles(TileSink& sender, FramePixels fb, const ServerPlan& plan, int fr
                       static_cast<std::uint32_t>(plan.tiles.size()));
 }
 
-std::unique_ptr<TileSink> connect_viz(const std::string& address, int server, int display_count) {
+std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver,
+                                      int display_count) {
   if (address.empty()) return nullptr;
   const viz::Endpoint at = viz::parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
   return std::make_unique<TileSinkOf<viz::TileSender>>(
-      viz::TileSender::connect(at.host, at.port, server, display_count, options));
+      viz::TileSender::connect(at.host, at.port, pipeserver, display_count, options));
 }
 
 // Frame k's tile times to the coordinator.
 void send_times(ControlChannel& control, const Pipeserver& ps, int frame) {
-  TimesMessage m{frame, ps.plan().server, {}};
+  TimesMessage m{frame, ps.plan().pipeserver, {}};
   for (double ms : ps.last_times().tile_ms) m.seconds.push_back(ms / 1000);
   control.send_line(encode(m));
 }
@@ -119,7 +120,7 @@ int swap_retries(const LiveHostOptions& o, int frame) {
 }  // namespace
 
 MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
-  return [link, backchannel](const TileLayout&, const ServerPlan& plan) {
+  return [link, backchannel](const TileLayout&, const PipeserverPlan& plan) {
     HostLinks links;
     links.link =
         std::make_unique<DviLinkWriter>(DviLinkWriter::create(link, plan.fb_width, plan.fb_height));
@@ -134,14 +135,14 @@ int run_live_host(const LiveHostOptions& o) {
   const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
   const TileLayout layout = plan_layout(wall);
   auto scene = make_scene(o.scene, o.scene_options);
-  Pipeserver ps(layout, o.server);
-  const ServerPlan& plan = ps.plan();
+  Pipeserver ps(layout, o.pipeserver);
+  const PipeserverPlan& plan = ps.plan();
   HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
   DviSender* const link = links.link.get();
   ReadyChannel* const channel = links.channel.get();
   const std::unique_ptr<TileSink> sender =
       links.tiles ? std::move(links.tiles)
-                  : connect_viz(o.viz, o.server, static_cast<int>(wall.displays.size()));
+                  : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()));
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
 
@@ -160,13 +161,13 @@ int run_live_host(const LiveHostOptions& o) {
     int retries = 0;
     const int retries_allowed = swap_retries(o, k - 1);
     if (k > 0 && channel) {  // spec §6.1: the first swap does not wait
-      const WaitResult r =
+      const Result<ReadyAck> r =
           channel->wait_ready(static_cast<std::uint64_t>(k - 1), timeout, retries_allowed);
-      retries = r.retries;
       if (!r.ok()) {
-        std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.server, k, r.error.c_str());
+        std::fprintf(stderr, "pipeserver %d: frame %d: %s\n", o.pipeserver, k, r.reason().c_str());
         return kExitNoReady;
       }
+      retries = r->retries;
     }
     // The compositing server's SWAPPED paces the vizserver path (alone, instead of READY). With
     // both paths it is read too: a host that exits with SWAPPED unread resets the connection,
@@ -189,11 +190,11 @@ int run_live_host(const LiveHostOptions& o) {
   // Stay until the last frame is taken in and complete: the run reads our link until then.
   const int last_retries = swap_retries(o, o.frames - 1);
   if (o.frames > 0 && channel) {
-    const WaitResult r =
+    const Result<ReadyAck> r =
         channel->wait_ready(static_cast<std::uint64_t>(o.frames - 1), timeout, last_retries);
     if (!r.ok()) {
-      std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.server, o.frames - 1,
-                   r.error.c_str());
+      std::fprintf(stderr, "pipeserver %d: last frame %d: %s\n", o.pipeserver, o.frames - 1,
+                   r.reason().c_str());
       return kExitNoReady;
     }
   }

@@ -61,14 +61,15 @@ struct HostLinks {
   std::unique_ptr<ReadyChannel> channel;
   std::unique_ptr<TileSink> tiles;  // the visualization-server path over MPI; else --viz
 };
-using MakeHostLinks = std::function<HostLinks(const TileLayout& layout, const ServerPlan& plan)>;
+using MakeHostLinks =
+    std::function<HostLinks(const TileLayout& layout, const PipeserverPlan& plan)>;
 
 // The shared-memory link `link` and the serial line `backchannel` (l2wall run on one machine).
 MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel);
 
 struct LiveHostOptions {
   std::string wall;  // empty: the built-in default wall
-  int server = 0;
+  int pipeserver = 0;
   std::string scene = "mesh";
   SceneOptions scene_options;
   int frames = 10;

@@ -31,13 +31,13 @@ double cpu_ms() {
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
 }
 
-const ServerPlan& plan_of(const TileLayout& layout, int server) {
-  if (server < 0 || server >= static_cast<int>(layout.servers.size())) {
+const PipeserverPlan& plan_of(const TileLayout& layout, int pipeserver) {
+  if (pipeserver < 0 || pipeserver >= static_cast<int>(layout.pipeservers.size())) {
     throw std::out_of_range(fmt::format("pipeserver {} does not exist: the wall has {} (0..{})",
-                                        server, layout.servers.size(),
-                                        static_cast<int>(layout.servers.size()) - 1));
+                                        pipeserver, layout.pipeservers.size(),
+                                        static_cast<int>(layout.pipeservers.size()) - 1));
   }
-  return layout.servers[static_cast<std::size_t>(server)];
+  return layout.pipeservers[static_cast<std::size_t>(pipeserver)];
 }
 
 glm::vec3 key_colour(std::uint32_t key) {
@@ -48,8 +48,8 @@ glm::vec3 key_colour(std::uint32_t key) {
 
 }  // namespace
 
-Pipeserver::Pipeserver(const TileLayout& layout, int server)
-    : plan_(plan_of(layout, server)),
+Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver)
+    : plan_(plan_of(layout, pipeserver)),
       canvas_(canvas_of(layout.wall)),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       frame_(plan_.fb_width, plan_.fb_height) {
@@ -57,11 +57,11 @@ Pipeserver::Pipeserver(const TileLayout& layout, int server)
 }
 
 void Pipeserver::set_layout(const TileLayout& layout) {
-  const ServerPlan& plan = plan_of(layout, plan_.server);
+  const PipeserverPlan& plan = plan_of(layout, plan_.pipeserver);
   if (plan.fb_width != plan_.fb_width || plan.fb_height != plan_.fb_height) {
-    throw std::invalid_argument(
-        fmt::format("pipeserver {}: a new layout's framebuffer is {}x{}, this one's {}x{}",
-                    plan_.server, plan.fb_width, plan.fb_height, plan_.fb_width, plan_.fb_height));
+    throw std::invalid_argument(fmt::format(
+        "pipeserver {}: a new layout's framebuffer is {}x{}, this one's {}x{}", plan_.pipeserver,
+        plan.fb_width, plan.fb_height, plan_.fb_width, plan_.fb_height));
   }
   plan_ = plan;
   canvas_ = canvas_of(layout.wall);
@@ -104,8 +104,8 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
       static_cast<std::size_t>(plan_.fb_width) * static_cast<std::size_t>(plan_.fb_height) * 3;
   if (dst.size() < bytes) {
     throw std::invalid_argument(
-        fmt::format("pipeserver {}: frame buffer of {} bytes, a {}x{} frame needs {}", plan_.server,
-                    dst.size(), plan_.fb_width, plan_.fb_height, bytes));
+        fmt::format("pipeserver {}: frame buffer of {} bytes, a {}x{} frame needs {}",
+                    plan_.pipeserver, dst.size(), plan_.fb_width, plan_.fb_height, bytes));
   }
   scene.set_frame(frame);
   // Every pixel is written: black first, then the tiles, then the headers over the gaps.

@@ -31,7 +31,7 @@ namespace {
 
 struct Options {
   std::string wall;  // empty: the built-in default wall
-  int server = 0;
+  int pipeserver = 0;
   int frame = 0;
   int count = 1;
   std::string scene = "mesh";
@@ -40,12 +40,12 @@ struct Options {
   l2::SceneOptions scene_options;
 };
 
-void print_times(int server, int frame, const l2::FrameTimes& t) {
+void print_times(int pipeserver, int frame, const l2::FrameTimes& t) {
   const double share = 100.0 * t.scanout_ms / t.total_ms();
   std::printf(
-      "server %d frame %d: render %.2f ms, scan-out with headers %.3f ms "
+      "pipeserver %d frame %d: render %.2f ms, scan-out with headers %.3f ms "
       "(%.2f%% of %.2f ms); batches %ld, tile draws %ld, overlap %.2f\n",
-      server, frame, t.render_ms, t.scanout_ms, share, t.total_ms(), t.buckets.batches,
+      pipeserver, frame, t.render_ms, t.scanout_ms, share, t.total_ms(), t.buckets.batches,
       t.buckets.tile_draws, t.buckets.overlap_factor());
 }
 
@@ -60,14 +60,14 @@ int run(const Options& o) {
   if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");
 
   if (!o.out.empty()) {
-    l2::Pipeserver ps(layout, o.server);
+    l2::Pipeserver ps(layout, o.pipeserver);
     const l2::RgbImage* frame = nullptr;
     for (int k = o.frame; k < o.frame + o.count; ++k) {
       frame = &ps.render_frame(k, *scene);
-      print_times(o.server, k, ps.last_times());
+      print_times(o.pipeserver, k, ps.last_times());
     }
     // Named as `tilelayout --scanout` names its frames, so that both route the same way.
-    const auto path = std::filesystem::path(o.out) / fmt::format("scanout-{}.png", o.server);
+    const auto path = std::filesystem::path(o.out) / fmt::format("scanout-{}.png", o.pipeserver);
     l2::write_png(path, *frame);
     std::printf("wrote %s (%dx%d, %zu tiles)\n", path.c_str(), frame->width(), frame->height(),
                 ps.plan().tiles.size());
@@ -87,10 +87,10 @@ int run_live(const l2::LiveHostOptions& o) {
   try {
     return l2::run_live_host(o);
   } catch (const l2::viz::VizError& e) {
-    std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+    std::fprintf(stderr, "pipeserver %d: %s\n", o.pipeserver, e.what());
     return l2::kExitLostCompositingServer;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pipeserver %d: %s\n", o.server, e.what());
+    std::fprintf(stderr, "pipeserver %d: %s\n", o.pipeserver, e.what());
     return 1;
   }
 }
@@ -101,8 +101,9 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
   l2::MpiSession session;
   const auto sent = std::make_shared<std::uint64_t>(0);
   const auto tiles_sent = std::make_shared<std::uint64_t>(0);
-  o.links = [sent, tiles, tiles_sent](const l2::TileLayout& layout, const l2::ServerPlan& plan) {
-    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.server, sent);
+  o.links = [sent, tiles, tiles_sent](const l2::TileLayout& layout,
+                                      const l2::PipeserverPlan& plan) {
+    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, sent);
     l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
@@ -129,13 +130,14 @@ namespace l2 {
 int run_pipeserver(int argc, char** argv) {
   CLI::App app{
       "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
-      "pipeserver --server with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
+      "pipeserver --pipeserver with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
       "draws the strip headers of spec §4 with the parity of --frame, and writes the scanned-out\n"
       "24-bit RGB frame to --out DIR. --reference writes what each display should show for that\n"
       "frame."};
   Options o;
   l2::add_wall_option(app, o.wall, "default: the built-in default wall (walls/kd-2x2.toml)");
-  app.add_option("--server", o.server, "pipeserver number, from 0")->check(CLI::Range(0, 4095));
+  app.add_option("--pipeserver", o.pipeserver, "pipeserver number, from 0")
+      ->check(CLI::Range(0, 4095));
   app.add_option("--frame", o.frame, "application frame number (animation, header parity k mod 2)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--count", o.count,
@@ -145,7 +147,7 @@ int run_pipeserver(int argc, char** argv) {
   app.add_option("--scene", o.scene,
                  "mesh | strips | isosurface | patches | swap | picture | movie")
       ->check(CLI::IsMember(l2::scene_names()));
-  l2::add_out_option(app, o.out, "scanout-<server>.png, the scanned-out frame");
+  l2::add_out_option(app, o.out, "scanout-<pipeserver>.png, the scanned-out frame");
   app.add_option("--reference", o.reference,
                  "folder for the reference render of each display (display-<id>.png)")
       ->type_name("DIR");
@@ -223,7 +225,7 @@ int run_pipeserver(int argc, char** argv) {
       return 2;
     }
     live_options.wall = o.wall;
-    live_options.server = o.server;
+    live_options.pipeserver = o.pipeserver;
     live_options.scene = o.scene;
     live_options.scene_options = o.scene_options;
     if (dvi)

@@ -17,12 +17,12 @@ namespace {
 
 // One 64x48 display, one tile, rendered as `layers` by as many pipeservers, and with an
 // overlay a pipeserver more.
-TileLayout depth_wall(int servers, const std::string& extra = "") {
+TileLayout depth_wall(int pipeservers, const std::string& extra = "") {
   const std::string text =
       "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 64\nheight = 48\n"
       "[tiling]\nkind = \"grid\"\ntile_width = 64\ntile_height = 48\n"
       "[pipeservers]\ncount = " +
-      std::to_string(servers) +
+      std::to_string(pipeservers) +
       "\nframebuffer_width = 132\nframebuffer_height = 48\n"
       "[depth]\nlayers = \"all\"\n" +
       extra;
@@ -31,7 +31,7 @@ TileLayout depth_wall(int servers, const std::string& extra = "") {
 
 std::vector<RgbImage> render_all(const TileLayout& layout, Scene& scene, int frame) {
   std::vector<RgbImage> frames;
-  for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
+  for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
     Pipeserver ps(layout, s);
     frames.push_back(ps.render_frame(frame, scene));
   }

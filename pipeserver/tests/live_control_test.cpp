@@ -42,7 +42,7 @@ TEST(LiveControl, TheNextFrameIsRenderedInTheLayoutSentBack) {
   const Wall wall = load_wall(wall_file);
   // Frame 1: pipeserver 0 renders two tiles instead of one, in two framebuffer rows.
   LayoutMessage next{1, {{0, 0, 80, 60}, {80, 0, 80, 60}, {0, 60, 160, 60}}, {0, 1, 0}};
-  const ServerPlan plan1 = plan_from_message(wall, next).servers[0];
+  const PipeserverPlan plan1 = plan_from_message(wall, next).pipeservers[0];
   ASSERT_EQ(plan1.tiles.size(), 2u);
   ASSERT_EQ(plan1.tiles[1].tile.on_display.w, 160);
   ASSERT_EQ(plan1.tiles[1].fb_y, 60);
@@ -51,7 +51,7 @@ TEST(LiveControl, TheNextFrameIsRenderedInTheLayoutSentBack) {
   PtyPair pty = PtyPair::open();
   BackChannel ready(pty.master());
   const std::string link = dvi_link_name(fmt::format("ctl{}", getpid()));
-  ChildProcess host({PIPESERVER_EXE, "--live", "--wall", wall_file.string(), "--server", "0",
+  ChildProcess host({PIPESERVER_EXE, "--live", "--wall", wall_file.string(), "--pipeserver", "0",
                      "--frames", "2", "--scene", "patches", "--link", link, "--backchannel",
                      pty.slave_path(), "--control-fd", std::to_string(theirs.fd()), "--report",
                      (dir / "host.log").string()});
@@ -59,7 +59,7 @@ TEST(LiveControl, TheNextFrameIsRenderedInTheLayoutSentBack) {
 
   const TimesMessage t0 = decode_times(ours.receive_line(30s).value_or("no TIMES 0"));
   EXPECT_EQ(t0.frame, 0);
-  EXPECT_EQ(t0.server, 0);
+  EXPECT_EQ(t0.pipeserver, 0);
   ASSERT_EQ(t0.seconds.size(), 1u);
   EXPECT_GT(t0.seconds[0], 0.0);
   ours.send_line(encode(next));

@@ -56,7 +56,7 @@ TEST(OwnScene, TheDrawingIsGivenTheFrameAndEachTile) {
   Pipeserver(layout, 0).render_frame(7, *scene);
   // Every tile once, in the order of its display's window (not the plan's order).
   std::vector<Rect> planned;
-  for (const auto& t : layout.servers[0].tiles) planned.push_back(t.tile.on_canvas);
+  for (const auto& t : layout.pipeservers[0].tiles) planned.push_back(t.tile.on_canvas);
   const auto by_place = [](const Rect& a, const Rect& b) {
     return std::tie(a.y, a.x, a.w, a.h) < std::tie(b.y, b.x, b.w, b.h);
   };

@@ -113,7 +113,7 @@ TEST(Pipeserver, RefusesABufferSmallerThanAFrame) {
   }
 }
 
-TEST(Pipeserver, UnknownServerIsAClearError) {
+TEST(Pipeserver, UnknownPipeserverIsAClearError) {
   const TileLayout layout = test::small_layout(2, 40, 32, 160, 120);
   try {
     Pipeserver ps(layout, 2);

@@ -65,7 +65,7 @@ TEST(ScanOut, RefusesASmallDestination) {
 
 // A 40 x 6 framebuffer: tiles 9x4 (display 1 at 20,30) and 17x2 (display 0 at 0,0) side by
 // side, 2 + 9 + 2 + 17 = 30, END at 30.
-ServerPlan two_tile_plan() {
+PipeserverPlan two_tile_plan() {
   DisplayTile a, b;
   a.display = 1, a.on_display = {20, 30, 9, 4};
   b.display = 0, b.on_display = {0, 0, 17, 2};
@@ -82,7 +82,7 @@ std::vector<std::uint8_t> numbered_rgba(int w, int h) {
 using test::header_at;
 
 TEST(ScanOutWithHeaders, EqualsScanOutThenDrawHeaders) {
-  const ServerPlan plan = two_tile_plan();
+  const PipeserverPlan plan = two_tile_plan();
   const auto rgba = numbered_rgba(40, 6);
   RgbImage fused(40, 6), separate(40, 6);
   scan_out(rgba.data(), 40, 6, fused.bytes(), FrameHeaders(plan, true));

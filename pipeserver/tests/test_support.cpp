@@ -10,14 +10,14 @@
 
 namespace l2::test {
 
-TileLayout small_layout(int servers, int tile_w, int tile_h, int fb_w, int fb_h) {
+TileLayout small_layout(int pipeservers, int tile_w, int tile_h, int fb_w, int fb_h) {
   TileLayout layout;
   Wall& wall = layout.wall;
   wall.name = "small";
   wall.canvas_width = 136;
   wall.canvas_height = 48;
   wall.displays = {Display{0, 64, 48, 0, 0, 0, ""}, Display{1, 64, 48, 72, 0, 0, ""}};
-  wall.server_count = servers;
+  wall.pipeserver_count = pipeservers;
   wall.framebuffer_width = fb_w;
   wall.framebuffer_height = fb_h;
   for (int y = 0; y < wall.canvas_height; y += tile_h) {
@@ -31,16 +31,17 @@ TileLayout small_layout(int servers, int tile_w, int tile_h, int fb_w, int fb_h)
         if (part.empty()) continue;
         const Rect on_display{part.x - d.canvas_x, part.y - d.canvas_y, part.w, part.h};
         layout.tiles.push_back(DisplayTile{d.id, on_display, part, index});
-        layout.tile_server.push_back(static_cast<int>(layout.tile_server.size()) % servers);
+        layout.tile_pipeserver.push_back(static_cast<int>(layout.tile_pipeserver.size()) %
+                                         pipeservers);
       }
     }
   }
-  for (int s = 0; s < servers; ++s) {
+  for (int s = 0; s < pipeservers; ++s) {
     std::vector<DisplayTile> mine;
     for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
-      if (layout.tile_server[i] == s) mine.push_back(layout.tiles[i]);
+      if (layout.tile_pipeserver[i] == s) mine.push_back(layout.tiles[i]);
     }
-    layout.servers.push_back(pack_tiles(s, fb_w, fb_h, mine));
+    layout.pipeservers.push_back(pack_tiles(s, fb_w, fb_h, mine));
   }
   return layout;
 }
@@ -123,7 +124,7 @@ ImageDiff compare(const RgbImage& a, const RgbImage& b, const TileLayout& layout
 
 WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame, bool locate_edges) {
   std::vector<RgbImage> frames;
-  for (int s = 0; s < static_cast<int>(layout.servers.size()); ++s) {
+  for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
     Pipeserver ps(layout, s);
     frames.push_back(ps.render_frame(frame, scene));
   }

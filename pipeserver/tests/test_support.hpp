@@ -12,9 +12,9 @@
 namespace l2::test {
 
 // Two 64x48 displays side by side with an 8-pixel mullion (canvas 136x48), cut into a grid of
-// tile_w x tile_h logical tiles, split at display edges, dealt round-robin to `servers`
+// tile_w x tile_h logical tiles, split at display edges, dealt round-robin to `pipeservers`
 // pipeservers with fb_w x fb_h framebuffers.
-TileLayout small_layout(int servers, int tile_w, int tile_h, int fb_w, int fb_h);
+TileLayout small_layout(int pipeservers, int tile_w, int tile_h, int fb_w, int fb_h);
 
 struct Reassembly {
   std::vector<RgbImage> displays;

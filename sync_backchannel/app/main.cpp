@@ -59,14 +59,14 @@ int run_wait_ready(const std::string& device, int baud, long long frame, int tim
                    int retries) {
   l2::SerialPort port = l2::SerialPort::open(device, baud);
   l2::BackChannel channel(port);
-  const l2::WaitResult result = channel.wait_ready(static_cast<std::uint64_t>(frame),
-                                                   std::chrono::milliseconds(timeout_ms), retries);
+  const l2::Result<l2::ReadyAck> result = channel.wait_ready(
+      static_cast<std::uint64_t>(frame), std::chrono::milliseconds(timeout_ms), retries);
   if (!result.ok()) {
-    std::cerr << "sync_backchannel: " << result.error << '\n';
+    std::cerr << "sync_backchannel: " << result.reason() << '\n';
     std::cerr << "sync_backchannel wait-ready: " << l2::to_string(channel.counts()) << '\n';
     return 1;
   }
-  std::cout << fmt::format("READY {:06d} after {} retries\n", result.frame, result.retries);
+  std::cout << fmt::format("READY {:06d} after {} retries\n", result->frame, result->retries);
   std::cerr << "sync_backchannel wait-ready: " << l2::to_string(channel.counts()) << '\n';
   return 0;
 }

@@ -89,8 +89,8 @@ bool ReadyLine::accept(std::uint32_t frame, std::uint32_t expected) {
   return false;
 }
 
-WaitResult ReadyLine::wait_ready(std::uint64_t expected_frame, std::chrono::milliseconds timeout,
-                                 int retries) {
+Result<ReadyAck> ReadyLine::wait_ready(std::uint64_t expected_frame,
+                                       std::chrono::milliseconds timeout, int retries) {
   const std::uint32_t expected = reduce(expected_frame);
   for (int attempt = 0;; ++attempt) {
     const auto deadline = Clock::now() + timeout;
@@ -102,7 +102,7 @@ WaitResult ReadyLine::wait_ready(std::uint64_t expected_frame, std::chrono::mill
           ++counts_.unexpected;
         } else if (accept(m.frame, expected)) {
           last_accepted_ = m.frame;
-          return WaitResult{WaitStatus::Ok, m.frame, attempt, {}};
+          return ReadyAck{m.frame, attempt};
         }
       }
       if (Clock::now() >= deadline) break;
@@ -110,8 +110,7 @@ WaitResult ReadyLine::wait_ready(std::uint64_t expected_frame, std::chrono::mill
     }
     ++counts_.wait_timeouts;
     if (attempt == retries) {
-      return WaitResult{
-          WaitStatus::Timeout, expected, attempt,
+      return Failure{
           fmt::format("no READY for frame {:06d} on {} after {} SYNC? retries ({} waits of {} ms)",
                       expected, line_name(), retries, retries + 1, timeout.count())};
     }

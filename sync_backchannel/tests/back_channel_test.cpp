@@ -57,10 +57,10 @@ TEST(BackChannel, HostReceivesEachReadyInOrder) {
     for (int frame = 0; frame < 20; ++frame) line.emulator.send_ready(frame);
   });
   for (int frame = 0; frame < 20; ++frame) {
-    const WaitResult r = line.host->wait_ready(frame, 500ms, 0);
-    ASSERT_TRUE(r.ok()) << r.error;
-    EXPECT_EQ(r.frame, static_cast<std::uint32_t>(frame));
-    EXPECT_EQ(r.retries, 0);
+    const Result<ReadyAck> r = line.host->wait_ready(frame, 500ms, 0);
+    ASSERT_TRUE(r.ok()) << r.reason();
+    EXPECT_EQ(r->frame, static_cast<std::uint32_t>(frame));
+    EXPECT_EQ(r->retries, 0);
   }
   emulator.join();
   EXPECT_EQ(line.host->counts().parser.messages, 20u);
@@ -74,9 +74,9 @@ TEST(BackChannel, NoiseInjectedOnTheMasterIsSkippedAndCounted) {
   // Glitches from the emulator side: garbage, a torn message, then the real READY.
   line.pty.master().write_all(std::string("\x00\xff~~READY 0000", 14), 100ms);
   line.emulator.send_ready(7);
-  const WaitResult r = line.host->wait_ready(7, 500ms, 0);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 7u);
+  const Result<ReadyAck> r = line.host->wait_ready(7, 500ms, 0);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 7u);
   EXPECT_EQ(line.host->counts().parser.noise_bytes, 14u);
   EXPECT_EQ(line.host->counts().parser.resyncs, 1u);
   EXPECT_EQ(line.host->counts().parser.messages, 1u);
@@ -88,12 +88,12 @@ TEST(BackChannel, ADroppedReadyIsRecoveredWithOneSyncRequest) {
   line.connect_host();
   std::thread emulator([&] { serve_until_answered(line.emulator, 2s); });
   const auto start = Clock::now();
-  const WaitResult r = line.host->wait_ready(5, 100ms, 3);
+  const Result<ReadyAck> r = line.host->wait_ready(5, 100ms, 3);
   const auto took = Clock::now() - start;
   emulator.join();
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 5u);
-  EXPECT_EQ(r.retries, 1);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 5u);
+  EXPECT_EQ(r->retries, 1);
   EXPECT_GE(took, 100ms);
   EXPECT_LT(took, 1s);
   EXPECT_EQ(line.host->counts().wait_timeouts, 1u);
@@ -109,11 +109,11 @@ TEST(BackChannel, ACorruptedReadyCountsABadChecksumAndIsRecovered) {
   // What reaches the host instead of READY 5: the same line with one digit hit by noise.
   line.pty.master().write_all("READY 000006 3D\r\n", 100ms);
   std::thread emulator([&] { serve_until_answered(line.emulator, 2s); });
-  const WaitResult r = line.host->wait_ready(5, 100ms, 3);
+  const Result<ReadyAck> r = line.host->wait_ready(5, 100ms, 3);
   emulator.join();
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 5u);
-  EXPECT_EQ(r.retries, 1);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 5u);
+  EXPECT_EQ(r->retries, 1);
   EXPECT_EQ(line.host->counts().parser.bad_checksums, 1u);
   EXPECT_EQ(line.host->counts().parser.messages, 1u);
 }
@@ -125,16 +125,16 @@ TEST(BackChannel, StaleAndDuplicateReadysAreIgnoredAndNewerOnesAccepted) {
   line.emulator.send_ready(3);  // duplicate of the one accepted
   line.emulator.send_ready(1);  // stale
   line.emulator.send_ready(4);
-  WaitResult r = line.host->wait_ready(4, 300ms, 0);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 4u);
+  Result<ReadyAck> r = line.host->wait_ready(4, 300ms, 0);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 4u);
   EXPECT_EQ(line.host->counts().duplicates, 1u);
   EXPECT_EQ(line.host->counts().stale, 1u);
   // The emulator is already past the frame we wait for: swapping is safe, accept it.
   line.emulator.send_ready(8);
   r = line.host->wait_ready(6, 300ms, 0);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 8u);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 8u);
   EXPECT_EQ(line.host->counts().ahead, 1u);
 }
 
@@ -143,21 +143,20 @@ TEST(BackChannel, FrameNumbersWrapAroundAtAMillion) {
   line.emulator.send_ready(999'999);
   ASSERT_TRUE(line.host->wait_ready(999'999, 300ms, 0).ok());
   line.emulator.send_ready(1'000'000);  // travels as 000000
-  const WaitResult r = line.host->wait_ready(1'000'000, 300ms, 0);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 0u);
+  const Result<ReadyAck> r = line.host->wait_ready(1'000'000, 300ms, 0);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 0u);
   EXPECT_EQ(line.host->counts().stale, 0u);
 }
 
 TEST(BackChannel, HostGivesUpAfterItsRetriesWithAClearErrorAndCarriesOn) {
   Line line;
   const auto start = Clock::now();
-  const WaitResult r = line.host->wait_ready(9, 60ms, 2);
+  const Result<ReadyAck> r = line.host->wait_ready(9, 60ms, 2);
   const auto took = Clock::now() - start;
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(r.status, WaitStatus::Timeout);
-  EXPECT_EQ(r.error, "no READY for frame 000009 on " + line.pty.slave_path() +
-                         " after 2 SYNC? retries (3 waits of 60 ms)");
+  EXPECT_EQ(r.reason(), "no READY for frame 000009 on " + line.pty.slave_path() +
+                            " after 2 SYNC? retries (3 waits of 60 ms)");
   EXPECT_GE(took, 180ms);
   EXPECT_LT(took, 1s);
   EXPECT_EQ(line.host->counts().wait_timeouts, 3u);
@@ -185,10 +184,10 @@ TEST(BackChannel, SlowByteByByteWriterStillDelivers) {
       std::this_thread::sleep_for(4ms);
     }
   });
-  const WaitResult r = line.host->wait_ready(42, 800ms, 0);
+  const Result<ReadyAck> r = line.host->wait_ready(42, 800ms, 0);
   slow.join();
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, 42u);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, 42u);
   EXPECT_EQ(line.host->counts().parser.noise_bytes, 0u);
 }
 
@@ -214,11 +213,11 @@ TEST(BackChannel, AHostThatStoppedReadingNeitherStallsTheEmulatorNorGetsLost) {
   EXPECT_EQ(line.emulator.counts().ready_sent, static_cast<std::uint64_t>(frames));
   // The host reads again: the backlog is stale, the last READY was dropped, SYNC? brings it.
   std::thread emulator([&] { serve_until_answered(line.emulator, 3s); });
-  const WaitResult r = line.host->wait_ready(frames - 1, 150ms, 5);
+  const Result<ReadyAck> r = line.host->wait_ready(frames - 1, 150ms, 5);
   emulator.join();
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.frame, static_cast<std::uint32_t>(frames - 1));
-  EXPECT_GE(r.retries, 1);
+  ASSERT_TRUE(r.ok()) << r.reason();
+  EXPECT_EQ(r->frame, static_cast<std::uint32_t>(frames - 1));
+  EXPECT_GE(r->retries, 1);
   EXPECT_GT(line.host->counts().stale, 0u);
 }
 

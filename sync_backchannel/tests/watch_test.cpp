@@ -129,11 +129,11 @@ TEST(SyncBackchannelExe, PtyEmulatorFeedsAHostAndAWatcher) {
   // A host joining late takes the next READY, whatever frame the emulator has reached.
   SerialPort port = SerialPort::open(slave, 115200);
   BackChannel host(port);
-  const WaitResult first = host.wait_ready(0, 300ms, 3);
-  ASSERT_TRUE(first.ok()) << first.error;
-  const WaitResult next = host.wait_ready(first.frame + 1, 300ms, 3);
-  ASSERT_TRUE(next.ok()) << next.error;
-  EXPECT_EQ(next.frame, first.frame + 1);
+  const Result<ReadyAck> first = host.wait_ready(0, 300ms, 3);
+  ASSERT_TRUE(first.ok()) << first.reason();
+  const Result<ReadyAck> next = host.wait_ready(first->frame + 1, 300ms, 3);
+  ASSERT_TRUE(next.ok()) << next.reason();
+  EXPECT_EQ(next->frame, first->frame + 1);
   emulator.signal(SIGTERM);
   const Finished r = emulator.finish(5s);
   EXPECT_EQ(r.status.shell_code(), 0);

@@ -20,8 +20,8 @@ namespace {
 
 void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& dir) {
   l2::make_folders(dir, "--png");
-  for (const l2::ServerPlan& s : layout.servers) {
-    const auto path = dir / fmt::format("pipeserver-{}.png", s.server);
+  for (const l2::PipeserverPlan& s : layout.pipeservers) {
+    const auto path = dir / fmt::format("pipeserver-{}.png", s.pipeserver);
     l2::write_png(path, l2::framebuffer_page(s));
     std::cout << "wrote " << path.string() << "\n";
   }
@@ -38,8 +38,8 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
 
 void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity) {
   l2::make_folders(dir, "--scanout");
-  for (const l2::ServerPlan& s : layout.servers) {
-    const auto path = dir / fmt::format("scanout-{}.png", s.server);
+  for (const l2::PipeserverPlan& s : layout.pipeservers) {
+    const auto path = dir / fmt::format("scanout-{}.png", s.pipeserver);
     l2::write_png(path, l2::test_frame(s, parity));
     std::cout << "wrote " << path.string() << "\n";
   }
@@ -51,7 +51,7 @@ int print_suggestions(const std::string& wall_path) {
     const l2::FitSuggestions fit = l2::suggest_fit(wall);
     for (const std::string& line : l2::suggestion_lines(wall, fit)) std::cout << line << "\n";
     const bool any = fit.fits || fit.height_at_width || fit.width_at_height ||
-                     !fit.policies.empty() || fit.server_count;
+                     !fit.policies.empty() || fit.pipeserver_count;
     return any ? 0 : 1;
   } catch (const l2::LayoutError& e) {
     std::cerr << "tilelayout: " << e.what() << "\n";

@@ -14,9 +14,9 @@ namespace l2 {
 int verify_plan(const TileLayout& layout, const std::filesystem::path& dir, bool parity) {
   make_folders(dir, "--verify");
   std::vector<RgbImage> frames;
-  for (const ServerPlan& s : layout.servers) {
+  for (const PipeserverPlan& s : layout.pipeservers) {
     frames.push_back(test_frame(s, parity));
-    write_png(dir / fmt::format("scanout-{}.png", s.server), frames.back());
+    write_png(dir / fmt::format("scanout-{}.png", s.pipeserver), frames.back());
   }
   const std::vector<RgbImage> shown = route_on_wall(layout.wall, frames);
   std::vector<const RgbImage*> routed;

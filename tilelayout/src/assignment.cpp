@@ -60,9 +60,9 @@ std::vector<int> spiral_order(const std::vector<Rect>& tiles, Rect canvas) {
   return order;
 }
 
-std::vector<int> deal(const std::vector<int>& order, int servers) {
+std::vector<int> deal(const std::vector<int>& order, int pipeservers) {
   std::vector<int> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = static_cast<int>(k % servers);
+  for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = static_cast<int>(k % pipeservers);
   return out;
 }
 
@@ -74,26 +74,26 @@ const char* to_string(AssignmentPolicy policy) {
   return kNames[static_cast<int>(policy)];
 }
 
-std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
-                                const std::vector<long long>& weights, int server_count,
-                                Rect canvas) {
+std::vector<int> assign_pipeservers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
+                                    const std::vector<long long>& weights, int pipeserver_count,
+                                    Rect canvas) {
   const int n = static_cast<int>(tiles.size());
   if (n == 0) return {};
   switch (policy) {
     case AssignmentPolicy::RoundRobin: {
       std::vector<int> order(n);
       std::iota(order.begin(), order.end(), 0);
-      return deal(order, server_count);
+      return deal(order, pipeserver_count);
     }
     case AssignmentPolicy::ZigZag:
-      return deal(zigzag_order(tiles), server_count);
+      return deal(zigzag_order(tiles), pipeserver_count);
     case AssignmentPolicy::Spiral:
-      return deal(spiral_order(tiles, canvas), server_count);
+      return deal(spiral_order(tiles, canvas), pipeserver_count);
     case AssignmentPolicy::Blocks: {
       const std::vector<int> order = raster_order(tiles);
       std::vector<int> out(n);
       for (int k = 0; k < n; ++k) {
-        out[order[k]] = static_cast<int>(static_cast<long long>(k) * server_count / n);
+        out[order[k]] = static_cast<int>(static_cast<long long>(k) * pipeserver_count / n);
       }
       return out;
     }
@@ -104,7 +104,7 @@ std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return weights[a] > weights[b]; });
-  std::vector<long long> load(server_count, 0);
+  std::vector<long long> load(pipeserver_count, 0);
   std::vector<int> out(n);
   for (int i : order) {
     const int s = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());

@@ -7,7 +7,7 @@
 
 namespace l2 {
 
-void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb) {
+void draw_headers(const PipeserverPlan& plan, bool frame_parity, RgbImage& fb) {
   if (fb.width() != plan.fb_width || fb.height() != plan.fb_height) {
     throw LayoutError("draw_headers: framebuffer size does not match the plan");
   }
@@ -15,7 +15,7 @@ void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb) {
   for (int y = 0; y < fb.height(); ++y) headers.draw_row(y, fb.row(y));
 }
 
-void clear_outside_tiles(const ServerPlan& plan, RgbImage& fb) {
+void clear_outside_tiles(const PipeserverPlan& plan, RgbImage& fb) {
   if (fb.width() != plan.fb_width || fb.height() != plan.fb_height) {
     throw LayoutError("clear_outside_tiles: framebuffer size does not match the plan");
   }

@@ -23,7 +23,7 @@ std::optional<int> needed_height(const std::vector<DisplayTile>& tiles, int widt
   }
 }
 
-bool every_server_has_tiles(const Lists& lists) {
+bool every_pipeserver_has_tiles(const Lists& lists) {
   return std::none_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); });
 }
 
@@ -40,7 +40,7 @@ std::optional<int> tallest(const Lists& lists, int width) {
 
 bool fits(const Lists& lists, int width, int height) {
   const std::optional<int> h = tallest(lists, width);
-  return every_server_has_tiles(lists) && h && *h <= height;
+  return every_pipeserver_has_tiles(lists) && h && *h <= height;
 }
 
 struct Tiles {
@@ -48,8 +48,8 @@ struct Tiles {
   std::vector<DisplayTile> on_displays;
 };
 
-Lists lists_for(const Wall& wall, const Tiles& t, AssignmentPolicy policy, int servers) {
-  return server_tile_lists(wall, t.logical, t.on_displays, policy, servers);
+Lists lists_for(const Wall& wall, const Tiles& t, AssignmentPolicy policy, int pipeservers) {
+  return pipeserver_tile_lists(wall, t.logical, t.on_displays, policy, pipeservers);
 }
 
 // Every framebuffer width from the widest tile's up to 4096: the first that holds the tiles
@@ -97,12 +97,12 @@ FitSuggestions suggest_fit(const Wall& wall) {
   t.logical = make_logical_tiles(wall);
   t.on_displays = split_at_displays(wall, t.logical);
   const int w = wall.framebuffer_width, h = wall.framebuffer_height;
-  const Lists lists = lists_for(wall, t, wall.assignment, wall.server_count);
+  const Lists lists = lists_for(wall, t, wall.assignment, wall.pipeserver_count);
 
   FitSuggestions fit;
   fit.fits = fits(lists, w, h);
-  fit.idle_server = !every_server_has_tiles(lists);
-  if (!fit.idle_server) {
+  fit.idle_pipeserver = !every_pipeserver_has_tiles(lists);
+  if (!fit.idle_pipeserver) {
     const std::optional<int> rows = tallest(lists, w);
     if (rows && *rows <= kMaxFramebufferSide) fit.height_at_width = std::max(*rows, 1);
     const WidthScan scan = scan_widths(lists, h);
@@ -112,7 +112,8 @@ FitSuggestions suggest_fit(const Wall& wall) {
   for (int p = 0; p <= static_cast<int>(AssignmentPolicy::AreaBalanced); ++p) {
     const auto policy = static_cast<AssignmentPolicy>(p);
     if (policy == wall.assignment) continue;
-    if (fits(lists_for(wall, t, policy, wall.server_count), w, h)) fit.policies.push_back(policy);
+    if (fits(lists_for(wall, t, policy, wall.pipeserver_count), w, h))
+      fit.policies.push_back(policy);
   }
   // Past one pipeserver per display tile and layer (and the overlay's), more only idle.
   const int per_tile = wall.depth_layers > 0 ? wall.depth_layers : 1;
@@ -120,7 +121,7 @@ FitSuggestions suggest_fit(const Wall& wall) {
       kMaxPipeservers, static_cast<int>(t.logical.size()) * per_tile + (wall.overlay ? 1 : 0));
   for (int n = 1; n <= most; ++n) {
     if (fits(lists_for(wall, t, wall.assignment, n), w, h)) {
-      fit.server_count = n;
+      fit.pipeserver_count = n;
       break;
     }
   }
@@ -139,7 +140,8 @@ std::string fit_hint(const FitSuggestions& fit) {
                                 fit.smallest->first, fit.smallest->second));
   }
   if (!fit.policies.empty()) parts.push_back("assignment = " + quoted_policies(fit.policies));
-  if (fit.server_count) parts.push_back(fmt::format("pipeservers.count = {}", *fit.server_count));
+  if (fit.pipeserver_count)
+    parts.push_back(fmt::format("pipeservers.count = {}", *fit.pipeserver_count));
   if (parts.empty()) return "";
   std::string out = "what would fit, each alone: ";
   for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : "; ") + parts[i];
@@ -148,10 +150,10 @@ std::string fit_hint(const FitSuggestions& fit) {
 
 std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions& fit) {
   const int w = wall.framebuffer_width, h = wall.framebuffer_height;
-  const std::string servers =
-      fmt::format("{} pipeserver{}", wall.server_count, wall.server_count == 1 ? "" : "s");
+  const std::string pipeservers =
+      fmt::format("{} pipeserver{}", wall.pipeserver_count, wall.pipeserver_count == 1 ? "" : "s");
   const std::string as_written =
-      fmt::format("{}x{}, {}, {}", w, h, servers, to_string(wall.assignment));
+      fmt::format("{}x{}, {}, {}", w, h, pipeservers, to_string(wall.assignment));
   std::vector<std::string> lines;
   lines.push_back(
       fmt::format("as written ({}): {}", as_written, fit.fits ? "fits" : "does not fit"));
@@ -178,11 +180,12 @@ std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions
                     board_note(sh, wall.board_max_height, "board_max_height")));
   }
   for (AssignmentPolicy p : fit.policies) {
-    lines.push_back(fmt::format("assignment = \"{}\" (at {}x{}, {})", to_string(p), w, h, servers));
+    lines.push_back(
+        fmt::format("assignment = \"{}\" (at {}x{}, {})", to_string(p), w, h, pipeservers));
   }
-  if (fit.server_count) {
+  if (fit.pipeserver_count) {
     lines.push_back(fmt::format("pipeservers.count = {} (at {}x{}, {}): the fewest that fit",
-                                *fit.server_count, w, h, to_string(wall.assignment)));
+                                *fit.pipeserver_count, w, h, to_string(wall.assignment)));
   }
   if (lines.size() == 1) lines.push_back("no single change of these values fits");
   return lines;

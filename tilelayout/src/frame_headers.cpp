@@ -37,7 +37,7 @@ void put_tile(const PackedTile& p, int r, bool frame_parity, Put& put) {
 
 }  // namespace
 
-FrameHeaders::FrameHeaders(const ServerPlan& plan, bool frame_parity)
+FrameHeaders::FrameHeaders(const PipeserverPlan& plan, bool frame_parity)
     : width_(plan.fb_width), height_(plan.fb_height) {
   row_begin_.reserve(static_cast<std::size_t>(height_) + 1);
   auto next_scanline = [&] { row_begin_.push_back(static_cast<std::uint32_t>(headers_.size())); };

@@ -8,18 +8,18 @@
 namespace l2 {
 namespace {
 
-std::string describe(int server, int index, const DisplayTile& t) {
+std::string describe(int pipeserver, int index, const DisplayTile& t) {
   const char* kind = t.compositing == Compositing::Key     ? ", KEY"
                      : t.compositing == Compositing::Depth ? ", DEPTH"
                                                            : "";
-  return fmt::format("pipeserver {}: tile {} (display {}, {}x{} at {},{}{})", server, index,
+  return fmt::format("pipeserver {}: tile {} (display {}, {}x{} at {},{}{})", pipeserver, index,
                      t.display, t.on_display.w, t.on_display.h, t.on_display.x, t.on_display.y,
                      kind);
 }
 
 // A tile must be expressible in headers: every COPY names display, x, y + r and width in their
 // bit widths (spec §2). Checked here so nothing is drawn for a plan that cannot be encoded.
-void check_encodable(int server, int index, const DisplayTile& t) {
+void check_encodable(int pipeserver, int index, const DisplayTile& t) {
   const Rect& r = t.on_display;
   const char* problem = nullptr;
   if (t.display < 0 || t.display >= kMaxDisplays) {
@@ -35,19 +35,19 @@ void check_encodable(int server, int index, const DisplayTile& t) {
   } else if (t.compositing == Compositing::Key && t.key > 0xFFFFFF) {
     problem = "key colour must be 000000..ffffff";
   }
-  if (problem) throw LayoutError(fmt::format("{}: {}", describe(server, index, t), problem));
+  if (problem) throw LayoutError(fmt::format("{}: {}", describe(pipeserver, index, t), problem));
 }
 
 }  // namespace
 
-ServerPlan pack_tiles(int server, int fb_width, int fb_height,
-                      const std::vector<DisplayTile>& tiles) {
+PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
+                          const std::vector<DisplayTile>& tiles) {
   if (fb_width < kHeaderPixels + 1 || fb_height < 1) {
-    throw LayoutError(
-        fmt::format("pipeserver {}: framebuffer {}x{} is too small", server, fb_width, fb_height));
+    throw LayoutError(fmt::format("pipeserver {}: framebuffer {}x{} is too small", pipeserver,
+                                  fb_width, fb_height));
   }
-  ServerPlan plan;
-  plan.server = server;
+  PipeserverPlan plan;
+  plan.pipeserver = pipeserver;
   plan.fb_width = fb_width;
   plan.fb_height = fb_height;
   plan.tiles.reserve(tiles.size());
@@ -55,12 +55,12 @@ ServerPlan pack_tiles(int server, int fb_width, int fb_height,
   int gap_x = 0;  // where the next tile's header gap starts in the current row
   for (int i = 0; i < static_cast<int>(tiles.size()); ++i) {
     const DisplayTile& t = tiles[i];
-    check_encodable(server, i, t);
+    check_encodable(pipeserver, i, t);
     const int columns = gap_columns(t) + payload_columns(t);
     if (columns > fb_width) {
-      throw LayoutError(
-          fmt::format("{} does not fit the {}x{} framebuffer: needs {} columns, {} too many",
-                      describe(server, i, t), fb_width, fb_height, columns, columns - fb_width));
+      throw LayoutError(fmt::format(
+          "{} does not fit the {}x{} framebuffer: needs {} columns, {} too many",
+          describe(pipeserver, i, t), fb_width, fb_height, columns, columns - fb_width));
     }
     // Rule 2: a tile whose gap and pixels would pass W starts a new row below the last one.
     if (plan.rows.empty() || gap_x + columns > fb_width) {
@@ -84,7 +84,7 @@ ServerPlan pack_tiles(int server, int fb_width, int fb_height,
       if (p.fb_y + p.tile.on_display.h <= fb_height) continue;
       throw LayoutError(fmt::format(
           "{} does not fit the {}x{} framebuffer: needs {} rows, {} too many",
-          describe(server, i, p.tile), fb_width, fb_height, needed, needed - fb_height));
+          describe(pipeserver, i, p.tile), fb_width, fb_height, needed, needed - fb_height));
     }
   }
   return plan;

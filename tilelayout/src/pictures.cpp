@@ -41,7 +41,7 @@ void label(RgbImage& img, const Rect& r, const std::string& text, const std::str
 
 // Header gaps are two columns: at least that, wider on large framebuffers so they still show
 // when the picture is viewed scaled down (drawn over the first columns of the tile).
-int gap_width(const ServerPlan& plan) {
+int gap_width(const PipeserverPlan& plan) {
   return std::max(2, std::max(plan.fb_width, plan.fb_height) / 256);
 }
 
@@ -85,7 +85,7 @@ Rgb palette_colour(int i) {
   return {channel(r), channel(g), channel(b)};
 }
 
-RgbImage framebuffer_picture(const ServerPlan& plan) {
+RgbImage framebuffer_picture(const PipeserverPlan& plan) {
   RgbImage img(plan.fb_width, plan.fb_height, kUnused);
   for (const PackedTile& p : plan.tiles) {
     const Rect r{p.fb_x, p.fb_y, p.tile.on_display.w, p.tile.on_display.h};
@@ -113,7 +113,7 @@ RgbImage framebuffer_picture(const ServerPlan& plan) {
   return img;
 }
 
-RgbImage framebuffer_page(const ServerPlan& plan) {
+RgbImage framebuffer_page(const PipeserverPlan& plan) {
   const int gap = gap_width(plan);
   const bool keyed_or_depth = std::any_of(plan.tiles.begin(), plan.tiles.end(), [](const auto& p) {
     return p.tile.compositing != Compositing::Copy;
@@ -149,19 +149,19 @@ RgbImage wall_picture(const TileLayout& layout, int layer) {
   // A layer's tiles, and the overlay over every layer.
   const auto shown = [&](std::size_t i) {
     return layout.tiles[i].compositing != Compositing::Depth ||
-           layout.servers[static_cast<std::size_t>(layout.tile_server[i])].layer == layer;
+           layout.pipeservers[static_cast<std::size_t>(layout.tile_pipeserver[i])].layer == layer;
   };
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
     if (!shown(i)) continue;
     const Rect r = shrink(layout.tiles[i].on_canvas);
-    img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(layout.tile_server[i]));
+    img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(layout.tile_pipeserver[i]));
   }
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
     if (!shown(i)) continue;
     const Rect r = shrink(layout.tiles[i].on_canvas);
     if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
-    label(img, r, fmt::format("P{} L{}", layout.tile_server[i], layout.tiles[i].logical_tile),
-          std::to_string(layout.tile_server[i]));
+    label(img, r, fmt::format("P{} L{}", layout.tile_pipeserver[i], layout.tiles[i].logical_tile),
+          std::to_string(layout.tile_pipeserver[i]));
   }
   for (const Display& d : wall.displays) outline(img, shrink(d.on_canvas()), {255, 255, 255}, 2);
   return img;
@@ -169,20 +169,20 @@ RgbImage wall_picture(const TileLayout& layout, int layer) {
 
 int wall_layers(const TileLayout& layout) {
   int layers = 1;
-  for (const ServerPlan& s : layout.servers) layers = std::max(layers, s.layers);
+  for (const PipeserverPlan& s : layout.pipeservers) layers = std::max(layers, s.layers);
   return layers;
 }
 
 RgbImage wall_page(const TileLayout& layout, int layer) {
   std::vector<LegendEntry> legend;
   const int layers = wall_layers(layout);
-  for (std::size_t i = 0; i < layout.servers.size(); ++i) {
-    const ServerPlan& s = layout.servers[i];
-    const bool keyed = layout.wall.overlay && s.server == layout.wall.server_count - 1;
+  for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
+    const PipeserverPlan& s = layout.pipeservers[i];
+    const bool keyed = layout.wall.overlay && s.pipeserver == layout.wall.pipeserver_count - 1;
     if (layers > 1 && !keyed && s.layer != layer) continue;
-    legend.push_back({fmt::format("tiles pipeserver {} renders{}", s.server,
+    legend.push_back({fmt::format("tiles pipeserver {} renders{}", s.pipeserver,
                                   keyed ? " (the overlay, KEY over every layer)" : ""),
-                      palette_colour(s.server)});
+                      palette_colour(s.pipeserver)});
   }
   if (layers > 1) {
     legend.push_back({fmt::format("depth layer {} of {}: share {} of the geometry of the "

@@ -19,9 +19,9 @@ const char* link_name(int links) {
 }
 
 // " (layer 1 of 2)" for a pipeserver of a depth wall, " (overlay)" for the overlay's.
-std::string role(const TileLayout& layout, const ServerPlan& s) {
+std::string role(const TileLayout& layout, const PipeserverPlan& s) {
   const Wall& w = layout.wall;
-  if (w.overlay && s.server == w.server_count - 1) return " (overlay)";
+  if (w.overlay && s.pipeserver == w.pipeserver_count - 1) return " (overlay)";
   if (w.depth_layers != 0) return fmt::format(" (layer {} of {})", s.layer, s.layers);
   return "";
 }
@@ -38,8 +38,8 @@ std::string compositing_summary(const TileLayout& layout) {
   const Wall& w = layout.wall;
   std::string out;
   if (w.depth_layers != 0) {
-    const int layers = layer_count(w, w.server_count);
-    const int per_layer = (w.server_count - (w.overlay ? 1 : 0)) / layers;
+    const int layers = layer_count(w, w.pipeserver_count);
+    const int per_layer = (w.pipeserver_count - (w.overlay ? 1 : 0)) / layers;
     out += fmt::format("depth: {} layer{} of {} pipeserver{} each ({})\n", layers,
                        layers == 1 ? "" : "s", per_layer, per_layer == 1 ? "" : "s",
                        per_layer == 1 ? "sort-last"
@@ -50,20 +50,20 @@ std::string compositing_summary(const TileLayout& layout) {
     const Overlay& o = *w.overlay;
     out += fmt::format("overlay: display {} {}x{} at {},{}, key colour {:06x}, pipeserver {}\n",
                        o.display, o.on_display.w, o.on_display.h, o.on_display.x, o.on_display.y,
-                       o.key, w.server_count - 1);
+                       o.key, w.pipeserver_count - 1);
   }
   return out;
 }
 
-void servers(const TileLayout& layout, std::string& out) {
+void pipeservers(const TileLayout& layout, std::string& out) {
   const int hz = layout.wall.refresh_hz;
-  for (const ServerPlan& s : layout.servers) {
+  for (const PipeserverPlan& s : layout.pipeservers) {
     long long used = 0;
     for (const PackedTile& p : s.tiles) used += 1LL * payload_columns(p.tile) * p.tile.on_display.h;
     const double total = double(s.fb_width) * s.fb_height;
     out += fmt::format(
         "pipeserver {}{}: {} tiles in {} row{}, {} of {} rows used, framebuffer use {:.1f}%\n",
-        s.server, role(layout, s), s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s",
+        s.pipeserver, role(layout, s), s.tiles.size(), s.rows.size(), s.rows.size() == 1 ? "" : "s",
         s.used_height(), s.fb_height, 100.0 * double(used) / total);
     const DviTiming link = dvi_timing(s.fb_width, s.fb_height, hz);
     out += fmt::format(
@@ -91,7 +91,7 @@ void displays(const TileLayout& layout, std::string& out) {
     int count = 0;
     for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
       if (layout.tiles[i].display != d.id) continue;
-      from.insert(layout.tile_server[i]);
+      from.insert(layout.tile_pipeserver[i]);
       ++count;
     }
     out += fmt::format(
@@ -114,10 +114,10 @@ std::string format_plan(const TileLayout& layout) {
       w.source.empty() ? std::string("built in code") : printable(w.source.string()),
       w.canvas_width, w.canvas_height, w.displays.size(),
       kTilingNames[static_cast<int>(w.tiling.kind)], layout.logical_tiles.size(),
-      layout.tiles.size(), w.server_count, w.framebuffer_width, w.framebuffer_height,
+      layout.tiles.size(), w.pipeserver_count, w.framebuffer_width, w.framebuffer_height,
       to_string(w.assignment));
   out += compositing_summary(layout);
-  servers(layout, out);
+  pipeservers(layout, out);
   displays(layout, out);
   for (const std::string& warning : layout.warnings) out += warning + "\n";
   return out;

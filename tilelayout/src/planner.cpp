@@ -28,20 +28,20 @@ std::string where(const Wall& wall, int line) {
   return fmt::format("{}:{}: ", wall.source.string(), line);
 }
 
-std::vector<int> server_of_logical(const Wall& wall, const std::vector<Rect>& logical,
-                                   const std::vector<DisplayTile>& tiles, AssignmentPolicy policy,
-                                   int server_count) {
+std::vector<int> pipeserver_of_logical(const Wall& wall, const std::vector<Rect>& logical,
+                                       const std::vector<DisplayTile>& tiles,
+                                       AssignmentPolicy policy, int pipeserver_count) {
   std::vector<long long> visible(logical.size(), 0);
   for (const DisplayTile& t : tiles) visible[t.logical_tile] += t.on_display.area();
-  return assign_servers(policy, logical, visible, server_count,
-                        {0, 0, wall.canvas_width, wall.canvas_height});
+  return assign_pipeservers(policy, logical, visible, pipeserver_count,
+                            {0, 0, wall.canvas_width, wall.canvas_height});
 }
 
 // Every display tile of the plan (once per layer in a depth wall, the overlay last) and the
 // pipeserver that renders it. Empty when the layers cannot share the pipeservers evenly.
 struct Distribution {
   std::vector<DisplayTile> tiles;
-  std::vector<int> server;
+  std::vector<int> pipeserver;
 };
 
 DisplayTile overlay_tile(const Wall& wall, int logical_index) {
@@ -55,24 +55,24 @@ DisplayTile overlay_tile(const Wall& wall, int logical_index) {
 // `given`: the pipeserver of each logical tile, chosen by the caller instead of the policy.
 Distribution distribute(const Wall& wall, const std::vector<Rect>& logical,
                         const std::vector<DisplayTile>& tiles, AssignmentPolicy policy,
-                        int server_count, const std::vector<int>* given = nullptr) {
-  const int sharing = server_count - (wall.overlay ? 1 : 0);
-  const int layers = layer_count(wall, server_count);
+                        int pipeserver_count, const std::vector<int>* given = nullptr) {
+  const int sharing = pipeserver_count - (wall.overlay ? 1 : 0);
+  const int layers = layer_count(wall, pipeserver_count);
   if (sharing < 1 || layers < 1 || sharing % layers != 0) return {};
   const int per_layer = sharing / layers;
-  const std::vector<int> server_of =
-      given ? *given : server_of_logical(wall, logical, tiles, policy, per_layer);
+  const std::vector<int> pipeserver_of =
+      given ? *given : pipeserver_of_logical(wall, logical, tiles, policy, per_layer);
   Distribution d;
   for (int layer = 0; layer < layers; ++layer) {
     for (DisplayTile t : tiles) {
       if (wall.depth_layers != 0) t.compositing = Compositing::Depth;
       d.tiles.push_back(t);
-      d.server.push_back(layer * per_layer + server_of[t.logical_tile]);
+      d.pipeserver.push_back(layer * per_layer + pipeserver_of[t.logical_tile]);
     }
   }
   if (wall.overlay) {
     d.tiles.push_back(overlay_tile(wall, static_cast<int>(logical.size())));
-    d.server.push_back(sharing);
+    d.pipeserver.push_back(sharing);
   }
   return d;
 }
@@ -98,74 +98,75 @@ std::optional<std::string> dvi_link_warning(const Wall& wall) {
 
 }  // namespace
 
-int layer_count(const Wall& wall, int server_count) {
+int layer_count(const Wall& wall, int pipeserver_count) {
   if (wall.depth_layers == 0) return 1;
   if (wall.depth_layers != kAllLayers) return wall.depth_layers;
-  return server_count - (wall.overlay ? 1 : 0);
+  return pipeserver_count - (wall.overlay ? 1 : 0);
 }
 
 namespace {
 
-std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int server_count) {
-  std::vector<std::vector<DisplayTile>> lists(static_cast<std::size_t>(std::max(server_count, 0)));
-  for (std::size_t i = 0; i < d.tiles.size(); ++i) lists[d.server[i]].push_back(d.tiles[i]);
+std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int pipeserver_count) {
+  std::vector<std::vector<DisplayTile>> lists(
+      static_cast<std::size_t>(std::max(pipeserver_count, 0)));
+  for (std::size_t i = 0; i < d.tiles.size(); ++i) lists[d.pipeserver[i]].push_back(d.tiles[i]);
   for (auto& list : lists) list = packing_order(std::move(list));
   return lists;
 }
 
-TileLayout plan(const Wall& wall, const std::vector<int>* server_of_logical) {
+TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical) {
   TileLayout layout;
   layout.wall = wall;
   layout.logical_tiles = make_logical_tiles(wall);
   layout.tiles = split_at_displays(wall, layout.logical_tiles);
-  if (server_of_logical && (wall.depth_layers != 0 || wall.overlay ||
-                            server_of_logical->size() != layout.logical_tiles.size())) {
+  if (pipeserver_of_logical && (wall.depth_layers != 0 || wall.overlay ||
+                                pipeserver_of_logical->size() != layout.logical_tiles.size())) {
     throw LayoutError(where(wall, 0) +
                       fmt::format("a given assignment needs a sort-first wall without overlay "
                                   "and one pipeserver for each of its {} logical tiles, got {}",
-                                  layout.logical_tiles.size(), server_of_logical->size()));
+                                  layout.logical_tiles.size(), pipeserver_of_logical->size()));
   }
-  if (server_of_logical) {
-    for (int s : *server_of_logical) {
-      if (s < 0 || s >= wall.server_count) {
+  if (pipeserver_of_logical) {
+    for (int s : *pipeserver_of_logical) {
+      if (s < 0 || s >= wall.pipeserver_count) {
         throw LayoutError(where(wall, 0) + fmt::format("assigned pipeserver {} is not 0..{}", s,
-                                                       wall.server_count - 1));
+                                                       wall.pipeserver_count - 1));
       }
     }
   }
 
   const Distribution d = distribute(wall, layout.logical_tiles, layout.tiles, wall.assignment,
-                                    wall.server_count, server_of_logical);
-  const std::vector<std::vector<DisplayTile>> lists = tile_lists(d, wall.server_count);
+                                    wall.pipeserver_count, pipeserver_of_logical);
+  const std::vector<std::vector<DisplayTile>> lists = tile_lists(d, wall.pipeserver_count);
   if (d.tiles.empty()) {
     throw LayoutError(where(wall, wall.depth_line) +
                       fmt::format("depth.layers: {} layers do not share {} pipeservers evenly",
-                                  layer_count(wall, wall.server_count), wall.server_count));
+                                  layer_count(wall, wall.pipeserver_count), wall.pipeserver_count));
   }
   layout.tiles = d.tiles;
-  layout.tile_server = d.server;
+  layout.tile_pipeserver = d.pipeserver;
   if (wall.overlay) layout.logical_tiles.push_back(layout.tiles.back().on_canvas);
-  const int layers = layer_count(wall, wall.server_count);
-  const int per_layer = (wall.server_count - (wall.overlay ? 1 : 0)) / layers;
-  for (int s = 0; s < wall.server_count; ++s) {
+  const int layers = layer_count(wall, wall.pipeserver_count);
+  const int per_layer = (wall.pipeserver_count - (wall.overlay ? 1 : 0)) / layers;
+  for (int s = 0; s < wall.pipeserver_count; ++s) {
     try {
-      layout.servers.push_back(
+      layout.pipeservers.push_back(
           pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, lists[s]));
     } catch (const LayoutError& e) {
       throw not_fitting(wall, wall.framebuffer_line, e.what());
     }
     if (s < per_layer * layers && wall.depth_layers != 0) {
-      layout.servers.back().layer = s / per_layer;
-      layout.servers.back().layers = layers;
+      layout.pipeservers.back().layer = s / per_layer;
+      layout.pipeservers.back().layers = layers;
     }
   }
-  for (const ServerPlan& s : layout.servers) {
+  for (const PipeserverPlan& s : layout.pipeservers) {
     if (!s.tiles.empty()) continue;
     throw not_fitting(wall, 0,
                       fmt::format("pipeserver {} gets no tiles ({} display tiles for {} "
                                   "pipeservers); every pipeserver needs a tile (one without "
                                   "scans out idle frames, which never earn READY)",
-                                  s.server, layout.tiles.size(), layout.servers.size()));
+                                  s.pipeserver, layout.tiles.size(), layout.pipeservers.size()));
   }
   for (const std::string& w : coverage_warnings(wall, display_coverage(wall, layout.tiles))) {
     layout.warnings.push_back(where(wall, 0) + "warning: " + w);
@@ -177,19 +178,20 @@ TileLayout plan(const Wall& wall, const std::vector<int>* server_of_logical) {
 
 }  // namespace
 
-std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
-                                                        const std::vector<Rect>& logical,
-                                                        const std::vector<DisplayTile>& tiles,
-                                                        AssignmentPolicy policy, int server_count) {
-  return tile_lists(distribute(wall, logical, tiles, policy, server_count), server_count);
+std::vector<std::vector<DisplayTile>> pipeserver_tile_lists(const Wall& wall,
+                                                            const std::vector<Rect>& logical,
+                                                            const std::vector<DisplayTile>& tiles,
+                                                            AssignmentPolicy policy,
+                                                            int pipeserver_count) {
+  return tile_lists(distribute(wall, logical, tiles, policy, pipeserver_count), pipeserver_count);
 }
 
 TileLayout plan_layout(const Wall& wall) {
   return plan(wall, nullptr);
 }
 
-TileLayout plan_layout(const Wall& wall, const std::vector<int>& server_of_logical) {
-  return plan(wall, &server_of_logical);
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical) {
+  return plan(wall, &pipeserver_of_logical);
 }
 
 }  // namespace l2

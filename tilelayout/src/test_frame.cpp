@@ -44,11 +44,11 @@ void fill_tile(const PackedTile& p, int layer, int layers, RgbImage& fb) {
 
 }  // namespace
 
-void fill_test_pattern(const ServerPlan& plan, RgbImage& fb) {
+void fill_test_pattern(const PipeserverPlan& plan, RgbImage& fb) {
   for (const PackedTile& p : plan.tiles) fill_tile(p, plan.layer, plan.layers, fb);
 }
 
-RgbImage test_frame(const ServerPlan& plan, bool frame_parity) {
+RgbImage test_frame(const PipeserverPlan& plan, bool frame_parity) {
   RgbImage fb(plan.fb_width, plan.fb_height);
   fill_test_pattern(plan, fb);
   draw_headers(plan, frame_parity, fb);

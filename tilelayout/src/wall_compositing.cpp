@@ -12,8 +12,8 @@ namespace l2 {
 namespace {
 
 // The pipeservers that share the tiling: all but the overlay's own.
-int tile_servers(const Wall& wall) {
-  return wall.server_count - (wall.overlay ? 1 : 0);
+int tile_pipeservers(const Wall& wall) {
+  return wall.pipeserver_count - (wall.overlay ? 1 : 0);
 }
 
 std::string divisors(int n) {
@@ -35,10 +35,10 @@ void read_depth(const TomlFields& top, Wall& wall) {
   const toml::node* layers = f.node("layers");
   if (!layers) f.fail("layers", "missing (required): a number of layers or \"all\"");
   wall.depth_line = f.line_of("layers");
-  const int servers = tile_servers(wall);
+  const int pipeservers = tile_pipeservers(wall);
   if (const auto* s = layers->as_string()) {
     if (s->get() != "all") {
-      f.fail("layers", fmt::format("must be 1..{} or \"all\", got \"{}\"", servers, s->get()));
+      f.fail("layers", fmt::format("must be 1..{} or \"all\", got \"{}\"", pipeservers, s->get()));
     }
     wall.depth_layers = kAllLayers;
     return;
@@ -47,13 +47,13 @@ void read_depth(const TomlFields& top, Wall& wall) {
     f.fail("layers", fmt::format("must be an integer or \"all\", got {}", type_name(*layers)));
   }
   const long long k = layers->as_integer()->get();
-  if (k < 1 || k > servers) {
-    f.fail("layers", fmt::format("must be 1..{} or \"all\", got {}", servers, k));
+  if (k < 1 || k > pipeservers) {
+    f.fail("layers", fmt::format("must be 1..{} or \"all\", got {}", pipeservers, k));
   }
   // Each layer is rendered by its own pipeservers, the same number for every layer.
-  if (servers % k != 0) {
-    f.fail("layers", fmt::format("{} layers do not share {} pipeservers evenly: {}", k, servers,
-                                 divisors(servers)));
+  if (pipeservers % k != 0) {
+    f.fail("layers", fmt::format("{} layers do not share {} pipeservers evenly: {}", k, pipeservers,
+                                 divisors(pipeservers)));
   }
   wall.depth_layers = static_cast<int>(k);
 }
@@ -79,11 +79,11 @@ void read_overlay(const TomlFields& top, Wall& wall) {
                       fmt::format("{}x{} at {},{} does not lie on display {} ({}x{})", r.w, r.h,
                                   r.x, r.y, d.id, d.width, d.height));
   }
-  if (wall.server_count < 2) {
+  if (wall.pipeserver_count < 2) {
     top.source().fail(o.line, "overlay",
                       fmt::format("needs a pipeserver of its own besides those of the tiles: "
                                   "pipeservers.count must be at least 2, got {}",
-                                  wall.server_count));
+                                  wall.pipeserver_count));
   }
   wall.overlay = o;
 }

@@ -36,7 +36,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_displays(top, wall);
   read_canvas(top, wall);
   read_tiling(top, wall);
-  read_servers_and_mesh(top, wall);
+  read_pipeservers_and_mesh(top, wall);
   read_compositing(top, wall);
   read_balance(top, wall);
   return wall;

@@ -13,7 +13,7 @@ void read_canvas(const TomlFields& top, Wall& wall);
 // [tiling]: needs the canvas.
 void read_tiling(const TomlFields& top, Wall& wall);
 // [pipeservers] and [mesh].
-void read_servers_and_mesh(const TomlFields& top, Wall& wall);
+void read_pipeservers_and_mesh(const TomlFields& top, Wall& wall);
 // [depth] and [overlay] (optional): needs the displays and the pipeservers.
 void read_compositing(const TomlFields& top, Wall& wall);
 // [balance] (optional): needs [depth] and [overlay] read, which it cannot be combined with.

@@ -145,7 +145,7 @@ void read_tiling(const TomlFields& top, Wall& wall) {
   }
 }
 
-void read_servers_and_mesh(const TomlFields& top, Wall& wall) {
+void read_pipeservers_and_mesh(const TomlFields& top, Wall& wall) {
   if (const toml::table* mesh = top.table("mesh")) {
     const TomlFields m(*mesh, "mesh", top.source(),
                        {"board_max_width", "board_max_height", "refresh_hz"});
@@ -157,7 +157,7 @@ void read_servers_and_mesh(const TomlFields& top, Wall& wall) {
   if (!table) top.source().fail(0, "pipeservers", "missing (required)");
   const TomlFields f(*table, "pipeservers", top.source(),
                      {"count", "framebuffer_width", "framebuffer_height", "assignment"});
-  wall.server_count = f.required_integer("count", 1, kMaxPipeservers);
+  wall.pipeserver_count = f.required_integer("count", 1, kMaxPipeservers);
   // A framebuffer is one board input (spec §5): it may not exceed what a board accepts.
   const auto limit = [&](std::string_view key, int board_max, std::string_view mesh_key,
                          int fallback) {

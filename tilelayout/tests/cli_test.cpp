@@ -275,14 +275,15 @@ TEST_P(CliWall, ScanoutFramesRouteEveryDisplayPixelOnce) {
   const Wall wall = load_wall(path);
   const TileLayout layout = plan_layout(wall);
   std::vector<RgbImage> frames;
-  for (int s = 0; s < wall.server_count; ++s) {
+  for (int s = 0; s < wall.pipeserver_count; ++s) {
     frames.push_back(read_png(dir_ / "scan" / ("scanout-" + std::to_string(s) + ".png")));
     EXPECT_EQ(frames.back().width(), wall.framebuffer_width);
     EXPECT_EQ(frames.back().height(), wall.framebuffer_height);
     const RgbImage pic = read_png(dir_ / "png" / ("pipeserver-" + std::to_string(s) + ".png"));
     EXPECT_GE(pic.width(), wall.framebuffer_width);
     EXPECT_GT(pic.height(), wall.framebuffer_height);  // the legend below
-    expect_on_top(pic, framebuffer_picture(layout.servers[s]), "pipeserver " + std::to_string(s));
+    expect_on_top(pic, framebuffer_picture(layout.pipeservers[s]),
+                  "pipeserver " + std::to_string(s));
   }
   const RgbImage wall_png = read_png(dir_ / "png" / "wall.png");
   // Canvases longer than 4096 pixels are drawn shrunk by a whole factor.

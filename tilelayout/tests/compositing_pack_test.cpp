@@ -34,7 +34,7 @@ TEST(CompositingPack, KeyDepthAndCopyTilesShareARow) {
   // W = 40: KEY 5 wide: gap 0..3, pixels 4..8; DEPTH 3 wide: gap 9..12, colour 13..15, depth
   // 16..18; COPY 4 wide: gap 19..20, pixels 21..24; DEPTH 6 wide needs 4 + 12 = 16 columns from
   // 25: 41 > 40, so it opens row 2 (y = 3, below the 3-row KEY tile), pixels 4..9 and 10..15.
-  const ServerPlan plan =
+  const PipeserverPlan plan =
       pack_tiles(0, 40, 10,
                  {composited(Compositing::Key, 0, 0, 0, 5, 3, 0x00FF00),
                   composited(Compositing::Depth, 1, 0, 0, 3, 2), display_tile(2, 0, 0, 4, 1),
@@ -53,7 +53,7 @@ TEST(CompositingPack, KeyDepthAndCopyTilesShareARow) {
 
 TEST(CompositingPack, ATileEndingAtTheLastColumnStaysInTheRow) {
   // 4 + 2·8 = 20, then 20 + 4 + 16 = 40 = W: both in row 0; a COPY of 1 then needs a new row.
-  const ServerPlan plan =
+  const PipeserverPlan plan =
       pack_tiles(0, 40, 10,
                  {composited(Compositing::Depth, 0, 0, 0, 8, 1),
                   composited(Compositing::Key, 0, 0, 1, 16, 1), display_tile(0, 0, 2, 1, 1)});
@@ -106,7 +106,7 @@ std::vector<std::string> parsed_rows(const RgbImage& fb, int rows) {
 TEST(CompositingPack, HeadersOfADepthTileThenSkipsOfPayloadPlusTwo) {
   // W = 24 (docs/strip-header.md §7 example): DEPTH 3x1 at gap 0 (word 2..3, colour 4..6, depth
   // 7..9), COPY 4x2 at gap 10 (pixels 12..15), END at 16. Below the DEPTH tile: SKIP of 8.
-  const ServerPlan plan = pack_tiles(
+  const PipeserverPlan plan = pack_tiles(
       0, 24, 3, {composited(Compositing::Depth, 1, 5, 6, 3, 1), display_tile(2, 7, 8, 4, 2)});
   RgbImage fb(24, 3, kLeftOver);
   draw_headers(plan, true, fb);
@@ -123,7 +123,7 @@ TEST(CompositingPack, HeadersOfADepthTileThenSkipsOfPayloadPlusTwo) {
 }
 
 TEST(CompositingPack, KeyTileCarriesItsKeyColour) {
-  const ServerPlan plan =
+  const PipeserverPlan plan =
       pack_tiles(0, 12, 2, {composited(Compositing::Key, 0, 1, 2, 3, 2, 0x00FF00)});
   RgbImage fb(12, 2, kLeftOver);
   draw_headers(plan, false, fb);
@@ -137,7 +137,7 @@ TEST(CompositingPack, KeyTileCarriesItsKeyColour) {
 TEST(CompositingPack, ClearOutsideTilesKeepsDepthPixelsAndClearsBelowTheTile) {
   // DEPTH 3x1 and COPY 4x2 as above: on scanline 1 the DEPTH tile's word and payload columns
   // (2..9) are passed over by the SKIP and cleared; its depth pixels on scanline 0 stay.
-  const ServerPlan plan = pack_tiles(
+  const PipeserverPlan plan = pack_tiles(
       0, 24, 3, {composited(Compositing::Depth, 1, 5, 6, 3, 1), display_tile(2, 7, 8, 4, 2)});
   const Rgb white{255, 255, 255};
   RgbImage fb(24, 3, white);

@@ -47,10 +47,10 @@ std::string with_count(int count) {
 TEST(DepthWall, TwoLayersOfTwoPipeservers) {
   const TileLayout layout = plan_layout(parse_wall(kBase + "[depth]\nlayers = 2\n", "t.toml"));
   EXPECT_EQ(layout.wall.depth_layers, 2);
-  ASSERT_EQ(layout.servers.size(), 4u);
+  ASSERT_EQ(layout.pipeservers.size(), 4u);
   for (int s = 0; s < 4; ++s) {
-    EXPECT_EQ(layout.servers[s].layer, s / 2) << s;
-    EXPECT_EQ(layout.servers[s].layers, 2) << s;
+    EXPECT_EQ(layout.pipeservers[s].layer, s / 2) << s;
+    EXPECT_EQ(layout.pipeservers[s].layers, 2) << s;
   }
   // Every display tile once a layer, all DEPTH; layer 1's tile of pipeserver s + 2.
   const std::size_t per_layer = layout.tiles.size() / 2;
@@ -58,24 +58,24 @@ TEST(DepthWall, TwoLayersOfTwoPipeservers) {
   for (std::size_t i = 0; i < per_layer; ++i) {
     EXPECT_EQ(layout.tiles[i].compositing, Compositing::Depth);
     EXPECT_EQ(layout.tiles[i + per_layer].on_display, layout.tiles[i].on_display);
-    EXPECT_LT(layout.tile_server[i], 2);
-    EXPECT_EQ(layout.tile_server[i + per_layer], layout.tile_server[i] + 2);
+    EXPECT_LT(layout.tile_pipeserver[i], 2);
+    EXPECT_EQ(layout.tile_pipeserver[i + per_layer], layout.tile_pipeserver[i] + 2);
   }
   // Round-robin over the two pipeservers of a layer: logical tiles 0, 2, 4, ... to the first.
-  EXPECT_EQ(layout.tile_server[0], 0);
-  EXPECT_EQ(layout.servers[2].tiles.size(), layout.servers[0].tiles.size());
+  EXPECT_EQ(layout.tile_pipeserver[0], 0);
+  EXPECT_EQ(layout.pipeservers[2].tiles.size(), layout.pipeservers[0].tiles.size());
 }
 
 TEST(DepthWall, AllLayersIsSortLast) {
   const TileLayout layout =
       plan_layout(parse_wall(with_count(2) + "[depth]\nlayers = \"all\"\n", "t.toml"));
   EXPECT_EQ(layout.wall.depth_layers, kAllLayers);
-  ASSERT_EQ(layout.servers.size(), 2u);
-  EXPECT_EQ(layout.servers[1].layer, 1);
-  EXPECT_EQ(layout.servers[1].layers, 2);
+  ASSERT_EQ(layout.pipeservers.size(), 2u);
+  EXPECT_EQ(layout.pipeservers[1].layer, 1);
+  EXPECT_EQ(layout.pipeservers[1].layers, 2);
   // Both render every display tile.
-  EXPECT_EQ(layout.servers[0].tiles.size(), 10u);
-  EXPECT_EQ(layout.servers[1].tiles.size(), 10u);
+  EXPECT_EQ(layout.pipeservers[0].tiles.size(), 10u);
+  EXPECT_EQ(layout.pipeservers[1].tiles.size(), 10u);
 }
 
 TEST(DepthWall, BadLayersAreOneLineErrors) {
@@ -122,9 +122,9 @@ const std::string kOverlay =
 TEST(Overlay, TheLastPipeserverRendersItAloneAsAKeyTile) {
   const TileLayout layout = plan_layout(parse_wall(kBase + kOverlay, "t.toml"));
   ASSERT_TRUE(layout.wall.overlay.has_value());
-  ASSERT_EQ(layout.servers.size(), 4u);
-  ASSERT_EQ(layout.servers[3].tiles.size(), 1u);
-  const DisplayTile& t = layout.servers[3].tiles[0].tile;
+  ASSERT_EQ(layout.pipeservers.size(), 4u);
+  ASSERT_EQ(layout.pipeservers[3].tiles.size(), 1u);
+  const DisplayTile& t = layout.pipeservers[3].tiles[0].tile;
   EXPECT_EQ(t.compositing, Compositing::Key);
   EXPECT_EQ(t.key, 0x00FF00u);
   EXPECT_EQ(t.display, 1);
@@ -135,7 +135,7 @@ TEST(Overlay, TheLastPipeserverRendersItAloneAsAKeyTile) {
   // The other three share the 10 display tiles as COPY tiles.
   std::size_t shared = 0;
   for (int s = 0; s < 3; ++s) {
-    for (const PackedTile& p : layout.servers[s].tiles) {
+    for (const PackedTile& p : layout.pipeservers[s].tiles) {
       EXPECT_EQ(p.tile.compositing, Compositing::Copy);
       ++shared;
     }
@@ -147,9 +147,9 @@ TEST(Overlay, WithDepthLayersOfTheOtherPipeservers) {
   const TileLayout layout =
       plan_layout(parse_wall(with_count(3) + kOverlay + "[depth]\nlayers = \"all\"\n", "t.toml"));
   EXPECT_EQ(layer_count(layout.wall, 3), 2);
-  EXPECT_EQ(layout.servers[1].layer, 1);
-  EXPECT_EQ(layout.servers[2].layers, 1);  // the overlay renders the whole scene
-  EXPECT_EQ(layout.servers[2].tiles.size(), 1u);
+  EXPECT_EQ(layout.pipeservers[1].layer, 1);
+  EXPECT_EQ(layout.pipeservers[2].layers, 1);  // the overlay renders the whole scene
+  EXPECT_EQ(layout.pipeservers[2].tiles.size(), 1u);
 }
 
 TEST(Overlay, BadValuesAreOneLineErrors) {

@@ -21,7 +21,7 @@ constexpr Rgb kPaint{7, 8, 9};
 // W = 20: row 0 holds A (5x3, display 2 at 10,100) at gap 0 and B (4x1, display 5 at 0,7) at
 // gap 7; 7+2+4 = 13 leaves 7 pixels for END. Row 1 (y = 3) holds C (18x2), which fills it.
 struct Fixture {
-  ServerPlan plan = pack_tiles(
+  PipeserverPlan plan = pack_tiles(
       0, 20, 8,
       {display_tile(2, 10, 100, 5, 3), display_tile(5, 0, 7, 4, 1), display_tile(1, 3, 4, 18, 2)});
   RgbImage fb{20, 8, kPaint};
@@ -78,7 +78,7 @@ TEST(DrawHeaders, ParsedScanlinesRouteEveryTileRow) {
 
 TEST(DrawHeaders, OnePixelLeftGetsNoEnd) {
   // 2 + 7 = 9 of W = 10: one pixel remains, too few for a header; it stays untouched.
-  const ServerPlan plan = pack_tiles(0, 10, 1, {display_tile(0, 0, 0, 7, 1)});
+  const PipeserverPlan plan = pack_tiles(0, 10, 1, {display_tile(0, 0, 0, 7, 1)});
   RgbImage fb(10, 1, kPaint);
   draw_headers(plan, false, fb);
   EXPECT_EQ(fb.at(9, 0), kPaint);

@@ -13,8 +13,8 @@ std::vector<DisplayTile> five_tiles() {
 }
 
 TEST(PackTiles, FillsRowsLeftToRightThenStartsNewRowsBelow) {
-  const ServerPlan plan = pack_tiles(3, 100, 50, five_tiles());
-  EXPECT_EQ(plan.server, 3);
+  const PipeserverPlan plan = pack_tiles(3, 100, 50, five_tiles());
+  EXPECT_EQ(plan.pipeserver, 3);
   ASSERT_EQ(plan.tiles.size(), 5u);
   const int expected[5][2] = {{2, 0}, {34, 0}, {76, 0}, {2, 20}, {2, 27}};
   for (int i = 0; i < 5; ++i) {
@@ -36,7 +36,7 @@ TEST(PackTiles, FillsRowsLeftToRightThenStartsNewRowsBelow) {
 
 TEST(PackTiles, TileEndingExactlyAtTheEdgeStaysInTheRow) {
   // 0+2+3 = 5, 5+2+3 = 10 = W: both fit; the third starts a new row.
-  const ServerPlan plan = pack_tiles(
+  const PipeserverPlan plan = pack_tiles(
       0, 10, 10,
       {display_tile(0, 0, 0, 3, 2), display_tile(0, 3, 0, 3, 4), display_tile(0, 6, 0, 3, 1)});
   EXPECT_EQ(plan.tiles[1].fb_x, 7);
@@ -109,7 +109,7 @@ TEST(PackTiles, RejectsTilesHeadersCannotEncode) {
 }
 
 TEST(PackTiles, EmptyListPacksNothing) {
-  const ServerPlan plan = pack_tiles(0, 64, 64, {});
+  const PipeserverPlan plan = pack_tiles(0, 64, 64, {});
   EXPECT_TRUE(plan.tiles.empty());
   EXPECT_EQ(plan.used_height(), 0);
 }

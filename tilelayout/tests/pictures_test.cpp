@@ -33,7 +33,7 @@ TEST(Pictures, PaletteColoursAreDistinct) {
 
 TEST(Pictures, FramebufferShowsGapsTilesByDisplayAndUnusedSpace) {
   // Tile 0 (display 3, 40x30) at x 2..41, tile 1 (display 5, 20x10) at 44..63, W = 100.
-  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30), tile(5, 20, 10)});
+  const PipeserverPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30), tile(5, 20, 10)});
   const RgbImage pic = framebuffer_picture(plan);
   ASSERT_EQ(pic.width(), 100);
   ASSERT_EQ(pic.height(), 50);
@@ -49,7 +49,7 @@ TEST(Pictures, FramebufferShowsGapsTilesByDisplayAndUnusedSpace) {
 TEST(Pictures, HeaderGapsOfLargeFramebuffersAreDrawnWider) {
   // 1024 columns: a 2-column gap would vanish when the picture is viewed scaled down, so it is
   // drawn 1024 / 256 = 4 wide, over the tile's first 2 columns.
-  const ServerPlan plan = pack_tiles(0, 1024, 100, {tile(3, 40, 30)});
+  const PipeserverPlan plan = pack_tiles(0, 1024, 100, {tile(3, 40, 30)});
   const RgbImage pic = framebuffer_picture(plan);
   for (int x = 0; x < 4; ++x) EXPECT_EQ(pic.at(x, 5), (Rgb{255, 255, 255})) << x;
   EXPECT_EQ(pic.at(4, 5), palette_colour(3));
@@ -60,7 +60,7 @@ TEST(Pictures, TilesAreLabelledWithDisplayAndLogicalTile) {
   // 40x30 tile at columns 2..41: the capitals' top row is (30 - 7) / 2 = 11, the text's middle
   // the tile's, column 21 or 22. The tile has a one-pixel black outline. Ink is black blended over
   // the tile's colour at its edges.
-  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
+  const PipeserverPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
   const RgbImage pic = framebuffer_picture(plan);
   const Rgb paper = palette_colour(3);
   int left = 1000, right = -1, top = 1000, bottom = -1, dark = 0;
@@ -84,7 +84,7 @@ TEST(Pictures, TilesAreLabelledWithDisplayAndLogicalTile) {
 TEST(Pictures, PagesCarryALegend) {
   // Legend lines are 10 pixels (scale 1 up to 640 columns), after 2 pixels of space: the gap,
   // unused, one display, the labels line, and 2 pixels below.
-  const ServerPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
+  const PipeserverPlan plan = pack_tiles(0, 100, 50, {tile(3, 40, 30)});
   const RgbImage page = framebuffer_page(plan);
   EXPECT_EQ(page.height(), 50 + 4 * 10 + 4);
   EXPECT_EQ(page.at(3, 52), (Rgb{255, 255, 255}));  // swatch: header gap
@@ -108,18 +108,18 @@ TEST(Pictures, WallIsColouredByPipeserverAndShrunkWhenHuge) {
   EXPECT_EQ(pic.height(), 980);
   EXPECT_EQ(pic.at(650, 200), kUnused);  // the vertical mullion
   const DisplayTile& t = small.tiles[0];
-  EXPECT_EQ(pic.at(t.on_canvas.x + 3, t.on_canvas.y + 3), palette_colour(small.tile_server[0]));
+  EXPECT_EQ(pic.at(t.on_canvas.x + 3, t.on_canvas.y + 3), palette_colour(small.tile_pipeserver[0]));
 
   const TileLayout big = plan_layout(load_wall(std::string(L2_WALLS_DIR) + "/monitors-4x3.toml"));
   pic = wall_picture(big);  // 5240x3152 canvas, drawn at half size
   EXPECT_EQ(pic.width(), 2620);
   EXPECT_EQ(pic.height(), 1576);
   EXPECT_EQ(pic.at(650, 300), kUnused);  // canvas column 1300: mullion 1280..1319
-  EXPECT_EQ(pic.at(100, 100), palette_colour(big.tile_server[0]));
+  EXPECT_EQ(pic.at(100, 100), palette_colour(big.tile_pipeserver[0]));
 }
 
 TEST(TestFrame, TilesCarryThePatternAndEverythingElseIsBlackOrHeader) {
-  const ServerPlan plan = pack_tiles(0, 30, 12, {tile(2, 10, 8), tile(4, 5, 3)});
+  const PipeserverPlan plan = pack_tiles(0, 30, 12, {tile(2, 10, 8), tile(4, 5, 3)});
   const RgbImage f = test_frame(plan, true);
   EXPECT_EQ(f.at(2, 0), test_pattern(2, 0, 0));
   EXPECT_EQ(f.at(11, 7), test_pattern(2, 9, 7));

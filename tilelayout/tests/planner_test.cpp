@@ -124,11 +124,11 @@ std::vector<Rect> grid(int columns, int rows) {
   return out;
 }
 
-std::vector<int> assign(AssignmentPolicy p, const std::vector<Rect>& tiles, int servers,
+std::vector<int> assign(AssignmentPolicy p, const std::vector<Rect>& tiles, int pipeservers,
                         std::vector<long long> weights = {}) {
   if (weights.empty()) weights.assign(tiles.size(), 100);
   const Rect canvas{0, 0, tiles.back().right(), tiles.back().bottom()};
-  return assign_servers(p, tiles, weights, servers, canvas);
+  return assign_pipeservers(p, tiles, weights, pipeservers, canvas);
 }
 
 TEST(Assignment, RoundRobinZigZagBlocks) {
@@ -141,7 +141,7 @@ TEST(Assignment, RoundRobinZigZagBlocks) {
 }
 
 TEST(Assignment, SpiralStartsInTheCentreAndTurnsClockwise) {
-  // 3x3 grid, 9 servers: the server number is the position in the spiral.
+  // 3x3 grid, 9 pipeservers: the pipeserver number is the position in the spiral.
   EXPECT_EQ(assign(AssignmentPolicy::Spiral, grid(3, 3), 9),
             (std::vector<int>{1, 2, 3, 8, 0, 4, 7, 6, 5}));
 }
@@ -168,20 +168,20 @@ TEST(Planner, WarnsAboutUncoveredCanvasWithTheArea) {
   EXPECT_EQ(cov[0].overlapped, 0);
 }
 
-TEST(Planner, PacksEachServersTilesTallestFirst) {
+TEST(Planner, PacksEachPipeserversTilesTallestFirst) {
   const TileLayout layout = plan_layout(parse_wall(
       "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
       "[tiling]\nkind = \"list\"\ntiles = [[0, 0, 50, 10], [50, 0, 50, 80], [0, 10, 50, 70]]\n"
       "[pipeservers]\ncount = 1\nframebuffer_width = 200\nframebuffer_height = 100\n",
       "p.toml"));
-  ASSERT_EQ(layout.servers.size(), 1u);
-  const ServerPlan& s = layout.servers[0];
+  ASSERT_EQ(layout.pipeservers.size(), 1u);
+  const PipeserverPlan& s = layout.pipeservers[0];
   ASSERT_EQ(s.tiles.size(), 3u);
   EXPECT_EQ(s.tiles[0].tile.logical_tile, 1);  // 80 tall
   EXPECT_EQ(s.tiles[1].tile.logical_tile, 2);  // 70 tall
   EXPECT_EQ(s.tiles[2].tile.logical_tile, 0);  // 10 tall
   EXPECT_EQ(s.tiles[2].fb_x, 2 + 50 + 2 + 50 + 2);
-  EXPECT_EQ(layout.tile_server, (std::vector<int>{0, 0, 0}));
+  EXPECT_EQ(layout.tile_pipeserver, (std::vector<int>{0, 0, 0}));
   EXPECT_TRUE(layout.warnings.empty());
 }
 
@@ -233,7 +233,7 @@ TEST(Planner, TilesThatDoNotFitSayWhatWould) {
   EXPECT_EQ(fit.smallest, (std::pair{202, 200}));
   EXPECT_EQ(fit.policies, (std::vector<AssignmentPolicy>{AssignmentPolicy::Blocks,
                                                          AssignmentPolicy::AreaBalanced}));
-  EXPECT_EQ(fit.server_count, 3);
+  EXPECT_EQ(fit.pipeserver_count, 3);
   EXPECT_EQ(suggestion_lines(wall, fit),
             (std::vector<std::string>{
                 "as written (310x100, 2 pipeservers, round-robin): does not fit",
@@ -264,7 +264,7 @@ TEST(Planner, TilesThatDoNotFitSayWhatWould) {
   w.assignment = AssignmentPolicy::Blocks;
   EXPECT_NO_THROW(plan_layout(w));
   w = wall;
-  w.server_count = 3;
+  w.pipeserver_count = 3;
   EXPECT_NO_THROW(plan_layout(w));
   w = wall;
   w.framebuffer_height = 199;
@@ -280,9 +280,9 @@ TEST(Planner, GivenAssignmentReplacesThePolicy) {
       "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 80\n"
       "[pipeservers]\ncount = 2\nframebuffer_width = 200\nframebuffer_height = 100\n";
   const TileLayout layout = plan_layout(parse_wall(kWall, "g.toml"), {1, 0});
-  EXPECT_EQ(layout.tile_server, (std::vector<int>{1, 0}));
-  ASSERT_EQ(layout.servers[0].tiles.size(), 1u);
-  EXPECT_EQ(layout.servers[0].tiles[0].tile.logical_tile, 1);
+  EXPECT_EQ(layout.tile_pipeserver, (std::vector<int>{1, 0}));
+  ASSERT_EQ(layout.pipeservers[0].tiles.size(), 1u);
+  EXPECT_EQ(layout.pipeservers[0].tiles[0].tile.logical_tile, 1);
   try {
     plan_layout(parse_wall(kWall, "g.toml"), {0, 2});
     FAIL();

@@ -35,7 +35,7 @@ TEST(Scanout, EveryExampleWallRoutesEveryDisplayPixelExactlyOnce) {
     if (layout.wall.depth_layers != 0 || layout.wall.overlay) continue;
     for (bool parity : {false}) {  // parity 1: the child-process test in cli_test.cpp
       std::vector<RgbImage> frames;
-      for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, parity));
+      for (const PipeserverPlan& s : layout.pipeservers) frames.push_back(test_frame(s, parity));
       const RoutingCheck c = check_routing(layout.wall, frames, parity);
       long long visible = 0;
       for (const Display& d : layout.wall.displays) visible += 1LL * d.width * d.height;
@@ -54,8 +54,8 @@ TEST(Scanout, TheCheckCatchesAMisroutedStrip) {
   // Guards the guard: a frame with one header pointing a row lower must fail the check.
   const TileLayout layout = plan_layout(default_wall());
   std::vector<RgbImage> frames;
-  for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, false));
-  const PackedTile& p = layout.servers[0].tiles[0];
+  for (const PipeserverPlan& s : layout.pipeservers) frames.push_back(test_frame(s, false));
+  const PackedTile& p = layout.pipeservers[0].tiles[0];
   const Rect& d = p.tile.on_display;
   write_header_pixels(encode(StripHeader::copy(false, p.tile.display, d.x, d.y + 1, d.w)),
                       frames[0].row(p.fb_y).data() + (p.fb_x - 2) * 3, 3);

@@ -57,7 +57,7 @@ TEST(WallFile, ReadsAGridWall) {
   EXPECT_EQ(w.canvas_height, 80);
   EXPECT_EQ(w.tiling.kind, TilingKind::Grid);
   EXPECT_EQ(w.tiling.tile_width, 50);
-  EXPECT_EQ(w.server_count, 2);
+  EXPECT_EQ(w.pipeserver_count, 2);
   EXPECT_EQ(w.framebuffer_width, 300);
   EXPECT_EQ(w.framebuffer_height, 200);
   EXPECT_EQ(w.framebuffer_line, 15);
@@ -355,7 +355,7 @@ TEST(WallFile, DefaultWallIsTheFileInWalls) {
   const Wall w = default_wall();
   EXPECT_EQ(w.displays.size(), 4u);
   EXPECT_EQ(w.tiling.kind, TilingKind::KdSplit);
-  EXPECT_EQ(w.server_count, 4);
+  EXPECT_EQ(w.pipeserver_count, 4);
 }
 
 }  // namespace

@@ -205,7 +205,7 @@ bool RoutingCheck::clean() const {
 RoutingCheck check_routing(const TileLayout& layout, std::span<const RgbImage> frames,
                            std::span<const RgbImage* const> routed) {
   RoutingCheck check;
-  check.planned_inputs = static_cast<int>(layout.servers.size());
+  check.planned_inputs = static_cast<int>(layout.pipeservers.size());
   const std::vector<FoundStrip> strips = verify_detail::find_strips(frames, check.inputs);
   for (const Display& d : layout.wall.displays) {
     DisplayCheck display;

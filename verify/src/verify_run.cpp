@@ -14,7 +14,7 @@ std::vector<RgbImage> route_on_wall(const Wall& wall, std::span<const RgbImage> 
   std::vector<DisplaySpec> specs;
   for (const Display& d : wall.displays) specs.push_back({d.id, d.width, d.height, d.swap_group});
   const InputLimit limit{wall.board_max_width, wall.board_max_height};
-  const Mesh mesh = Mesh::fit(std::max(wall.server_count, static_cast<int>(frames.size())),
+  const Mesh mesh = Mesh::fit(std::max(wall.pipeserver_count, static_cast<int>(frames.size())),
                               static_cast<int>(specs.size()), limit);
   std::vector<InputFrame> views;
   for (std::size_t i = 0; i < frames.size(); ++i) {

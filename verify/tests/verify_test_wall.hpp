@@ -37,7 +37,7 @@ inline TileLayout test_layout() {
 
 inline std::vector<RgbImage> scanned_out(const TileLayout& layout) {
   std::vector<RgbImage> frames;
-  for (const ServerPlan& s : layout.servers) frames.push_back(test_frame(s, false));
+  for (const PipeserverPlan& s : layout.pipeservers) frames.push_back(test_frame(s, false));
   return frames;
 }
 

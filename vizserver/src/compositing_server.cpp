@@ -10,7 +10,8 @@ namespace l2::viz {
 
 CompositingServer::CompositingServer(ServerOptions options)
     : options_(std::move(options)), shared_(std::make_shared<ServerShared>()) {
-  if (options_.servers < 1) throw std::invalid_argument("vizserver: need at least 1 pipeserver");
+  if (options_.pipeservers < 1)
+    throw std::invalid_argument("vizserver: need at least 1 pipeserver");
   if (options_.display_sizes.empty()) throw std::invalid_argument("vizserver: no displays");
   listener_ = listen_tcp(options_.host, options_.port);
   port_ = local_port(listener_.get());

@@ -7,7 +7,7 @@ std::array<std::uint8_t, kHeaderBytes + 12> encode(const Listening& m) {
   auto out = message_start<12>(Kind::Listening);
   put_u32(out.data() + 12, m.port);
   put_u32(out.data() + 16, m.display_count);
-  put_u32(out.data() + 20, m.server_count);
+  put_u32(out.data() + 20, m.pipeserver_count);
   return out;
 }
 

@@ -95,9 +95,9 @@ Status FrameAssembler::add_tile(int pipeserver, ReceivedTile tile) {
 }
 
 Status FrameAssembler::finish(int pipeserver, const FrameDone& done) {
-  if (done.server_id != static_cast<std::uint32_t>(pipeserver)) {
+  if (done.pipeserver_id != static_cast<std::uint32_t>(pipeserver)) {
     return Failure{
-        fmt::format("{}: FRAME_DONE names pipeserver {}", name(pipeserver), done.server_id)};
+        fmt::format("{}: FRAME_DONE names pipeserver {}", name(pipeserver), done.pipeserver_id)};
   }
   if (Status e = check_order(pipeserver, done.frame, "FRAME_DONE"); !e.ok()) return e;
   if (!frames_.contains(done.frame)) {
@@ -154,8 +154,8 @@ std::vector<ComposedFrame> FrameAssembler::take_complete() {
       if (waits_for(s, it->first)) return out;
     }
     out.push_back(compose(it->first, it->second));
-    for (const auto& server_tiles : it->second.tiles) {
-      for (const ReceivedTile& t : server_tiles) buffered_bytes_ -= t.pixels.size();
+    for (const auto& pipeserver_tiles : it->second.tiles) {
+      for (const ReceivedTile& t : pipeserver_tiles) buffered_bytes_ -= t.pixels.size();
     }
     last_composed_ = it->first;
     frames_.erase(it);
@@ -171,8 +171,8 @@ ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) const 
   // A depth plane for every display a DEPTH tile goes to, made before any tile is applied:
   // COPY and KEY pixels written earlier on the bus must hold depth 0 there too (spec §7).
   std::vector<DepthPlane> depths(sizes_.size());
-  for (const auto& server_tiles : frame.tiles) {
-    for (const ReceivedTile& t : server_tiles) {
+  for (const auto& pipeserver_tiles : frame.tiles) {
+    for (const ReceivedTile& t : pipeserver_tiles) {
       if (t.header.how != TileKind::Depth || t.header.display >= sizes_.size()) continue;
       const auto [w, h] = sizes_[t.header.display];
       depths[t.header.display].assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
@@ -180,8 +180,8 @@ ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) const 
     }
   }
   // Lower pipeservers first, each in arrival order: later writes win, as on the pixel bus.
-  for (auto& server_tiles : frame.tiles) {
-    for (ReceivedTile& t : server_tiles) {
+  for (auto& pipeserver_tiles : frame.tiles) {
+    for (ReceivedTile& t : pipeserver_tiles) {
       compose_tile(out.displays, depths, t.header, t.pixels.data(), t.header.row_bytes(),
                    out.counts);
       ++out.tiles;

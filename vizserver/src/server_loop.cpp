@@ -38,7 +38,7 @@ ServerLoop::ServerLoop(const ServerOptions& options, Fd listener, std::uint16_t 
       port_(port),
       shared_(std::move(shared)),
       on_swap_(std::move(on_swap)),
-      assembler_(options.display_sizes, options.servers, options.background,
+      assembler_(options.display_sizes, options.pipeservers, options.background,
                  options.max_buffered_bytes) {
   int fds[2];
   if (::pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) {
@@ -251,17 +251,17 @@ void ServerLoop::on_hello(Connection& c) {
   Status refusal;
   // The token first: a stranger learns nothing about the run (ids, displays) without it.
   if (!same_token(hello.token, options_.token)) {
-    refusal =
-        Failure{fmt::format("HELLO as pipeserver {} without this run's token", hello.server_id)};
+    refusal = Failure{
+        fmt::format("HELLO as pipeserver {} without this run's token", hello.pipeserver_id)};
   } else if (hello.display_count != static_cast<std::uint32_t>(assembler_.display_count())) {
     refusal = Failure{
         fmt::format("HELLO from pipeserver {} announces {} displays, this server composes {}",
-                    hello.server_id, hello.display_count, assembler_.display_count())};
-  } else if (hello.server_id >= static_cast<std::uint32_t>(assembler_.pipeserver_count())) {
-    refusal = Failure{fmt::format("pipeserver id {} is outside 0..{}", hello.server_id,
+                    hello.pipeserver_id, hello.display_count, assembler_.display_count())};
+  } else if (hello.pipeserver_id >= static_cast<std::uint32_t>(assembler_.pipeserver_count())) {
+    refusal = Failure{fmt::format("pipeserver id {} is outside 0..{}", hello.pipeserver_id,
                                   assembler_.pipeserver_count() - 1)};
   } else {
-    refusal = assembler_.connect(static_cast<int>(hello.server_id));
+    refusal = assembler_.connect(static_cast<int>(hello.pipeserver_id));
   }
   if (!refusal.ok()) {
     // A stray or misconfigured peer is turned away with the reason; the run goes on.
@@ -271,9 +271,9 @@ void ServerLoop::on_hello(Connection& c) {
     close(c, std::nullopt);
     return;
   }
-  c.pipeserver = static_cast<int>(hello.server_id);
+  c.pipeserver = static_cast<int>(hello.pipeserver_id);
   ++hellos_;
-  const auto welcome = encode(Welcome{hello.server_id, hello.display_count,
+  const auto welcome = encode(Welcome{hello.pipeserver_id, hello.display_count,
                                       static_cast<std::uint32_t>(assembler_.pipeserver_count())});
   queue(c, welcome);
 }

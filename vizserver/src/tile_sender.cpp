@@ -22,12 +22,15 @@ iovec part(const void* p, std::size_t n) {
 
 }  // namespace
 
-TileSender::TileSender(Fd fd, std::string peer, int server_id, SenderOptions options)
-    : fd_(std::move(fd)), peer_(std::move(peer)), server_id_(server_id), options_(options) {}
+TileSender::TileSender(Fd fd, std::string peer, int pipeserver_id, SenderOptions options)
+    : fd_(std::move(fd)),
+      peer_(std::move(peer)),
+      pipeserver_id_(pipeserver_id),
+      options_(options) {}
 
-TileSender TileSender::connect(const std::string& host, std::uint16_t port, int server_id,
+TileSender TileSender::connect(const std::string& host, std::uint16_t port, int pipeserver_id,
                                int display_count, SenderOptions options) {
-  if (server_id < 0 || display_count < 0) {
+  if (pipeserver_id < 0 || display_count < 0) {
     throw std::invalid_argument("TileSender: negative pipeserver id or display count");
   }
   const auto give_up = Clock::now() + options.connect_timeout;
@@ -36,7 +39,7 @@ TileSender TileSender::connect(const std::string& host, std::uint16_t port, int 
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - Clock::now());
     Fd fd =
         connect_tcp(host, port, std::max(left, std::chrono::milliseconds(1)), "compositing server");
-    TileSender s(std::move(fd), peer, server_id, options);
+    TileSender s(std::move(fd), peer, pipeserver_id, options);
     if (s.say_hello(display_count)) return s;
     if (Clock::now() >= give_up) {
       throw VizError(fmt::format("{} closed the connection before WELCOME, {} times within {} ms",
@@ -47,7 +50,7 @@ TileSender TileSender::connect(const std::string& host, std::uint16_t port, int 
 }
 
 bool TileSender::say_hello(int display_count) {
-  const auto hello = encode(Hello{static_cast<std::uint32_t>(server_id_),
+  const auto hello = encode(Hello{static_cast<std::uint32_t>(pipeserver_id_),
                                   static_cast<std::uint32_t>(display_count), options_.token});
   const iovec parts[] = {part(hello.data(), hello.size())};
   const auto deadline = Clock::now() + options_.io_timeout;
@@ -116,7 +119,7 @@ void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::
 }
 
 void TileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) {
-  const auto msg = encode(FrameDone{static_cast<std::uint32_t>(server_id_), frame, tiles_sent});
+  const auto msg = encode(FrameDone{static_cast<std::uint32_t>(pipeserver_id_), frame, tiles_sent});
   const iovec parts[] = {part(msg.data(), msg.size())};
   send(parts);
 }

@@ -111,7 +111,7 @@ const char* kind_name(Kind kind) {
 
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
   auto out = message_start<24>(Kind::Hello);
-  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 12, m.pipeserver_id);
   put_u32(out.data() + 16, m.display_count);
   std::copy(m.token.begin(), m.token.end(), out.begin() + 20);
   return out;
@@ -119,9 +119,9 @@ std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m) {
   auto out = message_start<12>(Kind::Welcome);
-  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 12, m.pipeserver_id);
   put_u32(out.data() + 16, m.display_count);
-  put_u32(out.data() + 20, m.server_count);
+  put_u32(out.data() + 20, m.pipeserver_count);
   return out;
 }
 
@@ -148,7 +148,7 @@ std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m) {
   auto out = message_start<12>(Kind::FrameDone);
-  put_u32(out.data() + 12, m.server_id);
+  put_u32(out.data() + 12, m.pipeserver_id);
   put_u32(out.data() + 16, m.frame);
   put_u32(out.data() + 20, m.tile_count);
   return out;

@@ -106,7 +106,7 @@ TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {
   StreamPair p;
   EXPECT_EQ(p.listening.port, 4321u);
   EXPECT_EQ(p.listening.display_count, 2u);
-  EXPECT_EQ(p.listening.server_count, 3u);
+  EXPECT_EQ(p.listening.pipeserver_count, 3u);
   std::thread server([&] {
     for (std::uint32_t k = 0; k < 5; ++k) p.sender->send_frame(make_frame(k, sizes));
     p.sender.reset();  // closes: the end of the stream

@@ -26,10 +26,10 @@ using ::testing::HasSubstr;
 using testing::read_until_closed;
 using testing::send_bytes;
 
-ServerOptions one_display(int servers) {
+ServerOptions one_display(int pipeservers) {
   ServerOptions o;
   o.display_sizes = {{4, 4}};
-  o.servers = servers;
+  o.pipeservers = pipeservers;
   o.accept_timeout = 5000ms;
   o.stall_timeout = 5000ms;
   return o;

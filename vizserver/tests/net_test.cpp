@@ -62,10 +62,10 @@ void send_frame(TileSender& s, const std::vector<PlacedTile>& tiles, std::uint32
   s.finish_frame(frame, static_cast<std::uint32_t>(tiles.size()));
 }
 
-ServerOptions options(std::vector<std::pair<int, int>> sizes, int servers) {
+ServerOptions options(std::vector<std::pair<int, int>> sizes, int pipeservers) {
   ServerOptions o;
   o.display_sizes = std::move(sizes);
-  o.servers = servers;
+  o.pipeservers = pipeservers;
   o.accept_timeout = 5000ms;
   o.stall_timeout = 5000ms;
   return o;

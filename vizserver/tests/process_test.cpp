@@ -35,10 +35,10 @@ std::optional<int> exit_of(ChildProcess& child, std::chrono::milliseconds timeou
   return status ? std::optional<int>(status->shell_code()) : std::nullopt;
 }
 
-ServerOptions options(std::vector<std::pair<int, int>> sizes, int servers) {
+ServerOptions options(std::vector<std::pair<int, int>> sizes, int pipeservers) {
   ServerOptions o;
   o.display_sizes = std::move(sizes);
-  o.servers = servers;
+  o.pipeservers = pipeservers;
   o.accept_timeout = 5000ms;
   o.stall_timeout = 5000ms;
   return o;
@@ -105,8 +105,8 @@ TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
 
 TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   const auto dir = fresh_dir("exe");
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--servers", "1", "--viz-port",
-                            "0", "--frames", "1", "--out", dir.string()});
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--pipeservers", "1",
+                            "--viz-port", "0", "--frames", "1", "--out", dir.string()});
   const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
@@ -143,8 +143,8 @@ TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
 
 TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
   const auto dir = fresh_dir("dies");
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x8", "--servers", "1", "--frames", "1",
-                            "--out", dir.string()});
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x8", "--pipeservers", "1", "--frames",
+                            "1", "--out", dir.string()});
   const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
@@ -162,14 +162,14 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
   const auto dir = fresh_dir("stream");
   const Fd listener = listen_tcp("127.0.0.1", 0);
   ChildProcess exe =
-      spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--frames", "2",
+      spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--frames", "2",
              "--display-stream", fmt::format("127.0.0.1:{}", local_port(listener.get())), "--log",
              (dir / "log.txt").string()});
   Fd stream = accept_within(listener, 5000ms);
   ASSERT_TRUE(stream);
   const Listening l = read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
   EXPECT_EQ(l.display_count, 1u);
-  EXPECT_EQ(l.server_count, 1u);
+  EXPECT_EQ(l.pipeserver_count, 1u);
   DisplayWatcher watcher(std::move(stream), "vizserver", l.display_count);
   auto s = TileSender::connect("127.0.0.1", static_cast<std::uint16_t>(l.port), 0, 1);
   for (std::uint32_t k = 0; k < 2; ++k) {
@@ -197,7 +197,7 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
 TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
   const Fd taken = listen_tcp("127.0.0.1", 0);
   const Fd listener = listen_tcp("127.0.0.1", 0);
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--viz-port",
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--viz-port",
                             std::to_string(local_port(taken.get())), "--display-stream",
                             fmt::format("127.0.0.1:{}", local_port(listener.get()))});
   Fd stream = accept_within(listener, 5000ms);
@@ -215,7 +215,7 @@ TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
 TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
   Fd listener = listen_tcp("127.0.0.1", 0);
   ChildProcess exe =
-      spawn({VIZSERVER_EXE, "--displays", "8x4", "--servers", "1", "--display-stream",
+      spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--display-stream",
              fmt::format("127.0.0.1:{}", local_port(listener.get()))});
   Fd stream = accept_within(listener, 5000ms);
   ASSERT_TRUE(stream);
@@ -230,8 +230,8 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   const auto dir = fresh_dir("token");
   const RunToken token = new_run_token();
   ::setenv(kTokenVariable, token_text(token).c_str(), 1);
-  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "4x4", "--servers", "1", "--frames", "1",
-                            "--out", dir.string()});
+  ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "4x4", "--pipeservers", "1", "--frames",
+                            "1", "--out", dir.string()});
   ::unsetenv(kTokenVariable);
   const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
@@ -256,13 +256,13 @@ TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
   for (const int frames : {1, 2}) {
     const auto dir = fresh_dir(fmt::format("late-start-{}", frames));
     ChildProcess exe =
-        spawn({VIZSERVER_EXE, "--displays", "640x480,640x480,640x480,640x480", "--servers", "4",
+        spawn({VIZSERVER_EXE, "--displays", "640x480,640x480,640x480,640x480", "--pipeservers", "4",
                "--viz-port", "0", "--frames", std::to_string(frames), "--accept-timeout", "20000",
                "--out", dir.string()});
     const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
     ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
     const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
-    ChildProcess pipeserver({PIPESERVER_EXE, "--live", "--server", "0", "--frames",
+    ChildProcess pipeserver({PIPESERVER_EXE, "--live", "--pipeserver", "0", "--frames",
                              std::to_string(frames), "--viz", fmt::format("127.0.0.1:{}", port),
                              "--ready-timeout", "250", "--report", (dir / "host-0.log").string()},
                             {}, Capture{false, true});
@@ -287,22 +287,22 @@ TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   while (auto l = help.read_line(Stream::Out, 5000ms)) text += *l + "\n";
   EXPECT_EQ(exit_of(help, 5000ms), 0);
   for (const char* opt :
-       {"--displays", "--servers", "--viz-port", "--viz-host", "--frames", "--out",
+       {"--displays", "--pipeservers", "--viz-port", "--viz-host", "--frames", "--out",
         "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
     EXPECT_THAT(text, HasSubstr(opt));
   }
   ChildProcess bad =
-      spawn({VIZSERVER_EXE, "--displays", "16y8", "--servers", "1", "--out", "/tmp/x"});
+      spawn({VIZSERVER_EXE, "--displays", "16y8", "--pipeservers", "1", "--out", "/tmp/x"});
   EXPECT_EQ(exit_of(bad, 5000ms), 2);
-  ChildProcess nowhere = spawn({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1"});
+  ChildProcess nowhere = spawn({VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1"});
   EXPECT_EQ(exit_of(nowhere, 5000ms), 2);  // neither --out nor --display-stream
   ChildProcess bad_stream = spawn(
-      {VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--display-stream", "localhost"});
+      {VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1", "--display-stream", "localhost"});
   EXPECT_EQ(exit_of(bad_stream, 5000ms), 2);
   // An --out folder that cannot be made ends the run before it listens (it failed only at the
   // first swap, after the pipeservers had connected).
-  ChildProcess bad_out =
-      spawn({VIZSERVER_EXE, "--displays", "16x8", "--servers", "1", "--out", "/etc/passwd/frames"});
+  ChildProcess bad_out = spawn(
+      {VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1", "--out", "/etc/passwd/frames"});
   EXPECT_EQ(bad_out.read_line(Stream::Out, 5000ms), std::nullopt);  // no "listening on" line
   EXPECT_EQ(exit_of(bad_out, 5000ms), 1);
 }

@@ -1,6 +1,6 @@
 // A pipeserver stand-in as a real process, for tests that need one to die (SIGKILL) or to run
 // beside others. Usage:
-//   vizserver_test_client PORT SERVER_ID DISPLAYS FRAME [--hang] TILE...
+//   vizserver_test_client PORT PIPESERVER_ID DISPLAYS FRAME [--hang] TILE...
 // TILE = d,x,y,w,h,RRGGBB: a solid tile. Sends the tiles of FRAME, then either prints "sent"
 // and sleeps until killed (--hang), or sends FRAME_DONE, waits for SWAPPED and prints
 // "swapped FRAME". Errors go to stderr with exit status 1.
@@ -17,7 +17,7 @@
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    fmt::print(stderr, "usage: {} PORT SERVER_ID DISPLAYS FRAME [--hang] TILE...\n", argv[0]);
+    fmt::print(stderr, "usage: {} PORT PIPESERVER_ID DISPLAYS FRAME [--hang] TILE...\n", argv[0]);
     return 2;
   }
   try {

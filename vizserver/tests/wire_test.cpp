@@ -24,7 +24,7 @@ TEST(Wire, HelloBytesAreLittleEndianWithMagicVersionKindLengthAndToken) {
   for (int i = 0; i < 16; ++i) expected.push_back(static_cast<std::uint8_t>(0xA0 + i));
   EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), expected);
   const Hello back = decode_hello(std::span<const std::uint8_t>(bytes).subspan(kHeaderBytes));
-  EXPECT_EQ(back.server_id, 3u);
+  EXPECT_EQ(back.pipeserver_id, 3u);
   EXPECT_EQ(back.token, token);
 }
 
@@ -83,14 +83,14 @@ TEST(Wire, TileExtOfAnotherKindOrWithABadKeyIsRefused) {
 TEST(Wire, FrameDoneAndSwappedRoundTrip) {
   const auto done = encode(FrameDone{1, 99, 12});
   const FrameDone d = decode_frame_done(std::span(done).subspan(kHeaderBytes));
-  EXPECT_EQ(d.server_id, 1u);
+  EXPECT_EQ(d.pipeserver_id, 1u);
   EXPECT_EQ(d.frame, 99u);
   EXPECT_EQ(d.tile_count, 12u);
   const auto sw = encode(Swapped{42});
   EXPECT_EQ(decode_swapped(std::span(sw).subspan(kHeaderBytes)).frame, 42u);
   const auto w = encode(Welcome{2, 4, 3});
   const Welcome back = decode_welcome(std::span(w).subspan(kHeaderBytes));
-  EXPECT_EQ(back.server_count, 3u);
+  EXPECT_EQ(back.pipeserver_count, 3u);
 }
 
 TEST(Wire, BadMagicIsNamed) {

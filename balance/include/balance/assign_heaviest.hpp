@@ -7,9 +7,9 @@
 
 namespace l2 {
 
-// The pipeserver (0..servers-1) of each tile. Ties go to the pipeserver with fewer tiles,
+// The pipeserver (0..pipeservers-1) of each tile. Ties go to the pipeserver with fewer tiles,
 // then the lower number, so tiles that cost nothing still reach every pipeserver (each needs
 // a tile to earn READY). Equal costs keep their order.
-std::vector<int> assign_heaviest_first(const std::vector<double>& cost, int servers);
+std::vector<int> assign_heaviest_first(const std::vector<double>& cost, int pipeservers);
 
 }  // namespace l2

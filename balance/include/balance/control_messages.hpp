@@ -3,8 +3,8 @@
 // every pipeserver that frame's tiling, the same to all, so all switch together. One text line
 // each, whatever moves them (control_channel.hpp).
 //
-//   TIMES <frame> <server> <n> <seconds>...          n = the server's packed tiles
-//   LAYOUT <frame> <n> (<x> <y> <w> <h> <server>)... n = logical tiles, in tiling order
+//   TIMES <frame> <pipeserver> <n> <seconds>...          n = the pipeserver's packed tiles
+//   LAYOUT <frame> <n> (<x> <y> <w> <h> <pipeserver>)... n = logical tiles, in tiling order
 #pragma once
 
 #include <stdexcept>
@@ -17,14 +17,14 @@
 namespace l2 {
 
 struct TimesMessage {
-  int frame = 0, server = 0;
+  int frame = 0, pipeserver = 0;
   std::vector<double> seconds;  // by packed tile, as the pipeserver's plan orders them
 };
 
 struct LayoutMessage {
   int frame = 0;
-  std::vector<Rect> tiles;   // the logical tiles on the canvas
-  std::vector<int> servers;  // the pipeserver of each
+  std::vector<Rect> tiles;       // the logical tiles on the canvas
+  std::vector<int> pipeservers;  // the pipeserver of each
 };
 
 // A line that is not a message, or one whose numbers are out of range: what() is one line

@@ -10,7 +10,7 @@
 namespace l2 {
 
 // Render seconds of every packed tile of the last frame: seconds[s][i] is
-// layout.servers[s].tiles[i], as each pipeserver measures and reports them.
+// layout.pipeservers[s].tiles[i], as each pipeserver measures and reports them.
 using TileSeconds = std::vector<std::vector<double>>;
 
 // A canvas rectangle rendered at a constant cost per pixel.

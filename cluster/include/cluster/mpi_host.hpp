@@ -20,9 +20,9 @@ struct MpiHostLinks {
   std::unique_ptr<ReadyChannel> channel;
 };
 
-// For pipeserver `server` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
+// For pipeserver `pipeserver` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
 // counts the bytes of the frames it sends.
-MpiHostLinks mpi_host_links(const TileLayout& layout, int server,
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
                             std::shared_ptr<std::uint64_t> bytes_sent);
 
 // The visualization-server path over MPI, host side: each tile to the board column owning its

@@ -15,17 +15,17 @@ namespace l2 {
 
 struct RankMap {
   static constexpr int kCoordinator = 0;
-  int servers = 0;
+  int pipeservers = 0;
   int columns = 0;
   int mesh_inputs = 0;
-  std::vector<std::vector<int>> columns_of_server;   // ascending column numbers
-  std::vector<std::vector<int>> servers_of_column;   // ascending server numbers
-  std::vector<std::vector<int>> displays_of_column;  // display ids, ascending
+  std::vector<std::vector<int>> columns_of_pipeserver;  // ascending column numbers
+  std::vector<std::vector<int>> pipeservers_of_column;  // ascending pipeserver numbers
+  std::vector<std::vector<int>> displays_of_column;     // display ids, ascending
 
-  int size() const { return 1 + servers + columns; }
-  int pipeserver_rank(int server) const { return 1 + server; }
-  int column_rank(int column) const { return 1 + servers + column; }
-  std::optional<int> server_of(int rank) const;
+  int size() const { return 1 + pipeservers + columns; }
+  int pipeserver_rank(int pipeserver) const { return 1 + pipeserver; }
+  int column_rank(int column) const { return 1 + pipeservers + column; }
+  std::optional<int> pipeserver_of(int rank) const;
   std::optional<int> column_of(int rank) const;
   // "coordinator", "pipeserver 2", "board column 1"
   std::string role(int rank) const;

@@ -40,8 +40,8 @@ inline bool frame_parity(int frame) {
 
 class Pipeserver {
  public:
-  // Throws std::out_of_range when `server` is not a pipeserver of the layout.
-  Pipeserver(const TileLayout& layout, int server);
+  // Throws std::out_of_range when `pipeserver` is not a pipeserver of the layout.
+  Pipeserver(const TileLayout& layout, int pipeserver);
 
   // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
   // stays valid until the next call, and the caller may mark it (a frame number stamped in)
@@ -59,7 +59,7 @@ class Pipeserver {
   // constructor does, std::invalid_argument when the framebuffer size differs (the DVI link's).
   void set_layout(const TileLayout& layout);
 
-  const ServerPlan& plan() const { return plan_; }
+  const PipeserverPlan& plan() const { return plan_; }
   const FrameTimes& last_times() const { return times_; }
 
  private:
@@ -72,7 +72,7 @@ class Pipeserver {
   void render_windows(Scene& scene, std::span<std::uint8_t> dst);
   void make_windows(const Wall& wall);
 
-  ServerPlan plan_;
+  PipeserverPlan plan_;
   Canvas canvas_;
   std::vector<std::unique_ptr<GlContext>> contexts_;  // one per display size
   std::vector<Window> windows_;                       // by context, then display

@@ -6,10 +6,18 @@
 #include <chrono>
 #include <cstdint>
 
+#include "base/result.hpp"
+
 namespace l2 {
 
 struct BackChannelCounts;
-struct WaitResult;
+
+// The READY a host's wait took: its frame and how many SYNC? requests it cost. A wait that
+// ran out is a Failure instead, whose reason names the frame, the line and the retries.
+struct ReadyAck {
+  std::uint32_t frame = 0;  // the frame accepted (modulo 10^6): the one awaited, or a newer one
+  int retries = 0;          // SYNC? requests it took
+};
 
 class ReadyChannel {
  public:
@@ -21,8 +29,8 @@ class ReadyChannel {
   // Lightning-2 end: answers the host's requests for `duration`; returns how many.
   virtual int serve(std::chrono::milliseconds duration) = 0;
   // Host end: waits for READY `expected` (or newer), asking again `retries` times.
-  virtual WaitResult wait_ready(std::uint64_t expected, std::chrono::milliseconds timeout,
-                                int retries) = 0;
+  virtual Result<ReadyAck> wait_ready(std::uint64_t expected, std::chrono::milliseconds timeout,
+                                      int retries) = 0;
   // Host end: asks for the last READY without waiting for it.
   virtual void send_sync_request(std::uint64_t expected) = 0;
 

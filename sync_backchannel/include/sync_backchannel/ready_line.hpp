@@ -36,16 +36,6 @@ struct BackChannelCounts {
 // "decoded 12, noise bytes 3, resyncs 1, bad checksums 0, stale 0, duplicates 1, ..."
 std::string to_string(const BackChannelCounts& counts);
 
-enum class WaitStatus : std::uint8_t { Ok, Timeout };
-
-struct WaitResult {
-  WaitStatus status = WaitStatus::Timeout;
-  std::uint32_t frame = 0;  // the READY frame accepted (Ok) or the one awaited (Timeout)
-  int retries = 0;          // SYNC? requests it took
-  std::string error;        // one line for the user when status == Timeout
-  bool ok() const { return status == WaitStatus::Ok; }
-};
-
 class ReadyLine : public ReadyChannel {
  public:
   // Emulator end: announces that `frame` (taken modulo 10^6) is on the displays. Never waits:
@@ -60,9 +50,10 @@ class ReadyLine : public ReadyChannel {
   // Host end: waits for READY `expected` (modulo 10^6). Each wait lasts `timeout`; when one
   // runs out the host sends "SYNC? <expected>" and waits again, up to `retries` times. A READY
   // newer than `expected` is accepted (the emulator is past our frame); older ones are ignored.
-  WaitResult wait_ready(std::uint64_t expected,
-                        std::chrono::milliseconds timeout = kDefaultReadyTimeout,
-                        int retries = kDefaultReadyRetries) final;
+  // When the last wait runs out: a Failure naming the frame, the line and the retries.
+  Result<ReadyAck> wait_ready(std::uint64_t expected,
+                              std::chrono::milliseconds timeout = kDefaultReadyTimeout,
+                              int retries = kDefaultReadyRetries) final;
 
   // Host end: asks for the last READY without waiting for it.
   void send_sync_request(std::uint64_t expected) final;

@@ -27,9 +27,9 @@ struct FitSuggestions {
   // assigned: the one to change both sides to when neither alone is enough.
   std::optional<std::pair<int, int>> smallest;
   std::vector<AssignmentPolicy> policies;  // other policies that fit at the wall's size
-  std::optional<int> server_count;         // fewest pipeservers that fit at the wall's size
-  // A pipeserver gets no tile as written: only server_count and policies can help then.
-  bool idle_server = false;
+  std::optional<int> pipeserver_count;     // fewest pipeservers that fit at the wall's size
+  // A pipeserver gets no tile as written: only pipeserver_count and policies can help then.
+  bool idle_pipeserver = false;
 };
 
 FitSuggestions suggest_fit(const Wall& wall);

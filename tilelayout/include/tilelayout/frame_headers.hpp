@@ -17,7 +17,7 @@ namespace l2 {
 class FrameHeaders {
  public:
   // Every COPY / SKIP / END header of `plan` with `frame_parity`.
-  FrameHeaders(const ServerPlan& plan, bool frame_parity);
+  FrameHeaders(const PipeserverPlan& plan, bool frame_parity);
 
   // Writes the headers of scanline `y` (0 = top) into `row`, an RGB scanline of the plan's
   // framebuffer; touches only header pixels. Throws std::invalid_argument when y is outside the

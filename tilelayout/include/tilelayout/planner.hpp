@@ -21,7 +21,7 @@ TileLayout plan_layout(const Wall& wall);
 // instead of the wall's assignment policy: the load balancer's choice. Sort-first walls
 // without an overlay only; any other wall, a list of another length or a pipeserver out of
 // range is a LayoutError.
-TileLayout plan_layout(const Wall& wall, const std::vector<int>& server_of_logical);
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical);
 
 // The steps of plan_layout, exposed so each can be checked on its own.
 
@@ -34,29 +34,30 @@ std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<R
 
 // The pipeserver of each logical tile. `weights` is the work per tile (its visible pixels),
 // used by AreaBalanced. Orders, then deals round-robin, except Blocks (contiguous runs of the
-// raster order) and AreaBalanced (largest first to the least-loaded server):
+// raster order) and AreaBalanced (largest first to the least-loaded pipeserver):
 //   RoundRobin: tiling order;  ZigZag: tile rows (same top edge) alternately left-to-right and
 //   right-to-left;  Spiral: rings around the canvas centre, clockwise from the top-left.
-std::vector<int> assign_servers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
-                                const std::vector<long long>& weights, int server_count,
-                                Rect canvas);
+std::vector<int> assign_pipeservers(AssignmentPolicy policy, const std::vector<Rect>& tiles,
+                                    const std::vector<long long>& weights, int pipeserver_count,
+                                    Rect canvas);
 
 // The wall-file name of a policy: "round-robin", "zig-zag", "spiral", "blocks", "area-balanced".
 const char* to_string(AssignmentPolicy policy);
 
-// Layers every display tile is rendered as when the wall has `server_count` pipeservers: 1
+// Layers every display tile is rendered as when the wall has `pipeserver_count` pipeservers: 1
 // without [depth], else depth.layers ("all": every pipeserver but the overlay's).
-int layer_count(const Wall& wall, int server_count);
+int layer_count(const Wall& wall, int pipeserver_count);
 
-// What assign_servers gives `server_count` pipeservers under `policy`: each one's display
+// What assign_pipeservers gives `pipeserver_count` pipeservers under `policy`: each one's display
 // tiles in packing order (tallest first, then tiling order), as pack_tiles takes them. In a
 // depth wall the policy deals the logical tiles to the pipeservers of layer 0, G = (pipeservers
 // that share the tiling) / layers of them, and pipeserver j·G + s renders layer j of what
 // pipeserver s renders in layer 0, as DEPTH tiles; the overlay goes to the last pipeserver,
-// alone. Every list is empty when the layers cannot share `server_count` pipeservers evenly.
-std::vector<std::vector<DisplayTile>> server_tile_lists(const Wall& wall,
-                                                        const std::vector<Rect>& logical,
-                                                        const std::vector<DisplayTile>& tiles,
-                                                        AssignmentPolicy policy, int server_count);
+// alone. Every list is empty when the layers cannot share `pipeserver_count` pipeservers evenly.
+std::vector<std::vector<DisplayTile>> pipeserver_tile_lists(const Wall& wall,
+                                                            const std::vector<Rect>& logical,
+                                                            const std::vector<DisplayTile>& tiles,
+                                                            AssignmentPolicy policy,
+                                                            int pipeserver_count);
 
 }  // namespace l2

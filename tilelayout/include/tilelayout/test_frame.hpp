@@ -10,9 +10,9 @@ namespace l2 {
 // Fills every packed tile of `fb` with test_pattern(display, x, y) of its destination pixels;
 // DEPTH tiles with the plan's layer of depth_test_pixel, KEY tiles with the key colour where
 // key_test_transparent (test_pattern.hpp).
-void fill_test_pattern(const ServerPlan& plan, RgbImage& fb);
+void fill_test_pattern(const PipeserverPlan& plan, RgbImage& fb);
 
 // A full scanned-out frame (spec §1): black, test-pattern tiles, every header of §4 rule 3.
-RgbImage test_frame(const ServerPlan& plan, bool frame_parity);
+RgbImage test_frame(const PipeserverPlan& plan, bool frame_parity);
 
 }  // namespace l2

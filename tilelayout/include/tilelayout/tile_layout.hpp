@@ -51,11 +51,11 @@ struct PackedTile {
 // A row of packed tiles (spec §4 rule 2): as tall as its tallest tile.
 struct PackedRow {
   int y = 0, height = 0;
-  int first_tile = 0, tile_count = 0;  // range in ServerPlan::tiles
+  int first_tile = 0, tile_count = 0;  // range in PipeserverPlan::tiles
 };
 
-struct ServerPlan {
-  int server = 0;
+struct PipeserverPlan {
+  int pipeserver = 0;
   // Depth walls: the pipeserver renders share `layer` (0..layers-1) of the scene's geometry, in
   // draw order. Sort-first pipeservers, and the overlay's, render all of it: layer 0 of 1.
   int layer = 0, layers = 1;
@@ -67,12 +67,12 @@ struct ServerPlan {
 
 struct TileLayout {
   Wall wall;
-  std::vector<Rect> logical_tiles;    // canvas rectangles, in tiling order; the overlay last
-  std::vector<DisplayTile> tiles;     // split at display edges; pixels behind mullions dropped
-  std::vector<int> tile_server;       // tiles[i] is rendered by pipeserver tile_server[i]
-                                      // (a depth wall lists each display tile once a layer)
-  std::vector<ServerPlan> servers;    // one per pipeserver
-  std::vector<std::string> warnings;  // for example canvas area left uncovered
+  std::vector<Rect> logical_tiles;   // canvas rectangles, in tiling order; the overlay last
+  std::vector<DisplayTile> tiles;    // split at display edges; pixels behind mullions dropped
+  std::vector<int> tile_pipeserver;  // tiles[i] is rendered by pipeserver tile_pipeserver[i]
+                                     // (a depth wall lists each display tile once a layer)
+  std::vector<PipeserverPlan> pipeservers;  // one per pipeserver
+  std::vector<std::string> warnings;        // for example canvas area left uncovered
 };
 
 // A wall that cannot be used as written. what() is one line naming file, line and field where
@@ -83,19 +83,19 @@ class LayoutError : public std::runtime_error {
 };
 
 // Packs tiles into one framebuffer exactly per spec §4 rules 1, 2 and 5, KEY and DEPTH tiles
-// with their four-column gaps and payloads (§7). Throws LayoutError naming the server, the tile
-// and by how much it does not fit.
-ServerPlan pack_tiles(int server, int fb_width, int fb_height,
-                      const std::vector<DisplayTile>& tiles);
+// with their four-column gaps and payloads (§7). Throws LayoutError naming the pipeserver, the
+// tile and by how much it does not fit.
+PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
+                          const std::vector<DisplayTile>& tiles);
 
 // Draws every header of spec §4 rule 3 (COPY / SKIP / END, and EXT with its extension word,
 // §7) into `fb` for the given parity; touches only header pixels. `fb` must be fb_width x
 // fb_height.
-void draw_headers(const ServerPlan& plan, bool frame_parity, RgbImage& fb);
+void draw_headers(const PipeserverPlan& plan, bool frame_parity, RgbImage& fb);
 
 // Spec §4 rule 4: blacks every pixel that is neither a tile pixel nor a header gap of a packed
 // row (scanlines below the last row, the rest of a row after its END, the parts of a row below
 // a shorter tile). A renderer calls it so leftover pixels are never read as headers.
-void clear_outside_tiles(const ServerPlan& plan, RgbImage& fb);
+void clear_outside_tiles(const PipeserverPlan& plan, RgbImage& fb);
 
 }  // namespace l2

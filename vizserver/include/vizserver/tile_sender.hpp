@@ -36,7 +36,7 @@ class TileSender {
  public:
   // Connects, says HELLO and waits for WELCOME. Throws VizError: unreachable server, or the
   // server's refusal (wrong display count or token, pipeserver id taken or out of range).
-  static TileSender connect(const std::string& host, std::uint16_t port, int server_id,
+  static TileSender connect(const std::string& host, std::uint16_t port, int pipeserver_id,
                             int display_count, SenderOptions options = {});
 
   // Sends one tile: h rows of w RGB pixels, row r starting at rgb + r * stride (stride in
@@ -52,13 +52,13 @@ class TileSender {
   void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout);
 
   std::optional<std::uint32_t> last_swapped() const { return last_swapped_; }
-  int server_id() const { return server_id_; }
+  int pipeserver_id() const { return pipeserver_id_; }
   // "compositing server 127.0.0.1:5000", the prefix of every error.
   const std::string& peer() const { return peer_; }
   int fd() const { return fd_.get(); }
 
  private:
-  TileSender(Fd fd, std::string peer, int server_id, SenderOptions options);
+  TileSender(Fd fd, std::string peer, int pipeserver_id, SenderOptions options);
   // Says HELLO and reads until WELCOME. False when the server closed without a word first.
   bool say_hello(int display_count);
   // Reads one server message and records it. Throws VizError on ERROR (text kept) or EOF.
@@ -67,7 +67,7 @@ class TileSender {
 
   Fd fd_;
   std::string peer_;
-  int server_id_ = 0;
+  int pipeserver_id_ = 0;
   SenderOptions options_;
   bool welcomed_ = false;
   std::string server_error_;  // the text of an ERROR the server sent, if any

@@ -53,15 +53,15 @@ struct Header {
 };
 
 struct Hello {
-  std::uint32_t server_id = 0;
+  std::uint32_t pipeserver_id = 0;
   std::uint32_t display_count = 0;
   RunToken token{};  // the run's token (run_token.hpp); all zero when the run has none
 };
 
 struct Welcome {
-  std::uint32_t server_id = 0;
+  std::uint32_t pipeserver_id = 0;
   std::uint32_t display_count = 0;
-  std::uint32_t server_count = 0;
+  std::uint32_t pipeserver_count = 0;
 };
 
 // A tile's placement. dx, dy are signed so a tile hanging off the top-left edge is expressible
@@ -81,7 +81,7 @@ struct TileHeader {
 };
 
 struct FrameDone {
-  std::uint32_t server_id = 0;
+  std::uint32_t pipeserver_id = 0;
   std::uint32_t frame = 0;
   std::uint32_t tile_count = 0;
 };

@@ -14,9 +14,9 @@ Rgb palette_colour(int i);
 // they show scaled down), tiles in their destination display's colour and labelled "D<display>
 // L<logical tile>" (the display alone where that does not fit), a DEPTH tile's depth pixels in a
 // darker shade ("... depth"), unused space dark grey.
-RgbImage framebuffer_picture(const ServerPlan& plan);
+RgbImage framebuffer_picture(const PipeserverPlan& plan);
 // The same with a legend below: what the colours and labels mean (tilelayout --png).
-RgbImage framebuffer_page(const ServerPlan& plan);
+RgbImage framebuffer_page(const PipeserverPlan& plan);
 
 // The canvas (shrunk by a whole factor when longer than 4096 pixels): mullions dark grey, display
 // edges outlined, each display tile in its pipeserver's colour with a dark outline and labelled

@@ -72,7 +72,7 @@ struct Wall {
   int canvas_width = 0, canvas_height = 0;
   std::vector<Display> displays;  // displays[i].id == i
   TilingSpec tiling;
-  int server_count = 1;
+  int pipeserver_count = 1;
   int framebuffer_width = 1280, framebuffer_height = 1024;
   AssignmentPolicy assignment = AssignmentPolicy::RoundRobin;
   int board_max_width = 1280, board_max_height = 1024;  // per-input limit of a board (spec §5)

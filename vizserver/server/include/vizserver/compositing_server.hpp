@@ -35,7 +35,7 @@ namespace l2::viz {
 
 struct ServerOptions {
   std::vector<std::pair<int, int>> display_sizes;   // width, height of each display
-  int servers = 1;                                  // pipeservers expected
+  int pipeservers = 1;                              // pipeservers expected
   std::string host = "127.0.0.1";                   // where to listen ("0.0.0.0": everywhere)
   std::uint16_t port = 0;                           // 0: pick a free port, see port()
   Rgb background{};                                 // pixels no tile writes (spec §5: black)

@@ -23,7 +23,7 @@ namespace l2::viz {
 struct Listening {
   std::uint32_t port = 0;
   std::uint32_t display_count = 0;
-  std::uint32_t server_count = 0;
+  std::uint32_t pipeserver_count = 0;
 };
 
 // One display picture: width*height RGB pixels follow, rows top to bottom, no padding.
