@@ -1,6 +1,6 @@
 // A pipeserver of your own: a ring of eight cubes turning about the wall's vertical axis, drawn
 // with plain OpenGL. run_renderer() does everything else (renderer.hpp); this program takes
-// pipeserver's command line, so `l2wall run --pipeserver spinning_cubes` drives it.
+// pipeserver's command line, so `l2wall run --pipeserver-program spinning_cubes` drives it.
 #include <GL/gl.h>
 
 #include "pipeserver/renderer.hpp"

@@ -97,11 +97,12 @@ int main(int argc, char** argv) {
   l2::add_refresh_option(*run, o.refresh_hz, true,
                          "emulator input refreshes per second; 0 = as fast as possible")
       ->capture_default_str();
-  run->add_option("--path", o.path,
-                  "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
-                  "tiles read back and sent over TCP to a compositing server process "
-                  "(--vizserver), which streams the composed displays back to l2wall; both: "
-                  "both at once")
+  run->add_option(
+         "--path", o.path,
+         "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
+         "tiles read back and sent over TCP to a compositing server process "
+         "(--vizserver-program), which streams the composed displays back to l2wall; both: "
+         "both at once")
       ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
       ->capture_default_str();
   run->add_option("--balance", o.balance,
@@ -115,8 +116,9 @@ int main(int argc, char** argv) {
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "
                 "DIR/mismatch-frame-<k>/ and fails the run");
-  run->add_option("--pipeserver", o.pipeserver, "the pipeserver executable")->capture_default_str();
-  run->add_option("--vizserver", o.vizserver,
+  run->add_option("--pipeserver-program", o.pipeserver, "the pipeserver executable")
+      ->capture_default_str();
+  run->add_option("--vizserver-program", o.vizserver,
                   "the compositing server executable of --path vizserver|both; l2wall starts "
                   "it as its own process, and a compositing server that dies ends the run like "
                   "a pipeserver that dies")

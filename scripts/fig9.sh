@@ -115,8 +115,8 @@ for size in $sizes; do
       printf '\rfig9: [%d/%d] %s on %d display(s), %s ... (%d s)   ' "$done_runs" "$total" \
         "$size" "$n" "$mode" $((SECONDS - start)) >&2
       if ! "$l2wall" run --wall "$wall" --scene swap --frames "$frames" --refresh "$refresh" \
-        --path "$path" --out "$run" --no-progress --pipeserver "$pipeserver" \
-        --vizserver "$vizserver" >"$run.log" 2>&1; then
+        --path "$path" --out "$run" --no-progress --pipeserver-program "$pipeserver" \
+        --vizserver-program "$vizserver" >"$run.log" 2>&1; then
         echo >&2
         echo "fig9: l2wall run failed for $size on $n display(s), $mode: see $run.log" >&2
         tail -5 "$run.log" >&2

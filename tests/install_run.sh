@@ -24,8 +24,8 @@ for file in share/lightning2/walls/kd-2x2.toml share/lightning2/data/bunny.ply \
 done
 # The defaults in the prefix, as --help shows them.
 help=$("$prefix/bin/l2wall" run --help)
-[[ $help == *"--pipeserver TEXT=$prefix/bin/pipeserver"* ]] ||
-  fail "l2wall run's default --pipeserver is not $prefix/bin/pipeserver: $(grep -A1 -- --pipeserver <<<"$help")"
+[[ $help == *"--pipeserver-program TEXT=$prefix/bin/pipeserver"* ]] ||
+  fail "l2wall run's default --pipeserver-program is not $prefix/bin/pipeserver: $(grep -A1 -- --pipeserver-program <<<"$help")"
 help=$("$prefix/bin/l2wall" golden check --help)
 [[ $help == *"--goldens DIR=$prefix/share/lightning2/tests/golden_images"* ]] ||
   fail "the default --goldens is not in the prefix: $(grep -- --goldens <<<"$help")"

@@ -509,7 +509,7 @@ Status run_options_error(const RunOptions& o) {
     return Failure{"--path: expected dvi, vizserver or both, got " + o.path};
   if (o.compare && o.path != "both") return Failure{"--compare needs --path both"};
   if (o.path != "dvi" && o.vizserver.empty())
-    return Failure{"--vizserver: no compositing server executable given"};
+    return Failure{"--vizserver-program: no compositing server executable given"};
   if (o.viz_port < 0 || o.viz_port > 65535)
     return Failure{fmt::format("--viz-port: {} is not 0..65535", o.viz_port)};
   // There is no compositing server on the DVI path: an address for it would go unused.

@@ -22,7 +22,7 @@ bool run_to_end(const std::vector<std::string>& argv) {
 TEST(ExampleRenderer, LiveFramesRouteExactlyAndShowItsDrawing) {
   const fs::path wall_file = fs::path(L2_SOURCE_DIR) / "walls" / "kd-2x2.toml";
   const int frames = 4, k = frames - 1;
-  WallRun run("example", {"--wall", wall_file.string(), "--pipeserver", SPINNING_CUBES_PATH,
+  WallRun run("example", {"--wall", wall_file.string(), "--pipeserver-program", SPINNING_CUBES_PATH,
                           "--frames", std::to_string(frames), "--refresh", "0", "--keep", "last"});
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();

@@ -130,10 +130,10 @@ namespace l2 {
 int run_pipeserver(int argc, char** argv) {
   CLI::App app{
       "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
-      "pipeserver --pipeserver with OSMesa (sort-first: whole-wall camera, per-tile projection),\n"
-      "draws the strip headers of spec §4 with the parity of --frame, and writes the scanned-out\n"
-      "24-bit RGB frame to --out DIR. --reference writes what each display should show for that\n"
-      "frame."};
+      "the pipeserver numbered --pipeserver with OSMesa (sort-first: whole-wall camera,\n"
+      "per-tile projection), draws the strip headers of spec §4 with the parity of --frame, and\n"
+      "writes the scanned-out 24-bit RGB frame to --out DIR. --reference writes what each\n"
+      "display should show for that frame."};
   Options o;
   l2::add_wall_option(app, o.wall, "default: the built-in default wall (walls/kd-2x2.toml)");
   app.add_option("--pipeserver", o.pipeserver, "pipeserver number, from 0")
