@@ -3,27 +3,71 @@
 # three times — release (every test), ASan+UBSan (tests labelled asan) and TSan (tests labelled
 # tsan: the threaded ones). The sanitizer runs build only the executables their tests need. Then
 # a fuzz smoke run: the libFuzzer harnesses (fuzz/) for a few seconds each, failing on any crash.
+#
+# Each build after the first runs while the tests before it run, at the idle scheduling
+# priority (SCHED_IDLE): the tests wait on processes, timeouts and refresh clocks much of the
+# time, and the compiler takes only the CPU time they leave, so the tests run as they would
+# alone. A build's output goes to build/<preset>/suite-build.log and is shown if it fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 
 jobs=$(nproc)
 start=$SECONDS
-run_preset() {
-  local preset=$1 target=${2:-all}
-  local t0=$SECONDS
-  echo "=== $preset: build ($target)"
-  cmake --preset "$preset" >/dev/null
-  cmake --build --preset "$preset" -j "$jobs" --target "$target" -- --quiet
-  echo "=== $preset: test"
-  ctest --preset "$preset" -j "$jobs"
-  echo "=== $preset: $((SECONDS - t0)) s"
+
+build() {  # build PRESET [TARGET]
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1" -j "$jobs" --target "${2:-all}" -- --quiet
 }
-run_preset default
-run_preset asan l2_asan_tests
-run_preset tsan l2_tsan_tests
+# Starts `build PRESET TARGET` at idle priority in the background; `finish_build` waits for it.
+# SCHED_IDLE where the system lets us set it, else the lowest nice level.
+idle=(chrt --idle 0)
+"${idle[@]}" true 2>/dev/null || idle=(nice -n 19)
+background_pid=
+background_preset=
+background_build() {
+  local preset=$1 target=$2 log=build/$1/suite-build.log
+  mkdir -p "build/$preset"
+  echo "=== $preset: build ($target), beside the tests"
+  background_preset=$preset
+  setsid "${idle[@]}" bash -c "set -euo pipefail; $(declare -f build); jobs=$jobs; build $preset $target" \
+    >"$log" 2>&1 &
+  background_pid=$!
+}
+# A failing test ends the suite: the build beside it (its own process group) goes with it.
+trap '[[ -z $background_pid ]] || kill -- -"$background_pid" 2>/dev/null || true' EXIT
+finish_build() {
+  local t0=$SECONDS
+  if ! wait "$background_pid"; then
+    cat "build/$background_preset/suite-build.log"
+    echo "=== $background_preset: build failed"
+    exit 1
+  fi
+  background_pid=
+  echo "=== $background_preset: build finished ($((SECONDS - t0)) s waited for it)"
+}
+run_tests() {  # run_tests PRESET
+  local t0=$SECONDS
+  echo "=== $1: test"
+  ctest --preset "$1" -j "$jobs"
+  echo "=== $1: tests took $((SECONDS - t0)) s"
+}
+
 t0=$SECONDS
-echo "=== fuzz: build and smoke run"
+echo "=== default: build (all)"
+build default
+echo "=== default: build took $((SECONDS - t0)) s"
+background_build asan l2_asan_tests
+run_tests default
+finish_build
+background_build tsan l2_tsan_tests
+run_tests asan
+finish_build
+background_build fuzz all
+run_tests tsan
+finish_build
+t0=$SECONDS
+echo "=== fuzz: smoke run"
 bash scripts/fuzz.sh 3
 echo "=== fuzz: $((SECONDS - t0)) s"
 echo "=== suite finished in $((SECONDS - start)) s"
