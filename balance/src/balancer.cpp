@@ -1,6 +1,9 @@
 #include "balance/balancer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <stdexcept>
 
 #include "balance/assign_heaviest.hpp"
 #include "balance/kd_cost_grid.hpp"
@@ -81,14 +84,73 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
 }
 
 TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const {
-  if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
-  std::vector<double> cost;
-  for (const Rect& r : make_logical_tiles(wall)) cost.push_back(estimate->cost(r));
-  return plan_layout(wall, assign_heaviest_first(cost, wall.server_count));
+  if (lost_.empty()) {
+    if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
+    std::vector<double> cost;
+    for (const Rect& r : make_logical_tiles(wall)) cost.push_back(estimate->cost(r));
+    return plan_layout(wall, assign_heaviest_first(cost, wall.server_count));
+  }
+  // The pipeservers still there, dealt the tiles as if they were the whole wall.
+  std::vector<int> serving;
+  for (int s = 0; s < wall.server_count; ++s) {
+    if (!std::binary_search(lost_.begin(), lost_.end(), s)) serving.push_back(s);
+  }
+  const int n = static_cast<int>(serving.size());
+  const std::vector<Rect> logical = make_logical_tiles(wall);
+  std::vector<int> of;
+  if (settings_.assign && estimate != nullptr) {
+    std::vector<double> cost;
+    for (const Rect& r : logical) cost.push_back(estimate->cost(r));
+    of = assign_heaviest_first(cost, n);
+  } else {
+    std::vector<long long> visible(logical.size(), 0);
+    for (const DisplayTile& t : split_at_displays(wall, logical))
+      visible[static_cast<std::size_t>(t.logical_tile)] += t.on_display.area();
+    of = assign_servers(wall.assignment, logical, visible, n,
+                        {0, 0, wall.canvas_width, wall.canvas_height});
+  }
+  for (int& s : of) s = serving[static_cast<std::size_t>(s)];
+  return plan_layout(wall, of, lost_);
+}
+
+void Balancer::lose_server(int server) {
+  if (server < 0 || server >= wall_.server_count) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {} is not 0..{}", server, wall_.server_count - 1));
+  }
+  if (std::binary_search(lost_.begin(), lost_.end(), server)) return;
+  if (static_cast<int>(lost_.size()) + 1 >= wall_.server_count) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {} was the last one rendering: no pipeserver is left", server));
+  }
+  lost_.insert(std::upper_bound(lost_.begin(), lost_.end(), server), server);
+}
+
+TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {
+  if (lost_.empty()) return seconds;
+  TileSeconds out = seconds;
+  out.resize(layout_.servers.size());
+  double measured = 0, pixels = 0;
+  for (std::size_t s = 0; s < out.size(); ++s) {
+    if (std::binary_search(lost_.begin(), lost_.end(), static_cast<int>(s))) continue;
+    const auto& tiles = layout_.servers[s].tiles;
+    for (std::size_t i = 0; i < tiles.size() && i < out[s].size(); ++i) {
+      measured += std::max(out[s][i], 0.0);
+      pixels += double(tiles[i].tile.on_canvas.area());
+    }
+  }
+  const double per_pixel = pixels > 0 ? measured / pixels : 0;
+  for (const int s : lost_) {
+    auto& times = out[static_cast<std::size_t>(s)];
+    times.clear();
+    for (const PackedTile& t : layout_.servers[static_cast<std::size_t>(s)].tiles)
+      times.push_back(per_pixel * double(t.tile.on_canvas.area()));
+  }
+  return out;
 }
 
 BalanceStep Balancer::next(const TileSeconds& seconds) {
-  const CostEstimate estimate = CostEstimate::from_layout(layout_, seconds);
+  const CostEstimate estimate = CostEstimate::from_layout(layout_, with_stand_ins(seconds));
   Wall next = wall_;
   const std::optional<StripEdges> old_strips = strips_;
   std::vector<std::vector<double>> grid;
@@ -106,6 +168,14 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
     planned = plan(next, &estimate);
   } catch (const LayoutError& e) {
     strips_ = old_strips;
+    // The layout in use still has a lost pipeserver's tiles: it cannot stay.
+    for (const int s : lost_) {
+      if (!layout_.servers[static_cast<std::size_t>(s)].tiles.empty()) {
+        throw LayoutError(
+            fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
+                        s, e.what()));
+      }
+    }
     return {false, e.what()};
   }
   grid_ = std::move(grid);

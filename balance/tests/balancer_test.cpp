@@ -1,5 +1,7 @@
 #include "balance/balancer.hpp"
 
+#include <algorithm>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -65,6 +67,62 @@ TEST(Balancer, ALayoutThatDoesNotFitIsNotUsed) {
   const BalanceStep even = b.next({{1, 1}, {1, 1}});
   EXPECT_FALSE(even.changed);
   EXPECT_EQ(even.rejected, "");
+}
+
+// A dead host: the next layout gives it nothing, its tiles counted at the others' mean cost
+// per pixel (even times here, so the edges stay), and the planner's checks still hold.
+TEST(Balancer, ALostPipeserversTilesGoToTheOthers) {
+  Balancer b(strips_wall(), strips());
+  b.lose_server(1);
+  EXPECT_EQ(b.lost(), std::vector<int>{1});
+  const BalanceStep step = b.next({{1, 1}, {}});
+  EXPECT_TRUE(step.changed);
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 50, 50}, {50, 0, 50, 50}, {0, 50, 50, 50}, {50, 50, 50, 50}}));
+  EXPECT_EQ(b.layout().tile_server, (std::vector<int>{0, 0, 0, 0}));
+  EXPECT_EQ(b.layout().servers[0].tiles.size(), 4u);
+  EXPECT_TRUE(b.layout().servers[1].tiles.empty());
+  // Later frames: its times (none) are not read.
+  EXPECT_EQ(b.next({{1, 1, 1, 1}, {}}).rejected, "");
+  EXPECT_TRUE(b.layout().servers[1].tiles.empty());
+}
+
+TEST(Balancer, HeaviestFirstSharesALostPipeserversTilesAmongTheRest) {
+  Wall w = strips_wall();
+  w.server_count = 3;  // round-robin: tiles 0..3 to 0, 1, 2, 0
+  Balancer b(w, strips(true));
+  b.lose_server(2);
+  b.next({{1, 1}, {1}, {1}});
+  const std::vector<int>& of = b.layout().tile_server;
+  EXPECT_EQ(std::count(of.begin(), of.end(), 2), 0);
+  EXPECT_EQ(std::count(of.begin(), of.end(), 0), 2);
+  EXPECT_EQ(std::count(of.begin(), of.end(), 1), 2);
+}
+
+TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsAnError) {
+  Balancer b(strips_wall(104, 64), strips());  // two 50x50 tiles a framebuffer, one row
+  b.lose_server(1);
+  try {
+    b.next({{1, 1}, {}});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_THAT(e.what(),
+                testing::StartsWith("the other pipeservers' framebuffers cannot hold pipeserver "
+                                    "1's tiles: pipeserver 0: tile 2"));
+  }
+}
+
+TEST(Balancer, TheLastPipeserverCannotBeLost) {
+  Balancer b(strips_wall(), strips());
+  EXPECT_THROW(b.lose_server(2), std::invalid_argument);
+  b.lose_server(0);
+  try {
+    b.lose_server(1);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "pipeserver 1 was the last one rendering: no pipeserver is left");
+  }
 }
 
 TEST(Balancer, KdRecutsOverTheMeasuredGrid) {
