@@ -97,20 +97,36 @@ TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const 
   }
   const int n = static_cast<int>(serving.size());
   const std::vector<Rect> logical = make_logical_tiles(wall);
+  std::vector<long long> visible(logical.size(), 0);
+  for (const DisplayTile& t : split_at_displays(wall, logical))
+    visible[static_cast<std::size_t>(t.logical_tile)] += t.on_display.area();
+  const auto by_policy = [&](AssignmentPolicy policy) {
+    return assign_servers(policy, logical, visible, n,
+                          {0, 0, wall.canvas_width, wall.canvas_height});
+  };
+  const auto planned = [&](std::vector<int> of) {
+    for (int& s : of) s = serving[static_cast<std::size_t>(s)];
+    return plan_layout(wall, of, lost_);
+  };
   std::vector<int> of;
   if (settings_.assign && estimate != nullptr) {
     std::vector<double> cost;
     for (const Rect& r : logical) cost.push_back(estimate->cost(r));
     of = assign_heaviest_first(cost, n);
   } else {
-    std::vector<long long> visible(logical.size(), 0);
-    for (const DisplayTile& t : split_at_displays(wall, logical))
-      visible[static_cast<std::size_t>(t.logical_tile)] += t.on_display.area();
-    of = assign_servers(wall.assignment, logical, visible, n,
-                        {0, 0, wall.canvas_width, wall.canvas_height});
+    of = by_policy(wall.assignment);
   }
-  for (int& s : of) s = serving[static_cast<std::size_t>(s)];
-  return plan_layout(wall, of, lost_);
+  try {
+    return planned(std::move(of));
+  } catch (const LayoutError&) {
+    // Fewer framebuffers hold the same pixels: shared out by visible area they fit more often
+    // than by the policy or by cost. The first refusal is the one to report.
+    try {
+      return planned(by_policy(AssignmentPolicy::AreaBalanced));
+    } catch (const LayoutError&) {
+    }
+    throw;
+  }
 }
 
 void Balancer::lose_server(int server) {
