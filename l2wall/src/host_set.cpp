@@ -197,7 +197,10 @@ bool HostSet::take_in(std::vector<InputFrame>& inputs) {
   for (std::size_t i = 0; i < hosts_.size(); ++i) {
     Host& h = hosts_[i];
     if (h.lost) {
-      inputs[i] = {};  // no signal: it feeds no group and holds none up
+      // No signal: it feeds no group and holds none up. Losing the signal is news too: a
+      // group it held up can complete now, even if no other link changes.
+      if (inputs[i].present()) fresh = true;
+      inputs[i] = {};
       continue;
     }
     const auto f = h.reader->latest();
