@@ -305,9 +305,11 @@ class LiveRun {
 
   // --survive-host-loss: the run goes on without a host that ended, its tiles planned over the
   // others from the next layout on. False when it cannot (no balancing run, not yet running,
-  // the last host): the run ends on it as without the option.
+  // the last host) or should not (the host gave up waiting for READY: an effect whose cause
+  // blame() names): the run ends on it as without the option.
   bool survive(Host& h) {
     if (!balance_ || !balance_->survives_losses() || !links_open_) return false;
+    if (gave_up_waiting(h)) return false;
     const std::string how = hosts_.ended_how(h);
     const double seconds = ms_between(totals_.start, RunClock::now()) / 1000.0;
     if (!balance_->lose(h.server, hosts_.delivered(h), how, seconds)) return false;
