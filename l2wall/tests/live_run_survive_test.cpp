@@ -34,24 +34,6 @@ constexpr int kVictim = 1;
 // Generous: two runs of four pipeservers each share a loaded 2-core machine.
 constexpr auto kRunBound = 120s;
 
-// The default wall with framebuffers large enough for three pipeservers to hold the tiles of
-// four: the default wall's own 800x600 cannot (the third test shows the run saying so).
-fs::path roomy_default_wall(const fs::path& dir) {
-  std::string text(default_wall_toml());
-  for (const auto& [from, to] :
-       {std::pair{std::string("framebuffer_width = 800"), std::string("framebuffer_width = 1024")},
-        std::pair{std::string("framebuffer_height = 600"),
-                  std::string("framebuffer_height = 768")}}) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
-  }
-  fs::create_directories(dir);
-  const fs::path file = dir / "roomy-default.toml";
-  std::ofstream(file) << text;
-  return file;
-}
-
 using Spot = std::pair<int, int>;
 
 // Where each pipeserver that has tiles in `layout` puts its stamp on display `d`.
@@ -84,7 +66,7 @@ int frames_logged(const WallRun& run, int server) {
 
 TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-survive-{}", getpid());
-  const fs::path wall_file = roomy_default_wall(dir);
+  const fs::path wall_file = write_roomy_default_wall(dir);
   const std::string keep = fmt::format("{},{}", kFrames - 2, kFrames - 1);
   const std::vector<std::string> common{"--wall",    wall_file.string(),
                                         "--scene",   "strips",
@@ -187,7 +169,7 @@ TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) 
 // The default stays: balancing without the option, the same kill ends the run, named.
 TEST(LiveRunSurvive, WithoutTheOptionAKilledPipeserverEndsTheBalancedRun) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-nosurvive-{}", getpid());
-  WallRun run("nosurvive", {"--wall", roomy_default_wall(dir).string(), "--scene", "strips",
+  WallRun run("nosurvive", {"--wall", write_roomy_default_wall(dir).string(), "--scene", "strips",
                             "--frames", "100000", "--refresh", "30", "--balance", "strips"});
   const pid_t victim = running_pipeserver(run, kVictim);
   ASSERT_GT(victim, 0) << run.output();
