@@ -581,6 +581,11 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
           "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
           "[balance]"};
     }
+    if (spec.survive_host_loss) {  // the wall's, balancing turned off by --balance static
+      return Failure{fmt::format(
+          "{}:{}: balance.survive_host_loss needs balancing, which --balance static turns off",
+          wall.source.string(), spec.line)};
+    }
     return {};
   }
   // Where the request came from, for the error.

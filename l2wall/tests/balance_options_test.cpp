@@ -56,6 +56,11 @@ TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
   Wall wall = strips_wall();
   wall.balance.survive_host_loss = true;
   EXPECT_TRUE(run_balance(RunOptions{}, wall).survive_host_loss);
+  RunOptions static_run;
+  static_run.balance = "static";
+  EXPECT_EQ(balance_refusal(static_run, wall, false).reason(),
+            "walls/x.toml:14: balance.survive_host_loss needs balancing, which --balance static "
+            "turns off");
 }
 
 }  // namespace
