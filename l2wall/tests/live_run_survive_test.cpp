@@ -124,6 +124,20 @@ TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) 
   ASSERT_LE(first_without, kFrames - 3) << "killed too late to see the displays recover";
   EXPECT_NE(output.find("balance: 0 of "), std::string::npos) << output;  // no mixed swap
 
+  // report.csv: its render time, READY wait and retries for the frames it rendered only.
+  const auto rows = read_csv(survivor.out() / "report.csv");
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kFrames + 1));
+  const auto column =
+      std::find(rows[0].begin(), rows[0].end(), fmt::format("render_ms_{}", kVictim));
+  ASSERT_NE(column, rows[0].end());
+  const auto c = static_cast<std::size_t>(column - rows[0].begin());
+  for (int k = 0; k < kFrames; ++k) {
+    const auto& row = rows[static_cast<std::size_t>(k + 1)];
+    EXPECT_EQ(row.size() > c && !row[c].empty(), k < logged) << "frame " << k;
+  }
+  EXPECT_NE(output.find(fmt::format("render time of pipeserver {} (median", kVictim)),
+            std::string::npos);
+
   // Every layout from then on gives it nothing and names it gone; the others plan them alike.
   const Wall wall = load_wall(wall_file);
   const std::vector<LayoutMessage> lines = layout_lines(survivor);
