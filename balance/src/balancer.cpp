@@ -83,7 +83,7 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
   layout_ = plan(first, nullptr);
 }
 
-TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const {
+TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool by_area) const {
   if (lost_.empty()) {
     if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
     std::vector<double> cost;
@@ -108,6 +108,7 @@ TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const 
     for (int& s : of) s = serving[static_cast<std::size_t>(s)];
     return plan_layout(wall, of, lost_);
   };
+  if (by_area) return planned(by_policy(AssignmentPolicy::AreaBalanced));
   std::vector<int> of;
   if (settings_.assign && estimate != nullptr) {
     std::vector<double> cost;
@@ -184,15 +185,19 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
     planned = plan(next, &estimate);
   } catch (const LayoutError& e) {
     strips_ = old_strips;
-    // The layout in use still has a lost pipeserver's tiles: it cannot stay.
-    for (const int s : lost_) {
-      if (!layout_.servers[static_cast<std::size_t>(s)].tiles.empty()) {
-        throw LayoutError(
-            fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
-                        s, e.what()));
-      }
+    const auto holding = std::find_if(lost_.begin(), lost_.end(), [&](int s) {
+      return !layout_.servers[static_cast<std::size_t>(s)].tiles.empty();
+    });
+    if (holding == lost_.end()) return {false, e.what()};
+    // The layout in use still has a lost pipeserver's tiles: it cannot stay. The last resort
+    // is the wall's own tiling shared out by visible area; the balancing goes on from there.
+    try {
+      planned = plan(wall_, nullptr, true);
+    } catch (const LayoutError&) {
+      throw LayoutError(
+          fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
+                      *holding, e.what()));
     }
-    return {false, e.what()};
   }
   grid_ = std::move(grid);
   const bool changed =

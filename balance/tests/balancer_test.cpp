@@ -113,6 +113,23 @@ TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsAnError) {
   }
 }
 
+// The re-cut strips do not fit the two left (a bottom strip taller than the 50-row
+// framebuffers), the wall's own 2x2 does: it is the layout without the lost one.
+TEST(Balancer, ALostPipeserversTilesFallBackToTheWallsTilingWhenTheReCutDoesNotFit) {
+  Wall w = strips_wall(104, 50);  // two 50x50 tiles side by side a framebuffer
+  w.server_count = 3;             // round-robin: tiles 0..3 to 0, 1, 2, 0
+  Balancer b(w, strips());
+  b.lose_server(2);
+  const BalanceStep step = b.next({{7.5, 2.5}, {2.5}, {}});
+  EXPECT_EQ(step.rejected, "");
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 50, 50}, {50, 0, 50, 50}, {0, 50, 50, 50}, {50, 50, 50, 50}}));
+  EXPECT_TRUE(b.layout().servers[2].tiles.empty());
+  EXPECT_EQ(b.layout().servers[0].tiles.size(), 2u);
+  EXPECT_EQ(b.layout().servers[1].tiles.size(), 2u);
+}
+
 TEST(Balancer, TheLastPipeserverCannotBeLost) {
   Balancer b(strips_wall(), strips());
   EXPECT_THROW(b.lose_server(2), std::invalid_argument);

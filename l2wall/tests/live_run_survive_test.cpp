@@ -64,8 +64,13 @@ int frames_logged(const WallRun& run, int server) {
   return run.host_log_lines(server);  // one line per frame published, nothing else once killed
 }
 
-TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-survive-{}", getpid());
+// --balance strips and kd alike.
+class LiveRunSurviveMode : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LiveRunSurviveMode, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) {
+  const std::string mode = GetParam();
+  const fs::path dir =
+      fs::temp_directory_path() / fmt::format("l2wall-survive-{}-{}", mode, getpid());
   const fs::path wall_file = write_roomy_default_wall(dir);
   const std::string keep = fmt::format("{},{}", kFrames - 2, kFrames - 1);
   const std::vector<std::string> common{"--wall",    wall_file.string(),
@@ -76,9 +81,9 @@ TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) 
   // As fast as possible (--refresh 0) the emulator refreshes only when a link changes: the
   // signal lost with the host must count as a change, or a group it held up never completes.
   std::vector<std::string> args = common;
-  args.insert(args.end(), {"--balance", "strips", "--survive-host-loss"});
-  WallRun fixed("survive-static", common);
-  WallRun survivor("survive-strips", args);
+  args.insert(args.end(), {"--balance", mode, "--survive-host-loss"});
+  WallRun fixed("survive-static-" + mode, common);
+  WallRun survivor("survive-" + mode, args);
 
   const pid_t victim = running_pipeserver(survivor, kVictim);
   ASSERT_GT(victim, 0) << survivor.output();
@@ -179,6 +184,8 @@ TEST(LiveRunSurvive, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRecover) 
   expect_clean(survivor);
   fs::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, LiveRunSurviveMode, ::testing::Values("strips", "kd"));
 
 // The default stays: balancing without the option, the same kill ends the run, named.
 TEST(LiveRunSurvive, WithoutTheOptionAKilledPipeserverEndsTheBalancedRun) {

@@ -49,8 +49,9 @@ class Balancer {
 
   // Frame k's render times, measured on layout(): makes layout() frame k+1's. A lost
   // pipeserver's times are not read (it measured nothing): its tiles count at the mean cost per
-  // pixel of the others'. Throws LayoutError when the layout still gives a lost pipeserver
-  // tiles and the next one does not fit the others' framebuffers: there is no layout to keep.
+  // pixel of the others'. While the layout still gives a lost pipeserver tiles it cannot stay:
+  // when the next one does not fit the others' framebuffers, the wall's own tiling shared out
+  // by visible area is tried, and when that does not fit either, throws LayoutError.
   BalanceStep next(const TileSeconds& seconds);
 
   // Pipeserver `server` died: from the next step on it gets no tile, the others share them
@@ -60,7 +61,9 @@ class Balancer {
   const std::vector<int>& lost() const { return lost_; }  // ascending
 
  private:
-  TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
+  // `by_area`: with a pipeserver lost, the others get the tiles by visible area (the planner's
+  // area-balanced policy) whatever the settings.
+  TileLayout plan(const Wall& wall, const CostEstimate* estimate, bool by_area = false) const;
   TileSeconds with_stand_ins(const TileSeconds& seconds) const;
 
   Wall wall_;
