@@ -73,11 +73,12 @@ TEST_P(LiveRunSurviveMode, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRec
       fs::temp_directory_path() / fmt::format("l2wall-survive-{}-{}", mode, getpid());
   const fs::path wall_file = write_roomy_default_wall(dir);
   const std::string keep = fmt::format("{},{}", kFrames - 2, kFrames - 1);
-  const std::vector<std::string> common{"--wall",    wall_file.string(),
-                                        "--scene",   "strips",
-                                        "--frames",  std::to_string(kFrames),
-                                        "--refresh", "0",
-                                        "--keep",    keep};
+  const std::vector<std::string> common{"--wall", wall_file.string(), "--scene", "strips",
+                                        "--frames", std::to_string(kFrames), "--refresh", "0",
+                                        "--keep", keep,
+                                        // Patience for a loaded machine: writing the kept
+                                        // pictures holds the READYs of the next frame.
+                                        "--ready-timeout", "5000", "--stall-timeout", "60000"};
   // As fast as possible (--refresh 0) the emulator refreshes only when a link changes: the
   // signal lost with the host must count as a change, or a group it held up never completes.
   std::vector<std::string> args = common;
@@ -115,9 +116,9 @@ TEST_P(LiveRunSurviveMode, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRec
   const int first_without = std::stoi(m[3].str());
   const int stale = std::stoi(m[4].str());
   std::printf(
-      "pipeserver %d killed while rendering frame %d; its tiles elsewhere from frame %d; "
+      "%s: pipeserver %d killed while rendering frame %d; its tiles elsewhere from frame %d; "
       "%d frames stale; the run ended %.2f s after the kill\n",
-      kVictim, died_in, first_without, stale, run_s);
+      mode.c_str(), kVictim, died_in, first_without, stale, run_s);
   // The frame named is the one it never delivered: the last it logged was the one before (or
   // it died between publishing a frame and logging it).
   const int logged = frames_logged(survivor, kVictim);
@@ -191,7 +192,8 @@ INSTANTIATE_TEST_SUITE_P(Modes, LiveRunSurviveMode, ::testing::Values("strips", 
 TEST(LiveRunSurvive, WithoutTheOptionAKilledPipeserverEndsTheBalancedRun) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-nosurvive-{}", getpid());
   WallRun run("nosurvive", {"--wall", write_roomy_default_wall(dir).string(), "--scene", "strips",
-                            "--frames", "100000", "--refresh", "30", "--balance", "strips"});
+                            "--frames", "100000", "--refresh", "30", "--balance", "strips",
+                            "--ready-timeout", "5000", "--stall-timeout", "60000"});
   const pid_t victim = running_pipeserver(run, kVictim);
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGKILL), 0);
@@ -220,7 +222,7 @@ TEST(LiveRunSurvive, AFullWallEndsTheRunSayingTheOthersCannotHoldTheTiles) {
                          "framebuffer_height = 100\n"
                          "[balance]\nmode = \"strips\"\nsurvive_host_loss = true\n";
   WallRun run("full", {"--wall", wall.string(), "--scene", "strips", "--frames", "100000",
-                       "--refresh", "30"});
+                       "--refresh", "30", "--ready-timeout", "5000", "--stall-timeout", "60000"});
   const pid_t victim = running_pipeserver(run, kVictim);
   ASSERT_GT(victim, 0) << run.output();
   ASSERT_EQ(kill(victim, SIGKILL), 0);
