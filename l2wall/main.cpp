@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
                   "over a cost grid); --path dvi only, not with --mpi (docs/wall-file.md)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
                                                      std::end(l2::kBalanceModeNames))));
+  run->add_flag("--survive-host-loss", o.survive_host_loss,
+                "with balancing: a pipeserver that dies (killed, crashed, exited) does not end "
+                "the run; its tiles go to the others from the next layout on, and the summary "
+                "names it and counts the frames shown stale meanwhile (as [balance] "
+                "survive_host_loss = true; without it a dead pipeserver ends the run, named)");
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "

@@ -1,6 +1,9 @@
 #include "balance/balancer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <stdexcept>
 
 #include "balance/assign_heaviest.hpp"
 #include "balance/kd_cost_grid.hpp"
@@ -80,15 +83,91 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
   layout_ = plan(first, nullptr);
 }
 
-TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const {
-  if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
-  std::vector<double> cost;
-  for (const Rect& r : make_logical_tiles(wall)) cost.push_back(estimate->cost(r));
-  return plan_layout(wall, assign_heaviest_first(cost, wall.pipeserver_count));
+TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool by_area) const {
+  if (lost_.empty()) {
+    if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
+    std::vector<double> cost;
+    for (const Rect& r : make_logical_tiles(wall)) cost.push_back(estimate->cost(r));
+    return plan_layout(wall, assign_heaviest_first(cost, wall.pipeserver_count));
+  }
+  // The pipeservers still there, dealt the tiles as if they were the whole wall.
+  std::vector<int> serving;
+  for (int s = 0; s < wall.pipeserver_count; ++s) {
+    if (!std::binary_search(lost_.begin(), lost_.end(), s)) serving.push_back(s);
+  }
+  const int n = static_cast<int>(serving.size());
+  const std::vector<Rect> logical = make_logical_tiles(wall);
+  std::vector<long long> visible(logical.size(), 0);
+  for (const DisplayTile& t : split_at_displays(wall, logical))
+    visible[static_cast<std::size_t>(t.logical_tile)] += t.on_display.area();
+  const auto by_policy = [&](AssignmentPolicy policy) {
+    return assign_pipeservers(policy, logical, visible, n,
+                              {0, 0, wall.canvas_width, wall.canvas_height});
+  };
+  const auto planned = [&](std::vector<int> of) {
+    for (int& s : of) s = serving[static_cast<std::size_t>(s)];
+    return plan_layout(wall, of, lost_);
+  };
+  if (by_area) return planned(by_policy(AssignmentPolicy::AreaBalanced));
+  std::vector<int> of;
+  if (settings_.assign && estimate != nullptr) {
+    std::vector<double> cost;
+    for (const Rect& r : logical) cost.push_back(estimate->cost(r));
+    of = assign_heaviest_first(cost, n);
+  } else {
+    of = by_policy(wall.assignment);
+  }
+  try {
+    return planned(std::move(of));
+  } catch (const LayoutError&) {
+    // Fewer framebuffers hold the same pixels: shared out by visible area they fit more often
+    // than by the policy or by cost. The first refusal is the one to report.
+    try {
+      return planned(by_policy(AssignmentPolicy::AreaBalanced));
+    } catch (const LayoutError&) {
+    }
+    throw;
+  }
+}
+
+void Balancer::lose_pipeserver(int pipeserver) {
+  if (pipeserver < 0 || pipeserver >= wall_.pipeserver_count) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {} is not 0..{}", pipeserver, wall_.pipeserver_count - 1));
+  }
+  if (std::binary_search(lost_.begin(), lost_.end(), pipeserver)) return;
+  if (static_cast<int>(lost_.size()) + 1 >= wall_.pipeserver_count) {
+    throw std::invalid_argument(
+        fmt::format("pipeserver {} was the last one rendering: no pipeserver is left", pipeserver));
+  }
+  lost_.insert(std::upper_bound(lost_.begin(), lost_.end(), pipeserver), pipeserver);
+}
+
+TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {
+  if (lost_.empty()) return seconds;
+  TileSeconds out = seconds;
+  out.resize(layout_.pipeservers.size());
+  double measured = 0, pixels = 0;
+  for (std::size_t s = 0; s < out.size(); ++s) {
+    if (std::binary_search(lost_.begin(), lost_.end(), static_cast<int>(s))) continue;
+    const auto& tiles = layout_.pipeservers[s].tiles;
+    for (std::size_t i = 0; i < tiles.size() && i < out[s].size(); ++i) {
+      measured += std::max(out[s][i], 0.0);
+      pixels += double(tiles[i].tile.on_canvas.area());
+    }
+  }
+  const double per_pixel = pixels > 0 ? measured / pixels : 0;
+  for (const int s : lost_) {
+    auto& times = out[static_cast<std::size_t>(s)];
+    times.clear();
+    for (const PackedTile& t : layout_.pipeservers[static_cast<std::size_t>(s)].tiles)
+      times.push_back(per_pixel * double(t.tile.on_canvas.area()));
+  }
+  return out;
 }
 
 BalanceStep Balancer::next(const TileSeconds& seconds) {
-  const CostEstimate estimate = CostEstimate::from_layout(layout_, seconds);
+  const CostEstimate estimate = CostEstimate::from_layout(layout_, with_stand_ins(seconds));
   Wall next = wall_;
   const std::optional<StripEdges> old_strips = strips_;
   std::vector<std::vector<double>> grid;
@@ -106,7 +185,19 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
     planned = plan(next, &estimate);
   } catch (const LayoutError& e) {
     strips_ = old_strips;
-    return {false, e.what()};
+    const auto holding = std::find_if(lost_.begin(), lost_.end(), [&](int s) {
+      return !layout_.pipeservers[static_cast<std::size_t>(s)].tiles.empty();
+    });
+    if (holding == lost_.end()) return {false, e.what()};
+    // The layout in use still has a lost pipeserver's tiles: it cannot stay. The last resort
+    // is the wall's own tiling shared out by visible area; the balancing goes on from there.
+    try {
+      planned = plan(wall_, nullptr, true);
+    } catch (const LayoutError&) {
+      throw LayoutError(
+          fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
+                      *holding, e.what()));
+    }
   }
   grid_ = std::move(grid);
   const bool changed = planned.logical_tiles != layout_.logical_tiles ||

@@ -36,6 +36,13 @@ class Words {
     }
     return v;
   }
+  // Takes the next word if it is `want`.
+  bool optional_keyword(std::string_view want) {
+    const std::string_view before = rest_;
+    if (next() == want) return true;
+    rest_ = before;
+    return false;
+  }
   void end() {
     if (!next().empty()) fail("more words than its count says");
   }
@@ -75,6 +82,10 @@ std::string encode(const LayoutMessage& m) {
     const Rect& r = m.tiles[i];
     out += fmt::format(" {} {} {} {} {}", r.x, r.y, r.w, r.h, m.pipeservers[i]);
   }
+  if (!m.gone.empty()) {
+    out += fmt::format(" GONE {}", m.gone.size());
+    for (int s : m.gone) out += fmt::format(" {}", s);
+  }
   return out;
 }
 
@@ -105,6 +116,13 @@ LayoutMessage decode_layout(std::string_view line) {
     m.tiles.push_back(r);
     m.pipeservers.push_back(static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1)));
   }
+  if (w.optional_keyword("GONE")) {
+    const auto gone = w.integer("gone count", 1, kMaxPipeservers);
+    for (long long i = 0; i < gone; ++i) {
+      m.gone.push_back(static_cast<int>(w.integer("gone pipeserver", 0, kMaxPipeservers - 1)));
+      if (i > 0 && m.gone[i] <= m.gone[i - 1]) w.fail("gone pipeservers must be ascending");
+    }
+  }
   w.end();
   return m;
 }
@@ -118,6 +136,9 @@ LayoutMessage layout_message(int frame, const TileLayout& layout) {
     m.pipeservers[static_cast<std::size_t>(layout.tiles[i].logical_tile)] =
         layout.tile_pipeserver[i];
   }
+  for (const PipeserverPlan& s : layout.pipeservers) {
+    if (s.tiles.empty()) m.gone.push_back(s.pipeserver);
+  }
   return m;
 }
 
@@ -126,7 +147,7 @@ TileLayout plan_from_message(const Wall& wall, const LayoutMessage& m) {
   w.tiling = {};
   w.tiling.kind = TilingKind::List;
   w.tiling.rects = m.tiles;
-  return plan_layout(w, m.pipeservers);
+  return m.gone.empty() ? plan_layout(w, m.pipeservers) : plan_layout(w, m.pipeservers, m.gone);
 }
 
 }  // namespace l2

@@ -1,5 +1,7 @@
 #include "balance/balancer.hpp"
 
+#include <algorithm>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -65,6 +67,79 @@ TEST(Balancer, ALayoutThatDoesNotFitIsNotUsed) {
   const BalanceStep even = b.next({{1, 1}, {1, 1}});
   EXPECT_FALSE(even.changed);
   EXPECT_EQ(even.rejected, "");
+}
+
+// A dead host: the next layout gives it nothing, its tiles counted at the others' mean cost
+// per pixel (even times here, so the edges stay), and the planner's checks still hold.
+TEST(Balancer, ALostPipeserversTilesGoToTheOthers) {
+  Balancer b(strips_wall(), strips());
+  b.lose_pipeserver(1);
+  EXPECT_EQ(b.lost(), std::vector<int>{1});
+  const BalanceStep step = b.next({{1, 1}, {}});
+  EXPECT_TRUE(step.changed);
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 50, 50}, {50, 0, 50, 50}, {0, 50, 50, 50}, {50, 50, 50, 50}}));
+  EXPECT_EQ(b.layout().tile_pipeserver, (std::vector<int>{0, 0, 0, 0}));
+  EXPECT_EQ(b.layout().pipeservers[0].tiles.size(), 4u);
+  EXPECT_TRUE(b.layout().pipeservers[1].tiles.empty());
+  // Later frames: its times (none) are not read.
+  EXPECT_EQ(b.next({{1, 1, 1, 1}, {}}).rejected, "");
+  EXPECT_TRUE(b.layout().pipeservers[1].tiles.empty());
+}
+
+TEST(Balancer, HeaviestFirstSharesALostPipeserversTilesAmongTheRest) {
+  Wall w = strips_wall();
+  w.pipeserver_count = 3;  // round-robin: tiles 0..3 to 0, 1, 2, 0
+  Balancer b(w, strips(true));
+  b.lose_pipeserver(2);
+  b.next({{1, 1}, {1}, {1}});
+  const std::vector<int>& of = b.layout().tile_pipeserver;
+  EXPECT_EQ(std::count(of.begin(), of.end(), 2), 0);
+  EXPECT_EQ(std::count(of.begin(), of.end(), 0), 2);
+  EXPECT_EQ(std::count(of.begin(), of.end(), 1), 2);
+}
+
+TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsAnError) {
+  Balancer b(strips_wall(104, 64), strips());  // two 50x50 tiles a framebuffer, one row
+  b.lose_pipeserver(1);
+  try {
+    b.next({{1, 1}, {}});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_THAT(e.what(),
+                testing::StartsWith("the other pipeservers' framebuffers cannot hold pipeserver "
+                                    "1's tiles: pipeserver 0: tile 2"));
+  }
+}
+
+// The re-cut strips do not fit the two left (a bottom strip taller than the 50-row
+// framebuffers), the wall's own 2x2 does: it is the layout without the lost one.
+TEST(Balancer, ALostPipeserversTilesFallBackToTheWallsTilingWhenTheReCutDoesNotFit) {
+  Wall w = strips_wall(104, 50);  // two 50x50 tiles side by side a framebuffer
+  w.pipeserver_count = 3;         // round-robin: tiles 0..3 to 0, 1, 2, 0
+  Balancer b(w, strips());
+  b.lose_pipeserver(2);
+  const BalanceStep step = b.next({{7.5, 2.5}, {2.5}, {}});
+  EXPECT_EQ(step.rejected, "");
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 50, 50}, {50, 0, 50, 50}, {0, 50, 50, 50}, {50, 50, 50, 50}}));
+  EXPECT_TRUE(b.layout().pipeservers[2].tiles.empty());
+  EXPECT_EQ(b.layout().pipeservers[0].tiles.size(), 2u);
+  EXPECT_EQ(b.layout().pipeservers[1].tiles.size(), 2u);
+}
+
+TEST(Balancer, TheLastPipeserverCannotBeLost) {
+  Balancer b(strips_wall(), strips());
+  EXPECT_THROW(b.lose_pipeserver(2), std::invalid_argument);
+  b.lose_pipeserver(0);
+  try {
+    b.lose_pipeserver(1);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "pipeserver 1 was the last one rendering: no pipeserver is left");
+  }
 }
 
 TEST(Balancer, KdRecutsOverTheMeasuredGrid) {

@@ -21,12 +21,30 @@ TEST(ControlMessages, TimesRoundTrip) {
 }
 
 TEST(ControlMessages, LayoutRoundTrip) {
-  const LayoutMessage m{3, {{0, 0, 33, 38}, {33, 0, 67, 38}}, {1, 0}};
+  const LayoutMessage m{3, {{0, 0, 33, 38}, {33, 0, 67, 38}}, {1, 0}, {}};
   EXPECT_EQ(encode(m), "LAYOUT 3 2 0 0 33 38 1 33 0 67 38 0");
   const LayoutMessage d = decode_layout(encode(m));
   EXPECT_EQ(d.frame, 3);
   EXPECT_EQ(d.tiles, m.tiles);
   EXPECT_EQ(d.pipeservers, m.pipeservers);
+}
+
+// A layout without a dead host names it, and every pipeserver plans it without that one.
+TEST(ControlMessages, LayoutNamesTheGonePipeservers) {
+  const LayoutMessage m{4, {{0, 0, 50, 100}, {50, 0, 50, 100}}, {0, 0}, {1}};
+  EXPECT_EQ(encode(m), "LAYOUT 4 2 0 0 50 100 0 50 0 50 100 0 GONE 1 1");
+  const LayoutMessage d = decode_layout(encode(m));
+  EXPECT_EQ(d.pipeservers, m.pipeservers);
+  EXPECT_EQ(d.gone, std::vector<int>{1});
+  const TileLayout heard = plan_from_message(strips_wall(), d);
+  ASSERT_EQ(heard.pipeservers.size(), 2u);
+  EXPECT_EQ(heard.pipeservers[0].tiles.size(), 2u);
+  EXPECT_TRUE(heard.pipeservers[1].tiles.empty());
+  // And back: the coordinator's message of that plan says the same.
+  EXPECT_EQ(encode(layout_message(4, heard)), encode(m));
+  // Without GONE the planner still wants a tile for every pipeserver.
+  EXPECT_THROW(plan_from_message(strips_wall(), LayoutMessage{4, m.tiles, m.pipeservers, {}}),
+               LayoutError);
 }
 
 void expect_error(std::string_view line, bool layout, const std::string& what) {
@@ -56,6 +74,15 @@ TEST(ControlMessages, BadLinesAreOneLineErrors) {
                "got '99999999999'");
   expect_error("LAYOUT 0 1 0 0 0 10 0", true,
                "control line 'LAYOUT 0 1 0 0 0 10 0': width must be an integer 1..65535, got '0'");
+  expect_error("LAYOUT 0 1 0 0 5 10 0 GONE 2 1", true,
+               "control line 'LAYOUT 0 1 0 0 5 10 0 GONE 2 1': gone pipeserver must be an integer "
+               "0..255, got ''");
+  expect_error(
+      "LAYOUT 0 1 0 0 5 10 0 GONE 2 3 1", true,
+      "control line 'LAYOUT 0 1 0 0 5 10 0 GONE 2 3 1': gone pipeservers must be ascending");
+  expect_error("LAYOUT 0 1 0 0 5 10 0 GONE 0", true,
+               "control line 'LAYOUT 0 1 0 0 5 10 0 GONE 0': gone count must be an integer "
+               "1..256, got '0'");
   expect_error(std::string("LAYOUT \x1b[2J") + std::string(60, '9'), true,
                "control line 'LAYOUT ?[2J" + std::string(29, '9') +
                    "...': frame must be an "

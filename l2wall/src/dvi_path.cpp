@@ -61,9 +61,9 @@ void DviPath::check_groups_for_balance(const Emulator::Tick& tick, const HostSet
                                 [&](const SwapGroup& sg) { return sg.id == id; });
     if (g == groups.end()) continue;
     std::vector<int> shown;
-    for (const Host& h : hosts.hosts()) {
-      const int frame = side_.frame_shown(h);
-      if (std::binary_search(g->displays.begin(), g->displays.end(), h.stamp(frame).display))
+    for (const Host* h : hosts.serving()) {
+      const int frame = side_.frame_shown(*h);
+      if (std::binary_search(g->displays.begin(), g->displays.end(), h->stamp(frame).display))
         shown.push_back(frame);
     }
     balance_->check_swap(shown);

@@ -56,6 +56,9 @@ struct Host {
   std::unique_ptr<SocketControlChannel> control;
   // Fault injection: a READY held back until the host asks with SYNC?.
   std::optional<int> held_ready;
+  // It died and the run went on without it (--survive-host-loss): its link is no input any
+  // more, and nothing waits for it or blames it.
+  bool lost = false;
 };
 
 // What every pipeserver is started with.
@@ -92,6 +95,14 @@ class HostSet {
 
   std::deque<Host>& hosts() { return hosts_; }
   const std::deque<Host>& hosts() const { return hosts_; }
+  // The hosts still taking part: all but those lost.
+  std::vector<Host*> serving();
+  std::vector<const Host*> serving() const;
+
+  // The run goes on without `h`, which ended (--survive-host-loss): from now on its link is
+  // taken in as an input without a signal (its last frame stays in the shared memory, and would
+  // hold up every swap-lock group it fed), and it is never polled, waited for or blamed.
+  void lose(Host& h) { h.lost = true; }
 
   // Polls every host; returns the first whose end is a fault: it ended badly, or before it
   // delivered every frame. (A host ends well only after its last frame was swapped, which it
@@ -104,6 +115,8 @@ class HostSet {
   // "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while rendering frame 57; " + on_displays
   // (what the displays keep, e.g. "the displays keep frame 56").
   std::string describe_end(const Host& h, const std::string& on_displays) const;
+  // The same without what the displays keep.
+  std::string ended_how(const Host& h) const;
 
   // Opens every host's DVI link and waits until each carries a first frame; `check` runs in
   // between (it throws for a host that died). Throws RunFault naming the hosts still silent.

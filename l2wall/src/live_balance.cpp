@@ -9,12 +9,14 @@
 
 #include "balance/control_messages.hpp"
 #include "run_fault.hpp"
+#include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
 
 LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileLayout& start,
                          int frames)
     : balancer_(wall, settings),
+      survive_(wall.balance.survive_host_loss),
       frames_(frames),
       pending_(start.pipeservers.size()),
       have_(start.pipeservers.size(), false),
@@ -29,8 +31,27 @@ int LiveBalance::layout_of(int frame) const {
   return frame_layout_[static_cast<std::size_t>(std::clamp(frame, 0, last))];
 }
 
+bool LiveBalance::lose(int pipeserver, int delivered, const std::string& how, double seconds) {
+  try {
+    balancer_.lose_pipeserver(pipeserver);
+  } catch (const std::invalid_argument&) {
+    return false;  // no one left to take its tiles
+  }
+  losses_.push_back({pipeserver, how, delivered, seconds, -1});
+  return true;
+}
+
+bool LiveBalance::stale(int frame) const {
+  return std::any_of(losses_.begin(), losses_.end(), [frame](const Loss& l) {
+    return frame >= l.first_missing && (l.first_without < 0 || frame < l.first_without);
+  });
+}
+
 void LiveBalance::serve(HostSet& hosts) {
-  for (Host& h : hosts.hosts()) {
+  // A lost host sends nothing more: the frame's times are in once the others' are.
+  for (const int s : balancer_.lost()) have_[static_cast<std::size_t>(s)] = true;
+  for (Host* host : hosts.serving()) {
+    Host& h = *host;
     if (!h.control) continue;
     const std::size_t i = static_cast<std::size_t>(h.pipeserver);
     while (!have_[i]) {
@@ -73,14 +94,24 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
         rejected_.push_back(fmt::format("frame {}: {}", frame, step.rejected));
     } catch (const std::invalid_argument& e) {
       throw RunFault(fmt::format("balancing frame {}: {}", frame, e.what()));
+    } catch (const LayoutError& e) {
+      // Only with a host lost: the others cannot take its tiles, and its layout cannot stay.
+      throw RunFault(fmt::format("{}, and the run cannot go on without it: {}",
+                                 losses_.empty() ? "a pipeserver died" : losses_.back().how,
+                                 e.what()));
     }
   }
   const TileLayout& layout = balancer_.layout();
+  for (Loss& l : losses_) {
+    if (l.first_without < 0 &&
+        layout.pipeservers[static_cast<std::size_t>(l.pipeserver)].tiles.empty())
+      l.first_without = frame;
+  }
   LayoutMessage m = layout_message(frame, layout);
   const std::string line = encode(m);
-  for (Host& h : hosts.hosts()) {
+  for (Host* h : hosts.serving()) {
     try {
-      if (h.control) h.control->send_line(line);
+      if (h->control) h->control->send_line(line);
     } catch (const ControlError&) {
       // the host is gone: the run names it from its exit
     }
@@ -124,6 +155,21 @@ std::string LiveBalance::summary() const {
   s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
   for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);
+  for (const Loss& l : losses_) {
+    const int end = l.first_without < 0 ? frames_ : std::min(l.first_without, frames_);
+    const int from = std::min(l.first_missing, end);
+    std::string stale;
+    for (int f = from; f < end; ++f) {
+      const bool late = std::find(late_.begin(), late_.end(), f) != late_.end();
+      stale += fmt::format("{}{}{}", stale.empty() ? "" : ", ", f, late ? " (late)" : "");
+    }
+    s += fmt::format("balance: lost {}, {:.2f} s into the run; ", l.how, l.seconds);
+    s += l.first_without < 0
+             ? std::string("the run ended before a layout without it")
+             : fmt::format("its tiles went to the others from frame {}", l.first_without);
+    s += fmt::format("; {} frame{} stale (shown incomplete or late){}{}\n", end - from,
+                     end - from == 1 ? "" : "s", stale.empty() ? "" : ": ", stale);
+  }
   return s;
 }
 

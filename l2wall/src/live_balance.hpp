@@ -4,6 +4,10 @@
 // host, so all switch together. It also says where each frame's stamps are (the layout moves
 // them) and counts, from the stamps the run reads, the strips routed in each layout and the
 // group swaps that showed frames of two layouts at once.
+//
+// With --survive-host-loss a host that dies is lost, not the end of the run: the next layout
+// is planned over the others (the Balancer), the frames whose layouts still gave it tiles are
+// stale (shown without its part, some of them late), and the summary says so.
 #pragma once
 
 #include <cstdint>
@@ -31,10 +35,24 @@ class LiveBalance {
   // them) share one layout.
   void check_swap(const std::vector<int>& shown);
 
+  // Whether a host that dies is survived (--survive-host-loss, [balance] survive_host_loss).
+  bool survives_losses() const { return survive_; }
+  // Host `pipeserver` died (`how`: "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while
+  // rendering frame 57") having delivered frames 0..delivered-1, `seconds` into the run: the
+  // layouts from the next one on give it nothing. False when it was the last one rendering.
+  bool lose(int pipeserver, int delivered, const std::string& how, double seconds);
+  // Whether frame `frame` is rendered in a layout that gives a lost host tiles it never
+  // delivered: shown incomplete, and maybe late (its host's death noticed after the others'
+  // part came in).
+  bool stale(int frame) const;
+  // A stale frame that reached the displays later than one refresh after its last input.
+  void note_late(int frame) { late_.push_back(frame); }
+
   // The layout frame `frame` is rendered in (0: the start, then one more each change).
   int layout_of(int frame) const;
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
-  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans.
+  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans,
+  // the hosts lost and the frames stale.
   std::string summary() const;
   // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every host got it (frame 0: the
   // wall's plan, which the hosts start in).
@@ -43,7 +61,18 @@ class LiveBalance {
  private:
   void send_layout(HostSet& hosts, int frame);
 
+  struct Loss {
+    int pipeserver = 0;
+    std::string how;
+    int first_missing = 0;  // the first frame it did not deliver
+    double seconds = 0;
+    int first_without = -1;  // the first frame whose layout gives it no tile; -1: none yet
+  };
+
   Balancer balancer_;
+  bool survive_ = false;
+  std::vector<Loss> losses_;
+  std::vector<int> late_;  // stale frames shown late
   int frames_;
   int next_times_ = 0;                        // the frame whose times are being collected
   std::vector<std::vector<double>> pending_;  // by host, that frame's times

@@ -67,6 +67,8 @@ class LiveRun {
     start_balance();
     backends_.start_hosts(hosts_, launch_hosts(), layout_);
     for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
+    // A host that dies before every host's first frame is a start-up fault, survived or not.
+    links_open_ = true;
     run_frames_until_stopped();
     if (shown_ < o_.frames) {
       end_at_quit();  // q under --show, or a stop signal
@@ -245,6 +247,11 @@ class LiveRun {
 
   void check_latency(const FrameRecord& r) {
     const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
+    // A frame a lost host never delivered waited until its death was noticed: counted stale.
+    if (latency != 1 && balance_ && balance_->stale(shown_)) {
+      balance_->note_late(shown_);
+      return;
+    }
     if (latency != 1) {
       latency_ok_ = false;
       std::fprintf(stderr, "\nl2wall: frame %d: latency %ld refreshes, expected 1\n", shown_,
@@ -290,9 +297,26 @@ class LiveRun {
     if (stopped_) return;  // the processes are ending by the signal; the run is over
     check_stop_signal(shown_, displays_showing());
     Host* ended = hosts_.poll_ended();
+    while (ended && survive(*ended)) ended = hosts_.poll_ended();
     const bool path_down =
         std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
     if (ended || path_down) throw RunFault(blame());
+  }
+
+  // --survive-host-loss: the run goes on without a host that ended, its tiles planned over the
+  // others from the next layout on. False when it cannot (no balancing run, not yet running,
+  // the last host) or should not (the host gave up waiting for READY: an effect whose cause
+  // blame() names): the run ends on it as without the option.
+  bool survive(Host& h) {
+    if (!balance_ || !balance_->survives_losses() || !links_open_) return false;
+    if (gave_up_waiting(h)) return false;
+    const std::string how = hosts_.ended_how(h);
+    const double seconds = ms_between(totals_.start, RunClock::now()) / 1000.0;
+    if (!balance_->lose(h.pipeserver, hosts_.delivered(h), how, seconds)) return false;
+    hosts_.lose(h);
+    std::fprintf(stderr, "%sl2wall: %s; the run goes on without it (--survive-host-loss)\n",
+                 progress_shown_ ? "\n" : "", how.c_str());
+    return true;
   }
 
   // When one process fails the others lose their connection to it and end too; name the cause.
@@ -460,7 +484,8 @@ class LiveRun {
                           hosts_.serve_channels();
                         }};
   bool progress_shown_ = false;
-  int shown_ = 0;  // frames 0 .. shown_-1 have reached every display (and were checked)
+  bool links_open_ = false;  // every host delivered its first frame
+  int shown_ = 0;            // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
   int stopped_ = 0;        // the stop signal that ended the frames, or 0
   double writing_ms_ = 0;  // spent writing saved pictures during the run
@@ -543,12 +568,26 @@ Status run_options_error(const RunOptions& o) {
 BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   BalanceSpec spec = wall.balance;
   if (const auto mode = parse_balance_mode(o.balance)) spec.mode = *mode;
+  spec.survive_host_loss = spec.survive_host_loss || o.survive_host_loss;
   return spec;
 }
 
 Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const BalanceSpec spec = run_balance(o, wall);
-  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return {};
+  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) {
+    // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
+    if (o.survive_host_loss) {
+      return Failure{
+          "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
+          "[balance]"};
+    }
+    if (spec.survive_host_loss) {  // the wall's, balancing turned off by --balance static
+      return Failure{fmt::format(
+          "{}:{}: balance.survive_host_loss needs balancing, which --balance static turns off",
+          wall.source.string(), spec.line)};
+    }
+    return {};
+  }
   // Where the request came from, for the error.
   const std::string asked = !o.balance.empty() && o.balance != "static"
                                 ? "--balance " + o.balance

@@ -31,6 +31,7 @@ struct RunOptions {
   int viz_port = 0;                    // its port; 0: a free one, which it reports
   std::string path = "dvi";            // dvi | vizserver | both
   std::string balance;                 // static | strips | kd; empty: the wall's [balance]
+  bool survive_host_loss = false;      // balancing: a dead pipeserver's tiles to the others
   bool compare = false;                // both: every display identical byte for byte on both paths
   int threads = 1;                     // emulator routing threads
   int start_timeout_ms = 60000;        // until every link carries its first frame
@@ -62,10 +63,10 @@ SavedFrames parse_saved_frames(const std::string& text);
 // such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
 Status run_options_error(const RunOptions& options);
 
-// The wall's [balance] with --balance over its mode.
+// The wall's [balance] with --balance over its mode, and --survive-host-loss.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
-// Why this run cannot balance as asked (--path vizserver or both, --mpi), or nullopt: one line
-// naming the option or the wall file's line.
+// Why this run cannot balance as asked (--path vizserver or both, --mpi, --survive-host-loss
+// without balancing), or nullopt: one line naming the option or the wall file's line.
 Status balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
 
 // Returns the exit code: 0 when every frame reached the displays with one frame of latency.

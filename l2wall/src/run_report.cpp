@@ -17,6 +17,8 @@ namespace {
 struct HostFrame {
   double render_ms = 0, wait_ms = 0;
   int retries = 0;
+  bool logged = false;  // a host lost mid-run (--survive-host-loss) logs no later frame, nor
+                        // one stopped before its line
 };
 struct HostLog {
   std::vector<HostFrame> frames;
@@ -34,7 +36,7 @@ HostLog read_host_log(const std::string& path, int frames) {
     if (std::sscanf(line.c_str(), "frame %d render_ms %lf wait_ms %lf retries %d", &k, &render,
                     &wait, &retries) == 4 &&
         k >= 0 && k < frames) {
-      log.frames[static_cast<std::size_t>(k)] = {render, wait, retries};
+      log.frames[static_cast<std::size_t>(k)] = {render, wait, retries, true};
     } else if (line.rfind("done ", 0) == 0) {
       log.done = line.substr(5);
     }
@@ -65,7 +67,11 @@ void write_csv(const std::filesystem::path& path, const RunOptions& o,
     }
     for (const HostLog& log : logs) {
       const HostFrame& f = log.frames[k];
-      csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
+      if (f.logged) {
+        csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
+      } else {
+        csv << ",,,";  // no line: its host was lost (or stopped) before
+      }
     }
     csv << "\n";
   }
@@ -78,7 +84,9 @@ RunTimes run_times(const RunOptions& o, const std::vector<HostLog>& logs,
   RunTimes t;
   for (const HostLog& log : logs) {
     t.render.emplace_back();
-    for (const HostFrame& f : log.frames) t.render.back().push_back(f.render_ms);
+    for (const HostFrame& f : log.frames) {
+      if (f.logged) t.render.back().push_back(f.render_ms);
+    }
   }
   if (o.path != "vizserver") {  // no emulator on the vizserver path
     for (const FrameRecord& r : records) {

@@ -42,5 +42,26 @@ TEST(BalanceOptions, OnlyTheDviPathWithoutMpiBalances) {
   EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
 }
 
+// Surviving a dead host is the same on the command line and in the wall file, and needs a
+// balancing run (only it re-plans).
+TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
+  RunOptions o;
+  EXPECT_FALSE(run_balance(o, strips_wall()).survive_host_loss);
+  o.survive_host_loss = true;
+  EXPECT_TRUE(run_balance(o, strips_wall()).survive_host_loss);
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
+  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+            "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
+            "[balance]");
+  Wall wall = strips_wall();
+  wall.balance.survive_host_loss = true;
+  EXPECT_TRUE(run_balance(RunOptions{}, wall).survive_host_loss);
+  RunOptions static_run;
+  static_run.balance = "static";
+  EXPECT_EQ(balance_refusal(static_run, wall, false).reason(),
+            "walls/x.toml:14: balance.survive_host_loss needs balancing, which --balance static "
+            "turns off");
+}
+
 }  // namespace
 }  // namespace l2

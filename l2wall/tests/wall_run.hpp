@@ -162,6 +162,25 @@ inline void expect_clean(const WallRun& run) {
   EXPECT_TRUE(children.empty()) << "orphan process pid " << children.front();
 }
 
+// The default wall with framebuffers large enough for three pipeservers to hold the tiles of
+// four (the default wall's own 800x600 cannot), and more of the balancer's re-cut layouts fit.
+// `extra` goes at the end ([balance], say).
+inline fs::path write_roomy_default_wall(const fs::path& dir, const std::string& extra = "") {
+  std::string text(default_wall_toml());
+  for (const auto& [from, to] :
+       {std::pair{std::string("framebuffer_width = 800"), std::string("framebuffer_width = 1024")},
+        std::pair{std::string("framebuffer_height = 600"),
+                  std::string("framebuffer_height = 768")}}) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  fs::create_directories(dir);
+  const fs::path file = dir / "roomy-default.toml";
+  std::ofstream(file) << text << extra;
+  return file;
+}
+
 // Waits until pipeserver `pipeserver` has published a few frames; returns its pid.
 inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);

@@ -41,7 +41,7 @@ TEST(LiveControl, TheNextFrameIsRenderedInTheLayoutSentBack) {
                               "framebuffer_height = 130\n";
   const Wall wall = load_wall(wall_file);
   // Frame 1: pipeserver 0 renders two tiles instead of one, in two framebuffer rows.
-  LayoutMessage next{1, {{0, 0, 80, 60}, {80, 0, 80, 60}, {0, 60, 160, 60}}, {0, 1, 0}};
+  LayoutMessage next{1, {{0, 0, 80, 60}, {80, 0, 80, 60}, {0, 60, 160, 60}}, {0, 1, 0}, {}};
   const PipeserverPlan plan1 = plan_from_message(wall, next).pipeservers[0];
   ASSERT_EQ(plan1.tiles.size(), 2u);
   ASSERT_EQ(plan1.tiles[1].tile.on_display.w, 160);

@@ -114,7 +114,8 @@ std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int pipe
   return lists;
 }
 
-TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical) {
+TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical,
+                const std::vector<int>& gone = {}) {
   TileLayout layout;
   layout.wall = wall;
   layout.logical_tiles = make_logical_tiles(wall);
@@ -126,11 +127,26 @@ TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical)
                                   "and one pipeserver for each of its {} logical tiles, got {}",
                                   layout.logical_tiles.size(), pipeserver_of_logical->size()));
   }
+  const auto is_gone = [&gone](int s) {
+    return std::find(gone.begin(), gone.end(), s) != gone.end();
+  };
+  for (int s : gone) {
+    if (s < 0 || s >= wall.pipeserver_count) {
+      throw LayoutError(where(wall, 0) + fmt::format("gone pipeserver {} is not 0..{}", s,
+                                                     wall.pipeserver_count - 1));
+    }
+  }
   if (pipeserver_of_logical) {
-    for (int s : *pipeserver_of_logical) {
+    for (std::size_t t = 0; t < pipeserver_of_logical->size(); ++t) {
+      const int s = (*pipeserver_of_logical)[t];
       if (s < 0 || s >= wall.pipeserver_count) {
         throw LayoutError(where(wall, 0) + fmt::format("assigned pipeserver {} is not 0..{}", s,
                                                        wall.pipeserver_count - 1));
+      }
+      if (is_gone(s)) {
+        throw LayoutError(where(wall, 0) + fmt::format("pipeserver {} is gone but was given "
+                                                       "logical tile {}",
+                                                       s, t));
       }
     }
   }
@@ -161,7 +177,8 @@ TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical)
     }
   }
   for (const PipeserverPlan& s : layout.pipeservers) {
-    if (!s.tiles.empty()) continue;
+    // A gone pipeserver scans out nothing at all: it cannot hold up a READY.
+    if (!s.tiles.empty() || is_gone(s.pipeserver)) continue;
     throw not_fitting(wall, 0,
                       fmt::format("pipeserver {} gets no tiles ({} display tiles for {} "
                                   "pipeservers); every pipeserver needs a tile (one without "
@@ -192,6 +209,11 @@ TileLayout plan_layout(const Wall& wall) {
 
 TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical) {
   return plan(wall, &pipeserver_of_logical);
+}
+
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical,
+                       const std::vector<int>& gone) {
+  return plan(wall, &pipeserver_of_logical, gone);
 }
 
 }  // namespace l2

@@ -111,6 +111,14 @@ std::optional<std::string> TomlFields::string(std::string_view key) const {
   return s->get();
 }
 
+bool TomlFields::boolean(std::string_view key, bool fallback) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return fallback;
+  const auto* b = n->as_boolean();
+  if (!b) fail(key, fmt::format("must be true or false, got {}", type_name(*n)));
+  return b->get();
+}
+
 int TomlFields::choice(std::string_view key, const std::vector<std::string_view>& choices,
                        int fallback) const {
   const auto s = string(key);

@@ -37,6 +37,7 @@ class TomlFields {
   int integer(std::string_view key, long long min, long long max, int fallback) const;
   int required_integer(std::string_view key, long long min, long long max) const;
   std::optional<std::string> string(std::string_view key) const;
+  bool boolean(std::string_view key, bool fallback) const;
   // One of `choices`; returns its index.
   int choice(std::string_view key, const std::vector<std::string_view>& choices,
              int fallback) const;

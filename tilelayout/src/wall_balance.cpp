@@ -10,13 +10,19 @@ namespace l2 {
 void read_balance(const TomlFields& top, Wall& wall) {
   const toml::table* table = top.table("balance");
   if (!table) return;
-  const TomlFields f(*table, "balance", top.source(), {"mode", "assignment"});
+  const TomlFields f(*table, "balance", top.source(), {"mode", "assignment", "survive_host_loss"});
   wall.balance.line = f.line();
   const std::vector<std::string_view> modes(std::begin(kBalanceModeNames),
                                             std::end(kBalanceModeNames));
   wall.balance.mode = static_cast<BalanceMode>(f.choice("mode", modes, 0));
   wall.balance.heaviest_first = f.choice("assignment", {"policy", "heaviest-first"}, 0) == 1;
+  wall.balance.survive_host_loss = f.boolean("survive_host_loss", false);
   const bool balancing = wall.balance.mode != BalanceMode::Static || wall.balance.heaviest_first;
+  // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
+  if (wall.balance.survive_host_loss && !balancing) {
+    f.fail("survive_host_loss",
+           "needs balancing: mode = \"strips\" or \"kd\", or assignment = \"heaviest-first\"");
+  }
   // Depth and overlay tiles are shared out by layer and by rectangle, not by render time.
   if (balancing && (wall.depth_layers != 0 || wall.overlay)) {
     f.fail(f.has("mode") ? "mode" : "assignment",

@@ -299,6 +299,41 @@ TEST(Planner, GivenAssignmentReplacesThePolicy) {
   }
 }
 
+// A live run's host that died: the others take its tiles, and it alone may have none.
+TEST(Planner, GonePipeserverTakesNoTiles) {
+  const char* kWall =
+      "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 80\n"
+      "[pipeservers]\ncount = 3\nframebuffer_width = 200\nframebuffer_height = 100\n";
+  const Wall wall = parse_wall(kWall, "g.toml");
+  const TileLayout layout = plan_layout(wall, {2, 0}, {1});
+  ASSERT_EQ(layout.pipeservers.size(), 3u);
+  EXPECT_TRUE(layout.pipeservers[1].tiles.empty());
+  EXPECT_EQ(layout.pipeservers[1].pipeserver, 1);
+  ASSERT_EQ(layout.pipeservers[2].tiles.size(), 1u);
+  EXPECT_EQ(layout.pipeservers[2].tiles[0].tile.logical_tile, 0);
+  try {
+    plan_layout(wall, {1, 0}, {1});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(), "g.toml: pipeserver 1 is gone but was given logical tile 0");
+  }
+  try {
+    plan_layout(wall, {0, 1}, {3});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(), "g.toml: gone pipeserver 3 is not 0..2");
+  }
+  // Only the gone one may go without: pipeserver 2 still needs a tile.
+  try {
+    plan_layout(wall, {0, 0}, {1});
+    FAIL();
+  } catch (const LayoutError& e) {
+    EXPECT_NE(std::string(e.what()).find("pipeserver 2 gets no tiles"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Planner, PipeserverWithoutTilesIsRefused) {
   try {
     plan_layout(

@@ -374,6 +374,9 @@ TEST(WallFile, BalanceSection) {
   EXPECT_EQ(parse_wall(kBase + "[balance]\nmode = \"kd\"\n", "t.toml").balance.mode,
             BalanceMode::Kd);
   EXPECT_FALSE(parse_wall(kBase + "[balance]\nmode = \"kd\"\n", "t.toml").balance.heaviest_first);
+  EXPECT_FALSE(w.balance.survive_host_loss);
+  EXPECT_TRUE(parse_wall(kBase + "[balance]\nmode = \"kd\"\nsurvive_host_loss = true\n", "t.toml")
+                  .balance.survive_host_loss);
 }
 
 TEST(WallFile, BalanceErrorsNameTheLineAndField) {
@@ -384,6 +387,11 @@ TEST(WallFile, BalanceErrorsNameTheLineAndField) {
   EXPECT_EQ(error_of(kBase + "[balance]\nassignment = \"fastest\"\n"),
             "walls/t.toml:17: balance.assignment: must be one of policy, heaviest-first, got "
             "\"fastest\"");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\nsurvive_host_loss = \"yes\"\n"),
+            "walls/t.toml:18: balance.survive_host_loss: must be true or false, got a string");
+  EXPECT_EQ(error_of(kBase + "[balance]\nsurvive_host_loss = true\n"),
+            "walls/t.toml:17: balance.survive_host_loss: needs balancing: mode = \"strips\" or "
+            "\"kd\", or assignment = \"heaviest-first\"");
   EXPECT_EQ(error_of(kBase + "[balance]\nmodes = \"kd\"\n"),
             "walls/t.toml:17: balance.modes: unknown key");
   EXPECT_EQ(error_of(kBase + "[depth]\nlayers = 2\n[balance]\nmode = \"strips\"\n"),

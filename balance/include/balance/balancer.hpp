@@ -47,17 +47,31 @@ class Balancer {
   const TileLayout& layout() const { return layout_; }
   const BalanceSettings& settings() const { return settings_; }
 
-  // Frame k's render times, measured on layout(): makes layout() frame k+1's.
+  // Frame k's render times, measured on layout(): makes layout() frame k+1's. A lost
+  // pipeserver's times are not read (it measured nothing): its tiles count at the mean cost per
+  // pixel of the others'. While the layout still gives a lost pipeserver tiles it cannot stay:
+  // when the next one does not fit the others' framebuffers, the wall's own tiling shared out
+  // by visible area is tried, and when that does not fit either, throws LayoutError.
   BalanceStep next(const TileSeconds& seconds);
 
+  // Pipeserver `pipeserver` died: from the next step on it gets no tile, the others share them
+  // (by the wall's assignment policy over them, or heaviest first). Throws
+  // std::invalid_argument for a pipeserver out of range or the last one left.
+  void lose_pipeserver(int pipeserver);
+  const std::vector<int>& lost() const { return lost_; }  // ascending
+
  private:
-  TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
+  // `by_area`: with a pipeserver lost, the others get the tiles by visible area (the planner's
+  // area-balanced policy) whatever the settings.
+  TileLayout plan(const Wall& wall, const CostEstimate* estimate, bool by_area = false) const;
+  TileSeconds with_stand_ins(const TileSeconds& seconds) const;
 
   Wall wall_;
   BalanceSettings settings_;
   std::optional<StripEdges> strips_;
   std::vector<std::vector<double>> grid_;  // kd: the blended cost grid
   TileLayout layout_;
+  std::vector<int> lost_;
 };
 
 }  // namespace l2

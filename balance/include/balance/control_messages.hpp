@@ -4,7 +4,9 @@
 // each, whatever moves them (control_channel.hpp).
 //
 //   TIMES <frame> <pipeserver> <n> <seconds>...          n = the pipeserver's packed tiles
-//   LAYOUT <frame> <n> (<x> <y> <w> <h> <pipeserver>)... n = logical tiles, in tiling order
+//   LAYOUT <frame> <n> (<x> <y> <w> <h> <pipeserver>)... [GONE <m> <pipeserver>...]
+//                                                    n = logical tiles, in tiling order;
+//                                                    GONE: pipeservers that died (no tiles)
 #pragma once
 
 #include <stdexcept>
@@ -25,6 +27,7 @@ struct LayoutMessage {
   int frame = 0;
   std::vector<Rect> tiles;       // the logical tiles on the canvas
   std::vector<int> pipeservers;  // the pipeserver of each
+  std::vector<int> gone;         // pipeservers that take no part any more (ascending): a dead host
 };
 
 // A line that is not a message, or one whose numbers are out of range: what() is one line
@@ -43,11 +46,13 @@ std::string encode(const LayoutMessage& m);
 TimesMessage decode_times(std::string_view line);
 LayoutMessage decode_layout(std::string_view line);
 
-// What the coordinator sends every pipeserver: `layout` as frame `frame`'s tiling.
+// What the coordinator sends every pipeserver: `layout` as frame `frame`'s tiling. Its
+// pipeservers without a tile are gone (the planner gives every other one a tile).
 LayoutMessage layout_message(int frame, const TileLayout& layout);
 // The layout a pipeserver plans from the message: `wall` with the message's tiles as a list
-// tiling and its pipeservers as the assignment, through the planner (its checks and its
-// LayoutError), so every pipeserver packs the same plan as the coordinator.
+// tiling, its pipeservers as the assignment and its gone ones taking no part, through the
+// planner (its checks and its LayoutError), so every pipeserver packs the same plan as the
+// coordinator.
 TileLayout plan_from_message(const Wall& wall, const LayoutMessage& m);
 
 }  // namespace l2

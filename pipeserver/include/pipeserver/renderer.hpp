@@ -3,8 +3,8 @@
 // as for `pipeserver` itself: the wall file, the packing of tiles into the framebuffer, the strip
 // headers with the frame's parity, the scan-out into the DVI link or to the compositing server,
 // READY on the back-channel, and pipeserver's whole command line, so that
-// `l2wall run --pipeserver-program YOUR_PROGRAM` drives it as it drives pipeserver (README.md, "Your own
-// renderer").
+// `l2wall run --pipeserver-program YOUR_PROGRAM` drives it as it drives pipeserver (README.md,
+// "Your own renderer").
 #pragma once
 
 #include <functional>

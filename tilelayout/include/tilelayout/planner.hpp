@@ -23,6 +23,13 @@ TileLayout plan_layout(const Wall& wall);
 // range is a LayoutError.
 TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical);
 
+// The same with the pipeservers in `gone` (ascending, no repeats) taking no part: a live run's
+// host that died. They must be given no tile, and are the only ones planned without one (an
+// empty PipeserverPlan); every other check is as above. A LayoutError names a gone pipeserver that
+// was given a tile, or one out of range.
+TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_logical,
+                       const std::vector<int>& gone);
+
 // The steps of plan_layout, exposed so each can be checked on its own.
 
 // Logical tiles on the canvas, in tiling order (row-major for grid and strips; k-d tiles in

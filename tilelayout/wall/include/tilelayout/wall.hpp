@@ -63,6 +63,9 @@ struct BalanceSpec {
   // `assignment = "heaviest-first"`: the heaviest tile to the pipeserver that finishes first,
   // instead of [pipeservers] assignment ("policy").
   bool heaviest_first = false;
+  // `survive_host_loss = true`: a live run goes on when a pipeserver dies, its tiles re-planned
+  // over the others (l2wall run --survive-host-loss).
+  bool survive_host_loss = false;
   int line = 0;  // of [balance], for errors found later
 };
 
