@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
       "over one pty per host (the serial back-channels)."};
   app.require_subcommand(1);
   l2::RunOptions o;
-  o.pipeserver = l2::sibling_program("pipeserver").string();
-  o.vizserver = l2::sibling_program("vizserver").string();
+  o.pipeserver_program = l2::sibling_program("pipeserver").string();
+  o.vizserver_program = l2::sibling_program("vizserver").string();
   CLI::App* run = app.add_subcommand(
       "run",
       "render --frames frames on the wall and write the displays, a per-frame report and a "
@@ -121,9 +121,9 @@ int main(int argc, char** argv) {
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "
                 "DIR/mismatch-frame-<k>/ and fails the run");
-  run->add_option("--pipeserver-program", o.pipeserver, "the pipeserver executable")
+  run->add_option("--pipeserver-program", o.pipeserver_program, "the pipeserver executable")
       ->capture_default_str();
-  run->add_option("--vizserver-program", o.vizserver,
+  run->add_option("--vizserver-program", o.vizserver_program,
                   "the compositing server executable of --path vizserver|both; l2wall starts "
                   "it as its own process, and a compositing server that dies ends the run like "
                   "a pipeserver that dies")

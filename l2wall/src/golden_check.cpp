@@ -161,7 +161,7 @@ EntryResult check_entry(const GoldenEntry& entry, const CheckOptions& o, std::op
     const std::vector<RgbImage> goldens = load_goldens(o.paths, entry, shown.ids, check);
     if (!goldens.empty()) {
       if (entry.kind == GoldenKind::Rendered && !gl)
-        gl = pipeserver_gl_info(o.tools.pipeserver, o.out);
+        gl = pipeserver_gl_info(o.tools.pipeserver_program, o.out);
       const Tolerance t = gl ? golden_tolerance(entry, *gl, out) : Tolerance{};
       check.compare(kAgainstGolden, shown.ids, goldens, shown.emulator, t);
     }

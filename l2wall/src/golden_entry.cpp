@@ -53,7 +53,7 @@ EntryDisplays produce_entry(const GoldenEntry& entry, const GoldenPaths& paths,
   if (entry.kind == GoldenKind::RoutingOnly) {
     return produce_test_pattern(layout, entry.frame, entry.vizserver);
   }
-  return produce_rendered(layout, wall_file, entry, {tools.l2wall, tools.pipeserver, work});
+  return produce_rendered(layout, wall_file, entry, {tools.l2wall, tools.pipeserver_program, work});
 }
 
 bool same_renderer(const GoldenEntry& entry, const GlInfo& gl) {

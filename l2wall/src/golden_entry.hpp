@@ -30,8 +30,8 @@ std::string shell_word(const std::string& text);
 
 // The executables rendered entries are made with.
 struct GoldenTools {
-  std::string l2wall;      // `l2wall run`: the live run on both paths
-  std::string pipeserver;  // `pipeserver --reference`, `--gl-info`
+  std::string l2wall;              // `l2wall run`: the live run on both paths
+  std::string pipeserver_program;  // `pipeserver --reference`, `--gl-info`
 };
 
 // The entries named (all when `names` is empty), in manifest order. Throws GoldenError for a

@@ -94,7 +94,7 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
   const auto reference = run.work / "reference";
   // Both at once: the live run spends most of its time starting its hosts.
   LoggedCommand rendering(
-      {run.pipeserver, "--wall", wall_file.string(), "--scene", entry.scene, "--frame",
+      {run.pipeserver_program, "--wall", wall_file.string(), "--scene", entry.scene, "--frame",
        std::to_string(entry.frame), "--reference", reference.string()},
       run.work / "reference.log");
   LoggedCommand running(live, run.work / "live.log");

@@ -17,9 +17,9 @@
 namespace l2 {
 
 struct RenderedRun {
-  std::string l2wall;          // the executable whose `run` subcommand renders the frame
-  std::string pipeserver;      // renders the reference
-  std::filesystem::path work;  // the run's --out folder, and the commands' logs
+  std::string l2wall;              // the executable whose `run` subcommand renders the frame
+  std::string pipeserver_program;  // renders the reference
+  std::filesystem::path work;      // the run's --out folder, and the commands' logs
   std::chrono::seconds timeout{180};
 };
 

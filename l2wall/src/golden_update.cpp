@@ -115,7 +115,8 @@ int run_golden_update(const UpdateOptions& o, std::ostream& out) {
   for (std::size_t n = 0; n < selected.size(); ++n) {
     const GoldenEntry& e = *selected[n];
     out << fmt::format("[{}/{}] {} ... ", n + 1, selected.size(), e.name) << std::flush;
-    if (e.kind == GoldenKind::Rendered && !gl) gl = pipeserver_gl_info(o.tools.pipeserver, o.out);
+    if (e.kind == GoldenKind::Rendered && !gl)
+      gl = pipeserver_gl_info(o.tools.pipeserver_program, o.out);
     std::filesystem::remove_all(o.out / e.name);
     EntryDisplays shown;
     try {

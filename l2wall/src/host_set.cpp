@@ -27,7 +27,7 @@ int frames_reported(const std::string& host_log) {
 }  // namespace
 
 std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
-  std::vector<std::string> argv{l.pipeserver,      "--live",
+  std::vector<std::string> argv{l.program,         "--live",
                                 "--pipeserver",    std::to_string(h.pipeserver),
                                 "--frames",        std::to_string(l.frames),
                                 "--scene",         l.scene,

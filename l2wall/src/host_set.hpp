@@ -63,8 +63,8 @@ struct Host {
 
 // What every pipeserver is started with.
 struct HostLaunch {
-  std::string pipeserver;  // the executable
-  std::string wall;        // wall file; empty: the built-in default wall
+  std::string program;  // the pipeserver executable
+  std::string wall;     // wall file; empty: the built-in default wall
   std::string scene;
   std::vector<std::string> scene_args;  // scene and camera options (--mesh FILE, ...)
   std::filesystem::path out;            // host-<i>.log go here

@@ -166,7 +166,7 @@ class LiveRun {
 
   VizLaunch viz_launch() const {
     VizLaunch l;
-    l.vizserver = o_.vizserver;
+    l.program = o_.vizserver_program;
     l.host = o_.viz_host;
     l.port = o_.viz_port;
     for (const Display& d : wall_.displays) l.display_sizes.emplace_back(d.width, d.height);
@@ -518,7 +518,7 @@ const RunBackends& one_machine_backends() {
 
 HostLaunch host_launch(const RunOptions& o) {
   HostLaunch l;
-  l.pipeserver = o.pipeserver;
+  l.program = o.pipeserver_program;
   l.wall = o.wall;
   l.scene = o.scene;
   l.scene_args = o.scene_args;
@@ -533,7 +533,7 @@ Status run_options_error(const RunOptions& o) {
   if (o.path != "dvi" && o.path != "vizserver" && o.path != "both")
     return Failure{"--path: expected dvi, vizserver or both, got " + o.path};
   if (o.compare && o.path != "both") return Failure{"--compare needs --path both"};
-  if (o.path != "dvi" && o.vizserver.empty())
+  if (o.path != "dvi" && o.vizserver_program.empty())
     return Failure{"--vizserver-program: no compositing server executable given"};
   if (o.viz_port < 0 || o.viz_port > 65535)
     return Failure{fmt::format("--viz-port: {} is not 0..65535", o.viz_port)};

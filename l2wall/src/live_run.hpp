@@ -25,8 +25,8 @@ struct RunOptions {
   std::string out = "l2wall-out";
   std::string keep = "last";           // every | last | none | K,L,...
   double refresh_hz = 60.0;            // 0: as fast as possible
-  std::string pipeserver;              // the pipeserver executable
-  std::string vizserver;               // the vizserver executable (the compositing server)
+  std::string pipeserver_program;      // the pipeserver executable
+  std::string vizserver_program;       // the vizserver executable (the compositing server)
   std::string viz_host = "127.0.0.1";  // where the compositing server listens for tiles
   int viz_port = 0;                    // its port; 0: a free one, which it reports
   std::string path = "dvi";            // dvi | vizserver | both

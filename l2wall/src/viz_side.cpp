@@ -20,7 +20,7 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
   std::string sizes;
   for (const auto& [w, h] : l.display_sizes)
     sizes += fmt::format("{}{}x{}", sizes.empty() ? "" : ",", w, h);
-  return {l.vizserver, "--displays", sizes, "--pipeservers", std::to_string(l.pipeservers),
+  return {l.program, "--displays", sizes, "--pipeservers", std::to_string(l.pipeservers),
           "--viz-host", l.host, "--viz-port", std::to_string(l.port), "--frames",
           std::to_string(l.frames), "--display-stream", fmt::format("127.0.0.1:{}", stream_port),
           "--log", l.log.string(), "--accept-timeout", std::to_string(l.start_timeout.count()),

@@ -22,7 +22,7 @@
 namespace l2 {
 
 struct VizLaunch {
-  std::string vizserver;  // the executable
+  std::string program;  // the vizserver executable
   std::string host = "127.0.0.1";
   int port = 0;  // 0: a free one
   std::vector<std::pair<int, int>> display_sizes;

@@ -36,7 +36,7 @@ TEST(ParseSavedFrames, BadItemIsNamed) {
 TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   // `l2wall run --frames 3 --keep 7` ran and silently kept nothing.
   RunOptions o;
-  o.vizserver = "vizserver";
+  o.vizserver_program = "vizserver";
   o.frames = 3;
   o.keep = "0,7";
   EXPECT_EQ(run_options_error(o).reason(),
@@ -68,7 +68,7 @@ TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   EXPECT_EQ(run_options_error(dvi).reason(),
             "--viz-host and --viz-port need --path vizserver or both");
   dvi.path = "vizserver";
-  dvi.vizserver = "vizserver";
+  dvi.vizserver_program = "vizserver";
   EXPECT_TRUE(run_options_error(dvi).ok());
 }
 
