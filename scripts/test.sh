@@ -15,9 +15,9 @@ bash scripts/install-deps.sh
 jobs=$(nproc)
 start=$SECONDS
 
-build() {  # build PRESET [TARGET]
+build() {  # build PRESET [TARGET]; without TARGET, what the build preset builds
   cmake --preset "$1" >/dev/null
-  cmake --build --preset "$1" -j "$jobs" --target "${2:-all}" -- --quiet
+  cmake --build --preset "$1" -j "$jobs" ${2:+--target "$2"} -- --quiet
 }
 # Starts `build PRESET TARGET` at idle priority in the background; `finish_build` waits for it.
 # SCHED_IDLE where the system lets us set it, else the lowest nice level.
@@ -26,9 +26,9 @@ idle=(chrt --idle 0)
 background_pid=
 background_preset=
 background_build() {
-  local preset=$1 target=$2 log=build/$1/suite-build.log
+  local preset=$1 target=${2:-} log=build/$1/suite-build.log
   mkdir -p "build/$preset"
-  echo "=== $preset: build ($target), beside the tests"
+  echo "=== $preset: build (${target:-its preset's targets}), beside the tests"
   background_preset=$preset
   setsid "${idle[@]}" bash -c "set -euo pipefail; $(declare -f build); jobs=$jobs; build $preset $target" \
     >"$log" 2>&1 &
@@ -63,7 +63,7 @@ finish_build
 background_build tsan l2_tsan_tests
 run_tests asan
 finish_build
-background_build fuzz all
+background_build fuzz
 run_tests tsan
 finish_build
 t0=$SECONDS
