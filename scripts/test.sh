@@ -28,7 +28,7 @@ background_preset=
 background_build() {
   local preset=$1 target=${2:-} log=build/$1/suite-build.log
   mkdir -p "build/$preset"
-  echo "=== $preset: build (${target:-its preset's targets}), beside the tests"
+  echo "=== $preset: build (${target:-the targets of its build preset}), beside the tests"
   background_preset=$preset
   setsid "${idle[@]}" bash -c "set -euo pipefail; $(declare -f build); jobs=$jobs; build $preset $target" \
     >"$log" 2>&1 &
