@@ -109,14 +109,15 @@ int main(int argc, char** argv) {
                   "re-tile live from the last frame's render times, over the wall file's "
                   "[balance] mode: static (the wall's tiling), strips (horizontal strips with "
                   "vertical sub-strips moving toward equal load) or kd (the k-d tiling re-cut "
-                  "over a cost grid); --path dvi only, not with --mpi (docs/wall-file.md)")
+                  "over a cost grid); on every --path, not with --mpi (docs/wall-file.md)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
                                                      std::end(l2::kBalanceModeNames))));
   run->add_flag("--survive-host-loss", o.survive_host_loss,
                 "with balancing: a pipeserver that dies (killed, crashed, exited) does not end "
                 "the run; its tiles go to the others from the next layout on, and the summary "
                 "names it and counts the frames shown stale meanwhile (as [balance] "
-                "survive_host_loss = true; without it a dead pipeserver ends the run, named)");
+                "survive_host_loss = true; without it a dead pipeserver ends the run, named); "
+                "--path dvi only");
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "

@@ -98,9 +98,10 @@ class DisplayPath {
   virtual void shut_down() {}
   // Its counts for the report.
   virtual void add_totals(RunTotals& totals) const = 0;
-  // A balanced run: the path serves the control channels and checks its swaps against the
-  // layouts. Only the DVI path can (LiveRun refuses the others).
-  virtual void follow_layouts(LiveBalance& /*balance*/) {}
+  // A balanced run: the lead path serves the control channels while it waits for frames (the
+  // hosts wait for each frame's layout), and checks its swaps against the layouts where it can.
+  // The MPI paths do not balance (balance_refusal turns such a run away before it starts).
+  virtual void follow_layouts(LiveBalance& /*balance*/, HostSet& /*hosts*/) {}
 };
 
 }  // namespace l2

@@ -32,7 +32,7 @@ class DviPath final : public DisplayPath {
   int frame_shown() const override { return shown_; }
 
   void add_totals(RunTotals& totals) const override;
-  void follow_layouts(LiveBalance& balance) override { balance_ = &balance; }
+  void follow_layouts(LiveBalance& balance, HostSet&) override { balance_ = &balance; }
 
  private:
   void count_for_balance(const Emulator::Tick& tick, const HostSet& hosts);

@@ -146,7 +146,7 @@ class LiveRun {
     Wall wall = wall_;
     wall.balance = spec;
     balance_ = std::make_unique<LiveBalance>(wall, balance_settings(wall), layout_, o_.frames);
-    paths_.front()->follow_layouts(*balance_);
+    paths_.front()->follow_layouts(*balance_, hosts_);
   }
 
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
@@ -593,9 +593,17 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
                                 ? "--balance " + o.balance
                                 : fmt::format("{}:{}: balance", wall.source.string(), spec.line);
   if (mpi) return Failure{asked + ": balancing does not run over MPI (--mpi) yet"};
-  if (o.path != "dvi")
-    return Failure{asked +
-                   ": balancing runs on --path dvi only (the compositing server keeps one layout)"};
+  // The compositing server completes a frame when every pipeserver has sent its part: one that
+  // died would hold up every frame after it.
+  if (spec.survive_host_loss && o.path != "dvi") {
+    const std::string survive =
+        o.survive_host_loss
+            ? std::string("--survive-host-loss")
+            : fmt::format("{}:{}: balance.survive_host_loss", wall.source.string(), spec.line);
+    return Failure{survive +
+                   ": runs on --path dvi only (the compositing server waits for every "
+                   "pipeserver's tiles of a frame)"};
+  }
   return {};
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "live_balance.hpp"
 #include "pipeserver/live_exit.hpp"
 
 namespace l2 {
@@ -19,6 +20,7 @@ std::optional<PathSwap> VizPath::step(int next, HostSet&, std::vector<FrameRecor
 
 viz::FramePtr VizPath::wait_for(int frame, const RunWatch& watch) {
   for (;;) {
+    if (balance_) balance_->serve(*hosts_);
     if (viz::FramePtr f = side_->frame(frame, milliseconds(20))) return f;
     watch.waiting();
   }

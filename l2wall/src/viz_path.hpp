@@ -43,6 +43,13 @@ class VizPath final : public DisplayPath {
   Status hang_behind(const Host& h, int shown, const std::string& showing) override;
   std::string process_name() const override { return side_->name(); }
 
+  // The compositing server composes a frame from that frame's tiles only, so a swap never shows
+  // two layouts: there is nothing to check, only the control channels to serve.
+  void follow_layouts(LiveBalance& balance, HostSet& hosts) override {
+    balance_ = &balance;
+    hosts_ = &hosts;
+  }
+
   void finish() override;
   void shut_down() override { side_->shut_down(); }
   void add_totals(RunTotals&) const override {}
@@ -55,6 +62,8 @@ class VizPath final : public DisplayPath {
   }
 
   std::unique_ptr<VizSide> side_;
+  LiveBalance* balance_ = nullptr;  // a balanced run's coordinator, and its hosts
+  HostSet* hosts_ = nullptr;
 };
 
 }  // namespace l2

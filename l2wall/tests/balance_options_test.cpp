@@ -25,13 +25,16 @@ TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
   EXPECT_EQ(run_balance(o, default_wall()).mode, BalanceMode::Kd);
 }
 
-TEST(BalanceOptions, OnlyTheDviPathWithoutMpiBalances) {
+TEST(BalanceOptions, EveryPathBalancesButNotOverMpiAndOnlyTheDviPathSurvivesALoss) {
   RunOptions o;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.path = "both";
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
+  o.survive_host_loss = true;
   EXPECT_EQ(balance_refusal(o, strips_wall(), false).reason(),
-            "walls/x.toml:14: balance: balancing runs on --path dvi only (the compositing server "
-            "keeps one layout)");
+            "--survive-host-loss: runs on --path dvi only (the compositing server waits for "
+            "every pipeserver's tiles of a frame)");
+  o.survive_host_loss = false;
   o.path = "dvi";
   o.balance = "strips";
   EXPECT_EQ(balance_refusal(o, default_wall(), true).reason(),

@@ -133,5 +133,40 @@ TEST(LiveRunBalance, HeaviestFirstMovesTilesBetweenHostsWithTheDisplaysOfAStatic
   fs::remove_all(dir);
 }
 
+// The compositing server places each tile where its message says, so the re-tiled frames
+// compose there as on the emulator: alone (the displays of a static DVI run) and beside the
+// DVI path (the two paths' displays identical, byte for byte, every frame).
+TEST(LiveRunBalance, StripsRetileLiveOnTheVizserverPathToo) {
+  std::vector<std::string> alone_args = kCommon;
+  alone_args.insert(alone_args.end(), {"--balance", "strips", "--path", "vizserver"});
+  std::vector<std::string> both_args = kCommon;
+  both_args.insert(both_args.end(), {"--balance", "strips", "--path", "both", "--compare"});
+  WallRun fixed("viz-balance-static", kCommon);
+  WallRun alone("viz-balance-alone", alone_args);
+  ASSERT_TRUE(fixed.wait(120s).ok()) << fixed.output();
+  ASSERT_TRUE(alone.wait(120s).ok()) << alone.output();
+  WallRun both("viz-balance-both", both_args);
+  ASSERT_TRUE(both.wait(120s).ok()) << both.output();
+
+  const Wall wall = default_wall();
+  const std::vector<TileLayout> layouts = layouts_of(alone, wall);
+  ASSERT_EQ(layouts.size(), static_cast<std::size_t>(kFrames));
+  std::set<std::vector<Spot>> distinct;
+  for (const TileLayout& l : layouts) distinct.insert(stamps_on(l, 0));
+  EXPECT_GE(distinct.size(), 3u);  // it did re-tile
+  expect_displays_of_the_static_run(fixed, alone, layouts, kCompared);
+
+  const std::string output = both.output();
+  expect_no_mixed_swaps(output);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      output, m, std::regex("compare: (\\d+) display pictures identical byte for byte")))
+      << output;
+  EXPECT_GE(std::stoi(m[1].str()), kFrames * static_cast<int>(wall.displays.size()));
+  expect_clean(fixed);
+  expect_clean(alone);
+  expect_clean(both);
+}
+
 }  // namespace
 }  // namespace l2
