@@ -26,7 +26,19 @@ using mpi_wire::Record;
 struct ColumnInput {
   int pipeserver = 0;
   std::unique_ptr<MpiDviReceiver> receiver;
-  int stamp = -1;  // the frame stamp of the frame taken in
+  int stamp = -1;              // the frame stamp of the frame taken in
+  std::uint64_t sequence = 0;  // the frame taken in
+};
+
+// Where a host's stamps are this refresh, as the coordinator says (a balanced run's layouts
+// move them): in its next frame, and on the displays for the frame it delivered last and the
+// one before (the displays show one of them).
+struct StampSpots {
+  int fb_x = 0, fb_y = 0;
+  struct OnDisplay {
+    int display = 0, x = 0, y = 0;
+  };
+  OnDisplay last, before;
 };
 
 class Column {
@@ -111,7 +123,9 @@ class Column {
     return out;
   }
 
-  // [kTick, refresh, n, swapped group indices..., n, sequence per pipeserver...]
+  // [kTick, refresh, n, swapped group indices..., n, sequence per pipeserver...,
+  //  n, (fb x, fb y, display, x, y of the last frame, display, x, y of the one before) per
+  //  pipeserver]
   void tick(Reader& in) {
     const std::int64_t refresh = in.next();
     bool swapped = false;
@@ -126,18 +140,30 @@ class Column {
     if (swapped && show_) present();
     std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
     for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
+    spots_.resize(static_cast<std::size_t>(in.next_int()));
+    for (StampSpots& spot : spots_) {
+      spot.fb_x = in.next_int();
+      spot.fb_y = in.next_int();
+      for (StampSpots::OnDisplay* d : {&spot.last, &spot.before}) {
+        d->display = in.next_int();
+        d->x = in.next_int();
+        d->y = in.next_int();
+      }
+    }
     for (ColumnInput& input : inputs_) {
-      input.receiver->take(sequences[static_cast<std::size_t>(input.pipeserver)], pump_);
+      const auto p = static_cast<std::size_t>(input.pipeserver);
+      input.receiver->take(sequences[p], pump_);
       const auto f = input.receiver->latest();
-      InputFrame& frame = frames_[static_cast<std::size_t>(input.pipeserver)];
+      InputFrame& frame = frames_[p];
       frame = {};
       if (!f) continue;
       frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
-      const PipeserverPlan& plan = layout_.pipeservers[static_cast<std::size_t>(input.pipeserver)];
-      input.stamp =
-          plan.tiles.empty()
-              ? -1
-              : decode_stamp(frame.row(plan.tiles.front().fb_y) + plan.tiles.front().fb_x * 3);
+      // The spot is the new frame's: an input with none keeps the stamp it had.
+      if (sequences[p] != input.sequence && p < spots_.size()) {
+        input.sequence = sequences[p];
+        if (spots_[p].fb_x < f->width && spots_[p].fb_y < f->height)
+          input.stamp = decode_stamp(frame.row(spots_[p].fb_y) + spots_[p].fb_x * 3);
+      }
     }
     router_.scan(frames_);
     mpi_wire::send(observation(refresh), RankMap::kCoordinator, mpi_wire::kObservation);
@@ -151,7 +177,8 @@ class Column {
   }
 
   // [refresh, n, (pipeserver, present, idle, torn, parity, displays fed, stamp)...,
-  //  n, (pipeserver, stamp on its display)..., n, (display, frame shown)...]
+  //  n, (pipeserver, its stamps on the displays: of the last frame, of the one before, each
+  //  mpi_wire::kStampNotHere on another column's display)..., n, (display, frame shown)...]
   Record observation(std::int64_t refresh) const {
     Record r{refresh, static_cast<std::int64_t>(inputs_.size())};
     for (const ColumnInput& input : inputs_) {
@@ -160,16 +187,19 @@ class Column {
                          static_cast<std::int64_t>(st.displays_fed), input.stamp});
     }
     Record shown;
-    for (const PipeserverPlan& plan : layout_.pipeservers) {
-      if (plan.tiles.empty()) continue;
-      const DisplayTile& t = plan.tiles.front().tile;
-      const int index = router_.index_of_display(t.display);
-      if (index < 0) continue;
+    const auto read = [&](const StampSpots::OnDisplay& d) -> std::int64_t {
+      const int index = router_.index_of_display(d.display);
+      if (index < 0) return mpi_wire::kStampNotHere;
       const RgbImage& front = router_.display(index).front();
-      shown.insert(shown.end(), {plan.pipeserver, decode_stamp(front.row(t.on_display.y).data() +
-                                                               t.on_display.x * 3)});
+      if (d.x >= front.width() || d.y >= front.height()) return mpi_wire::kStampNotHere;
+      return decode_stamp(front.row(d.y).data() + d.x * 3);
+    };
+    for (std::size_t p = 0; p < spots_.size(); ++p) {
+      const std::int64_t last = read(spots_[p].last), before = read(spots_[p].before);
+      if (last == mpi_wire::kStampNotHere && before == mpi_wire::kStampNotHere) continue;
+      shown.insert(shown.end(), {static_cast<std::int64_t>(p), last, before});
     }
-    r.push_back(static_cast<std::int64_t>(shown.size() / 2));
+    r.push_back(static_cast<std::int64_t>(shown.size() / 3));
     r.insert(r.end(), shown.begin(), shown.end());
     r.push_back(router_.display_count());
     for (int d = 0; d < router_.display_count(); ++d)
@@ -275,7 +305,8 @@ class Column {
   WorkerPool pool_;
   Router router_;
   std::vector<ColumnInput> inputs_;
-  std::vector<InputFrame> frames_;               // by mesh input; absent: no signal here
+  std::vector<StampSpots> spots_;   // by pipeserver, this refresh's (the coordinator's tick)
+  std::vector<InputFrame> frames_;  // by mesh input; absent: no signal here
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
   std::vector<DisplayFrameStats> finished_;

@@ -11,6 +11,7 @@
 
 #include "cluster/mpi_wire.hpp"
 #include "dvi_side.hpp"
+#include "live_balance.hpp"
 #include "run_fault.hpp"
 
 namespace l2 {
@@ -104,6 +105,18 @@ void MpiDviPath::refresh(HostSet& hosts) {
   tick.insert(tick.end(), swapped_.begin(), swapped_.end());
   tick.push_back(static_cast<std::int64_t>(hosts.hosts().size()));
   for (const Host& h : hosts.hosts()) tick.push_back(static_cast<std::int64_t>(h.sequence));
+  // Where each host's stamps are (a balanced run's layouts move them): in the frame it delivers
+  // next, and on the displays for its last frame and the one before; the displays show one.
+  tick.push_back(static_cast<std::int64_t>(hosts.hosts().size()));
+  accepted_.clear();
+  for (const Host& h : hosts.hosts()) {
+    const StampSpot& next = h.stamp(h.accepted + 1);
+    const StampSpot& last = h.stamp(h.accepted);
+    const StampSpot& before = h.stamp(h.accepted - 1);
+    tick.insert(tick.end(), {next.fb_x, next.fb_y, last.display, last.dx, last.dy, before.display,
+                             before.dx, before.dy});
+    accepted_.push_back(h.accepted);
+  }
   for (int c = 0; c < map_.columns; ++c)
     mpi_wire::send(tick, map_.column_rank(c), mpi_wire::kCommand);
   control_bytes_ += tick.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
@@ -115,6 +128,9 @@ void MpiDviPath::refresh(HostSet& hosts) {
   // A column that failed: the others still answer (they swapped with it), so what the
   // displays keep is known before the fault is named and the displays are saved.
   std::optional<int> column_failed;
+  // By host: its stamps on the displays, of its last frame and of the one before.
+  std::vector<int> seen_last(hosts.hosts().size(), mpi_wire::kStampNotHere);
+  std::vector<int> seen_before(seen_last);
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
     const std::optional<Record> answer = column_answer(c, hosts);
@@ -138,13 +154,31 @@ void MpiDviPath::refresh(HostSet& hosts) {
       stamps_[static_cast<std::size_t>(pipeserver)] = in.next_int();
     }
     for (int n = in.next_int(); n > 0; --n) {
-      const int pipeserver = in.next_int();
-      stamp_shown_[static_cast<std::size_t>(pipeserver)] = in.next_int();
+      const auto pipeserver = static_cast<std::size_t>(in.next_int());
+      const int last = in.next_int(), before = in.next_int();
+      if (pipeserver >= seen_last.size())
+        throw RunFault(fmt::format("{} named pipeserver {}", map_.role(rank), pipeserver));
+      if (last != mpi_wire::kStampNotHere) seen_last[pipeserver] = last;
+      if (before != mpi_wire::kStampNotHere) seen_before[pipeserver] = before;
     }
     for (int n = in.next_int(); n > 0; --n) {
       const int display = in.next_int();
       displays_shown_.push_back({display, in.next_int(), rank});
     }
+  }
+  // As on one machine (DviSide::frame_shown): the last frame if its stamp says so, else the
+  // one before if its stamp says so, else what the last frame's spot shows. Hosts on no
+  // answering column stay INT_MAX.
+  for (std::size_t i = 0; i < stamp_shown_.size(); ++i) {
+    const int last = accepted_[i];
+    if (last >= 0 && seen_last[i] == last)
+      stamp_shown_[i] = last;
+    else if (last >= 1 && seen_before[i] == last - 1)
+      stamp_shown_[i] = last - 1;
+    else if (seen_last[i] != mpi_wire::kStampNotHere)
+      stamp_shown_[i] = seen_last[i];
+    else if (seen_before[i] != mpi_wire::kStampNotHere)
+      stamp_shown_[i] = seen_before[i];
   }
   if (column_failed) {
     if (!swapped_.empty()) note_swap();
@@ -223,6 +257,7 @@ std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameR
   watch.processes();
   const bool fresh = take_notices(hosts) || std::exchange(unseen_, false);
   hosts.serve_channels();
+  if (balance_) balance_->serve(hosts);
   if (refresh_hz_ == 0 && !fresh && !swap_due_) {
     std::this_thread::sleep_for(std::chrono::microseconds(200));
     return std::nullopt;
@@ -241,6 +276,7 @@ std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameR
   dropped_readies_ +=
       static_cast<std::uint64_t>(send_readies(decision_.ready_inputs, hosts, drop_ready_));
   if (swapped_.empty()) return std::nullopt;
+  if (balance_) check_groups_for_balance(hosts);
   PathSwap swap;
   swap.time = RunClock::now();
   swap.lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
@@ -349,6 +385,28 @@ void MpiDviPath::end_columns() {
       // a column that is gone: the fault's MPI_Abort ends what is left
     }
   }
+}
+
+// Each group swapped in this refresh: the frames its displays show, by the stamps on them, must
+// share a layout (as DviPath checks on one machine).
+void MpiDviPath::check_groups_for_balance(const HostSet& hosts) {
+  for (const int g : swapped_) {
+    const std::vector<int>& displays = groups_[static_cast<std::size_t>(g)].displays;
+    std::vector<int> shown;
+    for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
+      const int frame = stamp_shown_[i];
+      if (frame == INT_MAX) continue;
+      if (std::find(displays.begin(), displays.end(), hosts.hosts()[i].stamp(frame).display) !=
+          displays.end())
+        shown.push_back(frame);
+    }
+    balance_->check_swap(shown);
+  }
+}
+
+void MpiDviPath::follow_layouts(LiveBalance& balance, HostSet&) {
+  balance_ = &balance;
+  balance.strips_not_counted("the board column ranks do not count the strips they route");
 }
 
 void MpiDviPath::add_totals(RunTotals& totals) const {

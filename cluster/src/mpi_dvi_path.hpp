@@ -21,6 +21,8 @@
 
 namespace l2 {
 
+class LiveBalance;
+
 class MpiDviPath final : public DisplayPath {
  public:
   MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession& session,
@@ -57,8 +59,12 @@ class MpiDviPath final : public DisplayPath {
   void finish() override;
   void shut_down() override { end_columns(); }
   void add_totals(RunTotals& totals) const override;
+  // A balanced run: serves the control channels as it steps and checks each swap's frames
+  // share a layout. The columns do not count the strips they route, so neither does this.
+  void follow_layouts(LiveBalance& balance, HostSet&) override;
 
  private:
+  void check_groups_for_balance(const HostSet& hosts);
   // Takes in every host's notices of frames published; true when one is new.
   bool take_notices(HostSet& hosts);
   // One refresh over every column; the tick's decision. A column that fails is named after
@@ -97,7 +103,9 @@ class MpiDviPath final : public DisplayPath {
   std::vector<int> swapped_;
   std::vector<FrameObservation> observations_;  // by mesh input
   std::vector<int> stamps_;                     // by mesh input: the frame taken in
-  std::vector<int> stamp_shown_;                // by host: its stamp on its display
+  std::vector<int> stamp_shown_;                // by host: the frame its stamp shows
+  std::vector<int> accepted_;                   // by host: its last frame, as of the tick
+  LiveBalance* balance_ = nullptr;              // a balanced run's coordinator
   std::vector<DisplayShown> displays_shown_;
   std::uint64_t refreshes_ = 0;
   std::uint64_t control_bytes_ = 0;  // refresh records to and from the columns

@@ -16,8 +16,8 @@
 namespace l2 {
 
 MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
-                            std::shared_ptr<std::uint64_t> bytes_sent) {
-  const RankMap map = make_rank_map(layout);
+                            std::shared_ptr<std::uint64_t> bytes_sent, bool every_column) {
+  const RankMap map = make_rank_map(layout, every_column);
   std::vector<int> ranks;
   for (const int c : map.columns_of_pipeserver[static_cast<std::size_t>(pipeserver)])
     ranks.push_back(map.column_rank(c));

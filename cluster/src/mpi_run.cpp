@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_ready_channel.hpp"
 #include "cluster/mpi_session.hpp"
 #include "cluster/rank_map.hpp"
@@ -49,6 +50,8 @@ class MpiBackends final : public RunBackends {
       const int rank = map_.pipeserver_rank(h.pipeserver);
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
       h.place = fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid);
+      // Balancing: the rank was started with --mpi-control (exec_pipeserver).
+      if (launch.control) h.control = std::make_unique<MpiControlChannel>(rank);
     }
   }
 
@@ -59,14 +62,16 @@ class MpiBackends final : public RunBackends {
   int stall_timeout_ms_;
 };
 
-// Becomes pipeserver `pipeserver`; returns only when that failed.
-int exec_pipeserver(const RunOptions& o, int pipeserver) {
+// Becomes pipeserver `pipeserver`; returns only when that failed. `balanced`: it sends its
+// times and takes its layouts over MPI (the coordinator's MpiControlChannel).
+int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   Host h;
   h.pipeserver = pipeserver;
   h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", pipeserver)).string();
   HostLaunch launch = host_launch(o);
   launch.extra_args = {"--mpi"};
   if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
+  if (balanced) launch.extra_args.push_back("--mpi-control");
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.
   make_folders(o.out, "--out");
   const std::vector<std::string> args = host_argv(launch, h);
@@ -119,16 +124,19 @@ int run_wall_mpi(const RunOptions& o) {
   if (const Status s = mpi_options_error(o); !s.ok()) return refuse(s.reason());
   std::optional<TileLayout> layout;
   std::optional<RankMap> map;
+  bool balanced = false;
   try {
     layout = plan_layout(o.wall.empty() ? default_wall() : load_wall(o.wall));
-    map = make_rank_map(*layout);
+    balanced = run_balances(o, layout->wall);
+    // Every rank builds the same map (the pipeservers too, from --mpi-control).
+    map = make_rank_map(*layout, balanced);
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
   if (const Status s = balance_refusal(o, layout->wall, true); !s.ok()) return refuse(s.reason());
   if (const Status s = rank_count_error(*map, launched->size); !s.ok()) return refuse(s.reason());
   if (const auto pipeserver = map->pipeserver_of(launched->rank))
-    return exec_pipeserver(o, *pipeserver);
+    return exec_pipeserver(o, *pipeserver, balanced);
   const auto column = map->column_of(launched->rank);
   std::optional<ColumnShow> show;
   if (column && !o.show.empty()) {

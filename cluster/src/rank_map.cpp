@@ -25,7 +25,7 @@ std::string RankMap::role(int rank) const {
   return fmt::format("rank {} (none of the wall's roles)", rank);
 }
 
-RankMap make_rank_map(const TileLayout& layout) {
+RankMap make_rank_map(const TileLayout& layout, bool every_column) {
   const Wall& wall = layout.wall;
   const Mesh mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                               {wall.board_max_width, wall.board_max_height});
@@ -46,6 +46,10 @@ RankMap make_rank_map(const TileLayout& layout) {
     // A host with no tile still shows a signal (only its headers' absence): column 0 takes it
     // in, as the one-machine emulator does, so it gets its READY.
     if (columns.empty()) columns.push_back(0);
+    if (every_column) {
+      columns.clear();
+      for (int c = 0; c < map.columns; ++c) columns.push_back(c);
+    }
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     for (const int c : columns)

@@ -100,7 +100,7 @@ class DisplayPath {
   virtual void add_totals(RunTotals& totals) const = 0;
   // A balanced run: the lead path serves the control channels while it waits for frames (the
   // hosts wait for each frame's layout), and checks its swaps against the layouts where it can.
-  // The MPI paths do not balance (balance_refusal turns such a run away before it starts).
+  // The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.
   virtual void follow_layouts(LiveBalance& /*balance*/, HostSet& /*hosts*/) {}
 };
 

@@ -52,8 +52,9 @@ struct Host {
     return stamps[static_cast<std::size_t>(
         std::clamp(frame, 0, static_cast<int>(stamps.size()) - 1))];
   }
-  // Balancing: this end of the host's control channel (TIMES in, LAYOUT out).
-  std::unique_ptr<SocketControlChannel> control;
+  // Balancing: this end of the host's control channel (TIMES in, LAYOUT out): a socket on one
+  // machine, MPI messages with an MPI rank.
+  std::unique_ptr<ControlChannel> control;
   // Fault injection: a READY held back until the host asks with SYNC?.
   std::optional<int> held_ready;
   // It died and the run went on without it (--survive-host-loss): its link is no input any

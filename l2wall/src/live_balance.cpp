@@ -148,10 +148,18 @@ void LiveBalance::check_swap(const std::vector<int>& shown) {
 }
 
 std::string LiveBalance::summary() const {
-  std::string s = fmt::format("balance {}: {} layouts, strips routed per layout:",
-                              to_string(balancer_.settings().mode), strips_.size());
-  for (std::size_t l = 0; l < strips_.size(); ++l)
-    s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
+  std::string s =
+      fmt::format("balance {}: {} layouts", to_string(balancer_.settings().mode), strips_.size());
+  if (strips_uncounted_.empty()) {
+    s += ", strips routed per layout:";
+    for (std::size_t l = 0; l < strips_.size(); ++l)
+      s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
+  } else {
+    s += " (from frames";
+    for (std::size_t l = 0; l < strips_.size(); ++l)
+      s += fmt::format("{} {}", l == 0 ? "" : ",", first_frame_[l]);
+    s += fmt::format("); strips routed per layout not counted: {}", strips_uncounted_);
+  }
   s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
   for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);

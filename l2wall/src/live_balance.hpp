@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "balance/balancer.hpp"
@@ -31,6 +32,8 @@ class LiveBalance {
   void serve(HostSet& hosts);
   // After a refresh: counts the strips each host's new frame routed, by that frame's layout.
   void count_strips(const HostSet& hosts, const std::vector<std::uint64_t>& routed_by_host);
+  // The lead path cannot count strips (`why`): the summary says so instead of counts.
+  void strips_not_counted(std::string why) { strips_uncounted_ = std::move(why); }
   // After a swap group swapped: whether the frames its displays now show (by the stamps on
   // them) share one layout.
   void check_swap(const std::vector<int>& shown);
@@ -83,6 +86,7 @@ class LiveBalance {
   std::uint64_t mixed_swaps_ = 0;
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
+  std::string strips_uncounted_;    // why the strips are not counted; empty: they are
   LayoutMessage last_;              // the last layout's tiles and pipeservers
   std::vector<std::string> lines_;  // by frame sent so far, the LAYOUT line
 };

@@ -141,8 +141,8 @@ class LiveRun {
 
   // A balanced run: the coordinator, and the DVI path following its layouts.
   void start_balance() {
+    if (!run_balances(o_, wall_)) return;
     const BalanceSpec spec = run_balance(o_, wall_);
-    if (spec.mode == BalanceMode::Static && !spec.heaviest_first) return;
     Wall wall = wall_;
     wall.balance = spec;
     balance_ = std::make_unique<LiveBalance>(wall, balance_settings(wall), layout_, o_.frames);
@@ -572,9 +572,14 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   return spec;
 }
 
+bool run_balances(const RunOptions& o, const Wall& wall) {
+  const BalanceSpec spec = run_balance(o, wall);
+  return spec.mode != BalanceMode::Static || spec.heaviest_first;
+}
+
 Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const BalanceSpec spec = run_balance(o, wall);
-  if (spec.mode == BalanceMode::Static && !spec.heaviest_first) {
+  if (!run_balances(o, wall)) {
     // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
     if (o.survive_host_loss) {
       return Failure{
@@ -588,18 +593,17 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
     }
     return {};
   }
-  // Where the request came from, for the error.
-  const std::string asked = !o.balance.empty() && o.balance != "static"
-                                ? "--balance " + o.balance
-                                : fmt::format("{}:{}: balance", wall.source.string(), spec.line);
-  if (mpi) return Failure{asked + ": balancing does not run over MPI (--mpi) yet"};
+  const std::string survive = o.survive_host_loss ? std::string("--survive-host-loss")
+                                                  : fmt::format("{}:{}: balance.survive_host_loss",
+                                                                wall.source.string(), spec.line);
+  // A rank that dies ends the whole mpirun job: there is no run left to go on.
+  if (spec.survive_host_loss && mpi)
+    return Failure{survive +
+                   ": does not run over MPI (--mpi): mpirun ends every rank once one "
+                   "dies"};
   // The compositing server completes a frame when every pipeserver has sent its part: one that
   // died would hold up every frame after it.
   if (spec.survive_host_loss && o.path != "dvi") {
-    const std::string survive =
-        o.survive_host_loss
-            ? std::string("--survive-host-loss")
-            : fmt::format("{}:{}: balance.survive_host_loss", wall.source.string(), spec.line);
     return Failure{survive +
                    ": runs on --path dvi only (the compositing server waits for every "
                    "pipeserver's tiles of a frame)"};

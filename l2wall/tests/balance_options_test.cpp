@@ -25,7 +25,7 @@ TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
   EXPECT_EQ(run_balance(o, default_wall()).mode, BalanceMode::Kd);
 }
 
-TEST(BalanceOptions, EveryPathBalancesButNotOverMpiAndOnlyTheDviPathSurvivesALoss) {
+TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) {
   RunOptions o;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.path = "both";
@@ -37,11 +37,26 @@ TEST(BalanceOptions, EveryPathBalancesButNotOverMpiAndOnlyTheDviPathSurvivesALos
   o.survive_host_loss = false;
   o.path = "dvi";
   o.balance = "strips";
+  EXPECT_TRUE(run_balances(o, default_wall()));
+  // MPI balances, on either path, but a rank that dies ends the job.
+  EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
+  o.path = "both";
+  EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
+  o.path = "dvi";
+  o.survive_host_loss = true;
   EXPECT_EQ(balance_refusal(o, default_wall(), true).reason(),
-            "--balance strips: balancing does not run over MPI (--mpi) yet");
+            "--survive-host-loss: does not run over MPI (--mpi): mpirun ends every rank once one "
+            "dies");
+  Wall survive = strips_wall();
+  survive.balance.survive_host_loss = true;
+  EXPECT_EQ(balance_refusal(RunOptions{}, survive, true).reason(),
+            "walls/x.toml:14: balance.survive_host_loss: does not run over MPI (--mpi): mpirun "
+            "ends every rank once one dies");
+  o.survive_host_loss = false;
   // Static asks for nothing to refuse.
   o.balance = "static";
   o.path = "vizserver";
+  EXPECT_FALSE(run_balances(o, strips_wall()));
   EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
 }
 

@@ -23,8 +23,10 @@
 #include "vizserver/socket.hpp"
 
 #ifdef L2_HAVE_MPI
+#include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_host.hpp"
 #include "cluster/mpi_session.hpp"
+#include "cluster/rank_map.hpp"
 #endif
 
 namespace {
@@ -96,14 +98,17 @@ int run_live(const l2::LiveHostOptions& o) {
 }
 
 // A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
-int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
+// `control`: a balanced run's, its times and layouts over MPI with the coordinator.
+int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const auto sent = std::make_shared<std::uint64_t>(0);
   const auto tiles_sent = std::make_shared<std::uint64_t>(0);
-  o.links = [sent, tiles, tiles_sent](const l2::TileLayout& layout,
-                                      const l2::PipeserverPlan& plan) {
-    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, sent);
+  // It lives no longer than the session (MPI_Finalize).
+  if (control) o.control = std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator);
+  o.links = [sent, tiles, tiles_sent, control](const l2::TileLayout& layout,
+                                               const l2::PipeserverPlan& plan) {
+    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, sent, control);
     l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
@@ -112,12 +117,14 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles) {
     return links;
   };
   const int code = run_live(o);
+  o.control.reset();
   if (code != 0) l2::MpiSession::abort_all(code);
   l2::report_host_done(*sent, *tiles_sent);
   return 0;
 #else
   (void)o;
   (void)tiles;
+  (void)control;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -200,6 +207,11 @@ int run_pipeserver(int argc, char** argv) {
                   "live, with --mpi: also send every tile to the board column rank owning its "
                   "display (the visualization-server path over MPI), waiting for SWAPPED from "
                   "the coordinator");
+  bool mpi_control = false;
+  group->add_flag("--mpi-control", mpi_control,
+                  "live, with --mpi: a balanced run's control channel as MPI messages with the "
+                  "coordinator (TIMES out, LAYOUT in; instead of --control-fd); its frames go "
+                  "to every board column, since a layout may move its tiles anywhere");
   // Every live option needs --live: without it they were ignored and one frame was written.
   for (CLI::Option* option : group->get_options()) {
     if (option != live_flag) option->needs(live_flag);
@@ -233,7 +245,15 @@ int run_pipeserver(int argc, char** argv) {
     if (control_fd >= 0) {
       live_options.control = std::make_shared<l2::SocketControlChannel>(l2::Fd(control_fd));
     }
-    if (mpi) return run_mpi_host(live_options, mpi_viz);
+    if ((mpi_viz || mpi_control) && !mpi) {
+      std::fprintf(stderr, "pipeserver: --mpi-viz and --mpi-control need --mpi\n");
+      return 2;
+    }
+    if (mpi_control && control_fd >= 0) {
+      std::fprintf(stderr, "pipeserver: --mpi-control or --control-fd, not both\n");
+      return 2;
+    }
+    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

@@ -21,9 +21,10 @@ struct MpiHostLinks {
 };
 
 // For pipeserver `pipeserver` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
-// counts the bytes of the frames it sends.
+// counts the bytes of the frames it sends. `every_column`: a balanced run's, whose frames go to
+// every board column (make_rank_map).
 MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
-                            std::shared_ptr<std::uint64_t> bytes_sent);
+                            std::shared_ptr<std::uint64_t> bytes_sent, bool every_column = false);
 
 // The visualization-server path over MPI, host side: each tile to the board column owning its
 // display, the end of each frame to every column (with the number of tiles it sent that

@@ -23,6 +23,7 @@ enum Tag : int {
   kTile = 9,         // pipeserver -> column: a TileMessage header, then the tile's pixels
   kComposed = 10,    // column -> coordinator: the frame its compositing completed
   kSwapped = 11,     // coordinator -> pipeserver: frames up to this one are composed everywhere
+  kControl = 12,     // pipeserver <-> coordinator: a balanced run's TIMES and LAYOUT lines
 };
 
 // The visualization-server path over MPI: a tile (kind 1, to the column owning its display)
@@ -40,6 +41,9 @@ struct TileMessage {
   std::uint32_t key = 0;
 };
 inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2;
+
+// In a column's answer: a host's stamp that lands on another column's display, not read there.
+inline constexpr int kStampNotHere = -1;
 
 // What the coordinator asks of a column (the first word of a record).
 enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4, kFetchComposed = 5 };

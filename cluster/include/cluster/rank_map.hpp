@@ -32,7 +32,9 @@ struct RankMap {
 };
 
 // Throws MeshError for a wall no mesh can take (as the one-machine run would).
-RankMap make_rank_map(const TileLayout& layout);
+// `every_column`: each pipeserver feeds every board column (a balanced run: a re-tiling may move
+// its tiles onto any display), not only the columns of its first layout's tiles.
+RankMap make_rank_map(const TileLayout& layout, bool every_column = false);
 
 // The one-line error for an mpirun with the wrong number of ranks, or nullopt.
 Status rank_count_error(const RankMap& map, int ranks);
