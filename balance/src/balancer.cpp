@@ -80,7 +80,15 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
         with_kd(wall, wall.tiling.kind == TilingKind::KdSplit ? wall.tiling.cost
                                                               : std::vector<std::vector<double>>{});
   }
-  layout_ = plan(first, nullptr);
+  try {
+    layout_ = plan(first, nullptr);
+  } catch (const LayoutError& e) {
+    // The mode's first cut may not fit the framebuffers (even strips on a wall of tall
+    // displays): the wall's own plan stays, and the steps move the cut on from there.
+    if (!balancing) throw;
+    first_refused_ = e.what();
+    layout_ = plan(wall, nullptr);
+  }
 }
 
 TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool by_area) const {

@@ -69,6 +69,20 @@ TEST(Balancer, ALayoutThatDoesNotFitIsNotUsed) {
   EXPECT_EQ(even.rejected, "");
 }
 
+TEST(Balancer, AFirstCutThatDoesNotFitLeavesTheWallsOwnPlan) {
+  // Two 50x100 columns, one a pipeserver, fit 60-column framebuffers; the even strips, one
+  // 100x50 strip a pipeserver, do not.
+  Wall w = strips_wall(60, 110);
+  w.tiling = {};
+  w.tiling.kind = TilingKind::Grid;
+  w.tiling.tile_width = 50;
+  w.tiling.tile_height = 100;
+  const Balancer b(w, strips());
+  EXPECT_EQ(b.layout().logical_tiles, (std::vector<Rect>{{0, 0, 50, 100}, {50, 0, 50, 100}}));
+  EXPECT_THAT(b.first_refused(), testing::HasSubstr("does not fit the 60x110 framebuffer"));
+  EXPECT_EQ(Balancer(strips_wall(), strips()).first_refused(), "");
+}
+
 // A dead host: the next layout gives it nothing, its tiles counted at the others' mean cost
 // per pixel (even times here, so the edges stay), and the planner's checks still hold.
 TEST(Balancer, ALostPipeserversTilesGoToTheOthers) {

@@ -24,7 +24,10 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       strips_(1, 0),
       first_frame_(1, 0),
       last_(layout_message(0, start)),
-      lines_{encode(last_)} {}
+      lines_{encode(last_)} {
+  if (!balancer_.first_refused().empty())
+    rejected_.push_back(fmt::format("frame 1: {}", balancer_.first_refused()));
+}
 
 int LiveBalance::layout_of(int frame) const {
   const int last = static_cast<int>(frame_layout_.size()) - 1;

@@ -40,11 +40,15 @@ class Balancer {
  public:
   // The first frame's layout: the wall's (static, kd) or even strips (strips mode: the
   // wall's strip counts, or one strip per pipeserver cut into as many sub-strips as it has
-  // tiles per pipeserver). Throws LayoutError when it cannot be planned, or when a balancing
-  // mode meets a depth or overlay wall (their tiles are shared by layers, not by cost).
+  // tiles per pipeserver). When that first cut does not fit the framebuffers, the wall's own
+  // plan is the first layout and first_refused() says why. Throws LayoutError when the wall
+  // cannot be planned, or when a balancing mode meets a depth or overlay wall (their tiles are
+  // shared by layers, not by cost).
   Balancer(const Wall& wall, BalanceSettings settings);
 
   const TileLayout& layout() const { return layout_; }
+  // Why the mode's first cut is not the first layout, or empty.
+  const std::string& first_refused() const { return first_refused_; }
   const BalanceSettings& settings() const { return settings_; }
 
   // Frame k's render times, measured on layout(): makes layout() frame k+1's. A lost
@@ -71,6 +75,7 @@ class Balancer {
   std::optional<StripEdges> strips_;
   std::vector<std::vector<double>> grid_;  // kd: the blended cost grid
   TileLayout layout_;
+  std::string first_refused_;
   std::vector<int> lost_;
 };
 
