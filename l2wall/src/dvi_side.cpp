@@ -96,7 +96,7 @@ int DviSide::frame_shown(const Host& h) const {
 
 int DviSide::lowest_frame_shown(const HostSet& hosts) const {
   int lowest = 1 << 30;
-  for (const Host* h : hosts.serving()) lowest = std::min(lowest, frame_shown(*h));
+  for (const Host& h : hosts.serving()) lowest = std::min(lowest, frame_shown(h));
   return lowest;
 }
 

@@ -118,37 +118,21 @@ void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
   place_stamps(layout, 0);
 }
 
-std::vector<Host*> HostSet::serving() {
-  std::vector<Host*> out;
-  for (Host& h : hosts_) {
-    if (!h.lost) out.push_back(&h);
-  }
-  return out;
-}
-
-std::vector<const Host*> HostSet::serving() const {
-  std::vector<const Host*> out;
-  for (const Host& h : hosts_) {
-    if (!h.lost) out.push_back(&h);
-  }
-  return out;
-}
-
 Host* HostSet::poll_ended() {
-  for (Host* h : serving()) {
-    if (!h->exit && h->process) h->exit = h->process->poll();
+  for (Host& h : serving()) {
+    if (!h.exit && h.process) h.exit = h.process->poll();
   }
-  for (Host* h : serving()) {
-    if (h->exit && (!h->exit->ok() || delivered(*h) < frames_)) return h;
+  for (Host& h : serving()) {
+    if (h.exit && (!h.exit->ok() || delivered(h) < frames_)) return &h;
   }
   return nullptr;
 }
 
 Host* HostSet::killed_by_signal() {
   poll_ended();
-  for (Host* h : serving()) {
+  for (Host& h : serving()) {
     // Only asked while the run has ended no host itself, so no signal here is ours.
-    if (h->exit && h->exit->signal != 0) return h;
+    if (h.exit && h.exit->signal != 0) return &h;
   }
   return nullptr;
 }
@@ -214,13 +198,13 @@ bool HostSet::take_in(std::vector<InputFrame>& inputs) {
 
 void HostSet::serve_channels() {
   if (!dvi_) return;
-  for (Host* h : serving()) {
-    const auto& c = h->channel->counts();
+  for (Host& h : serving()) {
+    const auto& c = h.channel->counts();
     const auto asked = c.sync_answered + c.sync_unanswered;
-    h->channel->serve(milliseconds(0));
-    if (h->held_ready && c.sync_answered + c.sync_unanswered > asked) {
-      h->channel->send_ready(static_cast<std::uint64_t>(*h->held_ready));
-      h->held_ready.reset();
+    h.channel->serve(milliseconds(0));
+    if (h.held_ready && c.sync_answered + c.sync_unanswered > asked) {
+      h.channel->send_ready(static_cast<std::uint64_t>(*h.held_ready));
+      h.held_ready.reset();
     }
   }
 }
@@ -243,10 +227,10 @@ int HostSet::delivered(const Host& h) const {
 
 std::string HostSet::late_hosts(int shown) const {
   std::string culprits;
-  for (const Host* h : serving()) {
-    if (delivered(*h) < shown + 1)
-      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h->pipeserver,
-                              h->process ? fmt::format("pid {}", h->process->pid()) : h->place);
+  for (const Host& h : serving()) {
+    if (delivered(h) < shown + 1)
+      culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.pipeserver,
+                              h.process ? fmt::format("pid {}", h.process->pid()) : h.place);
   }
   return culprits;
 }
@@ -254,10 +238,10 @@ std::string HostSet::late_hosts(int shown) const {
 const Host* HostSet::hung_host(int shown) {
   poll_ended();
   const Host* late = nullptr;
-  for (const Host* h : serving()) {
-    if (h->exit || !h->process || delivered(*h) >= shown + 1) continue;
-    if (h->process->stopped()) return h;
-    if (!late) late = h;
+  for (const Host& h : serving()) {
+    if (h.exit || !h.process || delivered(h) >= shown + 1) continue;
+    if (h.process->stopped()) return &h;
+    if (!late) late = &h;
   }
   return late;
 }
@@ -271,14 +255,14 @@ void HostSet::finish(milliseconds timeout) {
   for (;;) {
     serve_channels();
     bool all = true;
-    for (Host* h : serving()) {
-      if (!h->process) continue;  // not ours to wait for
-      if (!h->exit) h->exit = h->process->poll();
-      if (!h->exit) {
+    for (Host& h : serving()) {
+      if (!h.process) continue;  // not ours to wait for
+      if (!h.exit) h.exit = h.process->poll();
+      if (!h.exit) {
         all = false;
-      } else if (!h->exit->ok()) {
-        throw RunFault(fmt::format("pipeserver {} {} after the last frame", h->pipeserver,
-                                   h->exit->describe()));
+      } else if (!h.exit->ok()) {
+        throw RunFault(
+            fmt::format("pipeserver {} {} after the last frame", h.pipeserver, h.exit->describe()));
       }
     }
     if (all) return;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <ranges>
 #include <string>
 #include <vector>
 
@@ -96,9 +97,9 @@ class HostSet {
 
   std::deque<Host>& hosts() { return hosts_; }
   const std::deque<Host>& hosts() const { return hosts_; }
-  // The hosts still taking part: all but those lost.
-  std::vector<Host*> serving();
-  std::vector<const Host*> serving() const;
+  // The hosts still taking part, all but those lost: a view of hosts(), nothing copied.
+  auto serving() { return hosts_ | std::views::filter(is_serving); }
+  auto serving() const { return hosts_ | std::views::filter(is_serving); }
 
   // The run goes on without `h`, which ended (--survive-host-loss): from now on its link is
   // taken in as an input without a signal (its last frame stays in the shared memory, and would
@@ -152,6 +153,8 @@ class HostSet {
   void shut_down();
 
  private:
+  static bool is_serving(const Host& h) { return !h.lost; }
+
   std::deque<Host> hosts_;  // a deque: hosts never move, the back-channels refer to their ptys
   bool dvi_ = true;
   int frames_ = 0;  // every host renders this many
