@@ -391,16 +391,9 @@ void MpiDviPath::end_columns() {
 // share a layout (as DviPath checks on one machine).
 void MpiDviPath::check_groups_for_balance(const HostSet& hosts) {
   for (const int g : swapped_) {
-    const std::vector<int>& displays = groups_[static_cast<std::size_t>(g)].displays;
-    std::vector<int> shown;
-    for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
-      const int frame = stamp_shown_[i];
-      if (frame == INT_MAX) continue;
-      if (std::find(displays.begin(), displays.end(), hosts.hosts()[i].stamp(frame).display) !=
-          displays.end())
-        shown.push_back(frame);
-    }
-    balance_->check_swap(shown);
+    balance_->check_swap(groups_[static_cast<std::size_t>(g)].displays, hosts, [&](const Host& h) {
+      return stamp_shown_[static_cast<std::size_t>(h.pipeserver)];
+    });
   }
 }
 

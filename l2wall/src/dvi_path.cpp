@@ -60,13 +60,7 @@ void DviPath::check_groups_for_balance(const Emulator::Tick& tick, const HostSet
     const auto g = std::find_if(groups.begin(), groups.end(),
                                 [&](const SwapGroup& sg) { return sg.id == id; });
     if (g == groups.end()) continue;
-    std::vector<int> shown;
-    for (const Host* h : hosts.serving()) {
-      const int frame = side_.frame_shown(*h);
-      if (std::binary_search(g->displays.begin(), g->displays.end(), h->stamp(frame).display))
-        shown.push_back(frame);
-    }
-    balance_->check_swap(shown);
+    balance_->check_swap(g->displays, hosts, [&](const Host& h) { return side_.frame_shown(h); });
   }
 }
 

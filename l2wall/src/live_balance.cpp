@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <fstream>
 #include <stdexcept>
 
@@ -53,8 +54,7 @@ bool LiveBalance::stale(int frame) const {
 void LiveBalance::serve(HostSet& hosts) {
   // A lost host sends nothing more: the frame's times are in once the others' are.
   for (const int s : balancer_.lost()) have_[static_cast<std::size_t>(s)] = true;
-  for (Host* host : hosts.serving()) {
-    Host& h = *host;
+  for (Host& h : hosts.serving()) {
     if (!h.control) continue;
     const std::size_t i = static_cast<std::size_t>(h.pipeserver);
     while (!have_[i]) {
@@ -112,9 +112,9 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
   }
   LayoutMessage m = layout_message(frame, layout);
   const std::string line = encode(m);
-  for (Host* h : hosts.serving()) {
+  for (Host& h : hosts.serving()) {
     try {
-      if (h->control) h->control->send_line(line);
+      if (h.control) h.control->send_line(line);
     } catch (const ControlError&) {
       // the host is gone: the run names it from its exit
     }
@@ -141,7 +141,16 @@ void LiveBalance::count_strips(const HostSet& hosts,
     strips_[static_cast<std::size_t>(layout_of(hosts.hosts()[i].accepted))] += routed_by_host[i];
 }
 
-void LiveBalance::check_swap(const std::vector<int>& shown) {
+void LiveBalance::check_swap(const std::vector<int>& group_displays, const HostSet& hosts,
+                             const std::function<int(const Host&)>& frame_shown) {
+  std::vector<int> shown;
+  for (const Host& h : hosts.serving()) {
+    const int frame = frame_shown(h);
+    if (frame == INT_MAX) continue;
+    const int display = h.stamp(frame).display;
+    if (std::find(group_displays.begin(), group_displays.end(), display) != group_displays.end())
+      shown.push_back(frame);
+  }
   if (shown.empty()) return;
   ++swaps_checked_;
   const int first = layout_of(shown.front());

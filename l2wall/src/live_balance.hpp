@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,9 +35,11 @@ class LiveBalance {
   void count_strips(const HostSet& hosts, const std::vector<std::uint64_t>& routed_by_host);
   // The lead path cannot count strips (`why`): the summary says so instead of counts.
   void strips_not_counted(std::string why) { strips_uncounted_ = std::move(why); }
-  // After a swap group swapped: whether the frames its displays now show (by the stamps on
-  // them) share one layout.
-  void check_swap(const std::vector<int>& shown);
+  // After a swap group swapped: whether the frames its displays (`group_displays`) now show
+  // share one layout. `frame_shown(h)`: the frame host h's stamp says the displays show of it
+  // (INT_MAX: not known); a host counts when that frame's stamp is on one of the group's.
+  void check_swap(const std::vector<int>& group_displays, const HostSet& hosts,
+                  const std::function<int(const Host&)>& frame_shown);
 
   // Whether a host that dies is survived (--survive-host-loss, [balance] survive_host_loss).
   bool survives_losses() const { return survive_; }
