@@ -127,7 +127,7 @@ int run_wall_mpi(const RunOptions& o) {
   bool balanced = false;
   try {
     layout = plan_layout(o.wall.empty() ? default_wall() : load_wall(o.wall));
-    balanced = run_balances(o, layout->wall);
+    balanced = run_balance(o, layout->wall).balancing();
     // Every rank builds the same map (the pipeservers too, from --mpi-control).
     map = make_rank_map(*layout, balanced);
   } catch (const std::exception& e) {

@@ -105,7 +105,13 @@ fault() {
     echo "FAIL: displays saved, but every display was on the rank that is gone"
     exit 1
   fi
-  sleep 0.2
+  # mpirun has returned; the ranks it ended may still be exiting on a loaded machine: allowed
+  # a few seconds, not a fixed moment.
+  local waited
+  for ((waited = 0; waited < 100; ++waited)); do
+    pgrep -f -- "$dir" >/dev/null || break
+    sleep 0.1
+  done
   if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
   # No shared memory: neither the links of the run's processes nor mpirun's session folder.
   local p

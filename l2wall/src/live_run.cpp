@@ -141,7 +141,7 @@ class LiveRun {
 
   // A balanced run: the coordinator, and the DVI path following its layouts.
   void start_balance() {
-    if (!run_balances(o_, wall_)) return;
+    if (!run_balance(o_, wall_).balancing()) return;
     const BalanceSpec spec = run_balance(o_, wall_);
     Wall wall = wall_;
     wall.balance = spec;
@@ -572,14 +572,9 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   return spec;
 }
 
-bool run_balances(const RunOptions& o, const Wall& wall) {
-  const BalanceSpec spec = run_balance(o, wall);
-  return spec.mode != BalanceMode::Static || spec.heaviest_first;
-}
-
 Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const BalanceSpec spec = run_balance(o, wall);
-  if (!run_balances(o, wall)) {
+  if (!spec.balancing()) {
     // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
     if (o.survive_host_loss) {
       return Failure{

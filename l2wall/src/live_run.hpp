@@ -65,8 +65,6 @@ Status run_options_error(const RunOptions& options);
 
 // The wall's [balance] with --balance over its mode, and --survive-host-loss.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
-// Whether this run balances: --balance or the wall's [balance] asks for more than static.
-bool run_balances(const RunOptions& options, const Wall& wall);
 // Why this run cannot balance as asked (--survive-host-loss without balancing, or on another
 // path than dvi, or over MPI), or nullopt: one line naming the option or the wall file's line.
 Status balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);

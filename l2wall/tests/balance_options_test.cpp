@@ -37,7 +37,7 @@ TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) 
   o.survive_host_loss = false;
   o.path = "dvi";
   o.balance = "strips";
-  EXPECT_TRUE(run_balances(o, default_wall()));
+  EXPECT_TRUE(run_balance(o, default_wall()).balancing());
   // MPI balances, on either path, but a rank that dies ends the job.
   EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
   o.path = "both";
@@ -56,7 +56,7 @@ TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) 
   // Static asks for nothing to refuse.
   o.balance = "static";
   o.path = "vizserver";
-  EXPECT_FALSE(run_balances(o, strips_wall()));
+  EXPECT_FALSE(run_balance(o, strips_wall()).balancing());
   EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
 }
 

@@ -17,7 +17,7 @@ void read_balance(const TomlFields& top, Wall& wall) {
   wall.balance.mode = static_cast<BalanceMode>(f.choice("mode", modes, 0));
   wall.balance.heaviest_first = f.choice("assignment", {"policy", "heaviest-first"}, 0) == 1;
   wall.balance.survive_host_loss = f.boolean("survive_host_loss", false);
-  const bool balancing = wall.balance.mode != BalanceMode::Static || wall.balance.heaviest_first;
+  const bool balancing = wall.balance.balancing();
   // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
   if (wall.balance.survive_host_loss && !balancing) {
     f.fail("survive_host_loss",

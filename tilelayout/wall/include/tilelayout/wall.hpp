@@ -67,6 +67,8 @@ struct BalanceSpec {
   // over the others (l2wall run --survive-host-loss).
   bool survive_host_loss = false;
   int line = 0;  // of [balance], for errors found later
+  // Whether it asks for more than the static tiling: a mode that re-cuts, or the assignment.
+  bool balancing() const { return mode != BalanceMode::Static || heaviest_first; }
 };
 
 struct Wall {
