@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <mpi.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -15,6 +16,8 @@
 #include <stdexcept>
 
 #include "base/fd.hpp"
+#include "base/result.hpp"
+#include "cluster/coordinator_address.hpp"
 #include "vizserver/socket.hpp"
 
 namespace l2 {
@@ -52,37 +55,147 @@ MpiSession::~MpiSession() {
   MPI_Finalize();
 }
 
+namespace {
+
+constexpr int kMaxOffered = 16;
+constexpr auto kReachTimeout = std::chrono::seconds(3);  // per address a rank tries
+
+// What the coordinator broadcasts: where its liveness listener is (coordinator_address.hpp).
+struct WireOffer {
+  std::uint16_t port = 0;
+  std::int32_t count = 0;
+  std::array<std::uint32_t, kMaxOffered> addresses{};
+  std::array<char, 128> stack{};
+};
+
+// Why a rank could not connect, gathered on the coordinator (empty: it did).
+using WireReachError = std::array<char, 240>;
+
+WireOffer make_offer(std::uint16_t port) {
+  WireOffer offer;
+  offer.port = port;
+  const std::vector<std::uint32_t> addresses =
+      offered_addresses(local_interfaces(), mpi_interface_pin());
+  for (const std::uint32_t a : addresses) {
+    if (offer.count == kMaxOffered) break;
+    offer.addresses[static_cast<std::size_t>(offer.count++)] = a;
+  }
+  const std::string stack = network_stack_id();
+  std::memcpy(offer.stack.data(), stack.data(), std::min(stack.size(), offer.stack.size() - 1));
+  return offer;
+}
+
+// Loopback where it joins this rank to the coordinator, else each offered address in turn.
+Result<Fd> reach(const WireOffer& offer) {
+  std::vector<std::string> candidates;
+  if (network_stack_id() == offer.stack.data()) {
+    candidates.emplace_back("127.0.0.1");
+  } else {
+    for (int i = 0; i < offer.count; ++i)
+      candidates.push_back(ipv4_text(offer.addresses[static_cast<std::size_t>(i)]));
+  }
+  if (candidates.empty())
+    return Failure{fmt::format(
+        "the coordinator offered no address: no interface of its, other "
+        "than loopback, is up{}",
+        mpi_interface_pin().empty() ? ""
+                                    : fmt::format(" and in MPI's pin '{}'", mpi_interface_pin()))};
+  std::string why;
+  for (const std::string& host : candidates) {
+    try {
+      return viz::connect_tcp(host, offer.port, kReachTimeout, "the coordinator at");
+    } catch (const std::exception& e) {
+      why += (why.empty() ? "" : "; ") + std::string(e.what());
+    }
+  }
+  return Failure{why};
+}
+
+}  // namespace
+
 void MpiSession::connect_liveness() {
-  std::array<char, 128> address{};
   Fd listener;
+  WireOffer offer;
   if (rank_ == 0) {
     listener = viz::listen_tcp("0.0.0.0", 0);
-    std::array<char, kHostBytes> host{};
-    gethostname(host.data(), host.size() - 1);
-    const std::string text = fmt::format("{}:{}", host.data(), viz::local_port(listener.get()));
-    std::memcpy(address.data(), text.data(), std::min(text.size(), address.size() - 1));
+    offer = make_offer(viz::local_port(listener.get()));
   }
-  MPI_Bcast(address.data(), static_cast<int>(address.size()), MPI_CHAR, 0, MPI_COMM_WORLD);
+  MPI_Bcast(&offer, sizeof offer, MPI_BYTE, 0, MPI_COMM_WORLD);
+  WireReachError error{};
+  std::vector<WireReachError> errors(rank_ == 0 ? static_cast<std::size_t>(size_) : 0);
   if (rank_ != 0) {
-    const viz::Endpoint at = viz::parse_endpoint(address.data());
-    Fd fd = viz::connect_tcp(at.host, at.port, std::chrono::seconds(30), "the coordinator");
+    Result<Fd> fd = reach(offer);
     const std::int32_t me = rank_;
-    if (send(fd.get(), &me, sizeof me, MSG_NOSIGNAL) != sizeof me)
-      throw std::runtime_error("cannot tell the coordinator who this rank is");
-    liveness_.push_back(std::move(fd));
-    return;
+    if (fd.ok() && send(fd->get(), &me, sizeof me, MSG_NOSIGNAL) == sizeof me) {
+      liveness_.push_back(std::move(fd).value());
+    } else {
+      const std::string why = fd.ok() ? "the connection closed at once" : fd.reason();
+      std::memcpy(error.data(), why.data(), std::min(why.size(), error.size() - 1));
+    }
   }
+  // Each rank's word comes once it has connected or given up: the coordinator accepts until
+  // every rank has spoken and each that connected is taken in.
+  MPI_Request gathered = MPI_REQUEST_NULL;
+  MPI_Igather(&error, sizeof error, MPI_BYTE, errors.data(), sizeof error, MPI_BYTE, 0,
+              MPI_COMM_WORLD, &gathered);
+  if (rank_ == 0) accept_liveness(listener, gathered, errors);
+  MPI_Wait(&gathered, MPI_STATUS_IGNORE);
+  if (rank_ == 0) refuse_unreached(errors);
+  // Every rank waits for the coordinator's word: the run goes on only if all connected.
+  int go = 1;
+  MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+}
+
+void MpiSession::accept_liveness(const Fd& listener, MPI_Request& gathered,
+                                 const std::vector<std::array<char, 240>>& errors) {
   liveness_.resize(static_cast<std::size_t>(size_));
-  // Every other rank connects now: wait for each (the listener is non-blocking).
-  fcntl(listener.get(), F_SETFL, fcntl(listener.get(), F_GETFL) & ~O_NONBLOCK);
-  for (int n = 1; n < size_; ++n) {
+  int connected = 1;
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  for (;;) {
+    if (!deadline) {
+      int done = 0;
+      MPI_Test(&gathered, &done, MPI_STATUS_IGNORE);
+      // Every rank has said whether it connected: those that did are in the listener's queue.
+      if (done) deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    }
+    const int expected =
+        deadline ? 1 + static_cast<int>(std::count_if(errors.begin() + 1, errors.end(),
+                                                      [](const auto& e) { return e[0] == '\0'; }))
+                 : size_;
+    if (connected >= expected || (deadline && std::chrono::steady_clock::now() > *deadline)) return;
+    pollfd p{listener.get(), POLLIN, 0};
+    if (poll(&p, 1, 5) <= 0) continue;
     Fd fd(accept(listener.get(), nullptr, nullptr));
+    if (!fd) continue;
+    fcntl(fd.get(), F_SETFL, fcntl(fd.get(), F_GETFL) & ~O_NONBLOCK);
+    const timeval wait{5, 0};  // a peer that connects and says nothing is not waited for long
+    setsockopt(fd.get(), SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
     std::int32_t who = -1;
-    if (!fd || recv(fd.get(), &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 ||
-        who >= size_)
-      throw std::runtime_error("a rank's liveness connection failed");
+    if (recv(fd.get(), &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 || who >= size_ ||
+        liveness_[static_cast<std::size_t>(who)])
+      continue;  // not one of our ranks: dropped
     liveness_[static_cast<std::size_t>(who)] = std::move(fd);
+    ++connected;
   }
+}
+
+void MpiSession::refuse_unreached(const std::vector<std::array<char, 240>>& errors) {
+  std::vector<int> unreached;
+  for (int r = 1; r < size_; ++r)
+    if (errors[static_cast<std::size_t>(r)][0] != '\0') unreached.push_back(r);
+  if (unreached.empty()) return;
+  const int first = unreached.front();
+  const RankIdentity& who = identities_[static_cast<std::size_t>(first)];
+  const std::string others = unreached.size() == 1
+                                 ? ""
+                                 : fmt::format(" ({} ranks in all could not: {})", unreached.size(),
+                                               fmt::join(unreached, ", "));
+  std::fprintf(stderr,
+               "l2wall: --mpi: rank %d on %s cannot reach the coordinator (rank 0 on %s) beside "
+               "MPI: %s%s\n",
+               first, who.host.c_str(), identities_.front().host.c_str(),
+               errors[static_cast<std::size_t>(first)].data(), others.c_str());
+  abort_all(1);
 }
 
 void MpiSession::watch_ranks(std::function<std::string(int)> describe) {

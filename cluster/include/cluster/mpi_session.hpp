@@ -3,6 +3,9 @@
 // the coordinator, so a fault names where a rank ran).
 #pragma once
 
+#include <mpi.h>
+
+#include <array>
 #include <atomic>
 #include <functional>
 #include <mutex>
@@ -49,7 +52,12 @@ class MpiSession {
   [[noreturn]] static void abort_all(int code);
 
  private:
+  // Every rank connects to the coordinator's listener (coordinator_address.hpp); a rank
+  // that cannot is named by the coordinator in one line, and the run ends before it starts.
   void connect_liveness();
+  void accept_liveness(const Fd& listener, MPI_Request& gathered,
+                       const std::vector<std::array<char, 240>>& errors);
+  void refuse_unreached(const std::vector<std::array<char, 240>>& errors);
   void watch(std::stop_token stop);
   // Prints the line of a rank found gone, unless the run reported it.
   void report_unclaimed();

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# The wall across hosts with their own network stacks: scripts/cluster.sh makes each host a
+# network namespace with its own address and host name, and runs mpirun across them as on real
+# machines. Each display must be the one-machine run's bytes:
+#   1. the default wall over 3 hosts (render-a: coordinator + pipeservers 0-1, render-b:
+#      pipeservers 2-3, display-a: the column), both paths (--compare);
+#   2. a two-column wall with its columns on two hosts (display-a, display-b);
+#   3. pipeserver 2 killed on render-b: one line naming it with its host, exit non-zero, and
+#      nothing left running on any host.
+# Exit 77 (skipped) where this machine cannot make network namespaces.
+# Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL
+set -euo pipefail
+l2wall=$1 out=$2 cluster=$3 two_columns=$4
+frames=8
+rm -rf "$out" && mkdir -p "$out"
+
+# same_displays ONE MPI: every display picture of the last frame of ONE is in MPI, byte for byte.
+same_displays() {
+  local p n=0
+  for p in "$1/frame-$((frames - 1))"/display-*.png; do
+    cmp "$p" "$2/frame-$((frames - 1))/$(basename "$p")" || { echo "FAIL: $2 differs"; exit 1; }
+    n=$((n + 1))
+  done
+  ((n > 0)) || { echo "FAIL: $1 has no displays"; exit 1; }
+  echo "  $n display pictures of frame $((frames - 1)) the same bytes as on one machine"
+}
+
+# 1. The default wall on three hosts, both paths.
+"$l2wall" run --path both --compare --frames $frames --refresh 0 --out "$out/one" --no-progress >/dev/null
+status=0
+bash "$cluster" -- "$l2wall" run --mpi --path both --compare --frames $frames --refresh 0 \
+  --out "$out/three-hosts" --no-progress >"$out/three-hosts.txt" 2>"$out/three-hosts.err" || status=$?
+if ((status == 77)); then cat "$out/three-hosts.err"; exit 77; fi
+((status == 0)) || { echo "FAIL: exit $status"; cat "$out/three-hosts.err"; exit 1; }
+[[ ! -s $out/three-hosts.err ]] || { echo "FAIL: stderr:"; cat "$out/three-hosts.err"; exit 1; }
+grep -E "^compare: [0-9]+ display pictures identical byte for byte" "$out/three-hosts.txt" ||
+  { echo "FAIL: no compare line"; cat "$out/three-hosts.txt"; exit 1; }
+echo "default wall on render-a, render-b, display-a:"
+same_displays "$out/one" "$out/three-hosts"
+
+# 2. Two columns on two hosts.
+"$l2wall" run --wall "$two_columns" --frames $frames --refresh 0 --out "$out/one-2col" --no-progress >/dev/null
+bash "$cluster" --hosts render-a:3,display-a:1,display-b:1 -- "$l2wall" run --wall "$two_columns" \
+  --mpi --frames $frames --refresh 0 --out "$out/two-columns" --no-progress >"$out/two-columns.txt" \
+  2>&1 || { echo "FAIL: two columns"; cat "$out/two-columns.txt"; exit 1; }
+grep -q "over 2 board column rank(s)" "$out/two-columns.txt" ||
+  { echo "FAIL: not two column ranks"; cat "$out/two-columns.txt"; exit 1; }
+echo "two-column wall, its columns on display-a and display-b:"
+same_displays "$out/one-2col" "$out/two-columns"
+
+# 3. Pipeserver 2 (rank 3, on render-b) killed mid-run.
+dir=$out/killed
+bash "$cluster" -- "$l2wall" run --mpi --frames 100000 --stall-timeout 1000 --ready-timeout 3000 \
+  --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+run=$!
+for _ in $(seq 1200); do  # until the displays have swapped a few frames
+  [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+  sleep 0.05
+done
+pid=
+for p in $(pgrep -f -- "$dir" || true); do
+  if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=3"; then pid=$p; fi
+done
+[[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
+kill -KILL "$pid"
+status=0
+wait "$run" || status=$?
+((status != 0)) || { echo "FAIL: exit 0 after a rank was killed"; exit 1; }
+line=$(grep -E "^l2wall: .*pipeserver 2 \(rank 3 on render-b, pid $pid\).*frame [0-9]+" "$dir.err") ||
+  { echo "FAIL: no line naming pipeserver 2 on render-b:"; cat "$dir.err"; exit 1; }
+echo "pipeserver 2 killed on render-b: $line"
+if grep -q "^cluster: left running" "$dir.err"; then
+  echo "FAIL: processes left on a host:"
+  grep "^cluster: left running" "$dir.err"
+  exit 1
+fi
+if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
+echo "nothing left running on any host"

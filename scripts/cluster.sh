@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# A cluster on one machine: each host a Linux network namespace with its own address and host
+# name, joined by a bridge, its link shaped to a rate if asked (tc tbf), and a command run across
+# the hosts with mpirun as on real machines (a hostfile, an rsh agent that enters the namespaces,
+# the MPI interfaces pinned to the cluster's subnet). mpirun itself runs on the first host, as a
+# user would on the head node. Everything made is removed when it ends, however it ends; names
+# are unique to the run, so two runs at once do not meet. Needs root (CI is).
+#
+# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--subnet A.B.C] -- PROGRAM ARGS...
+#   --hosts    the hosts and how many ranks each takes, in rank order (default
+#              render-a:3,render-b:2,display-a:1: the default wall's coordinator and
+#              pipeservers 0-1, pipeservers 2-3, its board column)
+#   --rate     each host's link, both ways: e.g. 1gbit, 10gbit, 500mbit (default: unshaped)
+#   --subnet   the hosts' /24, host i at .(i+2) (default 10.213.7; only inside the namespaces)
+# It runs: mpirun -np <the slots' sum> --hostfile ... PROGRAM ARGS..., prints that command on
+# one line ("cluster: ..."), and exits with its code; 77 when this machine cannot make network
+# namespaces (not root, no ip netns), said in one line.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+hosts_spec=render-a:3,render-b:2,display-a:1 rate= subnet=10.213.7
+usage() { sed -n '/^# Usage:/,/^set /p' "$0" | sed '$d; s/^# \{0,1\}//'; }
+while (($#)); do
+  case $1 in
+    --hosts) hosts_spec=${2:?--hosts needs NAME:SLOTS,...}; shift 2 ;;
+    --rate) rate=${2:?--rate needs a rate such as 1gbit}; shift 2 ;;
+    --subnet) subnet=${2:?--subnet needs A.B.C}; shift 2 ;;
+    -h | --help) usage; exit 0 ;;
+    --) shift; break ;;
+    *) echo "cluster.sh: unknown option '$1' (--help lists them)" >&2; exit 2 ;;
+  esac
+done
+(($#)) || { echo "cluster.sh: no command after -- (--help)" >&2; exit 2; }
+[[ $subnet =~ ^[0-9]{1,3}\.[0-9]{1,3}\.[0-9]{1,3}$ ]] ||
+  { echo "cluster.sh: --subnet '$subnet' is not A.B.C" >&2; exit 2; }
+if [[ -n $rate && ! $rate =~ ^[0-9]+[kmg]bit$ ]]; then
+  echo "cluster.sh: --rate '$rate' is not N followed by kbit, mbit or gbit" >&2
+  exit 2
+fi
+names=() slots=()
+IFS=, read -ra entries <<<"$hosts_spec"
+for e in "${entries[@]}"; do
+  [[ $e =~ ^([a-z][a-z0-9-]{0,20}):([1-9][0-9]*)$ ]] ||
+    { echo "cluster.sh: --hosts entry '$e' is not NAME:SLOTS (name: a-z, 0-9, -)" >&2; exit 2; }
+  names+=("${BASH_REMATCH[1]}") slots+=("${BASH_REMATCH[2]}")
+done
+
+id=l2c$(printf '%05x' $((RANDOM * 32 + RANDOM % 32)))
+if ! ip netns add "$id-probe" 2>/dev/null; then
+  echo "cluster.sh: cannot make network namespaces here (root and iproute2's ip netns needed)" >&2
+  exit 77
+fi
+ip netns del "$id-probe"
+work=$(mktemp -d)
+# Processes still on a host once the command has ended are named (a run must leave none: give
+# them 10 s to exit) and killed; then the namespaces, links and bridge go.
+cleanup() {
+  local h pids waited
+  for ((waited = 0; waited < 100; ++waited)); do
+    pids=$(for h in "${names[@]}"; do ip netns pids "$id-$h" 2>/dev/null || true; done)
+    [[ -n $pids ]] || break
+    sleep 0.1
+  done
+  for h in "${names[@]}"; do
+    pids=$(ip netns pids "$id-$h" 2>/dev/null || true)
+    [[ -z $pids ]] && continue
+    echo "cluster: left running on $h, killed: $(ps -o comm= -p "${pids//$'\n'/,}" | sort | uniq -c | xargs)" >&2
+    kill -9 $pids 2>/dev/null || true
+  done
+  for h in "${names[@]}"; do ip netns del "$id-$h" 2>/dev/null || true; done
+  ip link del "${id}br" 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+# A token bucket, both ways, on a link's two ends: its burst one millisecond of the rate.
+shape() {  # shape NETNS-OR-"" DEVICE
+  local bits=${rate%bit} scale=1
+  case ${bits: -1} in k) scale=1000 ;; m) scale=1000000 ;; g) scale=1000000000 ;; esac
+  local burst=$(( ${bits%?} * scale / 8 / 1000 ))
+  ((burst >= 16384)) || burst=16384
+  ip ${1:+-n "$1"} link set "$2" txqueuelen 10000 2>/dev/null || true
+  tc ${1:+-n "$1"} qdisc add dev "$2" root tbf rate "$rate" burst "$burst" latency 100ms
+}
+
+ip link add "${id}br" type bridge
+ip link set "${id}br" up
+: >"$work/hostfile"
+for i in "${!names[@]}"; do
+  ns=$id-${names[$i]}
+  ip netns add "$ns"
+  ip link add "${id}h$i" type veth peer name "${id}b$i"
+  ip link set "${id}b$i" master "${id}br"
+  ip link set "${id}b$i" up
+  ip link set "${id}h$i" netns "$ns"
+  ip -n "$ns" link set lo up
+  ip -n "$ns" addr add "$subnet.$((i + 2))/24" dev "${id}h$i"
+  ip -n "$ns" link set "${id}h$i" up
+  if [[ -n $rate ]]; then shape "$ns" "${id}h$i"; shape "" "${id}b$i"; fi
+  echo "${names[$i]} slots=${slots[$i]}" >>"$work/hostfile"
+  np=$((${np:-0} + slots[i]))
+done
+
+export L2_CLUSTER_PREFIX=$id OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# hwloc's GL plugin would open X display :0 in every rank.
+export HWLOC_COMPONENTS=-gl
+mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
+  --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
+  --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24")
+echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
+status=0
+ip netns exec "$id-${names[0]}" unshare --uts sh -c 'hostname "$1"; shift; exec "$@"' \
+  sh "${names[0]}" "${mpirun[@]}" "$@" || status=$?
+exit "$status"
