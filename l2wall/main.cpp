@@ -11,6 +11,7 @@
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/program_paths.hpp"
+#include "dvi_link/frame_delta.hpp"
 #include "golden_command.hpp"
 #include "image/movie_file.hpp"
 #include "image/picture_regions.hpp"
@@ -181,6 +182,12 @@ int main(int argc, char** argv) {
                 "run the wall over MPI ranks: mpirun -np N l2wall run --wall WALL --mpi, N = 1 "
                 "coordinator + one rank per pipeserver + one per board column of the mesh, in "
                 "that rank order (docs/mpi-design.md); frames and READY travel as MPI messages");
+  run->add_option("--link-codec", o.link_codec,
+                  "with --mpi: how frames travel to the board columns: unchanged rows dropped, "
+                  "changed ones predicted, then compressed with raw (not at all), lz4 or zstd; "
+                  "lossless, the displays are the same bytes")
+      ->check([](const std::string& v) { return l2::parse_link_codec(v).reason(); }, "CODEC")
+      ->capture_default_str();
   // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
   l2::SceneOptions scene;
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);

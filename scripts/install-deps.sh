@@ -9,10 +9,10 @@ PACKAGES=(
   libosmesa6-dev libopenimageio-dev openimageio-tools libpng-dev libglfw3-dev libglm-dev libassimp-dev
   fonts-dejavu-core
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
-  libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
+  libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
-  socat xvfb xauth libx11-dev libxrandr-dev libxtst-dev
+  socat iproute2 xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox
 )
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <thread>
@@ -20,29 +21,45 @@ void check_link(int code, const char* what, int peer) {
 
 }  // namespace
 
-MpiDviSender::MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width,
-                           int height, std::shared_ptr<std::uint64_t> bytes_sent)
-    : columns_(std::move(column_ranks)),
-      coordinator_(coordinator_rank),
-      message_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
-      bytes_sent_(std::move(bytes_sent)) {}
+MpiDviSender::MpiDviSender(std::vector<ColumnFeed> columns, int coordinator_rank, int width,
+                           int height, LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent)
+    : coordinator_(coordinator_rank),
+      frame_(static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
+      bytes_sent_(std::move(bytes_sent)) {
+  for (ColumnFeed& c : columns) {
+    const auto same = std::find_if(streams_.begin(), streams_.end(),
+                                   [&](const Stream& s) { return s.blank == c.blank; });
+    if (same != streams_.end()) {
+      same->ranks.push_back(c.rank);
+      continue;
+    }
+    streams_.push_back({std::move(c.blank), {c.rank}, FrameDeltaEncoder(width, height, codec), {}});
+  }
+}
 
 std::span<std::uint8_t> MpiDviSender::back_frame() {
-  return std::span<std::uint8_t>(message_).subspan(kSequenceBytes);
+  return frame_;
 }
 
 std::uint64_t MpiDviSender::publish() {
   ++sequence_;
-  std::memcpy(message_.data(), &sequence_, kSequenceBytes);
-  std::vector<MPI_Request> requests(columns_.size());
-  for (std::size_t i = 0; i < columns_.size(); ++i) {
-    check_link(MPI_Isend(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, columns_[i],
-                         mpi_wire::kFrame, MPI_COMM_WORLD, &requests[i]),
-               "sending a frame", columns_[i]);
+  std::vector<MPI_Request> requests;
+  for (Stream& s : streams_) {
+    const std::span<const std::uint8_t> encoded = s.encoder.encode(frame_, s.blank);
+    s.message.resize(kSequenceBytes + encoded.size());
+    std::memcpy(s.message.data(), &sequence_, kSequenceBytes);
+    std::memcpy(s.message.data() + kSequenceBytes, encoded.data(), encoded.size());
+    for (const int rank : s.ranks) {
+      requests.emplace_back();
+      check_link(MPI_Isend(s.message.data(), static_cast<int>(s.message.size()), MPI_BYTE, rank,
+                           mpi_wire::kFrame, MPI_COMM_WORLD, &requests.back()),
+                 "sending a frame", rank);
+      bytes_sent_->raw += frame_.size();
+      bytes_sent_->wire += s.message.size();
+    }
   }
   check_link(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
-             "sending a frame", columns_.empty() ? -1 : columns_.front());
-  *bytes_sent_ += message_.size() * columns_.size();
+             "sending a frame", streams_.empty() ? -1 : streams_.front().ranks.front());
   mpi_wire::send({static_cast<std::int64_t>(sequence_)}, coordinator_, mpi_wire::kNotice);
   return sequence_;
 }
@@ -51,7 +68,9 @@ MpiDviReceiver::MpiDviReceiver(int source_rank, int width, int height)
     : source_(source_rank),
       width_(width),
       height_(height),
-      bytes_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel) {
+      frame_bytes_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
+      posted_(kSequenceBytes + max_frame_delta_bytes(width, height)),
+      decoder_(width, height) {
   post();
 }
 
@@ -65,12 +84,6 @@ MpiDviReceiver::~MpiDviReceiver() {
 }
 
 void MpiDviReceiver::post() {
-  if (spare_.empty()) {
-    posted_.assign(bytes_, 0);
-  } else {
-    posted_ = std::move(spare_.back());
-    spare_.pop_back();
-  }
   check_link(MPI_Irecv(posted_.data(), static_cast<int>(posted_.size()), MPI_BYTE, source_,
                        mpi_wire::kFrame, MPI_COMM_WORLD, &request_),
              "receiving a frame", source_);
@@ -83,10 +96,25 @@ bool MpiDviReceiver::poll() {
   if (!done) return false;
   int count = 0;
   MPI_Get_count(&status, MPI_BYTE, &count);
-  if (static_cast<std::size_t>(count) != bytes_)
-    throw std::runtime_error(fmt::format("DVI link over MPI: rank {} sent {} bytes, expected {}",
-                                         source_, count, bytes_));
-  arrived_.push_back(std::move(posted_));
+  const auto n = static_cast<std::size_t>(count);
+  // Every frame is decoded as it arrives, even one dropped later: the next builds on it.
+  const Status decoded =
+      n < kSequenceBytes
+          ? Status(Failure{fmt::format("{} bytes", n)})
+          : decoder_.decode(std::span(posted_).subspan(kSequenceBytes, n - kSequenceBytes));
+  if (!decoded.ok())
+    throw std::runtime_error(
+        fmt::format("DVI link over MPI: rank {} sent a frame that does not decode: {}", source_,
+                    decoded.reason()));
+  std::vector<std::uint8_t> frame;
+  if (!spare_.empty()) {
+    frame = std::move(spare_.back());
+    spare_.pop_back();
+  }
+  frame.resize(frame_bytes_);
+  std::memcpy(frame.data(), posted_.data(), kSequenceBytes);
+  std::memcpy(frame.data() + kSequenceBytes, decoder_.frame().data(), decoder_.frame().size());
+  arrived_.push_back(std::move(frame));
   post();
   return true;
 }

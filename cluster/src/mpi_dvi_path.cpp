@@ -344,7 +344,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
 }
 
 void MpiDviPath::finish() {
-  std::uint64_t frame_bytes = 0, tile_bytes = 0;
+  std::uint64_t frame_bytes = 0, wire_bytes = 0, tile_bytes = 0;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
   for (int s = 0; s < map_.pipeservers; ++s) {
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
@@ -356,6 +356,7 @@ void MpiDviPath::finish() {
     const Record done = mpi_wire::receive(map_.pipeserver_rank(s), mpi_wire::kDone);
     Reader in(done);
     frame_bytes += static_cast<std::uint64_t>(in.next());
+    wire_bytes += static_cast<std::uint64_t>(in.next());
     tile_bytes += static_cast<std::uint64_t>(in.next());
   }
   end_columns();
@@ -365,9 +366,12 @@ void MpiDviPath::finish() {
       groups_.size(), static_cast<unsigned long long>(refreshes_), map_.columns);
   const double frames = frames_ > 0 ? frames_ : 1;
   std::printf(
-      "network: %.3f MB per frame of DVI frames (each to the columns it feeds), %.2f KB per "
-      "frame of refresh records between the coordinator and the columns\n",
+      "network: %.3f MB per frame of DVI frames on the wire (%.3f MB raw, %.1fx less; each to "
+      "the columns it feeds), %.2f KB per frame of refresh records between the coordinator "
+      "and the columns\n",
+      static_cast<double>(wire_bytes) / frames / 1e6,
       static_cast<double>(frame_bytes) / frames / 1e6,
+      wire_bytes > 0 ? static_cast<double>(frame_bytes) / static_cast<double>(wire_bytes) : 0.0,
       static_cast<double>(control_bytes_) / frames / 1e3);
   if (tile_bytes > 0) {
     std::printf("network: %.3f MB per frame of tiles to the columns (vizserver path)\n",

@@ -15,16 +15,43 @@
 
 namespace l2 {
 
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
-                            std::shared_ptr<std::uint64_t> bytes_sent, bool every_column) {
+namespace {
+
+// The payload of every tile of `plan` on another column's displays: that column routes none of
+// it, so it travels black. What the column does read stays: every header (the router reads
+// each of a row) and the frame stamp, the first pixel of the first tile (host_set.hpp).
+std::vector<BlankRect> other_columns_strips(const PipeserverPlan& plan, int column) {
+  std::vector<BlankRect> out;
+  for (std::size_t i = 0; i < plan.tiles.size(); ++i) {
+    const PackedTile& t = plan.tiles[i];
+    if (Mesh::column_of_display(t.tile.display) == column) continue;
+    const int w = payload_columns(t.tile), h = t.tile.on_display.h;
+    if (i == 0) {
+      out.push_back({t.fb_x + 1, t.fb_y, w - 1, 1});
+      out.push_back({t.fb_x, t.fb_y + 1, w, h - 1});
+    } else {
+      out.push_back({t.fb_x, t.fb_y, w, h});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec codec,
+                            std::shared_ptr<SentBytes> bytes_sent, bool every_column) {
   const RankMap map = make_rank_map(layout, every_column);
-  std::vector<int> ranks;
-  for (const int c : map.columns_of_pipeserver[static_cast<std::size_t>(pipeserver)])
-    ranks.push_back(map.column_rank(c));
   const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(pipeserver)];
+  std::vector<ColumnFeed> columns;
+  for (const int c : map.columns_of_pipeserver[static_cast<std::size_t>(pipeserver)]) {
+    // A balanced run's layouts move tiles between columns: every column gets every strip.
+    columns.push_back({map.column_rank(c),
+                       every_column ? std::vector<BlankRect>{} : other_columns_strips(plan, c)});
+  }
   MpiHostLinks links;
-  links.link = std::make_unique<MpiDviSender>(std::move(ranks), RankMap::kCoordinator,
-                                              plan.fb_width, plan.fb_height, std::move(bytes_sent));
+  links.link =
+      std::make_unique<MpiDviSender>(std::move(columns), RankMap::kCoordinator, plan.fb_width,
+                                     plan.fb_height, codec, std::move(bytes_sent));
   links.channel =
       std::make_unique<MpiReadyChannel>(RankMap::kCoordinator, "MPI rank 0 (coordinator)");
   return links;
@@ -91,8 +118,9 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
   }
 }
 
-void report_host_done(std::uint64_t frame_bytes, std::uint64_t tile_bytes) {
-  mpi_wire::send({static_cast<std::int64_t>(frame_bytes), static_cast<std::int64_t>(tile_bytes)},
+void report_host_done(const SentBytes& frames, std::uint64_t tile_bytes) {
+  mpi_wire::send({static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
+                  static_cast<std::int64_t>(tile_bytes)},
                  RankMap::kCoordinator, mpi_wire::kDone);
 }
 

@@ -13,6 +13,7 @@
 
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
+#include "dvi_link/frame_delta.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "live_host.hpp"
@@ -99,16 +100,16 @@ int run_live(const l2::LiveHostOptions& o) {
 
 // A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
-int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
+int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control, l2::LinkCodec codec) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
-  const auto sent = std::make_shared<std::uint64_t>(0);
+  const auto sent = std::make_shared<l2::SentBytes>();
   const auto tiles_sent = std::make_shared<std::uint64_t>(0);
   // It lives no longer than the session (MPI_Finalize).
   if (control) o.control = std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator);
-  o.links = [sent, tiles, tiles_sent, control](const l2::TileLayout& layout,
-                                               const l2::PipeserverPlan& plan) {
-    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, sent, control);
+  o.links = [sent, tiles, tiles_sent, control, codec](const l2::TileLayout& layout,
+                                                      const l2::PipeserverPlan& plan) {
+    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, codec, sent, control);
     l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
@@ -125,6 +126,7 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
   (void)o;
   (void)tiles;
   (void)control;
+  (void)codec;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -212,6 +214,14 @@ int run_pipeserver(int argc, char** argv) {
                   "live, with --mpi: a balanced run's control channel as MPI messages with the "
                   "coordinator (TIMES out, LAYOUT in; instead of --control-fd); its frames go "
                   "to every board column, since a layout may move its tiles anywhere");
+  std::string link_codec = "zstd";
+  group
+      ->add_option("--link-codec", link_codec,
+                   "live, with --mpi: how frames are compressed on their way to the board "
+                   "columns, after each unchanged row is dropped and each changed one predicted "
+                   "(lossless: raw, lz4 or zstd)")
+      ->check([](const std::string& v) { return l2::parse_link_codec(v).reason(); }, "CODEC")
+      ->capture_default_str();
   // Every live option needs --live: without it they were ignored and one frame was written.
   for (CLI::Option* option : group->get_options()) {
     if (option != live_flag) option->needs(live_flag);
@@ -253,7 +263,9 @@ int run_pipeserver(int argc, char** argv) {
       std::fprintf(stderr, "pipeserver: --mpi-control or --control-fd, not both\n");
       return 2;
     }
-    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control);
+    if (mpi)
+      return run_mpi_host(live_options, mpi_viz, mpi_control,
+                          l2::parse_link_codec(link_codec).value());
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

@@ -2,6 +2,9 @@
 // scanned-out frame goes to every board column its tiles land on, as the DVI repeaters give a
 // column every input it needs, and to no other; the coordinator hears of each frame in a
 // small notice, so it can tell every column which frame of an input a refresh takes in.
+// A frame travels as what changed since the last one sent to that column (frame_delta.hpp),
+// the strips of other columns' displays black, so it fits a real network; the column
+// rebuilds it byte for byte.
 #pragma once
 
 #include <cstdint>
@@ -15,14 +18,25 @@
 #include <mpi.h>
 
 #include "dvi_link/dvi_link.hpp"
+#include "dvi_link/frame_delta.hpp"
 
 namespace l2 {
 
+// Bytes of frames sent: as scanned out (every column's copy) and as they went on the wire.
+struct SentBytes {
+  std::uint64_t raw = 0, wire = 0;
+};
+
+// The columns a frame goes to, and what of it each has no use for (sent black).
+struct ColumnFeed {
+  int rank = 0;
+  std::vector<BlankRect> blank;
+};
+
 class MpiDviSender final : public DviSender {
  public:
-  // `bytes_sent` counts the bytes of frames sent (every column's copy), for the run's figures.
-  MpiDviSender(std::vector<int> column_ranks, int coordinator_rank, int width, int height,
-               std::shared_ptr<std::uint64_t> bytes_sent);
+  MpiDviSender(std::vector<ColumnFeed> columns, int coordinator_rank, int width, int height,
+               LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent);
 
   std::span<std::uint8_t> back_frame() override;
   // Sends the back frame to every column (returning once they have it, so the frame can be
@@ -30,11 +44,18 @@ class MpiDviSender final : public DviSender {
   std::uint64_t publish() override;
 
  private:
-  std::vector<int> columns_;
+  // Columns with the same blank rects share an encoder and a message.
+  struct Stream {
+    std::vector<BlankRect> blank;
+    std::vector<int> ranks;
+    FrameDeltaEncoder encoder;
+    std::vector<std::uint8_t> message;  // sequence number, then the encoded frame
+  };
+  std::vector<Stream> streams_;
   int coordinator_;
-  std::vector<std::uint8_t> message_;  // sequence number, then the frame
+  std::vector<std::uint8_t> frame_;  // the back frame
   std::uint64_t sequence_ = 0;
-  std::shared_ptr<std::uint64_t> bytes_sent_;
+  std::shared_ptr<SentBytes> bytes_sent_;
 };
 
 // One input of a board column. A receive is always posted, so a frame moves while the column
@@ -52,15 +73,17 @@ class MpiDviReceiver final : public DviReceiver {
   std::optional<FrameView> latest() override;
 
  private:
-  // Completes the posted receive if it is done and posts the next; true when one completed.
+  // Completes the posted receive if it is done (rebuilding its frame) and posts the next; true
+  // when one completed. Throws std::runtime_error for a frame that does not decode.
   bool poll();
   void post();
   static std::uint64_t sequence_of(const std::vector<std::uint8_t>& m);
 
   int source_;
   int width_, height_;
-  std::size_t bytes_;
-  std::vector<std::uint8_t> posted_;
+  std::size_t frame_bytes_;
+  std::vector<std::uint8_t> posted_;  // sequence number, then the encoded frame
+  FrameDeltaDecoder decoder_;
   MPI_Request request_ = MPI_REQUEST_NULL;
   std::deque<std::vector<std::uint8_t>> arrived_;  // oldest first
   std::vector<std::vector<std::uint8_t>> spare_;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "cluster/mpi_dvi_link.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -20,11 +21,11 @@ struct MpiHostLinks {
   std::unique_ptr<ReadyChannel> channel;
 };
 
-// For pipeserver `pipeserver` of `layout`; MPI must be initialised (MpiSession). `bytes_sent`
-// counts the bytes of the frames it sends. `every_column`: a balanced run's, whose frames go to
-// every board column (make_rank_map).
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver,
-                            std::shared_ptr<std::uint64_t> bytes_sent, bool every_column = false);
+// For pipeserver `pipeserver` of `layout`; MPI must be initialised (MpiSession). Frames go
+// encoded with `codec` (frame_delta.hpp); `bytes_sent` counts their bytes. `every_column`: a
+// balanced run's, whose frames go whole to every board column (make_rank_map).
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec codec,
+                            std::shared_ptr<SentBytes> bytes_sent, bool every_column = false);
 
 // The visualization-server path over MPI, host side: each tile to the board column owning its
 // display, the end of each frame to every column (with the number of tiles it sent that
@@ -48,7 +49,7 @@ class MpiTileSender {
 };
 
 // Tells the coordinator this host ended well, its report written (it reads the reports next),
-// and how many bytes of frames and of tiles it sent.
-void report_host_done(std::uint64_t frame_bytes, std::uint64_t tile_bytes);
+// and how many bytes of frames (raw and on the wire) and of tiles it sent.
+void report_host_done(const SentBytes& frames, std::uint64_t tile_bytes);
 
 }  // namespace l2

@@ -1,0 +1,242 @@
+#include "dvi_link/frame_delta.hpp"
+
+#include <fmt/format.h>
+#include <lz4.h>
+#include <zstd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace l2 {
+namespace {
+
+constexpr std::array<std::uint8_t, 4> kMagic = {'L', '2', 'F', 'D'};
+constexpr std::uint8_t kVersion = 1;
+constexpr std::size_t kHeaderBytes = 24;
+constexpr std::uint8_t kTemporal = 0, kSpatial = 1;
+// zstd's fastest levels: a frame must be compressed faster than a link carries it.
+constexpr int kZstdLevel = 1;
+
+void put32(std::uint8_t* at, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) at[i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+std::uint32_t get32(const std::uint8_t* at) {
+  return static_cast<std::uint32_t>(at[0]) | static_cast<std::uint32_t>(at[1]) << 8 |
+         static_cast<std::uint32_t>(at[2]) << 16 | static_cast<std::uint32_t>(at[3]) << 24;
+}
+
+std::size_t bitmap_bytes(int height) {
+  return (static_cast<std::size_t>(height) + 7) / 8;
+}
+
+// How far a residual is from all zeros, as PNG's encoders choose a filter: the sum of its
+// bytes taken as signed.
+std::size_t weight(const std::uint8_t* p, std::size_t n) {
+  std::size_t sum = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    sum += static_cast<std::size_t>(std::abs(static_cast<std::int8_t>(p[i])));
+  return sum;
+}
+
+}  // namespace
+
+Result<LinkCodec> parse_link_codec(std::string_view text) {
+  if (text == "raw") return LinkCodec::Raw;
+  if (text == "lz4") return LinkCodec::Lz4;
+  if (text == "zstd") return LinkCodec::Zstd;
+  return Failure{fmt::format("'{}' is not a link codec: raw, lz4 or zstd", text)};
+}
+
+std::string_view link_codec_name(LinkCodec codec) {
+  switch (codec) {
+    case LinkCodec::Raw:
+      return "raw";
+    case LinkCodec::Lz4:
+      return "lz4";
+    case LinkCodec::Zstd:
+      return "zstd";
+  }
+  return "?";
+}
+
+std::size_t max_frame_delta_bytes(int width, int height) {
+  const std::size_t rows = static_cast<std::size_t>(height);
+  return kHeaderBytes + bitmap_bytes(height) + rows * (1 + static_cast<std::size_t>(width) * 3);
+}
+
+void FrameDeltaEncoder::ZstdFree::operator()(ZSTD_CCtx_s* context) const {
+  ZSTD_freeCCtx(context);
+}
+
+FrameDeltaEncoder::FrameDeltaEncoder(int width, int height, LinkCodec codec)
+    : width_(width),
+      height_(height),
+      stride_(static_cast<std::size_t>(width) * 3),
+      codec_(codec),
+      previous_(stride_ * static_cast<std::size_t>(height), 0),
+      masked_(stride_),
+      bitmap_(bitmap_bytes(height)),
+      spatial_(stride_) {
+  block_.reserve(static_cast<std::size_t>(height) * (1 + stride_));
+  if (codec == LinkCodec::Zstd) zstd_.reset(ZSTD_createCCtx());
+}
+
+std::span<const std::uint8_t> FrameDeltaEncoder::encode(std::span<const std::uint8_t> frame,
+                                                        std::span<const BlankRect> blank) {
+  if (frame.size() != previous_.size())
+    throw std::invalid_argument(fmt::format("frame delta: a {}x{} frame is {} bytes, got {}",
+                                            width_, height_, previous_.size(), frame.size()));
+  std::fill(bitmap_.begin(), bitmap_.end(), std::uint8_t{0});
+  block_.clear();
+  changed_ = 0;
+  for (int y = 0; y < height_; ++y) {
+    const std::uint8_t* row = frame.data() + stride_ * static_cast<std::size_t>(y);
+    bool masked = false;
+    for (const BlankRect& r : blank) {
+      if (y < r.y || y >= r.y + r.h) continue;
+      if (!masked) std::memcpy(masked_.data(), row, stride_);
+      masked = true;
+      const int x0 = std::clamp(r.x, 0, width_), x1 = std::clamp(r.x + r.w, 0, width_);
+      if (x1 > x0)
+        std::memset(masked_.data() + static_cast<std::size_t>(x0) * 3, 0,
+                    static_cast<std::size_t>(x1 - x0) * 3);
+    }
+    encode_row(y, masked ? masked_.data() : row);
+  }
+
+  message_.resize(kHeaderBytes + bitmap_.size() +
+                  std::max(block_.size(), codec_ == LinkCodec::Lz4
+                                              ? static_cast<std::size_t>(LZ4_compressBound(
+                                                    static_cast<int>(block_.size())))
+                                              : ZSTD_compressBound(block_.size())));
+  std::uint8_t* out = message_.data() + kHeaderBytes + bitmap_.size();
+  const std::size_t room = message_.size() - kHeaderBytes - bitmap_.size();
+  std::size_t packed = 0;
+  LinkCodec used = codec_;
+  if (codec_ == LinkCodec::Lz4 && !block_.empty()) {
+    packed = static_cast<std::size_t>(LZ4_compress_default(
+        reinterpret_cast<const char*>(block_.data()), reinterpret_cast<char*>(out),
+        static_cast<int>(block_.size()), static_cast<int>(room)));
+  } else if (codec_ == LinkCodec::Zstd && !block_.empty()) {
+    const std::size_t n =
+        ZSTD_compressCCtx(zstd_.get(), out, room, block_.data(), block_.size(), kZstdLevel);
+    packed = ZSTD_isError(n) ? 0 : n;
+  }
+  if (packed == 0 || packed >= block_.size()) {  // not smaller: stored as it is
+    used = LinkCodec::Raw;
+    packed = block_.size();
+    std::memcpy(out, block_.data(), packed);
+  }
+  message_.resize(kHeaderBytes + bitmap_.size() + packed);
+  std::uint8_t* h = message_.data();
+  std::memcpy(h, kMagic.data(), kMagic.size());
+  h[4] = kVersion;
+  h[5] = static_cast<std::uint8_t>(used);
+  h[6] = h[7] = 0;
+  put32(h + 8, static_cast<std::uint32_t>(width_));
+  put32(h + 12, static_cast<std::uint32_t>(height_));
+  put32(h + 16, changed_);
+  put32(h + 20, static_cast<std::uint32_t>(packed));
+  std::memcpy(h + kHeaderBytes, bitmap_.data(), bitmap_.size());
+  return message_;
+}
+
+// One row: unchanged (nothing sent), or the prediction that leaves the smaller residual.
+void FrameDeltaEncoder::encode_row(int y, const std::uint8_t* row) {
+  std::uint8_t* previous = previous_.data() + stride_ * static_cast<std::size_t>(y);
+  if (std::memcmp(row, previous, stride_) == 0) return;
+  bitmap_[static_cast<std::size_t>(y) / 8] |= static_cast<std::uint8_t>(1u << (y % 8));
+  ++changed_;
+  const std::size_t at = block_.size();
+  block_.resize(at + 1 + stride_);
+  std::uint8_t* temporal = block_.data() + at + 1;
+  for (std::size_t i = 0; i < stride_; ++i) temporal[i] = row[i] ^ previous[i];
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, stride_); ++i) spatial_[i] = row[i];
+  for (std::size_t i = 3; i < stride_; ++i)
+    spatial_[i] = static_cast<std::uint8_t>(row[i] - row[i - 3]);
+  if (weight(spatial_.data(), stride_) < weight(temporal, stride_)) {
+    block_[at] = kSpatial;
+    std::memcpy(temporal, spatial_.data(), stride_);
+  } else {
+    block_[at] = kTemporal;
+  }
+  std::memcpy(previous, row, stride_);
+}
+
+FrameDeltaDecoder::FrameDeltaDecoder(int width, int height)
+    : width_(width),
+      height_(height),
+      stride_(static_cast<std::size_t>(width) * 3),
+      frame_(stride_ * static_cast<std::size_t>(height), 0),
+      block_(static_cast<std::size_t>(height) * (1 + stride_)) {}
+
+Status FrameDeltaDecoder::decode(std::span<const std::uint8_t> message) {
+  const std::size_t bitmap = bitmap_bytes(height_);
+  if (message.size() < kHeaderBytes + bitmap)
+    return Failure{fmt::format("a frame message of {} bytes is shorter than its header ({})",
+                               message.size(), kHeaderBytes + bitmap)};
+  const std::uint8_t* h = message.data();
+  if (!std::equal(kMagic.begin(), kMagic.end(), h) || h[4] != kVersion)
+    return Failure{"not a frame message (magic or version)"};
+  if (h[5] > static_cast<std::uint8_t>(LinkCodec::Zstd))
+    return Failure{fmt::format("unknown codec {}", h[5])};
+  const auto codec = static_cast<LinkCodec>(h[5]);
+  if (get32(h + 8) != static_cast<std::uint32_t>(width_) ||
+      get32(h + 12) != static_cast<std::uint32_t>(height_))
+    return Failure{
+        fmt::format("a {}x{} frame, expected {}x{}", get32(h + 8), get32(h + 12), width_, height_)};
+  const std::uint32_t changed = get32(h + 16), packed = get32(h + 20);
+  if (message.size() != kHeaderBytes + bitmap + packed)
+    return Failure{fmt::format("{} bytes, its header says {}", message.size(),
+                               kHeaderBytes + bitmap + std::size_t{packed})};
+  const std::uint8_t* rows = h + kHeaderBytes;
+  std::uint32_t marked = 0;
+  for (std::size_t i = 0; i < bitmap; ++i)
+    marked += static_cast<std::uint32_t>(__builtin_popcount(rows[i]));
+  if (height_ % 8 != 0 && (rows[bitmap - 1] >> (height_ % 8)) != 0)
+    return Failure{"rows marked below the frame"};
+  if (marked != changed)
+    return Failure{fmt::format("{} rows marked changed, its header says {}", marked, changed)};
+  const std::size_t expected = std::size_t{changed} * (1 + stride_);
+  const std::uint8_t* in = rows + bitmap;
+  std::size_t got = 0;
+  if (codec == LinkCodec::Raw) {
+    got = packed;
+    if (got == expected) std::memcpy(block_.data(), in, got);
+  } else if (codec == LinkCodec::Lz4) {
+    const int n = LZ4_decompress_safe(reinterpret_cast<const char*>(in),
+                                      reinterpret_cast<char*>(block_.data()),
+                                      static_cast<int>(packed), static_cast<int>(expected));
+    got = n < 0 ? expected + 1 : static_cast<std::size_t>(n);
+  } else {
+    const std::size_t n = ZSTD_decompress(block_.data(), expected, in, packed);
+    got = ZSTD_isError(n) ? expected + 1 : n;
+  }
+  if (got != expected)
+    return Failure{fmt::format("the {} block does not give the {} bytes of {} changed rows",
+                               link_codec_name(codec), expected, changed)};
+  for (std::uint32_t r = 0; r < changed; ++r)
+    if (block_[r * (1 + stride_)] > kSpatial)
+      return Failure{fmt::format("changed row {} has mode {}", r, block_[r * (1 + stride_)])};
+
+  const std::uint8_t* residual = block_.data();
+  for (int y = 0; y < height_; ++y) {
+    if (!(rows[static_cast<std::size_t>(y) / 8] & (1u << (y % 8)))) continue;
+    std::uint8_t* row = frame_.data() + stride_ * static_cast<std::size_t>(y);
+    const std::uint8_t* r = residual + 1;
+    if (residual[0] == kTemporal) {
+      for (std::size_t i = 0; i < stride_; ++i) row[i] ^= r[i];
+    } else {
+      for (std::size_t i = 0; i < std::min<std::size_t>(3, stride_); ++i) row[i] = r[i];
+      for (std::size_t i = 3; i < stride_; ++i)
+        row[i] = static_cast<std::uint8_t>(r[i] + row[i - 3]);
+    }
+    residual += 1 + stride_;
+  }
+  return {};
+}
+
+}  // namespace l2
