@@ -98,3 +98,22 @@ palette = struct.pack(">I", 6) + b"PLTE" + bytes(range(6))
 palette += struct.pack(">I", zlib.crc32(b"PLTE" + bytes(range(6))) & 0xFFFFFFFF)
 put("png_frame", "palette-2x1.png", png(2, 1, 3, 8, [b"\x00\x01"], palette))
 put("png_frame", "grey-2x1.png", png(2, 1, 0, 8, [b"\x10\x20"]))
+
+
+# --- frame_delta: width-1 and height-1 bytes, then one message (dvi_link/frame_delta.hpp) -----
+def frame_delta(width, height, rows):
+    """A stored (codec 0) message: rows maps a changed row to (mode, residual bytes)."""
+    bitmap = bytearray((height + 7) // 8)
+    block = b""
+    for y in sorted(rows):
+        bitmap[y // 8] |= 1 << (y % 8)
+        mode, residual = rows[y]
+        block += bytes([mode]) + residual
+    head = b"L2FD" + bytes([1, 0, 0, 0]) + struct.pack("<IIII", width, height, len(rows), len(block))
+    return bytes([width - 1, height - 1]) + head + bytes(bitmap) + block
+
+
+put("frame_delta", "unchanged-4x3", frame_delta(4, 3, {}))
+put("frame_delta", "xor-row-1", frame_delta(4, 3, {1: (0, bytes(range(12)))}))
+put("frame_delta", "sub-rows-0-2", frame_delta(2, 3, {0: (1, bytes([9] * 6)), 2: (0, bytes(6))}))
+put("frame_delta", "every-row-9x9", frame_delta(9, 9, {y: (y % 2, bytes([y] * 27)) for y in range(9)}))

@@ -4,7 +4,7 @@
 # executions, their rate, and libFuzzer's coverage figures (cov: code edges, ft: features) from
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
 # broke a promise; the input that did it is saved in build/fuzz/artifacts/<harness>/.
-# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all five)
+# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all six)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound).
 set -euo pipefail
@@ -16,7 +16,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file vizserver_wire png_frame)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file vizserver_wire png_frame frame_delta)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet

@@ -1,5 +1,7 @@
 #include "column_rank.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -16,6 +18,7 @@
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
 #include "vizserver/frame_assembler.hpp"
+#include "vizserver/tile_delta.hpp"
 
 namespace l2 {
 namespace {
@@ -252,7 +255,21 @@ class Column {
       const auto pipeserver = map_.pipeserver_of(status.MPI_SOURCE);
       if (!pipeserver) throw std::runtime_error("a tile from a rank that is no pipeserver");
       Status taken;
-      if (m.kind == mpi_wire::kTileKind) {
+      if (m.kind == mpi_wire::kTileDeltaKind) {
+        const viz::TileHeader header{m.frame, m.display, m.dx, m.dy, m.w, m.h, viz::TileKind{m.how},
+                                     m.key};
+        const std::span<const std::uint8_t> encoded = std::span(tile_bytes_).subspan(sizeof m);
+        if (const Status valid =
+                viz::validate_delta(header, static_cast<std::uint32_t>(32 + encoded.size()));
+            !valid.ok())
+          throw std::runtime_error("a tile message: " + valid.reason());
+        auto& deltas =
+            tile_deltas_.try_emplace(*pipeserver, assembler_->tile_delta_budget()).first->second;
+        Result<std::vector<std::uint8_t>> pixels = deltas.decode(header, encoded);
+        if (!pixels.ok())
+          throw std::runtime_error(fmt::format("pipeserver {}: {}", *pipeserver, pixels.reason()));
+        taken = assembler_->add_tile(*pipeserver, {header, std::move(pixels).value()});
+      } else if (m.kind == mpi_wire::kTileKind) {
         viz::ReceivedTile tile{
             {m.frame, m.display, m.dx, m.dy, m.w, m.h, viz::TileKind{m.how}, m.key},
             std::vector<std::uint8_t>(tile_bytes_.begin() + sizeof m, tile_bytes_.end())};
@@ -265,6 +282,8 @@ class Column {
       } else {
         taken = assembler_->finish(*pipeserver,
                                    {static_cast<std::uint32_t>(*pipeserver), m.frame, m.tiles});
+        if (const auto d = tile_deltas_.find(*pipeserver); taken.ok() && d != tile_deltas_.end())
+          d->second.end_frame();
       }
       if (!taken.ok()) throw std::runtime_error(taken.reason());
     }
@@ -313,7 +332,8 @@ class Column {
   std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
   std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
   std::vector<std::uint8_t> tile_bytes_;
-  ColumnShow* show_;  // --show monitors, or null
+  std::map<int, viz::TileDeltaDecoder> tile_deltas_;  // by pipeserver: its TILE_DELTA tiles
+  ColumnShow* show_;                                  // --show monitors, or null
   const std::function<void()> pump_ = [this] { pump_tiles(); };
 };
 

@@ -344,7 +344,7 @@ std::optional<DisplayPictures> MpiDviPath::shown() const {
 }
 
 void MpiDviPath::finish() {
-  std::uint64_t frame_bytes = 0, wire_bytes = 0, tile_bytes = 0;
+  std::uint64_t frame_bytes = 0, wire_bytes = 0, tile_bytes = 0, tile_wire = 0;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
   for (int s = 0; s < map_.pipeservers; ++s) {
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
@@ -358,6 +358,7 @@ void MpiDviPath::finish() {
     frame_bytes += static_cast<std::uint64_t>(in.next());
     wire_bytes += static_cast<std::uint64_t>(in.next());
     tile_bytes += static_cast<std::uint64_t>(in.next());
+    tile_wire += static_cast<std::uint64_t>(in.next());
   }
   end_columns();
   std::printf(
@@ -374,8 +375,12 @@ void MpiDviPath::finish() {
       wire_bytes > 0 ? static_cast<double>(frame_bytes) / static_cast<double>(wire_bytes) : 0.0,
       static_cast<double>(control_bytes_) / frames / 1e3);
   if (tile_bytes > 0) {
-    std::printf("network: %.3f MB per frame of tiles to the columns (vizserver path)\n",
-                static_cast<double>(tile_bytes) / frames / 1e6);
+    std::printf(
+        "network: %.3f MB per frame of tiles to the columns on the wire (%.3f MB raw, %.1fx "
+        "less; vizserver path)\n",
+        static_cast<double>(tile_wire) / frames / 1e6,
+        static_cast<double>(tile_bytes) / frames / 1e6,
+        tile_wire > 0 ? static_cast<double>(tile_bytes) / static_cast<double>(tile_wire) : 0.0);
   }
 }
 

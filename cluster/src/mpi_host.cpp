@@ -57,8 +57,9 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec 
   return links;
 }
 
-MpiTileSender::MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint64_t> bytes_sent)
-    : bytes_sent_(std::move(bytes_sent)) {
+MpiTileSender::MpiTileSender(const TileLayout& layout, LinkCodec codec,
+                             std::shared_ptr<SentBytes> bytes_sent)
+    : deltas_(codec), bytes_sent_(std::move(bytes_sent)) {
   const RankMap map = make_rank_map(layout);
   for (int c = 0; c < map.columns; ++c) column_ranks_.push_back(map.column_rank(c));
   sent_.assign(column_ranks_.size(), 0);
@@ -66,7 +67,7 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint
 
 void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                               const std::uint8_t* rgb, std::size_t stride) {
-  mpi_wire::TileMessage m{mpi_wire::kTileKind,
+  mpi_wire::TileMessage m{mpi_wire::kTileDeltaKind,
                           frame,
                           static_cast<std::uint32_t>(t.display),
                           t.x,
@@ -76,30 +77,31 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                           0,
                           static_cast<std::uint32_t>(t.how),
                           t.key};
-  const std::size_t row =
-      static_cast<std::size_t>(t.w) * 3 * (t.how == viz::TileKind::Depth ? 2 : 1);
-  message_.resize(sizeof m + row * static_cast<std::size_t>(t.h));
+  const viz::TileHeader h{frame, m.display, m.dx, m.dy, m.w, m.h, t.how, t.key};
+  const std::span<const std::uint8_t> encoded = deltas_.encode(h, rgb, stride);
+  message_.resize(sizeof m + encoded.size());
   std::memcpy(message_.data(), &m, sizeof m);
-  for (int y = 0; y < t.h; ++y)
-    std::memcpy(message_.data() + sizeof m + row * static_cast<std::size_t>(y),
-                rgb + stride * static_cast<std::size_t>(y), row);
+  std::memcpy(message_.data() + sizeof m, encoded.data(), encoded.size());
   const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
   const int to = column_ranks_[column];
   ++sent_[column];
   if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,
                MPI_COMM_WORLD) != MPI_SUCCESS)
     throw std::runtime_error(fmt::format("sending a tile to rank {} failed", to));
-  *bytes_sent_ += message_.size();
+  bytes_sent_->raw += sizeof m + h.pixel_bytes();
+  bytes_sent_->wire += message_.size();
 }
 
 void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t) {
+  deltas_.end_frame();
   for (std::size_t c = 0; c < column_ranks_.size(); ++c) {
     const int to = column_ranks_[c];
     const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, sent_[c], 0, 0};
     sent_[c] = 0;
     if (MPI_Send(&m, sizeof m, MPI_BYTE, to, mpi_wire::kTile, MPI_COMM_WORLD) != MPI_SUCCESS)
       throw std::runtime_error(fmt::format("sending the end of a frame to rank {} failed", to));
-    *bytes_sent_ += sizeof m;
+    bytes_sent_->raw += sizeof m;
+    bytes_sent_->wire += sizeof m;
   }
 }
 
@@ -118,9 +120,9 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
   }
 }
 
-void report_host_done(const SentBytes& frames, std::uint64_t tile_bytes) {
+void report_host_done(const SentBytes& frames, const SentBytes& tiles) {
   mpi_wire::send({static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
-                  static_cast<std::int64_t>(tile_bytes)},
+                  static_cast<std::int64_t>(tiles.raw), static_cast<std::int64_t>(tiles.wire)},
                  RankMap::kCoordinator, mpi_wire::kDone);
 }
 

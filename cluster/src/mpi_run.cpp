@@ -69,7 +69,7 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   h.pipeserver = pipeserver;
   h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", pipeserver)).string();
   HostLaunch launch = host_launch(o);
-  launch.extra_args = {"--mpi", "--link-codec", o.link_codec};
+  launch.extra_args = {"--mpi"};
   if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.

@@ -47,6 +47,10 @@ std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
     argv.push_back("--wall");
     argv.push_back(l.wall);
   }
+  if (!l.link_codec.empty()) {
+    argv.push_back("--link-codec");
+    argv.push_back(l.link_codec);
+  }
   argv.insert(argv.end(), l.extra_args.begin(), l.extra_args.end());
   return argv;
 }

@@ -74,6 +74,7 @@ struct HostLaunch {
   int ready_timeout_ms = 0;
   bool dvi = true;                      // DVI link and back-channel
   std::string viz_address;              // HOST:PORT of the compositing server; empty: none
+  std::string link_codec;               // --link-codec of every host; empty: the pipeserver's own
   std::vector<std::string> extra_args;  // appended to every host's arguments
   std::vector<std::string> env;         // "NAME=value" added to every host's environment
   bool control = false;                 // a control channel per host (--control-fd): balancing

@@ -526,6 +526,7 @@ HostLaunch host_launch(const RunOptions& o) {
   l.frames = o.frames;
   l.ready_timeout_ms = o.ready_timeout_ms;
   l.dvi = false;  // unless a path links the hosts
+  l.link_codec = o.link_codec;
   return l;
 }
 

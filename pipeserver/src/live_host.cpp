@@ -75,12 +75,13 @@ void send_tiles(TileSink& sender, FramePixels fb, const PipeserverPlan& plan, in
                       static_cast<std::uint32_t>(plan.tiles.size()));
 }
 
-std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver,
-                                      int display_count) {
+std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver, int display_count,
+                                      std::optional<LinkCodec> codec) {
   if (address.empty()) return nullptr;
   const viz::Endpoint at = viz::parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
+  options.codec = codec;
   return std::make_unique<TileSinkOf<viz::TileSender>>(
       viz::TileSender::connect(at.host, at.port, pipeserver, display_count, options));
 }
@@ -141,8 +142,9 @@ int run_live_host(const LiveHostOptions& o) {
   DviSender* const link = links.link.get();
   ReadyChannel* const channel = links.channel.get();
   const std::unique_ptr<TileSink> sender =
-      links.tiles ? std::move(links.tiles)
-                  : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()));
+      links.tiles
+          ? std::move(links.tiles)
+          : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()), o.link_codec);
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
 

@@ -12,6 +12,7 @@
 
 #include "balance/control_channel.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "dvi_link/frame_delta.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "pipeserver/scene.hpp"
 #include "sync_backchannel/ready_channel.hpp"
@@ -77,7 +78,9 @@ struct LiveHostOptions {
   std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
   MakeHostLinks links;      // how the link and back-channel are made; empty: none (--viz only)
   std::string viz;          // "host:port" of a compositing server to send tiles to; empty: none
-  std::string report;       // file: one line per frame (render and wait times)
+  // Tiles to the compositing server as what changed (TILE_DELTA) compressed so; none: whole.
+  std::optional<LinkCodec> link_codec;
+  std::string report;  // file: one line per frame (render and wait times)
   int ready_timeout_ms = 200;
   int ready_retries = 3;
   // Load balancing (balance/): after each frame the tiles' render times go out as TIMES, and

@@ -104,7 +104,7 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control, l2::LinkCodec
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const auto sent = std::make_shared<l2::SentBytes>();
-  const auto tiles_sent = std::make_shared<std::uint64_t>(0);
+  const auto tiles_sent = std::make_shared<l2::SentBytes>();
   // It lives no longer than the session (MPI_Finalize).
   if (control) o.control = std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator);
   o.links = [sent, tiles, tiles_sent, control, codec](const l2::TileLayout& layout,
@@ -113,7 +113,7 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control, l2::LinkCodec
     l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
-          l2::MpiTileSender(layout, tiles_sent));
+          l2::MpiTileSender(layout, codec, tiles_sent));
     }
     return links;
   };
@@ -217,9 +217,10 @@ int run_pipeserver(int argc, char** argv) {
   std::string link_codec = "zstd";
   group
       ->add_option("--link-codec", link_codec,
-                   "live, with --mpi: how frames are compressed on their way to the board "
-                   "columns, after each unchanged row is dropped and each changed one predicted "
-                   "(lossless: raw, lz4 or zstd)")
+                   "live: frames to the board columns (--mpi) and tiles to the compositing "
+                   "server (--viz, --mpi-viz) travel as what changed since the last frame, each "
+                   "changed row predicted, then compressed with CODEC: raw (not compressed), lz4 "
+                   "or zstd; lossless")
       ->check([](const std::string& v) { return l2::parse_link_codec(v).reason(); }, "CODEC")
       ->capture_default_str();
   // Every live option needs --live: without it they were ignored and one frame was written.
@@ -263,9 +264,8 @@ int run_pipeserver(int argc, char** argv) {
       std::fprintf(stderr, "pipeserver: --mpi-control or --control-fd, not both\n");
       return 2;
     }
-    if (mpi)
-      return run_mpi_host(live_options, mpi_viz, mpi_control,
-                          l2::parse_link_codec(link_codec).value());
+    live_options.link_codec = l2::parse_link_codec(link_codec).value();
+    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control, *live_options.link_codec);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

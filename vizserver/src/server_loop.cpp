@@ -205,6 +205,13 @@ bool ServerLoop::advance(Connection& c) {
           return false;
         }
         variable = c.tile->pixel_bytes();
+      } else if (header.kind == Kind::TileDelta) {
+        c.tile = decode_tile_ext(c.head.fixed());
+        if (const Status tile = validate_delta(*c.tile, header.payload_bytes); !tile.ok()) {
+          close(c, fmt::format("{}: {}", who(c), tile.reason()));
+          return false;
+        }
+        variable = header.payload_bytes - 32;
       } else if (header.kind == Kind::Error) {
         variable = header.payload_bytes;
       }
@@ -234,8 +241,15 @@ void ServerLoop::dispatch(Connection& c) {
   Status taken;  // c said HELLO: advance() let nothing else through
   if (kind == Kind::Tile || kind == Kind::TileExt) {
     taken = assembler_.add_tile(c.pipeserver, ReceivedTile{*c.tile, std::move(c.body)});
+  } else if (kind == Kind::TileDelta) {
+    if (!c.deltas) c.deltas.emplace(assembler_.tile_delta_budget());
+    Result<std::vector<std::uint8_t>> pixels = c.deltas->decode(*c.tile, c.body);
+    taken = pixels.ok() ? assembler_.add_tile(c.pipeserver,
+                                              ReceivedTile{*c.tile, std::move(pixels).value()})
+                        : Status(Failure{fmt::format("{}: {}", who(c), pixels.reason())});
   } else if (kind == Kind::FrameDone) {
     taken = assembler_.finish(c.pipeserver, decode_frame_done(fixed));
+    if (taken.ok() && c.deltas) c.deltas->end_frame();
   } else {
     taken = Failure{fmt::format("unexpected {} from a pipeserver", kind_name(kind))};
   }

@@ -16,6 +16,7 @@
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/frame_assembler.hpp"
 #include "vizserver/socket.hpp"
+#include "vizserver/tile_delta.hpp"
 #include "vizserver/wire.hpp"
 
 namespace l2::viz {
@@ -50,6 +51,7 @@ class ServerLoop {
     int pipeserver = -1;  // its id once HELLO was accepted
     MessageHead head{Protocol::Tiles};
     std::optional<TileHeader> tile;
+    std::optional<TileDeltaDecoder> deltas;  // its TILE_DELTAs' tiles, from the first
     std::vector<std::uint8_t> body;
     std::size_t body_got = 0;
     bool body_ready = false;

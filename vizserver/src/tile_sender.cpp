@@ -23,10 +23,9 @@ iovec part(const void* p, std::size_t n) {
 }  // namespace
 
 TileSender::TileSender(Fd fd, std::string peer, int pipeserver_id, SenderOptions options)
-    : fd_(std::move(fd)),
-      peer_(std::move(peer)),
-      pipeserver_id_(pipeserver_id),
-      options_(options) {}
+    : fd_(std::move(fd)), peer_(std::move(peer)), pipeserver_id_(pipeserver_id), options_(options) {
+  if (options_.codec) deltas_.emplace(*options_.codec);
+}
 
 TileSender TileSender::connect(const std::string& host, std::uint16_t port, int pipeserver_id,
                                int display_count, SenderOptions options) {
@@ -100,6 +99,13 @@ void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::
       !tile.ok()) {
     throw std::invalid_argument("send_tile: " + tile.reason());
   }
+  if (deltas_) {
+    const std::span<const std::uint8_t> encoded = deltas_->encode(h, rgb, stride);
+    const auto head = encode_delta(h, encoded.size());
+    const iovec parts[] = {part(head.data(), head.size()), part(encoded.data(), encoded.size())};
+    send(parts);
+    return;
+  }
   const auto head = encode(h);
   const auto head_ext = encode_ext(h);
   const std::size_t row_bytes = h.row_bytes();
@@ -119,6 +125,7 @@ void TileSender::send_tile(std::uint32_t frame, const TileTarget& t, const std::
 }
 
 void TileSender::finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) {
+  if (deltas_) deltas_->end_frame();
   const auto msg = encode(FrameDone{static_cast<std::uint32_t>(pipeserver_id_), frame, tiles_sent});
   const iovec parts[] = {part(msg.data(), msg.size())};
   send(parts);

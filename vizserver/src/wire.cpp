@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "dvi_link/frame_delta.hpp"
+
 namespace l2::viz {
 namespace {
 
@@ -11,11 +13,12 @@ constexpr std::size_t kMaxTilePayload =
     24 + std::size_t{kMaxTileSide} * kMaxTileSide * 3;  // about 48 MiB: one 4095x4095 tile
 constexpr std::size_t kMaxTileExtPayload =
     32 + std::size_t{kMaxTileSide} * kMaxTileSide * 6;  // a 4095x4095 DEPTH tile
+const std::size_t kMaxTileDeltaPayload = 32 + max_frame_delta_bytes(kMaxTileSide * 2, kMaxTileSide);
 constexpr std::size_t kMaxDisplayPayload =
     16 + std::size_t{kMaxDisplaySide} * kMaxDisplaySide * 3;  // 768 MiB: fits the u32 length
 
 bool of_protocol(std::uint16_t k, Protocol protocol) {
-  if (protocol == Protocol::Tiles) return k >= 1 && k <= 7;
+  if (protocol == Protocol::Tiles) return k >= 1 && k <= 8;
   return k == 6 || (k >= 16 && k <= 18);
 }
 
@@ -31,6 +34,8 @@ std::size_t max_payload(Kind kind) {
       return kMaxTilePayload;
     case Kind::TileExt:
       return kMaxTileExtPayload;
+    case Kind::TileDelta:
+      return kMaxTileDeltaPayload;
     case Kind::Display:
       return kMaxDisplayPayload;
     case Kind::Error:
@@ -72,6 +77,7 @@ std::size_t fixed_bytes(Kind kind) {
     case Kind::Error:
       return 0;
     case Kind::TileExt:
+    case Kind::TileDelta:
       return 32;
     case Kind::Listening:
       return 12;
@@ -99,6 +105,8 @@ const char* kind_name(Kind kind) {
       return "ERROR";
     case Kind::TileExt:
       return "TILE_EXT";
+    case Kind::TileDelta:
+      return "TILE_DELTA";
     case Kind::Listening:
       return "LISTENING";
     case Kind::Display:
@@ -143,6 +151,14 @@ std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
   std::copy(tile.begin() + kHeaderBytes, tile.end(), out.begin() + kHeaderBytes);
   put_u32(out.data() + 12 + 24, static_cast<std::uint32_t>(m.how));
   put_u32(out.data() + 12 + 28, m.key);
+  return out;
+}
+
+std::array<std::uint8_t, kHeaderBytes + 32> encode_delta(const TileHeader& m,
+                                                         std::size_t encoded_bytes) {
+  auto out = encode_ext(m);
+  put_u16(out.data() + 6, static_cast<std::uint16_t>(Kind::TileDelta));
+  put_u32(out.data() + 8, static_cast<std::uint32_t>(32 + encoded_bytes));
   return out;
 }
 
@@ -253,6 +269,19 @@ Status validate(const TileHeader& t, std::uint32_t payload_bytes) {
                                t.how == TileKind::Copy ? "TILE" : "TILE_EXT", t.w, t.h,
                                t.fixed_size() + t.pixel_bytes(), payload_bytes)};
   }
+  return {};
+}
+
+Status validate_delta(const TileHeader& t, std::uint32_t payload_bytes) {
+  // The tile's own checks, as if it came whole.
+  if (const Status tile = validate(t, static_cast<std::uint32_t>(t.fixed_size() + t.pixel_bytes()));
+      !tile.ok())
+    return tile;
+  const std::size_t most =
+      32 + max_frame_delta_bytes(static_cast<int>(t.row_bytes() / 3), static_cast<int>(t.h));
+  if (payload_bytes < 32 || payload_bytes > most)
+    return Failure{fmt::format("TILE_DELTA {}x{} with a payload of {} bytes, allowed 32..{}", t.w,
+                               t.h, payload_bytes, most)};
   return {};
 }
 

@@ -111,6 +111,30 @@ TEST(VizServerHostile, AHalfSentTileEndsTheRunAtTheStallTimeout) {
                         my_port));
 }
 
+// A TILE_DELTA that declares more encoded bytes than any tile, or than its own tile's changes,
+// can take is refused from its header, before anything is allocated; one whose bytes do not
+// decode is refused too. Each in one line naming the pipeserver. (A 4x4 tile: 32 fixed bytes,
+// then at most a 24-byte header, 1 byte of bitmap and 4 rows of 1 + 12 bytes.)
+TEST(VizServerHostile, TileDeltasTooLargeOrNotDecodingAreRefusedInOneLine) {
+  const std::vector<std::pair<std::uint32_t, std::string>> cases = {
+      {4'000'000'000u, "TILE_DELTA payload of 4000000032 bytes, allowed 32..100618813"},
+      {1000, "TILE_DELTA 4x4 with a payload of 1032 bytes, allowed 32..109"},
+      {40, "TILE_DELTA 4x4 on display 0: not a frame message (magic or version)"}};
+  for (const auto& [encoded, why] : cases) {
+    CompositingServer server(one_display(1));
+    server.start();
+    Fd raw = connect_tcp("127.0.0.1", server.port(), 2000ms);
+    const std::uint16_t my_port = local_port(raw.get());
+    send_bytes(raw.get(), encode(Hello{0, 1}));
+    ASSERT_EQ(first_reply(raw.get()).first, Kind::Welcome);
+    send_bytes(raw.get(), encode_delta(TileHeader{0, 0, 0, 0, 4, 4}, encoded));
+    if (encoded == 40) send_bytes(raw.get(), std::vector<std::uint8_t>(40, 0xAB));
+    ASSERT_TRUE(server.wait_finished(3000ms));
+    EXPECT_THAT(server.failure().reason(),
+                HasSubstr(fmt::format("pipeserver 0 (127.0.0.1:{}): {}", my_port, why)));
+  }
+}
+
 TEST(VizServerHostile, AStrangersErrorTextIsLoggedEscaped) {
   CompositingServer server(one_display(1));
   server.start();

@@ -12,6 +12,7 @@
 #include "dvi_link/dvi_link.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "vizserver/tile_delta.hpp"
 #include "vizserver/tile_sender.hpp"
 
 namespace l2 {
@@ -32,8 +33,9 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec 
 // column), SWAPPED from the coordinator.
 class MpiTileSender {
  public:
-  // `bytes_sent` counts the bytes of the tile messages it sends.
-  MpiTileSender(const TileLayout& layout, std::shared_ptr<std::uint64_t> bytes_sent);
+  // Tiles go as what changed since their last frame (tile_delta.hpp), compressed with `codec`;
+  // `bytes_sent` counts the bytes of the tiles it sends, raw and as tile messages.
+  MpiTileSender(const TileLayout& layout, LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent);
   void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
                  std::size_t stride);
   void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
@@ -44,12 +46,13 @@ class MpiTileSender {
   std::vector<int> column_ranks_;
   std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
   std::vector<std::uint8_t> message_;
+  viz::TileDeltaEncoder deltas_;
   std::optional<std::uint32_t> swapped_;
-  std::shared_ptr<std::uint64_t> bytes_sent_;
+  std::shared_ptr<SentBytes> bytes_sent_;
 };
 
 // Tells the coordinator this host ended well, its report written (it reads the reports next),
 // and how many bytes of frames (raw and on the wire) and of tiles it sent.
-void report_host_done(const SentBytes& frames, std::uint64_t tile_bytes);
+void report_host_done(const SentBytes& frames, const SentBytes& tiles);
 
 }  // namespace l2

@@ -40,7 +40,9 @@ struct TileMessage {
   std::uint32_t how = 0;
   std::uint32_t key = 0;
 };
-inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2;
+// Kind 3: a tile as what changed since its last frame (tile_delta.hpp), the encoded message
+// after the header.
+inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2, kTileDeltaKind = 3;
 
 // In a column's answer: a host's stamp that lands on another column's display, not read there.
 inline constexpr int kStampNotHere = -1;

@@ -11,6 +11,7 @@
 
 #include "vizserver/run_token.hpp"
 #include "vizserver/socket.hpp"
+#include "vizserver/tile_delta.hpp"
 #include "vizserver/wire.hpp"
 
 namespace l2::viz {
@@ -30,6 +31,8 @@ struct SenderOptions {
   std::chrono::milliseconds connect_timeout{5000};
   std::chrono::milliseconds io_timeout{10000};  // one send or the WELCOME, at most
   RunToken token{};                             // the run's token, sent in HELLO
+  // Tiles as TILE_DELTA, what changed since their last frame (tile_delta.hpp); none: whole.
+  std::optional<LinkCodec> codec;
 };
 
 class TileSender {
@@ -72,6 +75,7 @@ class TileSender {
   bool welcomed_ = false;
   std::string server_error_;  // the text of an ERROR the server sent, if any
   std::optional<std::uint32_t> last_swapped_;
+  std::optional<TileDeltaEncoder> deltas_;  // with options_.codec
 };
 
 }  // namespace l2::viz

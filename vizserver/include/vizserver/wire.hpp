@@ -36,6 +36,7 @@ enum class Kind : std::uint16_t {
   Swapped = 5,     // server -> every pipeserver: this frame is on the displays
   Error = 6,       // either way, both protocols: why the sender is closing the connection
   TileExt = 7,     // pipeserver -> server: a KEY or DEPTH tile (spec §7), composited
+  TileDelta = 8,   // pipeserver -> server: any tile, as what changed since its last frame
   Listening = 16,  // display stream (display_stream.hpp) from here on
   Display = 17,
   Shown = 18,
@@ -99,6 +100,10 @@ std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m);
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m);
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m);      // a TILE (Copy)
 std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m);  // TILE_EXT
+// TILE_DELTA: TILE_EXT's fixed part (any kind, Copy too), then `encoded_bytes` of a frame
+// delta message (tile_delta.hpp).
+std::array<std::uint8_t, kHeaderBytes + 32> encode_delta(const TileHeader& m,
+                                                         std::size_t encoded_bytes);
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m);
 std::array<std::uint8_t, kHeaderBytes + 4> encode(const Swapped& m);
 std::array<std::uint8_t, kHeaderBytes> encode_error_header(std::size_t text_bytes);
@@ -149,6 +154,9 @@ TileHeader decode_tile_ext(std::span<const std::uint8_t> fixed);
 FrameDone decode_frame_done(std::span<const std::uint8_t> fixed);
 Swapped decode_swapped(std::span<const std::uint8_t> fixed);
 Status validate(const TileHeader& t, std::uint32_t payload_bytes);
+// A TILE_DELTA's: the tile as validate() checks it, and an encoded part no larger than the
+// tile's changes can be (max_frame_delta_bytes), checked before anything is allocated.
+Status validate_delta(const TileHeader& t, std::uint32_t payload_bytes);
 
 // Little-endian helpers, exposed for tests that forge messages byte by byte.
 void put_u16(std::uint8_t* p, std::uint16_t v);

@@ -47,6 +47,14 @@ class FrameAssembler {
 
   int pipeserver_count() const { return static_cast<int>(pipeservers_.size()); }
   int display_count() const { return static_cast<int>(sizes_.size()); }
+  // The most bytes one pipeserver's TILE_DELTA tiles may hold (tile_delta.hpp): its tiles cover
+  // no more than every display, a DEPTH row is two, and a frame of moving tiles may hold both
+  // its old and new tiles: four times the displays' pixels.
+  std::size_t tile_delta_budget() const {
+    std::size_t bytes = 0;
+    for (const auto& [w, h] : sizes_) bytes += std::size_t(w) * std::size_t(h) * 3;
+    return 4 * bytes;
+  }
 
   // Protocol events of pipeserver `pipeserver` (0..pipeserver_count-1). An error return is one
   // line, "pipeserver 1: ..."; the pipeserver broke the rules or the run cannot go on.
