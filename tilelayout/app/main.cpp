@@ -8,6 +8,7 @@
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "network_needs.hpp"
 #include "tilelayout/fit.hpp"
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
@@ -133,7 +134,7 @@ int main(int argc, char** argv) {
     std::cerr << "tilelayout: " << e.what() << "\n";
     return 1;
   }
-  std::cout << l2::format_plan(layout);
+  std::cout << l2::format_plan(layout) << l2::format_network_needs(layout);
   try {
     if (!png_dir.empty()) write_pictures(layout, png_dir);
     if (!scanout_dir.empty()) write_scanout(layout, scanout_dir, parity == 1);

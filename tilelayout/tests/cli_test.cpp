@@ -110,6 +110,39 @@ TEST_F(Cli, ReportsThePixelClockOfEachPipeserversDviLink) {
   EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
 }
 
+// A wall of nine 160x120 displays tiled 80x60 (four tiles each, a 2-column header gap before
+// every strip), two 480x360 pipeservers, two board columns (displays 0-7 and 8).
+TEST_F(Cli, ReportsTheNetworkEachBoardColumnNeeds) {
+  const fs::path wall = write("two-columns.toml", R"(name = "3x3"
+[display_grid]
+columns = 3
+rows = 3
+width = 160
+height = 120
+[tiling]
+kind = "grid"
+tile_width = 80
+tile_height = 60
+[pipeservers]
+count = 2
+framebuffer_width = 480
+framebuffer_height = 360
+)");
+  const ChildRun r = run("--wall '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  // Both inputs feed both columns: 2 x 480 x 360 x 3 = 1.04 MB, x 8 bits x 60 Hz = 0.50 Gbit/s.
+  // Own strips: 4 tiles a display of (2 + 80) x 60 x 3 = 14760 bytes; column 0 has 8 displays
+  // (0.47 MB, 0.23 Gbit/s), column 1 one (0.06 MB, 0.03 Gbit/s).
+  EXPECT_NE(r.out.find("\n  board column 0 (displays 0,1,2,3,4,5,6,7): 2 inputs, 1.04 MB a frame "
+                       "as scanned out (0.50 Gbit/s); its own strips 0.47 MB (0.23 Gbit/s), the "
+                       "most that changes\n"
+                       "  board column 1 (displays 8): 2 inputs, 1.04 MB a frame as scanned out "
+                       "(0.50 Gbit/s); its own strips 0.06 MB (0.03 Gbit/s), the most that "
+                       "changes\n"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST_F(Cli, WarnsWhenAFramebufferNeedsMoreThanASingleDviLink) {
   const auto wall = [&](const std::string& name, int width, int height) {
     return write(name, replaced("framebuffer_width = 300\nframebuffer_height = 200",
