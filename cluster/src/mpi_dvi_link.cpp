@@ -56,6 +56,7 @@ std::uint64_t MpiDviSender::publish() {
                  "sending a frame", rank);
       bytes_sent_->raw += frame_.size();
       bytes_sent_->wire += s.message.size();
+      if (sequence_ == 1) bytes_sent_->first_wire += s.message.size();
     }
   }
   check_link(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),

@@ -90,6 +90,7 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
     throw std::runtime_error(fmt::format("sending a tile to rank {} failed", to));
   bytes_sent_->raw += sizeof m + h.pixel_bytes();
   bytes_sent_->wire += message_.size();
+  if (frame == 0) bytes_sent_->first_wire += message_.size();
 }
 
 void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t) {
@@ -122,7 +123,9 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
 
 void report_host_done(const SentBytes& frames, const SentBytes& tiles) {
   mpi_wire::send({static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
-                  static_cast<std::int64_t>(tiles.raw), static_cast<std::int64_t>(tiles.wire)},
+                  static_cast<std::int64_t>(frames.first_wire),
+                  static_cast<std::int64_t>(tiles.raw), static_cast<std::int64_t>(tiles.wire),
+                  static_cast<std::int64_t>(tiles.first_wire)},
                  RankMap::kCoordinator, mpi_wire::kDone);
 }
 

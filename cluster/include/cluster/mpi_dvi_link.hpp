@@ -22,9 +22,11 @@
 
 namespace l2 {
 
-// Bytes of frames sent: as scanned out (every column's copy) and as they went on the wire.
+// Bytes of frames sent: as scanned out (every column's copy) and as they went on the wire, and
+// of those on the wire the first frame's (it starts from black: what a still picture costs
+// is what comes after it).
 struct SentBytes {
-  std::uint64_t raw = 0, wire = 0;
+  std::uint64_t raw = 0, wire = 0, first_wire = 0;
 };
 
 // The columns a frame goes to, and what of it each has no use for (sent black).
