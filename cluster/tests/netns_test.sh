@@ -5,8 +5,8 @@
 #   1. the default wall over 3 hosts (render-a: coordinator + pipeservers 0-1, render-b:
 #      pipeservers 2-3, display-a: the column), both paths (--compare);
 #   2. a two-column wall with its columns on two hosts (display-a, display-b);
-#   3. pipeserver 2 killed on render-b: one line naming it with its host, exit non-zero, and
-#      nothing left running on any host.
+#   3. pipeserver 2 killed, then stopped, on render-b: one line naming it with its host, exit
+#      non-zero, and nothing left running on any host.
 # Exit 77 (skipped) where this machine cannot make network namespaces.
 # Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL
 set -euo pipefail
@@ -48,31 +48,37 @@ grep -q "over 2 board column rank(s)" "$out/two-columns.txt" ||
 echo "two-column wall, its columns on display-a and display-b:"
 same_displays "$out/one-2col" "$out/two-columns"
 
-# 3. Pipeserver 2 (rank 3, on render-b) killed mid-run.
-dir=$out/killed
-bash "$cluster" -- "$l2wall" run --mpi --frames 100000 --stall-timeout 1000 --ready-timeout 3000 \
-  --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
-run=$!
-for _ in $(seq 1200); do  # until the displays have swapped a few frames
-  [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
-  sleep 0.05
-done
-pid=
-for p in $(pgrep -f -- "$dir" || true); do
-  if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=3"; then pid=$p; fi
-done
-[[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
-kill -KILL "$pid"
-status=0
-wait "$run" || status=$?
-((status != 0)) || { echo "FAIL: exit 0 after a rank was killed"; exit 1; }
-line=$(grep -E "^l2wall: .*pipeserver 2 \(rank 3 on render-b, pid $pid\).*frame [0-9]+" "$dir.err") ||
-  { echo "FAIL: no line naming pipeserver 2 on render-b:"; cat "$dir.err"; exit 1; }
-echo "pipeserver 2 killed on render-b: $line"
-if grep -q "^cluster: left running" "$dir.err"; then
-  echo "FAIL: processes left on a host:"
-  grep "^cluster: left running" "$dir.err"
-  exit 1
-fi
-if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
+# 3. Pipeserver 2 (rank 3, on render-b) killed, then stopped, mid-run: one line naming it with
+# its host, exit non-zero, nothing left on any host (cluster.sh names what it had to kill).
+fault() {
+  local signal=$1 dir=$out/$1
+  bash "$cluster" -- "$l2wall" run --mpi --frames 100000 --stall-timeout 1000 --ready-timeout 3000 \
+    --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+  local run=$!
+  for _ in $(seq 1200); do  # until the displays have swapped a few frames
+    [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    sleep 0.05
+  done
+  local p pid=
+  for p in $(pgrep -f -- "$dir" || true); do
+    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=3"; then pid=$p; fi
+  done
+  [[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
+  kill -s "$signal" "$pid"
+  local status=0
+  wait "$run" || status=$?
+  ((status != 0)) || { echo "FAIL: exit 0 after rank 3 got SIG$signal"; exit 1; }
+  local line
+  line=$(grep -E "^l2wall: .*pipeserver 2 \(rank 3 on render-b, pid $pid\).*frame [0-9]+" "$dir.err") ||
+    { echo "FAIL: no line naming pipeserver 2 on render-b:"; cat "$dir.err"; exit 1; }
+  echo "pipeserver 2 SIG$signal on render-b: $line"
+  if grep -q "^cluster: left running" "$dir.err"; then
+    echo "FAIL: processes left on a host:"
+    grep "^cluster: left running" "$dir.err"
+    exit 1
+  fi
+  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
+}
+fault KILL
+fault STOP
 echo "nothing left running on any host"
