@@ -68,6 +68,7 @@ for ((round = 1; round <= rounds; round++)); do
   t0=$SECONDS
   round_failed=0
   times=
+  failed_here=
   for preset in "${phases[@]}"; do
     log="$logs/$preset-$round.log"
     p0=$SECONDS
@@ -80,11 +81,12 @@ for ((round = 1; round <= rounds; round++)); do
     # ctest's summary lists each failed test as "  <n> - <name> (Failed)".
     while read -r name; do
       failures["$preset $name"]=$((${failures["$preset $name"]:-0} + 1))
+      failed_here+=" $preset:$name"
     done < <(sed -n 's/^[[:space:]]*[0-9]\+ - \([^ ]*\) (.*)$/\1/p' "$log")
     load_alive
   done
   failed_rounds=$((failed_rounds + round_failed))
-  echo "=== round $round of $rounds: $((SECONDS - t0)) s (${times%, }), $([[ $round_failed = 0 ]] && echo passed || echo FAILED)"
+  echo "=== round $round of $rounds: $((SECONDS - t0)) s (${times%, }), $([[ $round_failed = 0 ]] && echo passed || echo "FAILED:$failed_here")"
 done
 if ((load)); then
   echo "=== load: $(grep -c '^load build .* finished' build/repeat-load.log || true) clean builds of the fuzz preset finished beside the tests"
