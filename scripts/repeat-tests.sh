@@ -6,13 +6,14 @@
 #
 # --load  loads the machine as CI does, for the whole run: beside the tests, a compile at the
 #         idle scheduling priority (SCHED_IDLE, as scripts/test.sh's builds beside the tests) —
-#         a clean build of the fuzz preset in a scratch folder (build/repeat-load), over and
-#         over, ended with the run. Its output: build/repeat-load.log.
+#         a clean build of the fuzz harnesses (the fuzz preset's l2_fuzzers, as test.sh
+#         builds them) in a scratch folder (build/repeat-load), over and over, ended with the
+#         run. Its output: build/repeat-load.log.
 #
 # Usage: scripts/repeat-tests.sh [--load] N
 set -euo pipefail
 cd "$(dirname "$0")/.."
-usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
 load=0
 while (($#)); do
   case $1 in
@@ -44,12 +45,12 @@ load_dir=build/repeat-load
 logs=$(mktemp -d)
 trap '[[ -z $load_pid ]] || kill -- -"$load_pid" 2>/dev/null || true; rm -rf "$logs"' EXIT
 if ((load)); then
-  echo "=== load: a clean build of the fuzz preset in $load_dir, over and over, at ${idle[*]}"
+  echo "=== load: a clean build of l2_fuzzers in $load_dir, over and over, at ${idle[*]}"
   setsid "${idle[@]}" bash -c "set -euo pipefail
     cmake --preset fuzz -B '$load_dir' >/dev/null
     for ((n = 1; ; ++n)); do
       cmake --build '$load_dir' --target clean >/dev/null
-      cmake --build '$load_dir' -j $jobs -- --quiet
+      cmake --build '$load_dir' -j $jobs --target l2_fuzzers -- --quiet
       echo \"load build \$n finished\"
     done" >build/repeat-load.log 2>&1 &
   load_pid=$!
@@ -89,7 +90,7 @@ for ((round = 1; round <= rounds; round++)); do
   echo "=== round $round of $rounds: $((SECONDS - t0)) s (${times%, }), $([[ $round_failed = 0 ]] && echo passed || echo "FAILED:$failed_here")"
 done
 if ((load)); then
-  echo "=== load: $(grep -c '^load build .* finished' build/repeat-load.log || true) clean builds of the fuzz preset finished beside the tests"
+  echo "=== load: $(grep -c '^load build .* finished' build/repeat-load.log || true) clean builds of l2_fuzzers finished beside the tests"
 fi
 
 echo "=== failures per test over $rounds rounds$( ((load)) && echo " under load"):"
