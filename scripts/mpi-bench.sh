@@ -4,10 +4,13 @@
 # bytes per frame on the network (each pipeserver's frame to every column it feeds, counted by
 # the senders) and the vizserver path's (tiles only, to the columns owning their displays),
 # with the link a real cluster would need for that wall at 60 Hz. mpirun uses the
-# TCP transport (--mca btl self,tcp), so the frames cross sockets even on one machine.
+# TCP transport (--mca btl self,tcp), so the frames cross sockets even on one machine. Without
+# MPIRUN-ARGS it runs on this machine over loopback only; with them, name the interfaces there.
 #
 #   scripts/mpi-bench.sh [--wall FILE] [--frames N] [--scene NAME] [--out DIR] [--build DIR]
-#                        [-- MPIRUN-ARGS...]   (e.g. -- --hostfile hosts)
+#                        [-- MPIRUN-ARGS...]   (e.g. -- --hostfile hosts
+#                                                     --mca btl_tcp_if_include 10.0.0.0/24
+#                                                     --mca oob_tcp_if_include 10.0.0.0/24)
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,7 +19,7 @@ frames=60
 scene=mesh
 out=$root/build/mpi-bench
 build=$root/build/default
-usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --wall) wall="--wall $2"; shift 2 ;;
@@ -34,20 +37,25 @@ l2wall=$build/l2wall/l2wall
 rm -rf "$out" && mkdir -p "$out"
 # mpirun refuses root unless told; said here, for this script's runs only.
 if [[ $(id -u) == 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+# On one machine, loopback only: Open MPI otherwise takes every interface up when the job
+# starts, and one that appears or goes away mid-run (a namespace's bridge) can hang it. On a
+# cluster, the interfaces are the caller's to name among MPIRUN-ARGS.
+mpirun=(mpirun --oversubscribe --mca btl self,tcp)
+if (($# == 0)); then mpirun+=(--mca btl_tcp_if_include lo --mca oob_tcp_if_include lo); fi
 args=(run $wall --scene "$scene" --frames "$frames" --refresh 0 --keep none --no-progress)
 # The vizserver path's tiles are counted in a run of both paths of its own (not timed).
 both=(run $wall --scene "$scene" --frames 10 --refresh 0 --keep none --no-progress --path both)
 
 # The ranks the wall needs, from l2wall's own refusal of -np 1.
-np=$( (mpirun -np 1 "$l2wall" "${args[@]}" --mpi --out "$out/np" 2>&1 || true) |
+np=$( ("${mpirun[@]}" -np 1 "$l2wall" "${args[@]}" --mpi --out "$out/np" 2>&1 || true) |
        sed -n 's/^l2wall: --mpi: this wall needs mpirun -np \([0-9]*\) .*/\1/p')
 [[ -n $np ]] || { echo "mpi-bench.sh: could not learn the rank count" >&2; exit 1; }
 
 fps() { sed -n 's/^l2wall run: .*: \([0-9.]*\) fps.*/\1/p' "$1"; }
 "$l2wall" "${args[@]}" --out "$out/one" >"$out/one.txt"
-mpirun --oversubscribe --mca btl self,tcp "$@" -np "$np" \
+"${mpirun[@]}" "$@" -np "$np" \
   "$l2wall" "${args[@]}" --mpi --out "$out/mpi" >"$out/mpi.txt"
-mpirun --oversubscribe --mca btl self,tcp "$@" -np "$np" \
+"${mpirun[@]}" "$@" -np "$np" \
   "$l2wall" "${both[@]}" --mpi --out "$out/both" >"$out/both.txt"
 one=$(fps "$out/one.txt") mpi=$(fps "$out/mpi.txt")
 tiles=$(sed -n 's/^network: \([0-9.]*\) MB per frame of tiles.*/\1/p' "$out/both.txt")

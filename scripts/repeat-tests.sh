@@ -1,48 +1,107 @@
 #!/usr/bin/env bash
-# The sanitizer phases of scripts/test.sh, N times over: builds the ASan and TSan test targets
-# once, then runs the ASan and the TSan ctest phase N times each, and counts failures per test.
-# A test that fails once in N is a flake to fix, not to re-run. Usage: scripts/repeat-tests.sh N
+# The three test phases of scripts/test.sh, N times over: builds what each needs once (release:
+# everything; ASan+UBSan and TSan: the executables their tests need), then runs the release
+# (default), the ASan and the TSan ctest phase N times each, and counts failures per test and
+# phase. A test that fails once in N is a flake to fix, not to re-run.
+#
+# --load  loads the machine as CI does, for the whole run: beside the tests, a compile at the
+#         idle scheduling priority (SCHED_IDLE, as scripts/test.sh's builds beside the tests) —
+#         a clean build of the fuzz harnesses (the fuzz preset's l2_fuzzers, as test.sh
+#         builds them) in a scratch folder (build/repeat-load), over and over, ended with the
+#         run. Its output: build/repeat-load.log.
+#
+# Usage: scripts/repeat-tests.sh [--load] N
 set -euo pipefail
 cd "$(dirname "$0")/.."
-rounds=${1:?usage: scripts/repeat-tests.sh N (rounds of the ASan and TSan phases)}
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
+load=0
+while (($#)); do
+  case $1 in
+    --load) load=1; shift ;;
+    -h | --help) usage; exit 0 ;;
+    -*) echo "repeat-tests.sh: unknown option $1" >&2; usage >&2; exit 2 ;;
+    *) break ;;
+  esac
+done
+(($# == 1)) || { echo "repeat-tests.sh: one N expected" >&2; usage >&2; exit 2; }
+rounds=$1
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "repeat-tests.sh: N must be a positive integer, got '$rounds'" >&2; exit 2; }
 
+phases=(default asan tsan)
+declare -A target=([default]=all [asan]=l2_asan_tests [tsan]=l2_tsan_tests)
 jobs=$(nproc)
 start=$SECONDS
-for preset in asan tsan; do
-  echo "=== $preset: build (l2_${preset}_tests)"
+for preset in "${phases[@]}"; do
+  echo "=== $preset: build (${target[$preset]})"
   cmake --preset "$preset" >/dev/null
-  cmake --build --preset "$preset" -j "$jobs" --target "l2_${preset}_tests" -- --quiet
+  cmake --build --preset "$preset" -j "$jobs" --target "${target[$preset]}" -- --quiet
 done
 
+# The load: its own process group (setsid), so that ending it ends the compiler under it.
+idle=(chrt --idle 0)
+"${idle[@]}" true 2>/dev/null || idle=(nice -n 19)
+load_pid=
+load_dir=build/repeat-load
 logs=$(mktemp -d)
-trap 'rm -rf "$logs"' EXIT
-declare -A failures=()
+trap '[[ -z $load_pid ]] || kill -- -"$load_pid" 2>/dev/null || true; rm -rf "$logs"' EXIT
+if ((load)); then
+  echo "=== load: a clean build of l2_fuzzers in $load_dir, over and over, at ${idle[*]}"
+  setsid "${idle[@]}" bash -c "set -euo pipefail
+    cmake --preset fuzz -B '$load_dir' >/dev/null
+    for ((n = 1; ; ++n)); do
+      cmake --build '$load_dir' --target clean >/dev/null
+      cmake --build '$load_dir' -j $jobs --target l2_fuzzers -- --quiet
+      echo \"load build \$n finished\"
+    done" >build/repeat-load.log 2>&1 &
+  load_pid=$!
+fi
+# A load build that failed would leave the tests on an idle machine: that ends the run.
+load_alive() {
+  if ((!load)) || kill -0 "$load_pid" 2>/dev/null; then return; fi
+  cat build/repeat-load.log
+  echo "=== load: the build beside the tests ended (above): the rounds would not be under load"
+  exit 1
+}
+
+declare -A failures=() phase_seconds=()
 failed_rounds=0
 for ((round = 1; round <= rounds; round++)); do
   t0=$SECONDS
   round_failed=0
-  for preset in asan tsan; do
+  times=
+  failed_here=
+  for preset in "${phases[@]}"; do
     log="$logs/$preset-$round.log"
+    p0=$SECONDS
     if ! ctest --preset "$preset" -j "$jobs" >"$log" 2>&1; then
       round_failed=1
       cp "$log" "build/$preset/repeat-round-$round.log"
     fi
+    times+="$preset $((SECONDS - p0)) s, "
+    phase_seconds[$preset]=$((${phase_seconds[$preset]:-0} + SECONDS - p0))
     # ctest's summary lists each failed test as "  <n> - <name> (Failed)".
     while read -r name; do
       failures["$preset $name"]=$((${failures["$preset $name"]:-0} + 1))
+      failed_here+=" $preset:$name"
     done < <(sed -n 's/^[[:space:]]*[0-9]\+ - \([^ ]*\) (.*)$/\1/p' "$log")
+    load_alive
   done
   failed_rounds=$((failed_rounds + round_failed))
-  echo "=== round $round of $rounds: $((SECONDS - t0)) s, $([[ $round_failed = 0 ]] && echo passed || echo FAILED)"
+  echo "=== round $round of $rounds: $((SECONDS - t0)) s (${times%, }), $([[ $round_failed = 0 ]] && echo passed || echo "FAILED:$failed_here")"
 done
+if ((load)); then
+  echo "=== load: $(grep -c '^load build .* finished' build/repeat-load.log || true) clean builds of l2_fuzzers finished beside the tests"
+fi
 
-echo "=== failures per test over $rounds rounds:"
+echo "=== failures per test over $rounds rounds$( ((load)) && echo " under load"):"
 if [[ ${#failures[@]} -eq 0 ]]; then
   echo "none"
 else
   for key in "${!failures[@]}"; do echo "${failures[$key]} $key"; done | sort -rn
   echo "(the log of each failed round: build/<preset>/repeat-round-<n>.log)"
 fi
+totals=
+for preset in "${phases[@]}"; do totals+="$preset ${phase_seconds[$preset]} s, "; done
+echo "=== time per phase over the $rounds rounds: ${totals%, }"
 echo "=== $rounds rounds in $((SECONDS - start)) s (build included)"
 [[ $failed_rounds -eq 0 ]]

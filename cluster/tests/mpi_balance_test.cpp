@@ -25,12 +25,14 @@ using namespace testing_support;
 
 constexpr int kFrames = 10;
 
-// Root may run mpirun here (containers, CI): said for this test only. hwloc's GL plugin would
-// open X display :0 in every rank (mpi_run_test.sh says why not). The default wall: 4
-// pipeservers, 1 board column, the coordinator.
+// mpirun as the shell tests start it (mpirun_local.sh says why each part): root allowed for
+// this test only, no hwloc GL plugin, TCP only and on loopback only, so an interface another
+// process adds mid-run is never used. The default wall: 4 pipeservers, 1 board column, the
+// coordinator.
 const std::string kMpirun =
     "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl "
-    "mpirun --oversubscribe --mca btl self,tcp -np 6";
+    "mpirun --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo "
+    "--mca oob_tcp_if_include lo -np 6";
 
 // Patience for a loaded machine (six ranks on few cores).
 const std::vector<std::string> kCommon{

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A wall over real mpirun ranks against the same wall on one machine: every display of the
-# last frame must be the same bytes. The TCP transport is forced (--mca btl self,tcp), so the
+# last frame must be the same bytes. The TCP transport is forced (mpirun_local.sh), so the
 # frames really cross sockets. Usage: mpi_run_test.sh L2WALL OUT NP PATH [WALL] (PATH dvi or
 # both; no WALL: the built-in default wall). Also: swap lock held in every refresh, and the
 # wrong -np is refused in one line naming the numbers. With PATH both, each run compares its
@@ -10,12 +10,8 @@
 set -euo pipefail
 l2wall=$1 out=$2 np=$3 path=$4 wall=${5:+--wall $5}
 frames=10
-# Root may run mpirun here (containers, CI): said for this test only, never for the user.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# hwloc's GL plugin (Open MPI's topology) opens X display :0 in every rank; an X server there
-# that goes away (another test's Xvfb) ends the rank with an X I/O error.
-export HWLOC_COMPONENTS=-gl
-mpirun=(mpirun --oversubscribe --mca btl self,tcp)
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+mpirun=("${mpirun_local[@]}")
 rm -rf "$out" && mkdir -p "$out"
 paths=(--path "$path")
 [[ $path == both ]] && paths+=(--compare)

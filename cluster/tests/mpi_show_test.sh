@@ -7,9 +7,8 @@
 set -euo pipefail
 l2wall=$1 out=$2 wall=$3
 frames=3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # this test only
-export HWLOC_COMPONENTS=-gl  # hwloc's GL plugin would open X display :0 in every rank
-mpirun=(mpirun -q --oversubscribe --mca btl self,tcp)
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+mpirun=("${mpirun_local[@]}" -q)
 rm -rf "$out" && mkdir -p "$out"
 command -v Xvfb >/dev/null || { echo "Xvfb is not installed: skipped"; exit 77; }  # ctest: skipped
 

@@ -16,15 +16,20 @@ using Clock = std::chrono::steady_clock;
 TEST(RefreshClock, TicksAtTheConfiguredRate) {
   // Tick n of the clock is n periods after its construction. A caller descheduled by a loaded
   // machine comes back late and the clock skips the ticks it missed (counted): so 30 waits end
-  // at tick 30 + missed, never before it and, with scheduling slack, not much after it. A clock
-  // at half the rate would end at tick 60.
+  // at tick 30 + missed, never before it. How long after it the caller runs again is the
+  // scheduler's, so the upper bound is the clock's own count, not a slack: one more wait counts
+  // every tick missed until it began, so it began before tick 32 + missed (the tick after the
+  // one it returns at), and `end` was read before it began. A clock at half the rate ends the
+  // 30 waits at tick 60, having missed none.
   const auto start = Clock::now();
   RefreshClock clock(100.0);
+  const auto built = Clock::now();
   for (int i = 0; i < 30; ++i) clock.wait_next();
-  const auto took = Clock::now() - start;
+  const auto end = Clock::now();
   const auto last_tick = (30 + clock.missed()) * 10ms;
-  EXPECT_GE(took, last_tick - 1ms);
-  EXPECT_LT(took, last_tick + 10ms + 100ms);
+  EXPECT_GE(end - start, last_tick - 1ms);
+  clock.wait_next();
+  EXPECT_LT(end - built, (32 + clock.missed()) * 10ms);
 }
 
 TEST(RefreshClock, RateZeroNeverWaits) {

@@ -63,8 +63,9 @@ TEST_P(AtTheRefreshRate, ANewFrameReachesTheDisplaysAtNearlyEveryRefresh) {
   EXPECT_EQ(refreshes, std::stoi(rows[frames][2]) + 1) << output;
   // Waiting for READY until the swap, as before spec §6.4 changed, every frame took two
   // refreshes. Now a frame whose hosts all had it ready comes at the next refresh, but for a
-  // host woken late now and then on a loaded machine.
-  EXPECT_LE(late_count, frames / 10) << "late frames:" << late << "\n" << output;
+  // host woken late now and then on a loaded machine: how often is the scheduler's, so the
+  // bound is half the frames, which that regression (all of them late) still exceeds.
+  EXPECT_LE(late_count, frames / 2) << "late frames:" << late << "\n" << output;
   expect_clean(run);
 }
 

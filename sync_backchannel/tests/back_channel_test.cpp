@@ -158,7 +158,7 @@ TEST(BackChannel, HostGivesUpAfterItsRetriesWithAClearErrorAndCarriesOn) {
   EXPECT_EQ(r.reason(), "no READY for frame 000009 on " + line.pty.slave_path() +
                             " after 2 SYNC? retries (3 waits of 60 ms)");
   EXPECT_GE(took, 180ms);
-  EXPECT_LT(took, 1s);
+  EXPECT_LT(took, 10 * 180ms);  // the three waits, with room for a loaded machine's wake-ups
   EXPECT_EQ(line.host->counts().wait_timeouts, 3u);
   // Exactly the two requests the protocol prescribes reached the emulator end.
   EXPECT_EQ(read_for(line.pty.master(), 100ms), "SYNC? 000009 D1\r\nSYNC? 000009 D1\r\n");

@@ -297,7 +297,7 @@ TEST(VizServerNet, StrangerTricklingBytesIsClosedAtTheAcceptTimeout) {
     reply = read_until_closed(raw.get(), 100ms);
   }
   ASSERT_TRUE(reply) << "still open after trickling a whole HELLO";
-  EXPECT_LT(Clock::now() - t0, 1500ms);
+  EXPECT_LT(Clock::now() - t0, 10 * o.accept_timeout);  // room for a loaded machine
   // The ERROR itself may be lost to a reset: a byte sent as the server closes is unread there.
   ASSERT_EQ(server.errors().size(), 1u);
   EXPECT_EQ(server.errors()[0],
@@ -396,7 +396,7 @@ TEST(VizServerNet, SilentPipeserverIsReportedAfterTheStallTimeout) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 0 (127.0.0.1:"));
     EXPECT_THAT(e.what(), HasSubstr("sent nothing for 0.3 s while frame 0 waits for it"));
   }
-  EXPECT_LT(Clock::now() - t0, 2000ms);
+  EXPECT_LT(Clock::now() - t0, 10 * o.stall_timeout);  // room for a loaded machine
   EXPECT_THROW(s1.wait_swapped(0, 2000ms), VizError);
 }
 
@@ -425,7 +425,7 @@ TEST(VizServerNet, PeerThatNeverSaysHelloIsClosedAtTheAcceptTimeout) {
   std::uint8_t head[kHeaderBytes];
   const auto t0 = Clock::now();
   recv_all(idle.get(), head, kHeaderBytes, Clock::now() + 2000ms, "server");  // its ERROR
-  EXPECT_LT(Clock::now() - t0, 1500ms);
+  EXPECT_LT(Clock::now() - t0, 10 * o.accept_timeout);  // room for a loaded machine
   ASSERT_EQ(server.errors().size(), 1u);
   EXPECT_EQ(server.errors()[0], fmt::format("connection from 127.0.0.1:{}: no complete HELLO "
                                             "within 0.2 s",
