@@ -2,7 +2,8 @@
 # The wall over MPI ranks against the same wall on one machine: frames/s of each (same wall,
 # scene and frames, the emulator at full speed: --refresh 0), their ratio, and the DVI path's
 # bytes per frame on the network (each pipeserver's frame to every column it feeds, counted by
-# the senders) and the vizserver path's (tiles only, to the columns owning their displays),
+# the senders, on the wire and raw) and the vizserver path's (tiles only, to the columns owning
+# their displays),
 # with the link a real cluster would need for that wall at 60 Hz. mpirun uses the
 # TCP transport (--mca btl self,tcp), so the frames cross sockets even on one machine. Without
 # MPIRUN-ARGS it runs on this machine over loopback only; with them, name the interfaces there.
@@ -58,12 +59,14 @@ fps() { sed -n 's/^l2wall run: .*: \([0-9.]*\) fps.*/\1/p' "$1"; }
 "${mpirun[@]}" "$@" -np "$np" \
   "$l2wall" "${both[@]}" --mpi --out "$out/both" >"$out/both.txt"
 one=$(fps "$out/one.txt") mpi=$(fps "$out/mpi.txt")
-tiles=$(sed -n 's/^network: \([0-9.]*\) MB per frame of tiles.*/\1/p' "$out/both.txt")
-mb=$(sed -n 's/^network: \([0-9.]*\) MB per frame.*/\1/p' "$out/mpi.txt")
-kb=$(sed -n 's/.*, \([0-9.]*\) KB per frame of refresh records.*/\1/p' "$out/mpi.txt")
+# "network: X MB a frame on the wire (Y MB raw, ...) of DVI frames ...": X, and Y as raw_*.
+wire() { sed -n "s/^network: \([0-9.]*\) MB a frame on the wire (\([0-9.]*\) MB raw.* of $2.*/\\$3/p" "$1"; }
+mb=$(wire "$out/mpi.txt" "DVI frames" 1) raw_mb=$(wire "$out/mpi.txt" "DVI frames" 2)
+tiles=$(wire "$out/both.txt" tiles 1) raw_tiles=$(wire "$out/both.txt" tiles 2)
+kb=$(sed -n 's/.*; \([0-9.]*\) KB a frame of refresh records.*/\1/p' "$out/mpi.txt")
 echo "wall: ${wall:-built-in default}, scene $scene, $frames frames, mpirun -np $np"
 echo "one machine: $one fps"
 echo "MPI (TCP):   $mpi fps ($(awk -v a="$mpi" -v b="$one" 'BEGIN{printf "%.2f", a/b}') x one machine)"
-echo "network, DVI path: $mb MB per frame of frames, $kb KB per frame of refresh records"
-echo "network, vizserver path: $tiles MB per frame of tiles"
+echo "network, DVI path: $mb MB per frame of frames on the wire ($raw_mb MB raw), $kb KB per frame of refresh records"
+echo "network, vizserver path: $tiles MB per frame of tiles on the wire ($raw_tiles MB raw)"
 echo "at 60 Hz: $(awk -v m="$mb" 'BEGIN{printf "%.1f", m*60*8/1000}') Gbit/s into the columns on the DVI path, $(awk -v m="$tiles" 'BEGIN{printf "%.1f", m*60*8/1000}') on the vizserver path"
