@@ -23,12 +23,12 @@ namespace {
 std::string sent_text(const SentBytes& b, double frames) {
   const double mb = 1e6;
   const double after = frames > 1 ? static_cast<double>(b.wire - b.first_wire) / (frames - 1) : 0;
-  return fmt::format("{:.3f} MB a frame on the wire ({:.3f} MB raw, {:.1f}x less; the first "
-                     "{:.3f} MB, then {:.3f} MB a frame)",
-                     static_cast<double>(b.wire) / frames / mb,
-                     static_cast<double>(b.raw) / frames / mb,
-                     b.wire > 0 ? static_cast<double>(b.raw) / static_cast<double>(b.wire) : 0.0,
-                     static_cast<double>(b.first_wire) / mb, after / mb);
+  return fmt::format(
+      "{:.3f} MB a frame on the wire ({:.3f} MB raw, {:.1f}x less; the first "
+      "{:.3f} MB, then {:.3f} MB a frame)",
+      static_cast<double>(b.wire) / frames / mb, static_cast<double>(b.raw) / frames / mb,
+      b.wire > 0 ? static_cast<double>(b.raw) / static_cast<double>(b.wire) : 0.0,
+      static_cast<double>(b.first_wire) / mb, after / mb);
 }
 
 using mpi_wire::Reader;
@@ -381,10 +381,10 @@ void MpiDviPath::finish() {
       "refreshes, over %d board column rank(s)\n",
       groups_.size(), static_cast<unsigned long long>(refreshes_), map_.columns);
   const double frames = frames_ > 0 ? frames_ : 1;
-  std::printf("network: %s of DVI frames (each to the columns it feeds); %.2f KB a frame of "
-              "refresh records between the coordinator and the columns\n",
-              sent_text(frames_sent, frames).c_str(),
-              static_cast<double>(control_bytes_) / frames / 1e3);
+  std::printf(
+      "network: %s of DVI frames (each to the columns it feeds); %.2f KB a frame of "
+      "refresh records between the coordinator and the columns\n",
+      sent_text(frames_sent, frames).c_str(), static_cast<double>(control_bytes_) / frames / 1e3);
   if (tiles_sent.raw > 0)
     std::printf("network: %s of tiles to the columns (vizserver path)\n",
                 sent_text(tiles_sent, frames).c_str());

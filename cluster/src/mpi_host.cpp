@@ -122,11 +122,11 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
 }
 
 void report_host_done(const SentBytes& frames, const SentBytes& tiles) {
-  mpi_wire::send({static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
-                  static_cast<std::int64_t>(frames.first_wire),
-                  static_cast<std::int64_t>(tiles.raw), static_cast<std::int64_t>(tiles.wire),
-                  static_cast<std::int64_t>(tiles.first_wire)},
-                 RankMap::kCoordinator, mpi_wire::kDone);
+  mpi_wire::send(
+      {static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
+       static_cast<std::int64_t>(frames.first_wire), static_cast<std::int64_t>(tiles.raw),
+       static_cast<std::int64_t>(tiles.wire), static_cast<std::int64_t>(tiles.first_wire)},
+      RankMap::kCoordinator, mpi_wire::kDone);
 }
 
 }  // namespace l2
