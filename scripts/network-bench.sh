@@ -13,7 +13,8 @@
 #              one-machine run (no MPI) and MPI on loopback;
 # and network.png, frames/s against link rate per wall. Needs root for the namespaces.
 #
-#   scripts/network-bench.sh [--frames N] [--out DIR] [--build DIR] [--only bytes|fps]
+#   scripts/network-bench.sh [--frames N] [--out DIR] [--build DIR] [--only bytes|fps] [--plot-only]
+# (--plot-only draws network.png again from OUT/fps.csv)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 frames=30 out=$root/build/network-bench build=$root/build/default only=
@@ -24,6 +25,7 @@ while (($#)); do
     --out) out=${2:?}; shift 2 ;;
     --build) build=${2:?}; shift 2 ;;
     --only) only=${2:?}; shift 2 ;;
+    --plot-only) only=plot; shift ;;
     -h | --help) usage; exit 0 ;;
     *) echo "network-bench.sh: unknown argument '$1' (--help)" >&2; exit 2 ;;
   esac
@@ -56,7 +58,7 @@ declare -A scene_args=([mesh]="--scene mesh" [swap]="--scene swap"
 field() { sed -n "$2" "$1" | head -1; }
 fps_of() { field "$1" 's/^l2wall run: .*: \([0-9.]*\) fps.*/\1/p'; }
 
-if [[ $only != fps ]]; then
+if [[ -z $only || $only == bytes ]]; then
   echo "wall,scene,dvi_raw_mb,dvi_wire_mb,dvi_ratio,dvi_after_first_mb,tiles_raw_mb,tiles_wire_mb,tiles_ratio,tiles_after_first_mb" \
     >"$out/bytes.csv"
   # "X MB a frame on the wire (Y MB raw, Zx less; the first F MB, then A MB a frame)" -> Y,X,Z,A
@@ -75,7 +77,7 @@ if [[ $only != fps ]]; then
   done
 fi
 
-if [[ $only != bytes ]]; then
+if [[ $only == fps || -z $only ]]; then
   echo "wall,where,link,codec,fps" >"$out/fps.csv"
   for wall in default 4x3; do
     n=$frames
@@ -97,7 +99,8 @@ if [[ $only != bytes ]]; then
       done
     done
   done
-  if command -v gnuplot >/dev/null; then
+fi
+if [[ $only != bytes ]] && command -v gnuplot >/dev/null; then
     # x: 1 = 1 Gbit/s, 2 = 10 Gbit/s, 3 = unshaped; one line per wall and codec.
     for wall in default 4x3; do
       for codec in zstd raw; do
@@ -109,22 +112,24 @@ if [[ $only != bytes ]]; then
         "$out/fps.csv" >"$out/plot-$wall-one.dat"
     done
     gnuplot <<GP
-set terminal pngcairo size 900,520 font "DejaVu Sans,11"
+set terminal pngcairo size 1000,440 font "DejaVu Sans,10"
 set output "$out/network.png"
-set title "The wall across three or four hosts (network namespaces), mesh scene, --refresh 0"
+set multiplot layout 1,2 title "The wall across hosts (network namespaces), mesh scene, --refresh 0: frames/s against each link's rate"
 set xrange [0.7:3.3]
 set xtics ("1 Gbit/s" 1, "10 Gbit/s" 2, "unshaped" 3)
 set ylabel "frames/s"
 set yrange [0:*]
-set key outside right
+set key bottom right
 set grid ytics
-plot "$out/plot-default-zstd.dat" with linespoints lw 2 title "default wall, changes (zstd)", \
-     "$out/plot-default-raw.dat" with linespoints lw 2 dt 2 title "default wall, uncompressed", \
-     "$out/plot-default-one.dat" with lines lc rgb "gray" dt 3 title "default wall, one machine", \
-     "$out/plot-4x3-zstd.dat" with linespoints lw 2 title "4x3 wall, changes (zstd)", \
-     "$out/plot-4x3-raw.dat" with linespoints lw 2 dt 2 title "4x3 wall, uncompressed", \
-     "$out/plot-4x3-one.dat" with lines lc rgb "black" dt 3 title "4x3 wall, one machine"
+set title "default wall: 4 pipeservers, 1 column, 3 hosts"
+plot "$out/plot-default-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
+     "$out/plot-default-raw.dat" with linespoints lw 2 dt 2 title "not compressed (raw)", \
+     "$out/plot-default-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
+set title "4x3 monitor wall: 8 pipeservers, 2 columns, 4 hosts"
+plot "$out/plot-4x3-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
+     "$out/plot-4x3-raw.dat" with linespoints lw 2 dt 2 title "not compressed (raw)", \
+     "$out/plot-4x3-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
+unset multiplot
 GP
     echo "plot: $out/network.png"
   fi
-fi
