@@ -182,12 +182,8 @@ int main(int argc, char** argv) {
                 "run the wall over MPI ranks: mpirun -np N l2wall run --wall WALL --mpi, N = 1 "
                 "coordinator + one rank per pipeserver + one per board column of the mesh, in "
                 "that rank order (docs/mpi-design.md); frames and READY travel as MPI messages");
-  run->add_option("--link-codec", o.link_codec,
-                  "frames to the board columns (--mpi) and tiles to the compositing server "
-                  "(--path vizserver|both) travel as what changed since the last frame, each "
-                  "changed row predicted, then compressed with CODEC: raw (not compressed), lz4 "
-                  "or zstd; lossless, the displays are the same bytes")
-      ->check([](const std::string& v) { return l2::parse_link_codec(v).reason(); }, "CODEC")
+  run->add_option("--link-codec", o.link_codec, std::string(l2::link_choice_help()))
+      ->check([](const std::string& v) { return l2::parse_link_choice(v).reason(); }, "CODEC")
       ->capture_default_str();
   // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
   l2::SceneOptions scene;

@@ -22,19 +22,31 @@ void check_link(int code, const char* what, int peer) {
 }  // namespace
 
 MpiDviSender::MpiDviSender(std::vector<ColumnFeed> columns, int coordinator_rank, int width,
-                           int height, LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent)
-    : coordinator_(coordinator_rank),
-      frame_(static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
-      bytes_sent_(std::move(bytes_sent)) {
+                           int height, std::shared_ptr<SentBytes> bytes_sent)
+    : coordinator_(coordinator_rank), bytes_sent_(std::move(bytes_sent)) {
   for (ColumnFeed& c : columns) {
-    const auto same = std::find_if(streams_.begin(), streams_.end(),
-                                   [&](const Stream& s) { return s.blank == c.blank; });
+    const auto same = std::find_if(streams_.begin(), streams_.end(), [&](const Stream& s) {
+      return s.codec == c.codec && s.blank == c.blank;
+    });
     if (same != streams_.end()) {
       same->ranks.push_back(c.rank);
       continue;
     }
-    streams_.push_back({std::move(c.blank), {c.rank}, FrameDeltaEncoder(width, height, codec), {}});
+    streams_.push_back(
+        {c.codec, std::move(c.blank), {c.rank}, FrameDeltaEncoder(width, height, c.codec), {}});
   }
+  const std::size_t frame = static_cast<std::size_t>(width) * height * kDviBytesPerPixel;
+  for (Stream& s : streams_) {
+    if (s.codec != LinkCodec::Whole || !s.blank.empty()) continue;
+    in_place_ = &s;
+    const std::size_t prefix = whole_frame_prefix_bytes(height);
+    s.message.resize(kSequenceBytes + prefix + frame);
+    write_whole_frame_prefix(width, height, std::span(s.message).subspan(kSequenceBytes));
+    frame_ = std::span(s.message).subspan(kSequenceBytes + prefix);
+    return;
+  }
+  own_frame_.resize(frame);
+  frame_ = own_frame_;
 }
 
 std::span<std::uint8_t> MpiDviSender::back_frame() {
@@ -45,10 +57,12 @@ std::uint64_t MpiDviSender::publish() {
   ++sequence_;
   std::vector<MPI_Request> requests;
   for (Stream& s : streams_) {
-    const std::span<const std::uint8_t> encoded = s.encoder.encode(frame_, s.blank);
-    s.message.resize(kSequenceBytes + encoded.size());
+    if (&s != in_place_) {
+      const std::span<const std::uint8_t> encoded = s.encoder.encode(frame_, s.blank);
+      s.message.resize(kSequenceBytes + encoded.size());
+      std::memcpy(s.message.data() + kSequenceBytes, encoded.data(), encoded.size());
+    }
     std::memcpy(s.message.data(), &sequence_, kSequenceBytes);
-    std::memcpy(s.message.data() + kSequenceBytes, encoded.data(), encoded.size());
     for (const int rank : s.ranks) {
       requests.emplace_back();
       check_link(MPI_Isend(s.message.data(), static_cast<int>(s.message.size()), MPI_BYTE, rank,
@@ -69,8 +83,9 @@ MpiDviReceiver::MpiDviReceiver(int source_rank, int width, int height)
     : source_(source_rank),
       width_(width),
       height_(height),
-      frame_bytes_(kSequenceBytes + static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
-      posted_(kSequenceBytes + max_frame_delta_bytes(width, height)),
+      frame_bytes_(static_cast<std::size_t>(width) * height * kDviBytesPerPixel),
+      buffer_bytes_(kSequenceBytes + max_frame_delta_bytes(width, height)),
+      posted_(buffer_bytes_),
       decoder_(width, height) {
   post();
 }
@@ -90,6 +105,13 @@ void MpiDviReceiver::post() {
              "receiving a frame", source_);
 }
 
+std::vector<std::uint8_t> MpiDviReceiver::spare_buffer() {
+  if (spare_.empty()) return std::vector<std::uint8_t>(buffer_bytes_);
+  std::vector<std::uint8_t> b = std::move(spare_.back());
+  spare_.pop_back();
+  return b;
+}
+
 bool MpiDviReceiver::poll() {
   int done = 0;
   MPI_Status status;
@@ -98,31 +120,35 @@ bool MpiDviReceiver::poll() {
   int count = 0;
   MPI_Get_count(&status, MPI_BYTE, &count);
   const auto n = static_cast<std::size_t>(count);
-  // Every frame is decoded as it arrives, even one dropped later: the next builds on it.
-  const Status decoded =
-      n < kSequenceBytes
-          ? Status(Failure{fmt::format("{} bytes", n)})
-          : decoder_.decode(std::span(posted_).subspan(kSequenceBytes, n - kSequenceBytes));
-  if (!decoded.ok())
-    throw std::runtime_error(
-        fmt::format("DVI link over MPI: rank {} sent a frame that does not decode: {}", source_,
-                    decoded.reason()));
-  std::vector<std::uint8_t> frame;
-  if (!spare_.empty()) {
-    frame = std::move(spare_.back());
-    spare_.pop_back();
+  const std::span<const std::uint8_t> message =
+      std::span(posted_).subspan(std::min(n, kSequenceBytes), n - std::min(n, kSequenceBytes));
+  const auto refuse = [&](const std::string& why) {
+    return std::runtime_error(fmt::format(
+        "DVI link over MPI: rank {} sent a frame that does not decode: {}", source_, why));
+  };
+  if (n < kSequenceBytes) throw refuse(fmt::format("{} bytes", n));
+  if (decoder_.check_whole(message).ok()) {
+    // Routed where it arrived; the receive goes on into another buffer.
+    arrived_.push_back({std::move(posted_), kSequenceBytes + whole_frame_prefix_bytes(height_)});
+    posted_ = spare_buffer();
+    decoder_behind_ = true;
+  } else {
+    // Every change is applied as it arrives, even to a frame dropped later: the next builds on
+    // it. A sender's frames to one column all travel one way, so none follows a whole frame.
+    if (decoder_behind_) throw refuse("changes after whole frames");
+    if (const Status s = decoder_.decode(message); !s.ok()) throw refuse(s.reason());
+    Held frame{spare_buffer(), kSequenceBytes};
+    std::memcpy(frame.bytes.data(), posted_.data(), kSequenceBytes);
+    std::memcpy(frame.bytes.data() + kSequenceBytes, decoder_.frame().data(), frame_bytes_);
+    arrived_.push_back(std::move(frame));
   }
-  frame.resize(frame_bytes_);
-  std::memcpy(frame.data(), posted_.data(), kSequenceBytes);
-  std::memcpy(frame.data() + kSequenceBytes, decoder_.frame().data(), decoder_.frame().size());
-  arrived_.push_back(std::move(frame));
   post();
   return true;
 }
 
-std::uint64_t MpiDviReceiver::sequence_of(const std::vector<std::uint8_t>& m) {
+std::uint64_t MpiDviReceiver::sequence_of(const Held& m) {
   std::uint64_t s = 0;
-  std::memcpy(&s, m.data(), kSequenceBytes);
+  std::memcpy(&s, m.bytes.data(), kSequenceBytes);
   return s;
 }
 
@@ -132,14 +158,14 @@ void MpiDviReceiver::take(std::uint64_t sequence, const std::function<void()>& w
     while (poll()) {
     }
     while (!arrived_.empty() && sequence_of(arrived_.front()) < sequence) {
-      spare_.push_back(std::move(arrived_.front()));
+      spare_.push_back(std::move(arrived_.front().bytes));
       arrived_.pop_front();
     }
     if (!arrived_.empty()) break;
     watch();
     std::this_thread::sleep_for(std::chrono::microseconds(50));
   }
-  if (current_) spare_.push_back(std::move(*current_));
+  if (current_) spare_.push_back(std::move(current_->bytes));
   current_ = std::move(arrived_.front());
   arrived_.pop_front();
 }
@@ -147,7 +173,7 @@ void MpiDviReceiver::take(std::uint64_t sequence, const std::function<void()>& w
 std::optional<FrameView> MpiDviReceiver::latest() {
   if (!current_) return std::nullopt;
   FrameView v;
-  v.pixels = current_->data() + kSequenceBytes;
+  v.pixels = current_->bytes.data() + current_->rows;
   v.width = width_;
   v.height = height_;
   v.stride = static_cast<std::size_t>(width_) * kDviBytesPerPixel;

@@ -38,30 +38,42 @@ std::vector<BlankRect> other_columns_strips(const PipeserverPlan& plan, int colu
 
 }  // namespace
 
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec codec,
+CodecTo codec_to(std::optional<LinkCodec> asked, std::function<bool(int rank)> beside) {
+  return [asked, beside = std::move(beside)](int rank) {
+    return asked ? *asked : beside(rank) ? LinkCodec::Whole : LinkCodec::Zstd;
+  };
+}
+
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
                             std::shared_ptr<SentBytes> bytes_sent, bool every_column) {
   const RankMap map = make_rank_map(layout, every_column);
   const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(pipeserver)];
   std::vector<ColumnFeed> columns;
   for (const int c : map.columns_of_pipeserver[static_cast<std::size_t>(pipeserver)]) {
-    // A balanced run's layouts move tiles between columns: every column gets every strip.
-    columns.push_back({map.column_rank(c),
-                       every_column ? std::vector<BlankRect>{} : other_columns_strips(plan, c)});
+    const int rank = map.column_rank(c);
+    const LinkCodec how = codec(rank);
+    // A balanced run's layouts move tiles between columns: every column gets every strip. A
+    // whole frame costs the same with black strips as without.
+    const bool blank = !every_column && how != LinkCodec::Whole;
+    columns.push_back(
+        {rank, how, blank ? other_columns_strips(plan, c) : std::vector<BlankRect>{}});
   }
   MpiHostLinks links;
-  links.link =
-      std::make_unique<MpiDviSender>(std::move(columns), RankMap::kCoordinator, plan.fb_width,
-                                     plan.fb_height, codec, std::move(bytes_sent));
+  links.link = std::make_unique<MpiDviSender>(std::move(columns), RankMap::kCoordinator,
+                                              plan.fb_width, plan.fb_height, std::move(bytes_sent));
   links.channel =
       std::make_unique<MpiReadyChannel>(RankMap::kCoordinator, "MPI rank 0 (coordinator)");
   return links;
 }
 
-MpiTileSender::MpiTileSender(const TileLayout& layout, LinkCodec codec,
+MpiTileSender::MpiTileSender(const TileLayout& layout, const CodecTo& codec,
                              std::shared_ptr<SentBytes> bytes_sent)
-    : deltas_(codec), bytes_sent_(std::move(bytes_sent)) {
+    : bytes_sent_(std::move(bytes_sent)) {
   const RankMap map = make_rank_map(layout);
-  for (int c = 0; c < map.columns; ++c) column_ranks_.push_back(map.column_rank(c));
+  for (int c = 0; c < map.columns; ++c) {
+    column_ranks_.push_back(map.column_rank(c));
+    deltas_.emplace_back(codec(map.column_rank(c)));
+  }
   sent_.assign(column_ranks_.size(), 0);
 }
 
@@ -78,11 +90,11 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                           static_cast<std::uint32_t>(t.how),
                           t.key};
   const viz::TileHeader h{frame, m.display, m.dx, m.dy, m.w, m.h, t.how, t.key};
-  const std::span<const std::uint8_t> encoded = deltas_.encode(h, rgb, stride);
+  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
+  const std::span<const std::uint8_t> encoded = deltas_[column].encode(h, rgb, stride);
   message_.resize(sizeof m + encoded.size());
   std::memcpy(message_.data(), &m, sizeof m);
   std::memcpy(message_.data() + sizeof m, encoded.data(), encoded.size());
-  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
   const int to = column_ranks_[column];
   ++sent_[column];
   if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,
@@ -94,7 +106,7 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
 }
 
 void MpiTileSender::finish_frame(std::uint32_t frame, std::uint32_t) {
-  deltas_.end_frame();
+  for (viz::TileDeltaEncoder& d : deltas_) d.end_frame();
   for (std::size_t c = 0; c < column_ranks_.size(); ++c) {
     const int to = column_ranks_[c];
     const mpi_wire::TileMessage m{mpi_wire::kFrameDoneKind, frame, 0, 0, 0, 0, 0, sent_[c], 0, 0};

@@ -28,6 +28,7 @@ constexpr int kHostBytes = 64;
 struct WireIdentity {
   int pid = 0;
   std::array<char, kHostBytes> host{};
+  std::array<char, 128> stack{};
 };
 
 }  // namespace
@@ -40,10 +41,12 @@ MpiSession::MpiSession() {
   WireIdentity self;
   self.pid = static_cast<int>(getpid());
   gethostname(self.host.data(), self.host.size() - 1);
-  std::vector<WireIdentity> all(rank_ == 0 ? static_cast<std::size_t>(size_) : 0);
-  MPI_Gather(&self, sizeof self, MPI_BYTE, all.data(), sizeof self, MPI_BYTE, 0, MPI_COMM_WORLD);
-  if (rank_ != 0) all.push_back(self);
-  for (const WireIdentity& w : all) identities_.push_back({w.pid, std::string(w.host.data())});
+  const std::string stack = network_stack_id();
+  std::memcpy(self.stack.data(), stack.data(), std::min(stack.size(), self.stack.size() - 1));
+  std::vector<WireIdentity> all(static_cast<std::size_t>(size_));
+  MPI_Allgather(&self, sizeof self, MPI_BYTE, all.data(), sizeof self, MPI_BYTE, MPI_COMM_WORLD);
+  for (const WireIdentity& w : all)
+    identities_.push_back({w.pid, std::string(w.host.data()), std::string(w.stack.data())});
   connect_liveness();
 }
 

@@ -71,7 +71,8 @@ Result<LinkCodec> parse_link_codec(std::string_view text) {
   if (text == "raw") return LinkCodec::Raw;
   if (text == "lz4") return LinkCodec::Lz4;
   if (text == "zstd") return LinkCodec::Zstd;
-  return Failure{fmt::format("'{}' is not a link codec: raw, lz4 or zstd", text)};
+  if (text == "whole") return LinkCodec::Whole;
+  return Failure{fmt::format("'{}' is not a link codec: raw, lz4, zstd or whole", text)};
 }
 
 std::string_view link_codec_name(LinkCodec codec) {
@@ -82,8 +83,48 @@ std::string_view link_codec_name(LinkCodec codec) {
       return "lz4";
     case LinkCodec::Zstd:
       return "zstd";
+    case LinkCodec::Whole:
+      return "whole";
   }
   return "?";
+}
+
+Result<std::optional<LinkCodec>> parse_link_choice(std::string_view text) {
+  if (text == "auto") return std::optional<LinkCodec>();
+  Result<LinkCodec> codec = parse_link_codec(text);
+  if (!codec.ok()) return Failure{fmt::format("'{}' is not auto, raw, lz4, zstd or whole", text)};
+  return std::optional<LinkCodec>(codec.value());
+}
+
+std::string_view link_choice_help() {
+  return "how frames travel to the board columns (--mpi) and tiles to the compositing server: "
+         "zstd, lz4 or raw send what changed since the last frame (unchanged rows dropped, "
+         "changed ones predicted, then compressed, or not for raw), whole sends every row as it "
+         "is; auto: zstd to a machine of its own, whole on the same machine, where a copy costs "
+         "less. Lossless: the displays are the same bytes";
+}
+
+std::size_t whole_frame_prefix_bytes(int height) {
+  return kHeaderBytes + bitmap_bytes(height);
+}
+
+void write_whole_frame_prefix(int width, int height, std::span<std::uint8_t> out) {
+  const std::size_t bitmap = bitmap_bytes(height);
+  if (out.size() < kHeaderBytes + bitmap)
+    throw std::invalid_argument("frame delta: no room for a whole frame's header");
+  std::uint8_t* h = out.data();
+  std::memcpy(h, kMagic.data(), kMagic.size());
+  h[4] = kVersion;
+  h[5] = static_cast<std::uint8_t>(LinkCodec::Whole);
+  h[6] = h[7] = 0;
+  const std::size_t frame = static_cast<std::size_t>(width) * 3 * static_cast<std::size_t>(height);
+  put32(h + 8, static_cast<std::uint32_t>(width));
+  put32(h + 12, static_cast<std::uint32_t>(height));
+  put32(h + 16, static_cast<std::uint32_t>(height));
+  put32(h + 20, static_cast<std::uint32_t>(frame));
+  std::fill(h + kHeaderBytes, h + kHeaderBytes + bitmap, std::uint8_t{0xFF});
+  if (height % 8 != 0)
+    h[kHeaderBytes + bitmap - 1] = static_cast<std::uint8_t>((1u << (height % 8)) - 1);
 }
 
 std::size_t max_frame_delta_bytes(int width, int height) {
@@ -113,6 +154,7 @@ std::span<const std::uint8_t> FrameDeltaEncoder::encode(std::span<const std::uin
   if (frame.size() != previous_.size())
     throw std::invalid_argument(fmt::format("frame delta: a {}x{} frame is {} bytes, got {}",
                                             width_, height_, previous_.size(), frame.size()));
+  if (codec_ == LinkCodec::Whole) return encode_whole(frame, blank);
   std::fill(bitmap_.begin(), bitmap_.end(), std::uint8_t{0});
   block_.clear();
   changed_ = 0;
@@ -168,6 +210,22 @@ std::span<const std::uint8_t> FrameDeltaEncoder::encode(std::span<const std::uin
   return message_;
 }
 
+std::span<const std::uint8_t> FrameDeltaEncoder::encode_whole(std::span<const std::uint8_t> frame,
+                                                              std::span<const BlankRect> blank) {
+  const std::size_t prefix = whole_frame_prefix_bytes(height_);
+  message_.resize(prefix + frame.size());
+  write_whole_frame_prefix(width_, height_, message_);
+  std::uint8_t* out = message_.data() + prefix;
+  std::memcpy(out, frame.data(), frame.size());
+  for (const BlankRect& r : blank) {
+    const int x0 = std::clamp(r.x, 0, width_), x1 = std::clamp(r.x + r.w, 0, width_);
+    for (int y = std::max(r.y, 0); y < std::min(r.y + r.h, height_) && x1 > x0; ++y)
+      std::memset(out + stride_ * static_cast<std::size_t>(y) + static_cast<std::size_t>(x0) * 3, 0,
+                  static_cast<std::size_t>(x1 - x0) * 3);
+  }
+  return message_;
+}
+
 // One row: unchanged (nothing sent), or the prediction that leaves the smaller residual.
 void FrameDeltaEncoder::encode_row(int y, const std::uint8_t* row) {
   std::uint8_t* previous = previous_.data() + stride_ * static_cast<std::size_t>(y);
@@ -196,6 +254,46 @@ FrameDeltaDecoder::FrameDeltaDecoder(int width, int height)
       block_(static_cast<std::size_t>(height) * (1 + stride_)) {}
 
 Status FrameDeltaDecoder::decode(std::span<const std::uint8_t> message) {
+  const Result<LinkCodec> checked = check(message);
+  if (!checked.ok()) return Failure{checked.reason()};
+  const LinkCodec codec = checked.value();
+  const std::size_t bitmap = bitmap_bytes(height_);
+  const std::uint8_t* h = message.data();
+  const std::uint32_t changed = get32(h + 16), packed = get32(h + 20);
+  const std::uint8_t* rows = h + kHeaderBytes;
+  const std::uint8_t* in = rows + bitmap;
+  if (codec == LinkCodec::Whole) {
+    std::memcpy(frame_.data(), in, frame_.size());
+    return {};
+  }
+  const std::size_t expected = std::size_t{changed} * (1 + stride_);
+  std::size_t got = 0;
+  if (codec == LinkCodec::Raw) {
+    got = packed;
+    if (got == expected) std::memcpy(block_.data(), in, got);
+  } else if (codec == LinkCodec::Lz4) {
+    const int n = LZ4_decompress_safe(reinterpret_cast<const char*>(in),
+                                      reinterpret_cast<char*>(block_.data()),
+                                      static_cast<int>(packed), static_cast<int>(expected));
+    got = n < 0 ? expected + 1 : static_cast<std::size_t>(n);
+  } else {
+    const std::size_t n = ZSTD_decompress(block_.data(), expected, in, packed);
+    got = ZSTD_isError(n) ? expected + 1 : n;
+  }
+  if (got != expected)
+    return Failure{fmt::format("the {} block does not give the {} bytes of {} changed rows",
+                               link_codec_name(codec), expected, changed)};
+  return apply(rows, changed);
+}
+
+Status FrameDeltaDecoder::check_whole(std::span<const std::uint8_t> message) const {
+  const Result<LinkCodec> checked = check(message);
+  if (!checked.ok()) return Failure{checked.reason()};
+  if (checked.value() != LinkCodec::Whole) return Failure{"not a whole frame"};
+  return {};
+}
+
+Result<LinkCodec> FrameDeltaDecoder::check(std::span<const std::uint8_t> message) const {
   const std::size_t bitmap = bitmap_bytes(height_);
   if (message.size() < kHeaderBytes + bitmap)
     return Failure{fmt::format("a frame message of {} bytes is shorter than its header ({})",
@@ -203,7 +301,7 @@ Status FrameDeltaDecoder::decode(std::span<const std::uint8_t> message) {
   const std::uint8_t* h = message.data();
   if (!std::equal(kMagic.begin(), kMagic.end(), h) || h[4] != kVersion)
     return Failure{"not a frame message (magic or version)"};
-  if (h[5] > static_cast<std::uint8_t>(LinkCodec::Zstd))
+  if (h[5] > static_cast<std::uint8_t>(LinkCodec::Whole))
     return Failure{fmt::format("unknown codec {}", h[5])};
   const auto codec = static_cast<LinkCodec>(h[5]);
   if (get32(h + 8) != static_cast<std::uint32_t>(width_) ||
@@ -222,24 +320,14 @@ Status FrameDeltaDecoder::decode(std::span<const std::uint8_t> message) {
     return Failure{"rows marked below the frame"};
   if (marked != changed)
     return Failure{fmt::format("{} rows marked changed, its header says {}", marked, changed)};
-  const std::size_t expected = std::size_t{changed} * (1 + stride_);
-  const std::uint8_t* in = rows + bitmap;
-  std::size_t got = 0;
-  if (codec == LinkCodec::Raw) {
-    got = packed;
-    if (got == expected) std::memcpy(block_.data(), in, got);
-  } else if (codec == LinkCodec::Lz4) {
-    const int n = LZ4_decompress_safe(reinterpret_cast<const char*>(in),
-                                      reinterpret_cast<char*>(block_.data()),
-                                      static_cast<int>(packed), static_cast<int>(expected));
-    got = n < 0 ? expected + 1 : static_cast<std::size_t>(n);
-  } else {
-    const std::size_t n = ZSTD_decompress(block_.data(), expected, in, packed);
-    got = ZSTD_isError(n) ? expected + 1 : n;
-  }
-  if (got != expected)
-    return Failure{fmt::format("the {} block does not give the {} bytes of {} changed rows",
-                               link_codec_name(codec), expected, changed)};
+  if (codec == LinkCodec::Whole &&
+      (changed != static_cast<std::uint32_t>(height_) || packed != frame_.size()))
+    return Failure{fmt::format("a whole frame of {} rows in {} bytes, expected {} in {}", changed,
+                               packed, height_, frame_.size())};
+  return codec;
+}
+
+Status FrameDeltaDecoder::apply(const std::uint8_t* rows, std::uint32_t changed) {
   for (std::uint32_t r = 0; r < changed; ++r)
     if (block_[r * (1 + stride_)] > kSpatial)
       return Failure{fmt::format("changed row {} has mode {}", r, block_[r * (1 + stride_)])};

@@ -34,7 +34,7 @@ struct RunOptions {
   bool survive_host_loss = false;      // balancing: a dead pipeserver's tiles to the others
   bool compare = false;                // both: every display identical byte for byte on both paths
   int threads = 1;                     // emulator routing threads
-  std::string link_codec = "zstd";     // frames to the columns, tiles to the server (frame_delta)
+  std::string link_codec = "auto";     // frames to the columns, tiles to the server (frame_delta)
   int start_timeout_ms = 60000;        // until every link carries its first frame
   int stall_timeout_ms = 5000;         // no display swap for this long: a host hangs
   int ready_timeout_ms = 1000;         // passed to the hosts (first frames can be slow)

@@ -78,7 +78,8 @@ struct LiveHostOptions {
   std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
   MakeHostLinks links;      // how the link and back-channel are made; empty: none (--viz only)
   std::string viz;          // "host:port" of a compositing server to send tiles to; empty: none
-  // Tiles to the compositing server as what changed (TILE_DELTA) compressed so; none: whole.
+  // Frames over MPI and tiles to the compositing server (frame_delta.hpp); none: auto (tiles
+  // to --viz whole, as TILE messages).
   std::optional<LinkCodec> link_codec;
   std::string report;  // file: one line per frame (render and wait times)
   int ready_timeout_ms = 200;

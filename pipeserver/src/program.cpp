@@ -100,9 +100,11 @@ int run_live(const l2::LiveHostOptions& o) {
 
 // A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
-int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control, l2::LinkCodec codec) {
+int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
+  const l2::CodecTo codec =
+      l2::codec_to(o.link_codec, [&session](int rank) { return session.beside(rank); });
   const auto sent = std::make_shared<l2::SentBytes>();
   const auto tiles_sent = std::make_shared<l2::SentBytes>();
   // It lives no longer than the session (MPI_Finalize).
@@ -126,7 +128,6 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control, l2::LinkCodec
   (void)o;
   (void)tiles;
   (void)control;
-  (void)codec;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -214,14 +215,9 @@ int run_pipeserver(int argc, char** argv) {
                   "live, with --mpi: a balanced run's control channel as MPI messages with the "
                   "coordinator (TIMES out, LAYOUT in; instead of --control-fd); its frames go "
                   "to every board column, since a layout may move its tiles anywhere");
-  std::string link_codec = "zstd";
-  group
-      ->add_option("--link-codec", link_codec,
-                   "live: frames to the board columns (--mpi) and tiles to the compositing "
-                   "server (--viz, --mpi-viz) travel as what changed since the last frame, each "
-                   "changed row predicted, then compressed with CODEC: raw (not compressed), lz4 "
-                   "or zstd; lossless")
-      ->check([](const std::string& v) { return l2::parse_link_codec(v).reason(); }, "CODEC")
+  std::string link_codec = "auto";
+  group->add_option("--link-codec", link_codec, "live: " + std::string(l2::link_choice_help()))
+      ->check([](const std::string& v) { return l2::parse_link_choice(v).reason(); }, "CODEC")
       ->capture_default_str();
   // Every live option needs --live: without it they were ignored and one frame was written.
   for (CLI::Option* option : group->get_options()) {
@@ -264,8 +260,8 @@ int run_pipeserver(int argc, char** argv) {
       std::fprintf(stderr, "pipeserver: --mpi-control or --control-fd, not both\n");
       return 2;
     }
-    live_options.link_codec = l2::parse_link_codec(link_codec).value();
-    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control, *live_options.link_codec);
+    live_options.link_codec = l2::parse_link_choice(link_codec).value();
+    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

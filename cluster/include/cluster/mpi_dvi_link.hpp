@@ -29,16 +29,17 @@ struct SentBytes {
   std::uint64_t raw = 0, wire = 0, first_wire = 0;
 };
 
-// The columns a frame goes to, and what of it each has no use for (sent black).
+// A column a frame goes to, how, and what of it the column has no use for (sent black).
 struct ColumnFeed {
   int rank = 0;
+  LinkCodec codec = LinkCodec::Zstd;
   std::vector<BlankRect> blank;
 };
 
 class MpiDviSender final : public DviSender {
  public:
   MpiDviSender(std::vector<ColumnFeed> columns, int coordinator_rank, int width, int height,
-               LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent);
+               std::shared_ptr<SentBytes> bytes_sent);
 
   std::span<std::uint8_t> back_frame() override;
   // Sends the back frame to every column (returning once they have it, so the frame can be
@@ -46,8 +47,9 @@ class MpiDviSender final : public DviSender {
   std::uint64_t publish() override;
 
  private:
-  // Columns with the same blank rects share an encoder and a message.
+  // Columns with the same codec and blank rects share an encoder and a message.
   struct Stream {
+    LinkCodec codec;
     std::vector<BlankRect> blank;
     std::vector<int> ranks;
     FrameDeltaEncoder encoder;
@@ -55,7 +57,11 @@ class MpiDviSender final : public DviSender {
   };
   std::vector<Stream> streams_;
   int coordinator_;
-  std::vector<std::uint8_t> frame_;  // the back frame
+  // A whole-frame stream without black strips is scanned out into where its message carries
+  // the rows, and sent as it is: no copy, as over a DVI cable. Else the frame is its own.
+  Stream* in_place_ = nullptr;
+  std::vector<std::uint8_t> own_frame_;
+  std::span<std::uint8_t> frame_;  // the back frame
   std::uint64_t sequence_ = 0;
   std::shared_ptr<SentBytes> bytes_sent_;
 };
@@ -79,17 +85,26 @@ class MpiDviReceiver final : public DviReceiver {
   // when one completed. Throws std::runtime_error for a frame that does not decode.
   bool poll();
   void post();
-  static std::uint64_t sequence_of(const std::vector<std::uint8_t>& m);
+  // A frame: its message's bytes, the sequence number first, and where its rows start (a whole
+  // frame's are where they arrived; a decoded one's are a copy of the decoder's).
+  struct Held {
+    std::vector<std::uint8_t> bytes;
+    std::size_t rows = 0;
+  };
+  static std::uint64_t sequence_of(const Held& m);
+  std::vector<std::uint8_t> spare_buffer();
 
   int source_;
   int width_, height_;
   std::size_t frame_bytes_;
+  std::size_t buffer_bytes_;          // the largest message, and every buffer's size
   std::vector<std::uint8_t> posted_;  // sequence number, then the encoded frame
   FrameDeltaDecoder decoder_;
+  bool decoder_behind_ = false;  // whole frames were taken as they arrived, not decoded
   MPI_Request request_ = MPI_REQUEST_NULL;
-  std::deque<std::vector<std::uint8_t>> arrived_;  // oldest first
+  std::deque<Held> arrived_;  // oldest first
   std::vector<std::vector<std::uint8_t>> spare_;
-  std::optional<std::vector<std::uint8_t>> current_;
+  std::optional<Held> current_;
 };
 
 }  // namespace l2

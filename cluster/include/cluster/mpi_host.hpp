@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -22,10 +23,17 @@ struct MpiHostLinks {
   std::unique_ptr<ReadyChannel> channel;
 };
 
+// How frames and tiles travel to each rank: `asked` (--link-codec) when given; else ("auto")
+// zstd to a rank on another machine, and whole to one on this machine, where copying costs
+// less than predicting and compressing.
+using CodecTo = std::function<LinkCodec(int rank)>;
+CodecTo codec_to(std::optional<LinkCodec> asked, std::function<bool(int rank)> beside);
+
 // For pipeserver `pipeserver` of `layout`; MPI must be initialised (MpiSession). Frames go
-// encoded with `codec` (frame_delta.hpp); `bytes_sent` counts their bytes. `every_column`: a
-// balanced run's, whose frames go whole to every board column (make_rank_map).
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, LinkCodec codec,
+// encoded with `codec(rank)` for each column rank (frame_delta.hpp); `bytes_sent` counts their
+// bytes. `every_column`: a balanced run's, whose frames go whole to every board column
+// (make_rank_map).
+MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
                             std::shared_ptr<SentBytes> bytes_sent, bool every_column = false);
 
 // The visualization-server path over MPI, host side: each tile to the board column owning its
@@ -35,7 +43,8 @@ class MpiTileSender {
  public:
   // Tiles go as what changed since their last frame (tile_delta.hpp), compressed with `codec`;
   // `bytes_sent` counts the bytes of the tiles it sends, raw and as tile messages.
-  MpiTileSender(const TileLayout& layout, LinkCodec codec, std::shared_ptr<SentBytes> bytes_sent);
+  MpiTileSender(const TileLayout& layout, const CodecTo& codec,
+                std::shared_ptr<SentBytes> bytes_sent);
   void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
                  std::size_t stride);
   void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
@@ -46,7 +55,7 @@ class MpiTileSender {
   std::vector<int> column_ranks_;
   std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
   std::vector<std::uint8_t> message_;
-  viz::TileDeltaEncoder deltas_;
+  std::vector<viz::TileDeltaEncoder> deltas_;  // by column
   std::optional<std::uint32_t> swapped_;
   std::shared_ptr<SentBytes> bytes_sent_;
 };

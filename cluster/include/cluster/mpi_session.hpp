@@ -21,6 +21,7 @@ namespace l2 {
 struct RankIdentity {
   int pid = 0;
   std::string host;
+  std::string stack;  // its network stack (coordinator_address.hpp): equal on one machine
 };
 
 class MpiSession {
@@ -34,8 +35,14 @@ class MpiSession {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
-  // On rank 0: every rank's identity, by rank. Elsewhere: only this rank's.
+  // Every rank's identity, by rank.
   const std::vector<RankIdentity>& identities() const { return identities_; }
+  // Whether `rank` runs on this rank's machine (the same network stack): what goes there need
+  // not fit a network.
+  bool beside(int rank) const {
+    return identities_[static_cast<std::size_t>(rank)].stack ==
+           identities_[static_cast<std::size_t>(rank_)].stack;
+  }
 
   // On rank 0, every rank holds a TCP connection to it for its whole life, beside MPI: when a
   // rank's process is gone its connection closes (without the word a rank sends as it ends
