@@ -3,7 +3,8 @@
 # network"). Two parts, one CSV each, in OUT:
 #   bytes.csv  megabytes a frame into the board columns, raw (as scanned out, each input's frame
 #              to every column it feeds, as sent before frames travelled as changes) and on the
-#              wire (averaged over the run, and a frame after the first, which starts from
+#              wire with --link-codec zstd, as between machines (averaged over the run, and a
+#              frame after the first, which starts from
 #              black), on the DVI path and the vizserver path, for the default and 4x3 walls and
 #              the mesh, swap, picture (panned and zoomed), still (a movie of one still
 #              picture) and movie scenes (mpirun on this machine, loopback);
@@ -68,7 +69,7 @@ if [[ -z $only || $only == bytes ]]; then
       log=$out/bytes-$wall-$scene.txt
       # shellcheck disable=SC2086
       "${local_mpirun[@]}" -np "${np[$wall]}" "$l2wall" run ${wall_arg[$wall]} ${scene_args[$scene]} \
-        --mpi --path both --frames "$frames" --refresh 0 --keep none --no-progress \
+        --mpi --link-codec zstd --path both --frames "$frames" --refresh 0 --keep none --no-progress \
         --out "$out/run-bytes" >"$log"
       dvi=$(field "$log" "s/^network: $sent of DVI frames.*/\\2,\\1,\\3,\\4/p")
       tiles=$(field "$log" "s/^network: $sent of tiles.*/\\2,\\1,\\3,\\4/p")
@@ -87,7 +88,7 @@ if [[ $only == fps || -z $only ]]; then
     echo "$wall,one machine,,,$(fps_of "$out/fps-$wall-one.txt")" | tee -a "$out/fps.csv"
     "${local_mpirun[@]}" -np "${np[$wall]}" "$l2wall" "${args[@]}" --mpi --out "$out/run-fps" \
       >"$out/fps-$wall-loopback.txt"
-    echo "$wall,MPI loopback,,zstd,$(fps_of "$out/fps-$wall-loopback.txt")" | tee -a "$out/fps.csv"
+    echo "$wall,MPI loopback,,auto (whole),$(fps_of "$out/fps-$wall-loopback.txt")" | tee -a "$out/fps.csv"
     for rate in unshaped 10gbit 1gbit; do
       for codec in zstd raw; do
         log=$out/fps-$wall-$rate-$codec.txt

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # A wall over real mpirun ranks against the same wall on one machine: every display of the
 # last frame must be the same bytes. The TCP transport is forced (mpirun_local.sh), so the
-# frames really cross sockets. Usage: mpi_run_test.sh L2WALL OUT NP PATH [WALL] (PATH dvi or
-# both; no WALL: the built-in default wall). Also: swap lock held in every refresh, and the
+# frames really cross sockets. Usage: mpi_run_test.sh L2WALL OUT NP PATH [WALL [CODEC]] (PATH dvi
+# or both; no WALL: the built-in default wall; CODEC: --link-codec of the MPI run, default auto,
+# which on one machine sends frames whole). Also: swap lock held in every refresh, and the
 # wrong -np is refused in one line naming the numbers. With PATH both, each run compares its
 # DVI and vizserver displays (--compare), the MPI run's vizserver displays must be the
 # one-machine run's too, and (on the default wall, the cheaper) a mismatch injected under MPI
 # must fail the run.
 set -euo pipefail
-l2wall=$1 out=$2 np=$3 path=$4 wall=${5:+--wall $5}
+l2wall=$1 out=$2 np=$3 path=$4 wall=${5:+--wall $5} codec=${6:-auto}
 frames=10
 source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
 mpirun=("${mpirun_local[@]}")
@@ -20,7 +21,7 @@ start=$(date +%s%N)
 "$l2wall" run $wall "${paths[@]}" --frames $frames --refresh 0 --out "$out/one" \
   --no-progress >/dev/null
 one_done=$(date +%s%N)
-"${mpirun[@]}" -np "$np" "$l2wall" run $wall --mpi "${paths[@]}" --frames $frames --refresh 0 \
+"${mpirun[@]}" -np "$np" "$l2wall" run $wall --mpi --link-codec "$codec" "${paths[@]}" --frames $frames --refresh 0 \
   --out "$out/mpi" --no-progress >"$out/mpi.txt"
 mpi_done=$(date +%s%N)
 echo "one machine $(((one_done - start) / 1000000)) ms, MPI $(((mpi_done - one_done) / 1000000)) ms"
