@@ -4,14 +4,14 @@
 #   bytes.csv  megabytes a frame into the board columns, raw (as scanned out, each input's frame
 #              to every column it feeds, as sent before frames travelled as changes) and on the
 #              wire with --link-codec zstd, as between machines (averaged over the run, and a
-#              frame after the first, which starts from
-#              black), on the DVI path and the vizserver path, for the default and 4x3 walls and
-#              the mesh, swap, picture (panned and zoomed), still (a movie of one still
-#              picture) and movie scenes (mpirun on this machine, loopback);
+#              frame after the first, which starts from black), on the DVI path and the
+#              vizserver path, for the default and 4x3 walls and the mesh, swap, picture (panned
+#              and zoomed), still (a movie of one still picture) and movie scenes (mpirun on this
+#              machine, loopback);
 #   fps.csv    frames/s of the wall on the namespace cluster (scripts/cluster.sh) with its links
-#              shaped to 1 and 10 Gbit/s and unshaped, frames sent compressed (zstd) and not
-#              (--link-codec raw: unchanged rows dropped, the rest as they are), against the
-#              one-machine run (no MPI) and MPI on loopback;
+#              shaped to 1 and 10 Gbit/s and unshaped, frames sent as changes (zstd, what auto
+#              chooses between machines) and whole (as before they travelled as changes),
+#              against the one-machine run (no MPI) and MPI on loopback (auto: whole);
 # and network.png, frames/s against link rate per wall. Needs root for the namespaces.
 #
 #   scripts/network-bench.sh [--frames N] [--out DIR] [--build DIR] [--only bytes|fps] [--plot-only]
@@ -90,7 +90,7 @@ if [[ $only == fps || -z $only ]]; then
       >"$out/fps-$wall-loopback.txt"
     echo "$wall,MPI loopback,,auto (whole),$(fps_of "$out/fps-$wall-loopback.txt")" | tee -a "$out/fps.csv"
     for rate in unshaped 10gbit 1gbit; do
-      for codec in zstd raw; do
+      for codec in zstd whole; do
         log=$out/fps-$wall-$rate-$codec.txt
         shaping=()
         [[ $rate != unshaped ]] && shaping=(--rate "$rate")
@@ -104,7 +104,7 @@ fi
 if [[ $only != bytes ]] && command -v gnuplot >/dev/null; then
     # x: 1 = 1 Gbit/s, 2 = 10 Gbit/s, 3 = unshaped; one line per wall and codec.
     for wall in default 4x3; do
-      for codec in zstd raw; do
+      for codec in zstd whole; do
         awk -F, -v w="$wall" -v c="$codec" '$1==w && $2=="cluster" && $4==c {
           x = $3=="1gbit" ? 1 : $3=="10gbit" ? 2 : 3; print x, $5 }' "$out/fps.csv" | sort -n \
           >"$out/plot-$wall-$codec.dat"
@@ -124,11 +124,11 @@ set key bottom right
 set grid ytics
 set title "default wall: 4 pipeservers, 1 column, 3 hosts"
 plot "$out/plot-default-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
-     "$out/plot-default-raw.dat" with linespoints lw 2 dt 2 title "not compressed (raw)", \
+     "$out/plot-default-whole.dat" with linespoints lw 2 dt 2 title "whole frames", \
      "$out/plot-default-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
 set title "4x3 monitor wall: 8 pipeservers, 2 columns, 4 hosts"
 plot "$out/plot-4x3-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
-     "$out/plot-4x3-raw.dat" with linespoints lw 2 dt 2 title "not compressed (raw)", \
+     "$out/plot-4x3-whole.dat" with linespoints lw 2 dt 2 title "whole frames", \
      "$out/plot-4x3-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
 unset multiplot
 GP
