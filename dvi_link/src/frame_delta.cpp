@@ -9,6 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "base/little_endian.hpp"
+
 namespace l2 {
 namespace {
 
@@ -18,14 +20,6 @@ constexpr std::size_t kHeaderBytes = 24;
 constexpr std::uint8_t kTemporal = 0, kSpatial = 1;
 // zstd's fastest levels: a frame must be compressed faster than a link carries it.
 constexpr int kZstdLevel = 1;
-
-void put32(std::uint8_t* at, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) at[i] = static_cast<std::uint8_t>(v >> (8 * i));
-}
-std::uint32_t get32(const std::uint8_t* at) {
-  return static_cast<std::uint32_t>(at[0]) | static_cast<std::uint32_t>(at[1]) << 8 |
-         static_cast<std::uint32_t>(at[2]) << 16 | static_cast<std::uint32_t>(at[3]) << 24;
-}
 
 std::size_t bitmap_bytes(int height) {
   return (static_cast<std::size_t>(height) + 7) / 8;
@@ -118,10 +112,10 @@ void write_whole_frame_prefix(int width, int height, std::span<std::uint8_t> out
   h[5] = static_cast<std::uint8_t>(LinkCodec::Whole);
   h[6] = h[7] = 0;
   const std::size_t frame = static_cast<std::size_t>(width) * 3 * static_cast<std::size_t>(height);
-  put32(h + 8, static_cast<std::uint32_t>(width));
-  put32(h + 12, static_cast<std::uint32_t>(height));
-  put32(h + 16, static_cast<std::uint32_t>(height));
-  put32(h + 20, static_cast<std::uint32_t>(frame));
+  put_u32(h + 8, static_cast<std::uint32_t>(width));
+  put_u32(h + 12, static_cast<std::uint32_t>(height));
+  put_u32(h + 16, static_cast<std::uint32_t>(height));
+  put_u32(h + 20, static_cast<std::uint32_t>(frame));
   std::fill(h + kHeaderBytes, h + kHeaderBytes + bitmap, std::uint8_t{0xFF});
   if (height % 8 != 0)
     h[kHeaderBytes + bitmap - 1] = static_cast<std::uint8_t>((1u << (height % 8)) - 1);
@@ -202,10 +196,10 @@ std::span<const std::uint8_t> FrameDeltaEncoder::encode(std::span<const std::uin
   h[4] = kVersion;
   h[5] = static_cast<std::uint8_t>(used);
   h[6] = h[7] = 0;
-  put32(h + 8, static_cast<std::uint32_t>(width_));
-  put32(h + 12, static_cast<std::uint32_t>(height_));
-  put32(h + 16, changed_);
-  put32(h + 20, static_cast<std::uint32_t>(packed));
+  put_u32(h + 8, static_cast<std::uint32_t>(width_));
+  put_u32(h + 12, static_cast<std::uint32_t>(height_));
+  put_u32(h + 16, changed_);
+  put_u32(h + 20, static_cast<std::uint32_t>(packed));
   std::memcpy(h + kHeaderBytes, bitmap_.data(), bitmap_.size());
   return message_;
 }
@@ -259,7 +253,7 @@ Status FrameDeltaDecoder::decode(std::span<const std::uint8_t> message) {
   const LinkCodec codec = checked.value();
   const std::size_t bitmap = bitmap_bytes(height_);
   const std::uint8_t* h = message.data();
-  const std::uint32_t changed = get32(h + 16), packed = get32(h + 20);
+  const std::uint32_t changed = get_u32(h + 16), packed = get_u32(h + 20);
   const std::uint8_t* rows = h + kHeaderBytes;
   const std::uint8_t* in = rows + bitmap;
   if (codec == LinkCodec::Whole) {
@@ -304,11 +298,11 @@ Result<LinkCodec> FrameDeltaDecoder::check(std::span<const std::uint8_t> message
   if (h[5] > static_cast<std::uint8_t>(LinkCodec::Whole))
     return Failure{fmt::format("unknown codec {}", h[5])};
   const auto codec = static_cast<LinkCodec>(h[5]);
-  if (get32(h + 8) != static_cast<std::uint32_t>(width_) ||
-      get32(h + 12) != static_cast<std::uint32_t>(height_))
-    return Failure{
-        fmt::format("a {}x{} frame, expected {}x{}", get32(h + 8), get32(h + 12), width_, height_)};
-  const std::uint32_t changed = get32(h + 16), packed = get32(h + 20);
+  if (get_u32(h + 8) != static_cast<std::uint32_t>(width_) ||
+      get_u32(h + 12) != static_cast<std::uint32_t>(height_))
+    return Failure{fmt::format("a {}x{} frame, expected {}x{}", get_u32(h + 8), get_u32(h + 12),
+                               width_, height_)};
+  const std::uint32_t changed = get_u32(h + 16), packed = get_u32(h + 20);
   if (message.size() != kHeaderBytes + bitmap + packed)
     return Failure{fmt::format("{} bytes, its header says {}", message.size(),
                                kHeaderBytes + bitmap + std::size_t{packed})};

@@ -15,6 +15,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include "base/little_endian.hpp"
 #include "base/result.hpp"
 #include "vizserver/run_token.hpp"
 
@@ -157,12 +158,6 @@ Status validate(const TileHeader& t, std::uint32_t payload_bytes);
 // A TILE_DELTA's: the tile as validate() checks it, and an encoded part no larger than the
 // tile's changes can be (max_frame_delta_bytes), checked before anything is allocated.
 Status validate_delta(const TileHeader& t, std::uint32_t payload_bytes);
-
-// Little-endian helpers, exposed for tests that forge messages byte by byte.
-void put_u16(std::uint8_t* p, std::uint16_t v);
-void put_u32(std::uint8_t* p, std::uint32_t v);
-std::uint16_t get_u16(const std::uint8_t* p);
-std::uint32_t get_u32(const std::uint8_t* p);
 
 // A message's header and a zeroed fixed part of `Fixed` bytes; the payload length counts
 // `extra` bytes (pixels, text) the sender sends after it.
