@@ -81,7 +81,8 @@ std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver
   const viz::Endpoint at = viz::parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
-  options.codec = codec;
+  // Whole tiles go as TILE and TILE_EXT, straight from the framebuffer.
+  if (codec != LinkCodec::Whole) options.codec = codec;
   return std::make_unique<TileSinkOf<viz::TileSender>>(
       viz::TileSender::connect(at.host, at.port, pipeserver, display_count, options));
 }
