@@ -52,10 +52,11 @@ fi
 ip netns del "$id-probe"
 work=$(mktemp -d)
 # Processes still on a host once the command has ended are named (a run must leave none: give
-# them 10 s to exit) and killed; then the namespaces, links and bridge go.
+# them 10 s to exit) and killed, at once when this script was interrupted; then the namespaces,
+# links and bridge go.
 cleanup() {
   local h pids waited
-  for ((waited = 0; waited < 100; ++waited)); do
+  for ((waited = 0; waited < 100 && !interrupted; ++waited)); do
     pids=$(for h in "${names[@]}"; do ip netns pids "$id-$h" 2>/dev/null || true; done)
     [[ -n $pids ]] || break
     sleep 0.1
@@ -70,8 +71,9 @@ cleanup() {
   ip link del "${id}br" 2>/dev/null || true
   rm -rf "$work"
 }
+interrupted=0
 trap cleanup EXIT
-trap 'exit 130' INT TERM
+trap 'interrupted=1; exit 130' INT TERM
 
 # A token bucket, both ways, on a link's two ends: its burst one millisecond of the rate.
 shape() {  # shape NETNS-OR-"" DEVICE
@@ -108,7 +110,10 @@ mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24")
 echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
-status=0
+# In the background and waited for: a signal to this script is then taken at once (bash runs a
+# trap only after a foreground command ends), and the cleanup ends the run on every host.
 ip netns exec "$id-${names[0]}" unshare --uts sh -c 'hostname "$1"; shift; exec "$@"' \
-  sh "${names[0]}" "${mpirun[@]}" "$@" || status=$?
+  sh "${names[0]}" "${mpirun[@]}" "$@" &
+status=0
+wait $! || status=$?
 exit "$status"

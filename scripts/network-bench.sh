@@ -10,7 +10,8 @@
 #              machine, loopback);
 #   fps.csv    frames/s of the wall on the namespace cluster (scripts/cluster.sh) with its links
 #              shaped to 1 and 10 Gbit/s and unshaped, frames sent as changes (zstd, what auto
-#              chooses between machines) and whole (as before they travelled as changes),
+#              chooses between machines) and whole (as before they travelled as changes), and
+#              both paths at once as changes (DVI frames and the vizserver path's tiles),
 #              against the one-machine run (no MPI) and MPI on loopback (auto: whole);
 # and network.png, frames/s against link rate per wall. Needs root for the namespaces.
 #
@@ -90,12 +91,15 @@ if [[ $only == fps || -z $only ]]; then
       >"$out/fps-$wall-loopback.txt"
     echo "$wall,MPI loopback,,auto (whole),$(fps_of "$out/fps-$wall-loopback.txt")" | tee -a "$out/fps.csv"
     for rate in unshaped 10gbit 1gbit; do
-      for codec in zstd whole; do
+      # "both": the DVI and the vizserver path at once (the vizserver path runs over MPI only
+      # beside the DVI path), tiles and frames as changes.
+      for codec in zstd whole both; do
         log=$out/fps-$wall-$rate-$codec.txt
-        shaping=()
+        shaping=() how=(--link-codec "$codec")
         [[ $rate != unshaped ]] && shaping=(--rate "$rate")
+        [[ $codec == both ]] && how=(--link-codec zstd --path both)
         bash "$root/scripts/cluster.sh" --hosts "${hosts[$wall]}" "${shaping[@]}" -- "$l2wall" \
-          "${args[@]}" --mpi --link-codec "$codec" --out "$out/run-fps" >"$log" 2>&1
+          "${args[@]}" --mpi "${how[@]}" --out "$out/run-fps" >"$log" 2>&1
         echo "$wall,cluster,$rate,$codec,$(fps_of "$log")" | tee -a "$out/fps.csv"
       done
     done
@@ -104,7 +108,7 @@ fi
 if [[ $only != bytes ]] && command -v gnuplot >/dev/null; then
     # x: 1 = 1 Gbit/s, 2 = 10 Gbit/s, 3 = unshaped; one line per wall and codec.
     for wall in default 4x3; do
-      for codec in zstd whole; do
+      for codec in zstd whole both; do
         awk -F, -v w="$wall" -v c="$codec" '$1==w && $2=="cluster" && $4==c {
           x = $3=="1gbit" ? 1 : $3=="10gbit" ? 2 : 3; print x, $5 }' "$out/fps.csv" | sort -n \
           >"$out/plot-$wall-$codec.dat"
@@ -125,10 +129,12 @@ set grid ytics
 set title "default wall: 4 pipeservers, 1 column, 3 hosts"
 plot "$out/plot-default-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
      "$out/plot-default-whole.dat" with linespoints lw 2 dt 2 title "whole frames", \
+     "$out/plot-default-both.dat" with linespoints lw 2 dt 4 title "both paths, as changes", \
      "$out/plot-default-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
 set title "4x3 monitor wall: 8 pipeservers, 2 columns, 4 hosts"
 plot "$out/plot-4x3-zstd.dat" with linespoints lw 2 title "as changes (zstd)", \
      "$out/plot-4x3-whole.dat" with linespoints lw 2 dt 2 title "whole frames", \
+     "$out/plot-4x3-both.dat" with linespoints lw 2 dt 4 title "both paths, as changes", \
      "$out/plot-4x3-one.dat" with lines lc rgb "gray" dt 3 title "one machine, no MPI"
 unset multiplot
 GP

@@ -32,7 +32,15 @@ bash "$cluster" -- "$l2wall" run --mpi --path both --compare --frames $frames --
   --out "$out/three-hosts" --no-progress >"$out/three-hosts.txt" 2>"$out/three-hosts.err" || status=$?
 if ((status == 77)); then cat "$out/three-hosts.err"; exit 77; fi
 ((status == 0)) || { echo "FAIL: exit $status"; cat "$out/three-hosts.err"; exit 1; }
-[[ ! -s $out/three-hosts.err ]] || { echo "FAIL: stderr:"; cat "$out/three-hosts.err"; exit 1; }
+# Nothing on stderr (no process left on a host, no fault) but a line Open MPI's rsh launcher
+# may print when the agent it started has already made itself a process group (a race it only
+# warns of).
+if grep -v \
+  -e '^\[render-a:[0-9]*\] plm:rsh: Warning: setpgid([0-9]*,[0-9]*) failed in parent with errno=Permission denied(13)$' \
+  "$out/three-hosts.err"; then
+  echo "FAIL: other lines on stderr"
+  exit 1
+fi
 grep -E "^compare: [0-9]+ display pictures identical byte for byte" "$out/three-hosts.txt" ||
   { echo "FAIL: no compare line"; cat "$out/three-hosts.txt"; exit 1; }
 echo "default wall on render-a, render-b, display-a:"
