@@ -25,11 +25,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // A header at the very end of the row leaves 0 pixels: a truncated strip, counted.
         require(s.length >= 0 && s.length <= s.header.width, "a strip has 0..width pixels");
         require(s.source_x + s.length <= width, "a strip ends inside the row");
+        // Its header stands before its gap: two columns, four for EXT with its extension word.
         require(l2::encode(s.header) ==
-                    l2::header_value(row.data() + (s.source_x - 2) * bytes_per_pixel,
-                                     row.data() + (s.source_x - 1) * bytes_per_pixel),
+                    l2::header_value(row.data() + s.header_x() * bytes_per_pixel,
+                                     row.data() + (s.header_x() + 1) * bytes_per_pixel),
                 "a strip's header encodes back to the bits it was read from");
-        next_x = s.source_x + s.length + l2::kHeaderPixels;
+        next_x = s.next_header_x() + l2::kHeaderPixels;
       });
   require(strips == seen, "the count returned is the strips handed over");
   require(errors.truncations <= 1, "a truncated strip is the scanline's last");

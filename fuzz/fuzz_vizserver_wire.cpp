@@ -10,6 +10,7 @@
 #include <string>
 #include <variant>
 
+#include "dvi_link/frame_delta.hpp"
 #include "fuzz_check.hpp"
 #include "vizserver/wire.hpp"
 
@@ -70,6 +71,18 @@ std::size_t take_message(std::span<const std::uint8_t> bytes) {
     require(t.pixel_bytes() == variable, "a valid TILE's pixels are its payload after 24 bytes");
     require(ext ? same_bytes(viz::encode_ext(t), message) : same_bytes(viz::encode(t), message),
             "a valid TILE header encodes back the same");
+  } else if (h.kind == viz::Kind::TileDelta) {
+    // What the server checks before it allocates the encoded part (tile_delta.hpp decodes it).
+    const viz::TileHeader t = viz::decode_tile_ext(message.subspan(viz::kHeaderBytes));
+    if (const l2::Status tile = viz::validate_delta(t, h.payload_bytes); !tile.ok()) {
+      l2::fuzz::require_one_line(tile.reason(), "a refused TILE_DELTA has a one-line reason");
+      return 0;
+    }
+    require(variable <= l2::max_frame_delta_bytes(static_cast<int>(t.row_bytes() / 3),
+                                                  static_cast<int>(t.h)),
+            "a valid TILE_DELTA's encoded part is no larger than its tile's changes can be");
+    require(same_bytes(viz::encode_delta(t, variable), message),
+            "a valid TILE_DELTA header encodes back the same");
   } else {
     require(h.kind == viz::Kind::Error || variable == 0, "fixed kinds have no variable part");
     require(round_trips(h.kind, message), "a fixed part encodes back to the same bytes");
