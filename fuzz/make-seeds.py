@@ -78,6 +78,10 @@ done = viz(4, struct.pack("<III", 0, 0, 1))
 put("vizserver_wire", "hello-tile-done", hello + tile + done)
 put("vizserver_wire", "welcome-swapped", viz(2, struct.pack("<III", 0, 2, 1)) + viz(5, b"\x07\0\0\0"))
 put("vizserver_wire", "error", viz(6, b"pipeserver 1 gave up"))
+# TILE_DELTA: a 2x1 COPY tile, then a stored frame delta message of its one changed row.
+delta = b"L2FD" + bytes([1, 0, 0, 0]) + struct.pack("<IIII", 2, 1, 1, 7) + b"\x01" + b"\x00" + bytes(range(6))
+put("vizserver_wire", "hello-tile-delta-done",
+    hello + viz(8, struct.pack("<IIiiIIII", 0, 1, 0, 0, 2, 1, 0, 0) + delta) + done)
 
 
 # --- png_frame: small PNG files, written chunk by chunk ------------------------------------------
