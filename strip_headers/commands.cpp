@@ -115,7 +115,13 @@ std::string describe(const ParsedStrip& s) {
 }  // namespace
 
 int dump(const std::string& path, bool quiet) {
-  const RgbImage frame = read_scanned_frame(path);
+  // Checked on the file's header: a picture no board would take is never allocated.
+  const RgbImage frame = read_scanned_frame(path, [&](int width, int height) {
+    if (width > kMaxFrameSide || height > kMaxFrameSide)
+      throw std::runtime_error(fmt::format(
+          "{}: a {}x{} picture is no scanned-out frame: a board takes at most {}x{} (spec §5)",
+          path, width, height, kMaxFrameSide, kMaxFrameSide));
+  });
   StripErrorCounts total;
   StripTally strips;
   for (int y = 0; y < frame.height(); ++y) {

@@ -1,7 +1,11 @@
 // The strip_headers executable as a user runs it: exact output and exit status.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "base/child_process.hpp"
@@ -51,6 +55,21 @@ TEST(StripHeadersCli, DecodeExtNamesTheWordOrWhyItIsRefused) {
   EXPECT_EQ(run("decode --ext 200000100033").out,
             "200000100033: EXT unsupported: DEPTH with key 000010 (must be 0)\n");
   EXPECT_EQ(run("decode e18320640190").out, "e18320640190: EXT f=1 d=3 x=100 y=200 w=50\n");
+}
+
+// A 19-byte PPM that declares 16384x16384 pixels (805 MB as RGB): refused from its header in
+// one line, before the picture is read (read_scanned_frame's check runs before any pixel is
+// allocated; lightning2_emu's cli test measures that peak for route), as route refuses it.
+TEST(StripHeadersCli, DumpRefusesAPictureNoBoardTakesBeforeReadingIt) {
+  const std::filesystem::path huge =
+      std::filesystem::temp_directory_path() / fmt::format("strip-headers-huge-{}.ppm", getpid());
+  std::ofstream(huge, std::ios::binary) << "P6\n16384 16384\n255\n" << std::string(30, '\0');
+  const Result r = run("dump " + huge.string());
+  std::filesystem::remove(huge);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, "strip_headers: " + huge.string() +
+                       ": a 16384x16384 picture is no scanned-out frame: a board takes at most "
+                       "4096x4096 (spec §5)\n");
 }
 
 TEST(StripHeadersCli, DumpShowsKeyAndDepthStrips) {

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "strip_headers/strip_header.hpp"
+
 namespace l2 {
 
 // A configuration the mesh cannot take: one line naming the input, display or limit.
@@ -33,7 +35,7 @@ class Mesh {
   static constexpr int kMaxColumns = 8;
   static constexpr int kMaxRows = 64;
   // The largest board input limit per side, as a wall file's board_max_width/height allow.
-  static constexpr int kMaxInputSide = 4096;
+  static constexpr int kMaxInputSide = kMaxFrameSide;
 
   // Throws MeshError when rows or columns are out of range or the limit is not 2x1..4096x4096.
   Mesh(int rows, int columns, InputLimit limit = {});

@@ -14,6 +14,9 @@ enum class StripOp : std::uint8_t { End = 0, Copy = 1, Skip = 2, Ext = 3 };
 inline constexpr int kMaxDisplays = 64;      // display: 6 bits
 inline constexpr int kMaxCoordinate = 4095;  // x, y, width: 12 bits
 inline constexpr int kHeaderPixels = 2;      // a header spans two pixels of one scanline
+// The largest scanned-out frame, per side, that a board takes (spec §5: its input limit can
+// be raised to 4096 x 4096 at most); a larger file is no frame of this system.
+inline constexpr int kMaxFrameSide = 4096;
 
 struct StripHeader {
   StripOp op = StripOp::End;
