@@ -115,6 +115,28 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
   expect_clean(run);
 }
 
+// Two runs at once on one machine (both paths each): their shared-memory links, ptys, ports and
+// compositing servers are their own, so both succeed and show the same pictures.
+TEST(LiveRun, TwoRunsAtOnceBothSucceed) {
+  const std::vector<std::string> args = {"--frames", "8",    "--refresh", "0",
+                                         "--path",   "both", "--compare"};
+  WallRun first("at-once-1", args), second("at-once-2", args);
+  for (WallRun* run : {&first, &second}) {
+    const ExitStatus status = run->wait(60s);
+    ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run->output();
+    EXPECT_NE(run->output().find("compare: 32 display pictures identical byte for byte"),
+              std::string::npos)
+        << run->output();
+  }
+  for (int d = 0; d < 4; ++d) {
+    const std::string name = fmt::format("display-{}.png", d);
+    EXPECT_EQ(slurp(first.out() / "frame-7" / name), slurp(second.out() / "frame-7" / name))
+        << name;
+  }
+  expect_clean(first);
+  expect_clean(second);
+}
+
 INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                          ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
                                            WallCase{"projectors-2x1.toml", 2, 3},
