@@ -40,7 +40,7 @@ done
 status=0
 wait "$run" || status=$?
 trap - EXIT
-tail -n 3 "$out/run.txt" | head -n 1
+grep "^l2wall run:" "$out/run.txt" || tail -n 3 "$out/run.txt"
 samples=$(($(wc -l <"$out/soak.csv") - 1))
 if ((samples < 3)); then echo "soak.sh: only $samples samples: a longer run (--frames)"; exit 1; fi
 # Growth from the second sample (the first may be taken while the run still starts) to the last.
