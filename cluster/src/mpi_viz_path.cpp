@@ -39,8 +39,7 @@ bool MpiVizPath::down() {
   return false;
 }
 
-DisplayPictures MpiVizPath::frame_pictures(int frame, const RunWatch& watch) {
-  if (frame == fetched_) return [this](int id) -> const RgbImage& { return pictures_.at(id); };
+void MpiVizPath::take_frame(int frame, const RunWatch& watch) {
   const auto deadline = RunClock::now() + std::chrono::milliseconds(stall_timeout_ms_);
   for (;;) {
     pump();
@@ -53,6 +52,11 @@ DisplayPictures MpiVizPath::frame_pictures(int frame, const RunWatch& watch) {
                       frame, stall_timeout_ms_));
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
+}
+
+DisplayPictures MpiVizPath::frame_pictures(int frame, const RunWatch& watch) {
+  if (frame == fetched_) return [this](int id) -> const RgbImage& { return pictures_.at(id); };
+  take_frame(frame, watch);
   for (int c = 0; c < map_.columns; ++c) {
     mpi_wire::send({mpi_wire::kFetchComposed, frame}, map_.column_rank(c), mpi_wire::kCommand);
   }

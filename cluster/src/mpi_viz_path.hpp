@@ -31,6 +31,8 @@ class MpiVizPath final : public DisplayPath {
   std::uint64_t inject_noise(HostSet&) override { return 0; }
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override;
+  // The columns composited `frame`; their pictures stay where they are (not over the network).
+  void take_frame(int frame, const RunWatch& watch) override;
   std::optional<DisplayPictures> shown() const override;
   int frame_shown() const override { return fetched_; }
 

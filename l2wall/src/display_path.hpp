@@ -65,6 +65,9 @@ class DisplayPath {
   // --- what the displays show ------------------------------------------------------------
   // The displays of frame `frame`, waiting (watched) until this path shows it.
   virtual DisplayPictures frame_pictures(int frame, const RunWatch& watch) = 0;
+  // Waits (watched) until this path shows frame `frame`, its pictures not needed. A path whose
+  // pictures are far away (over MPI) need not bring them.
+  virtual void take_frame(int frame, const RunWatch& watch) { (void)frame_pictures(frame, watch); }
   // What the displays show now, if anything reached them.
   virtual std::optional<DisplayPictures> shown() const = 0;
   // The frame the displays show; -1 before the first.

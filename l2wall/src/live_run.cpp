@@ -263,8 +263,11 @@ class LiveRun {
   // server waits for us to take its frames before it swaps more.
   void take_from_other_paths(int frame) {
     for (std::size_t i = 1; i < paths_.size(); ++i) {
+      if (!o_.compare) {
+        paths_[i]->take_frame(frame, watch_);
+        continue;
+      }
       const DisplayPictures theirs = paths_[i]->frame_pictures(frame, watch_);
-      if (!o_.compare) continue;
       totals_.compared_displays += static_cast<std::uint64_t>(
           compare_paths(frame, wall_, paths_.front()->frame_pictures(frame, watch_), theirs,
                         frame == o_.inject_mismatch, o_.out));
