@@ -72,6 +72,7 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, const CodecTo& codec,
   const RankMap map = make_rank_map(layout);
   for (int c = 0; c < map.columns; ++c) {
     column_ranks_.push_back(map.column_rank(c));
+    whole_.push_back(codec(map.column_rank(c)) == LinkCodec::Whole);
     deltas_.emplace_back(codec(map.column_rank(c)));
   }
   sent_.assign(column_ranks_.size(), 0);
@@ -79,7 +80,8 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, const CodecTo& codec,
 
 void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                               const std::uint8_t* rgb, std::size_t stride) {
-  mpi_wire::TileMessage m{mpi_wire::kTileDeltaKind,
+  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
+  mpi_wire::TileMessage m{whole_[column] ? mpi_wire::kTileKind : mpi_wire::kTileDeltaKind,
                           frame,
                           static_cast<std::uint32_t>(t.display),
                           t.x,
@@ -90,11 +92,17 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                           static_cast<std::uint32_t>(t.how),
                           t.key};
   const viz::TileHeader h{frame, m.display, m.dx, m.dy, m.w, m.h, t.how, t.key};
-  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
-  const std::span<const std::uint8_t> encoded = deltas_[column].encode(h, rgb, stride);
-  message_.resize(sizeof m + encoded.size());
+  if (whole_[column]) {  // the rows themselves, gathered once into the message
+    const std::size_t row = h.row_bytes();
+    message_.resize(sizeof m + h.pixel_bytes());
+    for (std::uint32_t r = 0; r < h.h; ++r)
+      std::memcpy(message_.data() + sizeof m + row * r, rgb + stride * r, row);
+  } else {
+    const std::span<const std::uint8_t> encoded = deltas_[column].encode(h, rgb, stride);
+    message_.resize(sizeof m + encoded.size());
+    std::memcpy(message_.data() + sizeof m, encoded.data(), encoded.size());
+  }
   std::memcpy(message_.data(), &m, sizeof m);
-  std::memcpy(message_.data() + sizeof m, encoded.data(), encoded.size());
   const int to = column_ranks_[column];
   ++sent_[column];
   if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,

@@ -68,7 +68,6 @@ struct WireOffer {
   std::uint16_t port = 0;
   std::int32_t count = 0;
   std::array<std::uint32_t, kMaxOffered> addresses{};
-  std::array<char, 128> stack{};
 };
 
 // Why a rank could not connect, gathered on the coordinator (empty: it did).
@@ -83,15 +82,14 @@ WireOffer make_offer(std::uint16_t port) {
     if (offer.count == kMaxOffered) break;
     offer.addresses[static_cast<std::size_t>(offer.count++)] = a;
   }
-  const std::string stack = network_stack_id();
-  std::memcpy(offer.stack.data(), stack.data(), std::min(stack.size(), offer.stack.size() - 1));
   return offer;
 }
 
-// Loopback where it joins this rank to the coordinator, else each offered address in turn.
-Result<Fd> reach(const WireOffer& offer) {
+// Loopback where it joins this rank to the coordinator (`beside` it), else each offered
+// address in turn.
+Result<Fd> reach(const WireOffer& offer, bool beside) {
   std::vector<std::string> candidates;
-  if (network_stack_id() == offer.stack.data()) {
+  if (beside) {
     candidates.emplace_back("127.0.0.1");
   } else {
     for (int i = 0; i < offer.count; ++i)
@@ -127,7 +125,7 @@ void MpiSession::connect_liveness() {
   WireReachError error{};
   std::vector<WireReachError> errors(rank_ == 0 ? static_cast<std::size_t>(size_) : 0);
   if (rank_ != 0) {
-    Result<Fd> fd = reach(offer);
+    Result<Fd> fd = reach(offer, beside(0));
     const std::int32_t me = rank_;
     if (fd.ok() && send(fd->get(), &me, sizeof me, MSG_NOSIGNAL) == sizeof me) {
       liveness_.push_back(std::move(fd).value());

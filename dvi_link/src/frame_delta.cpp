@@ -135,19 +135,21 @@ FrameDeltaEncoder::FrameDeltaEncoder(int width, int height, LinkCodec codec)
       height_(height),
       stride_(static_cast<std::size_t>(width) * 3),
       codec_(codec),
-      previous_(stride_ * static_cast<std::size_t>(height), 0),
-      masked_(stride_),
-      bitmap_(bitmap_bytes(height)),
-      spatial_(stride_) {
+      bitmap_(bitmap_bytes(height)) {
+  if (codec == LinkCodec::Whole) return;  // no prediction: nothing kept between frames
+  previous_.assign(stride_ * static_cast<std::size_t>(height), 0);
+  masked_.resize(stride_);
+  spatial_.resize(stride_);
   block_.reserve(static_cast<std::size_t>(height) * (1 + stride_));
   if (codec == LinkCodec::Zstd) zstd_.reset(ZSTD_createCCtx());
 }
 
 std::span<const std::uint8_t> FrameDeltaEncoder::encode(std::span<const std::uint8_t> frame,
                                                         std::span<const BlankRect> blank) {
-  if (frame.size() != previous_.size())
+  const std::size_t bytes = stride_ * static_cast<std::size_t>(height_);
+  if (frame.size() != bytes)
     throw std::invalid_argument(fmt::format("frame delta: a {}x{} frame is {} bytes, got {}",
-                                            width_, height_, previous_.size(), frame.size()));
+                                            width_, height_, bytes, frame.size()));
   if (codec_ == LinkCodec::Whole) return encode_whole(frame, blank);
   std::fill(bitmap_.begin(), bitmap_.end(), std::uint8_t{0});
   block_.clear();

@@ -56,6 +56,7 @@ class MpiTileSender {
   std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
   std::vector<std::uint8_t> message_;
   std::vector<viz::TileDeltaEncoder> deltas_;  // by column
+  std::vector<bool> whole_;  // by column: its tiles go whole, as kTileKind messages
   std::optional<std::uint32_t> swapped_;
   std::shared_ptr<SentBytes> bytes_sent_;
 };
