@@ -1,6 +1,21 @@
 // A child process: started with posix_spawnp, watched without blocking, its stdout and stderr
 // optionally captured and read line by line with a deadline, and always reaped — an owner that
 // ends for any reason leaves no orphan behind. Every wait is bounded.
+//
+// Example:
+//
+//   using namespace std::chrono_literals;
+//   l2::ChildProcess server({"vizserver", "--displays", "640x480", "--pipeservers", "1",
+//                            "--viz-port", "0", "--frames", "1", "--out", "out/viz"},
+//                           {}, l2::Capture{.out = true});
+//   const std::string listening = server.read_line(l2::Stream::Out, 5000ms).value_or("");
+//   ...  // "listening on 127.0.0.1:PORT": connect, send the frame
+//   std::optional<l2::ExitStatus> status = server.wait_for(10s);
+//   if (!status) status = server.terminate();  // SIGTERM, SIGKILL after 500 ms; reaped
+//   if (!status->ok()) fmt::print(stderr, "vizserver {}\n", status->describe());
+//
+//   const l2::Finished f = l2::run_shell("strip_headers decode 629400f00a01", 2min);
+//   // f.status.shell_code() is the shell's $?, f.out both streams
 #pragma once
 
 #include <sys/types.h>

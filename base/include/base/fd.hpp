@@ -1,6 +1,15 @@
 // An owned file descriptor: closed exactly once, on every path (sockets, shared-memory
 // segments, pty and serial lines, pipes to child processes). Header-only, so the lowest part
 // that holds a descriptor needs no library for it.
+//
+// Example:
+//
+//   int fds[2];
+//   if (::pipe2(fds, O_CLOEXEC) != 0) throw std::system_error(errno, std::generic_category());
+//   l2::Fd read_end(fds[0]), write_end(fds[1]);
+//   ::write(write_end.get(), "x", 1);
+//   write_end.reset();  // closed now; read_end is closed when it goes out of scope
+//   l2::Fd moved = std::move(read_end);  // read_end holds nothing (-1) from here on
 #pragma once
 
 #include <unistd.h>

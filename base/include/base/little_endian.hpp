@@ -1,6 +1,14 @@
 // Integers as the project's wire formats carry them, least significant byte first, whatever
 // the machine: put_u32(p, 0x5A56324C) writes the bytes 4C 32 56 5A, and get_u32 reads them
 // back. Header-only; the one implementation every message format uses.
+//
+// Example:
+//
+//   std::uint8_t header[8];
+//   l2::put_u32(header, 0x5A56324C);  // 4C 32 56 5A
+//   l2::put_u16(header + 4, 1);       // 01 00
+//   const std::uint32_t magic = l2::get_u32(header);      // 0x5A56324C
+//   const std::uint16_t version = l2::get_u16(header + 4);  // 1
 #pragma once
 
 #include <cstdint>

@@ -2,6 +2,25 @@
 // failure is expected input (a bad header, a refused wall, a timeout), so callers test ok()
 // and print reason() the same way everywhere. Exceptions stay for what the caller cannot
 // handle. Header-only.
+//
+// Example:
+//
+//   l2::Result<int> parse_port(std::string_view text) {
+//     int port = 0;
+//     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), port);
+//     if (ec != std::errc{} || end != text.data() + text.size() || port < 1 || port > 65535)
+//       return l2::Failure{fmt::format("'{}' is not a port 1..65535", text)};
+//     return port;
+//   }
+//
+//   const l2::Result<int> port = parse_port(argument);
+//   if (!port.ok()) {
+//     fmt::print(stderr, "--viz-port: {}\n", port.reason());
+//     return 2;
+//   }
+//   listen_on(*port);
+//
+//   l2::Status ready() { return l2::Failure{"no display connected", ENOTCONN}; }
 #pragma once
 
 #include <optional>
