@@ -1,6 +1,18 @@
 // Checks for option values that CLI11's own validators let through: CLI::Range passes NaN
 // (every comparison with it is false), CLI11 clamps an integer too large for its type, and an
 // empty path means the current folder. Timeouts: command_line/options.hpp.
+//
+// Example:
+//
+//   CLI::App app{"my_program: ..."};
+//   float fov = 45;
+//   long long frame = 0;
+//   std::string screenshots;
+//   app.add_option("--camera-fov", fov, "vertical field of view in degrees")
+//       ->check(l2::number_in(1, 170));
+//   app.add_option("--frame", frame, "frame to show")->check(l2::frame_number());
+//   app.add_option("--screenshots", screenshots, "folder")->check(l2::non_empty_path());
+//   // --refresh: l2::add_refresh_option (options.hpp) checks with l2::rate_hz(zero_allowed)
 #pragma once
 
 #include <CLI/CLI.hpp>

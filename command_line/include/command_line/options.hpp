@@ -6,6 +6,18 @@
 //   --*-timeout MS   every timeout in milliseconds, typed MS in the help
 //   --threads N      routing threads, one default
 //   --out DIR        an output folder, never a file
+//
+// Example:
+//
+//   std::filesystem::path wall, out;
+//   double refresh_hz = 60;
+//   int ready_timeout_ms = 1000, threads = 1;
+//   l2::add_wall_option(app, wall, "default: the built-in default wall (walls/kd-2x2.toml)");
+//   l2::add_refresh_option(app, refresh_hz, true, "refreshes per second; 0 = as fast as possible");
+//   l2::add_timeout_option(app, "ready-timeout", ready_timeout_ms, false,
+//                          "per READY wait before asking again with SYNC?");
+//   l2::add_threads_option(app, threads);
+//   l2::add_out_option(app, out, "the displays and the report")->required();
 #pragma once
 
 #include <CLI/CLI.hpp>

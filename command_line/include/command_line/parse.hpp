@@ -1,9 +1,21 @@
-// Every program parses its command line with CLI11 and ends the parse the same way: --help
-// prints the usage and exits 0; a usage error prints one error on stderr, starting with the
-// program's name as every other error of the program does, and exits 2 (CLI11's own codes, 105,
-// 106 and so on, mean nothing to a script); a subcommand that ran in a callback and threw
-// CLI::RuntimeError(status) exits with that status. Checks that need several options
-// at once go in the app's callback(), where a CLI::ValidationError is a usage error too.
+// Every program parses its command line with CLI11 and ends the parse the same way, with
+// parse_command_line.
+//
+// Example:
+//
+//   int main(int argc, char** argv) {
+//     CLI::App app{"my_program: what it does"};
+//     ...  // options, subcommands; app.callback([&] { ... }) for checks across options
+//     if (const std::optional<int> status = l2::parse_command_line(app, argc, argv))
+//       return *status;
+//     return run(options);
+//   }
+//
+// --help prints the usage and exits 0; a usage error prints one error on stderr, starting with
+// the program's name as every other error of the program does, and exits 2 (CLI11's own codes,
+// 105, 106 and so on, mean nothing to a script); a subcommand that ran in a callback and threw
+// CLI::RuntimeError(status) exits with that status. Checks that need several options at once go
+// in the app's callback(), where a CLI::ValidationError is a usage error too.
 #pragma once
 
 #include <CLI/CLI.hpp>

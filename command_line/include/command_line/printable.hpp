@@ -1,8 +1,15 @@
 // Text that came from input (a wall's name, a key, a file name, a peer's message) as it may be
-// printed on a terminal. A control character moves the cursor, changes colours or retitles the
-// window (ESC [ 2 J clears the screen), so each is written as an escape the reader sees
-// ("\x1b", "\n"); so is a byte that is not part of UTF-8, and a C1 control (U+0080..U+009F).
-// Everything else is kept, other scripts too. One function for every program that prints input.
+// printed on a terminal.
+//
+// Example:
+//
+//   fmt::print("wall: {}\n", l2::printable(wall.name));  // ESC [ 2 J prints as \x1b[2J
+//   throw LayoutError(l2::printable(fmt::format("{}:{}: {}", file, line, message)));
+//
+// A control character moves the cursor, changes colours or retitles the window (ESC [ 2 J
+// clears the screen), so each is written as an escape the reader sees ("\x1b", "\n"); so is a
+// byte that is not part of UTF-8, and a C1 control (U+0080..U+009F). Everything else is kept,
+// other scripts too. One function for every program that prints input.
 #pragma once
 
 #include <string>

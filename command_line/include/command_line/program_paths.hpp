@@ -2,6 +2,13 @@
 // it runs from, never a path compiled in. Installed (`cmake --install`), the programs share
 // PREFIX/bin and the files are in PREFIX/share/lightning2; in a build tree each program is in
 // build/<preset>/<part>/ and the files in the working tree the build folder sits in.
+//
+// Example:
+//
+//   const std::string pipeserver = l2::sibling_program("pipeserver").string();
+//   const std::filesystem::path bunny = "data/bunny.ply";
+//   const std::filesystem::path model =
+//       l2::project_files(bunny).value_or(std::filesystem::path()) / bunny;
 #pragma once
 
 #include <filesystem>

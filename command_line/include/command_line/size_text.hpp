@@ -1,6 +1,14 @@
 // A size as written on a command line, "1280x1024", and lists of them, "1280x1024,640x480":
 // shared so that every program reads them the same way, and none through sscanf's %d, which
 // wraps 4294967360 to 64.
+//
+// Example:
+//
+//   for (const std::string& item : l2::list_items("1280x1024,640x480")) {
+//     const std::optional<l2::SizeText> size = l2::parse_size_text(item);
+//     if (!size) throw CLI::ValidationError("--displays", "'" + item + "' is not WIDTHxHEIGHT");
+//     sizes.emplace_back(size->width, size->height);
+//   }
 #pragma once
 
 #include <charconv>
