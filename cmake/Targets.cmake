@@ -100,9 +100,23 @@ function(l2_command_line_files target)
   endif()
 endfunction()
 
+# A library links only the project's libraries defined before it: parts point down, so the
+# order of the parts in the top-level CMakeLists.txt is an order in which each can be read
+# knowing only those before it. Programs and tests, which nothing links, may use any part.
+function(l2_check_links_defined name)
+  foreach(item ${ARGN})
+    if(item MATCHES "^l2_" AND NOT TARGET ${item})
+      message(FATAL_ERROR "l2_library(${name}) links ${item}, which is not defined yet: a library "
+                          "may link only parts before its own (the list of parts in "
+                          "CMakeLists.txt)")
+    endif()
+  endforeach()
+endfunction()
+
 function(l2_library name)
   cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
                         "SOURCES;COMMAND_LINE;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  l2_check_links_defined(${name} ${ARG_LINKS})
   if(ARG_INTERFACE)
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${ARG_INCLUDES})

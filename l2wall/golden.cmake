@@ -7,7 +7,7 @@ l2_library(l2_golden
            SOURCES src/golden_manifest.cpp src/golden_routing.cpp src/golden_rendered.cpp
                    src/golden_entry.cpp src/golden_check.cpp src/golden_update.cpp
            COMMAND_LINE src/golden_command.cpp
-           INCLUDES src
+           PRIVATE_INCLUDES src
            LINKS PUBLIC l2_wallrun l2_tilelayout l2_image l2_pipeserver l2_strip_headers fmt::fmt
                  PRIVATE l2_picture_files l2_folders l2_wall_file l2_emu l2_vizserver PkgConfig::TOMLPP l2_command_line)
 # The default golden folder, wall paths and pipeserver are found where l2wall runs from
@@ -17,7 +17,7 @@ target_link_libraries(l2wall PRIVATE l2_golden)
 
 if(BUILD_TESTING)
   # Pictures, manifest, in-process routing of the test pattern: fast, also under ASan.
-  l2_test(l2wall_golden_tests
+  l2_test(l2wall_golden_tests PRIVATE_INCLUDES src
           SOURCES tests/golden_compare_test.cpp tests/golden_manifest_test.cpp
                   tests/golden_routing_test.cpp
           LINKS l2_golden l2_emu l2_wall_file l2_pipeserver_lsan LABELS "asan")
@@ -26,7 +26,7 @@ if(BUILD_TESTING)
   # pixel, a changed header field in a captured frame, refused updates, idiff's verdict; and,
   # apart because its live runs take longest, a rendered entry made by another Mesa.
   foreach(kind cli cli_rendered)
-    l2_test(l2wall_golden_${kind}_tests SOURCES tests/golden_${kind}_test.cpp
+    l2_test(l2wall_golden_${kind}_tests SOURCES tests/golden_${kind}_test.cpp PRIVATE_INCLUDES src
             LINKS l2_golden l2_tilelayout l2_wall_file l2_image l2_picture_files l2_strip_headers)
     target_compile_definitions(l2wall_golden_${kind}_tests PRIVATE
                                L2WALL_PATH="$<TARGET_FILE:l2wall>"

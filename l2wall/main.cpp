@@ -15,7 +15,7 @@
 #include "golden_command.hpp"
 #include "image/movie_file.hpp"
 #include "image/picture_regions.hpp"
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene_cli.hpp"
 #include "report_plot.hpp"
@@ -37,7 +37,7 @@ int plot_run(const std::string& dir) {
 }  // namespace
 
 #ifdef L2_HAVE_MPI
-#include "cluster/mpi_run.hpp"
+#include "l2wall/mpi_run.hpp"
 #endif
 
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "displays/colours.hpp"
-#include "displays/label_text.hpp"
+#include "image/label_text.hpp"
 
 namespace l2 {
 

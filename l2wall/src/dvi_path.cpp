@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <thread>
 
-#include "live_balance.hpp"
+#include "l2wall/live_balance.hpp"
 
 namespace l2 {
 

@@ -3,9 +3,9 @@
 // the refresh a frame completed (spec §6.4).
 #pragma once
 
-#include "display_path.hpp"
 #include "dvi_link/refresh_clock.hpp"
-#include "dvi_side.hpp"
+#include "l2wall/display_path.hpp"
+#include "l2wall/dvi_side.hpp"
 
 namespace l2 {
 

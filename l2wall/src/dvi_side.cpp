@@ -1,12 +1,12 @@
-#include "dvi_side.hpp"
+#include "l2wall/dvi_side.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <vector>
 
-#include "frame_stamp.hpp"
-#include "run_fault.hpp"
+#include "l2wall/frame_stamp.hpp"
+#include "l2wall/run_fault.hpp"
 
 namespace l2 {
 namespace {

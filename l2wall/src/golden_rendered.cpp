@@ -60,7 +60,7 @@ struct LoggedCommand {
 }  // namespace
 
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references) {
-  // 24 bits of the frame number, R the low byte (l2wall/src/frame_stamp.hpp).
+  // 24 bits of the frame number, R the low byte (l2wall/include/l2wall/frame_stamp.hpp).
   const Rgb stamp{static_cast<std::uint8_t>(frame & 0xFF),
                   static_cast<std::uint8_t>((frame >> 8) & 0xFF),
                   static_cast<std::uint8_t>((frame >> 16) & 0xFF)};

@@ -1,4 +1,4 @@
-#include "host_set.hpp"
+#include "l2wall/host_set.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "run_fault.hpp"
-#include "run_time.hpp"
+#include "l2wall/run_fault.hpp"
+#include "l2wall/run_time.hpp"
 
 namespace l2 {
 namespace {

@@ -1,4 +1,4 @@
-#include "live_balance.hpp"
+#include "l2wall/live_balance.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "balance/control_messages.hpp"
-#include "run_fault.hpp"
+#include "l2wall/run_fault.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {

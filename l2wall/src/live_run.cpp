@@ -3,7 +3,7 @@
 // process fails. The parts: host_set (pipeservers), the display paths behind display_path.hpp
 // (dvi_path: the emulated Lightning-2; viz_path: the compositing server process), run_pictures,
 // run_report.
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -19,18 +19,18 @@
 #include <thread>
 #include <vector>
 
-#include "display_path.hpp"
 #include "dvi_path.hpp"
-#include "host_set.hpp"
 #include "image/folders.hpp"
-#include "live_balance.hpp"
-#include "live_show.hpp"
+#include "l2wall/display_path.hpp"
+#include "l2wall/host_set.hpp"
+#include "l2wall/live_balance.hpp"
+#include "l2wall/live_show.hpp"
+#include "l2wall/run_backends.hpp"
+#include "l2wall/run_fault.hpp"
+#include "l2wall/run_pictures.hpp"
+#include "l2wall/run_report.hpp"
+#include "l2wall/run_time.hpp"
 #include "pipeserver/live_exit.hpp"
-#include "run_backends.hpp"
-#include "run_fault.hpp"
-#include "run_pictures.hpp"
-#include "run_report.hpp"
-#include "run_time.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"

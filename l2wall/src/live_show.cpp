@@ -1,4 +1,4 @@
-#include "live_show.hpp"
+#include "l2wall/live_show.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "run_pictures.hpp"
+#include "l2wall/run_pictures.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include "display_compare.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
-#include "run_fault.hpp"
+#include "l2wall/run_fault.hpp"
 #include "wall_picture.hpp"
 
 namespace l2 {

@@ -1,4 +1,4 @@
-#include "run_report.hpp"
+#include "l2wall/run_report.hpp"
 
 #include <fmt/format.h>
 

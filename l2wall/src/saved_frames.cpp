@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 
 namespace l2 {
 

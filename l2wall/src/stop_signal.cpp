@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "run_fault.hpp"
+#include "l2wall/run_fault.hpp"
 
 namespace l2 {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "live_balance.hpp"
+#include "l2wall/live_balance.hpp"
 #include "pipeserver/live_exit.hpp"
 
 namespace l2 {

@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "display_path.hpp"
+#include "l2wall/display_path.hpp"
 #include "viz_side.hpp"
 
 namespace l2 {

@@ -4,8 +4,8 @@
 
 #include <thread>
 
-#include "run_fault.hpp"
-#include "run_time.hpp"
+#include "l2wall/run_fault.hpp"
+#include "l2wall/run_time.hpp"
 
 namespace l2 {
 namespace {

@@ -2,7 +2,7 @@
 // l2wall refuses it, in the words the user sees.
 #include <gtest/gtest.h>
 
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {

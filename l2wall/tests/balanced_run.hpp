@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "balance/control_messages.hpp"
-#include "frame_stamp.hpp"
 #include "image/png_io.hpp"
+#include "l2wall/frame_stamp.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "wall_run.hpp"
 

@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "base/child_process.hpp"
-#include "frame_stamp.hpp"
 #include "image/png_io.hpp"
+#include "l2wall/frame_stamp.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "wall_run.hpp"

@@ -12,8 +12,8 @@
 #include <string>
 #include <thread>
 
-#include "frame_stamp.hpp"
 #include "image/png_io.hpp"
+#include "l2wall/frame_stamp.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "wall_run.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "image/png_io.hpp"
-#include "run_pictures.hpp"
+#include "l2wall/run_pictures.hpp"
 
 namespace l2 {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 
 namespace l2 {
 namespace {

@@ -25,9 +25,9 @@
 
 #ifdef L2_HAVE_MPI
 #include "cluster/mpi_control_channel.hpp"
-#include "cluster/mpi_host.hpp"
 #include "cluster/mpi_session.hpp"
 #include "cluster/rank_map.hpp"
+#include "mpi_host.hpp"
 #endif
 
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "displays/label_text.hpp"
-#include "displays/legend.hpp"
+#include "image/label_text.hpp"
+#include "image/legend.hpp"
 
 namespace l2 {
 namespace {

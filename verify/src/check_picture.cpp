@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "displays/legend.hpp"
+#include "image/legend.hpp"
 
 namespace l2 {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
-#include "live_show.hpp"
+#include "l2wall/live_show.hpp"
 
 namespace l2 {
 namespace {

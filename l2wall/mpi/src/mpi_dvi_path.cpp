@@ -11,9 +11,9 @@
 
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
-#include "dvi_side.hpp"
-#include "live_balance.hpp"
-#include "run_fault.hpp"
+#include "l2wall/dvi_side.hpp"
+#include "l2wall/live_balance.hpp"
+#include "l2wall/run_fault.hpp"
 
 namespace l2 {
 namespace {

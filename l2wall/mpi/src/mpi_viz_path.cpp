@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "cluster/mpi_wire.hpp"
+#include "l2wall/run_fault.hpp"
 #include "lightning2_emu/mesh.hpp"
-#include "run_fault.hpp"
 
 namespace l2 {
 

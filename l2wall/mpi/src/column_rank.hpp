@@ -10,7 +10,7 @@
 
 #include "cluster/rank_map.hpp"
 #include "column_show.hpp"
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {

@@ -1,4 +1,4 @@
-#include "cluster/mpi_run.hpp"
+#include "l2wall/mpi_run.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -13,11 +13,11 @@
 #include "cluster/mpi_session.hpp"
 #include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
-#include "host_set.hpp"
 #include "image/folders.hpp"
+#include "l2wall/host_set.hpp"
+#include "l2wall/run_backends.hpp"
 #include "mpi_dvi_path.hpp"
 #include "mpi_viz_path.hpp"
-#include "run_backends.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 

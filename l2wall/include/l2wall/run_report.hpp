@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "live_run.hpp"
-#include "run_time.hpp"
+#include "l2wall/live_run.hpp"
+#include "l2wall/run_time.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {

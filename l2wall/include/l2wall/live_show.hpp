@@ -15,7 +15,7 @@
 #include "displays/overlay.hpp"
 #include "displays/wall_presenter.hpp"
 #include "image/rgb_image.hpp"
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {

@@ -1,4 +1,4 @@
-#include "displays/label_text.hpp"
+#include "image/label_text.hpp"
 
 #include <gtest/gtest.h>
 

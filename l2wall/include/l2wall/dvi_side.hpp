@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "host_set.hpp"
+#include "l2wall/host_set.hpp"
+#include "l2wall/run_report.hpp"
 #include "lightning2_emu/emulator.hpp"
-#include "run_report.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {

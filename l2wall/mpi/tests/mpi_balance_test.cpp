@@ -75,7 +75,7 @@ TEST(MpiBalance, StripsRetileOverMpiWithTheDisplaysOfAStaticRun) {
 // Two board columns, both paths compared: each pipeserver's frames go to both columns (a layout
 // may move its tiles onto the other's displays), and the columns composite its tiles too.
 TEST(MpiBalance, TwoColumnsOnBothPathsRetileOverMpi) {
-  const std::string wall_file = L2_SOURCE_DIR "/cluster/tests/two-columns-3x3.toml";
+  const std::string wall_file = L2_SOURCE_DIR "/l2wall/mpi/tests/two-columns-3x3.toml";
   const std::vector<std::string> common{"--wall",   wall_file, "--scene",         "strips",
                                         "--frames", "6",       "--refresh",       "0",
                                         "--keep",   "5",       "--ready-timeout", "5000"};

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cluster/rank_map.hpp"
-#include "display_path.hpp"
+#include "l2wall/display_path.hpp"
 
 namespace l2 {
 

@@ -6,9 +6,9 @@
 
 #include <memory>
 
-#include "display_path.hpp"
-#include "host_set.hpp"
-#include "live_run.hpp"
+#include "l2wall/display_path.hpp"
+#include "l2wall/host_set.hpp"
+#include "l2wall/live_run.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {

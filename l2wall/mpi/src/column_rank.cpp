@@ -14,7 +14,7 @@
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
 #include "column_show.hpp"
-#include "frame_stamp.hpp"
+#include "l2wall/frame_stamp.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
 #include "vizserver/frame_assembler.hpp"

@@ -1,6 +1,6 @@
 // The swap-lock check, fed records directly: one refresh in lock passes, one display a frame
 // behind its group is named with refresh, group, display and rank.
-#include "cluster/swap_lock_check.hpp"
+#include "swap_lock_check.hpp"
 
 #include <gtest/gtest.h>
 

@@ -19,7 +19,7 @@
 
 #include "balance/balancer.hpp"
 #include "balance/control_messages.hpp"
-#include "host_set.hpp"
+#include "l2wall/host_set.hpp"
 
 namespace l2 {
 

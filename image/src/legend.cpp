@@ -1,8 +1,8 @@
-#include "displays/legend.hpp"
+#include "image/legend.hpp"
 
 #include <algorithm>
 
-#include "displays/label_text.hpp"
+#include "image/label_text.hpp"
 
 namespace l2 {
 namespace {

@@ -1,4 +1,4 @@
-#include "cluster/mpi_host.hpp"
+#include "mpi_host.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>

@@ -1,4 +1,4 @@
-#include "cluster/swap_lock_check.hpp"
+#include "swap_lock_check.hpp"
 
 #include <fmt/format.h>
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "live_run.hpp"
+#include "l2wall/live_run.hpp"
 
 namespace l2 {
 

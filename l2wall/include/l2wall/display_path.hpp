@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "base/result.hpp"
-#include "host_set.hpp"
-#include "run_pictures.hpp"
-#include "run_report.hpp"
-#include "run_time.hpp"
+#include "l2wall/host_set.hpp"
+#include "l2wall/run_pictures.hpp"
+#include "l2wall/run_report.hpp"
+#include "l2wall/run_time.hpp"
 
 namespace l2 {
 

@@ -13,11 +13,11 @@
 #include "cluster/mpi_session.hpp"
 #include "cluster/mpi_wire.hpp"
 #include "cluster/rank_map.hpp"
-#include "cluster/swap_lock_check.hpp"
-#include "display_path.hpp"
 #include "dvi_link/refresh_clock.hpp"
+#include "l2wall/display_path.hpp"
+#include "l2wall/live_run.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
-#include "live_run.hpp"
+#include "swap_lock_check.hpp"
 
 namespace l2 {
 
