@@ -98,13 +98,15 @@ int main(int argc, char** argv) {
   l2::add_refresh_option(*run, o.refresh_hz, true,
                          "emulator input refreshes per second; 0 = as fast as possible")
       ->capture_default_str();
+  std::string path = std::string(l2::path_choice_name(o.path));
   run->add_option(
-         "--path", o.path,
+         "--path", path,
          "dvi: DVI links in shared memory and the emulated Lightning-2; vizserver: "
          "tiles read back and sent over TCP to a compositing server process "
          "(--vizserver-program), which streams the composed displays back to l2wall; both: "
          "both at once")
       ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
+      ->each([&o](const std::string& v) { o.path = l2::parse_path_choice(v).value(); })
       ->capture_default_str();
   run->add_option("--balance", o.balance,
                   "re-tile live from the last frame's render times, over the wall file's "

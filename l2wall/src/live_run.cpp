@@ -152,8 +152,8 @@ class LiveRun {
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
   // the compositing server, whose frames are taken (and compared) as the lead swaps.
   void make_paths() {
-    if (o_.path != "vizserver") paths_.push_back(backends_.dvi_path(layout_, o_));
-    if (o_.path != "dvi") paths_.push_back(backends_.viz_path(viz_launch()));
+    if (runs_dvi(o_.path)) paths_.push_back(backends_.dvi_path(layout_, o_));
+    if (runs_viz(o_.path)) paths_.push_back(backends_.viz_path(viz_launch()));
   }
 
   HostLaunch launch_hosts() const {
@@ -534,15 +534,13 @@ HostLaunch host_launch(const RunOptions& o) {
 }
 
 Status run_options_error(const RunOptions& o) {
-  if (o.path != "dvi" && o.path != "vizserver" && o.path != "both")
-    return Failure{"--path: expected dvi, vizserver or both, got " + o.path};
-  if (o.compare && o.path != "both") return Failure{"--compare needs --path both"};
-  if (o.path != "dvi" && o.vizserver_program.empty())
+  if (o.compare && o.path != PathChoice::Both) return Failure{"--compare needs --path both"};
+  if (runs_viz(o.path) && o.vizserver_program.empty())
     return Failure{"--vizserver-program: no compositing server executable given"};
   if (o.viz_port < 0 || o.viz_port > 65535)
     return Failure{fmt::format("--viz-port: {} is not 0..65535", o.viz_port)};
   // There is no compositing server on the DVI path: an address for it would go unused.
-  if (o.path == "dvi" && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
+  if (!runs_viz(o.path) && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
     return Failure{"--viz-host and --viz-port need --path vizserver or both"};
   SavedFrames saved;
   try {
@@ -602,7 +600,7 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
                    "dies"};
   // The compositing server completes a frame when every pipeserver has sent its part: one that
   // died would hold up every frame after it.
-  if (spec.survive_host_loss && o.path != "dvi") {
+  if (spec.survive_host_loss && runs_viz(o.path)) {
     return Failure{survive +
                    ": runs on --path dvi only (the compositing server waits for every "
                    "pipeserver's tiles of a frame)"};

@@ -31,7 +31,7 @@ LiveShow::LiveShow(const RunOptions& o, const Wall& wall)
       planned_(o.frames) {
   const std::optional<ShowMode> mode = parse_show_mode(o.show);
   if (!mode) throw std::invalid_argument("--show: expected window or monitors, got " + o.show);
-  if (o.path == "vizserver") {
+  if (!runs_dvi(o.path)) {
     throw std::invalid_argument(
         "--show needs the DVI path (--path dvi or both): on the vizserver path alone the "
         "compositing server paces the hosts, so there is no refresh to show or to pause");

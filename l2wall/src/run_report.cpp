@@ -50,7 +50,7 @@ long latency_of(const FrameRecord& r) {
 
 void write_csv(const std::filesystem::path& path, const RunOptions& o,
                const std::vector<HostLog>& logs, const std::vector<FrameRecord>& records) {
-  const bool dvi = o.path != "vizserver";
+  const bool dvi = runs_dvi(o.path);
   check_writable(path);  // a report that cannot be written was left out without a word
   std::ofstream csv(path);
   csv << "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
@@ -88,7 +88,7 @@ RunTimes run_times(const RunOptions& o, const std::vector<HostLog>& logs,
       if (f.logged) t.render.back().push_back(f.render_ms);
     }
   }
-  if (o.path != "vizserver") {  // no emulator on the vizserver path
+  if (runs_dvi(o.path)) {  // no emulator on the vizserver path
     for (const FrameRecord& r : records) {
       t.route.push_back(r.route_ms);
       t.swap.push_back(ms_between(r.in_time, r.swap_time));
@@ -124,7 +124,7 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
           : (ms_between(totals.start, records.back().swap_time) - records.back().paused_ms) /
                 1000.0;
   const double writing_s = records.empty() ? 0.0 : records.back().writing_ms / 1000.0;
-  const std::string pace = o.path == "vizserver"
+  const std::string pace = !runs_dvi(o.path)
                                ? std::string("no emulator refresh: the compositing server swaps")
                                : fmt::format("{} refreshes at {}", totals.refreshes,
                                              o.refresh_hz > 0 ? fmt::format("{:g} Hz", o.refresh_hz)
@@ -147,14 +147,14 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   } else {
     summary += "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
   }
-  if (o.path != "vizserver") {
+  if (runs_dvi(o.path)) {
     summary += fmt::format(
         "emulator: {} input frames predicted from their input's last layout, {} of them found "
         "different and parsed\n",
         totals.frames_predicted, totals.predictions_missed);
   }
   summary += spread_lines(run_times(o, logs, records));
-  if (o.path != "dvi") summary += fmt::format("paths: {}\n", o.path);
+  if (runs_viz(o.path)) summary += fmt::format("paths: {}\n", path_choice_name(o.path));
   if (o.compare) {
     summary += fmt::format(
         "compare: {} display pictures identical byte for byte on the DVI and vizserver "

@@ -28,21 +28,21 @@ TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
 TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) {
   RunOptions o;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
-  o.path = "both";
+  o.path = PathChoice::Both;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.survive_host_loss = true;
   EXPECT_EQ(balance_refusal(o, strips_wall(), false).reason(),
             "--survive-host-loss: runs on --path dvi only (the compositing server waits for "
             "every pipeserver's tiles of a frame)");
   o.survive_host_loss = false;
-  o.path = "dvi";
+  o.path = PathChoice::Dvi;
   o.balance = "strips";
   EXPECT_TRUE(run_balance(o, default_wall()).balancing());
   // MPI balances, on either path, but a rank that dies ends the job.
   EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
-  o.path = "both";
+  o.path = PathChoice::Both;
   EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
-  o.path = "dvi";
+  o.path = PathChoice::Dvi;
   o.survive_host_loss = true;
   EXPECT_EQ(balance_refusal(o, default_wall(), true).reason(),
             "--survive-host-loss: does not run over MPI (--mpi): mpirun ends every rank once one "
@@ -55,7 +55,7 @@ TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) 
   o.survive_host_loss = false;
   // Static asks for nothing to refuse.
   o.balance = "static";
-  o.path = "vizserver";
+  o.path = PathChoice::Vizserver;
   EXPECT_FALSE(run_balance(o, strips_wall()).balancing());
   EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
 }

@@ -50,7 +50,7 @@ TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   o.keep = "every";
   o.compare = true;
   EXPECT_EQ(run_options_error(o).reason(), "--compare needs --path both");
-  o.path = "both";
+  o.path = PathChoice::Both;
   EXPECT_TRUE(run_options_error(o).ok());
   // A fault injected after the last frame never happened, and the run passed.
   o.drop_ready = 3;
@@ -67,7 +67,7 @@ TEST(RunOptionsError, KeptFramePastTheLastIsRefused) {
   dvi.viz_port = 5000;
   EXPECT_EQ(run_options_error(dvi).reason(),
             "--viz-host and --viz-port need --path vizserver or both");
-  dvi.path = "vizserver";
+  dvi.path = PathChoice::Vizserver;
   dvi.vizserver_program = "vizserver";
   EXPECT_TRUE(run_options_error(dvi).ok());
 }

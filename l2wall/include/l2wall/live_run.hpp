@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "l2wall/path_choice.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {
@@ -29,7 +30,7 @@ struct RunOptions {
   std::string vizserver_program;       // the vizserver executable (the compositing server)
   std::string viz_host = "127.0.0.1";  // where the compositing server listens for tiles
   int viz_port = 0;                    // its port; 0: a free one, which it reports
-  std::string path = "dvi";            // dvi | vizserver | both
+  PathChoice path = PathChoice::Dvi;   // --path dvi | vizserver | both
   std::string balance;                 // static | strips | kd; empty: the wall's [balance]
   bool survive_host_loss = false;      // balancing: a dead pipeserver's tiles to the others
   bool compare = false;                // both: every display identical byte for byte on both paths

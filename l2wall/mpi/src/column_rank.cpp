@@ -65,7 +65,7 @@ class Column {
       inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
                                                              plan.fb_height)});
     }
-    if (o.path == "both") {
+    if (o.path == PathChoice::Both) {
       std::vector<std::pair<int, int>> sizes;
       for (const Display& d : layout.wall.displays) sizes.emplace_back(d.width, d.height);
       assembler_.emplace(std::move(sizes), map.pipeservers);

@@ -70,7 +70,7 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", pipeserver)).string();
   HostLaunch launch = host_launch(o);
   launch.extra_args = {"--mpi"};
-  if (o.path == "both") launch.extra_args.push_back("--mpi-viz");
+  if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.
   make_folders(o.out, "--out");
@@ -97,7 +97,7 @@ int run_column_rank(const TileLayout& layout, const RankMap& map, int column, co
 }  // namespace
 
 Status mpi_options_error(const RunOptions& o) {
-  if (o.path == "vizserver") return Failure{kOnlyDvi};
+  if (!runs_dvi(o.path)) return Failure{kOnlyDvi};
   if (o.show == "window")
     return Failure{
         "--mpi: --show window is one machine's; --show monitors shows each column's displays "
