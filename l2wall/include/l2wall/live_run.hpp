@@ -7,69 +7,9 @@
 // and it streams the composed displays back to this process (docs/vizserver-protocol.md).
 #pragma once
 
-#include <optional>
-#include <set>
-#include <string>
-#include <vector>
-
-#include "base/result.hpp"
-#include "l2wall/path_choice.hpp"
-#include "tilelayout/wall.hpp"
+#include "l2wall/run_options.hpp"
 
 namespace l2 {
-
-struct RunOptions {
-  std::string wall;  // empty: the built-in default wall
-  std::string scene = "mesh";
-  std::vector<std::string> scene_args;  // --mesh, --camera-... as typed, for every pipeserver
-  int frames = 10;
-  std::string out = "l2wall-out";
-  std::string keep = "last";           // every | last | none | K,L,...
-  double refresh_hz = 60.0;            // 0: as fast as possible
-  std::string pipeserver_program;      // the pipeserver executable
-  std::string vizserver_program;       // the vizserver executable (the compositing server)
-  std::string viz_host = "127.0.0.1";  // where the compositing server listens for tiles
-  int viz_port = 0;                    // its port; 0: a free one, which it reports
-  PathChoice path = PathChoice::Dvi;   // --path dvi | vizserver | both
-  std::string balance;                 // static | strips | kd; empty: the wall's [balance]
-  bool survive_host_loss = false;      // balancing: a dead pipeserver's tiles to the others
-  bool compare = false;                // both: every display identical byte for byte on both paths
-  int threads = 1;                     // emulator routing threads
-  std::string link_codec = "auto";     // frames to the columns, tiles to the server (frame_delta)
-  int start_timeout_ms = 60000;        // until every link carries its first frame
-  int stall_timeout_ms = 5000;         // no display swap for this long: a host hangs
-  int ready_timeout_ms = 1000;         // passed to the hosts (first frames can be slow)
-  bool progress = true;
-  std::string show;           // --show window | monitors: the displays on screen (live_show.hpp)
-  std::string show_readback;  // --show-readback DIR: what the screen shows, written per frame
-  // Fault injection, for tests and demonstrations.
-  int noise_after = -1;      // after swapping this frame, write line noise to every host
-  int inject_mismatch = -1;  // --compare: one pixel of display 0 of this frame changed on the
-                             // vizserver side before comparing
-  int drop_ready = -1;       // do not send READY for this frame to host 0 (it asks SYNC?)
-};
-
-// The frames whose displays are saved (--keep). Parses --keep; throws std::invalid_argument
-// naming the bad item.
-struct SavedFrames {
-  bool every = false, last = false;
-  std::set<int> frames;
-  bool saves(int frame, int frame_count) const {
-    return every || (last && frame == frame_count - 1) || frames.count(frame) > 0;
-  }
-};
-SavedFrames parse_saved_frames(const std::string& text);
-
-// Why these options cannot make a run ("--compare needs --path both", a bad --keep, a saved
-// frame past the last one...), or nullopt. The command line checks it while parsing, so that
-// such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
-Status run_options_error(const RunOptions& options);
-
-// The wall's [balance] with --balance over its mode, and --survive-host-loss.
-BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
-// Why this run cannot balance as asked (--survive-host-loss without balancing, or on another
-// path than dvi, or over MPI), or nullopt: one line naming the option or the wall file's line.
-Status balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
 
 // Returns the exit code: 0 when every frame reached the displays with one frame of latency.
 int run_wall(const RunOptions& options);

@@ -1,0 +1,36 @@
+// The one-machine backends of a live run: pipeserver child processes on shared-memory DVI links
+// and pty back-channels, this process the Lightning-2 (DviPath), the compositing server as a
+// child process (VizPath). The MPI backends are beside it in mpi/src/mpi_run.cpp.
+#include <memory>
+
+#include "dvi_path.hpp"
+#include "l2wall/run_backends.hpp"
+#include "viz_path.hpp"
+
+namespace l2 {
+namespace {
+
+class OneMachine final : public RunBackends {
+ public:
+  std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
+                                        const RunOptions& o) const override {
+    return std::make_unique<DviPath>(layout.wall, o.threads, layout.pipeservers.size(),
+                                     o.refresh_hz, o.frames, o.drop_ready);
+  }
+  std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
+    return std::make_unique<VizPath>(launch);
+  }
+  void start_hosts(HostSet& hosts, const HostLaunch& launch,
+                   const TileLayout& layout) const override {
+    hosts.start(launch, layout);
+  }
+};
+
+}  // namespace
+
+const RunBackends& one_machine_backends() {
+  static const OneMachine backends;
+  return backends;
+}
+
+}  // namespace l2

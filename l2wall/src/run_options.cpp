@@ -1,0 +1,105 @@
+// What the options of `l2wall run` mean together: the combinations that make no run (usage
+// errors), the balancing they ask for and its refusals, and what every pipeserver is started
+// with. No I/O: the command line checks these while parsing, the run again before it starts.
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "balance/balancer.hpp"
+#include "l2wall/run_backends.hpp"
+#include "l2wall/run_options.hpp"
+
+namespace l2 {
+
+HostLaunch host_launch(const RunOptions& o) {
+  HostLaunch l;
+  l.program = o.pipeserver_program;
+  l.wall = o.wall;
+  l.scene = o.scene;
+  l.scene_args = o.scene_args;
+  l.out = o.out;
+  l.frames = o.frames;
+  l.ready_timeout_ms = o.ready_timeout_ms;
+  l.dvi = false;  // unless a path links the hosts
+  l.link_codec = o.link_codec;
+  return l;
+}
+
+Status run_options_error(const RunOptions& o) {
+  if (o.compare && o.path != PathChoice::Both) return Failure{"--compare needs --path both"};
+  if (runs_viz(o.path) && o.vizserver_program.empty())
+    return Failure{"--vizserver-program: no compositing server executable given"};
+  if (o.viz_port < 0 || o.viz_port > 65535)
+    return Failure{fmt::format("--viz-port: {} is not 0..65535", o.viz_port)};
+  // There is no compositing server on the DVI path: an address for it would go unused.
+  if (!runs_viz(o.path) && (o.viz_port != 0 || o.viz_host != RunOptions{}.viz_host))
+    return Failure{"--viz-host and --viz-port need --path vizserver or both"};
+  SavedFrames saved;
+  try {
+    saved = parse_saved_frames(o.keep);
+  } catch (const std::invalid_argument& e) {
+    return Failure{e.what()};
+  }
+  // A frame the run never renders would silently keep nothing, or inject no fault, and the
+  // run would pass as if the fault had been survived.
+  const auto past_the_last = [&o](const char* option, int frame) -> Status {
+    if (frame < o.frames) return {};
+    return Failure{fmt::format("{}: frame {} is past the last frame (--frames {} renders 0..{})",
+                               option, frame, o.frames, o.frames - 1)};
+  };
+  if (!saved.frames.empty()) {
+    if (Status s = past_the_last("--keep", *saved.frames.rbegin()); !s.ok()) return s;
+  }
+  for (const auto& [option, frame] : {std::pair{"--inject-noise", o.noise_after},
+                                      std::pair{"--inject-mismatch", o.inject_mismatch},
+                                      std::pair{"--drop-ready", o.drop_ready}}) {
+    if (Status s = past_the_last(option, frame); !s.ok()) return s;
+  }
+  if (o.inject_mismatch >= 0 && !o.compare) return Failure{"--inject-mismatch needs --compare"};
+  return {};
+}
+
+BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
+  BalanceSpec spec = wall.balance;
+  if (const auto mode = parse_balance_mode(o.balance)) spec.mode = *mode;
+  spec.survive_host_loss = spec.survive_host_loss || o.survive_host_loss;
+  return spec;
+}
+
+Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
+  const BalanceSpec spec = run_balance(o, wall);
+  if (!spec.balancing()) {
+    // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
+    if (o.survive_host_loss) {
+      return Failure{
+          "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
+          "[balance]"};
+    }
+    if (spec.survive_host_loss) {  // the wall's, balancing turned off by --balance static
+      return Failure{fmt::format(
+          "{}:{}: balance.survive_host_loss needs balancing, which --balance static turns off",
+          wall.source.string(), spec.line)};
+    }
+    return {};
+  }
+  const std::string survive = o.survive_host_loss ? std::string("--survive-host-loss")
+                                                  : fmt::format("{}:{}: balance.survive_host_loss",
+                                                                wall.source.string(), spec.line);
+  // A rank that dies ends the whole mpirun job: there is no run left to go on.
+  if (spec.survive_host_loss && mpi)
+    return Failure{survive +
+                   ": does not run over MPI (--mpi): mpirun ends every rank once one "
+                   "dies"};
+  // The compositing server completes a frame when every pipeserver has sent its part: one that
+  // died would hold up every frame after it.
+  if (spec.survive_host_loss && runs_viz(o.path)) {
+    return Failure{survive +
+                   ": runs on --path dvi only (the compositing server waits for every "
+                   "pipeserver's tiles of a frame)"};
+  }
+  return {};
+}
+
+}  // namespace l2
