@@ -94,7 +94,9 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
   for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
-    Host& h = hosts_.emplace_back();
+    // Joins the set once its process runs, so every host in it has one (the pty stays put: it
+    // is owned through a pointer).
+    Host h;
     h.pipeserver = static_cast<int>(i);
     h.link_name = dvi_link_name(fmt::format("in{}", i));
     h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
@@ -103,13 +105,14 @@ void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
     h.channel = std::make_unique<BackChannel>(h.pty->master());
     std::vector<std::string> argv = host_argv(launch, h);
     const auto theirs = launch.control ? open_control(h, argv) : std::nullopt;
-    h.process.emplace(argv, launch.env);
+    h.process = child_host_process(argv, launch.env);
+    hosts_.push_back(std::move(h));
   }
   place_stamps(layout, 0);
 }
 
 void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
-                     const std::function<std::unique_ptr<ReadyChannel>(int pipeserver)>& channel) {
+                     const std::function<RemoteEnd(int pipeserver)>& connect) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
   for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
@@ -117,14 +120,17 @@ void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
     h.pipeserver = static_cast<int>(i);
     // Its own (it may have started writing it already).
     h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
-    h.channel = channel(h.pipeserver);
+    RemoteEnd end = connect(h.pipeserver);
+    h.process = std::move(end.process);
+    h.channel = std::move(end.channel);
+    h.control = std::move(end.control);
   }
   place_stamps(layout, 0);
 }
 
 Host* HostSet::poll_ended() {
   for (Host& h : serving()) {
-    if (!h.exit && h.process) h.exit = h.process->poll();
+    if (!h.exit) h.exit = h.process->poll();
   }
   for (Host& h : serving()) {
     if (h.exit && (!h.exit->ok() || delivered(h) < frames_)) return &h;
@@ -142,9 +148,9 @@ Host* HostSet::killed_by_signal() {
 }
 
 std::string HostSet::ended_how(const Host& h) const {
-  return fmt::format("pipeserver {} (pid {}) {} while rendering frame {}", h.pipeserver,
-                     h.process ? h.process->pid() : -1,
-                     h.exit ? h.exit->describe() : std::string("ended"), delivered(h));
+  return fmt::format("pipeserver {} ({}) {} while rendering frame {}", h.pipeserver,
+                     h.process->place(), h.exit ? h.exit->describe() : std::string("ended"),
+                     delivered(h));
 }
 
 std::string HostSet::describe_end(const Host& h, const std::string& on_displays) const {
@@ -234,7 +240,7 @@ std::string HostSet::late_hosts(int shown) const {
   for (const Host& h : serving()) {
     if (delivered(h) < shown + 1)
       culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.pipeserver,
-                              h.process ? fmt::format("pid {}", h.process->pid()) : h.place);
+                              h.process->place());
   }
   return culprits;
 }
@@ -243,7 +249,7 @@ const Host* HostSet::hung_host(int shown) {
   poll_ended();
   const Host* late = nullptr;
   for (const Host& h : serving()) {
-    if (h.exit || !h.process || delivered(h) >= shown + 1) continue;
+    if (h.exit || delivered(h) >= shown + 1) continue;
     if (h.process->stopped()) return &h;
     if (!late) late = &h;
   }
@@ -251,7 +257,7 @@ const Host* HostSet::hung_host(int shown) {
 }
 
 std::string HostSet::stopped_note(const Host& h) {
-  return h.process && h.process->stopped() ? " (stopped by a signal)" : "";
+  return h.process->stopped() ? " (stopped by a signal)" : "";
 }
 
 void HostSet::finish(milliseconds timeout) {
@@ -260,7 +266,7 @@ void HostSet::finish(milliseconds timeout) {
     serve_channels();
     bool all = true;
     for (Host& h : serving()) {
-      if (!h.process) continue;  // not ours to wait for
+      if (!h.process->awaited()) continue;  // mpirun ends it
       if (!h.exit) h.exit = h.process->poll();
       if (!h.exit) {
         all = false;
@@ -277,14 +283,13 @@ void HostSet::finish(milliseconds timeout) {
 
 void HostSet::request_stop() {
   for (Host& h : hosts_) {
-    if (h.process && !h.exit) h.process->request_stop();
+    if (!h.exit) h.process->request_stop();
   }
 }
 
 void HostSet::shut_down() {
   for (Host& h : hosts_) {
-    if (h.process && !h.exit) h.exit = h.process->terminate(milliseconds(500));
-    h.process.reset();
+    if (!h.exit) h.exit = h.process->terminate(milliseconds(500));
     h.reader.reset();
     if (h.link_name.empty()) continue;  // none of ours
     try {

@@ -340,9 +340,9 @@ class LiveRun {
       if (gave_up_waiting(*ended)) {
         if (const Host* hung = hosts_.hung_host(shown_)) {
           return fmt::format(
-              "pipeserver {} (pid {}) stopped answering{}: it did not deliver frame {}, and "
+              "pipeserver {} ({}) stopped answering{}: it did not deliver frame {}, and "
               "pipeserver {} gave up {} ({}); {}",
-              hung->pipeserver, hung->process->pid(), HostSet::stopped_note(*hung), shown_,
+              hung->pipeserver, hung->process->place(), HostSet::stopped_note(*hung), shown_,
               ended->pipeserver, waiting_for(*ended), ended->exit->describe(), displays_showing());
         }
       }

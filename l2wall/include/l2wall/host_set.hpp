@@ -19,6 +19,7 @@
 #include "balance/control_channel.hpp"
 #include "base/child_process.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "l2wall/host_process.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "sync_backchannel/pty_pair.hpp"
@@ -33,7 +34,8 @@ struct StampSpot {
 };
 
 // One pipeserver. Members are destroyed in reverse: the process is ended and reaped before the
-// link reader and the pty go away.
+// link reader and the pty go away. On one machine this run owns its link, pty and process;
+// attached (an MPI rank) it has a back-channel and a process end named by its place only.
 struct Host {
   int pipeserver = 0;
   std::string link_name;
@@ -41,8 +43,7 @@ struct Host {
   std::unique_ptr<PtyPair> pty;
   std::unique_ptr<ReadyChannel> channel;  // the serial line over the pty
   std::unique_ptr<DviReceiver> reader;    // shared memory on one machine
-  std::optional<ChildProcess> process;
-  std::string place;  // a host this process did not start: "rank 3 on node-a, pid 4242"
+  std::unique_ptr<HostProcess> process;   // never null once started or attached
   std::optional<ExitStatus> exit;
   std::uint64_t sequence = 0;  // frames published on its link so far
   int accepted = -1;           // the frame number of the last new frame the emulator took in
@@ -87,11 +88,17 @@ class HostSet {
  public:
   // Starts one process per pipeserver of the layout.
   void start(const HostLaunch& launch, const TileLayout& layout);
-  // Hosts this process did not start (MPI ranks, cluster/): no process, no link reader here;
-  // `channel(pipeserver)` is each one's back-channel. Their links are taken in elsewhere, and the
-  // path that does records Host::sequence.
+  // What a host this process did not start is reached through.
+  struct RemoteEnd {
+    std::unique_ptr<HostProcess> process;     // remote_host_process(its place)
+    std::unique_ptr<ReadyChannel> channel;    // its back-channel
+    std::unique_ptr<ControlChannel> control;  // balancing (HostLaunch::control), else null
+  };
+  // Hosts this process did not start (MPI ranks, mpi/): no link reader here; `connect` gives
+  // each one's ends. Their links are taken in elsewhere, and the path that does records
+  // Host::sequence.
   void attach(const HostLaunch& launch, const TileLayout& layout,
-              const std::function<std::unique_ptr<ReadyChannel>(int pipeserver)>& channel);
+              const std::function<RemoteEnd(int pipeserver)>& connect);
 
   // Frames `from` on carry their stamps where `layout` puts them.
   void place_stamps(const TileLayout& layout, int from);

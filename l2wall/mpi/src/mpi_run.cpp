@@ -42,17 +42,17 @@ class MpiBackends final : public RunBackends {
   }
   void start_hosts(HostSet& hosts, const HostLaunch& launch,
                    const TileLayout& layout) const override {
-    hosts.attach(launch, layout, [this](int pipeserver) -> std::unique_ptr<ReadyChannel> {
+    hosts.attach(launch, layout, [this, &launch](int pipeserver) {
       const int rank = map_.pipeserver_rank(pipeserver);
-      return std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
-    });
-    for (Host& h : hosts.hosts()) {
-      const int rank = map_.pipeserver_rank(h.pipeserver);
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
-      h.place = fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid);
+      HostSet::RemoteEnd end;
+      end.process =
+          remote_host_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid));
+      end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
-      if (launch.control) h.control = std::make_unique<MpiControlChannel>(rank);
-    }
+      if (launch.control) end.control = std::make_unique<MpiControlChannel>(rank);
+      return end;
+    });
   }
 
  private:

@@ -1,0 +1,52 @@
+#include "l2wall/host_process.hpp"
+
+#include <utility>
+
+namespace l2 {
+namespace {
+
+class ChildHost final : public HostProcess {
+ public:
+  ChildHost(const std::vector<std::string>& argv, const std::vector<std::string>& env)
+      : process_(argv, env) {}
+  std::string place() const override { return "pid " + std::to_string(process_.pid()); }
+  std::optional<ExitStatus> poll() override { return process_.poll(); }
+  bool stopped() const override { return process_.stopped(); }
+  bool awaited() const override { return true; }
+  void request_stop() override { process_.request_stop(); }
+  std::optional<ExitStatus> terminate(std::chrono::milliseconds grace) override {
+    return process_.terminate(grace);
+  }
+
+ private:
+  ChildProcess process_;
+};
+
+// Watched from elsewhere: the coordinator learns of a rank's end from its liveness connection
+// (mpi/), and mpirun ends and reaps it.
+class RemoteHost final : public HostProcess {
+ public:
+  explicit RemoteHost(std::string place) : place_(std::move(place)) {}
+  std::string place() const override { return place_; }
+  std::optional<ExitStatus> poll() override { return std::nullopt; }
+  bool stopped() const override { return false; }
+  bool awaited() const override { return false; }
+  void request_stop() override {}
+  std::optional<ExitStatus> terminate(std::chrono::milliseconds) override { return std::nullopt; }
+
+ private:
+  std::string place_;
+};
+
+}  // namespace
+
+std::unique_ptr<HostProcess> child_host_process(const std::vector<std::string>& argv,
+                                                const std::vector<std::string>& env) {
+  return std::make_unique<ChildHost>(argv, env);
+}
+
+std::unique_ptr<HostProcess> remote_host_process(std::string place) {
+  return std::make_unique<RemoteHost>(std::move(place));
+}
+
+}  // namespace l2
