@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <thread>
 
@@ -59,6 +60,15 @@ Record receive_watched(int from, int tag, const std::function<void()>& watch) {
 std::int64_t Reader::next() {
   if (at_ >= r_.size()) throw std::runtime_error("MPI record shorter than its contents say");
   return r_[at_++];
+}
+
+std::size_t Reader::count(std::size_t words) {
+  const std::int64_t n = next();
+  const std::size_t left = r_.size() - at_;
+  if (n < 0 || static_cast<std::uint64_t>(n) > left / std::max<std::size_t>(words, 1))
+    throw std::runtime_error(
+        fmt::format("MPI record: a count of {} items where {} words are left", n, left));
+  return static_cast<std::size_t>(n);
 }
 
 }  // namespace l2::mpi_wire

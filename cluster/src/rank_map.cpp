@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "lightning2_emu/mesh.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 
 namespace l2 {
 
@@ -27,8 +27,7 @@ std::string RankMap::role(int rank) const {
 
 RankMap make_rank_map(const TileLayout& layout, bool every_column) {
   const Wall& wall = layout.wall;
-  const Mesh mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
-                              {wall.board_max_width, wall.board_max_height});
+  const Mesh mesh = wall_mesh(wall);
   RankMap map;
   map.pipeservers = static_cast<int>(layout.pipeservers.size());
   map.columns = mesh.columns();

@@ -1,4 +1,5 @@
 #include "l2wall/dvi_side.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 
 #include <fmt/format.h>
 
@@ -9,20 +10,6 @@
 #include "l2wall/run_fault.hpp"
 
 namespace l2 {
-namespace {
-
-EmulatorConfig emulator_config(const Wall& wall, int threads) {
-  EmulatorConfig config;
-  for (const Display& d : wall.displays)
-    config.displays.push_back({d.id, d.width, d.height, d.swap_group});
-  config.mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
-                          {wall.board_max_width, wall.board_max_height});
-  config.workers = threads;
-  return config;
-}
-
-}  // namespace
-
 DviSide::DviSide(const Wall& wall, int threads, std::size_t hosts)
     : emulator_(emulator_config(wall, threads)), inputs_(hosts) {}
 

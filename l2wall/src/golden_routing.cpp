@@ -7,6 +7,7 @@
 
 #include "image/png_io.hpp"
 #include "lightning2_emu/emulator.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 #include "pipeserver/viz_target.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/test_pattern.hpp"
@@ -23,25 +24,14 @@ std::vector<int> display_ids(const Wall& wall) {
   return ids;
 }
 
-// The mesh the live run builds for the wall (l2wall run): as few boards as take its inputs.
-EmulatorConfig emulator_config(const Wall& wall) {
-  EmulatorConfig config;
-  for (const Display& d : wall.displays) {
-    config.displays.push_back({d.id, d.width, d.height, d.swap_group});
-  }
-  config.mesh = Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
-                          {wall.board_max_width, wall.board_max_height});
-  config.workers = 1;  // the result does not depend on it; one keeps the check light
-  return config;
-}
-
 }  // namespace
 
 std::vector<RgbImage> emulate_displays(const TileLayout& layout,
                                        const std::vector<RgbImage>& frames,
                                        StripErrorCounts& errors,
                                        const std::vector<std::string>& names) {
-  const EmulatorConfig config = emulator_config(layout.wall);
+  // One routing thread: the result does not depend on it, and one keeps the check light.
+  const EmulatorConfig config = emulator_config(layout.wall, 1);
   for (std::size_t i = 0; i < frames.size(); ++i) {
     config.mesh.check_input(static_cast<int>(i), frames[i].width(), frames[i].height(),
                             i < names.size() ? names[i] : fmt::format("pipeserver {}", i));

@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -29,10 +30,9 @@ Setup make_setup(const CommonOptions& o) {
     setup.from_wall = true;
     setup.canvas_width = wall.canvas_width;
     setup.canvas_height = wall.canvas_height;
-    for (const Display& d : wall.displays) {
-      setup.config.displays.push_back({d.id, d.width, d.height, d.swap_group});
+    setup.config.displays = display_specs(wall);
+    for (const Display& d : wall.displays)
       setup.placements.push_back({d.id, d.canvas_x, d.canvas_y});
-    }
     limit = {wall.board_max_width, wall.board_max_height};
     mesh_inputs = wall.pipeserver_count;
   } else {

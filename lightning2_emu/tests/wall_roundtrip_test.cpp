@@ -7,6 +7,7 @@
 
 #include "frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/test_pattern.hpp"
@@ -16,12 +17,6 @@ namespace l2 {
 namespace {
 
 constexpr Rgb kBackground{3, 2, 1};
-
-std::vector<DisplaySpec> display_specs(const Wall& wall) {
-  std::vector<DisplaySpec> specs;
-  for (const Display& d : wall.displays) specs.push_back({d.id, d.width, d.height, d.swap_group});
-  return specs;
-}
 
 // What each display must show: the background, and every planned tile's pixels placed directly
 // at their display position by `pixel(display, x, y)`.

@@ -4,6 +4,7 @@
 
 #include "image/png_io.hpp"
 #include "lightning2_emu/router.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 #include "verify/check_picture.hpp"
 #include "verify/check_report.hpp"
 
@@ -11,8 +12,7 @@ namespace l2 {
 
 std::vector<RgbImage> route_on_wall(const Wall& wall, std::span<const RgbImage> frames,
                                     int workers) {
-  std::vector<DisplaySpec> specs;
-  for (const Display& d : wall.displays) specs.push_back({d.id, d.width, d.height, d.swap_group});
+  std::vector<DisplaySpec> specs = display_specs(wall);
   const InputLimit limit{wall.board_max_width, wall.board_max_height};
   const Mesh mesh = Mesh::fit(std::max(wall.pipeserver_count, static_cast<int>(frames.size())),
                               static_cast<int>(specs.size()), limit);

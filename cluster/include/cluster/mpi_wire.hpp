@@ -67,6 +67,10 @@ class Reader {
   explicit Reader(const Record& r) : r_(r) {}
   std::int64_t next();
   int next_int() { return static_cast<int>(next()); }
+  // A count of items of `words` words each that follow: throws when the record cannot hold
+  // them, so that a corrupt count never sizes an allocation.
+  std::size_t count(std::size_t words);
+  bool done() const { return at_ == r_.size(); }
 
  private:
   const Record& r_;

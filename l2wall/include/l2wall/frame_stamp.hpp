@@ -7,6 +7,13 @@
 
 namespace l2 {
 
+// Where a frame's stamp is: its host's first tile's framebuffer pixel and the display pixel it
+// lands on (they move with the layout).
+struct StampSpot {
+  int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
+  bool operator==(const StampSpot&) const = default;
+};
+
 inline int decode_stamp(const std::uint8_t* rgb) {
   return rgb[0] | (rgb[1] << 8) | (rgb[2] << 16);
 }

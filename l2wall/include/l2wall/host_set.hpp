@@ -19,6 +19,7 @@
 #include "balance/control_channel.hpp"
 #include "base/child_process.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "l2wall/frame_stamp.hpp"
 #include "l2wall/host_process.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "sync_backchannel/back_channel.hpp"
@@ -26,12 +27,6 @@
 #include "tilelayout/planner.hpp"
 
 namespace l2 {
-
-// Where a frame's stamp is: its host's first tile's framebuffer pixel and the display pixel it
-// lands on (they move with the layout).
-struct StampSpot {
-  int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
-};
 
 // One pipeserver. Members are destroyed in reverse: the process is ended and reaped before the
 // link reader and the pty go away. On one machine this run owns its link, pty and process;

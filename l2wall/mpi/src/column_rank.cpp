@@ -13,10 +13,12 @@
 
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
+#include "column_messages.hpp"
 #include "column_show.hpp"
 #include "l2wall/frame_stamp.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 #include "vizserver/frame_assembler.hpp"
 #include "vizserver/tile_delta.hpp"
 
@@ -33,17 +35,6 @@ struct ColumnInput {
   std::uint64_t sequence = 0;  // the frame taken in
 };
 
-// Where a host's stamps are this refresh, as the coordinator says (a balanced run's layouts
-// move them): in its next frame, and on the displays for the frame it delivered last and the
-// one before (the displays show one of them).
-struct StampSpots {
-  int fb_x = 0, fb_y = 0;
-  struct OnDisplay {
-    int display = 0, x = 0, y = 0;
-  };
-  OnDisplay last, before;
-};
-
 class Column {
  public:
   Column(const TileLayout& layout, const RankMap& map, int column, const RunOptions& o,
@@ -51,7 +42,8 @@ class Column {
       : layout_(layout),
         map_(map),
         pool_(o.threads),
-        router_(mesh(layout.wall), specs(layout.wall, map.displays_of_column[column]), pool_),
+        router_(wall_mesh(layout.wall), display_specs(layout.wall, map.displays_of_column[column]),
+                pool_),
         frames_(static_cast<std::size_t>(map.mesh_inputs)),
         back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
         done_frame_(back_frame_),
@@ -74,10 +66,7 @@ class Column {
           throw std::runtime_error(joined.reason());
       }
     }
-    std::vector<DisplaySpec> all;
-    for (const Display& d : layout.wall.displays)
-      all.push_back({d.id, d.width, d.height, d.swap_group});
-    for (const SwapGroup& g : make_swap_groups(all)) {
+    for (const SwapGroup& g : make_swap_groups(display_specs(layout.wall))) {
       std::vector<int>& own = group_indices_.emplace_back();
       for (const int id : g.displays) {
         if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
@@ -112,28 +101,13 @@ class Column {
   }
 
  private:
-  static Mesh mesh(const Wall& wall) {
-    return Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
-                     {wall.board_max_width, wall.board_max_height});
-  }
-
-  static std::vector<DisplaySpec> specs(const Wall& wall, const std::vector<int>& ids) {
-    std::vector<DisplaySpec> out;
-    for (const Display& d : wall.displays) {
-      if (std::find(ids.begin(), ids.end(), d.id) != ids.end())
-        out.push_back({d.id, d.width, d.height, d.swap_group});
-    }
-    return out;
-  }
-
-  // [kTick, refresh, n, swapped group indices..., n, sequence per pipeserver...,
-  //  n, (fb x, fb y, display, x, y of the last frame, display, x, y of the one before) per
-  //  pipeserver]
   void tick(Reader& in) {
-    const std::int64_t refresh = in.next();
+    Tick tick = decode_tick(in);
     bool swapped = false;
-    for (int n = in.next_int(); n > 0; --n) {
-      for (const int index : group_indices_[static_cast<std::size_t>(in.next_int())]) {
+    for (const int group : tick.swapped_groups) {
+      if (group < 0 || static_cast<std::size_t>(group) >= group_indices_.size())
+        throw std::runtime_error(fmt::format("the coordinator swapped group {}", group));
+      for (const int index : group_indices_[static_cast<std::size_t>(group)]) {
         router_.display(index).swap();
         shown_frame_[static_cast<std::size_t>(index)] =
             done_frame_[static_cast<std::size_t>(index)];
@@ -141,20 +115,12 @@ class Column {
       }
     }
     if (swapped && show_) present();
-    std::vector<std::uint64_t> sequences(static_cast<std::size_t>(in.next_int()));
-    for (auto& s : sequences) s = static_cast<std::uint64_t>(in.next());
-    spots_.resize(static_cast<std::size_t>(in.next_int()));
-    for (StampSpots& spot : spots_) {
-      spot.fb_x = in.next_int();
-      spot.fb_y = in.next_int();
-      for (StampSpots::OnDisplay* d : {&spot.last, &spot.before}) {
-        d->display = in.next_int();
-        d->x = in.next_int();
-        d->y = in.next_int();
-      }
-    }
+    const std::vector<std::uint64_t>& sequences = tick.sequences;
+    spots_ = std::move(tick.stamps);
     for (ColumnInput& input : inputs_) {
       const auto p = static_cast<std::size_t>(input.pipeserver);
+      if (p >= sequences.size())
+        throw std::runtime_error(fmt::format("the coordinator's tick has no pipeserver {}", p));
       input.receiver->take(sequences[p], pump_);
       const auto f = input.receiver->latest();
       InputFrame& frame = frames_[p];
@@ -164,12 +130,14 @@ class Column {
       // The spot is the new frame's: an input with none keeps the stamp it had.
       if (sequences[p] != input.sequence && p < spots_.size()) {
         input.sequence = sequences[p];
-        if (spots_[p].fb_x < f->width && spots_[p].fb_y < f->height)
-          input.stamp = decode_stamp(frame.row(spots_[p].fb_y) + spots_[p].fb_x * 3);
+        const StampSpot& next = spots_[p].next;
+        if (next.fb_x >= 0 && next.fb_y >= 0 && next.fb_x < f->width && next.fb_y < f->height)
+          input.stamp = decode_stamp(frame.row(next.fb_y) + next.fb_x * 3);
       }
     }
     router_.scan(frames_);
-    mpi_wire::send(observation(refresh), RankMap::kCoordinator, mpi_wire::kObservation);
+    mpi_wire::send(encode(observation(tick.refresh)), RankMap::kCoordinator,
+                   mpi_wire::kObservation);
   }
 
   void present() {
@@ -179,35 +147,31 @@ class Column {
                    });
   }
 
-  // [refresh, n, (pipeserver, present, idle, torn, parity, displays fed, stamp)...,
-  //  n, (pipeserver, its stamps on the displays: of the last frame, of the one before, each
-  //  mpi_wire::kStampNotHere on another column's display)..., n, (display, frame shown)...]
-  Record observation(std::int64_t refresh) const {
-    Record r{refresh, static_cast<std::int64_t>(inputs_.size())};
+  Observation observation(std::int64_t refresh) const {
+    Observation o;
+    o.refresh = refresh;
     for (const ColumnInput& input : inputs_) {
       const InputFrameStats& st = router_.scanned(input.pipeserver);
-      r.insert(r.end(), {input.pipeserver, st.present, st.idle(), st.torn(), st.parity(),
-                         static_cast<std::int64_t>(st.displays_fed), input.stamp});
+      o.inputs.push_back({input.pipeserver, st.present, st.idle(), st.torn(), st.parity(),
+                          st.displays_fed, input.stamp});
     }
-    Record shown;
-    const auto read = [&](const StampSpots::OnDisplay& d) -> std::int64_t {
-      const int index = router_.index_of_display(d.display);
+    // A spot on another column's display (or off this one) is not read here.
+    const auto read = [&](const StampSpot& s) -> int {
+      const int index = router_.index_of_display(s.display);
       if (index < 0) return mpi_wire::kStampNotHere;
       const RgbImage& front = router_.display(index).front();
-      if (d.x >= front.width() || d.y >= front.height()) return mpi_wire::kStampNotHere;
-      return decode_stamp(front.row(d.y).data() + d.x * 3);
+      if (s.dx < 0 || s.dy < 0 || s.dx >= front.width() || s.dy >= front.height())
+        return mpi_wire::kStampNotHere;
+      return decode_stamp(front.row(s.dy).data() + s.dx * 3);
     };
     for (std::size_t p = 0; p < spots_.size(); ++p) {
-      const std::int64_t last = read(spots_[p].last), before = read(spots_[p].before);
-      if (last == mpi_wire::kStampNotHere && before == mpi_wire::kStampNotHere) continue;
-      shown.insert(shown.end(), {static_cast<std::int64_t>(p), last, before});
+      const StampsShown shown{static_cast<int>(p), read(spots_[p].last), read(spots_[p].before)};
+      if (shown.last != mpi_wire::kStampNotHere || shown.before != mpi_wire::kStampNotHere)
+        o.stamps.push_back(shown);
     }
-    r.push_back(static_cast<std::int64_t>(shown.size() / 3));
-    r.insert(r.end(), shown.begin(), shown.end());
-    r.push_back(router_.display_count());
     for (int d = 0; d < router_.display_count(); ++d)
-      r.insert(r.end(), {router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)]});
-    return r;
+      o.displays.push_back({router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)], 0});
+    return o;
   }
 
   // [kRoute, n, route per mesh input..., n, completed group indices...]
@@ -324,7 +288,7 @@ class Column {
   WorkerPool pool_;
   Router router_;
   std::vector<ColumnInput> inputs_;
-  std::vector<StampSpots> spots_;   // by pipeserver, this refresh's (the coordinator's tick)
+  std::vector<HostStamps> spots_;   // by pipeserver, this refresh's (the coordinator's tick)
   std::vector<InputFrame> frames_;  // by mesh input; absent: no signal here
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index

@@ -1,4 +1,5 @@
 #include "mpi_dvi_path.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -11,6 +12,7 @@
 
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
+#include "column_messages.hpp"
 #include "l2wall/dvi_side.hpp"
 #include "l2wall/live_balance.hpp"
 #include "l2wall/run_fault.hpp"
@@ -35,9 +37,7 @@ using mpi_wire::Reader;
 using mpi_wire::Record;
 
 std::vector<SwapGroup> wall_groups(const Wall& wall) {
-  std::vector<DisplaySpec> specs;
-  for (const Display& d : wall.displays) specs.push_back({d.id, d.width, d.height, d.swap_group});
-  return make_swap_groups(specs);
+  return make_swap_groups(display_specs(wall));
 }
 
 }  // namespace
@@ -115,25 +115,21 @@ std::uint64_t MpiDviPath::groups_of_displays(std::uint64_t displays) const {
 void MpiDviPath::refresh(HostSet& hosts) {
   const auto index = static_cast<std::int64_t>(refreshes_++);
   sequencer_.refresh(swapped_);
-  Record tick{mpi_wire::kTick, index, static_cast<std::int64_t>(swapped_.size())};
-  tick.insert(tick.end(), swapped_.begin(), swapped_.end());
-  tick.push_back(static_cast<std::int64_t>(hosts.hosts().size()));
-  for (const Host& h : hosts.hosts()) tick.push_back(static_cast<std::int64_t>(h.sequence));
+  Tick tick;
+  tick.refresh = index;
+  tick.swapped_groups.assign(swapped_.begin(), swapped_.end());
   // Where each host's stamps are (a balanced run's layouts move them): in the frame it delivers
   // next, and on the displays for its last frame and the one before; the displays show one.
-  tick.push_back(static_cast<std::int64_t>(hosts.hosts().size()));
   accepted_.clear();
   for (const Host& h : hosts.hosts()) {
-    const StampSpot& next = h.stamp(h.accepted + 1);
-    const StampSpot& last = h.stamp(h.accepted);
-    const StampSpot& before = h.stamp(h.accepted - 1);
-    tick.insert(tick.end(), {next.fb_x, next.fb_y, last.display, last.dx, last.dy, before.display,
-                             before.dx, before.dy});
+    tick.sequences.push_back(h.sequence);
+    tick.stamps.push_back({h.stamp(h.accepted + 1), h.stamp(h.accepted), h.stamp(h.accepted - 1)});
     accepted_.push_back(h.accepted);
   }
+  const Record record = encode(tick);
   for (int c = 0; c < map_.columns; ++c)
-    mpi_wire::send(tick, map_.column_rank(c), mpi_wire::kCommand);
-  control_bytes_ += tick.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
+    mpi_wire::send(record, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += record.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
 
   observations_.assign(static_cast<std::size_t>(map_.mesh_inputs), FrameObservation{});
   stamps_.assign(static_cast<std::size_t>(map_.mesh_inputs), -1);
@@ -153,31 +149,33 @@ void MpiDviPath::refresh(HostSet& hosts) {
       continue;
     }
     control_bytes_ += answer->size() * sizeof(std::int64_t);
-    Reader in(*answer);
-    if (in.next() != index)
+    const Observation seen = decode_observation(*answer);
+    if (seen.refresh != index)
       throw RunFault(fmt::format("{} answered another refresh", map_.role(rank)));
-    for (int n = in.next_int(); n > 0; --n) {
-      const int pipeserver = in.next_int();
-      FrameObservation& o = observations_[static_cast<std::size_t>(pipeserver)];
-      o.present = in.next() != 0;
-      o.idle = in.next() != 0;
-      o.torn = in.next() != 0;
-      o.parity = in.next_int();
-      // Each column sees the strips for its own displays: together, every display fed.
-      o.groups_fed |= groups_of_displays(static_cast<std::uint64_t>(in.next()));
-      stamps_[static_cast<std::size_t>(pipeserver)] = in.next_int();
-    }
-    for (int n = in.next_int(); n > 0; --n) {
-      const auto pipeserver = static_cast<std::size_t>(in.next_int());
-      const int last = in.next_int(), before = in.next_int();
-      if (pipeserver >= seen_last.size())
+    const auto pipeserver_of = [&](int pipeserver, std::size_t count) {
+      if (pipeserver < 0 || static_cast<std::size_t>(pipeserver) >= count)
         throw RunFault(fmt::format("{} named pipeserver {}", map_.role(rank), pipeserver));
-      if (last != mpi_wire::kStampNotHere) seen_last[pipeserver] = last;
-      if (before != mpi_wire::kStampNotHere) seen_before[pipeserver] = before;
+      return static_cast<std::size_t>(pipeserver);
+    };
+    for (const InputSeen& i : seen.inputs) {
+      const std::size_t p = pipeserver_of(i.pipeserver, observations_.size());
+      FrameObservation& o = observations_[p];
+      o.present = i.present;
+      o.idle = i.idle;
+      o.torn = i.torn;
+      o.parity = i.parity;
+      // Each column sees the strips for its own displays: together, every display fed.
+      o.groups_fed |= groups_of_displays(i.displays_fed);
+      stamps_[p] = i.stamp;
     }
-    for (int n = in.next_int(); n > 0; --n) {
-      const int display = in.next_int();
-      displays_shown_.push_back({display, in.next_int(), rank});
+    for (const StampsShown& s : seen.stamps) {
+      const std::size_t p = pipeserver_of(s.pipeserver, seen_last.size());
+      if (s.last != mpi_wire::kStampNotHere) seen_last[p] = s.last;
+      if (s.before != mpi_wire::kStampNotHere) seen_before[p] = s.before;
+    }
+    for (DisplayShown d : seen.displays) {
+      d.rank = rank;  // the answer's sender
+      displays_shown_.push_back(d);
     }
   }
   // As on one machine (DviSide::frame_shown): the last frame if its stamp says so, else the

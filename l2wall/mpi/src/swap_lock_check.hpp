@@ -19,6 +19,7 @@ struct DisplayShown {
   int display = 0;  // id
   int frame = -1;   // the frame stamp it shows; -1: no frame yet (background only)
   int rank = 0;     // the column rank that holds it
+  bool operator==(const DisplayShown&) const = default;
 };
 
 class SwapLockCheck {

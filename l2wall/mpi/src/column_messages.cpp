@@ -1,0 +1,94 @@
+#include "column_messages.hpp"
+
+#include <stdexcept>
+
+namespace l2 {
+namespace {
+
+using mpi_wire::Reader;
+using mpi_wire::Record;
+
+constexpr std::size_t kSpotWords = 5, kHostStampsWords = 3 * kSpotWords;
+constexpr std::size_t kInputWords = 7, kStampsShownWords = 3, kDisplayWords = 2;
+
+void put(Record& r, const StampSpot& s) {
+  r.insert(r.end(), {s.fb_x, s.fb_y, s.display, s.dx, s.dy});
+}
+
+StampSpot take_spot(Reader& in) {
+  StampSpot s;
+  for (int* field : {&s.fb_x, &s.fb_y, &s.display, &s.dx, &s.dy}) *field = in.next_int();
+  return s;
+}
+
+}  // namespace
+
+Record encode(const Tick& t) {
+  Record r{mpi_wire::kTick, t.refresh, static_cast<std::int64_t>(t.swapped_groups.size())};
+  r.insert(r.end(), t.swapped_groups.begin(), t.swapped_groups.end());
+  r.push_back(static_cast<std::int64_t>(t.sequences.size()));
+  for (const std::uint64_t s : t.sequences) r.push_back(static_cast<std::int64_t>(s));
+  r.push_back(static_cast<std::int64_t>(t.stamps.size()));
+  for (const HostStamps& h : t.stamps) {
+    for (const StampSpot* s : {&h.next, &h.last, &h.before}) put(r, *s);
+  }
+  return r;
+}
+
+Tick decode_tick(Reader& in) {
+  Tick t;
+  t.refresh = in.next();
+  t.swapped_groups.resize(in.count(1));
+  for (int& g : t.swapped_groups) g = in.next_int();
+  t.sequences.resize(in.count(1));
+  for (std::uint64_t& s : t.sequences) s = static_cast<std::uint64_t>(in.next());
+  t.stamps.resize(in.count(kHostStampsWords));
+  for (HostStamps& h : t.stamps) {
+    for (StampSpot* s : {&h.next, &h.last, &h.before}) *s = take_spot(in);
+  }
+  return t;
+}
+
+Record encode(const Observation& o) {
+  Record r{o.refresh, static_cast<std::int64_t>(o.inputs.size())};
+  for (const InputSeen& i : o.inputs) {
+    r.insert(r.end(), {i.pipeserver, i.present, i.idle, i.torn, i.parity,
+                       static_cast<std::int64_t>(i.displays_fed), i.stamp});
+  }
+  r.push_back(static_cast<std::int64_t>(o.stamps.size()));
+  for (const StampsShown& s : o.stamps) r.insert(r.end(), {s.pipeserver, s.last, s.before});
+  r.push_back(static_cast<std::int64_t>(o.displays.size()));
+  for (const DisplayShown& d : o.displays) r.insert(r.end(), {d.display, d.frame});
+  return r;
+}
+
+Observation decode_observation(const Record& record) {
+  Reader in(record);
+  Observation o;
+  o.refresh = in.next();
+  o.inputs.resize(in.count(kInputWords));
+  for (InputSeen& i : o.inputs) {
+    i.pipeserver = in.next_int();
+    i.present = in.next() != 0;
+    i.idle = in.next() != 0;
+    i.torn = in.next() != 0;
+    i.parity = in.next_int();
+    i.displays_fed = static_cast<std::uint64_t>(in.next());
+    i.stamp = in.next_int();
+  }
+  o.stamps.resize(in.count(kStampsShownWords));
+  for (StampsShown& s : o.stamps) {
+    s.pipeserver = in.next_int();
+    s.last = in.next_int();
+    s.before = in.next_int();
+  }
+  o.displays.resize(in.count(kDisplayWords));
+  for (DisplayShown& d : o.displays) {
+    d.display = in.next_int();
+    d.frame = in.next_int();
+  }
+  if (!in.done()) throw std::runtime_error("MPI record: words past its last item");
+  return o;
+}
+
+}  // namespace l2
