@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
       "l2wall: a Lightning-2 wall on one machine. `l2wall run` starts one pipeserver process per\n"
       "input of the wall and emulates the Lightning-2 mesh in this process: the pipeservers'\n"
       "scanned-out frames travel through POSIX shared memory (the DVI links), READY goes back\n"
-      "over one pty per host (the serial back-channels)."};
+      "over one pty per pipeserver (the serial back-channels)."};
   app.require_subcommand(1);
   l2::RunOptions o;
   o.pipeserver_program = l2::sibling_program("pipeserver").string();
@@ -87,10 +87,11 @@ int main(int argc, char** argv) {
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  l2::add_out_option(*run, o.out,
-                     "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
-                     "row per frame), summary.txt, host-<i>.log, vizserver.log (the compositing "
-                     "server's lines), layouts.txt (--balance: each frame's layout)")
+  l2::add_out_option(
+      *run, o.out,
+      "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
+      "row per frame), summary.txt, pipeserver-<i>.log, vizserver.log (the compositing "
+      "server's lines), layouts.txt (--balance: each frame's layout)")
       ->capture_default_str();
   run->add_option("--keep", o.keep,
                   "frames whose displays are written: every | last | none | K,L,...")
@@ -157,7 +158,7 @@ int main(int argc, char** argv) {
                   "run under Xvfb). window: one window laying out the wall as the wall file "
                   "places it, mullions dark, overlay line with frame, fps and latency. monitors: "
                   "each display fullscreen on the monitor its wall-file `monitor` names. Keys: "
-                  "space pauses the run (READY is held back, the hosts wait), s saves a "
+                  "space pauses the run (READY is held back, the pipeservers wait), s saves a "
                   "screenshot of every display to OUT/screenshots/, q or Esc ends the run as "
                   "after its last frame. With --mpi: monitors only, each board column rank "
                   "showing its own displays on its machine's DISPLAY; no keys")

@@ -32,7 +32,7 @@ start=$SECONDS ps0=
 while kill -0 "$run" 2>/dev/null; do
   [[ -n $ps0 ]] || ps0=$(pgrep -f -- "--pipeserver 0 .*$out/run" | head -1 || true)
   if [[ -n $ps0 ]] && [[ -e /proc/$ps0 ]]; then
-    done_frames=$(grep -c '^frame ' "$out/run/host-0.log" 2>/dev/null || echo 0)
+    done_frames=$(grep -c '^frame ' "$out/run/pipeserver-0.log" 2>/dev/null || echo 0)
     echo "$((SECONDS - start)),$done_frames,$(rss $run),$(fds $run),$(rss "$ps0"),$(fds "$ps0")" >>"$out/soak.csv"
   fi
   sleep "$every"

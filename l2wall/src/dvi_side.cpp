@@ -10,18 +10,18 @@
 #include "l2wall/run_fault.hpp"
 
 namespace l2 {
-DviSide::DviSide(const Wall& wall, int threads, std::size_t hosts)
-    : emulator_(emulator_config(wall, threads)), inputs_(hosts) {}
+DviSide::DviSide(const Wall& wall, int threads, std::size_t pipeservers)
+    : emulator_(emulator_config(wall, threads)), inputs_(pipeservers) {}
 
-void record_new_frames(HostSet& hosts, std::vector<FrameRecord>& records,
+void record_new_frames(PipeserverSet& pipeservers, std::vector<FrameRecord>& records,
                        std::span<const FrameKind> kinds,
                        const std::function<int(std::size_t)>& stamp, std::uint64_t refresh,
                        RunClock::time_point t0, double route_ms) {
   const int frames = static_cast<int>(records.size());
   std::vector<int> credited;  // frames this refresh's time is already counted in
-  for (std::size_t i = 0; i < hosts.hosts().size(); ++i) {
+  for (std::size_t i = 0; i < pipeservers.all().size(); ++i) {
     if (kinds.size() <= i || kinds[i] != FrameKind::New) continue;
-    Host& h = hosts.hosts()[i];
+    LivePipeserver& h = pipeservers.all()[i];
     h.accepted = stamp(i);
     if (h.accepted < 0 || h.accepted >= frames)
       throw RunFault(
@@ -29,19 +29,19 @@ void record_new_frames(HostSet& hosts, std::vector<FrameRecord>& records,
     FrameRecord& r = records[static_cast<std::size_t>(h.accepted)];
     if (std::find(credited.begin(), credited.end(), h.accepted) == credited.end()) {
       credited.push_back(h.accepted);
-      r.route_ms += route_ms;  // once per frame, however many of its hosts came in now
+      r.route_ms += route_ms;  // once per frame, however many of its pipeservers came in now
     }
     r.in_refresh = refresh;  // the last input taken in decides
     r.in_time = t0;
   }
 }
 
-int send_readies(std::span<const int> ready_inputs, HostSet& hosts, int drop_ready) {
+int send_readies(std::span<const int> ready_inputs, PipeserverSet& pipeservers, int drop_ready) {
   int held = 0;
   for (int i : ready_inputs) {
-    Host& h = hosts.hosts()[static_cast<std::size_t>(i)];
+    LivePipeserver& h = pipeservers.all()[static_cast<std::size_t>(i)];
     if (i == 0 && h.accepted == drop_ready) {
-      h.held_ready = h.accepted;  // lost on the line: the host must ask with SYNC?
+      h.held_ready = h.accepted;  // lost on the line: the pipeserver must ask with SYNC?
       ++held;
       continue;
     }
@@ -50,17 +50,18 @@ int send_readies(std::span<const int> ready_inputs, HostSet& hosts, int drop_rea
   return held;
 }
 
-const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>& records) {
+const Emulator::Tick& DviSide::refresh(PipeserverSet& pipeservers,
+                                       std::vector<FrameRecord>& records) {
   const auto t0 = RunClock::now();
   const Emulator::Tick& tick = emulator_.tick(inputs_);
   const double route_ms = ms_between(t0, RunClock::now());
   ++refreshes_;
   record_new_frames(
-      hosts, records, tick.kinds,
+      pipeservers, records, tick.kinds,
       [&](std::size_t i) {
-        // A host delivers its frames in order: the new one is the one after the last, and its
+        // A pipeserver delivers its frames in order: the new one is the one after the last, and its
         // layout says where its stamp is.
-        const Host& h = hosts.hosts()[i];
+        const LivePipeserver& h = pipeservers.all()[i];
         const StampSpot& s = h.stamp(h.accepted + 1);
         return decode_stamp(inputs_[i].row(s.fb_y) + s.fb_x * 3);
       },
@@ -68,8 +69,8 @@ const Emulator::Tick& DviSide::refresh(HostSet& hosts, std::vector<FrameRecord>&
   return tick;
 }
 
-int DviSide::frame_shown(const Host& h) const {
-  // The displays show the frame the host delivered last, or (its next one taken in during the
+int DviSide::frame_shown(const LivePipeserver& h) const {
+  // The displays show the frame the pipeserver delivered last, or (its next one taken in during the
   // swap's refresh) the one before; a balanced run may have moved the stamp between them.
   const auto read = [&](int frame) {
     const StampSpot& s = h.stamp(frame);
@@ -81,14 +82,14 @@ int DviSide::frame_shown(const Host& h) const {
   return read(h.accepted);
 }
 
-int DviSide::lowest_frame_shown(const HostSet& hosts) const {
+int DviSide::lowest_frame_shown(const PipeserverSet& pipeservers) const {
   int lowest = 1 << 30;
-  for (const Host& h : hosts.serving()) lowest = std::min(lowest, frame_shown(h));
+  for (const LivePipeserver& h : pipeservers.serving()) lowest = std::min(lowest, frame_shown(h));
   return lowest;
 }
 
-int DviSide::send_readies(const Emulator::Tick& tick, HostSet& hosts, int drop_ready) {
-  return l2::send_readies(tick.ready_inputs, hosts, drop_ready);
+int DviSide::send_readies(const Emulator::Tick& tick, PipeserverSet& pipeservers, int drop_ready) {
+  return l2::send_readies(tick.ready_inputs, pipeservers, drop_ready);
 }
 
 }  // namespace l2

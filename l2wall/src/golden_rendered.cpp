@@ -92,7 +92,7 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
                                 (run.work / "live").string()};
   if (entry.vizserver) live.insert(live.end(), {"--path", "both", "--compare"});
   const auto reference = run.work / "reference";
-  // Both at once: the live run spends most of its time starting its hosts.
+  // Both at once: the live run spends most of its time starting its pipeservers.
   LoggedCommand rendering(
       {run.pipeserver_program, "--wall", wall_file.string(), "--scene", entry.scene, "--frame",
        std::to_string(entry.frame), "--reference", reference.string()},

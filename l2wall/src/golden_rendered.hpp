@@ -29,8 +29,8 @@ struct RenderedRun {
 EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::path& wall_file,
                                const GoldenEntry& entry, const RenderedRun& run);
 
-// A live host writes the frame number into the first pixel of its first tile
-// (pipeserver/src/live_host.hpp); the reference render has no such pixel, so it is added.
+// A live pipeserver writes the frame number into the first pixel of its first tile
+// (pipeserver/src/live_mode.hpp); the reference render has no such pixel, so it is added.
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references);
 
 // What `pipeserver --gl-info` reports: the GL implementation the pipeservers render with.

@@ -63,7 +63,8 @@ std::vector<RgbImage> compose_on_vizserver(const TileLayout& layout,
     senders.push_back(
         viz::TileSender::connect("127.0.0.1", server.port(), plan.pipeserver, display_count));
   }
-  // Each pipeserver sends its tiles straight out of its scanned-out frame, as a live host does.
+  // Each pipeserver sends its tiles straight out of its scanned-out frame, as a live pipeserver
+  // does.
   const auto k = static_cast<std::uint32_t>(frame);
   for (const PipeserverPlan& plan : layout.pipeservers) {
     const RgbImage& fb = frames.at(plan.pipeserver);

@@ -51,10 +51,10 @@ bool LiveBalance::stale(int frame) const {
   });
 }
 
-void LiveBalance::serve(HostSet& hosts) {
-  // A lost host sends nothing more: the frame's times are in once the others' are.
+void LiveBalance::serve(PipeserverSet& pipeservers) {
+  // A lost pipeserver sends nothing more: the frame's times are in once the others' are.
   for (const int s : balancer_.lost()) have_[static_cast<std::size_t>(s)] = true;
-  for (Host& h : hosts.serving()) {
+  for (LivePipeserver& h : pipeservers.serving()) {
     if (!h.control) continue;
     const std::size_t i = static_cast<std::size_t>(h.pipeserver);
     while (!have_[i]) {
@@ -62,7 +62,7 @@ void LiveBalance::serve(HostSet& hosts) {
       try {
         line = h.control->receive_line(std::chrono::milliseconds(0));
       } catch (const ControlError&) {
-        return;  // the host is gone: the run names it from its exit
+        return;  // the pipeserver is gone: the run names it from its exit
       }
       if (!line) break;
       TimesMessage m;
@@ -84,12 +84,12 @@ void LiveBalance::serve(HostSet& hosts) {
   if (std::find(have_.begin(), have_.end(), false) != have_.end()) return;
   const int frame = next_times_++;
   std::fill(have_.begin(), have_.end(), false);
-  if (frame + 1 < frames_) send_layout(hosts, frame + 1);
+  if (frame + 1 < frames_) send_layout(pipeservers, frame + 1);
 }
 
 // Frame 0 was rendered in the wall's plan, not in the balancer's first layout: frame 1 takes
 // that layout, and from then on each frame's times move it.
-void LiveBalance::send_layout(HostSet& hosts, int frame) {
+void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   if (frame > 1) {
     try {
       const BalanceStep step = balancer_.next(pending_);
@@ -98,7 +98,7 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
     } catch (const std::invalid_argument& e) {
       throw RunFault(fmt::format("balancing frame {}: {}", frame, e.what()));
     } catch (const LayoutError& e) {
-      // Only with a host lost: the others cannot take its tiles, and its layout cannot stay.
+      // Only with a pipeserver lost: the others cannot take its tiles, and its layout cannot stay.
       throw RunFault(fmt::format("{}, and the run cannot go on without it: {}",
                                  losses_.empty() ? "a pipeserver died" : losses_.back().how,
                                  e.what()));
@@ -112,14 +112,14 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
   }
   LayoutMessage m = layout_message(frame, layout);
   const std::string line = encode(m);
-  for (Host& h : hosts.serving()) {
+  for (LivePipeserver& h : pipeservers.serving()) {
     try {
       if (h.control) h.control->send_line(line);
     } catch (const ControlError&) {
-      // the host is gone: the run names it from its exit
+      // the pipeserver is gone: the run names it from its exit
     }
   }
-  hosts.place_stamps(layout, frame);
+  pipeservers.place_stamps(layout, frame);
   // Frames are sent in order, one each: the vectors by frame grow by this one.
   lines_.resize(static_cast<std::size_t>(frame));
   lines_.push_back(line);
@@ -135,16 +135,18 @@ void LiveBalance::send_layout(HostSet& hosts, int frame) {
   frame_layout_.push_back(id);
 }
 
-void LiveBalance::count_strips(const HostSet& hosts,
-                               const std::vector<std::uint64_t>& routed_by_host) {
-  for (std::size_t i = 0; i < routed_by_host.size() && i < hosts.hosts().size(); ++i)
-    strips_[static_cast<std::size_t>(layout_of(hosts.hosts()[i].accepted))] += routed_by_host[i];
+void LiveBalance::count_strips(const PipeserverSet& pipeservers,
+                               const std::vector<std::uint64_t>& routed_by_pipeserver) {
+  for (std::size_t i = 0; i < routed_by_pipeserver.size() && i < pipeservers.all().size(); ++i)
+    strips_[static_cast<std::size_t>(layout_of(pipeservers.all()[i].accepted))] +=
+        routed_by_pipeserver[i];
 }
 
-void LiveBalance::check_swap(const std::vector<int>& group_displays, const HostSet& hosts,
-                             const std::function<int(const Host&)>& frame_shown) {
+void LiveBalance::check_swap(const std::vector<int>& group_displays,
+                             const PipeserverSet& pipeservers,
+                             const std::function<int(const LivePipeserver&)>& frame_shown) {
   std::vector<int> shown;
-  for (const Host& h : hosts.serving()) {
+  for (const LivePipeserver& h : pipeservers.serving()) {
     const int frame = frame_shown(h);
     if (frame == INT_MAX) continue;
     const int display = h.stamp(frame).display;

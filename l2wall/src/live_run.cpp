@@ -1,6 +1,6 @@
 // The live run's orchestration: which display paths run for --path, the loop of the lead path's
 // swaps, what happens on each swap (latency, compare, saved frames), and naming the cause when a
-// process fails. The parts: host_set (pipeservers), the display paths behind display_path.hpp
+// process fails. The parts: pipeserver_set, the display paths behind display_path.hpp
 // (dvi_path: the emulated Lightning-2; viz_path: the compositing server process), run_pictures,
 // run_report.
 #include "l2wall/live_run.hpp"
@@ -21,9 +21,9 @@
 
 #include "image/folders.hpp"
 #include "l2wall/display_path.hpp"
-#include "l2wall/host_set.hpp"
 #include "l2wall/live_balance.hpp"
 #include "l2wall/live_show.hpp"
+#include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
 #include "l2wall/run_fault.hpp"
 #include "l2wall/run_pictures.hpp"
@@ -64,15 +64,16 @@ class LiveRun {
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     make_paths();
     start_balance();
-    backends_.start_hosts(hosts_, launch_hosts(), layout_);
-    for (auto& p : paths_) p->open(hosts_, milliseconds(o_.start_timeout_ms), watch_);
-    // A host that dies before every host's first frame is a start-up fault, survived or not.
+    backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
+    for (auto& p : paths_) p->open(pipeservers_, milliseconds(o_.start_timeout_ms), watch_);
+    // A pipeserver that dies before every pipeserver's first frame is a start-up fault, survived or
+    // not.
     links_open_ = true;
     run_frames_until_stopped();
     if (shown_ < o_.frames) {
       end_at_quit();  // q under --show, or a stop signal
     } else {
-      hosts_.finish(milliseconds(10000));
+      pipeservers_.finish(milliseconds(10000));
       for (auto& p : paths_) p->finish();
     }
     write_report();
@@ -124,12 +125,12 @@ class LiveRun {
     }
   }
 
-  // Ends every process of the run and reaps it; removes the links a dead host left. All are
+  // Ends every process of the run and reaps it; removes the links a dead pipeserver left. All are
   // asked first, so their grace periods overlap.
   void shut_down() {
-    hosts_.request_stop();
+    pipeservers_.request_stop();
     for (auto& p : paths_) p->shut_down();
-    hosts_.shut_down();
+    pipeservers_.shut_down();
   }
 
  private:
@@ -145,7 +146,7 @@ class LiveRun {
     Wall wall = wall_;
     wall.balance = spec;
     balance_ = std::make_unique<LiveBalance>(wall, balance_settings(wall), layout_, o_.frames);
-    paths_.front()->follow_layouts(*balance_, hosts_);
+    paths_.front()->follow_layouts(*balance_, pipeservers_);
   }
 
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
@@ -155,10 +156,10 @@ class LiveRun {
     if (runs_viz(o_.path)) paths_.push_back(backends_.viz_path(viz_launch()));
   }
 
-  HostLaunch launch_hosts() const {
-    HostLaunch l = host_launch(o_);
-    for (const auto& p : paths_) p->add_host_args(l);
-    if (show_) l.extra_args = LiveShow::host_args();
+  PipeserverLaunch launch_pipeservers() const {
+    PipeserverLaunch l = pipeserver_launch(o_);
+    for (const auto& p : paths_) p->add_pipeserver_args(l);
+    if (show_) l.extra_args = LiveShow::pipeserver_args();
     l.control = balance_ != nullptr;
     return l;
   }
@@ -203,14 +204,14 @@ class LiveRun {
     last_swap_ = totals_.start;
     while (shown_ < o_.frames) {
       if (show_ && !keep_showing()) break;
-      if (const auto swap = lead.step(shown_, hosts_, records_, watch_)) on_swap(*swap);
+      if (const auto swap = lead.step(shown_, pipeservers_, records_, watch_)) on_swap(*swap);
       check_stall();
     }
   }
 
   void on_swap(const PathSwap& swap) {
     const auto now = swap.time;
-    // Without refreshes the clock starts once every host has delivered its first frame, as
+    // Without refreshes the clock starts once every pipeserver has delivered its first frame, as
     // it does after the DVI links carry their first frames.
     if (shown_ == 0 && !swap.refresh) totals_.start = now;
     last_swap_ = now;  // the displays swapped: the other path's frame is waited from here
@@ -229,12 +230,12 @@ class LiveRun {
       take_from_other_paths(shown_);
       if (saved_.saves(shown_, o_.frames)) save_frame(shown_);
       if (shown_ == o_.noise_after) {
-        for (auto& p : paths_) totals_.noise_bytes += p->inject_noise(hosts_);
+        for (auto& p : paths_) totals_.noise_bytes += p->inject_noise(pipeservers_);
       }
       ++shown_;
     }
     // The stall clock restarts once this swap's work is done: the time spent comparing and
-    // keeping pictures, or waiting for the other path's frame, is not a host's.
+    // keeping pictures, or waiting for the other path's frame, is not a pipeserver's.
     last_swap_ = RunClock::now();
     if (show_ && shown_ > 0) {
       const FrameRecord& r = records_[static_cast<std::size_t>(shown_ - 1)];
@@ -246,7 +247,7 @@ class LiveRun {
 
   void check_latency(const FrameRecord& r) {
     const long latency = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
-    // A frame a lost host never delivered waited until its death was noticed: counted stale.
+    // A frame a lost pipeserver never delivered waited until its death was noticed: counted stale.
     if (latency != 1 && balance_ && balance_->stale(shown_)) {
       balance_->note_late(shown_);
       return;
@@ -298,24 +299,24 @@ class LiveRun {
   void check_processes() {
     if (stopped_) return;  // the processes are ending by the signal; the run is over
     check_stop_signal(shown_, displays_showing());
-    Host* ended = hosts_.poll_ended();
-    while (ended && survive(*ended)) ended = hosts_.poll_ended();
+    LivePipeserver* ended = pipeservers_.poll_ended();
+    while (ended && survive(*ended)) ended = pipeservers_.poll_ended();
     const bool path_down =
         std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
     if (ended || path_down) throw RunFault(blame());
   }
 
-  // --survive-host-loss: the run goes on without a host that ended, its tiles planned over the
-  // others from the next layout on. False when it cannot (no balancing run, not yet running,
-  // the last host) or should not (the host gave up waiting for READY: an effect whose cause
-  // blame() names): the run ends on it as without the option.
-  bool survive(Host& h) {
+  // --survive-host-loss: the run goes on without a pipeserver that ended, its tiles planned over
+  // the others from the next layout on. False when it cannot (no balancing run, not yet running,
+  // the last pipeserver) or should not (the pipeserver gave up waiting for READY: an effect whose
+  // cause blame() names): the run ends on it as without the option.
+  bool survive(LivePipeserver& h) {
     if (!balance_ || !balance_->survives_losses() || !links_open_) return false;
     if (gave_up_waiting(h)) return false;
-    const std::string how = hosts_.ended_how(h);
+    const std::string how = pipeservers_.ended_how(h);
     const double seconds = ms_between(totals_.start, RunClock::now()) / 1000.0;
-    if (!balance_->lose(h.pipeserver, hosts_.delivered(h), how, seconds)) return false;
-    hosts_.lose(h);
+    if (!balance_->lose(h.pipeserver, pipeservers_.delivered(h), how, seconds)) return false;
+    pipeservers_.lose(h);
     std::fprintf(stderr, "%sl2wall: %s; the run goes on without it (--survive-host-loss)\n",
                  progress_shown_ ? "\n" : "", how.c_str());
     return true;
@@ -324,25 +325,25 @@ class LiveRun {
   // When one process fails the others lose their connection to it and end too; name the cause.
   // A process killed by a signal is never such an effect. A compositing server that died
   // without saying why is the cause of the pipeservers losing it; one that said why (a
-  // pipeserver disconnected) is an effect, its words name the host. One still running that a
+  // pipeserver disconnected) is an effect, its words name the pipeserver. One still running that a
   // pipeserver gave up on hangs: it is named, not the pipeserver.
   std::string blame() {
     for (auto& p : paths_) p->settle(milliseconds(300));
-    if (Host* killed = hosts_.killed_by_signal())
-      return hosts_.describe_end(*killed, displays_showing());
+    if (LivePipeserver* killed = pipeservers_.killed_by_signal())
+      return pipeservers_.describe_end(*killed, displays_showing());
     for (auto& p : paths_) {
       if (const Status why = p->failure_as_cause(shown_, displays_showing()); !why.ok())
         return why.reason();
     }
-    if (Host* ended = hosts_.poll_ended()) {
-      // A host that gave up waiting (for READY or SWAPPED) is an effect when another, still
+    if (LivePipeserver* ended = pipeservers_.poll_ended()) {
+      // A pipeserver that gave up waiting (for READY or SWAPPED) is an effect when another, still
       // there, never delivered the frame everyone waits for: that one stopped answering.
       if (gave_up_waiting(*ended)) {
-        if (const Host* hung = hosts_.hung_host(shown_)) {
+        if (const LivePipeserver* hung = pipeservers_.hung_pipeserver(shown_)) {
           return fmt::format(
               "pipeserver {} ({}) stopped answering{}: it did not deliver frame {}, and "
               "pipeserver {} gave up {} ({}); {}",
-              hung->pipeserver, hung->process->place(), HostSet::stopped_note(*hung), shown_,
+              hung->pipeserver, hung->process->place(), PipeserverSet::stopped_note(*hung), shown_,
               ended->pipeserver, waiting_for(*ended), ended->exit->describe(), displays_showing());
         }
       }
@@ -350,7 +351,7 @@ class LiveRun {
         if (const Status why = p->hang_behind(*ended, shown_, displays_showing()); !why.ok())
           return why.reason();
       }
-      return hosts_.describe_end(*ended, displays_showing());
+      return pipeservers_.describe_end(*ended, displays_showing());
     }
     for (auto& p : paths_) {
       if (const Status why = p->failure(shown_, displays_showing()); !why.ok()) return why.reason();
@@ -358,13 +359,13 @@ class LiveRun {
     return "a process of the run ended";
   }
 
-  static bool gave_up_waiting(const Host& h) {
+  static bool gave_up_waiting(const LivePipeserver& h) {
     return h.exit && h.exit->signal == 0 &&
            (h.exit->code == kExitNoReady || h.exit->code == kExitLostCompositingServer);
   }
 
-  // What a host that gave up was waiting for, by its exit code.
-  std::string waiting_for(const Host& h) const {
+  // What a pipeserver that gave up was waiting for, by its exit code.
+  std::string waiting_for(const LivePipeserver& h) const {
     if (h.exit->code == kExitNoReady) return "waiting for READY";
     const std::string server = server_process();
     return "waiting for SWAPPED from the " + (server.empty() ? std::string("vizserver") : server);
@@ -381,26 +382,29 @@ class LiveRun {
   void check_stall() {
     if (shown_ >= o_.frames) return;  // every frame is on the displays: nothing to wait for
     const auto now = RunClock::now();
-    // Before the first swap the hosts may still be starting (GL context, first render).
+    // Before the first swap the pipeservers may still be starting (GL context, first render).
     const int limit_ms = shown_ == 0 ? o_.start_timeout_ms : o_.stall_timeout_ms;
     if (ms_between(last_swap_, now) < limit_ms) return;
-    // A host that has not delivered the frame the displays wait for is the one that hangs; if
-    // every host delivered it, the compositing server did not.
-    std::string culprits = hosts_.late_hosts(shown_);
-    // What the hosts that did deliver are doing: waiting for the swap that cannot come.
+    // A pipeserver that has not delivered the frame the displays wait for is the one that hangs; if
+    // every pipeserver delivered it, the compositing server did not.
+    std::string culprits = pipeservers_.late_pipeservers(shown_);
+    // What the pipeservers that did deliver are doing: waiting for the swap that cannot come.
     std::string note;
-    const auto& all = hosts_.hosts();
-    const bool some_delivered = std::any_of(
-        all.begin(), all.end(), [&](const Host& h) { return hosts_.delivered(h) > shown_; });
-    if (const Host* hung = some_delivered ? hosts_.hung_host(shown_) : nullptr) {
-      note = fmt::format("{}; the other pipeservers are waiting for {}",
-                         HostSet::stopped_note(*hung), paths_.front()->hosts_wait_for());
+    const auto& all = pipeservers_.all();
+    const bool some_delivered = std::any_of(all.begin(), all.end(), [&](const LivePipeserver& h) {
+      return pipeservers_.delivered(h) > shown_;
+    });
+    if (const LivePipeserver* hung =
+            some_delivered ? pipeservers_.hung_pipeserver(shown_) : nullptr) {
+      note =
+          fmt::format("{}; the other pipeservers are waiting for {}",
+                      PipeserverSet::stopped_note(*hung), paths_.front()->pipeservers_wait_for());
     }
     if (const std::string server = server_process(); culprits.empty() && !server.empty())
       culprits = "the " + server;
     throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
-                               limit_ms, culprits.empty() ? "no host" : culprits, shown_, note,
-                               displays_showing()));
+                               limit_ms, culprits.empty() ? "no pipeserver" : culprits, shown_,
+                               note, displays_showing()));
   }
 
   // What the displays show now, for a fault message. With both paths they can differ by a
@@ -424,19 +428,20 @@ class LiveRun {
   // --- --show ------------------------------------------------------------------------------
 
   // --show: the keys, and a pause that holds the run (nothing taken in, no READY sent, the
-  // hosts wait) while still watching the hosts. False once the user quit and a frame is shown.
+  // pipeservers wait) while still watching the pipeservers. False once the user quit and a frame is
+  // shown.
   bool keep_showing() {
     const LiveShow::Keys k = show_->keys([this] {
       check_processes();
-      hosts_.serve_channels();
+      pipeservers_.serve_channels();
     });
-    paused_ms_ += static_cast<double>(k.paused.count());  // the hosts wait too: not fps
+    paused_ms_ += static_cast<double>(k.paused.count());  // the pipeservers wait too: not fps
     last_swap_ += k.paused;                               // nor a stall
     return !(k.quit && shown_ > 0);
   }
 
-  // q / Esc: the frames shown so far are the run, as if --frames had said so. The hosts, still
-  // rendering the rest, are stopped; --keep last saves this frame.
+  // q / Esc: the frames shown so far are the run, as if --frames had said so. The pipeservers,
+  // still rendering the rest, are stopped; --keep last saves this frame.
   void end_at_quit() {
     const bool saved = saved_.saves(shown_ - 1, o_.frames);
     o_.frames = shown_;
@@ -459,11 +464,12 @@ class LiveRun {
   void write_report() {
     if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
-    std::vector<std::string> host_logs;
-    for (const Host& h : hosts_.hosts()) host_logs.push_back(h.report_path);
+    std::vector<std::string> pipeserver_logs;
+    for (const LivePipeserver& h : pipeservers_.all()) pipeserver_logs.push_back(h.report_path);
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
                               (balance_ ? balance_->summary() : std::string());
-    const std::string summary = write_run_report(o_, wall_, host_logs, records_, totals_, extra);
+    const std::string summary =
+        write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra);
     if (o_.progress) std::fputs("\n", stderr);
     std::fputs(summary.c_str(), stdout);
   }
@@ -476,17 +482,18 @@ class LiveRun {
   std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
   std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
-  HostSet hosts_;  // after paths_: destroyed first, so hosts end before the compositing server
+  PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the
+                               // compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
   const RunWatch watch_{[this] { check_processes(); },
                         [this] {
                           check_processes();
                           check_stall();
-                          hosts_.serve_channels();
+                          pipeservers_.serve_channels();
                         }};
   bool progress_shown_ = false;
-  bool links_open_ = false;  // every host delivered its first frame
+  bool links_open_ = false;  // every pipeserver delivered its first frame
   int shown_ = 0;            // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
   int stopped_ = 0;        // the stop signal that ended the frames, or 0

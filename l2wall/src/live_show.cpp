@@ -34,7 +34,7 @@ LiveShow::LiveShow(const RunOptions& o, const Wall& wall)
   if (!runs_dvi(o.path)) {
     throw std::invalid_argument(
         "--show needs the DVI path (--path dvi or both): on the vizserver path alone the "
-        "compositing server paces the hosts, so there is no refresh to show or to pause");
+        "compositing server paces the pipeservers, so there is no refresh to show or to pause");
   }
   // Vsync paces a refresh-rate run like a real display; --refresh 0 asks for full speed.
   presenter_ = open_presenter(*mode, wall, {.vsync = o.refresh_hz > 0, .title = title(wall)});
@@ -47,7 +47,7 @@ std::string LiveShow::title(const Wall& wall) {
   return wall.name.empty() ? std::string("l2wall") : "l2wall - " + printable(wall.name);
 }
 
-std::vector<std::string> LiveShow::host_args() {
+std::vector<std::string> LiveShow::pipeserver_args() {
   return {"--ready-retries", "1000"};  // the pipeserver's largest: 1000 SYNC? before giving up
 }
 
@@ -118,7 +118,7 @@ void LiveShow::toggle_pause() {
   paused_ = !paused_;
   if (paused_) {
     ++pauses_;
-    say(fmt::format("paused {} (the hosts wait for READY); space resumes", at_frame()));
+    say(fmt::format("paused {} (the pipeservers wait for READY); space resumes", at_frame()));
   } else {
     say(fmt::format("resumed {}", at_frame()));
   }

@@ -20,9 +20,9 @@ class OneMachine final : public RunBackends {
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
     return std::make_unique<VizPath>(launch);
   }
-  void start_hosts(HostSet& hosts, const HostLaunch& launch,
-                   const TileLayout& layout) const override {
-    hosts.start(launch, layout);
+  void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
+                         const TileLayout& layout) const override {
+    pipeservers.start(launch, layout);
   }
 };
 

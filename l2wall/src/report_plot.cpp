@@ -58,7 +58,7 @@ std::string colour(std::size_t curve) {
 // The plot commands: route_ms (column 5), swap_ms (6), render_ms_<i> (7 + 3i); without an
 // emulator (the vizserver path: those columns empty) only the render times.
 std::string script(const std::filesystem::path& csv, const std::filesystem::path& png,
-                   std::size_t hosts, bool emulator, const std::string& title) {
+                   std::size_t pipeservers, bool emulator, const std::string& title) {
   std::vector<std::string> curves;
   if (emulator) {
     curves.push_back(
@@ -70,7 +70,7 @@ std::string script(const std::filesystem::path& csv, const std::filesystem::path
                     "(input taken in to displays swapped)'",
                     colour(1)));
   }
-  for (std::size_t i = 0; i < hosts; ++i) {
+  for (std::size_t i = 0; i < pipeservers; ++i) {
     curves.push_back(
         fmt::format("'' using 1:{} with linespoints lw 2 lc rgb '{}' title 'render, "
                     "pipeserver {}'",
@@ -109,14 +109,14 @@ std::filesystem::path plot_report(const std::filesystem::path& run_dir) {
     throw std::runtime_error(
         fmt::format("{}:1: not the header of an l2wall run's report: {}", csv.string(), header));
   }
-  const std::size_t hosts = (columns.size() - 6) / 3;
+  const std::size_t pipeservers = (columns.size() - 6) / 3;
   const std::string limit = limit_of(run_dir / "summary.txt");
-  const std::string title = fmt::format("l2wall run, {} pipeservers: time per frame{}", hosts,
+  const std::string title = fmt::format("l2wall run, {} pipeservers: time per frame{}", pipeservers,
                                         limit.empty() ? "" : " - " + limit);
   const std::vector<std::string> first_row = list_items(lines[1]);
   const bool emulator = first_row.size() > 4 && !first_row[4].empty();
   const auto png = run_dir / "report.png", commands = run_dir / "report.gnuplot";
-  if (!(std::ofstream(commands) << script(csv, png, hosts, emulator, title)).flush())
+  if (!(std::ofstream(commands) << script(csv, png, pipeservers, emulator, title)).flush())
     throw std::runtime_error(commands.string() + ": cannot write");
   std::filesystem::remove(png);
   ChildProcess gnuplot({find_gnuplot(), commands.string()});

@@ -13,8 +13,8 @@
 
 namespace l2 {
 
-HostLaunch host_launch(const RunOptions& o) {
-  HostLaunch l;
+PipeserverLaunch pipeserver_launch(const RunOptions& o) {
+  PipeserverLaunch l;
   l.program = o.pipeserver_program;
   l.wall = o.wall;
   l.scene = o.scene;
@@ -22,7 +22,7 @@ HostLaunch host_launch(const RunOptions& o) {
   l.out = o.out;
   l.frames = o.frames;
   l.ready_timeout_ms = o.ready_timeout_ms;
-  l.dvi = false;  // unless a path links the hosts
+  l.dvi = false;  // unless a path links the pipeservers
   l.link_codec = o.link_codec;
   return l;
 }
@@ -71,7 +71,7 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
 Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const BalanceSpec spec = run_balance(o, wall);
   if (!spec.balancing()) {
-    // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
+    // Only a balancing run re-plans, so only it can hand a dead pipeserver's tiles to the others.
     if (o.survive_host_loss) {
       return Failure{
           "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "

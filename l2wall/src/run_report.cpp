@@ -14,19 +14,19 @@
 namespace l2 {
 namespace {
 
-struct HostFrame {
+struct PipeserverFrame {
   double render_ms = 0, wait_ms = 0;
   int retries = 0;
-  bool logged = false;  // a host lost mid-run (--survive-host-loss) logs no later frame, nor
+  bool logged = false;  // a pipeserver lost mid-run (--survive-host-loss) logs no later frame, nor
                         // one stopped before its line
 };
-struct HostLog {
-  std::vector<HostFrame> frames;
-  std::string done;  // the host's back-channel counts
+struct PipeserverLog {
+  std::vector<PipeserverFrame> frames;
+  std::string done;  // the pipeserver's back-channel counts
 };
 
-HostLog read_host_log(const std::string& path, int frames) {
-  HostLog log;
+PipeserverLog read_pipeserver_log(const std::string& path, int frames) {
+  PipeserverLog log;
   log.frames.resize(static_cast<std::size_t>(frames));
   std::ifstream in(path);
   std::string line;
@@ -49,7 +49,7 @@ long latency_of(const FrameRecord& r) {
 }
 
 void write_csv(const std::filesystem::path& path, const RunOptions& o,
-               const std::vector<HostLog>& logs, const std::vector<FrameRecord>& records) {
+               const std::vector<PipeserverLog>& logs, const std::vector<FrameRecord>& records) {
   const bool dvi = runs_dvi(o.path);
   check_writable(path);  // a report that cannot be written was left out without a word
   std::ofstream csv(path);
@@ -65,12 +65,12 @@ void write_csv(const std::filesystem::path& path, const RunOptions& o,
     } else {
       csv << fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
     }
-    for (const HostLog& log : logs) {
-      const HostFrame& f = log.frames[k];
+    for (const PipeserverLog& log : logs) {
+      const PipeserverFrame& f = log.frames[k];
       if (f.logged) {
         csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
       } else {
-        csv << ",,,";  // no line: its host was lost (or stopped) before
+        csv << ",,,";  // no line: its pipeserver was lost (or stopped) before
       }
     }
     csv << "\n";
@@ -79,12 +79,12 @@ void write_csv(const std::filesystem::path& path, const RunOptions& o,
 }
 
 // The times report.csv holds, for the summary's percentiles.
-RunTimes run_times(const RunOptions& o, const std::vector<HostLog>& logs,
+RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
                    const std::vector<FrameRecord>& records) {
   RunTimes t;
-  for (const HostLog& log : logs) {
+  for (const PipeserverLog& log : logs) {
     t.render.emplace_back();
-    for (const HostFrame& f : log.frames) {
+    for (const PipeserverFrame& f : log.frames) {
       if (f.logged) t.render.back().push_back(f.render_ms);
     }
   }
@@ -101,12 +101,12 @@ RunTimes run_times(const RunOptions& o, const std::vector<HostLog>& logs,
 }  // namespace
 
 std::string write_run_report(const RunOptions& o, const Wall& wall,
-                             const std::vector<std::string>& host_logs,
+                             const std::vector<std::string>& pipeserver_logs,
                              const std::vector<FrameRecord>& records, const RunTotals& totals,
                              const std::string& extra) {
   const int frames = static_cast<int>(records.size());
-  std::vector<HostLog> logs;
-  for (const std::string& path : host_logs) logs.push_back(read_host_log(path, frames));
+  std::vector<PipeserverLog> logs;
+  for (const std::string& path : pipeserver_logs) logs.push_back(read_pipeserver_log(path, frames));
   const auto csv_path = std::filesystem::path(o.out) / "report.csv";
   write_csv(csv_path, o, logs, records);
 
@@ -116,8 +116,9 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
     max_latency = std::max(max_latency, latency_of(r));
   }
   // Up to the last swap: writing the saved PNGs afterwards is not part of the frame rate, and
-  // neither are --show pauses (the hosts wait). Pictures saved during the run are: the hosts
-  // render the next frame meanwhile, so taking that time out would count their work as free.
+  // neither are --show pauses (the pipeservers wait). Pictures saved during the run are: the
+  // pipeservers render the next frame meanwhile, so taking that time out would count their work as
+  // free.
   const double seconds =
       records.empty()
           ? 0.0
@@ -131,8 +132,8 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
                                                               : std::string("full speed"));
   std::string summary = fmt::format(
       "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
-      frames, wall.displays.size(), host_logs.size(), seconds, seconds > 0 ? frames / seconds : 0.0,
-      pace);
+      frames, wall.displays.size(), pipeserver_logs.size(), seconds,
+      seconds > 0 ? frames / seconds : 0.0, pace);
   if (writing_s >= 0.005) {
     summary += fmt::format(
         "of which {:.2f} s writing the pictures kept during the run (--keep): without them the "
@@ -167,7 +168,7 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   }
   for (std::size_t i = 0; i < logs.size(); ++i) {
     summary += fmt::format(
-        "back-channel host {}: {}\n", i,
+        "back-channel pipeserver {}: {}\n", i,
         logs[i].done.empty() ? "no totals (stopped before its last frame)" : logs[i].done);
   }
   summary += extra;

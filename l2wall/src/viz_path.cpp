@@ -9,7 +9,7 @@ namespace l2 {
 
 using std::chrono::milliseconds;
 
-std::optional<PathSwap> VizPath::step(int next, HostSet&, std::vector<FrameRecord>&,
+std::optional<PathSwap> VizPath::step(int next, PipeserverSet&, std::vector<FrameRecord>&,
                                       const RunWatch& watch) {
   wait_for(next, watch);
   PathSwap swap;
@@ -20,7 +20,7 @@ std::optional<PathSwap> VizPath::step(int next, HostSet&, std::vector<FrameRecor
 
 viz::FramePtr VizPath::wait_for(int frame, const RunWatch& watch) {
   for (;;) {
-    if (balance_) balance_->serve(*hosts_);
+    if (balance_) balance_->serve(*pipeservers_);
     if (viz::FramePtr f = side_->frame(frame, milliseconds(20))) return f;
     watch.waiting();
   }
@@ -40,9 +40,9 @@ Status VizPath::failure_as_cause(int shown, const std::string& showing) {
   return {};
 }
 
-// A host waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout: one
+// A pipeserver waits for SWAPPED only ready-timeout x retries, often less than --stall-timeout: one
 // that gave up on a server still running means the server hangs.
-Status VizPath::hang_behind(const Host& h, int shown, const std::string& showing) {
+Status VizPath::hang_behind(const LivePipeserver& h, int shown, const std::string& showing) {
   if (side_->down() || !h.exit || h.exit->code != kExitLostCompositingServer) return {};
   return Failure{
       fmt::format("the {} stopped answering: pipeserver {} gave up waiting for it at frame {}; {}",

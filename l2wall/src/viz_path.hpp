@@ -1,6 +1,6 @@
 // The visualization-server path as a display path (display_path.hpp): the compositing server
-// process (VizSide) composes the hosts' tiles; its swaps are the frames of this path, and the
-// hosts wait for its SWAPPED instead of READY.
+// process (VizSide) composes the pipeservers' tiles; its swaps are the frames of this path, and the
+// pipeservers wait for its SWAPPED instead of READY.
 #pragma once
 
 #include <memory>
@@ -16,17 +16,17 @@ class VizPath final : public DisplayPath {
 
   std::string label() const override { return "vizserver"; }
   std::string name() const override { return "vizserver path"; }
-  void add_host_args(HostLaunch& launch) const override {
+  void add_pipeserver_args(PipeserverLaunch& launch) const override {
     launch.viz_address = side_->address();
     launch.env.push_back(side_->token_variable());
   }
-  void open(HostSet&, std::chrono::milliseconds, const RunWatch&) override {}
+  void open(PipeserverSet&, std::chrono::milliseconds, const RunWatch&) override {}
 
   bool refreshed() const override { return false; }
-  std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
-                               const RunWatch& watch) override;
-  std::string hosts_wait_for() const override { return "SWAPPED"; }
-  std::uint64_t inject_noise(HostSet&) override { return 0; }
+  std::optional<PathSwap> step(int next, PipeserverSet& pipeservers,
+                               std::vector<FrameRecord>& records, const RunWatch& watch) override;
+  std::string pipeservers_wait_for() const override { return "SWAPPED"; }
+  std::uint64_t inject_noise(PipeserverSet&) override { return 0; }
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override {
     return pictures(wait_for(frame, watch));
@@ -40,14 +40,14 @@ class VizPath final : public DisplayPath {
   Status failure(int shown, const std::string& showing) override {
     return Failure{side_->describe_down(shown, showing)};
   }
-  Status hang_behind(const Host& h, int shown, const std::string& showing) override;
+  Status hang_behind(const LivePipeserver& h, int shown, const std::string& showing) override;
   std::string process_name() const override { return side_->name(); }
 
   // The compositing server composes a frame from that frame's tiles only, so a swap never shows
   // two layouts: there is nothing to check, only the control channels to serve.
-  void follow_layouts(LiveBalance& balance, HostSet& hosts) override {
+  void follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) override {
     balance_ = &balance;
-    hosts_ = &hosts;
+    pipeservers_ = &pipeservers;
   }
 
   void finish() override;
@@ -62,8 +62,8 @@ class VizPath final : public DisplayPath {
   }
 
   std::unique_ptr<VizSide> side_;
-  LiveBalance* balance_ = nullptr;  // a balanced run's coordinator, and its hosts
-  HostSet* hosts_ = nullptr;
+  LiveBalance* balance_ = nullptr;  // a balanced run's coordinator, and its pipeservers
+  PipeserverSet* pipeservers_ = nullptr;
 };
 
 }  // namespace l2

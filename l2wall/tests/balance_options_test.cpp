@@ -60,7 +60,7 @@ TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) 
   EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
 }
 
-// Surviving a dead host is the same on the command line and in the wall file, and needs a
+// Surviving a dead pipeserver is the same on the command line and in the wall file, and needs a
 // balancing run (only it re-plans).
 TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
   RunOptions o;

@@ -41,8 +41,8 @@ inline int stamp_at(const RgbImage& image, const Spot& s) {
   return decode_stamp(bytes);
 }
 
-// The layouts a balanced run's hosts rendered each frame in, as it wrote them (OUT/layouts.txt,
-// frame k on line k+1).
+// The layouts a balanced run's pipeservers rendered each frame in, as it wrote them
+// (OUT/layouts.txt, frame k on line k+1).
 inline std::vector<TileLayout> layouts_of(const WallRun& run, const Wall& wall) {
   std::vector<TileLayout> layouts;
   std::istringstream in(slurp(run.out() / "layouts.txt"));

@@ -1,5 +1,5 @@
 // A model of over a million triangles, made by the test, rendered live on the default wall,
-// with the bucketing's overlap factor in every host's report.
+// with the bucketing's overlap factor in every pipeserver's report.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -17,8 +17,8 @@ TEST(LargeModel, MillionTriangleSphereRendersLive) {
   fs::create_directories(dir);
   const long triangles = write_ply_sphere(dir / "sphere.ply", 512, 1000);
   ASSERT_GE(triangles, 1'000'000);
-  // A frame of a million triangles on each of four hosts can take seconds on a loaded machine:
-  // more than the default stall timeout allows between two swaps.
+  // A frame of a million triangles on each of four pipeservers can take seconds on a loaded
+  // machine: more than the default stall timeout allows between two swaps.
   WallRun run("large-model", {"--mesh", (dir / "sphere.ply").string(), "--frames", "3", "--refresh",
                               "0", "--stall-timeout", "60000"});
   const ExitStatus status = run.wait(120s);
@@ -33,11 +33,11 @@ TEST(LargeModel, MillionTriangleSphereRendersLive) {
     EXPECT_GT(lit, shown.width() * shown.height() / 4) << "display " << d;
   }
   // The sphere's 27 batches reach every tile, each drawn into a tile only where its box
-  // projects: the overlap factor (tile draws / batches) lies between 1 and the host's tiles.
+  // projects: the overlap factor (tile draws / batches) lies between 1 and the pipeserver's tiles.
   const TileLayout layout = plan_layout(default_wall());
   const std::regex figures("batches ([0-9]+) tile_draws ([0-9]+) overlap ([0-9.]+)");
   for (const PipeserverPlan& plan : layout.pipeservers) {
-    const std::string log = slurp(run.out() / fmt::format("host-{}.log", plan.pipeserver));
+    const std::string log = slurp(run.out() / fmt::format("pipeserver-{}.log", plan.pipeserver));
     int frames = 0;
     for (auto it = std::sregex_iterator(log.begin(), log.end(), figures);
          it != std::sregex_iterator(); ++it, ++frames) {

@@ -1,6 +1,6 @@
-// `l2wall run --balance strips`: the hosts re-tile live, every host switching to frame k+1's
-// layout together, and since sort-first rendering is exact per pixel whatever the tiling, the
-// displays of every frame equal those of a static run byte for byte, each host's frame stamp
+// `l2wall run --balance strips`: the pipeservers re-tile live, every pipeserver switching to frame
+// k+1's layout together, and since sort-first rendering is exact per pixel whatever the tiling, the
+// displays of every frame equal those of a static run byte for byte, each pipeserver's frame stamp
 // aside (it sits in its first tile, which the layout moves). Real processes, links and sockets.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -88,7 +88,8 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
 
 // The paper's assignment on top of the strips ([balance] assignment = "heaviest-first", which
 // only the wall file sets): the heaviest tile to the pipeserver that finishes first. Tiles
-// change hosts, every host switching together, and the displays are still the static run's.
+// change pipeservers, every pipeserver switching together, and the displays are still the static
+// run's.
 TEST(LiveRunBalance, HeaviestFirstMovesTilesBetweenHostsWithTheDisplaysOfAStaticRun) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-heaviest-{}", getpid());
   fs::create_directories(dir);
@@ -109,7 +110,8 @@ TEST(LiveRunBalance, HeaviestFirstMovesTilesBetweenHostsWithTheDisplaysOfAStatic
   for (std::string line; std::getline(in, line);) lines.push_back(decode_layout(line));
   ASSERT_EQ(lines.size(), static_cast<std::size_t>(kFrames));
   // Moved: from frame 2 on (frame 1 is the even strips, dealt by the policy) some frame gives
-  // its tiles other hosts than the last frame did, and other hosts than the wall's policy
+  // its tiles other pipeservers than the last frame did, and other pipeservers than the wall's
+  // policy
   // ([pipeservers] assignment) would give those very tiles.
   int changed = 0, off_policy = 0;
   for (std::size_t k = 2; k < lines.size(); ++k) {
@@ -120,8 +122,9 @@ TEST(LiveRunBalance, HeaviestFirstMovesTilesBetweenHostsWithTheDisplaysOfAStatic
     by_policy.tiling.rects = lines[k].tiles;
     off_policy += layout_message(0, plan_layout(by_policy)).pipeservers != lines[k].pipeservers;
   }
-  std::printf("heaviest first: %d of %d frames from frame 2 on changed hosts, %d off the policy\n",
-              changed, kFrames - 2, off_policy);
+  std::printf(
+      "heaviest first: %d of %d frames from frame 2 on changed pipeservers, %d off the policy\n",
+      changed, kFrames - 2, off_policy);
   EXPECT_GE(changed, 1);
   EXPECT_GE(off_policy, 1);
 

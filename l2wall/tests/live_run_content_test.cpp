@@ -36,7 +36,7 @@ TEST_P(WideWall, EveryDisplayShowsTheScene) {
   for (int d = 0; d < 3; ++d) {
     const RgbImage shown = read_png(run.out() / "frame-2" / fmt::format("display-{}.png", d));
     // The bunny reaches about 30 columns into the outer displays at this frame; the frame
-    // stamps are one pixel per host, the outer displays showed nothing else before.
+    // stamps are one pixel per pipeserver, the outer displays showed nothing else before.
     EXPECT_GT(scene_pixels(shown), 200) << GetParam() << " display " << d;
   }
   expect_clean(run);

@@ -49,7 +49,7 @@ TEST(ExampleRenderer, LiveFramesRouteExactlyAndShowItsDrawing) {
     const RgbImage routed = read_png(dir / "routed" / fmt::format("display-{}.png", d.id));
     ASSERT_EQ(shown.width(), routed.width());
     ASSERT_EQ(shown.height(), routed.height());
-    // Each live host stamps its frame number into the first pixel of its first tile.
+    // Each live pipeserver stamps its frame number into the first pixel of its first tile.
     std::vector<std::pair<int, int>> stamps;
     for (const PipeserverPlan& plan : layout.pipeservers) {
       const DisplayTile& t = plan.tiles.front().tile;

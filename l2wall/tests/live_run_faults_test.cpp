@@ -51,7 +51,7 @@ TEST(LiveRun, SurvivingAHostLossOnTheVizserverPathIsRefusedBeforeAnythingStarts)
                               ":14: balance.survive_host_loss: runs on --path dvi only (the "
                               "compositing server waits for every pipeserver's tiles of a "
                               "frame)\n");
-  EXPECT_FALSE(fs::exists(run.out() / "host-0.log")) << "a pipeserver was started";
+  EXPECT_FALSE(fs::exists(run.out() / "pipeserver-0.log")) << "a pipeserver was started";
   expect_clean(run);
 }
 
@@ -78,7 +78,7 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
   EXPECT_EQ(run.output(), "l2wall: " + refusal);
   EXPECT_EQ(tilelayout_status, 1);
   EXPECT_EQ(tilelayout_out, "tilelayout: " + refusal);
-  EXPECT_FALSE(fs::exists(run.out() / "host-0.log")) << "a pipeserver was started";
+  EXPECT_FALSE(fs::exists(run.out() / "pipeserver-0.log")) << "a pipeserver was started";
   expect_clean(run);
 }
 
@@ -171,7 +171,7 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   expect_clean(run);
 }
 
-// A stopped pipeserver when the other hosts give up first: they wait for READY (or SWAPPED)
+// A stopped pipeserver when the other pipeservers give up first: they wait for READY (or SWAPPED)
 // ready-timeout x (retries + 1), far less than the stall timeout here, and exit; the run named
 // one of them ("exited with code 3 while rendering frame 841"), never the stopped one. It names
 // the stopped one, and what the others were waiting for.
@@ -181,10 +181,10 @@ class StoppedPipeserver : public ::testing::TestWithParam<const char*> {};
 // vizserver path has no links to find it by); its pid.
 pid_t reporting_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + 20s;
-  const std::string report = fmt::format("host-{}.log", pipeserver);
+  const std::string report = fmt::format("pipeserver-{}.log", pipeserver);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.processes_naming(report);
-    if (pids.size() == 1 && run.host_log_lines(pipeserver) >= 3) return pids.front();
+    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(20ms);
   }
   return -1;
@@ -255,7 +255,7 @@ TEST(LiveRun, TerminatedRunEndsItsHostsAndRemovesTheirLinks) {
   const std::string output = run.output();
   EXPECT_EQ(status.code, 143) << output;
   const int frames = summary_frames(run);
-  ASSERT_GE(frames, 1) << output;  // the host had published frame 2: frame 0 was shown
+  ASSERT_GE(frames, 1) << output;  // the pipeserver had published frame 2: frame 0 was shown
   EXPECT_NE(output.find(fmt::format("l2wall: stopped by signal 15 (Terminated) after {} frames; "
                                     "report: {}\n",
                                     frames, run.out().string())),
@@ -342,16 +342,16 @@ TEST(LiveRun, LineNoiseAndADroppedReadyAreRecovered) {
   EXPECT_NE(output.find("1 READY dropped"), std::string::npos) << output;
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
   for (int i = 0; i < 4; ++i) {
-    const auto at = output.find(fmt::format("back-channel host {}: resyncs ", i));
+    const auto at = output.find(fmt::format("back-channel pipeserver {}: resyncs ", i));
     ASSERT_NE(at, std::string::npos) << output;
     int resyncs = 0, noise = 0, sync_sent = 0;
     ASSERT_EQ(std::sscanf(output.c_str() + at,
-                          "back-channel host %*d: resyncs %d noise_bytes %d sync_sent %d", &resyncs,
-                          &noise, &sync_sent),
+                          "back-channel pipeserver %*d: resyncs %d noise_bytes %d sync_sent %d",
+                          &resyncs, &noise, &sync_sent),
               3)
         << output.substr(at, 80);
-    EXPECT_GT(resyncs, 0) << "host " << i;
-    EXPECT_GT(noise, 0) << "host " << i;
+    EXPECT_GT(resyncs, 0) << "pipeserver " << i;
+    EXPECT_GT(noise, 0) << "pipeserver " << i;
     if (i == 0) {
       EXPECT_GE(sync_sent, 1);
     }

@@ -97,7 +97,7 @@ long sampled(double centre, double scale, int size, int x) {
 }
 
 // Pixels of display `d` of frame `frame` (as kept by the run) that differ from the source seen
-// through `view`, each host's frame stamp aside (it holds the frame number).
+// through `view`, each pipeserver's frame stamp aside (it holds the frame number).
 long wrong_pixels(const WallRun& run, const fs::path& wall_file, int frame, const SourceView& view,
                   int source_w, int source_h, const Source& source) {
   const Wall wall = wall_file.empty() ? default_wall() : load_wall(wall_file);
@@ -250,7 +250,7 @@ TEST_F(Media, MovieFrameKIsApplicationFrameK) {
     EXPECT_EQ(wrong_pixels(run, {}, k, view, movie.width, movie.height, movie.frame(k % 5)), 0)
         << "frame " << k;
   }
-  // Consecutive movie frames differ: a host showing the same frame twice would be seen.
+  // Consecutive movie frames differ: a pipeserver showing the same frame twice would be seen.
   EXPECT_NE(movie.frames[0], movie.frames[1]);
   expect_clean(run);
 }

@@ -31,7 +31,7 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
   EXPECT_NE(output.find("6 frames on 4 displays from 4 pipeservers"), std::string::npos) << output;
   // The pictures kept during the run (--keep every) took time the run's seconds include: the
-  // hosts render the next frame meanwhile, so leaving it out would overstate the frame rate.
+  // pipeservers render the next frame meanwhile, so leaving it out would overstate the frame rate.
   std::smatch run_s, writing_s;
   ASSERT_TRUE(std::regex_search(output, run_s, std::regex("pipeservers in ([0-9.]+) s: ")));
   ASSERT_TRUE(std::regex_search(output, writing_s,
@@ -49,7 +49,7 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
     EXPECT_EQ(rows[k][3], "1");
   }
   // Independently of the run's own bookkeeping: each kept display picture carries, at every
-  // host's first tile, the number of the frame it was kept for.
+  // pipeserver's first tile, the number of the frame it was kept for.
   const TileLayout layout = plan_layout(default_wall());
   for (int k = 0; k < frames; ++k) {
     for (const PipeserverPlan& plan : layout.pipeservers) {
@@ -92,7 +92,7 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
             std::string::npos)
       << output;
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
-  // The emulator predicted every host's frames after its first from the last layout (a
+  // The emulator predicted every pipeserver's frames after its first from the last layout (a
   // pipeserver's headers only change parity), and the comparison above covered those frames.
   std::smatch predicted;
   ASSERT_TRUE(std::regex_search(
@@ -175,7 +175,8 @@ TEST(LiveRun, VizserverPathAloneShowsEveryFrame) {
 }
 
 // The `swap` scene draws nothing: every display pixel of frame k is that frame's clear colour
-// (as pipeserver's scene.hpp defines it), except each host's frame stamp, which still reads k.
+// (as pipeserver's scene.hpp defines it), except each pipeserver's frame stamp, which still reads
+// k.
 TEST(LiveRun, SwapSceneShowsEachFramesColourAndItsStamp) {
   const int frames = 4;
   WallRun run("swap", {"--scene", "swap", "--frames", std::to_string(frames), "--refresh", "0",

@@ -1,8 +1,8 @@
 // `l2wall run --balance strips --survive-host-loss`: a pipeserver killed mid-run no longer ends
 // the run. Its tiles go to the others within a few frames, and the last frames' displays equal
 // those of a static run byte for byte (frame stamps aside). Without the option the same kill
-// ends the run, named; and when the others' framebuffers cannot hold the dead host's tiles the
-// run ends with that said in one line. Real processes, links and sockets.
+// ends the run, named; and when the others' framebuffers cannot hold the dead pipeserver's tiles
+// the run ends with that said in one line. Real processes, links and sockets.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -40,7 +40,8 @@ std::vector<LayoutMessage> layout_lines(const WallRun& run) {
 }
 
 int frames_logged(const WallRun& run, int pipeserver) {
-  return run.host_log_lines(pipeserver);  // one line per frame published, nothing else once killed
+  return run.pipeserver_log_lines(
+      pipeserver);  // one line per frame published, nothing else once killed
 }
 
 // --balance strips and kd alike.
@@ -59,7 +60,7 @@ TEST_P(LiveRunSurviveMode, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRec
                                         // pictures holds the READYs of the next frame.
                                         "--ready-timeout", "5000", "--stall-timeout", "60000"};
   // As fast as possible (--refresh 0) the emulator refreshes only when a link changes: the
-  // signal lost with the host must count as a change, or a group it held up never completes.
+  // signal lost with the pipeserver must count as a change, or a group it held up never completes.
   std::vector<std::string> args = common;
   args.insert(args.end(), {"--balance", mode, "--survive-host-loss"});
   WallRun fixed("survive-static-" + mode, common);
@@ -76,7 +77,8 @@ TEST_P(LiveRunSurviveMode, AKilledPipeserversTilesGoToTheOthersAndTheDisplaysRec
   const std::string output = survivor.output();
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
 
-  // Said at once, and in the summary: the host, how it ended, the frame, when, the stale frames.
+  // Said at once, and in the summary: the pipeserver, how it ended, the frame, when, the stale
+  // frames.
   EXPECT_NE(output.find(fmt::format("l2wall: pipeserver {} (pid {}) killed by signal 9 (Killed) "
                                     "while rendering frame ",
                                     kVictim, victim)),

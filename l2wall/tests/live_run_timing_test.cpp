@@ -1,5 +1,5 @@
 // `l2wall run` at a refresh rate (spec §6.4): READY goes out in the refresh the frame completes,
-// so hosts that render faster than the refresh rate put a new frame on the displays at every
+// so pipeservers that render faster than the refresh rate put a new frame on the displays at every
 // refresh, each with one frame of latency. Judged from the run's own counts (report.csv and
 // summary.txt), not from wall-clock rates. Not in the sanitizer runs: there the pipeservers
 // render too slowly to keep up with any refresh rate.
@@ -37,12 +37,12 @@ TEST_P(AtTheRefreshRate, ANewFrameReachesTheDisplaysAtNearlyEveryRefresh) {
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(frames + 1));
   ASSERT_EQ(rows[0][1], "in_refresh");
   ASSERT_EQ(rows[0][2], "swap_refresh");
-  std::vector<std::size_t> waits;  // the columns of the hosts' READY waits
+  std::vector<std::size_t> waits;  // the columns of the pipeservers' READY waits
   for (std::size_t c = 0; c < rows[0].size(); ++c) {
     if (rows[0][c].rfind("ready_wait_ms_", 0) == 0) waits.push_back(c);
   }
   ASSERT_EQ(waits.size(), 4u);
-  std::string late;  // frames that came late although every host had it rendered before READY
+  std::string late;  // frames that came late although every pipeserver had it rendered before READY
   int late_count = 0;
   for (int k = 1; k <= frames; ++k) {
     const auto& row = rows[static_cast<std::size_t>(k)];
@@ -50,11 +50,11 @@ TEST_P(AtTheRefreshRate, ANewFrameReachesTheDisplaysAtNearlyEveryRefresh) {
     EXPECT_EQ(std::stoi(row[2]), std::stoi(row[1]) + 1) << "frame " << k - 1;
     if (k == 1) continue;
     const int gap = std::stoi(row[1]) - std::stoi(rows[static_cast<std::size_t>(k - 1)][1]);
-    // A host that finished rendering after READY had come was the one that was late (the
+    // A pipeserver that finished rendering after READY had come was the one that was late (the
     // machine is shared); one that waited for READY swapped its frame in at READY.
-    bool every_host_waited = true;
-    for (const std::size_t c : waits) every_host_waited &= std::stod(row[c]) >= 0.5;
-    if (gap > 1 && every_host_waited) {
+    bool every_pipeserver_waited = true;
+    for (const std::size_t c : waits) every_pipeserver_waited &= std::stod(row[c]) >= 0.5;
+    if (gap > 1 && every_pipeserver_waited) {
       ++late_count;
       late += fmt::format(" {} ({} refreshes)", k - 1, gap);
     }
@@ -62,16 +62,17 @@ TEST_P(AtTheRefreshRate, ANewFrameReachesTheDisplaysAtNearlyEveryRefresh) {
   // The last swap is the run's last refresh (refreshes count from 0).
   EXPECT_EQ(refreshes, std::stoi(rows[frames][2]) + 1) << output;
   // Waiting for READY until the swap, as before spec §6.4 changed, every frame took two
-  // refreshes. Now a frame whose hosts all had it ready comes at the next refresh, but for a
-  // host woken late now and then on a loaded machine: how often is the scheduler's, so the
+  // refreshes. Now a frame whose pipeservers all had it ready comes at the next refresh, but for a
+  // pipeserver woken late now and then on a loaded machine: how often is the scheduler's, so the
   // bound is half the frames, which that regression (all of them late) still exceeds.
   EXPECT_LE(late_count, frames / 2) << "late frames:" << late << "\n" << output;
   expect_clean(run);
 }
 
 // report.csv's route_ms is the emulator time of the refreshes that took a frame in: a refresh
-// that takes in the frame of all 12 hosts of the WireGL wall counts once, not once per host. At
-// 90 Hz the run mostly waits for the next refresh, so routing is a small part of its time.
+// that takes in the frame of all 12 pipeservers of the WireGL wall counts once, not once per
+// pipeserver. At 90 Hz the run mostly waits for the next refresh, so routing is a small part of its
+// time.
 TEST(LiveRun, RouteTimeCountsEachRefreshOncePerFrame) {
   const int frames = 20;
   WallRun run("route-ms",

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using namespace testing_support;
 
-// The frame number host 0 stamped into a display picture of the default wall.
+// The frame number pipeserver 0 stamped into a display picture of the default wall.
 int stamped_frame(const fs::path& picture_dir, const std::string& suffix) {
   const TileLayout layout = plan_layout(default_wall());
   const DisplayTile& t = layout.pipeservers.front().tiles.front().tile;
@@ -130,7 +130,7 @@ TEST(LiveRun, AVizPortInUseIsNamedAndNothingIsLeft) {
 }
 
 // The compositing server listens where --viz-host and --viz-port say (here every interface, on
-// a port that was free a moment ago), says so in its log, and the local hosts still reach it.
+// a port that was free a moment ago), says so in its log, and the local pipeservers still reach it.
 TEST(LiveRun, CompositingServerListensOnTheHostAndPortAsked) {
   int port = 0;
   {

@@ -1,5 +1,6 @@
 // `l2wall run --show` keys typed through XTEST, as a keyboard would, into the wall window of a
-// live run on a private Xvfb: space holds the hosts, s saves screenshots, q and Esc end the run.
+// live run on a private Xvfb: space holds the pipeservers, s saves screenshots, q and Esc end the
+// run.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -36,12 +37,12 @@ TEST(Show, SpacePausesTheHostsSSavesScreenshotsQEndsTheRunCleanly) {
   x.type(window, "space");
   const int paused = wait_for_output(run, "paused at frame (\\d+)", 5s);
   ASSERT_GE(paused, 0) << run.output();
-  // A host may still publish the frame it was rendering; then all wait for a READY that does
+  // A pipeserver may still publish the frame it was rendering; then all wait for a READY that does
   // not come, for longer than a few READY timeouts, asking with SYNC? meanwhile.
   std::this_thread::sleep_for(300ms);
-  const std::vector<int> held = host_lines(run, 2);
+  const std::vector<int> held = pipeserver_lines(run, 2);
   std::this_thread::sleep_for(1000ms);
-  EXPECT_EQ(host_lines(run, 2), held) << "the hosts went on while paused";
+  EXPECT_EQ(pipeserver_lines(run, 2), held) << "the pipeservers went on while paused";
   EXPECT_FALSE(fs::exists(run.out() / fmt::format("frame-{}", paused + 1)))
       << "a frame reached the displays while paused";
 
@@ -61,9 +62,10 @@ TEST(Show, SpacePausesTheHostsSSavesScreenshotsQEndsTheRunCleanly) {
   x.type(window, "space");
   ASSERT_GE(wait_for_output(run, "resumed at frame (\\d+)", 5s), 0) << run.output();
   const auto deadline = std::chrono::steady_clock::now() + 10s;
-  while (host_lines(run, 2)[0] < held[0] + 3 && std::chrono::steady_clock::now() < deadline)
+  while (pipeserver_lines(run, 2)[0] < held[0] + 3 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(20ms);
-  EXPECT_GE(host_lines(run, 2)[0], held[0] + 3) << "the hosts did not go on after resuming";
+  EXPECT_GE(pipeserver_lines(run, 2)[0], held[0] + 3)
+      << "the pipeservers did not go on after resuming";
 
   x.type(window, "q");
   const ExitStatus status = run.wait(15s);
@@ -78,8 +80,8 @@ TEST(Show, SpacePausesTheHostsSSavesScreenshotsQEndsTheRunCleanly) {
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
   const std::string summary = slurp(run.out() / "summary.txt");
   EXPECT_NE(summary.find("quit by the user"), std::string::npos) << summary;
-  // The hosts were stopped while rendering frames past the quit: no totals, and said so.
-  EXPECT_NE(summary.find("back-channel host 0: no totals (stopped before its last frame)"),
+  // The pipeservers were stopped while rendering frames past the quit: no totals, and said so.
+  EXPECT_NE(summary.find("back-channel pipeserver 0: no totals (stopped before its last frame)"),
             std::string::npos)
       << summary;
   EXPECT_EQ(read_csv(run.out() / "report.csv").size(), static_cast<std::size_t>(last + 2));

@@ -60,10 +60,10 @@ inline RgbImage display_png(const fs::path& dir, int frame, int display,
                   fmt::format("{}display-{}.png", prefix, display));
 }
 
-// Lines the hosts logged so far: one per frame they published.
-inline std::vector<int> host_lines(const WallRun& run, int hosts) {
+// Lines the pipeservers logged so far: one per frame they published.
+inline std::vector<int> pipeserver_lines(const WallRun& run, int pipeservers) {
   std::vector<int> lines;
-  for (int s = 0; s < hosts; ++s) lines.push_back(run.host_log_lines(s));
+  for (int s = 0; s < pipeservers; ++s) lines.push_back(run.pipeserver_log_lines(s));
   return lines;
 }
 

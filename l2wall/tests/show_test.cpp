@@ -63,8 +63,8 @@ TEST(Show, MonitorsWithFewerMonitorsThanDisplaysIsRefusedListingThem) {
   EXPECT_EQ(output,
             "l2wall: walls/kd-2x2.toml (built in): --show monitors needs one monitor per display: "
             "4 displays, but GLFW sees 1 monitor: [0] \"screen\" 800x600 at (0,0)\n");
-  // Refused before any host started.
-  EXPECT_FALSE(fs::exists(run.out() / "host-0.log"));
+  // Refused before any pipeserver started.
+  EXPECT_FALSE(fs::exists(run.out() / "pipeserver-0.log"));
   expect_clean(run);
 }
 

@@ -99,7 +99,7 @@ class WallRun {
     return pids;
   }
   // Processes whose command line names this run's output folder: its pipeservers (--report
-  // OUT/host-<i>.log) and its compositing server (--log OUT/vizserver.log), on every path.
+  // OUT/pipeserver-<i>.log) and its compositing server (--log OUT/vizserver.log), on every path.
   std::vector<pid_t> processes_naming(const std::string& what) const {
     std::vector<pid_t> pids;
     const std::string needle = (out() / what).string();
@@ -112,8 +112,8 @@ class WallRun {
     return pids;
   }
   std::vector<pid_t> vizservers() const { return processes_naming("vizserver.log"); }
-  int host_log_lines(int pipeserver) const {
-    std::ifstream in(out() / fmt::format("host-{}.log", pipeserver));
+  int pipeserver_log_lines(int pipeserver) const {
+    std::ifstream in(out() / fmt::format("pipeserver-{}.log", pipeserver));
     int lines = 0;
     for (std::string l; std::getline(in, l);) ++lines;
     return lines;
@@ -188,7 +188,7 @@ inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.pipeservers(pipeserver);
-    if (pids.size() == 1 && run.host_log_lines(pipeserver) >= 3) return pids.front();
+    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return -1;

@@ -1,6 +1,6 @@
 // The pipeserver program: renders one pipeserver's frame of a wall (tiles at their packed places,
 // strip headers in the gaps, scanned out to 24-bit RGB) and, on request, the reference render of
-// every display of that frame; or, with --live, a host of `l2wall run`. `pipeserver` is this
+// every display of that frame; or, with --live, a pipeserver of `l2wall run`. `pipeserver` is this
 // with the built-in scenes, a program of your own (renderer.hpp) this with your drawing.
 #include "pipeserver/renderer.hpp"
 
@@ -16,7 +16,7 @@
 #include "dvi_link/frame_delta.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
-#include "live_host.hpp"
+#include "live_mode.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/scene_cli.hpp"
 #include "tilelayout/planner.hpp"
@@ -27,7 +27,7 @@
 #include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_session.hpp"
 #include "cluster/rank_map.hpp"
-#include "mpi_host.hpp"
+#include "mpi_rank.hpp"
 #endif
 
 namespace {
@@ -86,9 +86,9 @@ int run(const Options& o) {
   return 0;
 }
 
-int run_live(const l2::LiveHostOptions& o) {
+int run_live(const l2::LiveOptions& o) {
   try {
-    return l2::run_live_host(o);
+    return l2::run_live_mode(o);
   } catch (const l2::viz::VizError& e) {
     std::fprintf(stderr, "pipeserver %d: %s\n", o.pipeserver, e.what());
     return l2::kExitLostCompositingServer;
@@ -98,9 +98,9 @@ int run_live(const l2::LiveHostOptions& o) {
   }
 }
 
-// A rank of an MPI run: a host that fails ends every rank, since the others wait for it.
+// A rank of an MPI run: a pipeserver that fails ends every rank, since the others wait for it.
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
-int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
+int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const l2::CodecTo codec =
@@ -111,8 +111,8 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
   if (control) o.control = std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator);
   o.links = [sent, tiles, tiles_sent, control, codec](const l2::TileLayout& layout,
                                                       const l2::PipeserverPlan& plan) {
-    l2::MpiHostLinks mpi = l2::mpi_host_links(layout, plan.pipeserver, codec, sent, control);
-    l2::HostLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
+    l2::MpiRankLinks mpi = l2::mpi_rank_links(layout, plan.pipeserver, codec, sent, control);
+    l2::LiveLinks links{nullptr, std::move(mpi.link), std::move(mpi.channel), nullptr};
     if (tiles) {
       links.tiles = std::make_unique<l2::TileSinkOf<l2::MpiTileSender>>(
           l2::MpiTileSender(layout, codec, tiles_sent));
@@ -122,7 +122,7 @@ int run_mpi_host(l2::LiveHostOptions& o, bool tiles, bool control) {
   const int code = run_live(o);
   o.control.reset();
   if (code != 0) l2::MpiSession::abort_all(code);
-  l2::report_host_done(*sent, *tiles_sent);
+  l2::report_rank_done(*sent, *tiles_sent);
   return 0;
 #else
   (void)o;
@@ -162,12 +162,12 @@ int run_pipeserver(int argc, char** argv) {
                  "folder for the reference render of each display (display-<id>.png)")
       ->type_name("DIR");
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(app, o.scene_options);
-  // Live host mode: the run (l2wall run) starts one of these per pipeserver.
+  // Live mode: the run (l2wall run) starts one of these per pipeserver.
   bool live = false;
-  l2::LiveHostOptions live_options;
+  l2::LiveOptions live_options;
   auto* group = app.add_option_group(
       "live",
-      "live host mode, as started by `l2wall run` (DVI link in shared memory, READY on "
+      "live mode, as started by `l2wall run` (DVI link in shared memory, READY on "
       "a serial back-channel)");
   CLI::Option* const live_flag =
       group->add_flag("--live", live,
@@ -261,7 +261,7 @@ int run_pipeserver(int argc, char** argv) {
       return 2;
     }
     live_options.link_codec = l2::parse_link_choice(link_codec).value();
-    if (mpi) return run_mpi_host(live_options, mpi_viz, mpi_control);
+    if (mpi) return run_mpi_rank(live_options, mpi_viz, mpi_control);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

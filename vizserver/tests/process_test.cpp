@@ -262,10 +262,11 @@ TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
     const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
     ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
     const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
-    ChildProcess pipeserver({PIPESERVER_EXE, "--live", "--pipeserver", "0", "--frames",
-                             std::to_string(frames), "--viz", fmt::format("127.0.0.1:{}", port),
-                             "--ready-timeout", "250", "--report", (dir / "host-0.log").string()},
-                            {}, Capture{false, true});
+    ChildProcess pipeserver(
+        {PIPESERVER_EXE, "--live", "--pipeserver", "0", "--frames", std::to_string(frames), "--viz",
+         fmt::format("127.0.0.1:{}", port), "--ready-timeout", "250", "--report",
+         (dir / "pipeserver-0.log").string()},
+        {}, Capture{false, true});
     std::this_thread::sleep_for(1500ms);
     std::vector<TileSender> late;
     for (int id = 1; id < 4; ++id) late.push_back(TileSender::connect("127.0.0.1", port, id, 4));

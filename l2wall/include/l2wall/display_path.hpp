@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "base/result.hpp"
-#include "l2wall/host_set.hpp"
+#include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_pictures.hpp"
 #include "l2wall/run_report.hpp"
 #include "l2wall/run_time.hpp"
@@ -45,22 +45,24 @@ class DisplayPath {
   virtual std::string label() const = 0;
   // "DVI path": how messages name it.
   virtual std::string name() const = 0;
-  // What the hosts take part in on this path (a link and a back-channel, a server address).
-  virtual void add_host_args(HostLaunch& launch) const = 0;
-  // Before the first frame: waits until the path can take in every host (up to `timeout`).
-  virtual void open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) = 0;
+  // What the pipeservers take part in on this path (a link and a back-channel, a server address).
+  virtual void add_pipeserver_args(PipeserverLaunch& launch) const = 0;
+  // Before the first frame: waits until the path can take in every pipeserver (up to `timeout`).
+  virtual void open(PipeserverSet& pipeservers, std::chrono::milliseconds timeout,
+                    const RunWatch& watch) = 0;
 
   // --- as the lead: its swaps pace the run ---------------------------------------------------
   // Whether it counts refreshes (and so measures the one-frame latency).
   virtual bool refreshed() const = 0;
   // One step towards frame `next` on the displays: the swap it made, if any. `records` get
   // each frame's input refresh and route time.
-  virtual std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
+  virtual std::optional<PathSwap> step(int next, PipeserverSet& pipeservers,
+                                       std::vector<FrameRecord>& records,
                                        const RunWatch& watch) = 0;
   // What the pipeservers that delivered wait for from this path ("READY", "SWAPPED").
-  virtual std::string hosts_wait_for() const = 0;
-  // Fault injection after a swap: line noise to the hosts; the bytes written.
-  virtual std::uint64_t inject_noise(HostSet& hosts) = 0;
+  virtual std::string pipeservers_wait_for() const = 0;
+  // Fault injection after a swap: line noise to the pipeservers; the bytes written.
+  virtual std::uint64_t inject_noise(PipeserverSet& pipeservers) = 0;
 
   // --- what the displays show ------------------------------------------------------------
   // The displays of frame `frame`, waiting (watched) until this path shows it.
@@ -86,8 +88,9 @@ class DisplayPath {
   virtual Status failure_as_cause(int /*shown*/, const std::string& /*showing*/) { return {}; }
   // The path's failure as the last explanation left.
   virtual Status failure(int /*shown*/, const std::string& /*showing*/) { return {}; }
-  // A host that gave up on this path while it still runs: the path hangs, named so.
-  virtual Status hang_behind(const Host& /*h*/, int /*shown*/, const std::string& /*showing*/) {
+  // A pipeserver that gave up on this path while it still runs: the path hangs, named so.
+  virtual Status hang_behind(const LivePipeserver& /*h*/, int /*shown*/,
+                             const std::string& /*showing*/) {
     return {};
   }
   // How messages name the path's own process ("compositing server (vizserver pid 4242)"), or
@@ -102,9 +105,9 @@ class DisplayPath {
   // Its counts for the report.
   virtual void add_totals(RunTotals& totals) const = 0;
   // A balanced run: the lead path serves the control channels while it waits for frames (the
-  // hosts wait for each frame's layout), and checks its swaps against the layouts where it can.
-  // The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.
-  virtual void follow_layouts(LiveBalance& /*balance*/, HostSet& /*hosts*/) {}
+  // pipeservers wait for each frame's layout), and checks its swaps against the layouts where it
+  // can. The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.
+  virtual void follow_layouts(LiveBalance& /*balance*/, PipeserverSet& /*pipeservers*/) {}
 };
 
 }  // namespace l2

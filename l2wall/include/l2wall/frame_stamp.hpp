@@ -1,5 +1,5 @@
-// The frame number each live host writes into the first pixel of its first tile (see
-// pipeserver/src/live_host.hpp). Reading it back from an input or a display tells which
+// The frame number each live pipeserver writes into the first pixel of its first tile (see
+// pipeserver/src/live_mode.hpp). Reading it back from an input or a display tells which
 // application frame is there: the run measures latency from pixels, not from its own counters.
 #pragma once
 
@@ -7,8 +7,8 @@
 
 namespace l2 {
 
-// Where a frame's stamp is: its host's first tile's framebuffer pixel and the display pixel it
-// lands on (they move with the layout).
+// Where a frame's stamp is: its pipeserver's first tile's framebuffer pixel and the display pixel
+// it lands on (they move with the layout).
 struct StampSpot {
   int fb_x = 0, fb_y = 0, display = 0, dx = 0, dy = 0;
   bool operator==(const StampSpot&) const = default;

@@ -1,11 +1,11 @@
 // Balancing in a live run (`[balance]`, `l2wall run --balance`): the coordinator side of the
 // control channel. Each pipeserver sends its tiles' times after every frame (TIMES); once every
-// host's times of frame k are in, the Balancer plans frame k+1 and the same LAYOUT goes to every
-// host, so all switch together. It also says where each frame's stamps are (the layout moves
-// them) and counts, from the stamps the run reads, the strips routed in each layout and the
+// pipeserver's times of frame k are in, the Balancer plans frame k+1 and the same LAYOUT goes to
+// every pipeserver, so all switch together. It also says where each frame's stamps are (the layout
+// moves them) and counts, from the stamps the run reads, the strips routed in each layout and the
 // group swaps that showed frames of two layouts at once.
 //
-// With --survive-host-loss a host that dies is lost, not the end of the run: the next layout
+// With --survive-host-loss a pipeserver that dies is lost, not the end of the run: the next layout
 // is planned over the others (the Balancer), the frames whose layouts still gave it tiles are
 // stale (shown without its part, some of them late), and the summary says so.
 #pragma once
@@ -19,7 +19,7 @@
 
 #include "balance/balancer.hpp"
 #include "balance/control_messages.hpp"
-#include "l2wall/host_set.hpp"
+#include "l2wall/pipeserver_set.hpp"
 
 namespace l2 {
 
@@ -30,25 +30,26 @@ class LiveBalance {
 
   // Reads every TIMES line waiting, and sends LAYOUT k+1 once frame k's times are all in.
   // Throws RunFault for a line that is not the expected TIMES.
-  void serve(HostSet& hosts);
-  // After a refresh: counts the strips each host's new frame routed, by that frame's layout.
-  void count_strips(const HostSet& hosts, const std::vector<std::uint64_t>& routed_by_host);
+  void serve(PipeserverSet& pipeservers);
+  // After a refresh: counts the strips each pipeserver's new frame routed, by that frame's layout.
+  void count_strips(const PipeserverSet& pipeservers,
+                    const std::vector<std::uint64_t>& routed_by_pipeserver);
   // The lead path cannot count strips (`why`): the summary says so instead of counts.
   void strips_not_counted(std::string why) { strips_uncounted_ = std::move(why); }
   // After a swap group swapped: whether the frames its displays (`group_displays`) now show
-  // share one layout. `frame_shown(h)`: the frame host h's stamp says the displays show of it
-  // (INT_MAX: not known); a host counts when that frame's stamp is on one of the group's.
-  void check_swap(const std::vector<int>& group_displays, const HostSet& hosts,
-                  const std::function<int(const Host&)>& frame_shown);
+  // share one layout. `frame_shown(h)`: the frame pipeserver h's stamp says the displays show of it
+  // (INT_MAX: not known); a pipeserver counts when that frame's stamp is on one of the group's.
+  void check_swap(const std::vector<int>& group_displays, const PipeserverSet& pipeservers,
+                  const std::function<int(const LivePipeserver&)>& frame_shown);
 
-  // Whether a host that dies is survived (--survive-host-loss, [balance] survive_host_loss).
+  // Whether a pipeserver that dies is survived (--survive-host-loss, [balance] survive_host_loss).
   bool survives_losses() const { return survive_; }
-  // Host `pipeserver` died (`how`: "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while
+  // Pipeserver `pipeserver` died (`how`: "pipeserver 1 (pid 4242) killed by signal 9 (Killed) while
   // rendering frame 57") having delivered frames 0..delivered-1, `seconds` into the run: the
   // layouts from the next one on give it nothing. False when it was the last one rendering.
   bool lose(int pipeserver, int delivered, const std::string& how, double seconds);
-  // Whether frame `frame` is rendered in a layout that gives a lost host tiles it never
-  // delivered: shown incomplete, and maybe late (its host's death noticed after the others'
+  // Whether frame `frame` is rendered in a layout that gives a lost pipeserver tiles it never
+  // delivered: shown incomplete, and maybe late (its pipeserver's death noticed after the others'
   // part came in).
   bool stale(int frame) const;
   // A stale frame that reached the displays later than one refresh after its last input.
@@ -58,14 +59,14 @@ class LiveBalance {
   int layout_of(int frame) const;
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
   // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans,
-  // the hosts lost and the frames stale.
+  // the pipeservers lost and the frames stale.
   std::string summary() const;
-  // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every host got it (frame 0: the
-  // wall's plan, which the hosts start in).
+  // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame 0: the
+  // wall's plan, which the pipeservers start in).
   void write_layouts(const std::filesystem::path& file) const;
 
  private:
-  void send_layout(HostSet& hosts, int frame);
+  void send_layout(PipeserverSet& pipeservers, int frame);
 
   struct Loss {
     int pipeserver = 0;
@@ -81,8 +82,8 @@ class LiveBalance {
   std::vector<int> late_;  // stale frames shown late
   int frames_;
   int next_times_ = 0;                        // the frame whose times are being collected
-  std::vector<std::vector<double>> pending_;  // by host, that frame's times
-  std::vector<bool> have_;                    // by host, whether they are in
+  std::vector<std::vector<double>> pending_;  // by pipeserver, that frame's times
+  std::vector<bool> have_;                    // by pipeserver, whether they are in
   std::vector<int> frame_layout_;      // by frame sent so far; later frames are in the last layout
   std::vector<std::uint64_t> strips_;  // by layout
   std::vector<int> first_frame_;       // by layout

@@ -1,6 +1,6 @@
 // `l2wall run --show window|monitors`: the run's output displays on screen after every swap,
 // and the keys of its windows. Space pauses the run: it takes nothing in and sends no READY, so
-// the hosts wait as they would for a real Lightning-2. s saves what the screens show of every
+// the pipeservers wait as they would for a real Lightning-2. s saves what the screens show of every
 // display into OUT/screenshots/. q, Esc or closing a window end the run as after its last frame.
 // The run calls show() after each swap and keys() once per refresh; everything else is here.
 #pragma once
@@ -33,8 +33,8 @@ class LiveShow {
   static std::string title(const Wall& wall);
 
   // Extra pipeserver arguments: a paused run holds READY back as long as the user likes, so a
-  // host asks again with SYNC? every --ready-timeout ms for longer than it would otherwise.
-  static std::vector<std::string> host_args();
+  // pipeserver asks again with SYNC? every --ready-timeout ms for longer than it would otherwise.
+  static std::vector<std::string> pipeserver_args();
 
   // After a swap: shows `frame` (display(id): display id's picture) with the frames per second
   // and the measured latency in the overlay line.
@@ -46,7 +46,7 @@ class LiveShow {
   };
   // Acts on the keys pressed since the last look (it looks at most every few ms). While paused
   // it returns only on resume or quit, calling `while_paused` every 10 ms meanwhile so the run
-  // keeps watching its hosts and answering their SYNC? requests.
+  // keeps watching its pipeservers and answering their SYNC? requests.
   Keys keys(const std::function<void()>& while_paused);
 
   // One line for the summary: mode, frames presented, pauses, screenshots, how the run ended.

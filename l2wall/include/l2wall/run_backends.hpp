@@ -1,14 +1,14 @@
 // Where the parts of a live run run: one machine (pipeserver child processes on shared-memory
 // DVI links and pty back-channels, this process the Lightning-2), or other backends beside it
-// (cluster/: MPI ranks). The live run makes its display paths and starts its hosts through
+// (cluster/: MPI ranks). The live run makes its display paths and starts its pipeservers through
 // this, once; nothing else in it knows which backends run.
 #pragma once
 
 #include <memory>
 
 #include "l2wall/display_path.hpp"
-#include "l2wall/host_set.hpp"
 #include "l2wall/live_run.hpp"
+#include "l2wall/pipeserver_set.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -21,15 +21,15 @@ class RunBackends {
   virtual std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                                 const RunOptions& options) const = 0;
   virtual std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const = 0;
-  virtual void start_hosts(HostSet& hosts, const HostLaunch& launch,
-                           const TileLayout& layout) const = 0;
+  virtual void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
+                                 const TileLayout& layout) const = 0;
 };
 
 // Child processes, shared memory, ptys, the compositing server process.
 const RunBackends& one_machine_backends();
 
 // What every pipeserver of a run of `options` is started with (before a path adds its part).
-HostLaunch host_launch(const RunOptions& options);
+PipeserverLaunch pipeserver_launch(const RunOptions& options);
 
 // run_wall() on the given backends.
 int run_wall(const RunOptions& options, const RunBackends& backends);

@@ -39,16 +39,16 @@ struct RunOptions {
   int threads = 1;                     // emulator routing threads
   std::string link_codec = "auto";     // frames to the columns, tiles to the server (frame_delta)
   int start_timeout_ms = 60000;        // until every link carries its first frame
-  int stall_timeout_ms = 5000;         // no display swap for this long: a host hangs
-  int ready_timeout_ms = 1000;         // passed to the hosts (first frames can be slow)
+  int stall_timeout_ms = 5000;         // no display swap for this long: a pipeserver hangs
+  int ready_timeout_ms = 1000;         // passed to the pipeservers (first frames can be slow)
   bool progress = true;
   std::string show;           // --show window | monitors: the displays on screen (live_show.hpp)
   std::string show_readback;  // --show-readback DIR: what the screen shows, written per frame
   // Fault injection, for tests and demonstrations.
-  int noise_after = -1;      // after swapping this frame, write line noise to every host
+  int noise_after = -1;      // after swapping this frame, write line noise to every pipeserver
   int inject_mismatch = -1;  // --compare: one pixel of display 0 of this frame changed on the
                              // vizserver side before comparing
-  int drop_ready = -1;       // do not send READY for this frame to host 0 (it asks SYNC?)
+  int drop_ready = -1;       // do not send READY for this frame to pipeserver 0 (it asks SYNC?)
 };
 
 // The frames whose displays are saved (--keep). Parses --keep; throws std::invalid_argument

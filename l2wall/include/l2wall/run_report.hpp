@@ -1,5 +1,5 @@
 // What a live run records per frame, and the report it writes at the end: report.csv (one row
-// per frame: refreshes, latency, route and swap time, per host render time, READY wait, SYNC?
+// per frame: refreshes, latency, route and swap time, per pipeserver render time, READY wait, SYNC?
 // retries) and summary.txt (frames per second, measured latency, the spread of render, route
 // and swap time and what limited the run, back-channel counts).
 #pragma once
@@ -30,14 +30,14 @@ struct RunTotals {
   std::uint64_t compared_displays = 0;
   std::uint64_t frames_predicted = 0, predictions_missed = 0;  // the emulator's (DVI path)
   bool latency_measured = true;  // false on the vizserver path alone: no refresh to count
-  RunClock::time_point start{};  // the clock starts once every host delivered a first frame
+  RunClock::time_point start{};  // the clock starts once every pipeserver delivered a first frame
 };
 
-// Writes OUT/report.csv and OUT/summary.txt from the records and the hosts' reports
-// (`host_logs`: host-<i>.log, in host order); returns the summary. `extra` lines go into the
-// summary before its last line.
+// Writes OUT/report.csv and OUT/summary.txt from the records and the pipeservers' reports
+// (`pipeserver_logs`: pipeserver-<i>.log, in pipeserver order); returns the summary. `extra` lines
+// go into the summary before its last line.
 std::string write_run_report(const RunOptions& o, const Wall& wall,
-                             const std::vector<std::string>& host_logs,
+                             const std::vector<std::string>& pipeserver_logs,
                              const std::vector<FrameRecord>& records, const RunTotals& totals,
                              const std::string& extra);
 

@@ -8,7 +8,7 @@ namespace {
 using mpi_wire::Reader;
 using mpi_wire::Record;
 
-constexpr std::size_t kSpotWords = 5, kHostStampsWords = 3 * kSpotWords;
+constexpr std::size_t kSpotWords = 5, kPipeserverStampsWords = 3 * kSpotWords;
 constexpr std::size_t kInputWords = 7, kStampsShownWords = 3, kDisplayWords = 2;
 
 void put(Record& r, const StampSpot& s) {
@@ -29,7 +29,7 @@ Record encode(const Tick& t) {
   r.push_back(static_cast<std::int64_t>(t.sequences.size()));
   for (const std::uint64_t s : t.sequences) r.push_back(static_cast<std::int64_t>(s));
   r.push_back(static_cast<std::int64_t>(t.stamps.size()));
-  for (const HostStamps& h : t.stamps) {
+  for (const PipeserverStamps& h : t.stamps) {
     for (const StampSpot* s : {&h.next, &h.last, &h.before}) put(r, *s);
   }
   return r;
@@ -42,8 +42,8 @@ Tick decode_tick(Reader& in) {
   for (int& g : t.swapped_groups) g = in.next_int();
   t.sequences.resize(in.count(1));
   for (std::uint64_t& s : t.sequences) s = static_cast<std::uint64_t>(in.next());
-  t.stamps.resize(in.count(kHostStampsWords));
-  for (HostStamps& h : t.stamps) {
+  t.stamps.resize(in.count(kPipeserverStampsWords));
+  for (PipeserverStamps& h : t.stamps) {
     for (StampSpot* s : {&h.next, &h.last, &h.before}) *s = take_spot(in);
   }
   return t;

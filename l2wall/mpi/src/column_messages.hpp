@@ -25,16 +25,16 @@ namespace l2 {
 
 // A pipeserver's stamps this refresh: in the frame it delivers next (fb_x, fb_y), and on the
 // displays for its last frame and the one before (display, dx, dy); a display shows one.
-struct HostStamps {
+struct PipeserverStamps {
   StampSpot next, last, before;
-  bool operator==(const HostStamps&) const = default;
+  bool operator==(const PipeserverStamps&) const = default;
 };
 
 struct Tick {
   std::int64_t refresh = 0;
   std::vector<int> swapped_groups;       // indices of the swap-lock groups that swapped
   std::vector<std::uint64_t> sequences;  // by pipeserver: the frame its link carries now
-  std::vector<HostStamps> stamps;        // by pipeserver
+  std::vector<PipeserverStamps> stamps;  // by pipeserver
   bool operator==(const Tick&) const = default;
 };
 

@@ -288,8 +288,8 @@ class Column {
   WorkerPool pool_;
   Router router_;
   std::vector<ColumnInput> inputs_;
-  std::vector<HostStamps> spots_;   // by pipeserver, this refresh's (the coordinator's tick)
-  std::vector<InputFrame> frames_;  // by mesh input; absent: no signal here
+  std::vector<PipeserverStamps> spots_;  // by pipeserver, this refresh's (the coordinator's tick)
+  std::vector<InputFrame> frames_;       // by mesh input; absent: no signal here
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
   std::vector<DisplayFrameStats> finished_;

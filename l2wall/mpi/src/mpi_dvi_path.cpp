@@ -69,9 +69,9 @@ std::string MpiDviPath::lost_message(int rank) const {
       map_.role(rank), rank, who.host, who.pid, shown_ + 1, displays_showing());
 }
 
-bool MpiDviPath::take_notices(HostSet& hosts) {
+bool MpiDviPath::take_notices(PipeserverSet& pipeservers) {
   bool fresh = false;
-  for (Host& h : hosts.hosts()) {
+  for (LivePipeserver& h : pipeservers.all()) {
     const int rank = map_.pipeserver_rank(h.pipeserver);
     while (mpi_wire::waiting(rank, mpi_wire::kNotice)) {
       const Record notice = mpi_wire::receive(rank, mpi_wire::kNotice);
@@ -82,20 +82,22 @@ bool MpiDviPath::take_notices(HostSet& hosts) {
   return fresh;
 }
 
-void MpiDviPath::open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) {
+void MpiDviPath::open(PipeserverSet& pipeservers, std::chrono::milliseconds timeout,
+                      const RunWatch& watch) {
   const auto deadline = RunClock::now() + timeout;
   for (;;) {
     watch.processes();
-    take_notices(hosts);
-    const auto& all = hosts.hosts();
+    take_notices(pipeservers);
+    const auto& all = pipeservers.all();
     // As on one machine: the refreshes start once every input carries a signal.
-    if (std::all_of(all.begin(), all.end(), [](const Host& h) { return h.sequence > 0; })) {
+    if (std::all_of(all.begin(), all.end(),
+                    [](const LivePipeserver& h) { return h.sequence > 0; })) {
       unseen_ = true;  // the first frames are still to be taken in
       return;
     }
     if (RunClock::now() > deadline) {
       std::string missing;
-      for (const Host& h : all)
+      for (const LivePipeserver& h : all)
         if (h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
@@ -112,16 +114,17 @@ std::uint64_t MpiDviPath::groups_of_displays(std::uint64_t displays) const {
   return groups;
 }
 
-void MpiDviPath::refresh(HostSet& hosts) {
+void MpiDviPath::refresh(PipeserverSet& pipeservers) {
   const auto index = static_cast<std::int64_t>(refreshes_++);
   sequencer_.refresh(swapped_);
   Tick tick;
   tick.refresh = index;
   tick.swapped_groups.assign(swapped_.begin(), swapped_.end());
-  // Where each host's stamps are (a balanced run's layouts move them): in the frame it delivers
-  // next, and on the displays for its last frame and the one before; the displays show one.
+  // Where each pipeserver's stamps are (a balanced run's layouts move them): in the frame it
+  // delivers next, and on the displays for its last frame and the one before; the displays show
+  // one.
   accepted_.clear();
-  for (const Host& h : hosts.hosts()) {
+  for (const LivePipeserver& h : pipeservers.all()) {
     tick.sequences.push_back(h.sequence);
     tick.stamps.push_back({h.stamp(h.accepted + 1), h.stamp(h.accepted), h.stamp(h.accepted - 1)});
     accepted_.push_back(h.accepted);
@@ -133,17 +136,17 @@ void MpiDviPath::refresh(HostSet& hosts) {
 
   observations_.assign(static_cast<std::size_t>(map_.mesh_inputs), FrameObservation{});
   stamps_.assign(static_cast<std::size_t>(map_.mesh_inputs), -1);
-  stamp_shown_.assign(hosts.hosts().size(), INT_MAX);
+  stamp_shown_.assign(pipeservers.all().size(), INT_MAX);
   displays_shown_.clear();
   // A column that failed: the others still answer (they swapped with it), so what the
   // displays keep is known before the fault is named and the displays are saved.
   std::optional<int> column_failed;
-  // By host: its stamps on the displays, of its last frame and of the one before.
-  std::vector<int> seen_last(hosts.hosts().size(), mpi_wire::kStampNotHere);
+  // By pipeserver: its stamps on the displays, of its last frame and of the one before.
+  std::vector<int> seen_last(pipeservers.all().size(), mpi_wire::kStampNotHere);
   std::vector<int> seen_before(seen_last);
   for (int c = 0; c < map_.columns; ++c) {
     const int rank = map_.column_rank(c);
-    const std::optional<Record> answer = column_answer(c, hosts);
+    const std::optional<Record> answer = column_answer(c, pipeservers);
     if (!answer) {
       if (!column_failed) column_failed = c;
       continue;
@@ -179,7 +182,7 @@ void MpiDviPath::refresh(HostSet& hosts) {
     }
   }
   // As on one machine (DviSide::frame_shown): the last frame if its stamp says so, else the
-  // one before if its stamp says so, else what the last frame's spot shows. Hosts on no
+  // one before if its stamp says so, else what the last frame's spot shows. Pipeservers on no
   // answering column stay INT_MAX.
   for (std::size_t i = 0; i < stamp_shown_.size(); ++i) {
     const int last = accepted_[i];
@@ -210,7 +213,7 @@ void MpiDviPath::refresh(HostSet& hosts) {
     throw RunFault(s.reason());
 }
 
-std::optional<Record> MpiDviPath::column_answer(int c, HostSet& hosts) {
+std::optional<Record> MpiDviPath::column_answer(int c, PipeserverSet& pipeservers) {
   const int rank = map_.column_rank(c);
   const auto deadline = RunClock::now() + std::chrono::milliseconds(stall_timeout_ms_);
   // Only this column's own loss ends the wait: a pipeserver gone is taken up after this
@@ -219,7 +222,7 @@ std::optional<Record> MpiDviPath::column_answer(int c, HostSet& hosts) {
   try {
     return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
       if (down() && *lost_ == rank) throw Failed{};
-      hosts.serve_channels();
+      pipeservers.serve_channels();
       if (RunClock::now() >= deadline) {
         stuck_ = rank;
         throw Failed{};
@@ -242,7 +245,7 @@ std::string MpiDviPath::column_failure(int c, std::int64_t index) const {
 }
 
 void MpiDviPath::note_swap() {
-  // Hosts on no answering column are INT_MAX: the frame kept is that of the displays left.
+  // Pipeservers on no answering column are INT_MAX: the frame kept is that of the displays left.
   const int lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
   if (lowest != INT_MAX) shown_ = std::min(lowest, frames_ - 1);
 }
@@ -263,32 +266,32 @@ Status MpiDviPath::failure_as_cause(int, const std::string&) {
   return Failure{lost_message(*lost_)};
 }
 
-std::optional<PathSwap> MpiDviPath::step(int, HostSet& hosts, std::vector<FrameRecord>& records,
-                                         const RunWatch& watch) {
+std::optional<PathSwap> MpiDviPath::step(int, PipeserverSet& pipeservers,
+                                         std::vector<FrameRecord>& records, const RunWatch& watch) {
   if (refresh_hz_ > 0) clock_.wait_next();
   watch.processes();
-  const bool fresh = take_notices(hosts) || std::exchange(unseen_, false);
-  hosts.serve_channels();
-  if (balance_) balance_->serve(hosts);
+  const bool fresh = take_notices(pipeservers) || std::exchange(unseen_, false);
+  pipeservers.serve_channels();
+  if (balance_) balance_->serve(pipeservers);
   if (refresh_hz_ == 0 && !fresh && !swap_due_) {
     std::this_thread::sleep_for(std::chrono::microseconds(200));
     return std::nullopt;
   }
   const auto t0 = RunClock::now();
-  refresh(hosts);
+  refresh(pipeservers);
   if (!swapped_.empty()) note_swap();
   // A rank lost during the refresh is named now, with the frame the displays keep, and before
   // READY is sent: MPI traffic to a rank that is gone ends this process (Open MPI's TCP
   // transport aborts), and the displays would not be saved.
   watch.processes();
   record_new_frames(
-      hosts, records, decision_.kinds, [&](std::size_t i) { return stamps_[i]; }, refreshes_ - 1,
-      t0, ms_between(t0, RunClock::now()));
+      pipeservers, records, decision_.kinds, [&](std::size_t i) { return stamps_[i]; },
+      refreshes_ - 1, t0, ms_between(t0, RunClock::now()));
   swap_due_ = !decision_.completed_groups.empty();
   dropped_readies_ +=
-      static_cast<std::uint64_t>(send_readies(decision_.ready_inputs, hosts, drop_ready_));
+      static_cast<std::uint64_t>(send_readies(decision_.ready_inputs, pipeservers, drop_ready_));
   if (swapped_.empty()) return std::nullopt;
-  if (balance_) check_groups_for_balance(hosts);
+  if (balance_) check_groups_for_balance(pipeservers);
   PathSwap swap;
   swap.time = RunClock::now();
   swap.lowest = *std::min_element(stamp_shown_.begin(), stamp_shown_.end());
@@ -402,15 +405,16 @@ void MpiDviPath::end_columns() {
 
 // Each group swapped in this refresh: the frames its displays show, by the stamps on them, must
 // share a layout (as DviPath checks on one machine).
-void MpiDviPath::check_groups_for_balance(const HostSet& hosts) {
+void MpiDviPath::check_groups_for_balance(const PipeserverSet& pipeservers) {
   for (const int g : swapped_) {
-    balance_->check_swap(groups_[static_cast<std::size_t>(g)].displays, hosts, [&](const Host& h) {
-      return stamp_shown_[static_cast<std::size_t>(h.pipeserver)];
-    });
+    balance_->check_swap(groups_[static_cast<std::size_t>(g)].displays, pipeservers,
+                         [&](const LivePipeserver& h) {
+                           return stamp_shown_[static_cast<std::size_t>(h.pipeserver)];
+                         });
   }
 }
 
-void MpiDviPath::follow_layouts(LiveBalance& balance, HostSet&) {
+void MpiDviPath::follow_layouts(LiveBalance& balance, PipeserverSet&) {
   balance_ = &balance;
   balance.strips_not_counted("the board column ranks do not count the strips they route");
 }

@@ -3,7 +3,8 @@
 // and which frame of each input to take in; it answers with what it saw (each input's parity,
 // the displays its strips reached, its frame stamp, and the frame each of its displays shows);
 // from every column's answer the sequencer decides which inputs are routed and which groups
-// complete, and READY goes to the hosts. Swap lock across machines is checked in every refresh.
+// complete, and READY goes to the pipeservers. Swap lock across machines is checked in every
+// refresh.
 #pragma once
 
 #include <atomic>
@@ -33,14 +34,15 @@ class MpiDviPath final : public DisplayPath {
 
   std::string label() const override { return "dvi"; }
   std::string name() const override { return "DVI path"; }
-  void add_host_args(HostLaunch& launch) const override { launch.dvi = true; }
-  void open(HostSet& hosts, std::chrono::milliseconds timeout, const RunWatch& watch) override;
+  void add_pipeserver_args(PipeserverLaunch& launch) const override { launch.dvi = true; }
+  void open(PipeserverSet& pipeservers, std::chrono::milliseconds timeout,
+            const RunWatch& watch) override;
 
   bool refreshed() const override { return true; }
-  std::optional<PathSwap> step(int next, HostSet& hosts, std::vector<FrameRecord>& records,
-                               const RunWatch& watch) override;
-  std::string hosts_wait_for() const override { return "READY"; }
-  std::uint64_t inject_noise(HostSet&) override { return 0; }  // no serial line to disturb
+  std::optional<PathSwap> step(int next, PipeserverSet& pipeservers,
+                               std::vector<FrameRecord>& records, const RunWatch& watch) override;
+  std::string pipeservers_wait_for() const override { return "READY"; }
+  std::uint64_t inject_noise(PipeserverSet&) override { return 0; }  // no serial line to disturb
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override;
   std::optional<DisplayPictures> shown() const override;
@@ -55,21 +57,21 @@ class MpiDviPath final : public DisplayPath {
     return failure_as_cause(shown, showing);
   }
 
-  // Waits for every host's end (its report complete), then ends the columns.
+  // Waits for every pipeserver's end (its report complete), then ends the columns.
   void finish() override;
   void shut_down() override { end_columns(); }
   void add_totals(RunTotals& totals) const override;
   // A balanced run: serves the control channels as it steps and checks each swap's frames
   // share a layout. The columns do not count the strips they route, so neither does this.
-  void follow_layouts(LiveBalance& balance, HostSet&) override;
+  void follow_layouts(LiveBalance& balance, PipeserverSet&) override;
 
  private:
-  void check_groups_for_balance(const HostSet& hosts);
-  // Takes in every host's notices of frames published; true when one is new.
-  bool take_notices(HostSet& hosts);
+  void check_groups_for_balance(const PipeserverSet& pipeservers);
+  // Takes in every pipeserver's notices of frames published; true when one is new.
+  bool take_notices(PipeserverSet& pipeservers);
   // One refresh over every column; the tick's decision. A column that fails is named after
   // the others answered.
-  void refresh(HostSet& hosts);
+  void refresh(PipeserverSet& pipeservers);
   // After a refresh that swapped: the frame the displays keep, from the columns' answers.
   void note_swap();
   void end_columns();
@@ -78,7 +80,7 @@ class MpiDviPath final : public DisplayPath {
   // Column `c`'s answer to this refresh; nullopt when it is gone or did not answer within the
   // stall timeout (stopped or hung: the pipeservers it stopped taking frames from wait on it,
   // so they are not the cause).
-  std::optional<mpi_wire::Record> column_answer(int c, HostSet& hosts);
+  std::optional<mpi_wire::Record> column_answer(int c, PipeserverSet& pipeservers);
   // The line naming column `c`, which failed refresh `index`.
   std::string column_failure(int c, std::int64_t index) const;
   std::string displays_showing() const;
@@ -103,8 +105,8 @@ class MpiDviPath final : public DisplayPath {
   std::vector<int> swapped_;
   std::vector<FrameObservation> observations_;  // by mesh input
   std::vector<int> stamps_;                     // by mesh input: the frame taken in
-  std::vector<int> stamp_shown_;                // by host: the frame its stamp shows
-  std::vector<int> accepted_;                   // by host: its last frame, as of the tick
+  std::vector<int> stamp_shown_;                // by pipeserver: the frame its stamp shows
+  std::vector<int> accepted_;                   // by pipeserver: its last frame, as of the tick
   LiveBalance* balance_ = nullptr;              // a balanced run's coordinator
   std::vector<DisplayShown> displays_shown_;
   std::uint64_t refreshes_ = 0;

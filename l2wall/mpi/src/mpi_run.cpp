@@ -14,7 +14,7 @@
 #include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
 #include "image/folders.hpp"
-#include "l2wall/host_set.hpp"
+#include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
 #include "mpi_dvi_path.hpp"
 #include "mpi_viz_path.hpp"
@@ -40,14 +40,14 @@ class MpiBackends final : public RunBackends {
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
     return std::make_unique<MpiVizPath>(layout_, map_, stall_timeout_ms_);
   }
-  void start_hosts(HostSet& hosts, const HostLaunch& launch,
-                   const TileLayout& layout) const override {
-    hosts.attach(launch, layout, [this, &launch](int pipeserver) {
+  void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
+                         const TileLayout& layout) const override {
+    pipeservers.attach(launch, layout, [this, &launch](int pipeserver) {
       const int rank = map_.pipeserver_rank(pipeserver);
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
-      HostSet::RemoteEnd end;
+      PipeserverSet::RemoteEnd end;
       end.process =
-          remote_host_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid));
+          remote_pipeserver_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid));
       end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
       if (launch.control) end.control = std::make_unique<MpiControlChannel>(rank);
@@ -65,16 +65,17 @@ class MpiBackends final : public RunBackends {
 // Becomes pipeserver `pipeserver`; returns only when that failed. `balanced`: it sends its
 // times and takes its layouts over MPI (the coordinator's MpiControlChannel).
 int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
-  Host h;
+  LivePipeserver h;
   h.pipeserver = pipeserver;
-  h.report_path = (std::filesystem::path(o.out) / fmt::format("host-{}.log", pipeserver)).string();
-  HostLaunch launch = host_launch(o);
+  h.report_path =
+      (std::filesystem::path(o.out) / fmt::format("pipeserver-{}.log", pipeserver)).string();
+  PipeserverLaunch launch = pipeserver_launch(o);
   launch.extra_args = {"--mpi"};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.
   make_folders(o.out, "--out");
-  const std::vector<std::string> args = host_argv(launch, h);
+  const std::vector<std::string> args = pipeserver_argv(launch, h);
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

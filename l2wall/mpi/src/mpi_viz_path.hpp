@@ -1,7 +1,7 @@
 // The visualization-server path over MPI ranks, on the coordinator (display_path.hpp): the
 // pipeservers send their tiles to the board column owning each display, and every column
 // composites its displays (distributed compositing, the compositing server's rules). Once every
-// column has composed a frame, SWAPPED goes to the hosts. Runs beside the DVI path (--path
+// column has composed a frame, SWAPPED goes to the pipeservers. Runs beside the DVI path (--path
 // both), whose swaps lead; each of its frames is fetched from the columns to be compared.
 #pragma once
 
@@ -19,16 +19,18 @@ class MpiVizPath final : public DisplayPath {
 
   std::string label() const override { return "vizserver"; }
   std::string name() const override { return "vizserver path"; }
-  void add_host_args(HostLaunch&) const override {}  // the ranks were started with theirs
-  void open(HostSet&, std::chrono::milliseconds, const RunWatch&) override {}
+  void add_pipeserver_args(PipeserverLaunch&) const override {
+  }  // the ranks were started with theirs
+  void open(PipeserverSet&, std::chrono::milliseconds, const RunWatch&) override {}
 
   // Never the lead over MPI (--path vizserver alone is refused).
   bool refreshed() const override { return false; }
-  std::optional<PathSwap> step(int, HostSet&, std::vector<FrameRecord>&, const RunWatch&) override {
+  std::optional<PathSwap> step(int, PipeserverSet&, std::vector<FrameRecord>&,
+                               const RunWatch&) override {
     return std::nullopt;
   }
-  std::string hosts_wait_for() const override { return "SWAPPED"; }
-  std::uint64_t inject_noise(HostSet&) override { return 0; }
+  std::string pipeservers_wait_for() const override { return "SWAPPED"; }
+  std::uint64_t inject_noise(PipeserverSet&) override { return 0; }
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override;
   // The columns composited `frame`; their pictures stay where they are (not over the network).

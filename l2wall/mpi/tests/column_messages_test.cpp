@@ -8,7 +8,7 @@
 namespace l2 {
 namespace {
 
-Tick two_host_tick() {
+Tick two_pipeserver_tick() {
   Tick t;
   t.refresh = 41;
   t.swapped_groups = {0, 2};
@@ -25,7 +25,7 @@ Observation five() {
 }
 
 TEST(ColumnMessages, TickRoundTripsAfterItsCommandWord) {
-  const Tick sent = two_host_tick();
+  const Tick sent = two_pipeserver_tick();
   const mpi_wire::Record r = encode(sent);
   ASSERT_FALSE(r.empty());
   EXPECT_EQ(r.front(), mpi_wire::kTick);
@@ -54,7 +54,7 @@ TEST(ColumnMessages, EmptyObservationIsFourWords) {
 }
 
 TEST(ColumnMessages, CutRecordsAreRefused) {
-  const mpi_wire::Record whole = encode(two_host_tick());
+  const mpi_wire::Record whole = encode(two_pipeserver_tick());
   for (std::size_t size = 1; size < whole.size(); ++size) {
     const mpi_wire::Record cut(whole.begin(), whole.begin() + static_cast<std::ptrdiff_t>(size));
     mpi_wire::Reader in(cut);

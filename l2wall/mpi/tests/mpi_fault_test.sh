@@ -61,7 +61,7 @@ fault() {
   local run=$!
   # Until the displays have swapped a few frames (the reports grow a line per frame).
   for _ in $(seq 600); do
-    [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
     sleep 0.05
   done
   local pid pids

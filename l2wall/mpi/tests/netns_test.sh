@@ -64,7 +64,7 @@ fault() {
     --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
   local run=$!
   for _ in $(seq 1200); do  # until the displays have swapped a few frames
-    [[ $(cat "$dir"/host-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
     sleep 0.05
   done
   local p pid=

@@ -7,7 +7,7 @@ namespace l2 {
 // READY never came on the serial back-channel (after the retries with SYNC?).
 inline constexpr int kExitNoReady = 3;
 // The compositing server could not be reached, closed the connection, reported an error or
-// stopped answering (no SWAPPED in time): the host lost it, it did not fail by itself.
+// stopped answering (no SWAPPED in time): the pipeserver lost it, it did not fail by itself.
 inline constexpr int kExitLostCompositingServer = 4;
 
 }  // namespace l2

@@ -49,8 +49,8 @@ class Pipeserver {
   RgbImage& render_frame(int frame, Scene& scene);
 
   // The same, scanned out into `dst`: fb_width x fb_height RGB, rows of fb_width * 3 bytes, row
-  // 0 on top, every pixel written (the live host passes its DVI link's back frame, so the frame
-  // is not copied there afterwards). Returns the frame's bytes at the start of `dst`. Throws
+  // 0 on top, every pixel written (the live pipeserver passes its DVI link's back frame, so the
+  // frame is not copied there afterwards). Returns the frame's bytes at the start of `dst`. Throws
   // std::invalid_argument when `dst` is smaller than a frame.
   std::span<std::uint8_t> render_frame(int frame, Scene& scene, std::span<std::uint8_t> dst);
 

@@ -20,8 +20,8 @@ namespace l2 {
 using DrawTile = std::function<void(const TileView& view)>;
 
 // `pipeserver`'s command line and behaviour with every scene replaced by `draw`'s (--scene and
-// the scene options are accepted, so l2wall's hosts start alike, and draw nothing of their own).
-// Returns the exit status for main().
+// the scene options are accepted, so l2wall's pipeservers start alike, and draw nothing of their
+// own). Returns the exit status for main().
 int run_renderer(int argc, char** argv, DrawTile draw);
 
 // The scene run_renderer() shows: for a program's own tests (render_reference, Pipeserver).

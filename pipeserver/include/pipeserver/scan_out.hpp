@@ -1,6 +1,6 @@
 // Scan-out (spec §1): the GL framebuffer (RGBA, rows bottom to top) becomes the 24-bit RGB frame
 // a DVI link carries (rows top to bottom, alpha dropped). A hot path: one pass per row, no
-// per-pixel calls; the destination is the caller's: the live host's is its DVI link's back
+// per-pixel calls; the destination is the caller's: the live pipeserver's is its DVI link's back
 // frame in shared memory.
 #pragma once
 

@@ -1,4 +1,4 @@
-// `pipeserver --live`: one host of a live run (l2wall run). It renders frames 0..N-1, writes
+// `pipeserver --live`: one pipeserver of a live run (l2wall run). It renders frames 0..N-1, writes
 // each into its DVI link (POSIX shared memory) and, from the second frame on, waits for the
 // READY of the previous frame on its serial back-channel before publishing (spec §6.1).
 #pragma once
@@ -21,7 +21,7 @@
 
 namespace l2 {
 
-// Where a host's tiles go on the visualization-server path: a compositing server over TCP
+// Where a pipeserver's tiles go on the visualization-server path: a compositing server over TCP
 // (viz::TileSender), or the board columns owning their displays over MPI.
 class TileSink {
  public:
@@ -53,30 +53,30 @@ class TileSinkOf final : public TileSink {
   Sender sender_;
 };
 
-// The DVI link a host publishes its frames on and the back-channel its READYs come on: shared
+// The DVI link a pipeserver publishes its frames on and the back-channel its READYs come on: shared
 // memory and a serial line on one machine, MPI messages in a run across machines. Made once,
-// where the host starts.
-struct HostLinks {
+// where the pipeserver starts.
+struct LiveLinks {
   std::shared_ptr<void> keeps;  // what the two use, so it outlives them (the serial port)
   std::unique_ptr<DviSender> link;
   std::unique_ptr<ReadyChannel> channel;
   std::unique_ptr<TileSink> tiles;  // the visualization-server path over MPI; else --viz
 };
-using MakeHostLinks =
-    std::function<HostLinks(const TileLayout& layout, const PipeserverPlan& plan)>;
+using MakeLiveLinks =
+    std::function<LiveLinks(const TileLayout& layout, const PipeserverPlan& plan)>;
 
 // The shared-memory link `link` and the serial line `backchannel` (l2wall run on one machine).
-MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel);
+MakeLiveLinks shared_memory_links(const std::string& link, const std::string& backchannel);
 
-struct LiveHostOptions {
+struct LiveOptions {
   std::string wall;  // empty: the built-in default wall
   int pipeserver = 0;
   std::string scene = "mesh";
   SceneOptions scene_options;
   int frames = 10;
-  std::string link;         // shared-memory name this host creates ("/l2-..."); empty: none
+  std::string link;         // shared-memory name this pipeserver creates ("/l2-..."); empty: none
   std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
-  MakeHostLinks links;      // how the link and back-channel are made; empty: none (--viz only)
+  MakeLiveLinks links;      // how the link and back-channel are made; empty: none (--viz only)
   std::string viz;          // "host:port" of a compositing server to send tiles to; empty: none
   // Frames over MPI and tiles to the compositing server (frame_delta.hpp); none: auto (tiles
   // to --viz whole, as TILE messages).
@@ -90,12 +90,12 @@ struct LiveHostOptions {
   std::shared_ptr<ControlChannel> control;
 };
 
-// Every frame carries its frame number in the first pixel of the host's first tile (24 bits,
+// Every frame carries its frame number in the first pixel of the pipeserver's first tile (24 bits,
 // R low byte), so the run can tell from the displays which frame they show.
 inline constexpr int kStampBits = 24;
 
 // Returns the process exit code: 0 on success, kExitNoReady when READY never came (message on
 // stderr). Throws viz::VizError when the compositing server is lost (kExitLostCompositingServer).
-int run_live_host(const LiveHostOptions& options);
+int run_live_mode(const LiveOptions& options);
 
 }  // namespace l2

@@ -1,4 +1,4 @@
-#include "live_host.hpp"
+#include "live_mode.hpp"
 
 #include <fmt/format.h>
 
@@ -111,19 +111,19 @@ void take_layout(ControlChannel& control, const Wall& wall, Pipeserver& ps, int 
   ps.set_layout(plan_from_message(wall, m));
 }
 
-// The SYNC? retries (or, for SWAPPED, the timeouts) a host allows the swap of `frame`. The swap
-// of frame 0 also waits for every other host's start-up (GL context, first render), which on a
-// loaded machine can take seconds: that wait gets more, whichever path paces the host and
-// whether it is the run's last frame or not.
-int swap_retries(const LiveHostOptions& o, int frame) {
+// The SYNC? retries (or, for SWAPPED, the timeouts) a pipeserver allows the swap of `frame`. The
+// swap of frame 0 also waits for every other pipeserver's start-up (GL context, first render),
+// which on a loaded machine can take seconds: that wait gets more, whichever path paces the
+// pipeserver and whether it is the run's last frame or not.
+int swap_retries(const LiveOptions& o, int frame) {
   return frame == 0 ? std::max(o.ready_retries, 30) : o.ready_retries;
 }
 
 }  // namespace
 
-MakeHostLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
+MakeLiveLinks shared_memory_links(const std::string& link, const std::string& backchannel) {
   return [link, backchannel](const TileLayout&, const PipeserverPlan& plan) {
-    HostLinks links;
+    LiveLinks links;
     links.link =
         std::make_unique<DviLinkWriter>(DviLinkWriter::create(link, plan.fb_width, plan.fb_height));
     auto port = std::make_shared<SerialPort>(SerialPort::open(backchannel));
@@ -133,13 +133,13 @@ MakeHostLinks shared_memory_links(const std::string& link, const std::string& ba
   };
 }
 
-int run_live_host(const LiveHostOptions& o) {
+int run_live_mode(const LiveOptions& o) {
   const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
   const TileLayout layout = plan_layout(wall);
   auto scene = make_scene(o.scene, o.scene_options);
   Pipeserver ps(layout, o.pipeserver);
   const PipeserverPlan& plan = ps.plan();
-  HostLinks links = o.links ? o.links(layout, plan) : HostLinks{};
+  LiveLinks links = o.links ? o.links(layout, plan) : LiveLinks{};
   DviSender* const link = links.link.get();
   ReadyChannel* const channel = links.channel.get();
   const std::unique_ptr<TileSink> sender =
@@ -173,7 +173,7 @@ int run_live_host(const LiveHostOptions& o) {
       retries = r->retries;
     }
     // The compositing server's SWAPPED paces the vizserver path (alone, instead of READY). With
-    // both paths it is read too: a host that exits with SWAPPED unread resets the connection,
+    // both paths it is read too: a pipeserver that exits with SWAPPED unread resets the connection,
     // and the server could lose tiles it had not read yet.
     if (k > 0 && sender) {
       sender->wait_swapped(static_cast<std::uint32_t>(k - 1), timeout * (retries_allowed + 1));

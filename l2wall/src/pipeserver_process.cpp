@@ -1,13 +1,13 @@
-#include "l2wall/host_process.hpp"
+#include "l2wall/pipeserver_process.hpp"
 
 #include <utility>
 
 namespace l2 {
 namespace {
 
-class ChildHost final : public HostProcess {
+class ChildPipeserver final : public PipeserverProcess {
  public:
-  ChildHost(const std::vector<std::string>& argv, const std::vector<std::string>& env)
+  ChildPipeserver(const std::vector<std::string>& argv, const std::vector<std::string>& env)
       : process_(argv, env) {}
   std::string place() const override { return "pid " + std::to_string(process_.pid()); }
   std::optional<ExitStatus> poll() override { return process_.poll(); }
@@ -24,9 +24,9 @@ class ChildHost final : public HostProcess {
 
 // Watched from elsewhere: the coordinator learns of a rank's end from its liveness connection
 // (mpi/), and mpirun ends and reaps it.
-class RemoteHost final : public HostProcess {
+class RemotePipeserver final : public PipeserverProcess {
  public:
-  explicit RemoteHost(std::string place) : place_(std::move(place)) {}
+  explicit RemotePipeserver(std::string place) : place_(std::move(place)) {}
   std::string place() const override { return place_; }
   std::optional<ExitStatus> poll() override { return std::nullopt; }
   bool stopped() const override { return false; }
@@ -40,13 +40,13 @@ class RemoteHost final : public HostProcess {
 
 }  // namespace
 
-std::unique_ptr<HostProcess> child_host_process(const std::vector<std::string>& argv,
-                                                const std::vector<std::string>& env) {
-  return std::make_unique<ChildHost>(argv, env);
+std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<std::string>& argv,
+                                                            const std::vector<std::string>& env) {
+  return std::make_unique<ChildPipeserver>(argv, env);
 }
 
-std::unique_ptr<HostProcess> remote_host_process(std::string place) {
-  return std::make_unique<RemoteHost>(std::move(place));
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place) {
+  return std::make_unique<RemotePipeserver>(std::move(place));
 }
 
 }  // namespace l2

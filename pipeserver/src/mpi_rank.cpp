@@ -1,4 +1,4 @@
-#include "mpi_host.hpp"
+#include "mpi_rank.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>
@@ -19,7 +19,7 @@ namespace {
 
 // The payload of every tile of `plan` on another column's displays: that column routes none of
 // it, so it travels black. What the column does read stays: every header (the router reads
-// each of a row) and the frame stamp, the first pixel of the first tile (host_set.hpp).
+// each of a row) and the frame stamp, the first pixel of the first tile (pipeserver_set.hpp).
 std::vector<BlankRect> other_columns_strips(const PipeserverPlan& plan, int column) {
   std::vector<BlankRect> out;
   for (std::size_t i = 0; i < plan.tiles.size(); ++i) {
@@ -44,7 +44,7 @@ CodecTo codec_to(std::optional<LinkCodec> asked, std::function<bool(int rank)> b
   };
 }
 
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
+MpiRankLinks mpi_rank_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
                             std::shared_ptr<SentBytes> bytes_sent, bool every_column) {
   const RankMap map = make_rank_map(layout, every_column);
   const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(pipeserver)];
@@ -58,7 +58,7 @@ MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, const Code
     columns.push_back(
         {rank, how, blank ? other_columns_strips(plan, c) : std::vector<BlankRect>{}});
   }
-  MpiHostLinks links;
+  MpiRankLinks links;
   links.link = std::make_unique<MpiDviSender>(std::move(columns), RankMap::kCoordinator,
                                               plan.fb_width, plan.fb_height, std::move(bytes_sent));
   links.channel =
@@ -141,7 +141,7 @@ void MpiTileSender::wait_swapped(std::uint32_t frame, std::chrono::milliseconds 
   }
 }
 
-void report_host_done(const SentBytes& frames, const SentBytes& tiles) {
+void report_rank_done(const SentBytes& frames, const SentBytes& tiles) {
   mpi_wire::send(
       {static_cast<std::int64_t>(frames.raw), static_cast<std::int64_t>(frames.wire),
        static_cast<std::int64_t>(frames.first_wire), static_cast<std::int64_t>(tiles.raw),

@@ -18,7 +18,7 @@
 
 namespace l2 {
 
-struct MpiHostLinks {
+struct MpiRankLinks {
   std::unique_ptr<DviSender> link;
   std::unique_ptr<ReadyChannel> channel;
 };
@@ -33,10 +33,10 @@ CodecTo codec_to(std::optional<LinkCodec> asked, std::function<bool(int rank)> b
 // encoded with `codec(rank)` for each column rank (frame_delta.hpp); `bytes_sent` counts their
 // bytes. `every_column`: a balanced run's, whose frames go whole to every board column
 // (make_rank_map).
-MpiHostLinks mpi_host_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
+MpiRankLinks mpi_rank_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
                             std::shared_ptr<SentBytes> bytes_sent, bool every_column = false);
 
-// The visualization-server path over MPI, host side: each tile to the board column owning its
+// The visualization-server path over MPI, pipeserver side: each tile to the board column owning its
 // display, the end of each frame to every column (with the number of tiles it sent that
 // column), SWAPPED from the coordinator.
 class MpiTileSender {
@@ -61,8 +61,8 @@ class MpiTileSender {
   std::shared_ptr<SentBytes> bytes_sent_;
 };
 
-// Tells the coordinator this host ended well, its report written (it reads the reports next),
+// Tells the coordinator this pipeserver ended well, its report written (it reads the reports next),
 // and how many bytes of frames (raw and on the wire) and of tiles it sent.
-void report_host_done(const SentBytes& frames, const SentBytes& tiles);
+void report_rank_done(const SentBytes& frames, const SentBytes& tiles);
 
 }  // namespace l2

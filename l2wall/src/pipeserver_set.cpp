@@ -1,4 +1,4 @@
-#include "l2wall/host_set.hpp"
+#include "l2wall/pipeserver_set.hpp"
 
 #include <fmt/format.h>
 
@@ -17,8 +17,8 @@ namespace {
 
 using std::chrono::milliseconds;
 
-int frames_reported(const std::string& host_log) {
-  std::ifstream in(host_log);
+int frames_reported(const std::string& pipeserver_log) {
+  std::ifstream in(pipeserver_log);
   int frames = 0;
   for (std::string line; std::getline(in, line);) frames += line.rfind("frame ", 0) == 0;
   return frames;
@@ -26,7 +26,7 @@ int frames_reported(const std::string& host_log) {
 
 }  // namespace
 
-std::vector<std::string> host_argv(const HostLaunch& l, const Host& h) {
+std::vector<std::string> pipeserver_argv(const PipeserverLaunch& l, const LivePipeserver& h) {
   std::vector<std::string> argv{l.program,         "--live",
                                 "--pipeserver",    std::to_string(h.pipeserver),
                                 "--frames",        std::to_string(l.frames),
@@ -64,9 +64,10 @@ StampSpot stamp_spot(const PipeserverPlan& plan) {
 }
 
 // The pipeserver's end gets a descriptor number on its command line; ours must not leak into
-// the other hosts, or a dead host's channel would never read as closed.
+// the other pipeservers, or a dead pipeserver's channel would never read as closed.
 // Returns the pipeserver's end, to be closed here once the process holds its copy.
-std::optional<SocketControlChannel> open_control(Host& h, std::vector<std::string>& argv) {
+std::optional<SocketControlChannel> open_control(LivePipeserver& h,
+                                                 std::vector<std::string>& argv) {
   auto [ours, theirs] = control_socket_pair();
   if (::fcntl(ours.fd(), F_SETFD, FD_CLOEXEC) != 0)
     throw std::runtime_error("control channel: fcntl(FD_CLOEXEC) failed");
@@ -80,46 +81,46 @@ std::optional<SocketControlChannel> open_control(Host& h, std::vector<std::strin
 
 // One entry a frame up to `from`, the frames between keeping the previous layout's spot: a
 // long run re-tiled at every frame then costs one entry a frame, not a fill to its end.
-void HostSet::place_stamps(const TileLayout& layout, int from) {
+void PipeserverSet::place_stamps(const TileLayout& layout, int from) {
   const auto at = static_cast<std::size_t>(std::max(from, 0));
-  for (std::size_t i = 0; i < hosts_.size(); ++i) {
-    Host& h = hosts_[i];
+  for (std::size_t i = 0; i < pipeservers_.size(); ++i) {
+    LivePipeserver& h = pipeservers_[i];
     const StampSpot before = h.stamps.empty() ? StampSpot{} : h.stamps.back();
     h.stamps.resize(at, before);
     h.stamps.push_back(stamp_spot(layout.pipeservers[i]));
   }
 }
 
-void HostSet::start(const HostLaunch& launch, const TileLayout& layout) {
+void PipeserverSet::start(const PipeserverLaunch& launch, const TileLayout& layout) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
   for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
-    // Joins the set once its process runs, so every host in it has one (the pty stays put: it
+    // Joins the set once its process runs, so every pipeserver in it has one (the pty stays put: it
     // is owned through a pointer).
-    Host h;
+    LivePipeserver h;
     h.pipeserver = static_cast<int>(i);
     h.link_name = dvi_link_name(fmt::format("in{}", i));
-    h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
+    h.report_path = (launch.out / fmt::format("pipeserver-{}.log", i)).string();
     std::filesystem::remove(h.report_path);
     h.pty = std::make_unique<PtyPair>(PtyPair::open());
     h.channel = std::make_unique<BackChannel>(h.pty->master());
-    std::vector<std::string> argv = host_argv(launch, h);
+    std::vector<std::string> argv = pipeserver_argv(launch, h);
     const auto theirs = launch.control ? open_control(h, argv) : std::nullopt;
-    h.process = child_host_process(argv, launch.env);
-    hosts_.push_back(std::move(h));
+    h.process = child_pipeserver_process(argv, launch.env);
+    pipeservers_.push_back(std::move(h));
   }
   place_stamps(layout, 0);
 }
 
-void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
-                     const std::function<RemoteEnd(int pipeserver)>& connect) {
+void PipeserverSet::attach(const PipeserverLaunch& launch, const TileLayout& layout,
+                           const std::function<RemoteEnd(int pipeserver)>& connect) {
   dvi_ = launch.dvi;
   frames_ = launch.frames;
   for (std::size_t i = 0; i < layout.pipeservers.size(); ++i) {
-    Host& h = hosts_.emplace_back();
+    LivePipeserver& h = pipeservers_.emplace_back();
     h.pipeserver = static_cast<int>(i);
     // Its own (it may have started writing it already).
-    h.report_path = (launch.out / fmt::format("host-{}.log", i)).string();
+    h.report_path = (launch.out / fmt::format("pipeserver-{}.log", i)).string();
     RemoteEnd end = connect(h.pipeserver);
     h.process = std::move(end.process);
     h.channel = std::move(end.channel);
@@ -128,41 +129,42 @@ void HostSet::attach(const HostLaunch& launch, const TileLayout& layout,
   place_stamps(layout, 0);
 }
 
-Host* HostSet::poll_ended() {
-  for (Host& h : serving()) {
+LivePipeserver* PipeserverSet::poll_ended() {
+  for (LivePipeserver& h : serving()) {
     if (!h.exit) h.exit = h.process->poll();
   }
-  for (Host& h : serving()) {
+  for (LivePipeserver& h : serving()) {
     if (h.exit && (!h.exit->ok() || delivered(h) < frames_)) return &h;
   }
   return nullptr;
 }
 
-Host* HostSet::killed_by_signal() {
+LivePipeserver* PipeserverSet::killed_by_signal() {
   poll_ended();
-  for (Host& h : serving()) {
-    // Only asked while the run has ended no host itself, so no signal here is ours.
+  for (LivePipeserver& h : serving()) {
+    // Only asked while the run has ended no pipeserver itself, so no signal here is ours.
     if (h.exit && h.exit->signal != 0) return &h;
   }
   return nullptr;
 }
 
-std::string HostSet::ended_how(const Host& h) const {
+std::string PipeserverSet::ended_how(const LivePipeserver& h) const {
   return fmt::format("pipeserver {} ({}) {} while rendering frame {}", h.pipeserver,
                      h.process->place(), h.exit ? h.exit->describe() : std::string("ended"),
                      delivered(h));
 }
 
-std::string HostSet::describe_end(const Host& h, const std::string& on_displays) const {
+std::string PipeserverSet::describe_end(const LivePipeserver& h,
+                                        const std::string& on_displays) const {
   return fmt::format("{}; {}", ended_how(h), on_displays);
 }
 
-void HostSet::open_links(milliseconds timeout, const std::function<void()>& check) {
+void PipeserverSet::open_links(milliseconds timeout, const std::function<void()>& check) {
   const auto deadline = RunClock::now() + timeout;
   for (;;) {
     check();
     bool all = true;
-    for (Host& h : hosts_) {
+    for (LivePipeserver& h : pipeservers_) {
       if (!h.reader) {
         try {
           h.reader = std::make_unique<DviLinkReader>(DviLinkReader::open(h.link_name));
@@ -173,11 +175,11 @@ void HostSet::open_links(milliseconds timeout, const std::function<void()>& chec
       if (!h.reader || !h.reader->latest()) all = false;
     }
     // The emulator starts once every link carries a signal: an input without one feeds no
-    // group, so a group would otherwise swap with only the hosts that happened to be first.
+    // group, so a group would otherwise swap with only the pipeservers that happened to be first.
     if (all) return;
     if (RunClock::now() > deadline) {
       std::string missing;
-      for (const Host& h : hosts_)
+      for (const LivePipeserver& h : pipeservers_)
         if (!h.reader || h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
@@ -186,10 +188,10 @@ void HostSet::open_links(milliseconds timeout, const std::function<void()>& chec
   }
 }
 
-bool HostSet::take_in(std::vector<InputFrame>& inputs) {
+bool PipeserverSet::take_in(std::vector<InputFrame>& inputs) {
   bool fresh = false;
-  for (std::size_t i = 0; i < hosts_.size(); ++i) {
-    Host& h = hosts_[i];
+  for (std::size_t i = 0; i < pipeservers_.size(); ++i) {
+    LivePipeserver& h = pipeservers_[i];
     if (h.lost) {
       // No signal: it feeds no group and holds none up. Losing the signal is news too: a
       // group it held up can complete now, even if no other link changes.
@@ -206,9 +208,9 @@ bool HostSet::take_in(std::vector<InputFrame>& inputs) {
   return fresh;
 }
 
-void HostSet::serve_channels() {
+void PipeserverSet::serve_channels() {
   if (!dvi_) return;
-  for (Host& h : serving()) {
+  for (LivePipeserver& h : serving()) {
     const auto& c = h.channel->counts();
     const auto asked = c.sync_answered + c.sync_unanswered;
     h.channel->serve(milliseconds(0));
@@ -219,10 +221,10 @@ void HostSet::serve_channels() {
   }
 }
 
-std::uint64_t HostSet::inject_noise() {
+std::uint64_t PipeserverSet::inject_noise() {
   static const char kNoise[] = "RE\x01\xffz9 READY 12 ZZ\r\nSYNC? 0\x7f\x80 R";
   std::uint64_t bytes = 0;
-  for (Host& h : hosts_) {
+  for (LivePipeserver& h : pipeservers_) {
     if (!h.pty) continue;  // no serial line to put noise on
     h.pty->master().write_some(std::span<const std::uint8_t>(
         reinterpret_cast<const std::uint8_t*>(kNoise), sizeof kNoise - 1));
@@ -231,13 +233,13 @@ std::uint64_t HostSet::inject_noise() {
   return bytes;
 }
 
-int HostSet::delivered(const Host& h) const {
+int PipeserverSet::delivered(const LivePipeserver& h) const {
   return dvi_ ? static_cast<int>(h.sequence) : frames_reported(h.report_path);
 }
 
-std::string HostSet::late_hosts(int shown) const {
+std::string PipeserverSet::late_pipeservers(int shown) const {
   std::string culprits;
-  for (const Host& h : serving()) {
+  for (const LivePipeserver& h : serving()) {
     if (delivered(h) < shown + 1)
       culprits += fmt::format("{}pipeserver {} ({})", culprits.empty() ? "" : ", ", h.pipeserver,
                               h.process->place());
@@ -245,10 +247,10 @@ std::string HostSet::late_hosts(int shown) const {
   return culprits;
 }
 
-const Host* HostSet::hung_host(int shown) {
+const LivePipeserver* PipeserverSet::hung_pipeserver(int shown) {
   poll_ended();
-  const Host* late = nullptr;
-  for (const Host& h : serving()) {
+  const LivePipeserver* late = nullptr;
+  for (const LivePipeserver& h : serving()) {
     if (h.exit || delivered(h) >= shown + 1) continue;
     if (h.process->stopped()) return &h;
     if (!late) late = &h;
@@ -256,16 +258,16 @@ const Host* HostSet::hung_host(int shown) {
   return late;
 }
 
-std::string HostSet::stopped_note(const Host& h) {
+std::string PipeserverSet::stopped_note(const LivePipeserver& h) {
   return h.process->stopped() ? " (stopped by a signal)" : "";
 }
 
-void HostSet::finish(milliseconds timeout) {
+void PipeserverSet::finish(milliseconds timeout) {
   const auto deadline = RunClock::now() + timeout;
   for (;;) {
     serve_channels();
     bool all = true;
-    for (Host& h : serving()) {
+    for (LivePipeserver& h : serving()) {
       if (!h.process->awaited()) continue;  // mpirun ends it
       if (!h.exit) h.exit = h.process->poll();
       if (!h.exit) {
@@ -281,14 +283,14 @@ void HostSet::finish(milliseconds timeout) {
   }
 }
 
-void HostSet::request_stop() {
-  for (Host& h : hosts_) {
+void PipeserverSet::request_stop() {
+  for (LivePipeserver& h : pipeservers_) {
     if (!h.exit) h.process->request_stop();
   }
 }
 
-void HostSet::shut_down() {
-  for (Host& h : hosts_) {
+void PipeserverSet::shut_down() {
+  for (LivePipeserver& h : pipeservers_) {
     if (!h.exit) h.exit = h.process->terminate(milliseconds(500));
     h.reader.reset();
     if (h.link_name.empty()) continue;  // none of ours

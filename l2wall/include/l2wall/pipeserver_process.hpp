@@ -1,10 +1,10 @@
 // The process end of one pipeserver of a run: a child process this run started, or an MPI rank
-// mpirun started on some machine. The host set asks it what it needs (has it ended, is it
+// mpirun started on some machine. The pipeserver set asks it what it needs (has it ended, is it
 // stopped, how to name it, end it) without knowing which it is.
 //
 // Example:
-//   std::unique_ptr<HostProcess> p = child_host_process({"pipeserver", "--live", ...}, {});
-//   if (const auto exit = p->poll(); exit && !exit->ok())
+//   std::unique_ptr<PipeserverProcess> p = child_pipeserver_process({"pipeserver", "--live", ...},
+//   {}); if (const auto exit = p->poll(); exit && !exit->ok())
 //     fmt::print("pipeserver 0 ({}) {}\n", p->place(), exit->describe());  // "(pid 4242) ..."
 #pragma once
 
@@ -18,9 +18,9 @@
 
 namespace l2 {
 
-class HostProcess {
+class PipeserverProcess {
  public:
-  virtual ~HostProcess() = default;
+  virtual ~PipeserverProcess() = default;
   // How messages name it: "pid 4242", or "rank 3 on node-a, pid 4242".
   virtual std::string place() const = 0;
   // Its exit status once it has ended; nullopt while it runs, and always for a process this
@@ -37,9 +37,9 @@ class HostProcess {
 };
 
 // A pipeserver process started here with `argv` and `env` ("NAME=value" added).
-std::unique_ptr<HostProcess> child_host_process(const std::vector<std::string>& argv,
-                                                const std::vector<std::string>& env);
+std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<std::string>& argv,
+                                                            const std::vector<std::string>& env);
 // A pipeserver another process started (an MPI rank), named by `place`.
-std::unique_ptr<HostProcess> remote_host_process(std::string place);
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place);
 
 }  // namespace l2
