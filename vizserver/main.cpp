@@ -1,4 +1,4 @@
-// vizserver: the compositing server of the visualization-server path (WireGL §4.2) as a
+// vizserver: the compositing server of the viz path (WireGL §4.2) as a
 // process. Pipeservers connect with TileSender, send their rendered tiles, and this writes
 // each composed frame's displays as PNG files.
 #include <fmt/format.h>
@@ -111,7 +111,7 @@ struct QueueCloser {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "vizserver: compositing server of the visualization-server path (WireGL 4.2).\n"
+      "vizserver: compositing server of the viz path (WireGL 4.2).\n"
       "Pipeservers connect over TCP (docs/vizserver-protocol.md), send the tiles they rendered "
       "and FRAME_DONE; when every pipeserver has finished a frame it is composed (higher "
       "pipeserver wins where tiles overlap, black background), written as "

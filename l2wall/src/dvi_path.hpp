@@ -1,11 +1,11 @@
-// The DVI path as a display path (display_path.hpp): this process is the Lightning-2 (DviSide),
-// paced by the refresh clock; it takes in every pipeserver's DVI link, refreshes, and sends READY
-// in the refresh a frame completed (spec §6.4).
+// The DVI path as a display path (display_path.hpp): this process is the Lightning-2
+// (LocalLightning2), paced by the refresh clock; it takes in every pipeserver's DVI link,
+// refreshes, and sends READY in the refresh a frame completed (spec §6.4).
 #pragma once
 
 #include "dvi_link/refresh_clock.hpp"
 #include "l2wall/display_path.hpp"
-#include "l2wall/dvi_side.hpp"
+#include "l2wall/local_lightning2.hpp"
 
 namespace l2 {
 
@@ -44,7 +44,7 @@ class DviPath final : public DisplayPath {
     return [this](int id) -> const RgbImage& { return side_.shown(id); };
   }
 
-  DviSide side_;
+  LocalLightning2 side_;
   RefreshClock clock_;
   double refresh_hz_;
   int frames_;

@@ -1,7 +1,7 @@
 // `l2wall golden check`: reproduces every golden entry and compares, for each display,
 //   the emulator's display with the golden image: exactly (within the entry's tolerance when a
 //     rendered entry's images were made by another GL implementation, which it says);
-//   the visualization-server path's display with the emulator's: exactly;
+//   the viz path's display with the emulator's: exactly;
 //   the emulator's display with the reference (test pattern or reference render): within the
 //     entry's tolerance.
 // A mismatch writes the actual image and a diff picture to OUT/<entry>/ and prints one summary

@@ -38,7 +38,7 @@ struct GoldenEntry {
   std::string wall;                     // wall file, relative to the repository root
   std::string scene;                    // kTestPatternScene or a pipeserver scene
   int frame = 0;                        // application frame (its parity goes into the headers)
-  bool vizserver = true;                // also run the visualization-server path (DVI always runs)
+  bool vizserver = true;                // also run the viz path (DVI always runs)
   Tolerance tolerance;                  // reassembled against the reference; golden on another GL
   std::string mesa;                     // rendered: the Mesa release that made the images ...
   std::string gl_version, gl_renderer;  // ... and how GL named itself then

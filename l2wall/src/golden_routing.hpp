@@ -1,6 +1,6 @@
 // The displays of one golden entry's frame, produced in this process from scanned-out frames:
 // through the emulated Lightning-2 (the DVI path) and through a compositing server on loopback
-// TCP (the visualization-server path), plus what every display should show.
+// TCP (the viz path), plus what every display should show.
 #pragma once
 
 #include <filesystem>

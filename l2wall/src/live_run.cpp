@@ -34,7 +34,7 @@
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
-#include "viz_side.hpp"
+#include "vizserver_process.hpp"
 
 namespace l2 {
 namespace {

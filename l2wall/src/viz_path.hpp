@@ -1,18 +1,18 @@
-// The visualization-server path as a display path (display_path.hpp): the compositing server
-// process (VizSide) composes the pipeservers' tiles; its swaps are the frames of this path, and the
-// pipeservers wait for its SWAPPED instead of READY.
+// The viz path as a display path (display_path.hpp): the compositing server
+// process (VizserverProcess) composes the pipeservers' tiles; its swaps are the frames of this
+// path, and the pipeservers wait for its SWAPPED instead of READY.
 #pragma once
 
 #include <memory>
 
 #include "l2wall/display_path.hpp"
-#include "viz_side.hpp"
+#include "vizserver_process.hpp"
 
 namespace l2 {
 
 class VizPath final : public DisplayPath {
  public:
-  explicit VizPath(const VizLaunch& launch) : side_(std::make_unique<VizSide>(launch)) {}
+  explicit VizPath(const VizLaunch& launch) : side_(std::make_unique<VizserverProcess>(launch)) {}
 
   std::string label() const override { return "vizserver"; }
   std::string name() const override { return "vizserver path"; }
@@ -61,7 +61,7 @@ class VizPath final : public DisplayPath {
     return [f](int id) -> const RgbImage& { return f->displays.at(static_cast<std::size_t>(id)); };
   }
 
-  std::unique_ptr<VizSide> side_;
+  std::unique_ptr<VizserverProcess> side_;
   LiveBalance* balance_ = nullptr;  // a balanced run's coordinator, and its pipeservers
   PipeserverSet* pipeservers_ = nullptr;
 };

@@ -64,7 +64,7 @@ struct Report {
   }
 };
 
-// The visualization-server path: every tile of the frame, read back from the framebuffer, goes
+// The viz path: every tile of the frame, read back from the framebuffer, goes
 // to the compositing server over TCP.
 void send_tiles(TileSink& sender, FramePixels fb, const PipeserverPlan& plan, int frame) {
   for (const PackedTile& t : plan.tiles) {

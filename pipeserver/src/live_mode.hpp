@@ -21,7 +21,7 @@
 
 namespace l2 {
 
-// Where a pipeserver's tiles go on the visualization-server path: a compositing server over TCP
+// Where a pipeserver's tiles go on the viz path: a compositing server over TCP
 // (viz::TileSender), or the board columns owning their displays over MPI.
 class TileSink {
  public:
@@ -60,7 +60,7 @@ struct LiveLinks {
   std::shared_ptr<void> keeps;  // what the two use, so it outlives them (the serial port)
   std::unique_ptr<DviSender> link;
   std::unique_ptr<ReadyChannel> channel;
-  std::unique_ptr<TileSink> tiles;  // the visualization-server path over MPI; else --viz
+  std::unique_ptr<TileSink> tiles;  // the viz path over MPI; else --viz
 };
 using MakeLiveLinks =
     std::function<LiveLinks(const TileLayout& layout, const PipeserverPlan& plan)>;

@@ -36,7 +36,7 @@ CodecTo codec_to(std::optional<LinkCodec> asked, std::function<bool(int rank)> b
 MpiRankLinks mpi_rank_links(const TileLayout& layout, int pipeserver, const CodecTo& codec,
                             std::shared_ptr<SentBytes> bytes_sent, bool every_column = false);
 
-// The visualization-server path over MPI, pipeserver side: each tile to the board column owning its
+// The viz path over MPI, pipeserver side: each tile to the board column owning its
 // display, the end of each frame to every column (with the number of tiles it sent that
 // column), SWAPPED from the coordinator.
 class MpiTileSender {

@@ -208,7 +208,7 @@ int run_pipeserver(int argc, char** argv) {
   bool mpi_viz = false;
   group->add_flag("--mpi-viz", mpi_viz,
                   "live, with --mpi: also send every tile to the board column rank owning its "
-                  "display (the visualization-server path over MPI), waiting for SWAPPED from "
+                  "display (the viz path over MPI), waiting for SWAPPED from "
                   "the coordinator");
   bool mpi_control = false;
   group->add_flag("--mpi-control", mpi_control,

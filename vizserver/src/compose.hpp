@@ -1,4 +1,4 @@
-// Writing a received tile into a display image: the visualization server's equivalent of the
+// Writing a received tile into a display image: the compositing server's equivalent of the
 // emulator's COPY, KEY and DEPTH strips (spec §3, §5, §7). A tile of h rows is h strips, so errors
 // are counted per row exactly as the emulator counts them per strip: a row landing partly or wholly
 // outside its display is one clip, a row for a display that does not exist is one missing_display.

@@ -26,7 +26,7 @@ enum Tag : int {
   kControl = 12,     // pipeserver <-> coordinator: a balanced run's TIMES and LAYOUT lines
 };
 
-// The visualization-server path over MPI: a tile (kind 1, to the column owning its display)
+// The viz path over MPI: a tile (kind 1, to the column owning its display)
 // or the end of a pipeserver's frame (kind 2, to every column), one tag, so they keep order.
 struct TileMessage {
   std::int32_t kind = 0;

@@ -1,6 +1,6 @@
 // A display path of the live run: how the pipeservers' frames become what the displays show.
 // Two implementations sit beside each other: the DVI path (dvi_path.hpp: this process is the
-// emulated Lightning-2) and the visualization-server path (viz_path.hpp: a compositing server
+// emulated Lightning-2) and the viz path (viz_path.hpp: a compositing server
 // process). The live run drives one path as the lead, whose swaps are the run's frames, and
 // with --path both a second one beside it, whose frames it takes and compares; it talks to
 // this interface only.

@@ -91,7 +91,7 @@ class PipeserverSet {
   };
   // Pipeservers this process did not start (MPI ranks, mpi/): no link reader here; `connect` gives
   // each one's ends. Their links are taken in elsewhere, and the path that does records
-  // Pipeserver::sequence.
+  // LivePipeserver::sequence.
   void attach(const PipeserverLaunch& launch, const TileLayout& layout,
               const std::function<RemoteEnd(int pipeserver)>& connect);
 

@@ -13,7 +13,7 @@
 
 namespace l2 {
 
-struct VizLaunch;  // viz_side.hpp
+struct VizLaunch;  // vizserver_process.hpp
 
 class RunBackends {
  public:

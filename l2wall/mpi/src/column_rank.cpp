@@ -293,7 +293,7 @@ class Column {
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
   std::vector<DisplayFrameStats> finished_;
-  std::optional<viz::FrameAssembler> assembler_;             // the visualization-server path
+  std::optional<viz::FrameAssembler> assembler_;             // the viz path
   std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
   std::vector<std::uint8_t> tile_bytes_;
   std::map<int, viz::TileDeltaDecoder> tile_deltas_;  // by pipeserver: its TILE_DELTA tiles

@@ -13,8 +13,8 @@
 #include "cluster/mpi_dvi_link.hpp"
 #include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
-#include "l2wall/dvi_side.hpp"
 #include "l2wall/live_balance.hpp"
+#include "l2wall/local_lightning2.hpp"
 #include "l2wall/run_fault.hpp"
 
 namespace l2 {
@@ -181,7 +181,7 @@ void MpiDviPath::refresh(PipeserverSet& pipeservers) {
       displays_shown_.push_back(d);
     }
   }
-  // As on one machine (DviSide::frame_shown): the last frame if its stamp says so, else the
+  // As on one machine (LocalLightning2::frame_shown): the last frame if its stamp says so, else the
   // one before if its stamp says so, else what the last frame's spot shows. Pipeservers on no
   // answering column stay INT_MAX.
   for (std::size_t i = 0; i < stamp_shown_.size(); ++i) {

@@ -1,4 +1,4 @@
-// The visualization-server path over MPI ranks, on the coordinator (display_path.hpp): the
+// The viz path over MPI ranks, on the coordinator (display_path.hpp): the
 // pipeservers send their tiles to the board column owning each display, and every column
 // composites its displays (distributed compositing, the compositing server's rules). Once every
 // column has composed a frame, SWAPPED goes to the pipeservers. Runs beside the DVI path (--path

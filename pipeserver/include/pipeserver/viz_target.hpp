@@ -1,4 +1,4 @@
-// Where a packed tile goes on the visualization-server path (docs/vizserver-protocol.md):
+// Where a packed tile goes on the viz path (docs/vizserver-protocol.md):
 // its display rectangle and how it is composited. Header-only, for the users that link the
 // vizserver library (the live pipeserver, l2wall's golden images).
 #pragma once

@@ -1,4 +1,4 @@
-// Plain POSIX TCP at the edge of the visualization server (descriptors owned by l2::Fd): listen and
+// Plain POSIX TCP at the edge of the compositing server (descriptors owned by l2::Fd): listen and
 // connect with bounded waits, and send/receive loops that survive partial transfers and EINTR.
 // Sockets are non-blocking throughout; "blocking" calls here wait in poll() up to a deadline,
 // so no call can hang on a dead or silent peer.

@@ -1,4 +1,4 @@
-// The pipeserver's end of the visualization-server path (WireGL §4.2): after rendering, send
+// The pipeserver's end of the viz path (WireGL §4.2): after rendering, send
 // each tile's pixels straight from the framebuffer to the compositing server, say when the
 // frame is complete, and wait for the server's SWAPPED to pace the next frame.
 #pragma once

@@ -1,4 +1,4 @@
-// The visualization-server wire format (docs/vizserver-protocol.md): what pipeservers and the
+// The viz path's wire format (docs/vizserver-protocol.md): what pipeservers and the
 // compositing server say to each other over TCP. Pure encoding and validation, no I/O, so every
 // rule about what a peer may send is tested without sockets.
 //

@@ -1,4 +1,4 @@
-// The compositing server of the visualization-server path (WireGL §4.2): accepts the
+// The compositing server of the viz path (WireGL §4.2): accepts the
 // pipeservers, collects their tiles per frame, composes each frame into one image per display
 // (FrameAssembler: spec §5 overlap rule, black background) and "swaps" it when every
 // pipeserver has finished it, then sends SWAPPED to every pipeserver.

@@ -1,4 +1,4 @@
-#include "viz_side.hpp"
+#include "vizserver_process.hpp"
 
 #include <fmt/format.h>
 
@@ -30,7 +30,8 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
 
 }  // namespace
 
-VizSide::VizSide(const VizLaunch& launch) : host_(launch.host), token_(viz::new_run_token()) {
+VizserverProcess::VizserverProcess(const VizLaunch& launch)
+    : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
   const Fd listener = viz::listen_tcp("127.0.0.1", 0);
   process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())),
@@ -38,19 +39,19 @@ VizSide::VizSide(const VizLaunch& launch) : host_(launch.host), token_(viz::new_
   accept_stream(listener, launch);
 }
 
-std::string VizSide::token_variable() const {
+std::string VizserverProcess::token_variable() const {
   return fmt::format("{}={}", viz::kTokenVariable, viz::token_text(token_));
 }
 
-std::string VizSide::name() const {
+std::string VizserverProcess::name() const {
   return fmt::format("compositing server (vizserver pid {})", pid());
 }
 
-VizSide::~VizSide() {
+VizserverProcess::~VizserverProcess() {
   shut_down();
 }
 
-void VizSide::accept_stream(const Fd& listener, const VizLaunch& launch) {
+void VizserverProcess::accept_stream(const Fd& listener, const VizLaunch& launch) {
   const std::string who = name();
   const auto deadline = RunClock::now() + launch.start_timeout;
   Fd stream;
@@ -81,12 +82,12 @@ void VizSide::accept_stream(const Fd& listener, const VizLaunch& launch) {
                                                    kHeldFrames);
 }
 
-std::string VizSide::address() const {
+std::string VizserverProcess::address() const {
   const std::string host = host_ == "0.0.0.0" ? "127.0.0.1" : host_ == "::" ? "::1" : host_;
   return fmt::format("{}:{}", host, port_);
 }
 
-viz::FramePtr VizSide::frame(int frame, milliseconds timeout) {
+viz::FramePtr VizserverProcess::frame(int frame, milliseconds timeout) {
   if (last_ && last_->frame == static_cast<std::uint32_t>(frame)) return last_;
   if (stream_error_ || !watcher_) return nullptr;
   try {
@@ -99,13 +100,13 @@ viz::FramePtr VizSide::frame(int frame, milliseconds timeout) {
   }
 }
 
-bool VizSide::down() {
+bool VizserverProcess::down() {
   if (!exit_ && process_) exit_ = process_->poll();
   // A server that exits 0 has sent every frame: they are still ours to take.
   return stream_error_.has_value() || (exit_ && !exit_->ok());
 }
 
-void VizSide::settle(milliseconds grace) {
+void VizserverProcess::settle(milliseconds grace) {
   // Its stream ended: the process is gone or going, give the kernel a moment to say how.
   const bool going = stream_error_ || (watcher_ && !watcher_->ended().ok());
   const auto deadline = RunClock::now() + (going ? grace : grace / 3);
@@ -115,12 +116,12 @@ void VizSide::settle(milliseconds grace) {
   }
 }
 
-bool VizSide::said_why() const {
+bool VizserverProcess::said_why() const {
   return exit_ && exit_->signal == 0 && exit_->code != 0 && watcher_ &&
          watcher_->ended_with_error_message();
 }
 
-std::string VizSide::describe_down(int shown, const std::string& on_displays) const {
+std::string VizserverProcess::describe_down(int shown, const std::string& on_displays) const {
   const std::string who = name();
   if (said_why()) {
     return fmt::format("{} failed at frame {}: {}; {}", who, shown, watcher_->ended().reason(),
@@ -133,7 +134,7 @@ std::string VizSide::describe_down(int shown, const std::string& on_displays) co
                      stream_error_.value_or("display stream ended"), on_displays);
 }
 
-void VizSide::finish(milliseconds timeout) {
+void VizserverProcess::finish(milliseconds timeout) {
   const std::string who = name();
   if (!exit_) exit_ = process_->wait_for(timeout);
   if (!exit_) throw RunFault(who + " did not end after the last frame");
@@ -141,7 +142,7 @@ void VizSide::finish(milliseconds timeout) {
     throw RunFault(fmt::format("{} {} after the last frame", who, exit_->describe()));
 }
 
-void VizSide::shut_down() {
+void VizserverProcess::shut_down() {
   if (process_ && !exit_) exit_ = process_->terminate(milliseconds(500));
   watcher_.reset();  // after the process: its stream has ended, the reader returns at once
 }

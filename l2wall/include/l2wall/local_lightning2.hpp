@@ -17,7 +17,7 @@ namespace l2 {
 
 // The parts of a refresh every Lightning-2 of a live run shares, in one process or over MPI
 // ranks (cluster/): for each pipeserver whose frame is new in refresh `refresh`, its frame stamp
-// (`stamp(i)` for pipeserver i) becomes Pipeserver::accepted and that frame's record gets the
+// (`stamp(i)` for pipeserver i) becomes LivePipeserver::accepted and that frame's record gets the
 // refresh and the route time (once per frame). Throws RunFault for a stamp outside 0..frames-1.
 void record_new_frames(PipeserverSet& pipeservers, std::vector<FrameRecord>& records,
                        std::span<const FrameKind> kinds,
@@ -28,15 +28,15 @@ void record_new_frames(PipeserverSet& pipeservers, std::vector<FrameRecord>& rec
 // were held back.
 int send_readies(std::span<const int> ready_inputs, PipeserverSet& pipeservers, int drop_ready);
 
-class DviSide {
+class LocalLightning2 {
  public:
-  DviSide(const Wall& wall, int threads, std::size_t pipeservers);
+  LocalLightning2(const Wall& wall, int threads, std::size_t pipeservers);
 
   // Takes in every link; true when some link has a frame not seen before.
   bool take_in(PipeserverSet& pipeservers) { return pipeservers.take_in(inputs_); }
   // One refresh: routes what was taken in, and records for each pipeserver's new input the frame
-  // its stamp says (Pipeserver::accepted, the record's refresh and route time). Throws RunFault for
-  // a stamp outside 0..frames-1.
+  // its stamp says (LivePipeserver::accepted, the record's refresh and route time). Throws RunFault
+  // for a stamp outside 0..frames-1.
   const Emulator::Tick& refresh(PipeserverSet& pipeservers, std::vector<FrameRecord>& records);
   // The lowest frame the displays show, read from every pipeserver's stamp on them: measured, not
   // assumed.

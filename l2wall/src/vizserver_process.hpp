@@ -32,15 +32,15 @@ struct VizLaunch {
   std::filesystem::path log;                       // its listening and per-swap lines
 };
 
-class VizSide {
+class VizserverProcess {
  public:
   // Starts the compositing server and waits (up to start_timeout, watching the process) until
   // it says which port it listens on. Throws RunFault: it did not start, died, or could not
   // listen (its reason).
-  explicit VizSide(const VizLaunch& launch);
-  ~VizSide();  // shut_down()
-  VizSide(const VizSide&) = delete;
-  VizSide& operator=(const VizSide&) = delete;
+  explicit VizserverProcess(const VizLaunch& launch);
+  ~VizserverProcess();  // shut_down()
+  VizserverProcess(const VizserverProcess&) = delete;
+  VizserverProcess& operator=(const VizserverProcess&) = delete;
 
   // HOST:PORT for the pipeservers (127.0.0.1 when it listens on every interface).
   std::string address() const;

@@ -1,4 +1,4 @@
-#include "l2wall/dvi_side.hpp"
+#include "l2wall/local_lightning2.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
 
 #include <fmt/format.h>
@@ -10,7 +10,7 @@
 #include "l2wall/run_fault.hpp"
 
 namespace l2 {
-DviSide::DviSide(const Wall& wall, int threads, std::size_t pipeservers)
+LocalLightning2::LocalLightning2(const Wall& wall, int threads, std::size_t pipeservers)
     : emulator_(emulator_config(wall, threads)), inputs_(pipeservers) {}
 
 void record_new_frames(PipeserverSet& pipeservers, std::vector<FrameRecord>& records,
@@ -50,8 +50,8 @@ int send_readies(std::span<const int> ready_inputs, PipeserverSet& pipeservers, 
   return held;
 }
 
-const Emulator::Tick& DviSide::refresh(PipeserverSet& pipeservers,
-                                       std::vector<FrameRecord>& records) {
+const Emulator::Tick& LocalLightning2::refresh(PipeserverSet& pipeservers,
+                                               std::vector<FrameRecord>& records) {
   const auto t0 = RunClock::now();
   const Emulator::Tick& tick = emulator_.tick(inputs_);
   const double route_ms = ms_between(t0, RunClock::now());
@@ -69,7 +69,7 @@ const Emulator::Tick& DviSide::refresh(PipeserverSet& pipeservers,
   return tick;
 }
 
-int DviSide::frame_shown(const LivePipeserver& h) const {
+int LocalLightning2::frame_shown(const LivePipeserver& h) const {
   // The displays show the frame the pipeserver delivered last, or (its next one taken in during the
   // swap's refresh) the one before; a balanced run may have moved the stamp between them.
   const auto read = [&](int frame) {
@@ -82,13 +82,14 @@ int DviSide::frame_shown(const LivePipeserver& h) const {
   return read(h.accepted);
 }
 
-int DviSide::lowest_frame_shown(const PipeserverSet& pipeservers) const {
+int LocalLightning2::lowest_frame_shown(const PipeserverSet& pipeservers) const {
   int lowest = 1 << 30;
   for (const LivePipeserver& h : pipeservers.serving()) lowest = std::min(lowest, frame_shown(h));
   return lowest;
 }
 
-int DviSide::send_readies(const Emulator::Tick& tick, PipeserverSet& pipeservers, int drop_ready) {
+int LocalLightning2::send_readies(const Emulator::Tick& tick, PipeserverSet& pipeservers,
+                                  int drop_ready) {
   return l2::send_readies(tick.ready_inputs, pipeservers, drop_ready);
 }
 
