@@ -1,4 +1,4 @@
-// l2wall: the command that runs a Lightning-2 wall on one machine.
+// l2wall: the command that runs a Lightning-2 wall, on one machine or over MPI ranks (--mpi).
 
 #include <csignal>
 #include <cstdio>
@@ -65,10 +65,11 @@ int run_over_mpi(const l2::RunOptions& o) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "l2wall: a Lightning-2 wall on one machine. `l2wall run` starts one pipeserver process per\n"
+      "l2wall: a Lightning-2 wall. `l2wall run` starts one pipeserver process per\n"
       "input of the wall and emulates the Lightning-2 mesh in this process: the pipeservers'\n"
       "scanned-out frames travel through POSIX shared memory (the DVI links), READY goes back\n"
-      "over one pty per pipeserver (the serial back-channels)."};
+      "over one pty per pipeserver (the serial back-channels). With --mpi (under mpirun) the\n"
+      "same wall runs over MPI ranks on several machines (docs/mpi-design.md)."};
   app.require_subcommand(1);
   l2::RunOptions o;
   o.pipeserver_program = l2::sibling_program("pipeserver").string();
@@ -113,7 +114,7 @@ int main(int argc, char** argv) {
                   "re-tile live from the last frame's render times, over the wall file's "
                   "[balance] mode: static (the wall's tiling), strips (horizontal strips with "
                   "vertical sub-strips moving toward equal load) or kd (the k-d tiling re-cut "
-                  "over a cost grid); on every --path, not with --mpi (docs/wall-file.md)")
+                  "over a cost grid); on every --path, also with --mpi (docs/wall-file.md)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
                                                      std::end(l2::kBalanceModeNames))));
   run->add_flag("--survive-host-loss", o.survive_host_loss,

@@ -3,7 +3,8 @@
 # for SECONDS seconds from its seed corpus (fuzz/corpus/<harness>), then prints per harness the
 # executions, their rate, and libFuzzer's coverage figures (cov: code edges, ft: features) from
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
-# broke a promise; the input that did it is saved in build/fuzz/artifacts/<harness>/.
+# broke a promise; the input that did it is saved in build/fuzz/runs/<harness>/artifacts/
+# (under FUZZ_OUT instead of build/fuzz/runs when set).
 # Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all six)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound).
