@@ -24,7 +24,61 @@ std::string refused_strips(const InputCheck& input) {
     parts.push_back(
         fmt::format("{} pixels sent to displays the wall does not have", input.to_absent_display));
   }
+  std::vector<std::string> places;
+  for (const RefusedAt& r : input.refused)
+    places.push_back(fmt::format("row {} column {} ({})", r.row, r.column, r.why));
+  if (places.size() > 3) places.resize(3);
+  if (!places.empty())
+    parts.push_back(fmt::format("refused at {}{}", fmt::join(places, ", "),
+                                input.refused.size() > places.size() ? ", ..." : ""));
   return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+std::string fields(const std::optional<StripHeader>& h) {
+  if (!h) return "nothing";
+  return fmt::format("d={} x={} y={} w={}", h->display, h->x, h->y, h->width);
+}
+
+// The lines of an input that is not as its pipeserver's plan says: another size, crossed
+// cables or other strips, a torn frame.
+void plan_lines(const InputCheck& i, std::vector<std::string>& lines) {
+  if (i.size_differs()) {
+    lines.push_back(
+        fmt::format("input {}: frame {}x{}, but pipeserver {}'s framebuffer is {}x{} (a frame of "
+                    "another wall?)",
+                    i.input, i.width, i.height, i.input, i.planned_width, i.planned_height));
+  }
+  if (i.carries) {
+    lines.push_back(fmt::format(
+        "input {} carries pipeserver {}'s frame, not its own: a crossed cable (on a Lightning-2 "
+        "READY goes to the wrong pipeserver, and the bus order changes where strips overlap)",
+        i.input, *i.carries));
+  } else if (i.not_as_planned != 0 && i.first_difference) {
+    const StripDifference& d = *i.first_difference;
+    lines.push_back(fmt::format(
+        "input {}: {} strip{} not as planned for pipeserver {}, first at row {} column {}: found "
+        "{}, planned {}",
+        i.input, i.not_as_planned, i.not_as_planned == 1 ? "" : "s", i.input, d.row, d.column,
+        fields(d.found), fields(d.planned)));
+  }
+  if (i.parity == kMixedParity) {
+    lines.push_back(fmt::format(
+        "input {}: rows of both frame parities, a torn frame (spec §6: a frame has one)", i.input));
+  }
+}
+
+// "f=0 on inputs 0, 2; f=1 on input 1".
+std::string parities(const RoutingCheck& check) {
+  std::vector<std::string> parts;
+  for (const int p : {0, 1}) {
+    std::vector<int> on;
+    for (const InputCheck& i : check.inputs)
+      if (i.parity == p) on.push_back(i.input);
+    if (!on.empty())
+      parts.push_back(
+          fmt::format("f={} on input{} {}", p, on.size() == 1 ? "" : "s", fmt::join(on, ", ")));
+  }
+  return fmt::format("{}", fmt::join(parts, "; "));
 }
 
 std::string frames_line(const RoutingCheck& check) {
@@ -69,7 +123,14 @@ std::vector<std::string> check_report(const RoutingCheck& check, int max_runs) {
   std::vector<std::string> lines;
   for (const DisplayCheck& d : check.displays) lines.push_back(display_summary(d));
   for (const InputCheck& i : check.inputs) {
-    if (!i.clean()) lines.push_back(fmt::format("input {}: {}", i.input, refused_strips(i)));
+    if (i.refused_strips())
+      lines.push_back(fmt::format("input {}: {}", i.input, refused_strips(i)));
+    plan_lines(i, lines);
+  }
+  if (check.parity_differs) {
+    lines.push_back(fmt::format(
+        "frame parity differs between inputs: {} (spec §6: the frames routed together carry one)",
+        parities(check)));
   }
   if (static_cast<int>(check.inputs.size()) != check.planned_inputs) {
     lines.push_back(frames_line(check));
@@ -83,15 +144,22 @@ std::vector<std::string> check_report(const RoutingCheck& check, int max_runs) {
   const auto wrong = std::count_if(check.displays.begin(), check.displays.end(),
                                    [](const DisplayCheck& d) { return !d.clean(); });
   const auto refused = std::count_if(check.inputs.begin(), check.inputs.end(),
-                                     [](const InputCheck& i) { return !i.clean(); });
+                                     [](const InputCheck& i) { return i.refused_strips(); });
+  const auto unplanned = std::count_if(check.inputs.begin(), check.inputs.end(),
+                                       [](const InputCheck& i) { return !i.as_planned(); });
+  const auto torn = std::count_if(check.inputs.begin(), check.inputs.end(),
+                                  [](const InputCheck& i) { return i.parity == kMixedParity; });
   if (check.clean()) {
     lines.push_back(fmt::format("routing right: every planned pixel in place on {} display{}",
                                 check.displays.size(), check.displays.size() == 1 ? "" : "s"));
   } else {
-    lines.push_back(
-        fmt::format("routing wrong: {} of {} displays wrong, {} inputs with refused "
-                    "strips",
-                    wrong, check.displays.size(), refused));
+    std::string verdict =
+        fmt::format("routing wrong: {} of {} displays wrong, {} inputs with refused strips", wrong,
+                    check.displays.size(), refused);
+    if (unplanned != 0) verdict += fmt::format(", {} not as planned", unplanned);
+    if (torn != 0) verdict += fmt::format(", {} torn", torn);
+    if (check.parity_differs) verdict += ", frame parity differs";
+    lines.push_back(verdict);
   }
   return lines;
 }

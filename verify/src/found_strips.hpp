@@ -23,7 +23,8 @@ struct FoundStrip {
 };
 
 // COPY, KEY and DEPTH strips of every frame in priority order (inputs ascending, rows top to
-// bottom, left to right); fills `inputs` with one InputCheck per frame (strip and error counts).
+// bottom, left to right); fills `inputs` with one InputCheck per frame (strip and error counts,
+// where the first refusals were, the frame's size and parity).
 std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
                                     std::vector<InputCheck>& inputs);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "found_strips.hpp"
+#include "plan_match.hpp"
 #include "tilelayout/test_pattern.hpp"
 
 namespace l2 {
@@ -199,7 +200,8 @@ void classify_display(const TileLayout& layout, std::span<const RgbImage> frames
 bool RoutingCheck::clean() const {
   return std::all_of(displays.begin(), displays.end(),
                      [](const DisplayCheck& d) { return d.clean(); }) &&
-         std::all_of(inputs.begin(), inputs.end(), [](const InputCheck& i) { return i.clean(); });
+         std::all_of(inputs.begin(), inputs.end(), [](const InputCheck& i) { return i.clean(); }) &&
+         !parity_differs;
 }
 
 RoutingCheck check_routing(const TileLayout& layout, std::span<const RgbImage> frames,
@@ -207,6 +209,14 @@ RoutingCheck check_routing(const TileLayout& layout, std::span<const RgbImage> f
   RoutingCheck check;
   check.planned_inputs = static_cast<int>(layout.pipeservers.size());
   const std::vector<FoundStrip> strips = verify_detail::find_strips(frames, check.inputs);
+  verify_detail::match_plans(layout, strips, check.inputs);
+  // Spec §6: the frames routed together are one application frame, so one parity.
+  int parity = kNoParity;
+  for (const InputCheck& i : check.inputs) {
+    if (i.parity == kNoParity || i.parity == kMixedParity) continue;
+    if (parity != kNoParity && parity != i.parity) check.parity_differs = true;
+    parity = i.parity;
+  }
   for (const Display& d : layout.wall.displays) {
     DisplayCheck display;
     display.display = d.id;

@@ -75,6 +75,8 @@ TEST(RoutingCheck, SwappedHeaders) {
                 "misplaced; 0 written twice, 0 behind mullions",
                 "display 1 (64x32) wrong: 2048 planned pixels: 2016 right, 0 missing, 32 "
                 "misplaced; 0 written twice, 0 behind mullions",
+                "input 0: 2 strips not as planned for pipeserver 0, first at row 5 column 2: "
+                "found d=1 x=0 y=5 w=32, planned d=0 x=0 y=5 w=32",
                 "misplaced runs: 2",
                 "  input 0 row 5 from column 36 (header " + hex(to_display_0) +
                     " COPY f=0 d=0 x=0 y=5 w=32): 32x1 pixels landed on display 0 at 0,5, "
@@ -82,7 +84,8 @@ TEST(RoutingCheck, SwappedHeaders) {
                 "  input 0 row 5 from column 2 (header " + hex(to_display_1) +
                     " COPY f=0 d=1 x=0 y=5 w=32): 32x1 pixels landed on display 1 at 0,5, "
                     "belong on display 0 at 0,5",
-                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips"}));
+                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned"}));
 }
 
 TEST(RoutingCheck, HeaderOffByOneRow) {
@@ -99,12 +102,15 @@ TEST(RoutingCheck, HeaderOffByOneRow) {
                 "misplaced; 0 written twice, 32 behind mullions",
                 "display 1 (64x32) right: 2048 planned pixels: 2048 right, 0 missing, 0 "
                 "misplaced; 0 written twice, 0 behind mullions",
+                "input 1: 32 strips not as planned for pipeserver 1, first at row 0 column 2: "
+                "found d=0 x=32 y=1 w=32, planned d=0 x=32 y=0 w=32",
                 "misplaced runs: 1",
                 "  input 1 rows 0-30 from column 2 (header " +
                     hex(StripHeader::copy(false, 0, 32, 1, 32)) +
                     " COPY f=0 d=0 x=32 y=1 w=32): 32x31 pixels landed on display 0 at 32,1, "
                     "belong on display 0 at 32,0",
-                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips"}));
+                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned"}));
   ASSERT_EQ(check.mullion_runs.size(), 1u);
   EXPECT_EQ(check.mullion_runs[0].start, (DisplayPoint{0, 32, 32}));
   EXPECT_EQ(check.mullion_runs[0].width, 32);
@@ -122,12 +128,15 @@ TEST(RoutingCheck, TileDrawnIntoWrongDisplay) {
                 "misplaced; 1024 written twice, 0 behind mullions",
                 "display 1 (64x32) wrong: 2048 planned pixels: 1024 right, 1024 missing, 0 "
                 "misplaced; 0 written twice, 0 behind mullions",
+                "input 0: 32 strips not as planned for pipeserver 0, first at row 0 column 36: "
+                "found d=0 x=0 y=0 w=32, planned d=1 x=0 y=0 w=32",
                 "misplaced runs: 1",
                 "  input 0 rows 0-31 from column 36 (header " +
                     hex(StripHeader::copy(false, 0, 0, 0, 32)) +
                     " COPY f=0 d=0 x=0 y=0 w=32): 32x32 pixels landed on display 0 at 0,0, "
                     "belong on display 1 at 0,0",
-                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips"}));
+                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned"}));
 }
 
 TEST(RoutingCheck, MullionOverlap) {
@@ -143,12 +152,15 @@ TEST(RoutingCheck, MullionOverlap) {
                 "misplaced; 0 written twice, 256 behind mullions",
                 "display 1 (64x32) right: 2048 planned pixels: 2048 right, 0 missing, 0 "
                 "misplaced; 0 written twice, 0 behind mullions",
+                "input 1: 32 strips not as planned for pipeserver 1, first at row 0 column 2: "
+                "found d=0 x=40 y=0 w=32, planned d=0 x=32 y=0 w=32",
                 "misplaced runs: 1",
                 "  input 1 rows 0-31 from column 2 (header " +
                     hex(StripHeader::copy(false, 0, 40, 0, 32)) +
                     " COPY f=0 d=0 x=40 y=0 w=32): 24x32 pixels landed on display 0 at 40,0, "
                     "belong on display 0 at 32,0",
-                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips"}));
+                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned"}));
   ASSERT_EQ(check.mullion_runs.size(), 32u);
   EXPECT_EQ(check.mullion_runs[7].start, (DisplayPoint{0, 64, 7}));
   EXPECT_EQ(check.mullion_runs[7].width, 8);
@@ -166,12 +178,15 @@ TEST(RoutingCheck, OverlappingTilesFromTwoInputs) {
                 "misplaced; 0 written twice, 0 behind mullions",
                 "display 1 (64x32) wrong: 2048 planned pixels: 0 right, 1024 missing, 1024 "
                 "misplaced; 1024 written twice, 0 behind mullions",
+                "input 1: 32 strips not as planned for pipeserver 1, first at row 0 column 36: "
+                "found d=1 x=0 y=0 w=32, planned d=1 x=32 y=0 w=32",
                 "misplaced runs: 1",
                 "  input 1 rows 0-31 from column 36 (header " +
                     hex(StripHeader::copy(false, 1, 0, 0, 32)) +
                     " COPY f=0 d=1 x=0 y=0 w=32): 32x32 pixels landed on display 1 at 0,0, "
                     "belong on display 1 at 32,0",
-                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips"}));
+                "routing wrong: 1 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned"}));
 }
 
 TEST(RoutingCheck, RefusedStripsAreNamedPerInput) {
@@ -181,10 +196,111 @@ TEST(RoutingCheck, RefusedStripsAreNamedPerInput) {
   frames[1].set(1, 3, {0, 0, 1});
   set_header(frames[0], 36, 4, StripHeader::copy(false, 9, 0, 4, 32));  // no display 9
   const std::vector<std::string> lines = report_of(layout, frames);
-  ASSERT_GE(lines.size(), 4u);
+  ASSERT_GE(lines.size(), 6u);
   EXPECT_EQ(lines[2], "input 0: 32 pixels sent to displays the wall does not have");
-  EXPECT_EQ(lines[3], "input 1: 1 check-bit errors");
-  EXPECT_EQ(lines.back(), "routing wrong: 2 of 2 displays wrong, 2 inputs with refused strips");
+  EXPECT_EQ(lines[3],
+            "input 0: 1 strip not as planned for pipeserver 0, first at row 4 column 36: found "
+            "d=9 x=0 y=4 w=32, planned d=1 x=0 y=4 w=32");
+  // The refused header is named by its place; the rest of its scanline is lost with it.
+  EXPECT_EQ(lines[4], "input 1: 1 check-bit errors, refused at row 3 column 0 (check-bit error)");
+  EXPECT_EQ(lines[5],
+            "input 1: 2 strips not as planned for pipeserver 1, first at row 3 column 2: found "
+            "nothing, planned d=0 x=32 y=3 w=32");
+  EXPECT_EQ(lines.back(),
+            "routing wrong: 2 of 2 displays wrong, 2 inputs with refused strips, 2 not as planned");
+}
+
+TEST(RoutingCheck, CrossedCablesAreNamedThoughEveryPixelIsRight) {
+  const TileLayout layout = test_layout();
+  std::vector<RgbImage> frames = scanned_out(layout);
+  std::swap(frames[0], frames[1]);
+  const RoutingCheck check = check_routing(layout, frames);
+  EXPECT_TRUE(check.displays[0].clean());
+  EXPECT_TRUE(check.displays[1].clean());
+  EXPECT_FALSE(check.clean());
+  EXPECT_EQ(check.inputs[0].carries, 1);
+  EXPECT_EQ(check.inputs[1].carries, 0);
+  const std::vector<std::string> lines = check_report(check);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[2],
+            "input 0 carries pipeserver 1's frame, not its own: a crossed cable (on a Lightning-2 "
+            "READY goes to the wrong pipeserver, and the bus order changes where strips overlap)");
+  EXPECT_EQ(lines[3].substr(0, 40), "input 1 carries pipeserver 0's frame, no");
+  EXPECT_EQ(lines[4],
+            "routing wrong: 0 of 2 displays wrong, 0 inputs with refused strips, 2 not as planned");
+}
+
+// The same wall with its tiles dealt otherwise (pipeserver 0 both of display 0's, pipeserver 1
+// both of display 1's): every pixel lands right, but neither frame is the plan's.
+TEST(RoutingCheck, FramesOfAnotherPlanOfTheSameWall) {
+  const TileLayout layout = test_layout();
+  std::string other_toml = verify_test::kWallToml;
+  const std::string tiles = "[[0, 0, 32, 32], [32, 0, 32, 32], [80, 0, 32, 32], [112, 0, 32, 32]]";
+  other_toml.replace(other_toml.find(tiles), tiles.size(),
+                     "[[0, 0, 32, 32], [80, 0, 32, 32], [32, 0, 32, 32], [112, 0, 32, 32]]");
+  const TileLayout other = plan_layout(parse_wall(other_toml, ""));
+  const RoutingCheck check = check_routing(layout, scanned_out(other));
+  EXPECT_TRUE(check.displays[0].clean() && check.displays[1].clean());
+  EXPECT_FALSE(check.clean());
+  const std::vector<std::string> lines = check_report(check);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[2],
+            "input 0: 32 strips not as planned for pipeserver 0, first at row 0 column 36: found "
+            "d=0 x=32 y=0 w=32, planned d=1 x=0 y=0 w=32");
+  EXPECT_EQ(lines[3],
+            "input 1: 32 strips not as planned for pipeserver 1, first at row 0 column 2: found "
+            "d=1 x=0 y=0 w=32, planned d=0 x=32 y=0 w=32");
+}
+
+TEST(RoutingCheck, AFrameOfAnotherSizeIsNamed) {
+  const TileLayout layout = test_layout();
+  std::vector<RgbImage> frames = scanned_out(layout);
+  RgbImage wider(96, 64);
+  for (int y = 0; y < 64; ++y)
+    std::copy(frames[1].row(y).begin(), frames[1].row(y).end(), wider.row(y).begin());
+  frames[1] = std::move(wider);
+  const RoutingCheck check = check_routing(layout, frames);
+  EXPECT_FALSE(check.clean());
+  const std::vector<std::string> lines = check_report(check);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[2],
+            "input 1: frame 96x64, but pipeserver 1's framebuffer is 80x64 (a frame of another "
+            "wall?)");
+  EXPECT_EQ(lines[3],
+            "routing wrong: 0 of 2 displays wrong, 0 inputs with refused strips, 1 not as planned");
+}
+
+TEST(RoutingCheck, FrameParityMustAgreeAcrossInputs) {
+  const TileLayout layout = test_layout();
+  std::vector<RgbImage> frames = scanned_out(layout);
+  frames[1] = test_frame(layout.pipeservers[1], true);  // the next application frame's parity
+  const RoutingCheck check = check_routing(layout, frames);
+  EXPECT_EQ(check.inputs[0].parity, 0);
+  EXPECT_EQ(check.inputs[1].parity, 1);
+  EXPECT_TRUE(check.parity_differs);
+  EXPECT_FALSE(check.clean());
+  const std::vector<std::string> lines = check_report(check);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[2],
+            "frame parity differs between inputs: f=0 on input 0; f=1 on input 1 (spec §6: the "
+            "frames routed together carry one)");
+  EXPECT_EQ(lines[3],
+            "routing wrong: 0 of 2 displays wrong, 0 inputs with refused strips, frame parity "
+            "differs");
+}
+
+TEST(RoutingCheck, AFrameOfBothParitiesIsTorn) {
+  const TileLayout layout = test_layout();
+  std::vector<RgbImage> frames = scanned_out(layout);
+  set_header(frames[0], 2, 5, StripHeader::copy(true, 0, 0, 5, 32));  // one row of the next frame
+  const RoutingCheck check = check_routing(layout, frames);
+  EXPECT_EQ(check.inputs[0].parity, kMixedParity);
+  EXPECT_FALSE(check.parity_differs);  // input 0 has no one parity to differ by
+  const std::vector<std::string> lines = check_report(check);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[2],
+            "input 0: rows of both frame parities, a torn frame (spec §6: a frame has one)");
+  EXPECT_EQ(lines[3], "routing wrong: 0 of 2 displays wrong, 0 inputs with refused strips, 1 torn");
 }
 
 TEST(RoutingCheck, ReportListsTheFirstRunsAndCountsTheRest) {
@@ -197,9 +313,9 @@ TEST(RoutingCheck, ReportListsTheFirstRunsAndCountsTheRest) {
     set_header(frames[0], 36, y, a);
   }
   const std::vector<std::string> lines = check_report(check_routing(layout, frames), 3);
-  ASSERT_EQ(lines.size(), 8u);
-  EXPECT_EQ(lines[2], "misplaced runs: 32");
-  EXPECT_EQ(lines[6], "  ... and 29 more");
+  ASSERT_EQ(lines.size(), 9u);
+  EXPECT_EQ(lines[3], "misplaced runs: 32");
+  EXPECT_EQ(lines[7], "  ... and 29 more");
 }
 
 TEST(RoutingCheck, RoutedPixelsAreJudgedNotTheFrames) {

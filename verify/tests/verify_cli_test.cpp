@@ -75,6 +75,8 @@ TEST_F(VerifyCli, RouteVerifyNamesSwappedHeaders) {
                 "misplaced; 0 written twice, 0 behind mullions\n"
                 "display 1 (64x32) wrong: 2048 planned pixels: 2016 right, 0 missing, 32 "
                 "misplaced; 0 written twice, 0 behind mullions\n"
+                "input 0: 2 strips not as planned for pipeserver 0, first at row 5 column 2: "
+                "found d=1 x=0 y=5 w=32, planned d=0 x=0 y=5 w=32\n"
                 "misplaced runs: 2\n"
                 "  input 0 row 5 from column 36 (header " +
                 hex(to_display_0) +
@@ -84,7 +86,8 @@ TEST_F(VerifyCli, RouteVerifyNamesSwappedHeaders) {
                 hex(to_display_1) +
                 " COPY f=0 d=1 x=0 y=5 w=32): 32x1 pixels landed on display 1 at 0,5, belong on "
                 "display 0 at 0,5\n"
-                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips\n"
+                "routing wrong: 2 of 2 displays wrong, 0 inputs with refused strips, 1 not as "
+                "planned\n"
                 "wrote " +
                 out + "/verify-<d>.png: the displays, wrong pixels marked\n");
   const RgbImage picture = read_png(dir / "out/verify-0.png");
@@ -104,6 +107,19 @@ TEST_F(VerifyCli, RouteVerifyForgottenInput) {
             std::string::npos)
       << r.out;
   EXPECT_EQ(read_png(dir / "out/verify-1.png").at(40, 0), kMissingColour);
+}
+
+// Crossed cables: every strip still lands right, but input 0 carries pipeserver 1's frame.
+TEST_F(VerifyCli, RouteVerifyNamesCrossedCables) {
+  const Result r = route_verify(scan(1).string() + " " + scan(0).string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("\ninput 0 carries pipeserver 1's frame, not its own: a crossed cable"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\nrouting wrong: 0 of 2 displays wrong, 0 inputs with refused strips, 2 "
+                       "not as planned\n"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST_F(VerifyCli, RouteVerifyOfTheScanOutIsClean) {

@@ -70,17 +70,52 @@ struct DisplayCheck {
   bool clean() const { return missing + misplaced + written_twice + behind_mullions == 0; }
 };
 
+// Where the parser refused a strip (spec §3): the scanline and the column of the header it
+// could not take, and why ("check-bit error", ...).
+struct RefusedAt {
+  int row = 0, column = 0;
+  const char* why = "";
+};
+
+// A strip that is not where or what the plan of its input's pipeserver says (spec §4): found
+// (none: a planned strip that is not there) against planned (none: a strip the plan does not
+// have at that place).
+struct StripDifference {
+  int row = 0, column = 0;  // of the strip's first colour pixel in the frame
+  std::optional<StripHeader> found, planned;
+};
+
+// Frame parity of a frame's strips (spec §6): 0 or 1, or one of these.
+inline constexpr int kNoParity = -1;    // no strip at all
+inline constexpr int kMixedParity = 2;  // rows of both parities: a torn frame
+
 struct InputCheck {
   int input = 0;
   long long copy_strips = 0;
   long long composited_strips = 0;  // KEY and DEPTH (spec §7)
   StripErrorCounts errors;          // the parser's (§3); its missing_display and clips stay 0
   long long to_absent_display = 0;  // COPY pixels for a display the wall does not have
-  bool clean() const { return errors.total() == 0 && to_absent_display == 0; }
+  std::vector<RefusedAt> refused;   // the first few of `errors`, by place
+  int width = 0, height = 0;        // the frame as given
+  int planned_width = 0, planned_height = 0;  // its pipeserver's framebuffer; 0: none planned
+  int parity = kNoParity;
+  // Against the plan of pipeserver `input`: strips found where it has none or other than it
+  // says, plus planned strips not found; the first of them; and, when the frame carries exactly
+  // the strips planned for another pipeserver (a crossed cable), that pipeserver.
+  long long not_as_planned = 0;
+  std::optional<StripDifference> first_difference;
+  std::optional<int> carries;
+  bool refused_strips() const { return errors.total() != 0 || to_absent_display != 0; }
+  bool size_differs() const {
+    return planned_width != 0 && (width != planned_width || height != planned_height);
+  }
+  bool as_planned() const { return not_as_planned == 0 && !size_differs(); }
+  bool clean() const { return !refused_strips() && as_planned() && parity != kMixedParity; }
 };
 
 struct RoutingCheck {
   int planned_inputs = 0;               // pipeservers in the wall's plan
+  bool parity_differs = false;          // inputs whose strips carry different frame parities
   std::vector<DisplayCheck> displays;   // in wall order
   std::vector<InputCheck> inputs;       // one per frame given
   std::vector<MisplacedRun> misplaced;  // display by display, top to bottom, left to right
