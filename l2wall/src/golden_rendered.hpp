@@ -33,6 +33,14 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
 // (pipeserver/src/live_mode.hpp); the reference render has no such pixel, so it is added.
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references);
 
+// A re-tiled wall moves the frame stamps (each pipeserver's first tile's first pixel), so a
+// golden image made before shows them elsewhere. Sets each pixel of `actual` that differs from
+// `expected` only by being a stamp (one side holds frame `frame`'s stamp colour) to expected's,
+// and returns how many; none when more differ so than `pipeservers` stamps can explain (two
+// places each: where they were and where they are).
+int set_aside_moved_stamps(int frame, int pipeservers, const std::vector<RgbImage>& expected,
+                           std::vector<RgbImage>& actual);
+
 // What `pipeserver --gl-info` reports: the GL implementation the pipeservers render with.
 // Throws std::runtime_error when it cannot be asked.
 GlInfo pipeserver_gl_info(const std::string& pipeserver, const std::filesystem::path& work);
