@@ -19,6 +19,10 @@ namespace OIIO = OIIO_NAMESPACE;
 
 // Bounds what a reader holds in decoded tiles, whatever the picture's size.
 constexpr float kCacheMegabytes = 64;
+// A picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
+// evicted is decoded again from the first row. Up to this size the cache holds all of it, so
+// it is decoded once, not at every frame that samples it across.
+constexpr float kWholeScanlinePictureMegabytes = 512;
 // Pictures stored as scanlines are read in tiles of this side as well.
 constexpr int kAutoTile = 64;
 
@@ -82,8 +86,16 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
       return Failure{"cannot read: the picture has no pixels"};
     }
   }
+  float cache_megabytes = kCacheMegabytes;
+  {
+    auto in = OIIO::ImageInput::open(path);
+    const OIIO::ImageSpec& s = in->spec();
+    const double decoded_mb = double(s.width) * s.height * std::min(s.nchannels, 3) / (1 << 20);
+    if (s.tile_width == 0 && decoded_mb * 1.1 <= kWholeScanlinePictureMegabytes)
+      cache_megabytes = std::max(cache_megabytes, static_cast<float>(decoded_mb * 1.1 + 8));
+  }
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
-  cache->attribute("max_memory_MB", kCacheMegabytes);
+  cache->attribute("max_memory_MB", cache_megabytes);
   cache->attribute("autotile", kAutoTile);
   const OIIO::ustring file(path);
   OIIO::ImageSpec spec;
