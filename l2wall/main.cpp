@@ -193,13 +193,17 @@ int main(int argc, char** argv) {
   l2::SceneOptions scene;
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(*run, scene);
   // Options that make no run together are usage errors too (exit 2), not a failed run.
-  run->callback([&o, &scene_options, &mpi] {
+  run->callback([&o, &scene_options, &mpi, run] {
     if (const l2::Status s = l2::run_options_error(o); !s.ok())
       throw CLI::ValidationError(s.reason());
     if (const l2::Status s = mpi ? mpi_error(o) : l2::Status{}; !s.ok())
       throw CLI::ValidationError(s.reason());
     l2::check_scene_options(scene_options, o.scene);
     o.scene_args = l2::scene_arguments(scene_options);
+    // A movie plays by its own clock at the wall's refresh rate unless told otherwise; at full
+    // speed there is no clock to play by.
+    if (o.scene == "movie" && run->count("--movie-rate") == 0)
+      o.scene_args.insert(o.scene_args.end(), {"--movie-rate", fmt::format("{:g}", o.refresh_hz)});
   });
   bool plot = false;
   run->add_flag("--plot", plot,

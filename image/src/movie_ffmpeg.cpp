@@ -51,6 +51,10 @@ class FfmpegMovie final : public MovieDecoder {
 
   int width() const override { return codec_->width; }
   int height() const override { return codec_->height; }
+  double frames_per_second() const override {
+    const AVRational rate = av_guess_frame_rate(format_.get(), format_->streams[stream_], nullptr);
+    return rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
+  }
 
   Result<bool> next_frame(std::uint8_t* rgb) override {
     if (!packet_ || !frame_) return Failure{"cannot decode: out of memory"};

@@ -23,6 +23,10 @@ MovieFile::MovieFile(const std::filesystem::path& path) : path_(path) {
 
 MovieFile::~MovieFile() = default;
 
+double MovieFile::frames_per_second() const {
+  return decoder_->frames_per_second();
+}
+
 void MovieFile::reopen() {
   decoder_.reset(nullptr);
   auto opened = png_codec::codec(path_).open_movie(path_.c_str());

@@ -56,6 +56,8 @@ class MovieDecoder {
   virtual ~MovieDecoder() = default;
   virtual int width() const = 0;
   virtual int height() const = 0;
+  // The video stream's frames per second as its container says (0 when it says nothing).
+  virtual double frames_per_second() const = 0;
   // The next frame into `rgb` (width x height x 3 bytes): true, or false (nothing written) when
   // the stream has no more.
   virtual Result<bool> next_frame(std::uint8_t* rgb) = 0;

@@ -290,6 +290,33 @@ TEST_F(Media, MovieFrameKIsApplicationFrameK) {
   expect_clean(run);
 }
 
+// The movie's clock: a 10 frames/s movie on a wall refreshing at 20 Hz shows each movie frame
+// for two application frames (frames 0-5: movie frames 0, 0, 1, 1, 2, 2), on every pipeserver
+// alike; `--movie-rate 0` keeps frame for frame.
+TEST_F(Media, AMoviePlaysByItsOwnClock) {
+  const DecodedMovie movie = make_movie(dir_ / "clock.mkv", 5);
+  ASSERT_EQ(movie.frames.size(), 5u);
+  const SourceView view = movie_view(movie.width, movie.height, canvas_of_file({}));
+  WallRun run("movie-clock", {"--scene", "movie", "--content", (dir_ / "clock.mkv").string(),
+                              "--frames", "6", "--refresh", "20", "--keep", "every"});
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(wrong_pixels(run, {}, k, view, movie.width, movie.height, movie.frame(k / 2)), 0)
+        << "frame " << k;
+  }
+  expect_clean(run);
+
+  WallRun exact("movie-exact",
+                {"--scene", "movie", "--content", (dir_ / "clock.mkv").string(), "--frames", "3",
+                 "--refresh", "20", "--movie-rate", "0", "--keep", "every"});
+  ASSERT_TRUE(exact.wait(120s).ok()) << exact.output();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(wrong_pixels(exact, {}, k, view, movie.width, movie.height, movie.frame(k)), 0)
+        << "frame " << k;
+  }
+}
+
 TEST_F(Media, MovieOnTheWideWall) {
   const DecodedMovie movie = make_movie(dir_ / "wide.mkv", 3);
   ASSERT_EQ(movie.frames.size(), 3u);

@@ -89,7 +89,7 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
       throw std::invalid_argument(fmt::format("--scene {} needs --content FILE", name));
     }
     if (name == "picture") return detail::make_picture_scene(options.content);
-    return detail::make_movie_scene(options.content);
+    return detail::make_movie_scene(options.content, options.movie_rate);
   }
   throw std::invalid_argument(fmt::format(
       "unknown scene '{}' (expected mesh, strips, isosurface, patches, swap, picture or movie)",

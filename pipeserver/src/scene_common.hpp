@@ -33,6 +33,6 @@ std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_swap_scene();
 std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file);
-std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file);
+std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate);
 
 }  // namespace l2::detail

@@ -1,10 +1,13 @@
-// `movie`: frame k of a movie (any format FFmpeg reads) is application frame k, the whole movie
-// frame fitted to the canvas (picture_view.hpp). Every pipeserver decodes the movie itself, in
-// step with the frame numbers, and shows its tiles' part of the frame.
+// `movie`: a movie (any format FFmpeg reads) played by its own clock, the whole movie frame
+// fitted to the canvas (picture_view.hpp): application frame k shows the movie at k / rate
+// seconds, frames dropped or repeated as the rates differ; with rate 0, movie frame k is
+// application frame k (exact, for tests). Every pipeserver decodes the movie itself and picks
+// the same frame for an application frame from the frame number alone, so they never disagree.
 #include "image/movie_file.hpp"
 #include "scene_common.hpp"
 #include "source_fill.hpp"
 
+#include <cmath>
 #include <cstring>
 
 namespace l2::detail {
@@ -13,7 +16,8 @@ namespace {
 
 class MovieScene : public Scene {
  public:
-  explicit MovieScene(const std::filesystem::path& file) : movie_(file) {
+  MovieScene(const std::filesystem::path& file, double rate)
+      : movie_(file), rate_(rate), fps_(movie_.frames_per_second()) {
     lit_ = false;
     shown_ = &movie_.frame(0);  // a movie without frames is refused here, before the run
   }
@@ -33,17 +37,24 @@ class MovieScene : public Scene {
   }
 
  protected:
-  void animate(int frame) override { shown_ = &movie_.frame(frame); }
+  void animate(int frame) override { shown_ = &movie_.frame(movie_frame(frame)); }
 
  private:
+  // A movie whose container gives no rate is played frame for frame.
+  long movie_frame(int frame) const {
+    if (rate_ <= 0 || fps_ <= 0) return frame;
+    return static_cast<long>(std::floor(frame * fps_ / rate_ + 1e-9));
+  }
+
   MovieFile movie_;
+  double rate_, fps_;
   const RgbImage* shown_ = nullptr;
 };
 
 }  // namespace
 
-std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file) {
-  return std::make_unique<MovieScene>(file);
+std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate) {
+  return std::make_unique<MovieScene>(file, rate);
 }
 
 }  // namespace l2::detail

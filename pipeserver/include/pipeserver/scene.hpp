@@ -51,7 +51,10 @@ struct SceneOptions {
   int tessellation = 16;            // patches: segments along each patch edge
   int patches = 4;                  // patches: patches along each side of the sheet
   std::filesystem::path content;    // picture, movie: the file shown
-  CameraOptions camera;             // every scene
+  // movie: application frames per second the movie's clock runs at (application frame k shows
+  // the movie at k / movie_rate seconds); 0: movie frame k is application frame k.
+  double movie_rate = 0;
+  CameraOptions camera;  // every scene
 };
 
 // What a program's own drawing (renderer.hpp) is given for each tile. When it is called, the

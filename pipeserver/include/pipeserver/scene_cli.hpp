@@ -34,6 +34,13 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "scene: a movie, any format FFmpeg reads")
            ->check(CLI::ExistingFile),
        "picture movie"},
+      {app.add_option("--movie-rate", o.movie_rate,
+                      "movie scene: application frames per second the movie's clock runs at: "
+                      "application frame k shows the movie at k / HZ seconds, movie frames "
+                      "dropped or repeated as the rates differ; 0: movie frame k is application "
+                      "frame k (exact; l2wall run passes its --refresh, 0 at full speed)")
+           ->check(number_in(0, 1000)),
+       "movie"},
       {app.add_option("--triangles", o.triangles, "strips scene: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
        "strips"},

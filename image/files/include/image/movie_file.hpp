@@ -24,6 +24,8 @@ class MovieFile {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // Frames per second by the movie's own clock; 0 when its container does not say.
+  double frames_per_second() const;
 
   // Frame k (from 0): decoded on from the frame last asked for, from the start again when k
   // lies before it. Throws std::runtime_error naming the file when a frame cannot be decoded,
