@@ -61,6 +61,17 @@ int run_over_mpi(const l2::RunOptions& o) {
 #endif
 }
 
+// What is said once for the run: under mpirun every rank runs the checks, and rank 0 says it.
+void tell_once(bool mpi, const std::string& line) {
+  if (line.empty()) return;
+#ifdef L2_HAVE_MPI
+  if (mpi && !l2::coordinator_rank()) return;
+#else
+  (void)mpi;
+#endif
+  std::printf("%s\n", line.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -221,8 +232,10 @@ int main(int argc, char** argv) {
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {
     if (*plot_command) return plot_run(plot_dir);
-    // A damaged model is refused here in one line, before every pipeserver refuses it.
-    if (o.scene == "mesh" && !scene.mesh_file.empty()) l2::check_model(scene.mesh_file);
+    // A damaged model is refused here in one line, before every pipeserver refuses it; what of
+    // it is left out is said here once, not by every pipeserver.
+    if (o.scene == "mesh" && !scene.mesh_file.empty())
+      tell_once(mpi, l2::check_model(scene.mesh_file));
     if (o.scene == "picture") l2::PictureRegions{scene.content};
     if (o.scene == "movie") l2::MovieFile(scene.content).frame(0);
     const int status = mpi ? run_over_mpi(o) : l2::run_wall(o);

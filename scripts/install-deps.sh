@@ -11,6 +11,7 @@ PACKAGES=(
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  assimp-testmodels  # real-world models (the Khronos glTF samples) a model test loads
   libopenmpi-dev openmpi-bin
   socat iproute2 xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox

@@ -1,5 +1,6 @@
 // Your own model on the wall through `l2wall run`: a wide wall filled across every display,
-// a glTF file's base colour on the displays, and a missing or damaged model refused in one line.
+// a glTF file's base colour on the displays, a model's degenerate faces left out and said once
+// for the run, and a missing or damaged model refused in one line.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -99,6 +100,27 @@ TEST(ModelOnTheWall, GltfModelSpansTheWideWall) {
     }
     EXPECT_GT(square, 200) << "display " << d;
   }
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// A model with a degenerate face runs, and the run says what it left out once: l2wall checks
+// the model before starting the pipeservers and says it; they do not say it again.
+TEST(ModelOnTheWall, DegenerateFacesAreSaidOncePerRun) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-degenerate-{}", getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.obj")
+      << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\nf 2 3 3\n";
+  WallRun run("degenerate",
+              {"--mesh", (dir / "square.obj").string(), "--frames", "2", "--refresh", "0"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  const std::string line = (dir / "square.obj").string() +
+                           ": 1 of 3 triangles degenerate (a vertex repeated), left out\n";
+  const std::string output = run.output();
+  const auto first = output.find(line);
+  ASSERT_NE(first, std::string::npos) << output;
+  EXPECT_EQ(output.find(line, first + 1), std::string::npos) << output;
   expect_clean(run);
   fs::remove_all(dir);
 }

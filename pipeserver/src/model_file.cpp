@@ -1,7 +1,8 @@
 // load_mesh with Assimp. Assimp accepts some damaged files without an error (a PLY face line
 // cut short comes out with a vertex repeated, a coordinate can be NaN or infinite), so its
 // validation step runs and the faces and vertices are checked again here before anything else
-// sees them: every bad file is refused with one line naming it.
+// sees them: every bad file is refused with one line naming it. Faces that cover nothing (a
+// vertex repeated, zero area: common in glTF and OBJ files) are left out and counted.
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -12,6 +13,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "pipeserver/model_file.hpp"
 #include "ply_counts.hpp"
@@ -58,34 +61,105 @@ void check_finite(const std::filesystem::path& path, std::size_t vertex, const a
   }
 }
 
-// The faces and vertices as imported, before any post-processing step sees them.
-void check_raw(const std::filesystem::path& path, const aiScene& scene) {
+// The faces of a file as imported, and those that cover nothing, left out.
+struct LeftOut {
   std::size_t faces = 0;
+  std::size_t repeated = 0;   // two corners at one point (the same vertex, or two at one place)
+  std::size_t zero_area = 0;  // three distinct corners on one line
+  bool polygons = false;      // a face of more than three corners: "faces", not "triangles"
+  std::size_t count() const { return repeated + zero_area; }
+};
+
+std::string reasons(const LeftOut& n) {
+  if (n.zero_area == 0) return "a vertex repeated";
+  if (n.repeated == 0) return "zero area";
+  return fmt::format("{} with a vertex repeated, {} of zero area", n.repeated, n.zero_area);
+}
+
+// "model.glb: 10419 of 75730 triangles degenerate (a vertex repeated), left out"; empty: none.
+// `what`: what became of them.
+std::string describe(const std::filesystem::path& path, const LeftOut& n,
+                     std::string_view what = "left out") {
+  if (n.count() == 0) return {};
+  const char* noun =
+      n.polygons ? (n.faces == 1 ? "face" : "faces") : (n.faces == 1 ? "triangle" : "triangles");
+  return fmt::format("{}: {} of {} {} degenerate ({}), {}", path.string(), n.count(), n.faces, noun,
+                     reasons(n), what);
+}
+
+// Three corners on one line (or at one point): the cross product of two edges, in double from
+// the floats, is exactly zero.
+bool zero_area(const aiVector3D& a, const aiVector3D& b, const aiVector3D& c) {
+  const double u[3] = {double(b.x) - a.x, double(b.y) - a.y, double(b.z) - a.z};
+  const double v[3] = {double(c.x) - a.x, double(c.y) - a.y, double(c.z) - a.z};
+  return u[1] * v[2] - u[2] * v[1] == 0 && u[2] * v[0] - u[0] * v[2] == 0 &&
+         u[0] * v[1] - u[1] * v[0] == 0;
+}
+
+// Leaves out a face's corners at the same point as the corner before it (cyclically): what is
+// left has a surface if it has three corners or more. Returns false when it has not.
+bool drop_repeated_corners(const aiMesh& m, aiFace& face) {
+  unsigned n = 0;
+  for (unsigned j = 0; j < face.mNumIndices; ++j) {
+    const unsigned index = face.mIndices[j];
+    if (n > 0 && m.mVertices[index] == m.mVertices[face.mIndices[n - 1]]) continue;
+    face.mIndices[n++] = index;
+  }
+  while (n > 1 && m.mVertices[face.mIndices[n - 1]] == m.mVertices[face.mIndices[0]]) --n;
+  face.mNumIndices = n;
+  return n >= 3;
+}
+
+// The faces and vertices as imported, before any post-processing step sees them. Faces that
+// cover nothing are left out of the scene here (glTF and OBJ files from modelling tools have
+// them: a vertex repeated, or zero area), and counted; a polygon with a corner repeated in a row
+// loses the repeat. In an ASCII PLY a vertex index repeated in a row is refused instead: Assimp
+// reads its faces line by line, and one cut short or spread over two lines comes out so.
+LeftOut check_raw(const std::filesystem::path& path, aiScene& scene, bool ascii_ply) {
+  LeftOut left;
   for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
-    const aiMesh& m = *scene.mMeshes[i];
+    aiMesh& m = *scene.mMeshes[i];
     for (unsigned v = 0; v < m.mNumVertices; ++v) check_finite(path, v, m.mVertices[v]);
+    unsigned kept = 0;
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
-      const aiFace& face = m.mFaces[f];
+      aiFace& face = m.mFaces[f];
+      const std::size_t number = left.faces + f;
       if (face.mNumIndices < 3) {
-        fail(path, fmt::format("face {} has {} vertices, a surface needs at least 3", faces + f,
+        fail(path, fmt::format("face {} has {} vertices, a surface needs at least 3", number,
                                face.mNumIndices));
       }
+      left.polygons = left.polygons || face.mNumIndices > 3;
       for (unsigned j = 0; j < face.mNumIndices; ++j) {
         if (face.mIndices[j] >= m.mNumVertices) {
-          fail(path, fmt::format("face {} refers to vertex {} of {}", faces + f, face.mIndices[j],
+          fail(path, fmt::format("face {} refers to vertex {} of {}", number, face.mIndices[j],
                                  m.mNumVertices));
         }
-        // Assimp reads an ASCII PLY face line by line: one cut short or spread over two lines
-        // comes out with a vertex repeated, not as an error.
-        if (face.mIndices[j] == face.mIndices[(j + 1) % face.mNumIndices]) {
+        if (ascii_ply && face.mIndices[j] == face.mIndices[(j + 1) % face.mNumIndices]) {
           fail(path, fmt::format("face {} has vertex {} twice in a row (a face line cut short?)",
-                                 faces + f, face.mIndices[j]));
+                                 number, face.mIndices[j]));
         }
       }
+      if (!drop_repeated_corners(m, face)) {
+        ++left.repeated;
+      } else if (face.mNumIndices == 3 &&
+                 zero_area(m.mVertices[face.mIndices[0]], m.mVertices[face.mIndices[1]],
+                           m.mVertices[face.mIndices[2]])) {
+        ++left.zero_area;
+      } else {
+        // Kept: moved down over the faces left out (their index arrays go to the end, where
+        // the mesh's delete[] of its faces still frees them).
+        std::swap(m.mFaces[kept].mNumIndices, face.mNumIndices);
+        std::swap(m.mFaces[kept].mIndices, face.mIndices);
+        ++kept;
+      }
     }
-    faces += m.mNumFaces;
+    left.faces += m.mNumFaces;
+    m.mNumFaces = kept;
   }
-  if (faces == 0) fail(path, "no triangles");
+  if (left.faces == 0) fail(path, "no triangles");
+  if (left.count() == left.faces)
+    throw std::runtime_error(describe(path, left, "nothing left to draw"));
+  return left;
 }
 
 struct Counts {
@@ -143,32 +217,35 @@ void append(const std::filesystem::path& path, const aiScene& scene, const aiMes
   }
 }
 
-// Imported and checked, not yet post-processed.
-const aiScene& read_checked(Assimp::Importer& importer, const std::filesystem::path& path) {
+// Imported, checked and its degenerate faces left out (the line saying so returned), not yet
+// post-processed.
+std::string read_checked(Assimp::Importer& importer, const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) fail(path, "cannot open: no such file");
-  detail::check_ply_counts(path);
+  const bool ascii_ply = detail::check_ply_counts(path) == detail::PlyFormat::ascii;
   const aiScene* scene = importer.ReadFile(path.string(), kRead);
   if (scene == nullptr) fail(path, importer.GetErrorString());
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) fail(path, "no triangles");
-  check_raw(path, *scene);
-  return *scene;
+  // The importer's own scene, which it hands out read-only: faces are left out of it in place
+  // before the post-processing steps run on it.
+  return describe(path, check_raw(path, const_cast<aiScene&>(*scene), ascii_ply));
 }
 
 }  // namespace
 
-void check_model(const std::filesystem::path& path) {
+std::string check_model(const std::filesystem::path& path) {
   Assimp::Importer importer;
-  read_checked(importer, path);
+  return read_checked(importer, path);
 }
 
 TriangleMesh load_mesh(const std::filesystem::path& path) {
   Assimp::Importer importer;
-  read_checked(importer, path);
+  std::string left_out = read_checked(importer, path);
   const aiScene* scene = importer.ApplyPostProcessing(kSteps);
   if (scene == nullptr) fail(path, importer.GetErrorString());
   const Counts n = count(path, *scene);
   TriangleMesh out;
+  out.left_out = std::move(left_out);
   out.positions.reserve(n.vertices);
   out.indices.reserve(3 * n.triangles);
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) append(path, *scene, *scene->mMeshes[i], n, out);

@@ -32,11 +32,12 @@ struct Element {
 
 }  // namespace
 
-void check_ply_counts(const std::filesystem::path& path) {
+PlyFormat check_ply_counts(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return PlyFormat::none;
   bool ascii = false;
+  const auto format = [&] { return ascii ? PlyFormat::ascii : PlyFormat::binary; };
   std::vector<Element> elements;
   int number = 1;
   // A header is short: past 10000 lines it is not one, and Assimp will say so.
@@ -52,7 +53,7 @@ void check_ply_counts(const std::filesystem::path& path) {
       Element e;
       e.line = number;
       words >> e.name >> e.count;
-      if (!words) return;  // a malformed count: Assimp's error names it
+      if (!words) return format();  // a malformed count: Assimp's error names it
       elements.push_back(e);
     } else if (word == "property" && !elements.empty()) {
       words >> type;
@@ -63,7 +64,7 @@ void check_ply_counts(const std::filesystem::path& path) {
     }
   }
   const std::streamoff header = in.tellg();
-  if (header < 0) return;
+  if (header < 0) return format();
   std::uintmax_t left = std::filesystem::file_size(path) - static_cast<std::uintmax_t>(header) + 1;
   for (const Element& e : elements) {
     if (e.min_bytes == 0) continue;  // takes no bytes, whatever its count
@@ -74,6 +75,7 @@ void check_ply_counts(const std::filesystem::path& path) {
     }
     left -= e.count * e.min_bytes;
   }
+  return format();
 }
 
 }  // namespace l2::detail

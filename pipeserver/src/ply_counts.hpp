@@ -7,8 +7,12 @@
 
 namespace l2::detail {
 
-// Does nothing for a file that does not start with "ply". Throws std::runtime_error
-// ("FILE:LINE: element 'vertex' declares N entries, more than the rest of the file can hold").
-void check_ply_counts(const std::filesystem::path& path);
+enum class PlyFormat { none, ascii, binary };
+
+// Does nothing for a file that does not start with "ply" (returns none). Throws
+// std::runtime_error ("FILE:LINE: element 'vertex' declares N entries, more than the rest of the
+// file can hold"). Returns the format the header names: in an ASCII PLY a face with a vertex
+// repeated in a row is a face line cut short, not a degenerate triangle (model_file.cpp).
+PlyFormat check_ply_counts(const std::filesystem::path& path);
 
 }  // namespace l2::detail

@@ -107,6 +107,11 @@ Status mpi_options_error(const RunOptions& o) {
   return {};
 }
 
+bool coordinator_rank() {
+  const auto launched = launched_rank();
+  return !launched || launched->rank == RankMap::kCoordinator;
+}
+
 int run_wall_mpi(const RunOptions& o) {
   const auto launched = launched_rank();
   if (!launched) {

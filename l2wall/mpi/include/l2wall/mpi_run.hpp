@@ -18,4 +18,8 @@ Status mpi_options_error(const RunOptions& options);
 // Returns the exit code. A fault ends every rank (MPI_Abort) after its message.
 int run_wall_mpi(const RunOptions& options);
 
+// Whether this process is rank 0 of the job, the coordinator, which says what is said once for
+// the whole run (every rank runs l2wall's checks before MPI_Init); true outside mpirun.
+bool coordinator_rank();
+
 }  // namespace l2
