@@ -58,6 +58,8 @@ int run(const Options& o) {
   for (const auto& w : layout.warnings)
     std::fprintf(stderr, "pipeserver: warning: %s\n", w.c_str());
   auto scene = l2::make_scene(o.scene, o.scene_options);
+  // Here only: a live pipeserver leaves it to `l2wall run`, which says it once for the run.
+  if (!scene->note().empty()) std::printf("%s\n", scene->note().c_str());
   // The folders before rendering: a folder that could not be made failed after the work.
   if (!o.out.empty()) l2::make_folders(o.out, "--out");
   if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");

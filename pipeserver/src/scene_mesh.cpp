@@ -5,6 +5,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <unordered_map>
+#include <utility>
 
 #include "scene_common.hpp"
 
@@ -60,6 +61,7 @@ std::vector<glm::vec3> vertex_normals(const TriangleMesh& m) {
 class MeshScene : public Scene {
  public:
   explicit MeshScene(TriangleMesh mesh) {
+    note_ = std::move(mesh.left_out);
     normalise(mesh.positions);
     const auto normals = mesh.normals.empty() ? vertex_normals(mesh) : mesh.normals;
     Box box = Box::empty();

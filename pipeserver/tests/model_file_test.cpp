@@ -256,6 +256,11 @@ TEST(MeshFile, DegenerateObjFaceIsLeftOutAndSaid) {
   EXPECT_EQ(m.indices.size(), 6u);
   EXPECT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(check_model(p), m.left_out);
+  // The mesh scene passes it on, for `pipeserver` to print (l2wall's pipeservers do not).
+  SceneOptions options;
+  options.mesh_file = p;
+  EXPECT_EQ(make_scene("mesh", options)->note(), m.left_out);
+  EXPECT_EQ(make_scene("mesh")->note(), "");
   EXPECT_EQ(load_mesh(write_file("square.obj", square)).left_out, "");
 
   // Three corners on one line: zero area. Both kinds counted apart.

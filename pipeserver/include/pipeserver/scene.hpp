@@ -95,6 +95,9 @@ class Scene {
   float radius() const { return 1.0f; }
 
   std::size_t triangle_count() const;
+  // A line about the scene's file worth telling once, not an error: what of a model file was
+  // left out (TriangleMesh::left_out). Empty: nothing to tell.
+  const std::string& note() const { return note_; }
 
   // A scene of pixels rather than geometry (picture, movie) fills each tile with them: `rgb`
   // becomes the tile's size, rows top to bottom, and is drawn over the cleared tile. false: the
@@ -112,6 +115,7 @@ class Scene {
   virtual float default_orbit() const { return 0; }
 
   std::vector<Batch> batches_;
+  std::string note_;
   glm::mat4 model_{1.0f};
   bool lit_ = true;
   glm::vec3 clear_colour_{0.0f};
