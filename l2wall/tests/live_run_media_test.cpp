@@ -113,10 +113,10 @@ long wrong_pixels(const WallRun& run, const fs::path& wall_file, int frame, cons
     }
     const Rect r = display.on_canvas();
     for (int y = 0; y < shown.height(); ++y) {
-      const long sy = sampled(view.centre_y, view.scale, wall.canvas_height, r.y + y);
+      const long sy = sampled(view.centre_y, view.scale_y, wall.canvas_height, r.y + y);
       for (int x = 0; x < shown.width(); ++x) {
         if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
-        const long sx = sampled(view.centre_x, view.scale, wall.canvas_width, r.x + x);
+        const long sx = sampled(view.centre_x, view.scale_x, wall.canvas_width, r.x + x);
         const bool inside = sx >= 0 && sx < source_w && sy >= 0 && sy < source_h;
         wrong += !(shown.at(x, y) == (inside ? source(sx, sy) : Rgb{}));
       }
@@ -331,6 +331,28 @@ TEST_F(Media, MovieOnTheWideWall) {
         << "frame " << k;
   }
   expect_clean(run);
+}
+
+// A 4:3 movie stretched over the 3x1 wall: every display pixel is a movie pixel, none black;
+// the default (fit) leaves the outer parts of the wall black.
+TEST_F(Media, AMovieStretchedCoversTheWideWall) {
+  const DecodedMovie movie = make_movie(dir_ / "stretch.mkv", 2);
+  ASSERT_EQ(movie.frames.size(), 2u);
+  WallRun run("movie-stretch", {"--wall", wide_wall_.string(), "--scene", "movie", "--content",
+                                (dir_ / "stretch.mkv").string(), "--frames", "2", "--refresh", "0",
+                                "--fit", "stretch", "--keep", "every"});
+  ASSERT_TRUE(run.wait(120s).ok()) << run.output();
+  const Canvas canvas = canvas_of_file(wide_wall_);
+  const SourceView view = movie_view(movie.width, movie.height, canvas, SourceFit::Stretch);
+  EXPECT_NE(view.scale_x, view.scale_y);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(wrong_pixels(run, wide_wall_, k, view, movie.width, movie.height, movie.frame(k)), 0)
+        << "frame " << k;
+  }
+  // The left edge of the canvas shows the movie's left edge, not a bar.
+  const SourceView fitted = movie_view(movie.width, movie.height, canvas);
+  EXPECT_LT(sampled(fitted.centre_x, fitted.scale_x, canvas.width, 0), 0);
+  EXPECT_EQ(sampled(view.centre_x, view.scale_x, canvas.width, 0), 0);
 }
 
 // l2wall's output of a run refused before any pipeserver starts, and its exit code.

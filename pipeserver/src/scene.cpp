@@ -88,8 +88,13 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
     if (options.content.empty()) {
       throw std::invalid_argument(fmt::format("--scene {} needs --content FILE", name));
     }
-    if (name == "picture") return detail::make_picture_scene(options.content);
-    return detail::make_movie_scene(options.content, options.movie_rate);
+    const std::optional<SourceFit> fit = parse_source_fit(options.fit);
+    if (!options.fit.empty() && !fit)
+      throw std::invalid_argument("--fit: expected fit, fill or stretch, got " + options.fit);
+    if (name == "picture")
+      return detail::make_picture_scene(options.content, fit.value_or(SourceFit::Fill));
+    return detail::make_movie_scene(options.content, options.movie_rate,
+                                    fit.value_or(SourceFit::Fit));
   }
   throw std::invalid_argument(fmt::format(
       "unknown scene '{}' (expected mesh, strips, isosurface, patches, swap, picture or movie)",

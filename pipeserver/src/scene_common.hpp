@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "pipeserver/model_file.hpp"
+#include "pipeserver/picture_view.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2::detail {
@@ -32,7 +33,8 @@ std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_swap_scene();
-std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file);
-std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate);
+std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit);
+std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate,
+                                        SourceFit fit);
 
 }  // namespace l2::detail

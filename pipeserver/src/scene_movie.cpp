@@ -16,8 +16,8 @@ namespace {
 
 class MovieScene : public Scene {
  public:
-  MovieScene(const std::filesystem::path& file, double rate)
-      : movie_(file), rate_(rate), fps_(movie_.frames_per_second()) {
+  MovieScene(const std::filesystem::path& file, double rate, SourceFit fit)
+      : movie_(file), rate_(rate), fps_(movie_.frames_per_second()), fit_(fit) {
     lit_ = false;
     shown_ = &movie_.frame(0);  // a movie without frames is refused here, before the run
   }
@@ -26,8 +26,8 @@ class MovieScene : public Scene {
   bool fill_tile(const Canvas& canvas, const Rect& on_canvas, RgbImage& rgb) const override {
     const RgbImage& frame = *shown_;
     fill_from_source(
-        movie_view(frame.width(), frame.height(), canvas), frame.width(), frame.height(), canvas,
-        on_canvas,
+        movie_view(frame.width(), frame.height(), canvas, fit_), frame.width(), frame.height(),
+        canvas, on_canvas,
         [&frame](int y, int x_begin, int x_end, std::uint8_t* out) {
           std::memcpy(out, frame.row(y).data() + 3 * x_begin,
                       static_cast<std::size_t>(x_end - x_begin) * 3);
@@ -48,13 +48,15 @@ class MovieScene : public Scene {
 
   MovieFile movie_;
   double rate_, fps_;
+  SourceFit fit_;
   const RgbImage* shown_ = nullptr;
 };
 
 }  // namespace
 
-std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate) {
-  return std::make_unique<MovieScene>(file, rate);
+std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate,
+                                        SourceFit fit) {
+  return std::make_unique<MovieScene>(file, rate, fit);
 }
 
 }  // namespace l2::detail

@@ -11,11 +11,13 @@ namespace {
 
 class PictureScene : public Scene {
  public:
-  explicit PictureScene(const std::filesystem::path& file) : picture_(file) { lit_ = false; }
+  PictureScene(const std::filesystem::path& file, SourceFit fit) : picture_(file), fit_(fit) {
+    lit_ = false;
+  }
   const char* name() const override { return "picture"; }
 
   bool fill_tile(const Canvas& canvas, const Rect& on_canvas, RgbImage& rgb) const override {
-    const SourceView view = picture_view(frame_, picture_.width(), picture_.height(), canvas);
+    const SourceView view = picture_view(frame_, picture_.width(), picture_.height(), canvas, fit_);
     fill_from_source(
         view, picture_.width(), picture_.height(), canvas, on_canvas,
         [this](int y, int x_begin, int x_end, std::uint8_t* out) {
@@ -30,13 +32,14 @@ class PictureScene : public Scene {
 
  private:
   PictureRegions picture_;
+  SourceFit fit_;
   int frame_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file) {
-  return std::make_unique<PictureScene>(file);
+std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit) {
+  return std::make_unique<PictureScene>(file, fit);
 }
 
 }  // namespace l2::detail

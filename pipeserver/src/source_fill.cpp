@@ -27,7 +27,7 @@ void fill_from_source(const SourceView& view, int source_width, int source_heigh
   std::vector<long> columns(static_cast<std::size_t>(on_canvas.w));
   long first = source_width, last = -1;
   for (int i = 0; i < on_canvas.w; ++i) {
-    const long sx = source_index(view.centre_x, view.scale, canvas.width, on_canvas.x + i);
+    const long sx = source_index(view.centre_x, view.scale_x, canvas.width, on_canvas.x + i);
     columns[static_cast<std::size_t>(i)] = sx;
     if (sx >= 0 && sx < source_width) {
       first = std::min(first, sx);
@@ -39,7 +39,7 @@ void fill_from_source(const SourceView& view, int source_width, int source_heigh
   long span_row = -1;  // the source row in `span`
   for (int j = 0; j < on_canvas.h; ++j) {
     std::uint8_t* out = rgb.row(j).data();
-    const long sy = source_index(view.centre_y, view.scale, canvas.height, on_canvas.y + j);
+    const long sy = source_index(view.centre_y, view.scale_y, canvas.height, on_canvas.y + j);
     if (span.empty() || sy < 0 || sy >= source_height) {
       std::memset(out, 0, rgb.stride());
       continue;

@@ -37,24 +37,56 @@ long sampled(double centre, double scale, int size, int x) {
 
 TEST(PictureView, FrameZeroShowsAWholeSideCentred) {
   const SourceView v = picture_view(0, kWidth, kHeight, {136, 48});
-  EXPECT_DOUBLE_EQ(v.scale, 600.0 / 136);  // the width: 600/136 < 400/48
+  EXPECT_DOUBLE_EQ(v.scale_x, 600.0 / 136);  // the width: 600/136 < 400/48
   EXPECT_DOUBLE_EQ(v.centre_x, 300);
   EXPECT_DOUBLE_EQ(v.centre_y, 200);
   // Half a period on, one picture pixel per canvas pixel.
-  EXPECT_NEAR(picture_view(kPictureZoomPeriod / 2, kWidth, kHeight, {136, 48}).scale, 1, 1e-12);
+  EXPECT_NEAR(picture_view(kPictureZoomPeriod / 2, kWidth, kHeight, {136, 48}).scale_x, 1, 1e-12);
   // A picture smaller than the canvas is magnified to cover it, and stays so.
-  EXPECT_DOUBLE_EQ(picture_view(77, 68, 12, {136, 48}).scale, 0.25);
+  EXPECT_DOUBLE_EQ(picture_view(77, 68, 12, {136, 48}).scale_x, 0.25);
 }
 
 TEST(PictureView, TheCanvasStaysCoveredAllAlongThePath) {
   const Canvas canvas{136, 48};
   for (int k = 0; k < 3000; k += 7) {
     const SourceView v = picture_view(k, kWidth, kHeight, canvas);
-    EXPECT_GE(sampled(v.centre_x, v.scale, canvas.width, 0), 0) << k;
-    EXPECT_LT(sampled(v.centre_x, v.scale, canvas.width, canvas.width - 1), kWidth) << k;
-    EXPECT_GE(sampled(v.centre_y, v.scale, canvas.height, 0), 0) << k;
-    EXPECT_LT(sampled(v.centre_y, v.scale, canvas.height, canvas.height - 1), kHeight) << k;
+    EXPECT_GE(sampled(v.centre_x, v.scale_x, canvas.width, 0), 0) << k;
+    EXPECT_LT(sampled(v.centre_x, v.scale_x, canvas.width, canvas.width - 1), kWidth) << k;
+    EXPECT_GE(sampled(v.centre_y, v.scale_y, canvas.height, 0), 0) << k;
+    EXPECT_LT(sampled(v.centre_y, v.scale_y, canvas.height, canvas.height - 1), kHeight) << k;
   }
+}
+
+// A 600x400 source on a 136x48 canvas (wider than the source's 3:2): fit shows all of it (the
+// height decides, bars left and right), fill covers the canvas (the width decides), stretch
+// scales each axis apart so the source's corners are the canvas's.
+TEST(SourceFit, EachFitLaysTheSourceAsItsNameSays) {
+  const Canvas canvas{136, 48};
+  const SourceView fit = movie_view(kWidth, kHeight, canvas, SourceFit::Fit);
+  EXPECT_DOUBLE_EQ(fit.scale_x, 400.0 / 48);
+  EXPECT_DOUBLE_EQ(fit.scale_y, 400.0 / 48);
+  EXPECT_LT(sampled(fit.centre_x, fit.scale_x, canvas.width, 0), 0);  // a bar on the left
+  const SourceView fill = movie_view(kWidth, kHeight, canvas, SourceFit::Fill);
+  EXPECT_DOUBLE_EQ(fill.scale_x, 600.0 / 136);
+  EXPECT_DOUBLE_EQ(fill.scale_y, 600.0 / 136);
+  EXPECT_GT(sampled(fill.centre_y, fill.scale_y, canvas.height, 0), 0);  // cropped at the top
+  const SourceView stretch = movie_view(kWidth, kHeight, canvas, SourceFit::Stretch);
+  EXPECT_DOUBLE_EQ(stretch.scale_x, 600.0 / 136);
+  EXPECT_DOUBLE_EQ(stretch.scale_y, 400.0 / 48);
+  // Nearest sampling at pixel centres: the first and last canvas pixels sample within the
+  // first and last scale's worth of source pixels on each axis.
+  EXPECT_EQ(sampled(stretch.centre_x, stretch.scale_x, canvas.width, 0), 2);  // 0.5 * 4.41
+  EXPECT_EQ(sampled(stretch.centre_x, stretch.scale_x, canvas.width, 135), 597);
+  EXPECT_EQ(sampled(stretch.centre_y, stretch.scale_y, canvas.height, 0), 4);  // 0.5 * 8.33
+  EXPECT_EQ(sampled(stretch.centre_y, stretch.scale_y, canvas.height, 47), 395);
+  // The picture's default is fill, as before --fit; its zoom still reaches 1:1 on both axes.
+  EXPECT_DOUBLE_EQ(picture_view(0, kWidth, kHeight, canvas).scale_x, fill.scale_x);
+  const SourceView near =
+      picture_view(kPictureZoomPeriod / 2, kWidth, kHeight, canvas, SourceFit::Stretch);
+  EXPECT_NEAR(near.scale_x, 1, 1e-12);
+  EXPECT_NEAR(near.scale_y, 1, 1e-12);
+  EXPECT_EQ(parse_source_fit("stretch"), SourceFit::Stretch);
+  EXPECT_EQ(parse_source_fit("cover"), std::nullopt);
 }
 
 TEST(PictureScene, RoutedDisplaysArePicturePixels) {
@@ -75,9 +107,9 @@ TEST(PictureScene, RoutedDisplaysArePicturePixels) {
       const Rect on = d.on_canvas();
       long wrong = 0;
       for (int y = 0; y < shown.height(); ++y) {
-        const long sy = sampled(v.centre_y, v.scale, canvas.height, on.y + y);
+        const long sy = sampled(v.centre_y, v.scale_y, canvas.height, on.y + y);
         for (int x = 0; x < shown.width(); ++x) {
-          const long sx = sampled(v.centre_x, v.scale, canvas.width, on.x + x);
+          const long sx = sampled(v.centre_x, v.scale_x, canvas.width, on.x + x);
           wrong += !(shown.at(x, y) == pattern(static_cast<int>(sx), static_cast<int>(sy)));
         }
       }

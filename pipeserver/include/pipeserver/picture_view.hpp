@@ -1,9 +1,12 @@
 // Where a picture or a movie frame (the source) lies on the canvas, frame by frame. Canvas
 // pixel (X, Y) shows source pixel
-//   (floor(centre_x + (X + 0.5 - W / 2) * scale), floor(centre_y + (Y + 0.5 - H / 2) * scale))
+//   (floor(centre_x + (X + 0.5 - W / 2) * scale_x), floor(centre_y + (Y + 0.5 - H / 2) * scale_y))
 // for a W x H canvas, rows top to bottom in both, and black where that lies outside the
 // source: nearest sampling, so every pixel shown is one of the source's, on every tile alike.
 #pragma once
+
+#include <optional>
+#include <string_view>
 
 #include "pipeserver/camera.hpp"
 
@@ -11,20 +14,29 @@ namespace l2 {
 
 struct SourceView {
   double centre_x = 0, centre_y = 0;  // the source point at the canvas's centre
-  double scale = 1;                   // source pixels per canvas pixel
+  double scale_x = 1, scale_y = 1;    // source pixels per canvas pixel, across and down
 };
+
+// How a picture or movie frame is laid on the canvas (--fit): all of it in view, black bars on
+// two sides (fit); the canvas covered, the source cropped on two sides (fill); or both axes
+// scaled apart to cover the canvas exactly (stretch).
+enum class SourceFit { Fit, Fill, Stretch };
+std::optional<SourceFit> parse_source_fit(std::string_view name);  // "fit", "fill", "stretch"
 
 // Frames a zoom takes to go from the picture's cover view to 1:1 and back.
 inline constexpr int kPictureZoomPeriod = 600;
 
-// The picture scene: frame 0 shows the picture as large as it covers the canvas (all of its
-// width or all of its height), centred; it zooms in to one picture pixel per canvas pixel at
-// frame kPictureZoomPeriod / 2 and out again, panning meanwhile along a Lissajous path that
-// keeps the canvas covered. A picture smaller than the canvas stays at its cover view.
-SourceView picture_view(int frame, int source_width, int source_height, const Canvas& canvas);
+// The picture scene: frame 0 shows the picture laid on the canvas as `fit` says (by default as
+// large as it covers the canvas: all of its width or all of its height), centred; it zooms in
+// to one picture pixel per canvas pixel at frame kPictureZoomPeriod / 2 and out again, panning
+// meanwhile along a Lissajous path that keeps as much of the canvas covered as frame 0 did. A
+// picture smaller than the canvas stays at its frame-0 view.
+SourceView picture_view(int frame, int source_width, int source_height, const Canvas& canvas,
+                        SourceFit fit = SourceFit::Fill);
 
-// The movie scene: the whole frame, as large as fits the canvas, centred (black bars on the
-// other sides).
-SourceView movie_view(int source_width, int source_height, const Canvas& canvas);
+// The movie scene: the whole frame laid on the canvas as `fit` says (by default as large as it
+// fits, centred, black bars on the other sides).
+SourceView movie_view(int source_width, int source_height, const Canvas& canvas,
+                      SourceFit fit = SourceFit::Fit);
 
 }  // namespace l2

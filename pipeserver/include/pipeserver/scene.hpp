@@ -54,6 +54,9 @@ struct SceneOptions {
   // movie: application frames per second the movie's clock runs at (application frame k shows
   // the movie at k / movie_rate seconds); 0: movie frame k is application frame k.
   double movie_rate = 0;
+  // picture, movie: how the source is laid on the canvas, "fit", "fill" or "stretch"
+  // (picture_view.hpp); empty: the scene's own (picture: fill, movie: fit).
+  std::string fit;
   CameraOptions camera;  // every scene
 };
 
