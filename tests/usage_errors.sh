@@ -144,6 +144,11 @@ bad_value "--wall excludes --print-default" tilelayout --print-default \
 bad_value "The following argument was not expected: $root/walls/kd-2x2.toml" tilelayout \
   "$root/walls/kd-2x2.toml"
 bad_value "--wall: File does not exist: /nonexistent.toml" l2wall run --wall /nonexistent.toml
+# A mistyped option was only "not expected": the closest option of that (sub)command is named.
+bad_value "not expected: 60 --refrsh (did you mean --refresh?)" l2wall run --refrsh 60
+bad_value "not expected: x --wal (did you mean --wall?)" tilelayout --wal x
+bad_value "not expected: --ready-timout=5 (did you mean --ready-timeout?)" pipeserver \
+  --ready-timout=5 --out /tmp/x
 # lightning2_emu: what its options say in their text is a usage error too (it exited 1).
 bad_value "--displays: display 0: '640x' is not WIDTHxHEIGHT" lightning2_emu route \
   --displays 640x --out /tmp x.png
