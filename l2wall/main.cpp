@@ -164,7 +164,9 @@ int main(int argc, char** argv) {
                          "a pipeserver waits for READY before asking again with SYNC?");
   // A plain flag: CLI11 2.1 lists a negated one as "--no-progress{false}".
   run->add_flag_callback(
-      "--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");
+      "--no-progress", [&o] { o.progress = false; },
+      "no progress line on stderr (there is one only when stderr is a terminal: none in a log "
+      "file or through mpirun)");
   run->add_option("--show", o.show,
                   "put the displays on screen as they swap (needs an X display; without one, "
                   "run under Xvfb). window: one window laying out the wall as the wall file "

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -49,7 +50,11 @@ class LiveRun {
         saved_(parse_saved_frames(o.keep)),
         wall_(o.wall.empty() ? default_wall() : load_wall(o.wall)),
         layout_(plan_layout(wall_)),
-        records_(static_cast<std::size_t>(o.frames)) {}
+        records_(static_cast<std::size_t>(o.frames)) {
+    // A line redrawn with \r is for a terminal: in a log file, or through mpirun, it is one
+    // line growing by a frame at every swap.
+    o_.progress = o_.progress && isatty(STDERR_FILENO) == 1;
+  }
 
   ~LiveRun() { shut_down(); }
 

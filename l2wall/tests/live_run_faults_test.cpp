@@ -1,5 +1,5 @@
-// `l2wall run` when things go wrong: a killed or hung pipeserver, a terminated run, line noise
-// and a lost READY on the back-channel. Real processes, real ptys.
+// `l2wall run` when things go wrong: a killed or hung pipeserver, a terminated run, line noise and
+// a lost READY on the back-channel; what its stderr holds in a log file. Real processes, real ptys.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -102,6 +103,20 @@ TEST(LiveRun, WarnsOfWhatTilelayoutWarnsOf) {
   EXPECT_NE(run.output().find("l2wall: " + warning), std::string::npos) << run.output();
   EXPECT_EQ(tilelayout_status, 0);
   EXPECT_NE(tilelayout_out.find("\n" + warning), std::string::npos) << tilelayout_out;
+  expect_clean(run);
+}
+
+// The progress line redraws itself with \r: in a log file (or through mpirun) it was one line
+// growing by a frame at every swap. Its stderr a file, a run prints none, without --no-progress.
+TEST(LiveRun, NoProgressLineWhenStderrIsNotATerminal) {
+  WallRun run("log-file", {"--frames", "5", "--refresh", "0", "--keep", "none"}, {}, false, "",
+              true);
+  const ExitStatus status = run.wait(60s);
+  const std::string output = run.output();
+  EXPECT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_EQ(output.find('\r'), std::string::npos) << output;
+  EXPECT_EQ(output.find(" on the displays, "), std::string::npos) << output;
+  EXPECT_NE(output.find("l2wall run: 5 frames on 4 displays"), std::string::npos) << output;
   expect_clean(run);
 }
 

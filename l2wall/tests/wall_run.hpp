@@ -43,17 +43,19 @@ class WallRun {
   // leads a session and process group of its own (setsid), which its pipeservers join, as a
   // command started from a terminal leads the terminal's foreground group. `launcher`: words
   // (shell syntax) that start l2wall, e.g. "mpirun -np 6"; pid() is then the launcher's.
+  // `progress`: without --no-progress, so the run decides for itself (its stderr is a file).
   WallRun(const std::string& name, const std::vector<std::string>& args,
           const std::function<void(const fs::path& out)>& before = {}, bool own_session = false,
-          const std::string& launcher = "")
+          const std::string& launcher = "", bool progress = false)
       : dir_(fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "out");
     if (before) before(dir_ / "out");
     // setsid execs l2wall in place (this shell leads no group), so pid() stays l2wall's.
     std::string command =
-        fmt::format("exec {}{}'{}' run --out '{}' --no-progress", own_session ? "setsid " : "",
-                    launcher.empty() ? "" : launcher + " ", L2WALL_PATH, (dir_ / "out").string());
+        fmt::format("exec {}{}'{}' run --out '{}'{}", own_session ? "setsid " : "",
+                    launcher.empty() ? "" : launcher + " ", L2WALL_PATH, (dir_ / "out").string(),
+                    progress ? "" : " --no-progress");
     for (const auto& a : args) command += " '" + a + "'";
     command += fmt::format(" > '{}' 2>&1", (dir_ / "output.txt").string());
     // exec: the shell becomes l2wall, so pid() is l2wall's and names its shm segments.
