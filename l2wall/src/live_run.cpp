@@ -70,6 +70,7 @@ class LiveRun {
     make_paths();
     start_balance();
     backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
+    pipeservers_started_ = true;
     for (auto& p : paths_) p->open(pipeservers_, milliseconds(o_.start_timeout_ms), watch_);
     // A pipeserver that dies before every pipeserver's first frame is a start-up fault, survived or
     // not.
@@ -81,7 +82,7 @@ class LiveRun {
       pipeservers_.finish(milliseconds(10000));
       for (auto& p : paths_) p->finish();
     }
-    write_report();
+    write_report("");
     if (stopped_) {
       std::fprintf(stderr, "l2wall: stopped by signal %d (%s) after %d frames; report: %s\n",
                    stopped_, strsignal(stopped_), shown_, o_.out.c_str());
@@ -127,6 +128,21 @@ class LiveRun {
     } catch (const std::exception& e) {
       std::fprintf(stderr, "l2wall: could not save the displays: %s\n", e.what());
       return std::nullopt;
+    }
+  }
+
+  // After a fault, once every process is ended (their logs are complete): report.csv and
+  // summary.txt of the frames that reached the displays before it, the summary's first line
+  // naming the fault; the summary printed as at a run's end. Nothing when the pipeservers had
+  // not started: nothing was measured.
+  void write_report_after_fault(const std::string& fault) {
+    if (!pipeservers_started_) return;
+    try {
+      o_.frames = shown_;
+      records_.resize(static_cast<std::size_t>(shown_));
+      write_report(fault);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "l2wall: could not write the report: %s\n", e.what());
     }
   }
 
@@ -466,7 +482,8 @@ class LiveRun {
     std::fflush(stderr);
   }
 
-  void write_report() {
+  // `fault`: the fault that ended the run at frame shown_, or empty.
+  void write_report(const std::string& fault) {
     if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     std::vector<std::string> pipeserver_logs;
@@ -474,8 +491,8 @@ class LiveRun {
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
                               (balance_ ? balance_->summary() : std::string());
     const std::string summary =
-        write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra);
-    if (o_.progress) std::fputs("\n", stderr);
+        write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
+    if (o_.progress && fault.empty()) std::fputs("\n", stderr);  // a fault's line ended it
     std::fputs(summary.c_str(), stdout);
   }
 
@@ -498,6 +515,7 @@ class LiveRun {
                           pipeservers_.serve_channels();
                         }};
   bool progress_shown_ = false;
+  bool pipeservers_started_ = false;
   bool links_open_ = false;  // every pipeserver delivered its first frame
   int shown_ = 0;            // frames 0 .. shown_-1 have reached every display (and were checked)
   bool latency_ok_ = true;
@@ -527,6 +545,7 @@ int run_wall(const RunOptions& options, const RunBackends& backends) {
         std::fprintf(stderr, "l2wall: displays as they were: %s/fault/%s\n", options.out.c_str(),
                      note->c_str());
       run->shut_down();
+      run->write_report_after_fault(e.what());
     }
     const int signal = stop_signal_received();
     return signal ? stopped_exit_status(signal) : 1;

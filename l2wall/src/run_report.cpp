@@ -93,7 +93,8 @@ RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
       t.route.push_back(r.route_ms);
       t.swap.push_back(ms_between(r.in_time, r.swap_time));
     }
-    t.refresh_hz = o.refresh_hz;
+    // With no frame shown (a fault before the first) nothing limited anything.
+    if (!records.empty()) t.refresh_hz = o.refresh_hz;
   }
   return t;
 }
@@ -103,7 +104,7 @@ RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
 std::string write_run_report(const RunOptions& o, const Wall& wall,
                              const std::vector<std::string>& pipeserver_logs,
                              const std::vector<FrameRecord>& records, const RunTotals& totals,
-                             const std::string& extra) {
+                             const std::string& extra, const std::string& fault) {
   const int frames = static_cast<int>(records.size());
   std::vector<PipeserverLog> logs;
   for (const std::string& path : pipeserver_logs) logs.push_back(read_pipeserver_log(path, frames));
@@ -130,17 +131,25 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
                                : fmt::format("{} refreshes at {}", totals.refreshes,
                                              o.refresh_hz > 0 ? fmt::format("{:g} Hz", o.refresh_hz)
                                                               : std::string("full speed"));
-  std::string summary = fmt::format(
-      "l2wall run: {} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
-      frames, wall.displays.size(), pipeserver_logs.size(), seconds,
-      seconds > 0 ? frames / seconds : 0.0, pace);
+  // A run a fault ended says so first; its figures are those of the frames before the fault.
+  std::string summary =
+      fault.empty()
+          ? std::string("l2wall run: ")
+          : fmt::format("l2wall run: ended in a fault at frame {}: {}\nup to the fault: ", frames,
+                        fault);
+  summary +=
+      fmt::format("{} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
+                  frames, wall.displays.size(), pipeserver_logs.size(), seconds,
+                  seconds > 0 ? frames / seconds : 0.0, pace);
   if (writing_s >= 0.005) {
     summary += fmt::format(
         "of which {:.2f} s writing the pictures kept during the run (--keep): without them the "
         "run would be faster\n",
         writing_s);
   }
-  if (totals.latency_measured) {
+  if (records.empty()) {
+    summary += "latency: not measured (no frame reached the displays)\n";
+  } else if (totals.latency_measured) {
     summary += fmt::format(
         "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
         "measured from the frame stamps on the displays: min {}, max {}\n",

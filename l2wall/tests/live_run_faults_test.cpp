@@ -1,5 +1,6 @@
-// `l2wall run` when things go wrong: a killed or hung pipeserver, a terminated run, line noise and
-// a lost READY on the back-channel; what its stderr holds in a log file. Real processes, real ptys.
+// `l2wall run` when things go wrong: a killed or hung pipeserver (and the report of the frames
+// before it), a terminated run, line noise and a lost READY on the back-channel; what its stderr
+// holds in a log file. Real processes, real ptys.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -146,6 +147,38 @@ TEST(LiveRun, SummaryThatCannotBeWrittenIsNamed) {
   expect_clean(run);
 }
 
+// A run a fault ended wrote no report.csv or summary.txt: what it had measured was lost. Now
+// report.csv has a row for every frame that reached the displays before the fault (frames
+// 0..K-1, each with its latency), and the summary's first line names the fault at frame K in
+// the words of its line on stderr (`fault`: how that line starts, after "l2wall: ").
+void expect_report_up_to_the_fault(const WallRun& run, const std::string& fault) {
+  const std::string output = run.output();
+  const auto at = output.find("l2wall: " + fault);
+  ASSERT_NE(at, std::string::npos) << output;
+  const std::string line = output.substr(at + 8, output.find('\n', at) - at - 8);
+  const std::string summary = slurp(run.out() / "summary.txt");
+  int k = -1;
+  ASSERT_EQ(std::sscanf(summary.c_str(), "l2wall run: ended in a fault at frame %d: ", &k), 1)
+      << summary;
+  ASSERT_GE(k, 1) << summary;  // the pipeservers had rendered a few frames
+  EXPECT_EQ(summary.substr(0, summary.find('\n')),
+            fmt::format("l2wall run: ended in a fault at frame {}: {}", k, line));
+  EXPECT_NE(summary.find(fmt::format("\nup to the fault: {} frames on 4 displays from 4 "
+                                     "pipeservers in ",
+                                     k)),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("\nlatency: 1 frame "), std::string::npos) << summary;
+  const auto rows = read_csv(run.out() / "report.csv");
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(k) + 1) << summary;
+  for (int f = 0; f < k; ++f) {
+    const auto& row = rows[static_cast<std::size_t>(f) + 1];
+    ASSERT_GE(row.size(), 6u) << "frame " << f;
+    EXPECT_EQ(row[0], std::to_string(f));
+    EXPECT_EQ(row[3], "1") << "frame " << f;  // latency
+  }
+}
+
 TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
   WallRun run("killed", {"--frames", "100000", "--refresh", "60"});
   const pid_t victim = running_pipeserver(run, 1);
@@ -163,6 +196,8 @@ TEST(LiveRun, KilledPipeserverIsNamedAndEverythingIsCleanedUp) {
       << output;
   EXPECT_NE(output.find("while rendering frame "), std::string::npos) << output;
   EXPECT_TRUE(fs::exists(run.out() / "fault" / "display-0.png")) << output;
+  expect_report_up_to_the_fault(run,
+                                fmt::format("pipeserver 1 (pid {}) killed by signal 9", victim));
   expect_clean(run);
 }
 
@@ -183,6 +218,7 @@ TEST(LiveRun, HungPipeserverIsNamedWithinTheStallTimeout) {
   EXPECT_NE(output.find(" (stopped by a signal); the other pipeservers are waiting for READY; "),
             std::string::npos)
       << output;
+  expect_report_up_to_the_fault(run, "no display swap for 2000 ms: ");
   expect_clean(run);
 }
 

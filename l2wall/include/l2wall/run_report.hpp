@@ -1,7 +1,8 @@
-// What a live run records per frame, and the report it writes at the end: report.csv (one row
-// per frame: refreshes, latency, route and swap time, per pipeserver render time, READY wait, SYNC?
-// retries) and summary.txt (frames per second, measured latency, the spread of render, route
-// and swap time and what limited the run, back-channel counts).
+// What a live run records per frame, and the report it writes at the end, also when a fault ended
+// it (of the frames before the fault): report.csv (one row per frame: refreshes, latency, route
+// and swap time, per pipeserver render time, READY wait, SYNC? retries) and summary.txt (frames
+// per second, measured latency, the spread of render, route and swap time and what limited the
+// run, back-channel counts).
 #pragma once
 
 #include <cstdint>
@@ -35,10 +36,12 @@ struct RunTotals {
 
 // Writes OUT/report.csv and OUT/summary.txt from the records and the pipeservers' reports
 // (`pipeserver_logs`: pipeserver-<i>.log, in pipeserver order); returns the summary. `extra` lines
-// go into the summary before its last line.
+// go into the summary before its last line. `fault`: the one-line reason of the fault that ended
+// the run at frame records.size() (the summary's first line says so), or empty for a run that
+// ended as it should.
 std::string write_run_report(const RunOptions& o, const Wall& wall,
                              const std::vector<std::string>& pipeserver_logs,
                              const std::vector<FrameRecord>& records, const RunTotals& totals,
-                             const std::string& extra);
+                             const std::string& extra, const std::string& fault);
 
 }  // namespace l2
