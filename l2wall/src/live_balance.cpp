@@ -176,7 +176,11 @@ std::string LiveBalance::summary() const {
   }
   s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
-  for (const std::string& r : rejected_) s += fmt::format("balance: not used, {}\n", r);
+  // The planner's reason is a long line, and on a tightly packed wall nearly every frame's plan
+  // is refused for much the same one: the first in full, the rest counted.
+  if (!rejected_.empty()) s += fmt::format("balance: not used, {}\n", rejected_.front());
+  if (const std::size_t more = rejected_.size() > 1 ? rejected_.size() - 1 : 0; more > 0)
+    s += fmt::format("balance: {} more layout{} refused, as above\n", more, more == 1 ? "" : "s");
   for (const Loss& l : losses_) {
     const int end = l.first_without < 0 ? frames_ : std::min(l.first_without, frames_);
     const int from = std::min(l.first_missing, end);

@@ -171,5 +171,37 @@ TEST(LiveRunBalance, StripsRetileLiveOnTheVizserverPathToo) {
   expect_clean(both);
 }
 
+// On a tightly packed wall nearly every frame's plan is refused, and each refusal was a line of
+// the planner's reason (200 to 300 characters) in the summary: 5 frames, 4 such lines. Here no
+// strip fits (a strip is the display's width, a framebuffer half of it), so every plan from
+// frame 1 on is refused: the first is given in full, the others counted.
+TEST(LiveRunBalance, RefusedLayoutsAreCountedAfterTheFirst) {
+  const fs::path wall = fs::temp_directory_path() / fmt::format("l2-refused-{}.toml", getpid());
+  std::ofstream(wall) << "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 320\nheight = 240\n"
+                         "[tiling]\nkind = \"grid\"\ntile_width = 160\ntile_height = 240\n"
+                         "[pipeservers]\ncount = 2\nframebuffer_width = 200\n"
+                         "framebuffer_height = 260\n";
+  WallRun run("refused", {"--wall", wall.string(), "--balance", "strips", "--frames", "5",
+                          "--refresh", "0", "--keep", "none"});
+  const ExitStatus status = run.wait(60s);
+  fs::remove(wall);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  std::vector<std::string> long_lines, refusals;
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);) {
+    if (line.size() > 160) long_lines.push_back(line);
+    if (line.rfind("balance: not used, ", 0) == 0) refusals.push_back(line);
+  }
+  ASSERT_EQ(refusals.size(), 1u) << output;
+  EXPECT_EQ(refusals.front().rfind("balance: not used, frame 1: ", 0), 0u) << output;
+  EXPECT_LE(long_lines.size(), 1u) << output;
+  EXPECT_NE(output.find("\nbalance: 3 more layouts refused, as above\n"), std::string::npos)
+      << output;
+  EXPECT_NE(slurp(run.out() / "summary.txt").find("\nbalance: 3 more layouts refused, as above\n"),
+            std::string::npos);
+  expect_clean(run);
+}
+
 }  // namespace
 }  // namespace l2

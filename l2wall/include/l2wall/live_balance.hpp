@@ -58,8 +58,8 @@ class LiveBalance {
   // The layout frame `frame` is rendered in (0: the start, then one more each change).
   int layout_of(int frame) const;
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
-  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, rejected plans,
-  // the pipeservers lost and the frames stale.
+  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, the first rejected
+  // plan in full and how many more were rejected, the pipeservers lost and the frames stale.
   std::string summary() const;
   // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame 0: the
   // wall's plan, which the pipeservers start in).
