@@ -52,7 +52,10 @@ class KilledVizserver : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(KilledVizserver, IsNamedWithItsFrameAndEverythingIsCleanedUp) {
   const std::string path = GetParam();
-  WallRun run("viz-killed-" + path, {"--frames", "100000", "--path", path, "--keep", "3"});
+  // A long READY timeout: on a loaded machine the pipeservers must not give up on their own
+  // before the compositing server is killed (this test is about that kill).
+  WallRun run("viz-killed-" + path,
+              {"--frames", "100000", "--path", path, "--keep", "3", "--ready-timeout", "10000"});
   const pid_t server = vizserver_after(run, 3, path == "both" ? "wall-vizserver.png" : "wall.png");
   ASSERT_GT(server, 0) << run.output();
   ASSERT_EQ(kill(server, SIGKILL), 0);

@@ -21,6 +21,11 @@
 namespace l2::viz {
 namespace {
 
+// How long a wait for something that should happen may take before the test gives up: it
+// returns as soon as it happens, so only a failing case waits this long. Generous for the
+// ASan build on a loaded 2-core machine, where a process start or exit can take seconds.
+constexpr auto kPatience = std::chrono::milliseconds(60000);
+
 using namespace std::chrono_literals;
 using ::testing::HasSubstr;
 
@@ -65,12 +70,12 @@ TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
   server.start();
   auto s0 = TileSender::connect("127.0.0.1", server.port(), 0, 1);
   ChildProcess child = spawn(client(server.port(), 1, 1, 0, {"--hang", "0,0,0,4,4,ff0000"}));
-  ASSERT_EQ(child.read_line(Stream::Out, 5000ms), "sent");
+  ASSERT_EQ(child.read_line(Stream::Out, kPatience), "sent");
   child.signal(SIGKILL);
   ASSERT_EQ(exit_of(child, 2000ms), 128 + SIGKILL);
   const auto t0 = Clock::now();
   try {
-    server.wait_frame(0, 5000ms);
+    server.wait_frame(0, kPatience);
     FAIL() << "frame 0 swapped";
   } catch (const VizError& e) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 disconnected during frame 0 (1 tiles "
@@ -91,8 +96,8 @@ TEST(VizServerProcess, TwoPipeserverProcessesComposeOneFrame) {
   server.start();
   ChildProcess c0 = spawn(client(server.port(), 0, 2, 7, {"0,0,0,6,4,102030", "1,0,0,4,4,405060"}));
   ChildProcess c1 = spawn(client(server.port(), 1, 2, 7, {"0,4,0,4,2,708090"}));
-  EXPECT_EQ(c0.read_line(Stream::Out, 5000ms), "swapped 7");
-  EXPECT_EQ(c1.read_line(Stream::Out, 5000ms), "swapped 7");
+  EXPECT_EQ(c0.read_line(Stream::Out, kPatience), "swapped 7");
+  EXPECT_EQ(c1.read_line(Stream::Out, kPatience), "swapped 7");
   EXPECT_EQ(exit_of(c0, 2000ms), 0);
   EXPECT_EQ(exit_of(c1, 2000ms), 0);
   const FramePtr f = server.wait_frame(7, 1000ms);
@@ -107,7 +112,7 @@ TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   const auto dir = fresh_dir("exe");
   ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "16x8,8x8", "--pipeservers", "1",
                             "--viz-port", "0", "--frames", "1", "--out", dir.string()});
-  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
+  const auto line = exe.read_line(Stream::Out, kPatience).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
   auto s = TileSender::connect("127.0.0.1", port, 0, 2);
@@ -125,10 +130,10 @@ TEST(VizServerProcess, ExecutableWritesThePngsOfEachFrame) {
   const std::vector<std::uint8_t> grey(8 * 8 * 3, 128);
   s.send_tile(0, {1, 0, 0, 8, 8}, grey.data(), 24);
   s.finish_frame(0, 2);
-  s.wait_swapped(0, 5000ms);
-  EXPECT_EQ(exe.read_line(Stream::Out, 5000ms),
+  s.wait_swapped(0, kPatience);
+  EXPECT_EQ(exe.read_line(Stream::Out, kPatience),
             "swapped frame 0: 2 tiles, 0 clipped rows, 0 rows for missing displays");
-  EXPECT_EQ(exit_of(exe, 5000ms), 0);
+  EXPECT_EQ(exit_of(exe, kPatience), 0);
   RgbImage want0(16, 8);
   for (int r = 0; r < 2; ++r) {
     for (int c = 0; c < 3; ++c) {
@@ -145,11 +150,11 @@ TEST(VizServerProcess, ExecutableExitsNonZeroWhenAPipeserverDies) {
   const auto dir = fresh_dir("dies");
   ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x8", "--pipeservers", "1", "--frames",
                             "1", "--out", dir.string()});
-  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
+  const auto line = exe.read_line(Stream::Out, kPatience).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
   ChildProcess pipeserver = spawn(client(port, 0, 1, 0, {"--hang", "0,0,0,2,2,ffffff"}));
-  ASSERT_EQ(pipeserver.read_line(Stream::Out, 5000ms), "sent");
+  ASSERT_EQ(pipeserver.read_line(Stream::Out, kPatience), "sent");
   pipeserver.signal(SIGKILL);
   EXPECT_EQ(exit_of(exe, 3000ms), 1);
   EXPECT_FALSE(std::filesystem::exists(dir / "display-0-frame-0.png"));
@@ -165,9 +170,9 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
       spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--frames", "2",
              "--display-stream", fmt::format("127.0.0.1:{}", local_port(listener.get())), "--log",
              (dir / "log.txt").string()});
-  Fd stream = accept_within(listener, 5000ms);
+  Fd stream = accept_within(listener, kPatience);
   ASSERT_TRUE(stream);
-  const Listening l = read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+  const Listening l = read_listening(stream.get(), Clock::now() + kPatience, "vizserver");
   EXPECT_EQ(l.display_count, 1u);
   EXPECT_EQ(l.pipeserver_count, 1u);
   DisplayWatcher watcher(std::move(stream), "vizserver", l.display_count);
@@ -176,8 +181,8 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
     const std::vector<std::uint8_t> tile(4 * 4 * 3, static_cast<std::uint8_t>(0x40 + k));
     s.send_tile(k, {0, 2, 0, 4, 4}, tile.data(), 12);
     s.finish_frame(k, 1);
-    s.wait_swapped(k, 5000ms);
-    const FramePtr f = watcher.take(k, 5000ms);
+    s.wait_swapped(k, kPatience);
+    const FramePtr f = watcher.take(k, kPatience);
     ASSERT_TRUE(f) << "frame " << k;
     RgbImage want(8, 4);
     want.fill_rect(2, 0, 4, 4,
@@ -185,7 +190,7 @@ TEST(VizServerProcess, ExecutableStreamsEveryFrameToItsWatcher) {
                        static_cast<std::uint8_t>(0x40 + k)});
     EXPECT_EQ(f->displays.at(0), want) << "frame " << k;
   }
-  EXPECT_EQ(exit_of(exe, 5000ms), 0);
+  EXPECT_EQ(exit_of(exe, kPatience), 0);
   EXPECT_EQ(exe.read_line(Stream::Out, 100ms), std::nullopt) << "lines go to --log, not stdout";
   std::ifstream log(dir / "log.txt");
   std::string first;
@@ -200,16 +205,16 @@ TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
   ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--viz-port",
                             std::to_string(local_port(taken.get())), "--display-stream",
                             fmt::format("127.0.0.1:{}", local_port(listener.get()))});
-  Fd stream = accept_within(listener, 5000ms);
+  Fd stream = accept_within(listener, kPatience);
   ASSERT_TRUE(stream);
   try {
-    read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+    read_listening(stream.get(), Clock::now() + kPatience, "vizserver");
     FAIL() << "it listened on a taken port";
   } catch (const VizError& e) {
     EXPECT_THAT(e.what(), HasSubstr(fmt::format("vizserver: cannot listen on 127.0.0.1:{}: ",
                                                 local_port(taken.get()))));
   }
-  EXPECT_EQ(exit_of(exe, 5000ms), 1);
+  EXPECT_EQ(exit_of(exe, kPatience), 1);
 }
 
 TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
@@ -217,9 +222,9 @@ TEST(VizServerProcess, ExecutableEndsWhenItsWatcherGoesAway) {
   ChildProcess exe =
       spawn({VIZSERVER_EXE, "--displays", "8x4", "--pipeservers", "1", "--display-stream",
              fmt::format("127.0.0.1:{}", local_port(listener.get()))});
-  Fd stream = accept_within(listener, 5000ms);
+  Fd stream = accept_within(listener, kPatience);
   ASSERT_TRUE(stream);
-  read_listening(stream.get(), Clock::now() + 5000ms, "vizserver");
+  read_listening(stream.get(), Clock::now() + kPatience, "vizserver");
   stream.reset();  // l2wall died: no one is left to compose for
   EXPECT_EQ(exit_of(exe, 3000ms), 1);
 }
@@ -233,7 +238,7 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   ChildProcess exe = spawn({VIZSERVER_EXE, "--displays", "4x4", "--pipeservers", "1", "--frames",
                             "1", "--out", dir.string()});
   ::unsetenv(kTokenVariable);
-  const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
+  const auto line = exe.read_line(Stream::Out, kPatience).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
   EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1), VizError);
@@ -241,8 +246,8 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   with_token.token = token;
   auto s = TileSender::connect("127.0.0.1", port, 0, 1, with_token);
   s.finish_frame(0, 0);
-  s.wait_swapped(0, 5000ms);
-  EXPECT_EQ(exit_of(exe, 5000ms), 0);
+  s.wait_swapped(0, kPatience);
+  EXPECT_EQ(exit_of(exe, kPatience), 0);
   std::filesystem::remove_all(dir);
 }
 
@@ -259,7 +264,7 @@ TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
         spawn({VIZSERVER_EXE, "--displays", "640x480,640x480,640x480,640x480", "--pipeservers", "4",
                "--viz-port", "0", "--frames", std::to_string(frames), "--accept-timeout", "20000",
                "--out", dir.string()});
-    const auto line = exe.read_line(Stream::Out, 5000ms).value_or("");
+    const auto line = exe.read_line(Stream::Out, kPatience).value_or("");
     ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
     const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
     ChildProcess pipeserver(
@@ -277,7 +282,7 @@ TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
     }
     const Finished f = pipeserver.finish(20000ms);
     EXPECT_EQ(f.status.shell_code(), 0) << frames << " frames: " << f.err;
-    EXPECT_EQ(exit_of(exe, 5000ms), 0) << frames << " frames";
+    EXPECT_EQ(exit_of(exe, kPatience), 0) << frames << " frames";
     std::filesystem::remove_all(dir);
   }
 }
@@ -285,8 +290,8 @@ TEST(VizServerProcess, APipeserverWaitsForTheOthersStartUpBeforeItsFirstSwap) {
 TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   ChildProcess help = spawn({VIZSERVER_EXE, "--help"});
   std::string text;
-  while (auto l = help.read_line(Stream::Out, 5000ms)) text += *l + "\n";
-  EXPECT_EQ(exit_of(help, 5000ms), 0);
+  while (auto l = help.read_line(Stream::Out, kPatience)) text += *l + "\n";
+  EXPECT_EQ(exit_of(help, kPatience), 0);
   for (const char* opt :
        {"--displays", "--pipeservers", "--viz-port", "--viz-host", "--frames", "--out",
         "--accept-timeout", "--stall-timeout", "--display-stream", "--log"}) {
@@ -294,18 +299,18 @@ TEST(VizServerProcess, ExecutableHelpAndBadArguments) {
   }
   ChildProcess bad =
       spawn({VIZSERVER_EXE, "--displays", "16y8", "--pipeservers", "1", "--out", "/tmp/x"});
-  EXPECT_EQ(exit_of(bad, 5000ms), 2);
+  EXPECT_EQ(exit_of(bad, kPatience), 2);
   ChildProcess nowhere = spawn({VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1"});
-  EXPECT_EQ(exit_of(nowhere, 5000ms), 2);  // neither --out nor --display-stream
+  EXPECT_EQ(exit_of(nowhere, kPatience), 2);  // neither --out nor --display-stream
   ChildProcess bad_stream = spawn(
       {VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1", "--display-stream", "localhost"});
-  EXPECT_EQ(exit_of(bad_stream, 5000ms), 2);
+  EXPECT_EQ(exit_of(bad_stream, kPatience), 2);
   // An --out folder that cannot be made ends the run before it listens (it failed only at the
   // first swap, after the pipeservers had connected).
   ChildProcess bad_out = spawn(
       {VIZSERVER_EXE, "--displays", "16x8", "--pipeservers", "1", "--out", "/etc/passwd/frames"});
-  EXPECT_EQ(bad_out.read_line(Stream::Out, 5000ms), std::nullopt);  // no "listening on" line
-  EXPECT_EQ(exit_of(bad_out, 5000ms), 1);
+  EXPECT_EQ(bad_out.read_line(Stream::Out, kPatience), std::nullopt);  // no "listening on" line
+  EXPECT_EQ(exit_of(bad_out, kPatience), 1);
 }
 
 }  // namespace
