@@ -80,6 +80,37 @@ WidthScan scan_widths(const Lists& lists, int height) {
   return scan;
 }
 
+// The written grid tile scaled down in eighths, one side or both; the largest that fits.
+std::optional<std::pair<int, int>> fitting_grid_tile(const Wall& wall) {
+  if (wall.tiling.kind != TilingKind::Grid) return std::nullopt;
+  const int tw = wall.tiling.tile_width, th = wall.tiling.tile_height;
+  std::optional<std::pair<int, int>> best;
+  for (int kw = 8; kw >= 1; --kw) {
+    for (int kh = 8; kh >= 1; --kh) {
+      const int w = tw * kw / 8, h = th * kh / 8;
+      if (w < 1 || h < 1 || (kw == 8 && kh == 8)) continue;
+      if (best &&
+          static_cast<long long>(w) * h <= static_cast<long long>(best->first) * best->second)
+        continue;
+      Wall candidate = wall;
+      candidate.tiling.tile_width = w;
+      candidate.tiling.tile_height = h;
+      Tiles t;
+      t.logical = make_logical_tiles(candidate);
+      t.on_displays = split_at_displays(candidate, t.logical);
+      const Lists lists = lists_for(candidate, t, candidate.assignment, candidate.pipeserver_count);
+      if (fits(lists, wall.framebuffer_width, wall.framebuffer_height)) best = std::pair{w, h};
+    }
+  }
+  return best;
+}
+
+// ", with [mesh] board_max_height = 1080" when a framebuffer side passes the board's limit: a
+// framebuffer is one board input, so the limit must grow with it.
+std::string board_clause(int value, int board, const char* key) {
+  return value > board ? fmt::format(" with [mesh] {} = {}", key, value) : std::string();
+}
+
 std::string quoted_policies(const std::vector<AssignmentPolicy>& policies) {
   std::vector<std::string> names;
   for (AssignmentPolicy p : policies) names.push_back(fmt::format("\"{}\"", to_string(p)));
@@ -109,6 +140,7 @@ FitSuggestions suggest_fit(const Wall& wall) {
     fit.width_at_height = scan.width_at_height;
     fit.smallest = scan.smallest;
   }
+  if (!fit.fits) fit.grid_tile = fitting_grid_tile(wall);
   for (int p = 0; p <= static_cast<int>(AssignmentPolicy::AreaBalanced); ++p) {
     const auto policy = static_cast<AssignmentPolicy>(p);
     if (policy == wall.assignment) continue;
@@ -128,16 +160,30 @@ FitSuggestions suggest_fit(const Wall& wall) {
   return fit;
 }
 
-std::string fit_hint(const FitSuggestions& fit) {
+std::string fit_hint(const Wall& wall, const FitSuggestions& fit) {
   if (fit.fits) return "";
   std::vector<std::string> parts;
-  if (fit.height_at_width)
-    parts.push_back(fmt::format("framebuffer_height = {}", *fit.height_at_width));
-  if (fit.width_at_height)
-    parts.push_back(fmt::format("framebuffer_width = {}", *fit.width_at_height));
+  if (fit.height_at_width) {
+    parts.push_back(
+        fmt::format("framebuffer_height = {}{}", *fit.height_at_width,
+                    board_clause(*fit.height_at_width, wall.board_max_height, "board_max_height")));
+  }
+  if (fit.width_at_height) {
+    parts.push_back(
+        fmt::format("framebuffer_width = {}{}", *fit.width_at_height,
+                    board_clause(*fit.width_at_height, wall.board_max_width, "board_max_width")));
+  }
   if (!fit.height_at_width && !fit.width_at_height && fit.smallest) {
-    parts.push_back(fmt::format("framebuffer_width = {} with framebuffer_height = {}",
-                                fit.smallest->first, fit.smallest->second));
+    const auto [w, h] = *fit.smallest;
+    std::string boards = board_clause(w, wall.board_max_width, "board_max_width");
+    const std::string high = board_clause(h, wall.board_max_height, "board_max_height");
+    boards += boards.empty() || high.empty() ? high : " and" + high.substr(5);
+    parts.push_back(
+        fmt::format("framebuffer_width = {} with framebuffer_height = {}{}", w, h, boards));
+  }
+  if (fit.grid_tile) {
+    parts.push_back(fmt::format("[tiling] tile_width = {} with tile_height = {}",
+                                fit.grid_tile->first, fit.grid_tile->second));
   }
   if (!fit.policies.empty()) parts.push_back("assignment = " + quoted_policies(fit.policies));
   if (fit.pipeserver_count)
@@ -178,6 +224,13 @@ std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions
         fmt::format("framebuffer_width = {}, framebuffer_height = {}: the smallest framebuffer{}{}",
                     sw, sh, board_note(sw, wall.board_max_width, "board_max_width"),
                     board_note(sh, wall.board_max_height, "board_max_height")));
+  }
+  if (fit.grid_tile) {
+    lines.push_back(
+        fmt::format("[tiling] tile_width = {}, tile_height = {} (at {}x{}, {}, {}): "
+                    "the largest grid tile that fits",
+                    fit.grid_tile->first, fit.grid_tile->second, w, h, pipeservers,
+                    to_string(wall.assignment)));
   }
   for (AssignmentPolicy p : fit.policies) {
     lines.push_back(

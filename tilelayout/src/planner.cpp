@@ -79,7 +79,7 @@ Distribution distribute(const Wall& wall, const std::vector<Rect>& logical,
 
 // The error with what would fit appended: "...; fits with framebuffer_height = 200 ...".
 LayoutError not_fitting(const Wall& wall, int line, const std::string& what) {
-  const std::string hint = fit_hint(suggest_fit(wall));
+  const std::string hint = fit_hint(wall, suggest_fit(wall));
   return LayoutError(where(wall, line) + what + (hint.empty() ? "" : "; " + hint));
 }
 

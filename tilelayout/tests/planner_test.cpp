@@ -197,7 +197,8 @@ TEST(Planner, PackingErrorsNameFileLineServerAndTile) {
     EXPECT_STREQ(e.what(),
                  "walls/small.toml:13: pipeserver 0: tile 1 (display 0, 100x40 at 0,40) does not "
                  "fit the 200x60 framebuffer: needs 80 rows, 20 too many; what would fit, each "
-                 "alone: framebuffer_height = 80; framebuffer_width = 204; pipeservers.count = 2");
+                 "alone: framebuffer_height = 80; framebuffer_width = 204; [tiling] tile_width = "
+                 "87 with tile_height = 30; pipeservers.count = 2");
   }
 }
 
@@ -334,6 +335,50 @@ TEST(Planner, GonePipeserverTakesNoTiles) {
   }
 }
 
+// Grid tiles scaled down in eighths, worked out by hand. The 100x80 display in 100x40 tiles
+// needs 80 rows of a 200x60 framebuffer; 87x30 tiles (seven eighths across, six down) are six
+// tiles: 87+13 columns by 30+30+20 rows, packed as 89+15+89 columns (30 rows) and 15+89+15 (30):
+// 60 rows. No larger eighth fits: 100x30 and 100x35 keep one 100-column tile a row (80 rows),
+// 75x35 and 87x35 need 70 rows. The idle wall's one 320x240 tile as 320x210 is two tiles, one
+// each (280x240 is as large, found later).
+TEST(Planner, AGridWallIsToldATileSizeThatFits) {
+  const FitSuggestions fit = suggest_fit(
+      parse_wall("[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+                 "[tiling]\nkind = \"grid\"\ntile_width = 100\ntile_height = 40\n"
+                 "[pipeservers]\ncount = 1\nframebuffer_width = 200\nframebuffer_height = 60\n",
+                 "walls/small.toml"));
+  EXPECT_EQ(fit.grid_tile, (std::pair{87, 30}));
+  Wall w = parse_wall(
+      "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 100\nheight = 80\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 87\ntile_height = 30\n"
+      "[pipeservers]\ncount = 1\nframebuffer_width = 200\nframebuffer_height = 60\n",
+      "walls/small.toml");
+  EXPECT_NO_THROW(plan_layout(w));  // the suggestion, applied, plans
+}
+
+// A framebuffer side past the board's input limit needs the [mesh] limit raised with it: the
+// hint says both, so that following it does not end in a second refusal.
+TEST(Planner, AFramebufferPastTheBoardLimitComesWithTheLimit) {
+  const std::string toml =
+      "[display_grid]\ncolumns = 1\nrows = 1\nwidth = 1200\nheight = 1080\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 1200\ntile_height = 1080\n"
+      "[pipeservers]\ncount = 1\nframebuffer_width = 1204\nframebuffer_height = 1000\n";
+  try {
+    plan_layout(parse_wall(toml, "walls/tall.toml"));
+    FAIL();
+  } catch (const LayoutError& e) {
+    const std::string what = e.what();
+    const std::string hint =
+        "what would fit, each alone: framebuffer_height = 1080 with [mesh] board_max_height = "
+        "1080";
+    EXPECT_EQ(what.substr(what.size() - std::min(what.size(), hint.size())), hint) << what;
+  }
+  Wall w = parse_wall(toml, "walls/tall.toml");
+  w.framebuffer_height = 1080;
+  w.board_max_height = 1080;
+  EXPECT_NO_THROW(plan_layout(w));
+}
+
 TEST(Planner, PipeserverWithoutTilesIsRefused) {
   try {
     plan_layout(
@@ -347,7 +392,8 @@ TEST(Planner, PipeserverWithoutTilesIsRefused) {
     EXPECT_STREQ(e.what(),
                  "walls/idle.toml: pipeserver 1 gets no tiles (1 display tiles for 2 "
                  "pipeservers); every pipeserver needs a tile (one without scans out idle frames, "
-                 "which never earn READY); what would fit, each alone: pipeservers.count = 1");
+                 "which never earn READY); what would fit, each alone: [tiling] tile_width = 320 "
+                 "with tile_height = 210; pipeservers.count = 1");
   }
 }
 

@@ -28,6 +28,9 @@ struct FitSuggestions {
   std::optional<std::pair<int, int>> smallest;
   std::vector<AssignmentPolicy> policies;  // other policies that fit at the wall's size
   std::optional<int> pipeserver_count;     // fewest pipeservers that fit at the wall's size
+  // A grid wall: the largest tile (width, height) among the written tile scaled down in eighths,
+  // each side alone or both, that fits at the wall's framebuffer and pipeservers.
+  std::optional<std::pair<int, int>> grid_tile;
   // A pipeserver gets no tile as written: only pipeserver_count and policies can help then.
   bool idle_pipeserver = false;
 };
@@ -36,8 +39,10 @@ FitSuggestions suggest_fit(const Wall& wall);
 
 // One clause for an error line: "what would fit, each alone: framebuffer_height = 200;
 // framebuffer_width = 404; assignment = "blocks" or "area-balanced"; pipeservers.count = 3".
-// Empty when the wall fits or nothing found fits.
-std::string fit_hint(const FitSuggestions& fit);
+// A framebuffer side past the wall's board limit comes with the [mesh] limit it needs too
+// ("framebuffer_height = 1080 with [mesh] board_max_height = 1080"). Empty when the wall fits
+// or nothing found fits.
+std::string fit_hint(const Wall& wall, const FitSuggestions& fit);
 
 // The lines `tilelayout --suggest` prints, one working value each with what it holds to.
 std::vector<std::string> suggestion_lines(const Wall& wall, const FitSuggestions& fit);
