@@ -1,0 +1,222 @@
+#!/usr/bin/env bash
+# The commands the documentation shows are commands the programs take, as written. Every
+# command of one of the project's programs in a fenced shell block or the `command` column of
+# a table of README.md, the parts' READMEs and docs/*.md (tests/docs_commands.py finds them) is
+# run from a scratch folder, its placeholders (WALL, DIR, N, model.glb, /dev/pts/N...) replaced
+# by real values there, `l2wall run` at most 3 frames. It must not exit 2 or print a usage
+# error ("Run with --help"): what every program does with a command line it does not take. A
+# usage error comes at once, so a command is stopped, accepted, once it has used 0.1 s of CPU
+# time (ten times what a usage error takes) or run $deadline s: it is past its command line.
+# A command mpirun starts runs alone, where l2wall stops at once saying mpirun did not start
+# it; one under xvfb-run runs with no X display, where it stops once it needs one. A table
+# cell that is a fragment (it lacks a required argument) and every command written in the
+# text are checked word by word against the program's --help: each option must be one it
+# takes, and no more positional arguments than it takes.
+# Arguments: the programs' paths.
+set -uo pipefail
+command -v python3 >/dev/null || { echo "skipped: no python3 to find the commands"; exit 77; }
+root=$(cd "$(dirname "$0")/.." && pwd)
+helper=$root/tests/docs_commands.py
+deadline=${DOCS_COMMANDS_DEADLINE:-2}  # seconds
+failed=0
+started=$(date +%s%N)
+
+# Not run, with why; their words are still checked against --help. Each entry is the start of
+# a command as the list below prints it (program name, then its words); one that no longer
+# matches a command of the docs fails, so the list follows the docs.
+not_run=(
+  "l2wall golden update|writes the golden images into the source tree"
+)
+# Not commands at all: a program's output quoted in the text.
+not_commands=(
+  "pipeserver 1 disconnected during frame 3|a line the compositing server prints"
+)
+
+declare -A path_of
+names=()
+for program in "$@"; do
+  path_of[$(basename "$program")]=$program
+  names+=("$(basename "$program")=$program")
+done
+
+work=$(mktemp -d)
+pty_pid=""
+cleanup() {
+  [[ -n $pty_pid ]] && kill "$pty_pid" 2>/dev/null && wait "$pty_pid" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+cd "$work" || exit 1
+
+# What the commands take for granted: the repository's walls and model beside them (as when
+# run from a working tree), the displays scripts/main.sh writes, a scanned-out frame, frames
+# captured from a pipeserver (the test pattern), a picture and a movie, a serial line with the
+# emulator's end of the back-channel on it.
+ln -s "$root/walls" walls
+ln -s "$root/data" data
+mkdir -p out/default-wall/frame-9
+cp "$root"/tests/golden_images/kd-2x2-bunny/display-*.png out/default-wall/frame-9/
+"${path_of[tilelayout]}" --scanout out/row-scan >/dev/null
+"${path_of[tilelayout]}" --parity 1 --scanout captured >/dev/null
+if command -v ffmpeg >/dev/null; then
+  ffmpeg -loglevel error -f lavfi -i testsrc=size=320x240:rate=10 -frames:v 1 huge.tif
+  ffmpeg -loglevel error -f lavfi -i testsrc=size=160x120:rate=10 -frames:v 5 -c:v ffv1 clip.mkv
+fi
+"${path_of[sync_backchannel]}" pty --refresh 10 >pty.txt 2>&1 &
+pty_pid=$!
+for _ in $(seq 50); do [[ -s pty.txt ]] && break; sleep 0.1; done
+pty=$(head -1 pty.txt)
+[[ $pty == /dev/pts/* ]] || { echo "FAIL: no pty from sync_backchannel pty: $pty"; exit 1; }
+
+ms() { echo $((($(date +%s%N) - started) / 1000000)); }
+echo "     $(ms) ms: what the commands take for granted made"
+# WHERE KIND MODE WORDS, one command a line (docs_commands.py says what each means).
+python3 "$helper" extract "$root" "${names[@]}" >commands.tsv || { echo "FAIL: extract"; exit 1; }
+[[ $(wc -l <commands.tsv) -gt 50 ]] || { echo "FAIL: found only $(wc -l <commands.tsv) commands"; exit 1; }
+
+# Runs ARGV in its own process group, output to NAME.out and NAME.err, until it ends, or until
+# it is past its command line: it (with its children, as an l2wall run's pipeservers) has
+# used $cpu_ticks ticks of CPU time (a usage error takes a tenth of that), or it has been
+# running $deadline s. Then it is stopped, the group with SIGTERM (l2wall ends a run on it as
+# on Ctrl-C), after 5 s SIGKILL. Sets status (its exit status) and stopped (why it was
+# stopped, or empty).
+cpu_ticks=10
+mkfifo pause.fifo
+exec {pause}<>pause.fifo  # read -t on it: a pause without starting a process
+run_until_accepted() {
+  local name=$1 pid ticks polls=0 limit=$((deadline * 20)) child task stat more children
+  shift
+  setsid env -u DISPLAY -u WAYLAND_DISPLAY -u OMPI_COMM_WORLD_RANK -u OMPI_COMM_WORLD_SIZE \
+    "$@" </dev/null >"$name.out" 2>"$name.err" {pause}<&- &
+  pid=$!
+  stopped=""
+  # Polled with bash's own reads only: a loaded machine is slow to start processes.
+  while kill -0 "$pid" 2>/dev/null; do
+    children=()
+    for task in /proc/"$pid"/task/*/children; do
+      read -r -a more <"$task" 2>/dev/null && children+=("${more[@]}")
+    done
+    ticks=0
+    for child in "$pid" "${children[@]}"; do
+      read -r stat <"/proc/$child/stat" 2>/dev/null || continue
+      read -r -a stat <<<"${stat##*) }"  # after the ")" that ends the name: state, ppid, ...
+      [[ ${stat[0]} == Z ]] && continue
+      ticks=$((ticks + stat[11] + stat[12]))  # utime, stime (fields 14 and 15)
+    done
+    if ((ticks >= cpu_ticks)); then
+      stopped="after $((ticks * 10)) ms of CPU time"
+    elif ((++polls > limit)); then
+      stopped="still running after $deadline s"
+    fi
+    [[ -n $stopped ]] && break
+    read -r -t 0.05 -u "$pause" _
+  done
+  if [[ -n $stopped ]]; then
+    kill -TERM -- -"$pid" 2>/dev/null
+    for ((polls = 0; polls < 100; polls++)); do
+      kill -0 "$pid" 2>/dev/null || break
+      read -r -t 0.05 -u "$pause" _
+    done
+    kill -KILL -- -"$pid" 2>/dev/null
+  fi
+  wait "$pid"
+  status=$?
+  kill -KILL -- -"$pid" 2>/dev/null  # what the group left behind
+}
+
+# "name words..." of an argv, as the lists above and the output name a command.
+shown() {
+  local first
+  first=$(basename "$1")
+  shift
+  echo "$first${*:+ $*}"
+}
+listed() {  # listed ENTRIES... -- TEXT: the reason of the first entry TEXT starts with
+  local text=${*: -1} entry
+  for entry in "${@:1:$#-2}"; do
+    if [[ $text == "${entry%%|*}"* ]]; then
+      echo "${entry#*|}"
+      touch "used-$(echo "${entry%%|*}" | md5sum | cut -c1-8)"
+      return 0
+    fi
+  done
+  return 1
+}
+
+: >words.tsv
+runs=0
+while IFS=$'\t' read -r where kind mode words; do
+  words=${words//\{pty\}/$pty}
+  eval "argv=($words)"  # shell-quoted by the helper: words only, nothing expanded
+  expanded=()
+  for word in "${argv[@]}"; do  # a pattern, as the shell would expand it here
+    if [[ $word == *[*?]* ]] && matches=$(compgen -G "$word"); then
+      mapfile -t -O "${#expanded[@]}" expanded <<<"$matches"
+    else
+      expanded+=("$word")
+    fi
+  done
+  argv=("${expanded[@]}")
+  text=$(shown "${argv[@]}")
+  if why=$(listed "${not_commands[@]}" -- "$text"); then
+    echo "skip $where: $text: $why"
+    continue
+  fi
+  if [[ $mode == words ]]; then
+    printf '%s\t%s\n' "$where" "$words" >>words.tsv
+    continue
+  fi
+  if why=$(listed "${not_run[@]}" -- "$text"); then
+    echo "skip $where: $text: not run: $why"
+    printf '%s\t%s\n' "$where" "$words" >>words.tsv
+    continue
+  fi
+  if [[ $text == *huge.tif* || $text == *clip.mkv* ]] && [[ ! -e huge.tif ]]; then
+    echo "skip $where: $text: not run: no ffmpeg here to make the picture and the movie"
+    printf '%s\t%s\n' "$where" "$words" >>words.tsv
+    continue
+  fi
+  if [[ $mode == help ]]; then  # PROGRAM SUB: SUB among the subcommands its --help lists
+    subcommands=$("${argv[0]}" --help 2>&1 |
+      awk '/^Subcommands:/ {on = 1; next} on && /^$/ {on = 0} on && /^  [a-z]/ {print $1}')
+    if grep -qxF -- "${argv[1]}" <<<"$subcommands"; then
+      echo "ok   $where: $text: a subcommand (--help lists it)"
+    else
+      echo "FAIL $where: $text: not a subcommand; --help lists:" $subcommands
+      failed=1
+    fi
+    continue
+  fi
+  # run or mpi: from the scratch folder, without an X display or mpirun's environment.
+  runs=$((runs + 1))
+  begun=$(ms)
+  run_until_accepted "run-$runs" "${argv[@]}"
+  took="$(($(ms) - begun)) ms"
+  err=$(head -c 300 "run-$runs.err")
+  if [[ $status -eq 2 || $err == *"Run with --help"* ]]; then
+    if [[ $kind == table && $err == *required* ]]; then
+      echo "part $where: $text: a fragment (${err%%$'\n'*}): its words checked below"
+      printf '%s\t%s\n' "$where" "$words" >>words.tsv
+      continue
+    fi
+    echo "FAIL $where: $text: exit $status, a usage error: ${err%%$'\n'*}"
+    failed=1
+  elif [[ $mode == mpi && $err != *"not started by mpirun"* ]]; then
+    echo "FAIL $where: $text: run without mpirun, exit $status without saying so: ${err:0:200}"
+    failed=1
+  elif [[ -n $stopped ]]; then
+    echo "ok   $where: $text: accepted, stopped $stopped ($took)"
+  else
+    echo "ok   $where: $text: exit $status ($took)${err:+: ${err%%$'\n'*}}"
+  fi
+done <commands.tsv
+
+echo "     $(ms) ms: $runs commands run"
+python3 "$helper" check-words "${names[@]}" <words.tsv || failed=1
+
+for entry in "${not_run[@]}" "${not_commands[@]}"; do
+  [[ -e used-$(echo "${entry%%|*}" | md5sum | cut -c1-8) ]] ||
+    { echo "FAIL: skip entry '${entry%%|*}' matches no command of the docs: remove it"; failed=1; }
+done
+echo "$(wc -l <commands.tsv) commands, $runs run, in $(ms) ms"
+exit $failed
