@@ -106,9 +106,12 @@ done
 export L2_CLUSTER_PREFIX=$id OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # hwloc's GL plugin would open X display :0 in every rank.
 export HWLOC_COMPONENTS=-gl
+# Every host is this machine: their ranks share its cores, more ranks than cores, which the
+# hostfile's slots hide from Open MPI; a waiting rank must yield its core, not busy-poll it.
 mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
-  --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24")
+  --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
+  --mca mpi_yield_when_idle 1)
 echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
 # In the background and waited for: a signal to this script is then taken at once (bash runs a
 # trap only after a foreground command ends), and the cleanup ends the run on every host.

@@ -14,9 +14,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "base/fd.hpp"
 #include "base/result.hpp"
+#include "cluster/busy_polling.hpp"
 #include "cluster/coordinator_address.hpp"
 #include "vizserver/socket.hpp"
 
@@ -27,6 +29,8 @@ constexpr int kHostBytes = 64;
 
 struct WireIdentity {
   int pid = 0;
+  int cores = 0;
+  int yields = 1;
   std::array<char, kHostBytes> host{};
   std::array<char, 128> stack{};
 };
@@ -40,13 +44,16 @@ MpiSession::MpiSession() {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   WireIdentity self;
   self.pid = static_cast<int>(getpid());
+  self.cores = static_cast<int>(std::thread::hardware_concurrency());
+  self.yields = mpi_yields_when_idle() ? 1 : 0;
   gethostname(self.host.data(), self.host.size() - 1);
   const std::string stack = network_stack_id();
   std::memcpy(self.stack.data(), stack.data(), std::min(stack.size(), self.stack.size() - 1));
   std::vector<WireIdentity> all(static_cast<std::size_t>(size_));
   MPI_Allgather(&self, sizeof self, MPI_BYTE, all.data(), sizeof self, MPI_BYTE, MPI_COMM_WORLD);
   for (const WireIdentity& w : all)
-    identities_.push_back({w.pid, std::string(w.host.data()), std::string(w.stack.data())});
+    identities_.push_back(
+        {w.pid, std::string(w.host.data()), std::string(w.stack.data()), w.cores, w.yields != 0});
   connect_liveness();
 }
 

@@ -1,6 +1,7 @@
 // One process's part in an MPI run of a wall (docs/mpi-design.md): MPI_Init on construction,
 // MPI_Finalize on destruction, and who every rank is (process id and host name, gathered on
-// the coordinator, so a fault names where a rank ran).
+// the coordinator, so a fault names where a rank ran; its machine's cores and whether its MPI
+// busy-polls, so the coordinator can warn of a machine given more ranks than cores).
 #pragma once
 
 #include <mpi.h>
@@ -21,7 +22,9 @@ namespace l2 {
 struct RankIdentity {
   int pid = 0;
   std::string host;
-  std::string stack;  // its network stack (coordinator_address.hpp): equal on one machine
+  std::string stack;   // its network stack (coordinator_address.hpp): equal on one machine
+  int cores = 0;       // its machine's (std::thread::hardware_concurrency; 0: not known)
+  bool yields = true;  // its MPI yields the core while it waits (busy_polling.hpp)
 };
 
 class MpiSession {

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "cluster/busy_polling.hpp"
 #include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_ready_channel.hpp"
 #include "cluster/mpi_session.hpp"
@@ -161,6 +162,9 @@ int run_wall_mpi(const RunOptions& o) {
   MpiSession session;
   if (column)
     return run_column_rank(*layout, *map, *column, o, session.rank(), show ? &*show : nullptr);
+  // A machine with more ranks than cores whose MPI busy-polls: said once, before the frames.
+  if (const auto line = busy_polling_warning(session.identities()))
+    std::fprintf(stderr, "l2wall: --mpi: %s\n", line->c_str());
   // The coordinator shows nothing: the columns show their displays (column_show.hpp).
   RunOptions coordinator = o;
   coordinator.show.clear();

@@ -27,12 +27,12 @@ constexpr int kFrames = 10;
 
 // mpirun as the shell tests start it (mpirun_local.sh says why each part): root allowed for
 // this test only, no hwloc GL plugin, TCP only and on loopback only, so an interface another
-// process adds mid-run is never used. The default wall: 4 pipeservers, 1 board column, the
-// coordinator.
+// process adds mid-run is never used, a waiting rank yielding its core. The default wall: 4
+// pipeservers, 1 board column, the coordinator.
 const std::string kMpirun =
     "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl "
-    "mpirun --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo "
-    "--mca oob_tcp_if_include lo -np 6";
+    "mpirun --mca btl self,tcp --mca btl_tcp_if_include lo --mca oob_tcp_if_include lo "
+    "--oversubscribe --mca mpi_yield_when_idle 1 -np 6";
 
 // Patience for a loaded machine (six ranks on few cores).
 const std::vector<std::string> kCommon{

@@ -7,7 +7,9 @@
 # wrong -np is refused in one line naming the numbers. With PATH both, each run compares its
 # DVI and vizserver displays (--compare), the MPI run's vizserver displays must be the
 # one-machine run's too, and (on the default wall, the cheaper) a mismatch injected under MPI
-# must fail the run.
+# must fail the run. No warning of busy-polling ranks (mpirun_local.sh yields); on the default
+# wall's DVI path, a hostfile promising more slots than cores, without that option, gets the
+# warning once where the ranks outnumber the cores.
 set -euo pipefail
 l2wall=$1 out=$2 np=$3 path=$4 wall=${5:+--wall $5} codec=${6:-auto}
 frames=10
@@ -22,8 +24,11 @@ start=$(date +%s%N)
   --no-progress >/dev/null
 one_done=$(date +%s%N)
 "${mpirun[@]}" -np "$np" "$l2wall" run $wall --mpi --link-codec "$codec" "${paths[@]}" --frames $frames --refresh 0 \
-  --out "$out/mpi" --no-progress >"$out/mpi.txt"
+  --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" ||
+  { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 mpi_done=$(date +%s%N)
+cat "$out/mpi.err" >&2
+if grep "busy-poll" "$out/mpi.err"; then echo "FAIL: a busy-polling warning, yet mpirun yields"; exit 1; fi
 echo "one machine $(((one_done - start) / 1000000)) ms, MPI $(((mpi_done - one_done) / 1000000)) ms"
 
 shopt -s nullglob
@@ -62,3 +67,20 @@ fi
 grep -qE "^l2wall: --mpi: this wall needs mpirun -np $np \(1 coordinator \+ [0-9]+ pipeservers? \+ [0-9]+ board columns?\), got $((np - 1)) ranks$" \
   "$out/short.txt" || { echo "FAIL: no one-line -np error:"; cat "$out/short.txt"; exit 1; }
 echo "-np $((np - 1)) refused"
+
+# A hostfile with more slots than cores (`localhost slots=64`): Open MPI sees no oversubscription
+# and busy-polls unless told; the coordinator says so in one line at the start.
+if [[ $path == dvi && -z $wall ]]; then
+  echo "localhost slots=64" >"$out/hosts"
+  "${mpirun_loopback[@]}" --hostfile "$out/hosts" -np "$np" "$l2wall" run --mpi --frames 2 \
+    --out "$out/busy" --no-progress >/dev/null 2>"$out/busy.err" ||
+    { echo "FAIL: the run on the hostfile failed:"; cat "$out/busy.err"; exit 1; }
+  cores=$(getconf _NPROCESSORS_ONLN)
+  want=$((np > cores ? 1 : 0))
+  got=$(grep -c "^l2wall: --mpi: $np ranks on $(hostname), which has $cores cores\?, busy-poll while they wait (Open MPI's mpi_yield_when_idle is off), which can make the run several times slower: add --mca mpi_yield_when_idle 1 to mpirun$" \
+    "$out/busy.err" || true)
+  ((got == want)) ||
+    { echo "FAIL: $got busy-polling warnings for $np ranks on $cores cores, want $want:"; cat "$out/busy.err"; exit 1; }
+  echo "busy-polling: $got warning(s) for $np ranks on $cores cores without mpi_yield_when_idle"
+  grep "busy-poll" "$out/busy.err" || true
+fi
