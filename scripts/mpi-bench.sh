@@ -41,8 +41,12 @@ if [[ $(id -u) == 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_R
 # On one machine, loopback only: Open MPI otherwise takes every interface up when the job
 # starts, and one that appears or goes away mid-run (a namespace's bridge) can hang it. On a
 # cluster, the interfaces are the caller's to name among MPIRUN-ARGS.
+# A waiting rank yields its core where the ranks outnumber them (README, "The wall across
+# machines").
 mpirun=(mpirun --oversubscribe --mca btl self,tcp)
-if (($# == 0)); then mpirun+=(--mca btl_tcp_if_include lo --mca oob_tcp_if_include lo); fi
+if (($# == 0)); then
+  mpirun+=(--mca btl_tcp_if_include lo --mca oob_tcp_if_include lo --mca mpi_yield_when_idle 1)
+fi
 args=(run $wall --scene "$scene" --frames "$frames" --refresh 0 --keep none --no-progress)
 # The vizserver path's tiles are counted in a run of both paths of its own (not timed).
 both=(run $wall --scene "$scene" --frames 10 --refresh 0 --keep none --no-progress --path both)

@@ -36,9 +36,10 @@ l2wall=$build/l2wall/l2wall
 [[ -x $l2wall ]] || { echo "network-bench.sh: no $l2wall: build it first" >&2; exit 1; }
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl
-# MPI on this machine: loopback only, whatever other interfaces it has.
+# MPI on this machine: loopback only, whatever other interfaces it has; a waiting rank yields
+# its core (more ranks than cores).
 local_mpirun=(mpirun -q --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo
-  --mca oob_tcp_if_include lo)
+  --mca oob_tcp_if_include lo --mca mpi_yield_when_idle 1)
 declare -A np=([default]=6 [4x3]=11)
 declare -A wall_arg=([default]="" [4x3]="--wall $root/walls/monitors-4x3.toml")
 # The hosts of each wall on the cluster: the coordinator and half the pipeservers, the other
