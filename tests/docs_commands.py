@@ -59,7 +59,7 @@ SHELL_LANGUAGES = {"", "sh", "bash", "shell", "console"}
 def doc_files(root):
     found = [os.path.join(root, "README.md")]
     for here, folders, files in os.walk(root):
-        folders[:] = sorted(f for f in folders if not f.startswith(".") and f != "build")
+        folders[:] = sorted(f for f in folders if not f.startswith((".", "build")))
         if here != root and "README.md" in files:
             found.append(os.path.join(here, "README.md"))
     found += sorted(glob.glob(os.path.join(root, "docs", "*.md")))
@@ -204,7 +204,7 @@ def substitute(words, programs, root):
 def fewer_frames(words):
     """`l2wall run` renders at most 3 frames (more than any --keep asks): the check is the
     command line, not the run's length."""
-    if words[1:2] != ["run"]:
+    if os.path.basename(words[0]) != "l2wall" or words[1:2] != ["run"]:
         return words
     keep = 0
     for i, w in enumerate(words[:-1]):

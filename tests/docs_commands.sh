@@ -19,10 +19,10 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 helper=$root/tests/docs_commands.py
 deadline=${DOCS_COMMANDS_DEADLINE:-2}  # seconds
 failed=0
-started=$(date +%s%N)
+started=${EPOCHREALTIME/./}  # microseconds
 
 # Not run, with why; their words are still checked against --help. Each entry is the start of
-# a command as the list below prints it (program name, then its words); one that no longer
+# a command as the lines below print it (program name, then its words); one that no longer
 # matches a command of the docs fails, so the list follows the docs.
 not_run=(
   "l2wall golden update|writes the golden images into the source tree"
@@ -59,8 +59,8 @@ cp "$root"/tests/golden_images/kd-2x2-bunny/display-*.png out/default-wall/frame
 "${path_of[tilelayout]}" --scanout out/row-scan >/dev/null
 "${path_of[tilelayout]}" --parity 1 --scanout captured >/dev/null
 if command -v ffmpeg >/dev/null; then
-  ffmpeg -loglevel error -f lavfi -i testsrc=size=320x240:rate=10 -frames:v 1 huge.tif
-  ffmpeg -loglevel error -f lavfi -i testsrc=size=160x120:rate=10 -frames:v 5 -c:v ffv1 clip.mkv
+  ffmpeg -loglevel error -f lavfi -i testsrc=size=320x240:rate=10 -frames:v 1 huge.tif \
+    -frames:v 5 -c:v ffv1 clip.mkv
 fi
 "${path_of[sync_backchannel]}" pty --refresh 10 >pty.txt 2>&1 &
 pty_pid=$!
@@ -68,7 +68,7 @@ for _ in $(seq 50); do [[ -s pty.txt ]] && break; sleep 0.1; done
 pty=$(head -1 pty.txt)
 [[ $pty == /dev/pts/* ]] || { echo "FAIL: no pty from sync_backchannel pty: $pty"; exit 1; }
 
-ms() { echo $((($(date +%s%N) - started) / 1000000)); }
+ms() { echo $(((${EPOCHREALTIME/./} - started) / 1000)); }
 echo "     $(ms) ms: what the commands take for granted made"
 # WHERE KIND MODE WORDS, one command a line (docs_commands.py says what each means).
 python3 "$helper" extract "$root" "${names[@]}" >commands.tsv || { echo "FAIL: extract"; exit 1; }
@@ -124,19 +124,15 @@ run_until_accepted() {
   kill -KILL -- -"$pid" 2>/dev/null  # what the group left behind
 }
 
-# "name words..." of an argv, as the lists above and the output name a command.
-shown() {
-  local first
-  first=$(basename "$1")
-  shift
-  echo "$first${*:+ $*}"
-}
-listed() {  # listed ENTRIES... -- TEXT: the reason of the first entry TEXT starts with
+# listed ENTRIES... -- TEXT: whether TEXT starts as an entry of a list above does; `why` is
+# then the entry's reason. (No subshells here or below: a loaded machine is slow to start them.)
+declare -A used
+listed() {
   local text=${*: -1} entry
   for entry in "${@:1:$#-2}"; do
     if [[ $text == "${entry%%|*}"* ]]; then
-      echo "${entry#*|}"
-      touch "used-$(echo "${entry%%|*}" | md5sum | cut -c1-8)"
+      why=${entry#*|}
+      used[${entry%%|*}]=1
       return 0
     fi
   done
@@ -157,8 +153,8 @@ while IFS=$'\t' read -r where kind mode words; do
     fi
   done
   argv=("${expanded[@]}")
-  text=$(shown "${argv[@]}")
-  if why=$(listed "${not_commands[@]}" -- "$text"); then
+  text="${argv[0]##*/}${argv[1]+ ${argv[*]:1}}"  # "name words...", as the lists and lines say
+  if listed "${not_commands[@]}" -- "$text"; then
     echo "skip $where: $text: $why"
     continue
   fi
@@ -166,7 +162,7 @@ while IFS=$'\t' read -r where kind mode words; do
     printf '%s\t%s\n' "$where" "$words" >>words.tsv
     continue
   fi
-  if why=$(listed "${not_run[@]}" -- "$text"); then
+  if listed "${not_run[@]}" -- "$text"; then
     echo "skip $where: $text: not run: $why"
     printf '%s\t%s\n' "$where" "$words" >>words.tsv
     continue
@@ -182,16 +178,16 @@ while IFS=$'\t' read -r where kind mode words; do
     if grep -qxF -- "${argv[1]}" <<<"$subcommands"; then
       echo "ok   $where: $text: a subcommand (--help lists it)"
     else
-      echo "FAIL $where: $text: not a subcommand; --help lists:" $subcommands
+      echo "FAIL $where: $text: not a subcommand; --help lists: ${subcommands//$'\n'/ }"
       failed=1
     fi
     continue
   fi
   # run or mpi: from the scratch folder, without an X display or mpirun's environment.
   runs=$((runs + 1))
-  begun=$(ms)
+  begun=${EPOCHREALTIME/./}
   run_until_accepted "run-$runs" "${argv[@]}"
-  took="$(($(ms) - begun)) ms"
+  took="$(((${EPOCHREALTIME/./} - begun) / 1000)) ms"
   err=$(head -c 300 "run-$runs.err")
   if [[ $status -eq 2 || $err == *"Run with --help"* ]]; then
     if [[ $kind == table && $err == *required* ]]; then
@@ -215,7 +211,7 @@ echo "     $(ms) ms: $runs commands run"
 python3 "$helper" check-words "${names[@]}" <words.tsv || failed=1
 
 for entry in "${not_run[@]}" "${not_commands[@]}"; do
-  [[ -e used-$(echo "${entry%%|*}" | md5sum | cut -c1-8) ]] ||
+  [[ -n ${used[${entry%%|*}]:-} ]] ||
     { echo "FAIL: skip entry '${entry%%|*}' matches no command of the docs: remove it"; failed=1; }
 done
 echo "$(wc -l <commands.tsv) commands, $runs run, in $(ms) ms"
