@@ -23,15 +23,18 @@ long scene_pixels(const RgbImage& shown) {
 }
 
 // The sphere framed on the short side of a 4:1 canvas stayed on the middle display; every
-// display now shows part of the model, on every scene.
+// display shows part of the scene, on every scene: the generated ones fill the wide wall by
+// default, a model with --fit fill (its default, fit, shows it whole: ModelOnTheWall).
 class WideWall : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WideWall, EveryDisplayShowsTheScene) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-wide-{}", getpid());
   fs::create_directories(dir);
   const fs::path wall = write_wide_wall(dir);
-  WallRun run("wide-" + GetParam(),
-              {"--wall", wall.string(), "--scene", GetParam(), "--frames", "3", "--refresh", "0"});
+  std::vector<std::string> args{"--wall",   wall.string(), "--scene",   GetParam(),
+                                "--frames", "3",           "--refresh", "0"};
+  if (GetParam() == "mesh") args.insert(args.end(), {"--fit", "fill"});
+  WallRun run("wide-" + GetParam(), args);
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   for (int d = 0; d < 3; ++d) {
@@ -77,16 +80,18 @@ TEST(ModelOnTheWall, GltfBaseColourReachesTheDisplays) {
   fs::remove_all(dir);
 }
 
-// The same square on the wide wall (three displays side by side): framed to the canvas, it
-// reaches every display, in its base colour.
+// The same square on the wide wall (three displays side by side): with --fit fill it reaches
+// every display, in its base colour; by default (fit) it is seen whole, on the middle display,
+// the outer displays dark.
 TEST(ModelOnTheWall, GltfModelSpansTheWideWall) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-gltf-wide-{}", getpid());
   fs::create_directories(dir);
   const float green[3] = {0.1f, 0.9f, 0.3f};
   write_gltf_square(dir / "square.gltf", green);
   const fs::path wall = write_wide_wall(dir);
-  WallRun run("gltf-wide", {"--wall", wall.string(), "--mesh", (dir / "square.gltf").string(),
-                            "--camera-orbit", "0", "--frames", "2", "--refresh", "0"});
+  WallRun run("gltf-wide",
+              {"--wall", wall.string(), "--mesh", (dir / "square.gltf").string(), "--camera-orbit",
+               "0", "--frames", "2", "--refresh", "0", "--fit", "fill"});
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   for (int d = 0; d < 3; ++d) {
@@ -101,6 +106,30 @@ TEST(ModelOnTheWall, GltfModelSpansTheWideWall) {
     EXPECT_GT(square, 200) << "display " << d;
   }
   expect_clean(run);
+
+  WallRun whole("gltf-whole", {"--wall", wall.string(), "--mesh", (dir / "square.gltf").string(),
+                               "--camera-orbit", "0", "--frames", "2", "--refresh", "0"});
+  ASSERT_TRUE(whole.wait(60s).ok()) << whole.output();
+  for (int d = 0; d < 3; ++d) {
+    const RgbImage shown = read_png(whole.out() / "frame-1" / fmt::format("display-{}.png", d));
+    long square = 0, top_or_bottom = 0;
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        const Rgb p = shown.at(x, y);
+        const bool green_pixel =
+            p.g > 100 && std::abs(p.r * 9 - p.g) <= 12 && std::abs(p.b * 3 - p.g) <= 6;
+        square += green_pixel;
+        top_or_bottom += green_pixel && (y == 0 || y == shown.height() - 1);
+      }
+    }
+    if (d == 1) {
+      EXPECT_GT(square, 200) << "the middle display shows the square";
+      EXPECT_EQ(top_or_bottom, 0) << "the square whole: not cut at the top or bottom";
+    } else {
+      EXPECT_EQ(square, 0) << "display " << d << " is outside a model seen whole";
+    }
+  }
+  expect_clean(whole);
   fs::remove_all(dir);
 }
 

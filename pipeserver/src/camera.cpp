@@ -10,25 +10,25 @@ namespace l2 {
 namespace {
 
 // How far back the camera stands to frame the sphere on the canvas (CameraOptions::distance 0).
-float framing_distance(float radius, float fov_y, float aspect) {
+float framing_distance(float radius, float fov_y, float aspect, bool whole) {
   const float half_y = fov_y / 2;
   const float half_x = std::atan(std::tan(half_y) * aspect);
   // The sphere fits the short side, unless that leaves more of the long side empty than a
   // quarter of the short side at each end: then it spans the long side less those quarters.
   const float half_short = std::min(half_x, half_y), half_long = std::max(half_x, half_y);
   const float half_fill = std::atan(std::tan(half_long) - std::tan(half_short) / 2);
-  const float half = std::max(half_short, half_fill);
+  const float half = whole ? half_short : std::max(half_short, half_fill);
   return radius * 1.08f / std::sin(half);
 }
 
 }  // namespace
 
 Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
-                    const CameraOptions& options) {
+                    const CameraOptions& options, bool whole) {
   const float aspect = static_cast<float>(canvas.width) / static_cast<float>(canvas.height);
   const float fov_y = glm::radians(options.fov);
-  const float distance =
-      options.distance > 0 ? radius * options.distance : framing_distance(radius, fov_y, aspect);
+  const float distance = options.distance > 0 ? radius * options.distance
+                                              : framing_distance(radius, fov_y, aspect, whole);
   const glm::vec3 eye = centre + glm::vec3(0.0f, 0.0f, distance);
   Camera cam;
   cam.view = glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));

@@ -77,8 +77,11 @@ namespace {
 
 std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& options) {
   if (name == "mesh") {
+    if (options.fit == "stretch")
+      throw std::invalid_argument(
+          "--fit stretch is for pictures and movies; a model fits or fills");
     const auto path = options.mesh_file.empty() ? default_mesh_file() : options.mesh_file;
-    return detail::make_mesh_scene(load_mesh(path));
+    return detail::make_mesh_scene(load_mesh(path), options.fit != "fill");
   }
   if (name == "strips") return detail::make_strips_scene(options);
   if (name == "isosurface") return detail::make_isosurface_scene(options);

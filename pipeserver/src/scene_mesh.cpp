@@ -60,7 +60,7 @@ std::vector<glm::vec3> vertex_normals(const TriangleMesh& m) {
 
 class MeshScene : public Scene {
  public:
-  explicit MeshScene(TriangleMesh mesh) {
+  MeshScene(TriangleMesh mesh, bool whole) : whole_(whole) {
     note_ = std::move(mesh.left_out);
     normalise(mesh.positions);
     const auto normals = mesh.normals.empty() ? vertex_normals(mesh) : mesh.normals;
@@ -102,12 +102,18 @@ class MeshScene : public Scene {
   // The mesh itself stands still; the camera orbits it (3 degrees a frame unless told).
   void animate(int) override {}
   float default_orbit() const override { return 3.0f; }
+
+ public:
+  bool seen_whole() const override { return whole_; }
+
+ private:
+  bool whole_;
 };
 
 }  // namespace
 
-std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh) {
-  return std::make_unique<MeshScene>(mesh);
+std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh, bool whole) {
+  return std::make_unique<MeshScene>(mesh, whole);
 }
 
 }  // namespace l2::detail

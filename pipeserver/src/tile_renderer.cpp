@@ -61,7 +61,8 @@ std::size_t primitives(const Batch& b) {
 TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share)
     : scene_(scene),
       canvas_(canvas),
-      camera_(frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera())),
+      camera_(
+          frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera(), scene.seen_whole())),
       drawn_(scene.batches().size(), false) {
   setup_state(scene.lit());
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();

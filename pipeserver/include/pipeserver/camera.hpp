@@ -36,10 +36,12 @@ struct CameraOptions {
 // is framed on the whole canvas: it fits the canvas's short side, but spans at least the long
 // side less a quarter of the short side at each end, so a wide wall is filled (the sphere
 // cropped at top and bottom) instead of leaving its outer displays black; on canvases up to 3:2
-// the whole sphere is in view. A margin of 8% of the radius is kept either way.
-// Deterministic: depends only on its arguments.
+// the whole sphere is in view. With `whole` (a model shown with --fit fit: seen whole, not
+// sliced) it fits the short side on every canvas, the long side's ends left dark on a wide
+// wall. A margin of 8% of the radius is kept either way. Deterministic: depends only on its
+// arguments.
 Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
-                    const CameraOptions& options = {});
+                    const CameraOptions& options = {}, bool whole = false);
 
 // The orbit of frame `frame` as a model transform: a turn of degrees_per_frame x frame about the
 // vertical axis through `centre`. The scenes' light is fixed to the eye, so turning the scene

@@ -55,7 +55,8 @@ struct SceneOptions {
   // the movie at k / movie_rate seconds); 0: movie frame k is application frame k.
   double movie_rate = 0;
   // picture, movie: how the source is laid on the canvas, "fit", "fill" or "stretch"
-  // (picture_view.hpp); empty: the scene's own (picture: fill, movie: fit).
+  // (picture_view.hpp); mesh: "fit" (the whole model in view) or "fill" (a wide wall spanned,
+  // the model cropped across it); empty: the scene's own (picture: fill, movie and mesh: fit).
   std::string fit;
   CameraOptions camera;  // every scene
 };
@@ -96,6 +97,9 @@ class Scene {
   // frames it, so it must not depend on the frame.
   glm::vec3 centre() const { return {0.0f, 0.0f, 0.0f}; }
   float radius() const { return 1.0f; }
+  // Whether the camera shows the whole sphere on any canvas (frame_sphere's `whole`): a model
+  // is seen whole on a wide wall unless told to fill it (--fit); the generated scenes fill it.
+  virtual bool seen_whole() const { return false; }
 
   std::size_t triangle_count() const;
   // A line about the scene's file worth telling once, not an error: what of a model file was

@@ -35,12 +35,13 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
            ->check(CLI::ExistingFile),
        "picture movie"},
       {app.add_option("--fit", o.fit,
-                      "picture and movie scenes: how the source is laid on the canvas: fit (all "
-                      "of it in view, black bars on two sides), fill (the canvas covered, the "
-                      "source cropped on two sides) or stretch (both axes scaled apart to cover "
-                      "the canvas exactly); default: fill for a picture, fit for a movie")
+                      "mesh, picture and movie scenes: how the model or source is laid on the "
+                      "canvas: fit (all of it in view, dark on two sides of a canvas of another "
+                      "shape), fill (the canvas covered, cropped on two sides) or stretch "
+                      "(pictures and movies: both axes scaled apart to cover the canvas "
+                      "exactly); default: fill for a picture, fit for a model or a movie")
            ->check(CLI::IsMember({"fit", "fill", "stretch"})),
-       "picture movie"},
+       "mesh picture movie"},
       {app.add_option("--movie-rate", o.movie_rate,
                       "movie scene: application frames per second the movie's clock runs at: "
                       "application frame k shows the movie at k / HZ seconds, movie frames "
