@@ -113,10 +113,23 @@ function(l2_check_links_defined name)
   endforeach()
 endfunction()
 
+# A library's public header folders as its users in this build see them. Installed
+# (Install.cmake), its users see the package's include folder instead: a folder of this tree
+# must not be part of what the package exports.
+function(l2_public_includes out)
+  set(dirs)
+  foreach(dir ${ARGN})
+    cmake_path(ABSOLUTE_PATH dir BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR} NORMALIZE)
+    list(APPEND dirs $<BUILD_INTERFACE:${dir}>)
+  endforeach()
+  set(${out} ${dirs} PARENT_SCOPE)
+endfunction()
+
 function(l2_library name)
   cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
                         "SOURCES;COMMAND_LINE;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
   l2_check_links_defined(${name} ${ARG_LINKS})
+  l2_public_includes(ARG_INCLUDES ${ARG_INCLUDES})
   if(ARG_INTERFACE)
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${ARG_INCLUDES})
