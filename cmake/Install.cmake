@@ -3,9 +3,21 @@
 # the mesh scene and the golden images with their manifest; the documentation into
 # PREFIX/share/doc/lightning2.
 include(GNUInstallDirs)
-install(TARGETS l2wall pipeserver vizserver lightning2_emu tilelayout strip_headers
-                sync_backchannel show_wall
-        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+set(l2_installed_programs l2wall pipeserver vizserver lightning2_emu tilelayout strip_headers
+                          sync_backchannel show_wall)
+install(TARGETS ${l2_installed_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# The image codec module every program loads on its first picture (image/src/png_io.cpp) into
+# PREFIX/lib/lightning2, where the programs find it by name through their run path, relative to
+# where they are, and the programs of users of the package (below) through theirs: the installed
+# programs and package do not use the build tree.
+set(l2_private_libdir ${CMAKE_INSTALL_LIBDIR}/lightning2)
+install(TARGETS l2_png_oiio LIBRARY DESTINATION ${l2_private_libdir})
+file(RELATIVE_PATH l2_bin_to_libdir /${CMAKE_INSTALL_BINDIR} /${l2_private_libdir})
+set_target_properties(${l2_installed_programs} PROPERTIES INSTALL_RPATH "$ORIGIN/${l2_bin_to_libdir}")
+target_link_options(l2_picture_files INTERFACE
+                    "$<INSTALL_INTERFACE:LINKER:-rpath,$<INSTALL_PREFIX>/${l2_private_libdir}>")
+
 set(l2_share ${CMAKE_INSTALL_DATADIR}/lightning2)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/walls DESTINATION ${l2_share} FILES_MATCHING PATTERN "*.toml")
 install(FILES ${CMAKE_SOURCE_DIR}/data/bunny.ply ${CMAKE_SOURCE_DIR}/data/README.md
@@ -106,7 +118,7 @@ foreach(dependency ${l2_package_imported})
 endforeach()
 
 install(TARGETS ${l2_package_targets} EXPORT Lightning2Targets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/lightning2
+        ARCHIVE DESTINATION ${l2_private_libdir}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lightning2)
 install(EXPORT Lightning2Targets NAMESPACE Lightning2:: DESTINATION ${l2_package_dir})
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/Lightning2Config.cmake.in

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `cmake --install` into a fresh prefix, then the installed l2wall run on the default wall for
-# 2 frames from a folder outside the working tree: it must find its pipeserver, the bunny and
-# the golden images in the prefix, not in the build tree.
+# 2 frames from a folder outside the working tree: it must find its pipeserver, the bunny, the
+# golden images and the image codec module in the prefix, not in the build tree.
 # Arguments: the build folder.
 set -uo pipefail
 build=$1
@@ -30,11 +30,24 @@ help=$("$prefix/bin/l2wall" golden check --help)
 [[ $help == *"--goldens DIR=$prefix/share/lightning2/tests/golden_images"* ]] ||
   fail "the default --goldens is not in the prefix: $(grep -- --goldens <<<"$help")"
 
+codec=$prefix/lib/lightning2/libl2_png_oiio.so
+[[ -f $codec ]] || fail "no $codec"
+
 mkdir "$prefix/elsewhere"
 cd "$prefix/elsewhere" || exit 1
-"$prefix/bin/l2wall" run --frames 2 --no-progress --out run >run.log 2>&1
+# The dynamic loader's log of every process of the run: the image codec they load on their first
+# picture must be the prefix's, not the build tree's.
+LD_DEBUG=libs LD_DEBUG_OUTPUT="$prefix/loader" \
+  "$prefix/bin/l2wall" run --frames 2 --no-progress --out run >run.log 2>&1
 status=$?
 [[ $status -eq 0 ]] || fail "installed l2wall run: exit $status: $(tail -5 run.log)"
+# (found through the run path $ORIGIN/../lib/lightning2: PREFIX/bin/../lib/lightning2/...)
+installed="calling init: $prefix/\(bin/\.\./\)\?lib/lightning2/libl2_png_oiio\.so$"
+grep -qs "$installed" "$prefix"/loader.* ||
+  fail "the installed programs did not load $codec: $(grep -hs 'calling init: .*png_oiio' "$prefix"/loader.* | head -3)"
+if grep -hs 'calling init: .*png_oiio' "$prefix"/loader.* | grep -v "$installed"; then
+  fail "an installed program loaded another image codec than $codec (above)"
+fi
 grep -q '^l2wall run: 2 frames on 4 displays from 4 pipeservers' run/summary.txt ||
   fail "summary: $(head -1 run/summary.txt)"
 for d in 0 1 2 3; do

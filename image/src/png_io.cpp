@@ -14,13 +14,25 @@
 
 namespace l2 {
 
-// The codec module, loaded once per process (png_codec.hpp says why it is not linked) from where
-// the build put it. When it cannot be loaded every picture is an error that says why.
+// The codec module, loaded once per process (png_codec.hpp says why it is not linked). Installed
+// (cmake/Install.cmake), it is in PREFIX/lib/lightning2, found by its name through the run path
+// of the installed programs and of programs built against the installed package; in a build
+// tree, where the build put it, which a program of the tree has no run path to. When it cannot be
+// loaded every picture is an error that says why.
 const png_codec::Codec& png_codec::codec(const std::filesystem::path& picture) {
   static const auto loaded = []() -> std::pair<const png_codec::Codec*, std::string> {
-    const char* const file = L2_PNG_CODEC_MODULE;
+    const char* file = L2_PNG_CODEC_NAME;
     void* module = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);  // never closed
-    if (!module) return {nullptr, std::string("cannot load the image codec: ") + ::dlerror()};
+    if (!module) {
+      std::string installed = ::dlerror();
+      file = L2_PNG_CODEC_MODULE;
+      module = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);
+      if (!module) {
+        std::string why = "cannot load the image codec: ";
+        why.append(installed).append("; ").append(::dlerror());
+        return {nullptr, why};
+      }
+    }
     auto entry = reinterpret_cast<png_codec::EntryPoint>(::dlsym(module, png_codec::kEntryPoint));
     if (!entry) {
       // Appended, not a chain of +: GCC 12 raises a false -Warray-bounds on that chain here.
