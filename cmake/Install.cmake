@@ -41,11 +41,12 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 # compiled with the user's flags alone (the test examples_outside_project checks both).
 #
 # l2_pipeserver_lsan, the LeakSanitizer suppression of OSMesa's never-freed buffers, is left
-# out: it is for this project's sanitizer builds, whose libraries are not installed (the
-# package is the release build's), and it works only linked as objects (pipeserver/
-# CMakeLists.txt), which an installed static library is not. A user's own ASan build of a
-# renderer can suppress the same leak with LSAN_OPTIONS=suppressions=FILE holding
-# "leak:libOSMesa.so".
+# out: it matters only under the sanitizers, whose builds this project runs in their build
+# trees, and it works only linked as objects (pipeserver/CMakeLists.txt). Installed as a small
+# static library it would do nothing: the linker takes a member of an archive only for a symbol
+# the program still lacks, and the sanitizer runtime defines these hooks itself (weakly). A
+# user's own ASan build of a renderer suppresses the same leak with
+# LSAN_OPTIONS=suppressions=FILE, FILE holding "leak:libOSMesa.so" (examples/README.md).
 include(CMakePackageConfigHelpers)
 set(l2_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Lightning2)
 
