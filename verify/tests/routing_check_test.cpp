@@ -195,7 +195,13 @@ TEST(RoutingCheck, RefusedStripsAreNamedPerInput) {
   frames[1].set(0, 3, {0, 0, 0});  // scanline 3's first header: check bits no longer match
   frames[1].set(1, 3, {0, 0, 1});
   set_header(frames[0], 36, 4, StripHeader::copy(false, 9, 0, 4, 32));  // no display 9
-  const std::vector<std::string> lines = report_of(layout, frames);
+  const RoutingCheck check = check_routing(layout, frames);
+  // The pixels the refused header's strip should have written are missing (marked so in the
+  // picture), and with them the rest of its scanline: tile 3's row 3 on display 1.
+  EXPECT_EQ(check.displays[0].kinds[3 * 64 + 40], PixelKind::Missing);
+  EXPECT_EQ(check.displays[1].kinds[3 * 64 + 40], PixelKind::Missing);
+  EXPECT_EQ(check.displays[0].kinds[4 * 64 + 40], PixelKind::Right);
+  const std::vector<std::string> lines = check_report(check);
   ASSERT_GE(lines.size(), 6u);
   EXPECT_EQ(lines[2], "input 0: 32 pixels sent to displays the wall does not have");
   EXPECT_EQ(lines[3],
