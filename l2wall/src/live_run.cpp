@@ -477,8 +477,27 @@ class LiveRun {
     if (!o_.progress) return;
     progress_shown_ = true;
     const double s = ms_between(totals_.start, now) / 1000.0;
-    std::fprintf(stderr, "\rl2wall: frame %d/%d on the displays, %.1f fps", shown_, o_.frames,
+    // Ended by erase-to-end-of-line (only ever drawn on a terminal): it overwrites the longer
+    // line of the wait for the first frames.
+    std::fprintf(stderr, "\rl2wall: frame %d/%d on the displays, %.1f fps\033[K", shown_, o_.frames,
                  s > 0 ? shown_ / s : 0.0);
+    std::fflush(stderr);
+  }
+
+  // Before the first frames, which wait for each pipeserver to read its model or picture (a
+  // large one takes seconds): a line a second, so a slow start is seen as one, not a hang.
+  void waiting_progress() {
+    if (!o_.progress) return;
+    const auto now = RunClock::now();
+    if (!waiting_since_) waiting_since_ = now;
+    const auto seconds = static_cast<int>(ms_between(*waiting_since_, now) / 1000.0);
+    if (seconds < 1 || seconds == waiting_shown_) return;
+    waiting_shown_ = seconds;
+    progress_shown_ = true;
+    std::fprintf(stderr,
+                 "\rl2wall: waiting for the pipeservers' first frames, %d s (each reads its "
+                 "model or picture first; --start-timeout %d ms)",
+                 seconds, o_.start_timeout_ms);
     std::fflush(stderr);
   }
 
@@ -508,13 +527,18 @@ class LiveRun {
                                // compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
-  const RunWatch watch_{[this] { check_processes(); },
+  const RunWatch watch_{[this] {
+                          check_processes();
+                          if (!links_open_) waiting_progress();
+                        },
                         [this] {
                           check_processes();
                           check_stall();
                           pipeservers_.serve_channels();
                         }};
   bool progress_shown_ = false;
+  std::optional<RunClock::time_point> waiting_since_;  // the wait for the first frames
+  int waiting_shown_ = 0;                              // its seconds last shown
   bool pipeservers_started_ = false;
   bool links_open_ = false;  // every pipeserver delivered its first frame
   int shown_ = 0;            // frames 0 .. shown_-1 have reached every display (and were checked)
