@@ -43,15 +43,20 @@ paths = ["dvi"]
 tolerance = { differing_percent = 0.01, beyond_one_percent = 0.003 }
 )toml";
 
-TEST_F(GoldenCli, UpdateRecordsThisMesaAndAnotherMesaIsComparedWithinTheTolerance) {
-  const fs::path root = dir_ / "root";
+// The small wall under `root` and a manifest of its one rendered entry, no images yet; returns
+// the options that point `l2wall golden` at them.
+std::string small_entry(const fs::path& root, const fs::path& goldens, const fs::path& out) {
   fs::create_directories(root / "walls");
   std::ofstream(root / "walls/small.toml") << kSmallWall;
-  fs::remove_all(goldens());
-  fs::create_directories(goldens());
-  std::ofstream(goldens() / "manifest.toml") << kSmallEntry;
-  const std::string where =
-      "--goldens " + quote(goldens()) + " --root " + quote(root) + " --out " + quote(out()) + " ";
+  fs::remove_all(goldens);
+  fs::create_directories(goldens);
+  std::ofstream(goldens / "manifest.toml") << kSmallEntry;
+  return "--goldens " + quote(goldens) + " --root " + quote(root) + " --out " + quote(out) + " ";
+}
+
+TEST_F(GoldenCli, UpdateRecordsThisMesaAndAnotherMesaIsComparedWithinTheTolerance) {
+  const fs::path root = dir_ / "root";
+  const std::string where = small_entry(root, goldens(), out());
 
   // A new entry: update makes its image and records the GL that made it.
   const Result made = l2wall("update " + where);
@@ -104,13 +109,7 @@ TEST_F(GoldenCli, UpdateRecordsThisMesaAndAnotherMesaIsComparedWithinTheToleranc
 // out; any other pixel still fails.
 TEST_F(GoldenCli, StampsMovedByAReTilingAreLeftOutAndSaidSo) {
   const fs::path root = dir_ / "root";
-  fs::create_directories(root / "walls");
-  std::ofstream(root / "walls/small.toml") << kSmallWall;
-  fs::remove_all(goldens());
-  fs::create_directories(goldens());
-  std::ofstream(goldens() / "manifest.toml") << kSmallEntry;
-  const std::string where =
-      "--goldens " + quote(goldens()) + " --root " + quote(root) + " --out " + quote(out()) + " ";
+  const std::string where = small_entry(root, goldens(), out());
   const Result made = l2wall("update " + where);
   ASSERT_EQ(made.code, 0) << made.output;
 
