@@ -87,7 +87,7 @@ class PipeserverSet {
   struct RemoteEnd {
     std::unique_ptr<PipeserverProcess> process;  // remote_pipeserver_process(its place)
     std::unique_ptr<ReadyChannel> channel;       // its back-channel
-    std::unique_ptr<ControlChannel> control;     // balancing (HostLaunch::control), else null
+    std::unique_ptr<ControlChannel> control;     // balancing (PipeserverLaunch::control), else null
   };
   // Pipeservers this process did not start (MPI ranks, mpi/): no link reader here; `connect` gives
   // each one's ends. Their links are taken in elsewhere, and the path that does records
