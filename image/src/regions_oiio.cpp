@@ -73,6 +73,7 @@ class CacheRegions final : public RegionReader {
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
+  float cache_megabytes = kCacheMegabytes;
   {
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
@@ -85,13 +86,9 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
     if (spec.width <= 0 || spec.height <= 0) {
       return Failure{"cannot read: the picture has no pixels"};
     }
-  }
-  float cache_megabytes = kCacheMegabytes;
-  {
-    auto in = OIIO::ImageInput::open(path);
-    const OIIO::ImageSpec& s = in->spec();
-    const double decoded_mb = double(s.width) * s.height * std::min(s.nchannels, 3) / (1 << 20);
-    if (s.tile_width == 0 && decoded_mb * 1.1 <= kWholeScanlinePictureMegabytes)
+    const double decoded_mb =
+        double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20);
+    if (spec.tile_width == 0 && decoded_mb * 1.1 <= kWholeScanlinePictureMegabytes)
       cache_megabytes = std::max(cache_megabytes, static_cast<float>(decoded_mb * 1.1 + 8));
   }
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
