@@ -118,7 +118,12 @@ int main(int argc, char** argv) {
          "tiles read back and sent over TCP to a compositing server process "
          "(--vizserver-program), which streams the composed displays back to l2wall; both: "
          "both at once")
-      ->check(CLI::IsMember({"dvi", "vizserver", "both"}))
+      ->check(
+          [](const std::string& v) {
+            return l2::parse_path_choice(v) ? std::string()
+                                            : "expected dvi, vizserver or both, got " + v;
+          },
+          "dvi|vizserver|both")
       ->each([&o](const std::string& v) { o.path = l2::parse_path_choice(v).value(); })
       ->capture_default_str();
   run->add_option("--balance", o.balance,
