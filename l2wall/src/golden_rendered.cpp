@@ -59,11 +59,20 @@ struct LoggedCommand {
 
 }  // namespace
 
+namespace {
+
+// The pixel a live pipeserver writes for frame `frame`: 24 bits of the frame number, R the low
+// byte (l2wall/include/l2wall/frame_stamp.hpp).
+Rgb stamp_colour(int frame) {
+  return {static_cast<std::uint8_t>(frame & 0xFF), static_cast<std::uint8_t>(frame >> 8 & 0xFF),
+          static_cast<std::uint8_t>(frame >> 16 & 0xFF)};
+}
+
+}  // namespace
+
 int set_aside_moved_stamps(int frame, int pipeservers, const std::vector<RgbImage>& expected,
                            std::vector<RgbImage>& actual) {
-  const Rgb stamp{static_cast<std::uint8_t>(frame & 0xFF),
-                  static_cast<std::uint8_t>(frame >> 8 & 0xFF),
-                  static_cast<std::uint8_t>(frame >> 16 & 0xFF)};
+  const Rgb stamp = stamp_colour(frame);
   struct Spot {
     std::size_t display;
     int x, y;
@@ -86,10 +95,7 @@ int set_aside_moved_stamps(int frame, int pipeservers, const std::vector<RgbImag
 }
 
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references) {
-  // 24 bits of the frame number, R the low byte (l2wall/include/l2wall/frame_stamp.hpp).
-  const Rgb stamp{static_cast<std::uint8_t>(frame & 0xFF),
-                  static_cast<std::uint8_t>((frame >> 8) & 0xFF),
-                  static_cast<std::uint8_t>((frame >> 16) & 0xFF)};
+  const Rgb stamp = stamp_colour(frame);
   for (const PipeserverPlan& plan : layout.pipeservers) {
     if (plan.tiles.empty()) continue;
     const DisplayTile& t = plan.tiles.front().tile;
