@@ -318,12 +318,16 @@ std::string open_failed(const char* path) {
 
 namespace {
 
-constexpr l2::png_codec::Codec kCodec{write_rgb, read_rgb, l2::png_codec::open_regions,
-                                      l2::png_codec::open_movie, l2::png_codec::render_text};
+constexpr l2::png_codec::Codec kCodec{write_rgb,
+                                      read_rgb,
+                                      l2::png_codec::open_regions,
+                                      l2::png_codec::open_movie,
+                                      l2::png_codec::render_text,
+                                      l2::png_codec::encode_rgb};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v7() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v8() {
   return &kCodec;
 }

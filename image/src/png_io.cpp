@@ -67,6 +67,14 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
   check(path, written);
 }
 
+std::string encode_png(const RgbImage& image) {
+  const std::filesystem::path what("a PNG in memory");
+  std::string bytes;
+  check(what,
+        png_codec::codec(what).encode_rgb(image.width(), image.height(), image.data(), &bytes));
+  return bytes;
+}
+
 RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                   const SizeCheck& accept) {
   // What `accept` throws is kept here and thrown once the codec has returned: no exception may

@@ -14,6 +14,11 @@ namespace l2 {
 // why, where the system says: "out/display-2.png: cannot write: a folder, not a file").
 void write_png(const std::filesystem::path& path, const RgbImage& image);
 
+// The bytes of a PNG file of `image`, as write_png() would write them, for a program that sends
+// a picture instead (the control page). Throws std::runtime_error when the codec module cannot
+// be loaded.
+std::string encode_png(const RgbImage& image);
+
 // The largest side read_png() accepts: every picture the project reads is an input frame
 // (8192 at most, the DVI link's limit) or one display (16384 at most, the vizserver's).
 inline constexpr int kMaxPictureSide = 16384;
