@@ -63,7 +63,9 @@ BalanceSettings balance_settings(const Wall& wall) {
   return s;
 }
 
-Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), settings_(settings) {
+namespace {
+
+void check_sort_first(const Wall& wall, const BalanceSettings& settings) {
   const bool balancing = settings.mode != BalanceMode::Static || settings.assign;
   if (balancing && (wall.depth_layers != 0 || wall.overlay)) {
     throw LayoutError(fmt::format(
@@ -71,6 +73,13 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
         "or [overlay]",
         wall.source.empty() ? "" : wall.source.string() + ": ", to_string(settings.mode)));
   }
+}
+
+}  // namespace
+
+Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), settings_(settings) {
+  check_sort_first(wall, settings);
+  const bool balancing = settings.mode != BalanceMode::Static || settings.assign;
   Wall first = wall;
   if (settings.mode == BalanceMode::Strips) {
     strips_ = first_strips(wall);
@@ -136,6 +145,16 @@ TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool b
     }
     throw;
   }
+}
+
+void Balancer::switch_mode(BalanceMode mode) {
+  BalanceSettings next = settings_;
+  next.mode = mode;
+  check_sort_first(wall_, next);
+  if (mode == BalanceMode::Strips && settings_.mode != BalanceMode::Strips)
+    strips_ = first_strips(wall_);
+  if (mode == BalanceMode::Kd && settings_.mode != BalanceMode::Kd) grid_.clear();
+  settings_ = next;
 }
 
 void Balancer::lose_pipeserver(int pipeserver) {

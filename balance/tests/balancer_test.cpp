@@ -45,6 +45,41 @@ TEST(Balancer, StripsMoveToTheCostAndKeepThePolicy) {
   EXPECT_EQ(b.layout().tile_pipeserver, (std::vector<int>{0, 1, 0, 1}));
 }
 
+// Switched live (the control page): the next step cuts by the new mode, from even strips; back
+// to static it plans the wall's own tiling again.
+TEST(Balancer, ASwitchedModeCutsFromTheNextStep) {
+  BalanceSettings fixed = strips();
+  fixed.mode = BalanceMode::Static;
+  Balancer b(strips_wall(), fixed);
+  const std::vector<Rect> own = b.layout().logical_tiles;
+  b.next(kHeavyTopLeft);
+  EXPECT_EQ(b.layout().logical_tiles, own);  // static: nothing moves
+  b.switch_mode(BalanceMode::Strips);
+  EXPECT_EQ(b.settings().mode, BalanceMode::Strips);
+  b.next(kHeavyTopLeft);
+  EXPECT_EQ(
+      b.layout().logical_tiles,
+      (std::vector<Rect>{{0, 0, 33, 38}, {33, 0, 67, 38}, {0, 38, 43, 62}, {43, 38, 57, 62}}));
+  b.switch_mode(BalanceMode::Static);
+  b.next(kHeavyTopLeft);
+  EXPECT_EQ(b.layout().logical_tiles, own);
+}
+
+TEST(Balancer, ASwitchToBalancingIsRefusedOnADepthWall) {
+  Wall wall = strips_wall();
+  wall.depth_layers = 2;
+  BalanceSettings fixed;
+  Balancer b(wall, fixed);
+  try {
+    b.switch_mode(BalanceMode::Kd);
+    FAIL() << "kd accepted on a depth wall";
+  } catch (const LayoutError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "balance.mode: kd needs a sort-first wall without [depth] or [overlay]");
+  }
+  EXPECT_EQ(b.settings().mode, BalanceMode::Static);
+}
+
 TEST(Balancer, AssignmentGivesTheHeaviestTileToTheFirstToFinish) {
   Balancer b(strips_wall(), strips(true));
   b.next(kHeavyTopLeft);

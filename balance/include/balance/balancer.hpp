@@ -64,6 +64,12 @@ class Balancer {
   void lose_pipeserver(int pipeserver);
   const std::vector<int>& lost() const { return lost_; }  // ascending
 
+  // From the next step on, cut by `mode` (a live run's control page switches it): strips start
+  // from even strips, kd from the costs the next step measures, static plans the wall's own
+  // tiling. Throws LayoutError for a balancing mode on a depth or overlay wall, as the
+  // constructor does.
+  void switch_mode(BalanceMode mode);
+
  private:
   // `by_area`: with a pipeserver lost, the others get the tiles by visible area (the planner's
   // area-balanced policy) whatever the settings.
