@@ -10,6 +10,7 @@ PACKAGES=(
   fonts-dejavu-core
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev
+  libcpp-httplib-dev  # the control page's HTTP server (control_page/)
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels  # real-world models (the Khronos glTF samples) a model test loads
   libopenmpi-dev openmpi-bin

@@ -1,0 +1,61 @@
+// The control page's HTTP server (`l2wall run --http`, `l2wall view`): one page with its script
+// and style, all served from this program (the page works offline), and a small JSON API:
+//
+//   GET  /api/state                   the RunState last published, as JSON
+//   GET  /api/display/ID.png?scale=N  display ID as last published, every Nth pixel (1: all)
+//   GET  /api/picture/NAME            another picture of the run (view: the verifier's, ...)
+//   POST /api/pause, /api/resume, /api/save, /api/stop, /api/balance?mode=M
+//
+// Every POST needs the run's token (`?token=` or the X-L2-Token header), so nobody else on the
+// network steers the wall; bound beyond loopback, the GETs of /api/ need it too. A refusal is
+// 403 with a one-line JSON reason and changes nothing. The requests reach the run through the
+// inbox; the run publishes what it shows. Served on threads of its own (cpp-httplib's pool).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "control_page/control_inbox.hpp"
+#include "control_page/http_address.hpp"
+#include "control_page/run_state.hpp"
+#include "image/rgb_image.hpp"
+
+namespace l2 {
+
+class ControlServer {
+ public:
+  // Listens on `address` and starts serving. Throws std::runtime_error in one line when it
+  // cannot ("--http 127.0.0.1:8080: cannot listen (the port is taken, or the address is not
+  // this machine's)").
+  ControlServer(const HttpAddress& address, std::string token);
+  ~ControlServer();  // stops serving; requests in flight are answered first
+  ControlServer(const ControlServer&) = delete;
+  ControlServer& operator=(const ControlServer&) = delete;
+
+  int port() const;
+  // The page's address with the token: "http://127.0.0.1:8080/?token=...".
+  std::string url() const;
+
+  // What the page shows from now on. Cheap to call often: the pictures are shared, not copied
+  // again, and encoded only when a page asks for them.
+  void publish(const RunState& state);
+  void publish_displays(std::shared_ptr<const std::vector<RgbImage>> displays);
+  // Other pictures by name (`l2wall view`: the golden check's and the verifier's), read from
+  // their files when asked for.
+  void publish_pictures(std::vector<std::filesystem::path> files);
+
+  ControlInbox& inbox();
+
+  // Whether a page read /api/state within `recently`; if so, waits (at most `limit`) until it
+  // has read the state published last, so a run that ends shows the page how it ended.
+  void let_readers_see_the_end(std::chrono::milliseconds recently, std::chrono::milliseconds limit);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace l2

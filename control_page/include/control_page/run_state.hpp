@@ -1,0 +1,70 @@
+// What the control page shows of a run, as one snapshot: the wall as its file places it, where
+// the run is, the current tiles, each pipeserver's recent times and what happened so far. The
+// live run fills one a few times a second; `l2wall view` fills one from a run folder. Plain data
+// and its JSON (GET /api/state); no I/O.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace l2 {
+
+struct PageDisplay {
+  int id = 0;
+  int x = 0, y = 0, width = 0, height = 0;  // on the canvas
+  int swap_group = 0;
+};
+
+struct PageTile {
+  int x = 0, y = 0, width = 0, height = 0;  // on the canvas
+  int pipeserver = 0;
+};
+
+// One pipeserver's figures of one frame, as its log line says them.
+struct PageFrameTimes {
+  int frame = 0;
+  double render_ms = 0, ready_wait_ms = 0;
+  int sync_retries = 0;
+};
+
+struct PagePipeserver {
+  int index = 0;
+  std::string place;                   // "pid 4242", "rank 3 on host-b"
+  std::vector<PageFrameTimes> recent;  // oldest first, the last few dozen frames
+  std::string back_channel;            // its totals once it ended (the log's "done" line)
+  bool lost = false;                   // ended and survived (--survive-host-loss)
+};
+
+struct PageEvent {
+  int frame = 0;  // the frame on the displays when it happened; -1: before the first
+  std::string text;
+};
+
+struct RunState {
+  std::string wall_name;
+  int canvas_width = 0, canvas_height = 0;
+  std::vector<PageDisplay> displays;
+  std::string path;  // "dvi", "vizserver", "both"
+  int frames_planned = 0;
+  int frame = -1;  // the last frame on every display; -1: none yet
+  double fps = 0;
+  long latency_frames = -1;  // of the last frame; -1: not measured
+  std::string limited_by;    // "limited by ..." of the recent frames, as the summary says it
+  bool paused = false;
+  bool live = true;   // false: a finished run served by `l2wall view`
+  std::string ended;  // how the run ended ("" while it runs): its summary's first line
+  std::string summary;
+  std::string balance_mode;                 // "" for a run that does not balance
+  std::vector<std::string> balance_modes;   // what POST /api/balance accepts
+  std::vector<PageTile> tiles;              // the layout of `frame`
+  std::vector<PagePipeserver> pipeservers;  // in pipeserver order
+  std::vector<PageEvent> events;            // oldest first, the last few dozen
+  std::vector<std::string> pictures;        // other pictures served at /api/picture/NAME
+  std::uint64_t pictures_version = 0;       // grows when the display pictures change
+};
+
+// The JSON the page reads (docs: control_page/README.md).
+std::string to_json(const RunState& state);
+
+}  // namespace l2

@@ -1,0 +1,233 @@
+#include "control_page/control_server.hpp"
+
+#include <fmt/format.h>
+#include <httplib.h>
+
+#include <algorithm>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include "control_page/access_token.hpp"
+#include "image/png_io.hpp"
+#include "page_assets.hpp"
+#include "scaled_picture.hpp"
+
+namespace l2 {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Enough for the page and a script or two polling it; a run's own threads come first.
+constexpr int kServerThreads = 4;
+// A request body is at most a mode name: anything larger is refused unread.
+constexpr std::size_t kMaxBody = 4096;
+constexpr int kMaxScale = 64;
+
+void reply_json(httplib::Response& res, int status, const std::string& body) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(body, "application/json");
+}
+
+void refuse(httplib::Response& res, int status, const std::string& why) {
+  reply_json(res, status, fmt::format(R"({{"error":"{}"}})", why));
+}
+
+std::string given_token(const httplib::Request& req) {
+  if (req.has_header("X-L2-Token")) return req.get_header_value("X-L2-Token");
+  return req.get_param_value("token");
+}
+
+}  // namespace
+
+struct ControlServer::Impl {
+  HttpAddress address;
+  std::string token;
+  httplib::Server server;
+  std::thread thread;
+  int port = 0;
+  ControlInbox inbox;
+
+  std::mutex mutex;
+  std::condition_variable read_happened;
+  std::string state_json = "{}";
+  std::uint64_t published = 0, read = 0;  // versions of the state: the last published, read
+  Clock::time_point last_read{};
+  std::shared_ptr<const std::vector<RgbImage>> displays;
+  std::vector<std::filesystem::path> pictures;
+
+  // Steering always needs the token; reading only beyond this machine.
+  bool allowed(const httplib::Request& req, bool steering) const {
+    if (!steering && address.loopback()) return true;
+    return token_matches(given_token(req), token);
+  }
+
+  void routes() {
+    for (const PageAsset& a : page_assets()) {
+      server.Get(std::string(a.path), [&a](const httplib::Request&, httplib::Response& res) {
+        res.set_content(std::string(a.body), std::string(a.type) + "; charset=utf-8");
+      });
+    }
+    server.Get("/api/state", [this](const httplib::Request& req, httplib::Response& res) {
+      if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
+      reply_json(res, 200, read_state());
+    });
+    server.Get(R"(/api/display/(\d{1,3})\.png)",
+               [this](const httplib::Request& req, httplib::Response& res) {
+                 if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
+                 serve_display(req, res);
+               });
+    server.Get(R"(/api/picture/([A-Za-z0-9._-]{1,200}))",
+               [this](const httplib::Request& req, httplib::Response& res) {
+                 if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
+                 serve_picture(req.matches[1].str(), res);
+               });
+    server.Post(R"(/api/(pause|resume|save|stop|balance))",
+                [this](const httplib::Request& req, httplib::Response& res) {
+                  if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
+                  steer(req, res);
+                });
+  }
+
+  std::string read_state() {
+    const std::lock_guard lock(mutex);
+    read = published;
+    last_read = Clock::now();
+    read_happened.notify_all();
+    return state_json;
+  }
+
+  void serve_display(const httplib::Request& req, httplib::Response& res) {
+    const int id = std::stoi(req.matches[1].str());
+    int scale = 1;
+    if (req.has_param("scale")) {
+      scale = std::atoi(req.get_param_value("scale").c_str());
+      if (scale < 1 || scale > kMaxScale)
+        return refuse(res, 400, fmt::format("scale: expected 1..{}", kMaxScale));
+    }
+    std::shared_ptr<const std::vector<RgbImage>> shown;
+    {
+      const std::lock_guard lock(mutex);
+      shown = displays;
+    }
+    if (!shown || id >= static_cast<int>(shown->size()) ||
+        (*shown)[static_cast<std::size_t>(id)].empty())
+      return refuse(res, 404, fmt::format("display {} shows nothing yet", id));
+    const RgbImage& picture = (*shown)[static_cast<std::size_t>(id)];
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(encode_png(scale == 1 ? picture : every_nth_pixel(picture, scale)),
+                    "image/png");
+  }
+
+  void serve_picture(const std::string& name, httplib::Response& res) {
+    std::filesystem::path file;
+    {
+      const std::lock_guard lock(mutex);
+      const auto it = std::find_if(pictures.begin(), pictures.end(),
+                                   [&](const auto& p) { return p.filename() == name; });
+      if (it == pictures.end()) return refuse(res, 404, "no such picture");
+      file = *it;
+    }
+    try {
+      res.set_content(encode_png(read_png(file)), "image/png");
+    } catch (const std::exception& e) {
+      refuse(res, 500, "cannot read the picture");
+    }
+  }
+
+  void steer(const httplib::Request& req, httplib::Response& res) {
+    const std::string what = req.matches[1].str();
+    ControlRequest r;
+    if (what == "pause") r.action = ControlAction::Pause;
+    if (what == "resume") r.action = ControlAction::Resume;
+    if (what == "save") r.action = ControlAction::Save;
+    if (what == "stop") r.action = ControlAction::Stop;
+    if (what == "balance") {
+      r.action = ControlAction::Balance;
+      r.argument = req.get_param_value("mode");
+      if (r.argument.empty()) return refuse(res, 400, "balance: give ?mode=");
+    }
+    inbox.push(std::move(r));
+    reply_json(res, 202, R"({"taken":true})");
+  }
+};
+
+ControlServer::ControlServer(const HttpAddress& address, std::string token)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.address = address;
+  s.token = std::move(token);
+  s.server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
+  s.server.set_payload_max_length(kMaxBody);
+  s.server.set_read_timeout(std::chrono::seconds(5));
+  s.server.set_keep_alive_max_count(100);
+  // Not cpp-httplib's default, which adds SO_REUSEPORT: a second run given the same port would
+  // then share it with the first, each getting some of the page's requests.
+  s.server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
+  s.routes();
+  const std::string where = fmt::format("{}:{}", address.host, address.port);
+  s.port = address.port == 0
+               ? s.server.bind_to_any_port(address.host)
+               : (s.server.bind_to_port(address.host, address.port) ? address.port : -1);
+  if (s.port <= 0) {
+    throw std::runtime_error(fmt::format(
+        "--http {}: cannot listen (the port is taken, or the address is not this machine's)",
+        where));
+  }
+  s.thread = std::thread([&s] { s.server.listen_after_bind(); });
+  // stop() before the server runs would be lost and the thread never end.
+  while (!s.server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+ControlServer::~ControlServer() {
+  impl_->server.stop();
+  impl_->thread.join();
+}
+
+int ControlServer::port() const {
+  return impl_->port;
+}
+
+std::string ControlServer::url() const {
+  const std::string host = impl_->address.host.find(':') != std::string::npos
+                               ? "[" + impl_->address.host + "]"
+                               : impl_->address.host;
+  return fmt::format("http://{}:{}/?token={}", host, impl_->port, impl_->token);
+}
+
+void ControlServer::publish(const RunState& state) {
+  std::string json = to_json(state);
+  const std::lock_guard lock(impl_->mutex);
+  impl_->state_json = std::move(json);
+  ++impl_->published;
+}
+
+void ControlServer::publish_displays(std::shared_ptr<const std::vector<RgbImage>> displays) {
+  const std::lock_guard lock(impl_->mutex);
+  impl_->displays = std::move(displays);
+}
+
+void ControlServer::publish_pictures(std::vector<std::filesystem::path> files) {
+  const std::lock_guard lock(impl_->mutex);
+  impl_->pictures = std::move(files);
+}
+
+ControlInbox& ControlServer::inbox() {
+  return impl_->inbox;
+}
+
+void ControlServer::let_readers_see_the_end(std::chrono::milliseconds recently,
+                                            std::chrono::milliseconds limit) {
+  std::unique_lock lock(impl_->mutex);
+  if (impl_->last_read == Clock::time_point{} || Clock::now() - impl_->last_read > recently) return;
+  impl_->read_happened.wait_for(lock, limit, [&] { return impl_->read == impl_->published; });
+}
+
+}  // namespace l2
