@@ -11,6 +11,7 @@
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "command_line/program_paths.hpp"
+#include "control_page/http_address.hpp"
 #include "dvi_link/frame_delta.hpp"
 #include "golden_command.hpp"
 #include "image/movie_file.hpp"
@@ -182,6 +183,16 @@ int main(int argc, char** argv) {
                   "after its last frame. With --mpi: monitors only, each board column rank "
                   "showing its own displays on its machine's DISPLAY; no keys")
       ->check(CLI::IsMember({"window", "monitors"}));
+  run->add_option("--http", o.http,
+                  "serve a control page for the run at [ADDR:]PORT (ADDR: 127.0.0.1, this "
+                  "machine only, unless given; PORT 0: a free one): the wall with each display's "
+                  "picture a few times a second, frame, fps, latency, what limits the run, every "
+                  "pipeserver's times, the current tiles and events; buttons to pause, resume, "
+                  "save the displays (OUT/frame-N/) and stop, and the balance mode of a balanced "
+                  "run. Its URL, printed at start, carries the run's token, which every control "
+                  "(and, bound beyond 127.0.0.1, every read) needs (control_page/README.md)")
+      ->check([](const std::string& v) { return l2::parse_http_address(v).reason(); },
+              "[ADDR:]PORT");
   run->add_option("--show-readback", o.show_readback,
                   "verification aid for --show: after every presented frame, read the windows "
                   "back from the X server and write DIR/frame-<k>/display-<id>.png (what the "

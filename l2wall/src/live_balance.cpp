@@ -35,6 +35,35 @@ int LiveBalance::layout_of(int frame) const {
   return frame_layout_[static_cast<std::size_t>(std::clamp(frame, 0, last))];
 }
 
+LayoutMessage LiveBalance::layout_for(int frame) const {
+  // Frames between two changes have no line of their own: the change before them holds.
+  for (int f = std::min(frame, static_cast<int>(lines_.size()) - 1); f >= 0; --f) {
+    if (!lines_[static_cast<std::size_t>(f)].empty())
+      return decode_layout(lines_[static_cast<std::size_t>(f)]);
+  }
+  return last_;
+}
+
+std::string LiveBalance::mode() const {
+  return to_string(balancer_.settings().mode);
+}
+
+bool LiveBalance::switch_mode(std::string_view mode, int frame, std::string& why) {
+  const auto* name = std::find(std::begin(kBalanceModeNames), std::end(kBalanceModeNames), mode);
+  if (name == std::end(kBalanceModeNames)) {
+    why = fmt::format("balance mode '{}': expected static, strips or kd", mode);
+    return false;
+  }
+  try {
+    balancer_.switch_mode(static_cast<BalanceMode>(name - std::begin(kBalanceModeNames)));
+  } catch (const LayoutError& e) {
+    why = e.what();
+    return false;
+  }
+  switches_.push_back(fmt::format("balance: switched to {} at frame {}\n", mode, frame));
+  return true;
+}
+
 bool LiveBalance::lose(int pipeserver, int delivered, const std::string& how, double seconds) {
   try {
     balancer_.lose_pipeserver(pipeserver);
@@ -176,6 +205,7 @@ std::string LiveBalance::summary() const {
   }
   s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
+  for (const std::string& line : switches_) s += line;
   // The planner's reason is a long line, and on a tightly packed wall nearly every frame's plan
   // is refused for much the same one: the first in full, the rest counted.
   if (!rejected_.empty()) s += fmt::format("balance: not used, {}\n", rejected_.front());

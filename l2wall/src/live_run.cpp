@@ -30,6 +30,7 @@
 #include "l2wall/run_pictures.hpp"
 #include "l2wall/run_report.hpp"
 #include "l2wall/run_time.hpp"
+#include "live_page.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
@@ -67,10 +68,12 @@ class LiveRun {
     make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
+    if (!o_.http.empty()) page_ = std::make_unique<LivePage>(o_, wall_);  // a taken port too
     make_paths();
     start_balance();
     backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
     pipeservers_started_ = true;
+    if (page_) watch_pipeservers_on_the_page();
     for (auto& p : paths_) p->open(pipeservers_, milliseconds(o_.start_timeout_ms), watch_);
     // A pipeserver that dies before every pipeserver's first frame is a start-up fault, survived or
     // not.
@@ -82,7 +85,8 @@ class LiveRun {
       pipeservers_.finish(milliseconds(10000));
       for (auto& p : paths_) p->finish();
     }
-    write_report("");
+    const std::string summary = write_report("");
+    if (page_) page_->end(summary.substr(0, summary.find('\n')), summary);
     if (stopped_) {
       std::fprintf(stderr, "l2wall: stopped by signal %d (%s) after %d frames; report: %s\n",
                    stopped_, strsignal(stopped_), shown_, o_.out.c_str());
@@ -136,13 +140,19 @@ class LiveRun {
   // naming the fault; the summary printed as at a run's end. Nothing when the pipeservers had
   // not started: nothing was measured.
   void write_report_after_fault(const std::string& fault) {
-    if (!pipeservers_started_) return;
-    try {
-      o_.frames = shown_;
-      records_.resize(static_cast<std::size_t>(shown_));
-      write_report(fault);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "l2wall: could not write the report: %s\n", e.what());
+    std::string summary;
+    if (pipeservers_started_) {
+      try {
+        o_.frames = shown_;
+        records_.resize(static_cast<std::size_t>(shown_));
+        summary = write_report(fault);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "l2wall: could not write the report: %s\n", e.what());
+      }
+    }
+    if (page_) {
+      page_->event(shown_ - 1, fault);
+      page_->end("ended in a fault: " + fault, summary);
     }
   }
 
@@ -180,7 +190,8 @@ class LiveRun {
   PipeserverLaunch launch_pipeservers() const {
     PipeserverLaunch l = pipeserver_launch(o_);
     for (const auto& p : paths_) p->add_pipeserver_args(l);
-    if (show_) l.extra_args = LiveShow::pipeserver_args();
+    // Paused from the window or the page, the run holds READY back as long as the user likes.
+    if (show_ || page_) l.extra_args = LiveShow::pipeserver_args();
     l.control = balance_ != nullptr;
     return l;
   }
@@ -225,6 +236,7 @@ class LiveRun {
     last_swap_ = totals_.start;
     while (shown_ < o_.frames) {
       if (show_ && !keep_showing()) break;
+      if (page_ && !follow_page()) break;
       if (const auto swap = lead.step(shown_, pipeservers_, records_, watch_)) on_swap(*swap);
       check_stall();
     }
@@ -263,6 +275,7 @@ class LiveRun {
       show_->show(shown_ - 1, static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh),
                   *paths_.front()->shown());
     }
+    if (page_ && page_->due()) publish_page();
     progress(now);
   }
 
@@ -271,12 +284,14 @@ class LiveRun {
     // A frame a lost pipeserver never delivered waited until its death was noticed: counted stale.
     if (latency != 1 && balance_ && balance_->stale(shown_)) {
       balance_->note_late(shown_);
+      if (page_) page_->event(shown_, "stale: shown late, without a lost pipeserver's part");
       return;
     }
     if (latency != 1) {
       latency_ok_ = false;
       std::fprintf(stderr, "\nl2wall: frame %d: latency %ld refreshes, expected 1\n", shown_,
                    latency);
+      if (page_) page_->event(shown_, fmt::format("latency {} refreshes, expected 1", latency));
     }
   }
 
@@ -340,6 +355,7 @@ class LiveRun {
     pipeservers_.lose(h);
     std::fprintf(stderr, "%sl2wall: %s; the run goes on without it (--survive-host-loss)\n",
                  progress_shown_ ? "\n" : "", how.c_str());
+    if (page_) page_->event(shown_ - 1, how + "; the run goes on without it");
     return true;
   }
 
@@ -471,6 +487,107 @@ class LiveRun {
     shut_down();
   }
 
+  // --- --http: the control page ----------------------------------------------------------
+
+  void watch_pipeservers_on_the_page() {
+    std::vector<std::string> logs, places;
+    for (const LivePipeserver& h : pipeservers_.all()) {
+      logs.push_back(h.report_path);
+      places.push_back(h.process ? h.process->place() : std::string());
+    }
+    page_->watch_pipeservers(logs, places);
+  }
+
+  // The page's requests, at a frame boundary; a pause holds the run here (nothing taken in, no
+  // READY sent, the pipeservers wait) while still watching the pipeservers. False once the page
+  // asked to stop and a frame is shown.
+  bool follow_page() {
+    take_page_requests();
+    if (steering_.paused) {
+      const auto since = RunClock::now();
+      while (steering_.paused && !steering_.stop) {
+        std::this_thread::sleep_for(milliseconds(10));
+        check_processes();
+        pipeservers_.serve_channels();
+        take_page_requests();
+        if (page_->due()) publish_page();
+      }
+      const auto paused = std::chrono::duration_cast<milliseconds>(RunClock::now() - since);
+      paused_ms_ += static_cast<double>(paused.count());  // the pipeservers wait too: not fps
+      last_swap_ += paused;                               // nor a stall
+    }
+    if (page_->due()) publish_page();
+    return !(steering_.stop && shown_ > 0);
+  }
+
+  void take_page_requests() {
+    const int frame = shown_ - 1;
+    for (const ControlRequest& r : page_->requests()) {
+      switch (r.action) {
+        case ControlAction::Pause:
+          if (!steering_.paused) ++steering_.pauses;
+          steering_.paused = true;
+          page_->event(frame, "paused: READY held back, the pipeservers wait");
+          break;
+        case ControlAction::Resume:
+          steering_.paused = false;
+          page_->event(frame, "resumed");
+          break;
+        case ControlAction::Save:
+          save_from_page(frame);
+          break;
+        case ControlAction::Stop:
+          steering_.stop = true;
+          steering_.stopped_at = frame;
+          page_->event(frame, "stopped from the control page");
+          break;
+        case ControlAction::Balance:
+          switch_balance(r.argument, frame);
+          break;
+      }
+    }
+  }
+
+  void save_from_page(int frame) {
+    if (frame < 0) return page_->event(frame, "not saved: no frame on the displays yet");
+    save_frame(frame);
+    ++steering_.saves;
+    page_->event(
+        frame,
+        fmt::format("saved the displays to {}",
+                    (std::filesystem::path(o_.out) / fmt::format("frame-{}", frame)).string()));
+  }
+
+  void switch_balance(const std::string& mode, int frame) {
+    std::string why = "this run does not balance (start it with --balance or [balance])";
+    if (balance_ && balance_->switch_mode(mode, frame, why))
+      return page_->event(frame, "balance mode: " + mode + " from the next layout");
+    page_->event(frame, "balance not switched: " + why);
+  }
+
+  void publish_page() {
+    PageMoment m;
+    m.frame = shown_ - 1;
+    const double seconds = (ms_between(totals_.start, RunClock::now()) - paused_ms_) / 1000.0;
+    m.fps = shown_ > 0 && seconds > 0 ? shown_ / seconds : 0.0;
+    if (shown_ > 0 && totals_.latency_measured) {
+      const FrameRecord& r = records_[static_cast<std::size_t>(shown_ - 1)];
+      m.latency_frames = static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
+    }
+    m.paused = steering_.paused;
+    m.tiles = balance_ ? page_tiles(balance_->layout_for(shown_ - 1)) : page_tiles(layout_);
+    for (const LivePipeserver& h : pipeservers_.all()) m.lost.push_back(h.lost);
+    if (runs_dvi(o_.path)) {
+      for (int k = std::max(0, shown_ - 60); k < shown_; ++k)
+        m.recent_route.push_back(records_[static_cast<std::size_t>(k)].route_ms);
+      m.refresh_hz = o_.refresh_hz;
+    }
+    if (balance_) m.balance_mode = balance_->mode();
+    if (shown_ == 0) return page_->publish(m, nullptr);
+    const DisplayPictures pictures = paths_.front()->frame_pictures(shown_ - 1, watch_);
+    page_->publish(m, &pictures);
+  }
+
   // --- output ------------------------------------------------------------------------------
 
   void progress(RunClock::time_point now) {
@@ -502,17 +619,20 @@ class LiveRun {
   }
 
   // `fault`: the fault that ended the run at frame shown_, or empty.
-  void write_report(const std::string& fault) {
+  // Returns the summary.
+  std::string write_report(const std::string& fault) {
     if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     std::vector<std::string> pipeserver_logs;
     for (const LivePipeserver& h : pipeservers_.all()) pipeserver_logs.push_back(h.report_path);
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
+                              (page_ ? steering_.summary() : std::string()) +
                               (balance_ ? balance_->summary() : std::string());
     const std::string summary =
         write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
     if (o_.progress && fault.empty()) std::fputs("\n", stderr);  // a fault's line ended it
     std::fputs(summary.c_str(), stdout);
+    return summary;
   }
 
   RunOptions o_;
@@ -521,6 +641,8 @@ class LiveRun {
   Wall wall_;
   TileLayout layout_;
   std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
+  std::unique_ptr<LivePage> page_;                   // --http: the control page
+  PageSteering steering_;                            // what the page asked for
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
   std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
   PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image/folders.hpp"
+#include "pipeserver_log.hpp"
 #include "run_stats.hpp"
 
 namespace l2 {
@@ -29,16 +30,14 @@ PipeserverLog read_pipeserver_log(const std::string& path, int frames) {
   PipeserverLog log;
   log.frames.resize(static_cast<std::size_t>(frames));
   std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    int k = 0, retries = 0;
-    double render = 0, wait = 0;
-    if (std::sscanf(line.c_str(), "frame %d render_ms %lf wait_ms %lf retries %d", &k, &render,
-                    &wait, &retries) == 4 &&
-        k >= 0 && k < frames) {
-      log.frames[static_cast<std::size_t>(k)] = {render, wait, retries, true};
-    } else if (line.rfind("done ", 0) == 0) {
-      log.done = line.substr(5);
+  std::string text;
+  while (std::getline(in, text)) {
+    const PipeserverLogLine line = parse_pipeserver_log_line(text);
+    if (line.kind == PipeserverLogLine::Kind::Frame && line.frame >= 0 && line.frame < frames) {
+      log.frames[static_cast<std::size_t>(line.frame)] = {line.render_ms, line.wait_ms,
+                                                          line.retries, true};
+    } else if (line.kind == PipeserverLogLine::Kind::Done) {
+      log.done = line.done;
     }
   }
   return log;

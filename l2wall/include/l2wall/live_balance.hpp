@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,14 @@ class LiveBalance {
 
   // The layout frame `frame` is rendered in (0: the start, then one more each change).
   int layout_of(int frame) const;
+  // Its tiles and their pipeservers, as the LAYOUT line sent for it said (the control page draws
+  // them); a frame not planned yet: the last layout sent.
+  LayoutMessage layout_for(int frame) const;
+
+  // The mode the next layouts are cut by, and a switch to another from the next frame planned
+  // on (the control page): false, with the reason in `why`, when the wall cannot take it.
+  std::string mode() const;
+  bool switch_mode(std::string_view mode, int frame, std::string& why);
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
   // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, the first rejected
   // plan in full and how many more were rejected, the pipeservers lost and the frames stale.
@@ -90,9 +99,10 @@ class LiveBalance {
   std::uint64_t mixed_swaps_ = 0;
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
-  std::string strips_uncounted_;    // why the strips are not counted; empty: they are
-  LayoutMessage last_;              // the last layout's tiles and pipeservers
-  std::vector<std::string> lines_;  // by frame sent so far, the LAYOUT line
+  std::string strips_uncounted_;       // why the strips are not counted; empty: they are
+  LayoutMessage last_;                 // the last layout's tiles and pipeservers
+  std::vector<std::string> lines_;     // by frame sent so far, the LAYOUT line
+  std::vector<std::string> switches_;  // the mode switches, for the summary
 };
 
 }  // namespace l2

@@ -1,0 +1,169 @@
+#include "live_page.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+#include "control_page/access_token.hpp"
+#include "l2wall/path_choice.hpp"
+#include "run_stats.hpp"
+
+namespace l2 {
+namespace {
+
+using std::chrono::milliseconds;
+
+// A few pictures a second is what a person watching needs; more would take the run's time.
+constexpr milliseconds kPublishEvery{250};
+constexpr std::size_t kRecentFrames = 60;
+constexpr std::size_t kEventsKept = 50;
+
+HttpAddress address_of(const RunOptions& o) {
+  const Result<HttpAddress> a = parse_http_address(o.http);
+  if (!a.ok()) throw std::invalid_argument("--http: " + a.reason());
+  return *a;
+}
+
+template <class T>
+void keep_last(std::vector<T>& v, std::size_t n) {
+  if (v.size() > n) v.erase(v.begin(), v.end() - static_cast<std::ptrdiff_t>(n));
+}
+
+}  // namespace
+
+std::vector<PageTile> page_tiles(const TileLayout& layout) {
+  std::vector<PageTile> tiles;
+  for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
+    const Rect& r = layout.tiles[i].on_canvas;
+    tiles.push_back({r.x, r.y, r.w, r.h, layout.tile_pipeserver[i]});
+  }
+  return tiles;
+}
+
+std::vector<PageTile> page_tiles(const LayoutMessage& layout) {
+  std::vector<PageTile> tiles;
+  for (std::size_t i = 0; i < layout.tiles.size() && i < layout.pipeservers.size(); ++i) {
+    const Rect& r = layout.tiles[i];
+    tiles.push_back({r.x, r.y, r.w, r.h, layout.pipeservers[i]});
+  }
+  return tiles;
+}
+
+std::string PageSteering::summary() const {
+  const auto count = [](int n, const char* what) {
+    return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+  };
+  std::string line = "control page: " + count(pauses, "pause") + ", " + count(saves, "save");
+  if (stop) line += fmt::format(", stopped from the page at frame {}", stopped_at);
+  return line + "\n";
+}
+
+LivePage::LivePage(const RunOptions& o, const Wall& wall) {
+  const HttpAddress address = address_of(o);
+  server_ = std::make_unique<ControlServer>(address, make_access_token());
+  state_.wall_name = wall.name;
+  state_.canvas_width = wall.canvas_width;
+  state_.canvas_height = wall.canvas_height;
+  for (const Display& d : wall.displays)
+    state_.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
+  state_.path = path_choice_name(o.path);
+  state_.frames_planned = o.frames;
+  std::fprintf(stderr, "l2wall: control page: %s%s\n", server_->url().c_str(),
+               address.loopback() ? ""
+                                  : " (reachable beyond this machine: the token is the only "
+                                    "lock, and the traffic is not encrypted)");
+  server_->publish(state_);
+}
+
+void LivePage::watch_pipeservers(const std::vector<std::string>& logs,
+                                 const std::vector<std::string>& places) {
+  logs_.clear();
+  state_.pipeservers.clear();
+  for (std::size_t i = 0; i < logs.size(); ++i) {
+    logs_.emplace_back(logs[i]);
+    PagePipeserver p;
+    p.index = static_cast<int>(i);
+    p.place = i < places.size() ? places[i] : std::string();
+    state_.pipeservers.push_back(std::move(p));
+  }
+}
+
+bool LivePage::due() const {
+  return publish_now_ || RunClock::now() - last_publish_ >= kPublishEvery;
+}
+
+void LivePage::read_logs() {
+  for (std::size_t i = 0; i < logs_.size(); ++i) {
+    PagePipeserver& p = state_.pipeservers[i];
+    logs_[i].read_new([&](const PipeserverLogLine& line) {
+      if (line.kind == PipeserverLogLine::Kind::Frame)
+        p.recent.push_back({line.frame, line.render_ms, line.wait_ms, line.retries});
+      if (line.kind == PipeserverLogLine::Kind::Done) p.back_channel = line.done;
+    });
+    keep_last(p.recent, kRecentFrames);
+  }
+}
+
+// The summary's "limited by ..." line, of the recent frames only.
+std::string LivePage::limited_by(const PageMoment& m) const {
+  RunTimes t;
+  for (const PagePipeserver& p : state_.pipeservers) {
+    t.render.emplace_back();
+    for (const PageFrameTimes& f : p.recent) t.render.back().push_back(f.render_ms);
+  }
+  t.route = m.recent_route;
+  t.refresh_hz = m.refresh_hz;
+  const std::string lines = spread_lines(t);
+  const auto at = lines.find("limited by ");
+  if (at == std::string::npos) return {};
+  return lines.substr(at, lines.find('\n', at) - at);
+}
+
+void LivePage::publish(const PageMoment& m, const DisplayPictures* pictures) {
+  read_logs();
+  state_.frame = m.frame;
+  state_.fps = m.fps;
+  state_.latency_frames = m.latency_frames;
+  state_.paused = m.paused;
+  state_.tiles = m.tiles;
+  for (std::size_t i = 0; i < m.lost.size() && i < state_.pipeservers.size(); ++i)
+    state_.pipeservers[i].lost = m.lost[i];
+  state_.limited_by = limited_by(m);
+  state_.balance_mode = m.balance_mode;
+  state_.balance_modes.clear();
+  if (!m.balance_mode.empty()) state_.balance_modes = {"static", "strips", "kd"};
+  if (pictures) {
+    auto shown = std::make_shared<std::vector<RgbImage>>();
+    for (const PageDisplay& d : state_.displays) shown->push_back((*pictures)(d.id));
+    server_->publish_displays(std::move(shown));
+    ++state_.pictures_version;
+  }
+  server_->publish(state_);
+  last_publish_ = RunClock::now();
+  publish_now_ = false;
+}
+
+void LivePage::event(int frame, std::string text) {
+  state_.events.push_back({frame, std::move(text)});
+  keep_last(state_.events, kEventsKept);
+  publish_now_ = true;
+}
+
+std::vector<ControlRequest> LivePage::requests() {
+  std::vector<ControlRequest> r = server_->inbox().take();
+  if (!r.empty()) publish_now_ = true;
+  return r;
+}
+
+void LivePage::end(const std::string& how, const std::string& summary) {
+  read_logs();
+  state_.ended = how;
+  state_.summary = summary;
+  state_.paused = false;
+  server_->publish(state_);
+  server_->let_readers_see_the_end(milliseconds(3000), milliseconds(2000));
+}
+
+}  // namespace l2
