@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -58,7 +60,8 @@ struct ControlServer::Impl {
   std::uint64_t published = 0, read = 0;  // versions of the state: the last published, read
   Clock::time_point last_read{};
   std::shared_ptr<const std::vector<RgbImage>> displays;
-  std::vector<std::filesystem::path> pictures;
+  std::vector<NamedPicture> pictures;
+  std::string steering_refused;  // why every POST is refused; empty: none is
 
   // Steering always needs the token; reading only beyond this machine.
   bool allowed(const httplib::Request& req, bool steering) const {
@@ -81,7 +84,7 @@ struct ControlServer::Impl {
                  if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
                  serve_display(req, res);
                });
-    server.Get(R"(/api/picture/([A-Za-z0-9._-]{1,200}))",
+    server.Get(R"(/api/picture/([A-Za-z0-9._~-]{1,200}))",
                [this](const httplib::Request& req, httplib::Response& res) {
                  if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
                  serve_picture(req.matches[1].str(), res);
@@ -89,8 +92,14 @@ struct ControlServer::Impl {
     server.Post(R"(/api/(pause|resume|save|stop|balance))",
                 [this](const httplib::Request& req, httplib::Response& res) {
                   if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
+                  if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
                   steer(req, res);
                 });
+  }
+
+  std::string refusal() {
+    const std::lock_guard lock(mutex);
+    return steering_refused;
   }
 
   std::string read_state() {
@@ -128,15 +137,15 @@ struct ControlServer::Impl {
     {
       const std::lock_guard lock(mutex);
       const auto it = std::find_if(pictures.begin(), pictures.end(),
-                                   [&](const auto& p) { return p.filename() == name; });
+                                   [&](const NamedPicture& p) { return p.name == name; });
       if (it == pictures.end()) return refuse(res, 404, "no such picture");
-      file = *it;
+      file = it->file;
     }
-    try {
-      res.set_content(encode_png(read_png(file)), "image/png");
-    } catch (const std::exception& e) {
-      refuse(res, 500, "cannot read the picture");
-    }
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) return refuse(res, 500, "cannot read the picture");
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(std::move(bytes), "image/png");
   }
 
   void steer(const httplib::Request& req, httplib::Response& res) {
@@ -214,13 +223,18 @@ void ControlServer::publish_displays(std::shared_ptr<const std::vector<RgbImage>
   impl_->displays = std::move(displays);
 }
 
-void ControlServer::publish_pictures(std::vector<std::filesystem::path> files) {
+void ControlServer::publish_pictures(std::vector<NamedPicture> files) {
   const std::lock_guard lock(impl_->mutex);
   impl_->pictures = std::move(files);
 }
 
 ControlInbox& ControlServer::inbox() {
   return impl_->inbox;
+}
+
+void ControlServer::refuse_steering(std::string why) {
+  const std::lock_guard lock(impl_->mutex);
+  impl_->steering_refused = std::move(why);
 }
 
 void ControlServer::let_readers_see_the_end(std::chrono::milliseconds recently,

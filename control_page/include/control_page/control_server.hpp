@@ -3,7 +3,8 @@
 //
 //   GET  /api/state                   the RunState last published, as JSON
 //   GET  /api/display/ID.png?scale=N  display ID as last published, every Nth pixel (1: all)
-//   GET  /api/picture/NAME            another picture of the run (view: the verifier's, ...)
+//   GET  /api/picture/NAME            another picture of the run (`l2wall view`: its saved frames,
+//                                     the golden check's and the verifier's pictures)
 //   POST /api/pause, /api/resume, /api/save, /api/stop, /api/balance?mode=M
 //
 // Every POST needs the run's token (`?token=` or the X-L2-Token header), so nobody else on the
@@ -25,6 +26,11 @@
 
 namespace l2 {
 
+struct NamedPicture {
+  std::string name;  // "frame-9~display-0.png"
+  std::filesystem::path file;
+};
+
 class ControlServer {
  public:
   // Listens on `address` and starts serving. Throws std::runtime_error in one line when it
@@ -43,11 +49,15 @@ class ControlServer {
   // again, and encoded only when a page asks for them.
   void publish(const RunState& state);
   void publish_displays(std::shared_ptr<const std::vector<RgbImage>> displays);
-  // Other pictures by name (`l2wall view`: the golden check's and the verifier's), read from
-  // their files when asked for.
-  void publish_pictures(std::vector<std::filesystem::path> files);
+  // Other pictures (PNG files) by name (`l2wall view`: the saved frames, the golden check's and
+  // the verifier's), read from their files when asked for. Names are of letters, digits and
+  // . _ - ~ only: a request names one of them, never a path.
+  void publish_pictures(std::vector<NamedPicture> pictures);
 
   ControlInbox& inbox();
+  // From now on every POST is refused with 409 and `why` ("the run is over: ..."): a finished
+  // run served by `l2wall view` has nothing to steer.
+  void refuse_steering(std::string why);
 
   // Whether a page read /api/state within `recently`; if so, waits (at most `limit`) until it
   // has read the state published last, so a run that ends shows the page how it ended.
