@@ -22,6 +22,7 @@
 #include "report_plot.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/wall.hpp"
+#include "view_command.hpp"
 
 namespace {
 
@@ -246,6 +247,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingDirectory);
   l2::add_golden_command(app);  // `l2wall golden check|update`
+  l2::add_view_command(app);    // `l2wall view OUT`
   // `l2wall golden` runs in its callback and ends with its own status (CLI::RuntimeError).
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   try {

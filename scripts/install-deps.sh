@@ -16,7 +16,11 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin
   socat iproute2 xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox
+  chromium  # the control page's browser test (tests/browser/)
 )
+# Node.js and npm drive that browser (playwright-core, which downloads no browser): Debian's,
+# unless the machine already has a Node.js of its own with npm.
+command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -30,4 +34,11 @@ if ((${#missing[@]})); then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 else
   echo "install-deps: all ${#PACKAGES[@]} packages present"
+fi
+
+# playwright-core for the browser test, at the version package-lock.json pins, from npm.
+browser_tests="$(dirname "$0")/../tests/browser"
+if [[ ! -d $browser_tests/node_modules/playwright-core ]]; then
+  echo "install-deps: npm ci in tests/browser (playwright-core)"
+  (cd "$browser_tests" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
 fi

@@ -1,0 +1,62 @@
+// The control page in a real browser (Debian's Chromium, driven by tests/browser/control_page.mjs
+// with playwright-core, which downloads no browser): it shows the wall's displays, the picture
+// it shows of a display is that display's pixels, Pause stops the frame number, Save and Stop
+// work from the page.
+#include <nlohmann/json.hpp>
+
+#include "control_page_run.hpp"
+
+namespace l2::testing_support {
+namespace {
+
+// Why the browser test cannot run here, or empty.
+std::string browser_missing() {
+  const fs::path browser = fs::path(L2_SOURCE_DIR) / "tests/browser";
+  if (!fs::exists("/usr/bin/chromium")) return "no /usr/bin/chromium (scripts/install-deps.sh)";
+  if (std::system("command -v node >/dev/null 2>&1") != 0) return "no node";
+  if (!fs::exists(browser / "node_modules/playwright-core"))
+    return "no tests/browser/node_modules (scripts/install-deps.sh runs npm ci there)";
+  return {};
+}
+
+TEST(ControlPageBrowser, ShowsTheDisplaysAndSteersTheRun) {
+  if (const std::string why = browser_missing(); !why.empty()) GTEST_SKIP() << why;
+  PageRun run("browser", {"--frames", "100000", "--keep", "none"});
+  const fs::path dir = run.out().parent_path();
+  const std::string command =
+      fmt::format("exec node '{}' '{}' '{}' > '{}' 2> '{}'",
+                  (fs::path(L2_SOURCE_DIR) / "tests/browser/control_page.mjs").string(), run.url(),
+                  dir.string(), (dir / "browser.json").string(), (dir / "browser.log").string());
+  ChildProcess browser({"/bin/sh", "-c", command});
+  const auto ended = browser.wait_for(120s);
+  ASSERT_TRUE(ended) << "the browser script did not end";
+  ASSERT_EQ(ended->code, 0) << slurp(dir / "browser.log") << run.output();
+  const auto seen = nlohmann::json::parse(slurp(dir / "browser.json"));
+
+  EXPECT_EQ(seen["displays"], 4);  // the default wall: 2x2
+  EXPECT_EQ(seen["title"], "l2wall: 2x2 k-d wall");
+  EXPECT_EQ(seen["frame_paused"], seen["frame_later"]) << "frames went on while paused";
+  EXPECT_TRUE(seen["end"].get<std::string>() == "ended" ||
+              seen["end"].get<std::string>() == "not reachable (run ended?)")
+      << seen.dump();
+  EXPECT_EQ(run.wait(60s).code, 0) << run.output();
+
+  // The picture the page showed of display 0 is every Nth pixel of what the run saved of it.
+  const int frame = seen["frame_paused"];
+  const int scale = seen["scale"];
+  const RgbImage saved = read_png(run.out() / fmt::format("frame-{}", frame) / "display-0.png");
+  const RgbImage shown = read_png(dir / "page-display-0.png");
+  ASSERT_EQ(shown.width(), (saved.width() + scale - 1) / scale);
+  ASSERT_EQ(shown.height(), (saved.height() + scale - 1) / scale);
+  int differ = 0;
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x)
+      differ += shown.at(x, y) != saved.at(x * scale, y * scale);
+  EXPECT_EQ(differ, 0) << "of " << shown.width() * shown.height() << " pixels";
+  EXPECT_NE(slurp(run.out() / "summary.txt").find("control page: 1 pause, 1 save, stopped"),
+            std::string::npos);
+  expect_clean(run);
+}
+
+}  // namespace
+}  // namespace l2::testing_support
