@@ -14,7 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels  # real-world models (the Khronos glTF samples) a model test loads
   libopenmpi-dev openmpi-bin
-  socat iproute2 xvfb xauth libx11-dev libxrandr-dev libxtst-dev
+  socat iproute2 curl jq xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox
   chromium  # the control page's browser test (tests/browser/)
 )

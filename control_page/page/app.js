@@ -187,7 +187,9 @@ function drawStatus(s) {
   $('pause').disabled = !steerable || s.paused;
   $('resume').disabled = !steerable || !s.paused;
   $('save').disabled = !steerable || s.frame < 0;
-  $('stop').disabled = !steerable;
+  $('stop').disabled = !steerable || !s.stoppable;
+  $('stop').title = s.stoppable ? 'End the run after this frame, as q does'
+                                : 'Under --mpi the pipeserver ranks cannot be ended early: Ctrl-C on mpirun ends the run';
   const modes = $('balance-mode');
   $('balance-control').hidden = !s.balance.mode;
   if (s.balance.mode && modes.options.length !== s.balance.modes.length) {

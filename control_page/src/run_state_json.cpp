@@ -70,6 +70,7 @@ std::string to_json(const RunState& s) {
       {"latency_frames", s.latency_frames},
       {"limited_by", s.limited_by},
       {"paused", s.paused},
+      {"stoppable", s.stoppable},
       {"live", s.live},
       {"ended", s.ended},
       {"summary", s.summary},

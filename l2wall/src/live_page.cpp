@@ -60,7 +60,7 @@ std::string PageSteering::summary() const {
   return line + "\n";
 }
 
-LivePage::LivePage(const RunOptions& o, const Wall& wall) {
+LivePage::LivePage(const RunOptions& o, const Wall& wall, bool stoppable) {
   const HttpAddress address = address_of(o);
   server_ = std::make_unique<ControlServer>(address, make_access_token());
   state_.wall_name = wall.name;
@@ -70,6 +70,7 @@ LivePage::LivePage(const RunOptions& o, const Wall& wall) {
     state_.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
   state_.path = path_choice_name(o.path);
   state_.frames_planned = o.frames;
+  state_.stoppable = stoppable;
   std::fprintf(stderr, "l2wall: control page: %s%s\n", server_->url().c_str(),
                address.loopback() ? ""
                                   : " (reachable beyond this machine: the token is the only "

@@ -39,7 +39,8 @@ class LivePage {
  public:
   // Listens (throws std::runtime_error in one line when it cannot) and prints the page's URL
   // with the run's token on stderr.
-  LivePage(const RunOptions& o, const Wall& wall);
+  // `stoppable`: whether a stop from the page can end the run (RunBackends).
+  LivePage(const RunOptions& o, const Wall& wall, bool stoppable);
 
   // The pipeservers' logs (pipeserver-<i>.log) and where each runs, once they are started.
   void watch_pipeservers(const std::vector<std::string>& logs,

@@ -68,7 +68,9 @@ class LiveRun {
     make_folders(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
-    if (!o_.http.empty()) page_ = std::make_unique<LivePage>(o_, wall_);  // a taken port too
+    if (!o_.http.empty())
+      page_ = std::make_unique<LivePage>(o_, wall_,
+                                         backends_.stops_pipeservers_early());  // a taken port too
     make_paths();
     start_balance();
     backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
@@ -190,8 +192,7 @@ class LiveRun {
   PipeserverLaunch launch_pipeservers() const {
     PipeserverLaunch l = pipeserver_launch(o_);
     for (const auto& p : paths_) p->add_pipeserver_args(l);
-    // Paused from the window or the page, the run holds READY back as long as the user likes.
-    if (show_ || page_) l.extra_args = LiveShow::pipeserver_args();
+    l.extra_args = pausable_pipeserver_args(o_);
     l.control = balance_ != nullptr;
     return l;
   }
@@ -537,6 +538,12 @@ class LiveRun {
           save_from_page(frame);
           break;
         case ControlAction::Stop:
+          if (!backends_.stops_pipeservers_early()) {
+            page_->event(frame,
+                         "not stopped: the pipeserver ranks cannot be ended early under --mpi; "
+                         "Ctrl-C on mpirun ends the run");
+            break;
+          }
           steering_.stop = true;
           steering_.stopped_at = frame;
           page_->event(frame, "stopped from the control page");

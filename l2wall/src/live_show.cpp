@@ -47,10 +47,6 @@ std::string LiveShow::title(const Wall& wall) {
   return wall.name.empty() ? std::string("l2wall") : "l2wall - " + printable(wall.name);
 }
 
-std::vector<std::string> LiveShow::pipeserver_args() {
-  return {"--ready-retries", "1000"};  // the pipeserver's largest: 1000 SYNC? before giving up
-}
-
 void LiveShow::show(int frame, long latency_frames,
                     const std::function<const RgbImage&(int)>& display) {
   for (std::size_t d = 0; d < images_.size(); ++d) images_[d] = display(static_cast<int>(d));

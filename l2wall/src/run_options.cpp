@@ -61,6 +61,11 @@ Status run_options_error(const RunOptions& o) {
   return {};
 }
 
+std::vector<std::string> pausable_pipeserver_args(const RunOptions& o) {
+  if (o.show.empty() && o.http.empty()) return {};
+  return {"--ready-retries", "1000"};  // the pipeserver's largest: 1000 SYNC? before giving up
+}
+
 BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   BalanceSpec spec = wall.balance;
   if (const auto mode = parse_balance_mode(o.balance)) spec.mode = *mode;

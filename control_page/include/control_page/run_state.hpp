@@ -52,8 +52,9 @@ struct RunState {
   long latency_frames = -1;  // of the last frame; -1: not measured
   std::string limited_by;    // "limited by ..." of the recent frames, as the summary says it
   bool paused = false;
-  bool live = true;   // false: a finished run served by `l2wall view`
-  std::string ended;  // how the run ended ("" while it runs): its summary's first line
+  bool stoppable = true;  // whether POST /api/stop can end this run (not under --mpi)
+  bool live = true;       // false: a finished run served by `l2wall view`
+  std::string ended;      // how the run ended ("" while it runs): its summary's first line
   std::string summary;
   std::string balance_mode;                 // "" for a run that does not balance
   std::vector<std::string> balance_modes;   // what POST /api/balance accepts

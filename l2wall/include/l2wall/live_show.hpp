@@ -32,10 +32,6 @@ class LiveShow {
   // The windows' title ("l2wall - <wall name>"; fullscreen ones add " - display <id>").
   static std::string title(const Wall& wall);
 
-  // Extra pipeserver arguments: a paused run holds READY back as long as the user likes, so a
-  // pipeserver asks again with SYNC? every --ready-timeout ms for longer than it would otherwise.
-  static std::vector<std::string> pipeserver_args();
-
   // After a swap: shows `frame` (display(id): display id's picture) with the frames per second
   // and the measured latency in the overlay line.
   void show(int frame, long latency_frames, const std::function<const RgbImage&(int)>& display);

@@ -23,6 +23,10 @@ class RunBackends {
   virtual std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const = 0;
   virtual void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                                  const TileLayout& layout) const = 0;
+  // Whether the run can end its pipeservers before their last frame, as a stop from the control
+  // page asks: child processes are signalled; MPI ranks on other hosts cannot be, they wait for
+  // READY (mpirun ends them all on Ctrl-C).
+  virtual bool stops_pipeservers_early() const { return true; }
 };
 
 // Child processes, shared memory, ptys, the compositing server process.

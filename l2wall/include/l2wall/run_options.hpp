@@ -68,6 +68,11 @@ SavedFrames parse_saved_frames(const std::string& text);
 // such a mistake is a usage error; run_wall() throws std::invalid_argument with it.
 Status run_options_error(const RunOptions& options);
 
+// Extra pipeserver arguments of a run a person can pause (--show, --http): a paused run holds
+// READY back as long as they like, so a pipeserver asks again with SYNC? every --ready-timeout
+// ms for longer than it would otherwise. Empty for other runs.
+std::vector<std::string> pausable_pipeserver_args(const RunOptions& options);
+
 // The wall's [balance] with --balance over its mode, and --survive-host-loss.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
 // Why this run cannot balance as asked (--survive-host-loss without balancing, or on another

@@ -38,6 +38,7 @@ class MpiBackends final : public RunBackends {
                                         const RunOptions& o) const override {
     return std::make_unique<MpiDviPath>(layout, map_, session_, o);
   }
+  bool stops_pipeservers_early() const override { return false; }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
     return std::make_unique<MpiVizPath>(layout_, map_, stall_timeout_ms_);
   }
@@ -74,6 +75,10 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   launch.extra_args = {"--mpi"};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
+  // Only the control page pauses an MPI run: the columns' windows take no keys.
+  RunOptions pausable = o;
+  pausable.show.clear();
+  for (const std::string& a : pausable_pipeserver_args(pausable)) launch.extra_args.push_back(a);
   // Its report goes to --out on the machine it runs on, which the coordinator may not share.
   make_folders(o.out, "--out");
   const std::vector<std::string> args = pipeserver_argv(launch, h);
