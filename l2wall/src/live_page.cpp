@@ -33,6 +33,24 @@ void keep_last(std::vector<T>& v, std::size_t n) {
 
 }  // namespace
 
+RunState wall_state(const Wall& wall) {
+  RunState s;
+  s.wall_name = wall.name;
+  s.canvas_width = wall.canvas_width;
+  s.canvas_height = wall.canvas_height;
+  for (const Display& d : wall.displays)
+    s.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
+  return s;
+}
+
+void take_log_line(PagePipeserver& p, const PipeserverLogLine& line) {
+  if (line.kind == PipeserverLogLine::Kind::Frame) {
+    p.recent.push_back({line.frame, line.render_ms, line.wait_ms, line.retries});
+    keep_last(p.recent, kRecentFrames);
+  }
+  if (line.kind == PipeserverLogLine::Kind::Done) p.back_channel = line.done;
+}
+
 std::vector<PageTile> page_tiles(const TileLayout& layout) {
   std::vector<PageTile> tiles;
   for (std::size_t i = 0; i < layout.tiles.size(); ++i) {
@@ -63,11 +81,7 @@ std::string PageSteering::summary() const {
 LivePage::LivePage(const RunOptions& o, const Wall& wall, bool stoppable) {
   const HttpAddress address = address_of(o);
   server_ = std::make_unique<ControlServer>(address, make_access_token());
-  state_.wall_name = wall.name;
-  state_.canvas_width = wall.canvas_width;
-  state_.canvas_height = wall.canvas_height;
-  for (const Display& d : wall.displays)
-    state_.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
+  state_ = wall_state(wall);
   state_.path = path_choice_name(o.path);
   state_.frames_planned = o.frames;
   state_.stoppable = stoppable;
@@ -98,12 +112,7 @@ bool LivePage::due() const {
 void LivePage::read_logs() {
   for (std::size_t i = 0; i < logs_.size(); ++i) {
     PagePipeserver& p = state_.pipeservers[i];
-    logs_[i].read_new([&](const PipeserverLogLine& line) {
-      if (line.kind == PipeserverLogLine::Kind::Frame)
-        p.recent.push_back({line.frame, line.render_ms, line.wait_ms, line.retries});
-      if (line.kind == PipeserverLogLine::Kind::Done) p.back_channel = line.done;
-    });
-    keep_last(p.recent, kRecentFrames);
+    logs_[i].read_new([&](const PipeserverLogLine& line) { take_log_line(p, line); });
   }
 }
 

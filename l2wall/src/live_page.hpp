@@ -80,6 +80,12 @@ struct PageSteering {
   std::string summary() const;
 };
 
+// A page's state with the wall filled in (name, canvas, displays), for a live run or a finished
+// one.
+RunState wall_state(const Wall& wall);
+// What a pipeserver's log line tells the page of it: a frame's times, or its back-channel totals.
+void take_log_line(PagePipeserver& pipeserver, const PipeserverLogLine& line);
+
 // The tiles of a layout as the page draws them: canvas rectangles and their pipeservers.
 std::vector<PageTile> page_tiles(const TileLayout& layout);
 std::vector<PageTile> page_tiles(const LayoutMessage& layout);

@@ -78,11 +78,7 @@ std::vector<PagePipeserver> pipeservers_in(const fs::path& out) {
     PagePipeserver p;
     p.index = i;
     PipeserverLogTail log((out / fmt::format("pipeserver-{}.log", i)).string());
-    log.read_new([&](const PipeserverLogLine& line) {
-      if (line.kind == PipeserverLogLine::Kind::Frame)
-        p.recent.push_back({line.frame, line.render_ms, line.wait_ms, line.retries});
-      if (line.kind == PipeserverLogLine::Kind::Done) p.back_channel = line.done;
-    });
+    log.read_new([&](const PipeserverLogLine& line) { take_log_line(p, line); });
     all.push_back(std::move(p));
   }
   return all;
@@ -104,13 +100,8 @@ std::vector<PageTile> tiles_of(const fs::path& out, const Wall& wall, int frame)
 }
 
 RunState finished_state(const ViewOptions& o, const Wall& wall, int frame) {
-  RunState s;
+  RunState s = wall_state(wall);
   s.live = false;
-  s.wall_name = wall.name;
-  s.canvas_width = wall.canvas_width;
-  s.canvas_height = wall.canvas_height;
-  for (const Display& d : wall.displays)
-    s.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
   s.summary = read_text(fs::path(o.out) / "summary.txt");
   s.ended = s.summary.substr(0, s.summary.find('\n'));
   std::smatch m;

@@ -98,15 +98,20 @@ TEST(ControlPageRun, ABadAddressIsAUsageError) {
       << run.output();
 }
 
+// `l2wall view OUT [args]` on a finished run's folder, its stderr to `log`.
+ChildProcess start_view(const WallRun& run, const std::string& args, const fs::path& log) {
+  return ChildProcess({"/bin/sh", "-c",
+                       fmt::format("exec '{}' view '{}' {} 2> '{}'", L2WALL_PATH,
+                                   run.out().string(), args, log.string())});
+}
+
 // `l2wall view OUT`: a finished run's folder served as the page serves a live one, nothing to
 // steer.
 TEST(ControlPageView, ServesAFinishedRun) {
   WallRun run("view", {"--frames", "6", "--keep", "every"});
   ASSERT_EQ(run.wait(60s).code, 0) << run.output();
   const fs::path log = run.out().parent_path() / "view.txt";
-  ChildProcess view({"/bin/sh", "-c",
-                     fmt::format("exec '{}' view '{}' --http 127.0.0.1:0 2> '{}'", L2WALL_PATH,
-                                 run.out().string(), log.string())});
+  ChildProcess view = start_view(run, "--http 127.0.0.1:0", log);
   const std::regex printed("l2wall view: http://127\\.0\\.0\\.1:(\\d+)/\\?token=([0-9a-f]+)");
   std::smatch m;
   std::string text;
@@ -150,9 +155,7 @@ TEST(ControlPageView, AFrameNotKeptIsNamed) {
   WallRun run("view-frame", {"--frames", "3", "--keep", "0,2"});
   ASSERT_EQ(run.wait(60s).code, 0) << run.output();
   const fs::path log = run.out().parent_path() / "view.txt";
-  ChildProcess view({"/bin/sh", "-c",
-                     fmt::format("exec '{}' view '{}' --frame 1 2> '{}'", L2WALL_PATH,
-                                 run.out().string(), log.string())});
+  ChildProcess view = start_view(run, "--frame 1", log);
   const auto ended = view.wait_for(60s);
   ASSERT_TRUE(ended);
   EXPECT_EQ(ended->code, 1);
