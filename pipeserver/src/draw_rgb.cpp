@@ -1,4 +1,3 @@
-#define GL_GLEXT_PROTOTYPES 1  // glWindowPos2i (GL 1.4), exported by libOSMesa
 #include "draw_rgb.hpp"
 
 #include <GL/gl.h>

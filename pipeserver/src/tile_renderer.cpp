@@ -1,6 +1,5 @@
 #include "pipeserver/tile_renderer.hpp"
 
-#define GL_GLEXT_PROTOTYPES 1  // glMultiDrawArrays (GL 1.4), exported by libOSMesa
 #include <GL/gl.h>
 
 #include <algorithm>
