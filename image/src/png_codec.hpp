@@ -20,10 +20,10 @@ namespace l2::png_codec {
 
 // Where read_rgb() puts the pixels: asked once for a width x height 8-bit RGB buffer with
 // contiguous rows, and only for sides up to max_side (a file's header can claim any size).
-// `accept` is asked first, with the size the file's header claims and before read_rgb() or the
-// library under it allocates anything for the pixels; when it says no, read_rgb() returns at
-// once with no error of its own (the caller knows why). `allocate` returns nullptr when out of
-// memory.
+// `accept` is asked first, with the size the file's header claims (also one over max_side) and
+// before read_rgb() or the library under it allocates anything for the pixels; when it says no,
+// read_rgb() returns at once with no error of its own (the caller knows why). `allocate`
+// returns nullptr when out of memory.
 struct RgbSink {
   void* context;
   bool (*accept)(void* context, int width, int height);
@@ -68,6 +68,10 @@ class MovieDecoder {
 struct Codec {
   Status (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
   Status (*read_rgb)(const char* path, RgbSink sink, Source* source);
+  // The same for a picture in memory (`size` bytes): its format told by its first bytes, else by
+  // `format_hint` (an extension, "tga"). The bytes are only read.
+  Status (*read_rgb_bytes)(const std::uint8_t* bytes, std::size_t size, const char* format_hint,
+                           RgbSink sink, Source* source);
   Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
@@ -79,7 +83,7 @@ struct Codec {
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v8";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v9";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -1,5 +1,6 @@
 // The image codec module (png_codec.hpp): PNG (and whatever else OpenImageIO reads) to and from
 // 8-bit RGB. Loaded by png_io.cpp; no exception leaves it.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <png.h>
 #include <sys/stat.h>
@@ -7,11 +8,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <climits>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -137,13 +140,13 @@ std::string size_refused(long width, long height, int max_side) {
 
 // The check every reader makes on the size a file's header claims, before anything is allocated
 // for the pixels: nothing when the picture may be read, otherwise the reason (empty when the
-// caller refused it: it says why itself).
+// caller refused it: it says why itself). The caller is asked first, so that a bound of its own
+// tighter than ours (a model's texture) names the picture whatever the size claimed.
 std::optional<std::string> refusal(const RgbSink& sink, long width, long height) {
+  const auto side = [](long v) { return static_cast<int>(std::min<long>(v, INT_MAX)); };
+  if (!sink.accept(sink.context, side(width), side(height))) return std::string();
   if (width > sink.max_side || height > sink.max_side) {
     return size_refused(width, height, sink.max_side);
-  }
-  if (!sink.accept(sink.context, static_cast<int>(width), static_cast<int>(height))) {
-    return std::string();
   }
   return std::nullopt;
 }
@@ -212,15 +215,10 @@ std::string read_failed(const std::string& format, const std::string& error) {
   return "cannot read: the " + upper(format) + " file is damaged or ends early";
 }
 
-// The format a file's first bytes say it is in (OpenImageIO's name), for formats that begin
+// The format a picture's first bytes say it is in (OpenImageIO's name), for formats that begin
 // with a signature; empty for others. (OpenImageIO's own test, valid_file(), fails a damaged
 // file, which is when the question is asked.)
-std::string format_by_signature(const char* path) {
-  unsigned char head[12] = {};
-  std::FILE* file = std::fopen(path, "rb");
-  if (!file) return {};
-  const std::size_t n = std::fread(head, 1, sizeof head, file);
-  std::fclose(file);
+std::string format_by_signature(const unsigned char* head, std::size_t n) {
   const auto starts = [&](std::string_view magic) {
     return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
   };
@@ -236,34 +234,72 @@ std::string format_by_signature(const char* path) {
   return {};
 }
 
-// An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
-// stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
-// in a captured RGBA frame). Grey is spread over R, G and B.
-Status read_rgb(const char* path, RgbSink sink, Source* source_or_null) try {
-  Source ignored;
-  Source& source = source_or_null ? *source_or_null : ignored;
-  {
-    PngRead read;
-    read.file = std::fopen(path, "rb");
-    // OpenImageIO said only "Could not open file" (and of a folder, "Not a PNG file").
-    if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
-    struct stat file_status {};
-    if (::fstat(::fileno(read.file), &file_status) == 0 && S_ISDIR(file_status.st_mode)) {
-      return Failure{"cannot read: a folder, not a file"};
-    }
-    if (is_png(read.file)) return read_png_file(read, sink, source);
-    if (const auto screen = gif_screen(read.file)) {
-      if (const auto why = refusal(sink, screen->first, screen->second)) return refused(*why);
-    }
+std::string format_by_signature(const char* path) {
+  unsigned char head[12] = {};
+  std::FILE* file = std::fopen(path, "rb");
+  if (!file) return {};
+  const std::size_t n = std::fread(head, 1, sizeof head, file);
+  std::fclose(file);
+  return format_by_signature(head, n);
+}
+
+// Where a picture's bytes are: a file, or memory (a texture embedded in a model file).
+struct Input {
+  const char* path = nullptr;           // the file; null: the picture is in memory
+  const std::uint8_t* bytes = nullptr;  // in memory, `size` bytes
+  std::size_t size = 0;
+  const char* format_hint = "";  // memory: the format when the first bytes do not say ("tga")
+  bool in_memory() const { return path == nullptr; }
+};
+
+// The input as a stdio stream, for libpng and the signature checks.
+std::FILE* open_stream(const Input& input) {
+  if (!input.in_memory()) return std::fopen(input.path, "rb");
+  // Read in place: a stream opened "rb" never writes to its buffer.
+  return ::fmemopen(const_cast<std::uint8_t*>(input.bytes), input.size, "rb");
+}
+
+// An OpenImageIO reader and, for a picture in memory, what it reads from (which must outlive it:
+// declared first, destroyed last).
+struct Opened {
+  std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+  std::unique_ptr<OIIO::ImageInput> in;
+};
+
+// A picture in memory opened by the reader its first bytes (or else its hint) name.
+l2::Result<Opened> open_bytes(const Input& input, const OIIO::ImageSpec& config) {
+  Opened opened;
+  const std::string format = format_by_signature(input.bytes, input.size);
+  // By the format's name or an extension ("tga"): a file name would be opened.
+  opened.in = OIIO::ImageInput::create(format.empty() ? std::string(input.format_hint) : format);
+  if (!opened.in) {
+    OIIO::geterror();  // cleared: our wording replaces OpenImageIO's
+    return Failure{"cannot read: not a picture of a format known here"};
   }
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) return Failure{open_failed(path)};
-  const OIIO::ImageSpec& spec = in->spec();
+  opened.memory = std::make_unique<OIIO::Filesystem::IOMemReader>(input.bytes, input.size);
+  OIIO::ImageSpec spec;
+  if (!opened.in->set_ioproxy(opened.memory.get()) || !opened.in->open("memory", spec, config)) {
+    std::string why = opened.in->geterror();
+    if (why.empty()) why = "damaged or ends early";
+    return Failure{"cannot read: a " + upper(opened.in->format_name()) + " picture: " + why};
+  }
+  return opened;
+}
+
+l2::Result<Opened> open_oiio(const Input& input, const OIIO::ImageSpec& config) {
+  if (input.in_memory()) return open_bytes(input, config);
+  Opened opened;
+  opened.in = OIIO::ImageInput::open(input.path, &config);
+  if (!opened.in) return Failure{open_failed(input.path)};
+  return opened;
+}
+
+// An opened picture that is not a PNG, through OpenImageIO, as read_rgb() says.
+Status read_oiio(OIIO::ImageInput& in, RgbSink sink, Source& source) {
+  const OIIO::ImageSpec& spec = in.spec();
   const std::string compression = spec.get_string_attribute("compression");
-  source = {in->format_name(), spec.nchannels >= 3 ? 3 : 1,
-            std::string(in->format_name()) == "jpeg" || compression.rfind("jpeg", 0) == 0};
+  source = {in.format_name(), spec.nchannels >= 3 ? 3 : 1,
+            std::string(in.format_name()) == "jpeg" || compression.rfind("jpeg", 0) == 0};
   if (spec.nchannels < 1 || spec.width <= 0 || spec.height <= 0) {
     return Failure{"not an image with pixels"};
   }
@@ -279,20 +315,58 @@ Status read_rgb(const char* path, RgbSink sink, Source* source_or_null) try {
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
   if (!dst) return Failure{"cannot read: out of memory"};
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
-    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
-      return Failure{read_failed(in->format_name(), in->geterror())};
+    if (!in.read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, dst)) {
+      return Failure{read_failed(in.format_name(), in.geterror())};
     }
     return {};
   }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
   std::vector<std::uint8_t> grey(count);
-  if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
-    return Failure{read_failed(in->format_name(), in->geterror())};
+  if (!in.read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data())) {
+    return Failure{read_failed(in.format_name(), in.geterror())};
   }
   for (std::size_t i = 0; i < count; ++i) dst[i * 3] = dst[i * 3 + 1] = dst[i * 3 + 2] = grey[i];
   return {};
+}
+
+// An alpha channel is dropped, as a DVI link drops it (spec §1): the colour bytes are kept as
+// stored, not multiplied by alpha (OpenImageIO's default for PNG, which would garble a header
+// in a captured RGBA frame). Grey is spread over R, G and B.
+Status read_input(const Input& input, RgbSink sink, Source* source_or_null) try {
+  Source ignored;
+  Source& source = source_or_null ? *source_or_null : ignored;
+  if (input.in_memory() && input.size == 0) return Failure{"cannot read: no bytes"};
+  {
+    PngRead read;
+    read.file = open_stream(input);
+    // OpenImageIO said only "Could not open file" (and of a folder, "Not a PNG file").
+    if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
+    struct stat file_status {};
+    if (!input.in_memory() && ::fstat(::fileno(read.file), &file_status) == 0 &&
+        S_ISDIR(file_status.st_mode)) {
+      return Failure{"cannot read: a folder, not a file"};
+    }
+    if (is_png(read.file)) return read_png_file(read, sink, source);
+    if (const auto screen = gif_screen(read.file)) {
+      if (const auto why = refusal(sink, screen->first, screen->second)) return refused(*why);
+    }
+  }
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto opened = open_oiio(input, config);
+  if (!opened.ok()) return Failure{opened.reason()};
+  return read_oiio(*opened->in, sink, source);
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
+}
+
+Status read_rgb(const char* path, RgbSink sink, Source* source) {
+  return read_input({path}, sink, source);
+}
+
+Status read_rgb_bytes(const std::uint8_t* bytes, std::size_t size, const char* format_hint,
+                      RgbSink sink, Source* source) {
+  return read_input({nullptr, bytes, size, format_hint}, sink, source);
 }
 
 }  // namespace
@@ -320,6 +394,7 @@ namespace {
 
 constexpr l2::png_codec::Codec kCodec{write_rgb,
                                       read_rgb,
+                                      read_rgb_bytes,
                                       l2::png_codec::open_regions,
                                       l2::png_codec::open_movie,
                                       l2::png_codec::render_text,
@@ -328,6 +403,6 @@ constexpr l2::png_codec::Codec kCodec{write_rgb,
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v8() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v9() {
   return &kCodec;
 }

@@ -53,6 +53,45 @@ void check(const std::filesystem::path& path, const Status& status) {
   if (!status.ok()) throw std::runtime_error(path.string() + ": " + status.reason());
 }
 
+// Where the codec puts a picture: an RgbImage, once `accept` has taken its size. What `accept`
+// throws is kept here and thrown once the codec has returned: no exception may cross the module
+// or libpng's C frames.
+struct Target {
+  RgbImage image;
+  const SizeCheck& accept;
+  std::exception_ptr refused;
+
+  png_codec::RgbSink sink() {
+    return {this,
+            [](void* context, int width, int height) {
+              auto& out = *static_cast<Target*>(context);
+              try {
+                if (out.accept) out.accept(width, height);
+                return true;
+              } catch (...) {
+                out.refused = std::current_exception();
+                return false;
+              }
+            },
+            [](void* context, int width, int height) -> std::uint8_t* {
+              auto& out = *static_cast<Target*>(context);
+              try {
+                out.image = RgbImage(width, height);
+                return out.image.data();
+              } catch (const std::bad_alloc&) {
+                return nullptr;
+              }
+            },
+            kMaxPictureSide};
+  }
+  // The picture read, or what `accept` threw, or the codec's failure naming `name`.
+  RgbImage take(const std::filesystem::path& name, const Status& read) {
+    if (refused) std::rethrow_exception(refused);
+    check(name, read);
+    return std::move(image);
+  }
+};
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
@@ -77,40 +116,20 @@ std::string encode_png(const RgbImage& image) {
 
 RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                   const SizeCheck& accept) {
-  // What `accept` throws is kept here and thrown once the codec has returned: no exception may
-  // cross the module or libpng's C frames.
-  struct Target {
-    RgbImage image;
-    const SizeCheck& accept;
-    std::exception_ptr refused;
-  } target{RgbImage(), accept, nullptr};
-  const png_codec::RgbSink sink{&target,
-                                [](void* context, int width, int height) {
-                                  auto& out = *static_cast<Target*>(context);
-                                  try {
-                                    if (out.accept) out.accept(width, height);
-                                    return true;
-                                  } catch (...) {
-                                    out.refused = std::current_exception();
-                                    return false;
-                                  }
-                                },
-                                [](void* context, int width, int height) -> std::uint8_t* {
-                                  auto& out = *static_cast<Target*>(context);
-                                  try {
-                                    out.image = RgbImage(width, height);
-                                    return out.image.data();
-                                  } catch (const std::bad_alloc&) {
-                                    return nullptr;
-                                  }
-                                },
-                                kMaxPictureSide};
+  Target target{RgbImage(), accept, nullptr};
   png_codec::Source found;
-  const Status read = png_codec::codec(path).read_rgb(path.c_str(), sink, &found);
-  if (target.refused) std::rethrow_exception(target.refused);
-  check(path, read);
+  const Status read = png_codec::codec(path).read_rgb(path.c_str(), target.sink(), &found);
+  RgbImage image = target.take(path, read);
   if (source) *source = {found.format, found.colour_channels, found.lossy};
-  return std::move(target.image);
+  return image;
+}
+
+RgbImage read_picture_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                            const std::string& format_hint, const SizeCheck& accept) {
+  Target target{RgbImage(), accept, nullptr};
+  const Status read = png_codec::codec(name).read_rgb_bytes(
+      bytes.data(), bytes.size(), format_hint.c_str(), target.sink(), nullptr);
+  return target.take(name, read);
 }
 
 RgbImage read_scanned_frame(const std::filesystem::path& path, const SizeCheck& accept) {

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace l2 {
 namespace {
@@ -145,6 +146,67 @@ TEST(PngIo, ClaimedSizeOverTheLimitIsRefusedBeforeAllocating) {
   EXPECT_EQ(read_error(path), path.string() +
                                   ": 20000x20000 pixels, larger than any picture read here "
                                   "(sides up to 16384)");
+}
+
+// A caller's own bound is asked before the reader's: a texture limit names the picture however
+// large the size it claims.
+TEST(PngIo, TheCallersSizeCheckIsAskedBeforeTheLimit) {
+  const auto path = write_bytes("huge-claim.png", kHugeClaimPng);
+  try {
+    read_png(path, nullptr, [](int width, int height) {
+      throw std::runtime_error("mine: " + std::to_string(width) + "x" + std::to_string(height));
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "mine: 20000x20000");
+  }
+}
+
+std::vector<std::uint8_t> bytes_of(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), {}};
+}
+
+// The error read_picture_bytes throws for `bytes`, or "no error".
+std::string bytes_error(const std::vector<std::uint8_t>& bytes, const std::string& hint = {}) {
+  try {
+    read_picture_bytes(bytes, "model.glb: texture 0", hint);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A texture embedded in a model file is a picture file's bytes in memory: read as the file is,
+// the format told by its first bytes (PNG, JPEG) or by the hint the model gives (TGA has no
+// signature), and refused in one line naming what the caller says it is.
+TEST(PngIo, PicturesInMemoryAreReadAsTheirFiles) {
+  RgbImage img(5, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x)
+      img.set(x, y, {static_cast<std::uint8_t>(50 * x), static_cast<std::uint8_t>(100 * y), 9});
+  for (const char* name : {"memory.png", "memory.jpg", "memory.tga", "memory.bmp"}) {
+    const auto path = temp_dir() / name;
+    write_png(path, img);
+    const std::string hint = path.extension().string().substr(1);
+    EXPECT_EQ(read_picture_bytes(bytes_of(path), "texture", hint), read_png(path)) << name;
+  }
+  const auto png = bytes_of(temp_dir() / "memory.png");
+  EXPECT_EQ(read_picture_bytes(png, "texture"), img);
+  const auto size_of = [&](int width, int height) {
+    throw std::runtime_error("texture: " + std::to_string(width) + "x" + std::to_string(height));
+  };
+  EXPECT_THROW(read_picture_bytes(png, "texture", "", size_of), std::runtime_error);
+
+  const std::string name = "model.glb: texture 0: cannot read: ";
+  EXPECT_EQ(bytes_error({}), name + "no bytes");
+  EXPECT_EQ(bytes_error({'n', 'o', 't', ' ', 'a', ' ', 'p', 'i', 'c'}),
+            name + "not a picture of a format known here");
+  EXPECT_EQ(bytes_error(std::vector<std::uint8_t>(png.begin(), png.end() - 20)),
+            name + "the PNG file ends early (truncated)");
+  const auto jpeg = bytes_of(temp_dir() / "memory.jpg");
+  EXPECT_EQ(bytes_error(std::vector<std::uint8_t>(jpeg.begin(), jpeg.begin() + 40)).rfind(name, 0),
+            0u);
 }
 
 // A DDS volume texture (24-bit RGB, `depth` slices) as DirectX lays out DDS_HEADER: 124 bytes

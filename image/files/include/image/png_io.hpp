@@ -2,8 +2,10 @@
 // the file.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 
 #include "image/rgb_image.hpp"
@@ -35,11 +37,19 @@ struct PictureSource {
   bool lossy = false;       // stored with a lossy compression (JPEG, also inside a TIFF)
 };
 // `accept`, when given, is called with the picture's size once the file's header is read and
-// before any pixel buffer is allocated; what it throws (a size the caller cannot take) leaves
+// before any pixel buffer is allocated (also for a size over kMaxPictureSide, so a bound of the
+// caller's own is the one that names it); what it throws (a size the caller cannot take) leaves
 // read_png() as it was thrown. A 70-byte file can claim 16384x16384 pixels, 805 MB of them.
 using SizeCheck = std::function<void(int width, int height)>;
 RgbImage read_png(const std::filesystem::path& path, PictureSource* source = nullptr,
                   const SizeCheck& accept = {});
+
+// Reads a picture held in memory as read_png() reads a file (a texture embedded in a model
+// file): a PNG with libpng, other formats through OpenImageIO, told by their first bytes or else
+// by `format_hint` (an extension: "tga"). Errors begin with `name` ("model.glb: embedded texture
+// 0: cannot read: ..."), as read_png()'s with the file's.
+RgbImage read_picture_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                            const std::string& format_hint = {}, const SizeCheck& accept = {});
 
 // Reads a scanned-out frame (lightning2_emu's inputs, strip_headers dump, captured frames of
 // golden entries) with read_png(), and refuses one whose file cannot hold strip headers, which
