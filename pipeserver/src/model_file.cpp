@@ -2,7 +2,8 @@
 // cut short comes out with a vertex repeated, a coordinate can be NaN or infinite), so its
 // validation step runs and the faces and vertices are checked again here before anything else
 // sees them: every bad file is refused with one line naming it. Faces that cover nothing (a
-// vertex repeated, zero area: common in glTF and OBJ files) are left out and counted.
+// vertex repeated, zero area: common in glTF and OBJ files) are left out and counted. The
+// materials' textures are read by model_textures.cpp.
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -16,6 +17,7 @@
 #include <string_view>
 #include <utility>
 
+#include "model_textures.hpp"
 #include "pipeserver/model_file.hpp"
 #include "ply_counts.hpp"
 
@@ -184,12 +186,25 @@ Counts count(const std::filesystem::path& path, const aiScene& scene) {
   return n;
 }
 
-// Appends one Assimp mesh, its indices offset by the vertices already there.
+// Where vertex v is on its mesh's texture, (0, 0) the picture's top left (Assimp's (0, 0) is
+// OpenGL's, the bottom left). A coordinate that is not finite is 0: GL samples no defined texel
+// for it.
+glm::vec2 uv_of(const aiMesh& m, const detail::MeshTexture& t, unsigned v) {
+  if (t.texture < 0) return {0, 0};
+  const aiVector3D& c = m.mTextureCoords[t.channel][v];
+  const auto finite = [](float x) { return std::isfinite(x) ? x : 0.0f; };
+  return {finite(c.x), 1.0f - finite(c.y)};
+}
+
+// Appends one Assimp mesh, its indices offset by the vertices already there. `textured`: the
+// model has textures, so every vertex gets texture coordinates and every triangle a texture.
 void append(const std::filesystem::path& path, const aiScene& scene, const aiMesh& m,
-            const Counts& n, TriangleMesh& out) {
+            const Counts& n, const detail::MeshTexture& t, bool textured, TriangleMesh& out) {
   const auto base = static_cast<std::uint32_t>(out.positions.size());
   glm::vec3 colour{0.86f, 0.80f, 0.68f};
-  material_colour(*scene.mMaterials[m.mMaterialIndex], colour);
+  // A texture with no colour to multiply is drawn as it is.
+  if (!material_colour(*scene.mMaterials[m.mMaterialIndex], colour) && t.texture >= 0)
+    colour = glm::vec3(1.0f);
   for (unsigned v = 0; v < m.mNumVertices; ++v) {
     const aiVector3D& p = m.mVertices[v];
     check_finite(path, out.positions.size(), p);  // a node transform can overflow
@@ -210,11 +225,22 @@ void append(const std::filesystem::path& path, const aiScene& scene, const aiMes
         out.colours.push_back(colour);
       }
     }
+    if (textured) out.uvs.push_back(uv_of(m, t, v));
   }
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
     const aiFace& face = m.mFaces[f];
     for (unsigned j = 0; j < face.mNumIndices; ++j) out.indices.push_back(base + face.mIndices[j]);
+    if (textured) out.triangle_textures.push_back(t.texture);
   }
+}
+
+// The faces' line and the textures' lines, one a line.
+std::string lines(std::string faces, const std::vector<std::string>& textures) {
+  for (const std::string& line : textures) {
+    if (!faces.empty()) faces += '\n';
+    faces += line;
+  }
+  return faces;
 }
 
 // Imported, checked and its degenerate faces left out (the line saying so returned), not yet
@@ -235,7 +261,8 @@ std::string read_checked(Assimp::Importer& importer, const std::filesystem::path
 
 std::string check_model(const std::filesystem::path& path) {
   Assimp::Importer importer;
-  return read_checked(importer, path);
+  std::string left_out = read_checked(importer, path);
+  return lines(std::move(left_out), detail::read_textures(path, *importer.GetScene()).left_out);
 }
 
 TriangleMesh load_mesh(const std::filesystem::path& path) {
@@ -243,12 +270,18 @@ TriangleMesh load_mesh(const std::filesystem::path& path) {
   std::string left_out = read_checked(importer, path);
   const aiScene* scene = importer.ApplyPostProcessing(kSteps);
   if (scene == nullptr) fail(path, importer.GetErrorString());
-  const Counts n = count(path, *scene);
+  Counts n = count(path, *scene);
+  detail::ModelTextures textures = detail::read_textures(path, *scene);
+  const bool textured = !textures.textures.empty();
+  n.colours = n.colours || textured;
   TriangleMesh out;
-  out.left_out = std::move(left_out);
+  out.left_out = lines(std::move(left_out), textures.left_out);
+  out.textures = std::move(textures.textures);
   out.positions.reserve(n.vertices);
   out.indices.reserve(3 * n.triangles);
-  for (unsigned i = 0; i < scene->mNumMeshes; ++i) append(path, *scene, *scene->mMeshes[i], n, out);
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    append(path, *scene, *scene->mMeshes[i], n, textures.of_mesh[i], textured, out);
+  }
   return out;
 }
 
