@@ -1,9 +1,9 @@
 // `mesh`: a lit triangle mesh (the Stanford bunny by default) turning about the vertical axis.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
+#include <map>
 #include <unordered_map>
 #include <utility>
 
@@ -13,10 +13,8 @@ namespace l2::detail {
 
 namespace {
 
-constexpr int kCells = 3;
-constexpr glm::vec3 kDefaultColour{0.86f, 0.80f,
-                                   0.68f};  // a model file without colours  // batches: the mesh's
-                                            // box cut into kCells^3 cells by centroid
+constexpr int kCells = 3;  // batches: the mesh's box cut into kCells^3 cells by centroid
+constexpr glm::vec3 kDefaultColour{0.86f, 0.80f, 0.68f};  // a model file without colours
 
 // Centre the mesh on the origin and scale it into the unit sphere, so any mesh fits the camera.
 // A mesh file may hold any finite float, and coordinates near 3.4e38 overflowed to infinity in
@@ -58,6 +56,12 @@ std::vector<glm::vec3> vertex_normals(const TriangleMesh& m) {
   return n;
 }
 
+// One batch of the mesh, its vertices numbered anew.
+struct Part {
+  Batch batch;
+  std::unordered_map<std::uint32_t, std::uint32_t> remap;  // the mesh's vertex -> the batch's
+};
+
 class MeshScene : public Scene {
  public:
   MeshScene(TriangleMesh mesh, bool whole) : whole_(whole) {
@@ -66,8 +70,8 @@ class MeshScene : public Scene {
     const auto normals = mesh.normals.empty() ? vertex_normals(mesh) : mesh.normals;
     Box box = Box::empty();
     for (const auto& p : mesh.positions) box.extend(p);
-    std::array<Batch, kCells * kCells * kCells> cells;
-    std::array<std::unordered_map<std::uint32_t, std::uint32_t>, cells.size()> remap;
+    // By texture (one a draw), then by cell; a map, so the batches come in one order everywhere.
+    std::map<std::pair<std::int32_t, std::size_t>, Part> parts;
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       const glm::vec3 c = (mesh.positions[mesh.indices[i]] + mesh.positions[mesh.indices[i + 1]] +
                            mesh.positions[mesh.indices[i + 2]]) /
@@ -78,22 +82,26 @@ class MeshScene : public Scene {
       };
       const std::size_t k =
           static_cast<std::size_t>(cell(t.x) + kCells * (cell(t.y) + kCells * cell(t.z)));
+      const std::int32_t texture =
+          mesh.triangle_textures.empty() ? -1 : mesh.triangle_textures[i / 3];
+      Part& part = parts[{texture, k}];
       for (int j = 0; j < 3; ++j) {
         const auto src = mesh.indices[i + static_cast<std::size_t>(j)];
         auto [it, added] =
-            remap[k].try_emplace(src, static_cast<std::uint32_t>(cells[k].positions.size()));
+            part.remap.try_emplace(src, static_cast<std::uint32_t>(part.batch.positions.size()));
         if (added) {
-          cells[k].positions.push_back(mesh.positions[src]);
-          cells[k].normals.push_back(normals[src]);
-          cells[k].colours.push_back(mesh.colours.empty() ? kDefaultColour : mesh.colours[src]);
+          part.batch.positions.push_back(mesh.positions[src]);
+          part.batch.normals.push_back(normals[src]);
+          part.batch.colours.push_back(mesh.colours.empty() ? kDefaultColour : mesh.colours[src]);
+          if (texture >= 0) part.batch.uvs.push_back(mesh.uvs[src]);
         }
-        cells[k].indices.push_back(it->second);
+        part.batch.indices.push_back(it->second);
       }
     }
-    for (auto& b : cells) {
-      if (b.indices.empty()) continue;
-      b.compute_bounds();
-      batches_.push_back(std::move(b));
+    for (auto& [key, part] : parts) {
+      if (key.first >= 0) part.batch.texture = mesh.textures[static_cast<std::size_t>(key.first)];
+      part.batch.compute_bounds();
+      batches_.push_back(std::move(part.batch));
     }
   }
 

@@ -21,6 +21,11 @@ void setup_state(bool lit) {
   glDisable(GL_CULL_FACE);
   glDisable(GL_DITHER);  // dithering depends on window position, so it would differ per tile
   glShadeModel(GL_SMOOTH);
+  // Textures only while a textured batch draws (draw_batch): a picture tile's glDrawPixels
+  // would be textured too.
+  glDisable(GL_TEXTURE_2D);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);  // texel x lit colour
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_COLOR_ARRAY);
   if (!lit) {
@@ -47,6 +52,24 @@ void setup_state(bool lit) {
   glLightfv(GL_LIGHT0, GL_SPECULAR, none);
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+}
+
+// Binds a model's texture, giving it to the current context first if it has not got it: its id
+// is its GL name in every context (model_texture.hpp). Sampled nearest, without mipmaps, as the
+// picture scene samples its picture: every pixel is one texel times the lit colour. A tile,
+// drawn as its display's window draws it, takes the same texel as the display's reference.
+void bind(const ModelTexture& texture) {
+  const bool given = glIsTexture(texture.id) == GL_TRUE;
+  glBindTexture(GL_TEXTURE_2D, texture.id);
+  if (given) return;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // Row 0 of the picture, its top, is GL's t = 0: TriangleMesh::uvs count v from the top.
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, texture.image.width(), texture.image.height(), 0, GL_RGB,
+               GL_UNSIGNED_BYTE, texture.image.data());
 }
 
 // Triangles of a triangle batch, strips of a strip batch: the units a share is cut in.
@@ -121,6 +144,20 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec
 }
 
 void TileRenderer::draw_batch(const Batch& b, std::size_t first, std::size_t count) const {
+  if (b.texture) {
+    bind(*b.texture);
+    glEnable(GL_TEXTURE_2D);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glTexCoordPointer(2, GL_FLOAT, 0, b.uvs.data());
+  }
+  draw_primitives(b, first, count);
+  if (b.texture) {
+    glDisable(GL_TEXTURE_2D);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  }
+}
+
+void TileRenderer::draw_primitives(const Batch& b, std::size_t first, std::size_t count) const {
   glVertexPointer(3, GL_FLOAT, 0, b.positions.data());
   glColorPointer(3, GL_FLOAT, 0, b.colours.data());
   if (scene_.lit()) glNormalPointer(GL_FLOAT, 0, b.normals.data());

@@ -11,10 +11,12 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "image/rgb_image.hpp"
 #include "pipeserver/camera.hpp"
+#include "pipeserver/model_texture.hpp"
 
 namespace l2 {
 
@@ -34,6 +36,10 @@ struct Batch {
   std::vector<glm::vec3> colours;             // per vertex, 0..1
   std::vector<std::uint32_t> indices;         // Triangles: indexed; empty means positions in order
   std::vector<int> strip_first, strip_count;  // TriangleStrips: one entry per strip
+  // A model's base-colour texture, multiplied into the colours; with it, per vertex, where the
+  // vertex is on it (model_file.hpp's TriangleMesh::uvs). Null: the colours alone.
+  std::shared_ptr<const ModelTexture> texture;
+  std::vector<glm::vec2> uvs;
   Box bounds;
 
   std::size_t triangle_count() const;

@@ -42,8 +42,9 @@ class TileRenderer {
   const BucketStats& stats() const { return stats_; }
 
  private:
-  // Draws primitives [first, first + count) of `batch`.
+  // Draws primitives [first, first + count) of `batch`, with its texture when it has one.
   void draw_batch(const Batch& batch, std::size_t first, std::size_t count) const;
+  void draw_primitives(const Batch& batch, std::size_t first, std::size_t count) const;
 
   const Scene& scene_;
   Canvas canvas_;
