@@ -340,7 +340,15 @@ class LiveRun {
     while (ended && survive(*ended)) ended = pipeservers_.poll_ended();
     const bool path_down =
         std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
-    if (ended || path_down) throw RunFault(blame());
+    if (ended || path_down) throw RunFault(blame() + unsurvived_note(ended));
+  }
+
+  // Why --survive-host-loss did not keep the run going when a pipeserver ended before every
+  // pipeserver's first frame (the start-up, which it does not cover), or empty.
+  std::string unsurvived_note(const LivePipeserver* ended) const {
+    if (!ended || links_open_ || !balance_ || !balance_->survives_losses()) return {};
+    return "; --survive-host-loss covers a pipeserver lost once every pipeserver has delivered "
+           "its first frame, not one lost while the run starts";
   }
 
   // --survive-host-loss: the run goes on without a pipeserver that ended, its tiles planned over
@@ -630,6 +638,8 @@ class LiveRun {
   std::string write_report(const std::string& fault) {
     if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
+    totals_.lost.clear();
+    for (const LivePipeserver& h : pipeservers_.all()) totals_.lost.push_back(h.lost);
     std::vector<std::string> pipeserver_logs;
     for (const LivePipeserver& h : pipeservers_.all()) pipeserver_logs.push_back(h.report_path);
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +

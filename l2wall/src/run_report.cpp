@@ -162,7 +162,9 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
         "different and parsed\n",
         totals.frames_predicted, totals.predictions_missed);
   }
-  summary += spread_lines(run_times(o, logs, records));
+  RunTimes times = run_times(o, logs, records);
+  times.lost = totals.lost;
+  summary += spread_lines(times);
   if (runs_viz(o.path)) summary += fmt::format("paths: {}\n", path_choice_name(o.path));
   if (o.compare) {
     summary += fmt::format(

@@ -39,9 +39,11 @@ std::string spread_lines(const RunTimes& t) {
   for (std::size_t i = 0; i < t.render.size(); ++i) {
     const auto s = spread_of(t.render[i]);
     if (!s) continue;
-    lines += fmt::format("render time of pipeserver {} (median / 95th percentile / max): {}\n", i,
-                         spread_text(*s));
-    candidate(s->p50, fmt::format("pipeserver {}'s render time: median {:.1f} ms", i, s->p50));
+    const bool lost = i < t.lost.size() && t.lost[i];
+    lines += fmt::format("render time of pipeserver {} (median / 95th percentile / max): {}{}\n", i,
+                         spread_text(*s), lost ? " (lost mid-run)" : "");
+    if (!lost)
+      candidate(s->p50, fmt::format("pipeserver {}'s render time: median {:.1f} ms", i, s->p50));
   }
   if (const auto s = spread_of(t.route)) {
     lines += fmt::format("route time of the emulator (median / 95th percentile / max): {}\n",

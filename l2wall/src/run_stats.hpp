@@ -20,6 +20,9 @@ std::optional<Spread> spread_of(std::vector<double> values);
 // The per-frame times of a run, in milliseconds; route and swap are empty without an emulator.
 struct RunTimes {
   std::vector<std::vector<double>> render;  // per pipeserver
+  // By pipeserver, those lost mid-run (--survive-host-loss): their few frames are listed, but
+  // what limited the run is what the others took.
+  std::vector<bool> lost;
   std::vector<double> route, swap;
   double refresh_hz = 0;  // the emulator's refresh rate; 0: as fast as possible or none
 };

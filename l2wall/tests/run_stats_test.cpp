@@ -39,6 +39,21 @@ TEST(RunStats, NamesTheHostWhoseMedianRenderTimeIsLongest) {
             "limited by pipeserver 1's render time: median 22.0 ms\n");
 }
 
+// A pipeserver lost mid-run rendered a frame or two, slowly (a first frame): listed, not the
+// limit.
+TEST(RunStats, ALostPipeserverIsListedButNotTheLimit) {
+  RunTimes t;
+  t.render = {{5, 6, 7}, {300}, {3, 3, 3}};
+  t.lost = {false, true, false};
+  t.refresh_hz = 0;
+  EXPECT_EQ(spread_lines(t),
+            "render time of pipeserver 0 (median / 95th percentile / max): 6.0 / 7.0 / 7.0 ms\n"
+            "render time of pipeserver 1 (median / 95th percentile / max): 300.0 / 300.0 / 300.0 "
+            "ms (lost mid-run)\n"
+            "render time of pipeserver 2 (median / 95th percentile / max): 3.0 / 3.0 / 3.0 ms\n"
+            "limited by pipeserver 0's render time: median 6.0 ms\n");
+}
+
 TEST(RunStats, NamesTheRefreshRateWhenEveryoneKeepsUp) {
   RunTimes t;
   t.render = {{5, 6}};

@@ -32,6 +32,7 @@ struct RunTotals {
   std::uint64_t frames_predicted = 0, predictions_missed = 0;  // the emulator's (DVI path)
   bool latency_measured = true;  // false on the vizserver path alone: no refresh to count
   RunClock::time_point start{};  // the clock starts once every pipeserver delivered a first frame
+  std::vector<bool> lost;        // by pipeserver: lost mid-run (--survive-host-loss)
 };
 
 // Writes OUT/report.csv and OUT/summary.txt from the records and the pipeservers' reports
