@@ -1,6 +1,6 @@
 // The compositing server against peers that do not play by the rules, over real sockets: a
 // burst of strangers around a pipeserver's HELLO, a flood of garbage, a half-sent TILE, ERROR
-// text made to attack a terminal, and a stranger that claims a pipeserver's id.
+// text made to attack a terminal, a stranger that claims a pipeserver's id, and a HELLO replayed.
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -175,6 +175,37 @@ TEST(VizServerHostile, AStrangerWithoutTheRunsTokenIsRefusedAndTheRunGoesOn) {
   SenderOptions with_token;
   with_token.token = o.token;
   auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1, with_token);
+  s.finish_frame(0, 0);
+  s.wait_swapped(0, 3000ms);
+  EXPECT_EQ(server.failure().reason(), "");
+}
+
+// A pipeserver's HELLO captured and sent again: to the next run's server (another token) it is a
+// stranger's; to its own run's, once the pipeserver is in, a second claim of its id. Both are
+// refused and counted, and the run goes on.
+TEST(VizServerHostile, AReplayedHelloIsRefusedAndTheRunGoesOn) {
+  auto earlier = one_display(1);
+  earlier.token = new_run_token();
+  auto o = one_display(1);
+  o.token = new_run_token();
+  CompositingServer server(o);
+  server.start();
+  const auto captured = encode(Hello{0, 1, earlier.token});
+  Fd replay = connect_tcp("127.0.0.1", server.port(), 2000ms);
+  send_bytes(replay.get(), captured);
+  const auto [kind, text] = first_reply(replay.get());
+  EXPECT_EQ(kind, Kind::Error);
+  EXPECT_EQ(text, "HELLO as pipeserver 0 without this run's token");
+
+  SenderOptions with_token;
+  with_token.token = o.token;
+  auto s = TileSender::connect("127.0.0.1", server.port(), 0, 1, with_token);
+  Fd again = connect_tcp("127.0.0.1", server.port(), 2000ms);
+  send_bytes(again.get(), encode(Hello{0, 1, o.token}));
+  const auto [again_kind, again_text] = first_reply(again.get());
+  EXPECT_EQ(again_kind, Kind::Error);
+  EXPECT_EQ(again_text, "pipeserver 0 is already connected");
+  EXPECT_EQ(server.error_count(), 2u);
   s.finish_frame(0, 0);
   s.wait_swapped(0, 3000ms);
   EXPECT_EQ(server.failure().reason(), "");
