@@ -8,6 +8,7 @@
 # mpirun's end of the job): each saved display must be the one-machine run's picture
 # of the frame the line says the displays keep; a lost column's displays are named, not saved.
 # The hosts wait longer for READY than that, so none gives up first.
+# Last, the coordinator (rank 0) killed: mpirun names it and ends every other rank.
 # Usage: mpi_fault_test.sh L2WALL OUT TWO_COLUMN_WALL
 set -euo pipefail
 l2wall=$1 out=$2 two_columns=$3
@@ -151,3 +152,47 @@ fault STOP 3 "pipeserver 2" 6 "" "0 1 2 3"
 fault KILL 5 "board column 0" 6 "" ""
 # A column stopped: column 1 (display 8) on the two-column wall; column 0's displays are saved.
 fault STOP 4 "board column 1" 5 "$two_columns" "0 1 2 3 4 5 6 7"
+
+# The coordinator (rank 0) killed: nobody is left to name it but mpirun, which does (without -q)
+# and ends every other rank; nothing of the run is left, on this host or in /dev/shm.
+coordinator_killed() {
+  local dir="$out/KILL-0-6"
+  "${mpirun_local[@]}" -np 6 "$l2wall" run --mpi --frames 100000 --stall-timeout $stall_ms \
+    --ready-timeout 3000 --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+  local run=$!
+  for _ in $(seq 600); do
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    sleep 0.05
+  done
+  local pid pids t0 took status=0
+  pid=$(rank_pid "$dir" 0)
+  pids=$(pgrep -f -- "$dir" || true)
+  [[ -n $pid ]] || { echo "FAIL: no process of rank 0"; kill "$run"; exit 1; }
+  t0=$(date +%s%N)
+  kill -s KILL "$pid"
+  while kill -0 "$run" 2>/dev/null; do
+    took=$((($(date +%s%N) - t0) / 1000000))
+    if ((took > end_ceiling_ms)); then
+      echo "FAIL: KILL rank 0 (coordinator): still running $took ms after the fault"
+      kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
+      exit 1
+    fi
+    sleep 0.05
+  done
+  wait "$run" || status=$?
+  took=$((($(date +%s%N) - t0) / 1000000))
+  echo "KILL rank 0 (coordinator, -np 6): ended after $took ms, exit $status"
+  [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
+  grep -q "mpirun noticed that process rank 0 with PID [0-9]* on node [^ ]* exited on signal 9" "$dir.err" ||
+    { echo "FAIL: mpirun did not name rank 0:"; cat "$dir.err"; exit 1; }
+  local waited p
+  for ((waited = 0; waited < 100; ++waited)); do
+    pgrep -f -- "$dir" >/dev/null || break
+    sleep 0.1
+  done
+  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
+  for p in $pids; do
+    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
+  done
+}
+coordinator_killed
