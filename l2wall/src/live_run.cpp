@@ -77,8 +77,8 @@ class LiveRun {
     pipeservers_started_ = true;
     if (page_) watch_pipeservers_on_the_page();
     for (auto& p : paths_) p->open(pipeservers_, milliseconds(o_.start_timeout_ms), watch_);
-    // A pipeserver that dies before every pipeserver's first frame is a start-up fault, survived or
-    // not.
+    // From here on the clock runs; a pipeserver lost before (--survive-host-loss) was waited for
+    // by no one.
     links_open_ = true;
     run_frames_until_stopped();
     if (shown_ < o_.frames) {
@@ -340,15 +340,7 @@ class LiveRun {
     while (ended && survive(*ended)) ended = pipeservers_.poll_ended();
     const bool path_down =
         std::any_of(paths_.begin(), paths_.end(), [](const auto& p) { return p->down(); });
-    if (ended || path_down) throw RunFault(blame() + unsurvived_note(ended));
-  }
-
-  // Why --survive-host-loss did not keep the run going when a pipeserver ended before every
-  // pipeserver's first frame (the start-up, which it does not cover), or empty.
-  std::string unsurvived_note(const LivePipeserver* ended) const {
-    if (!ended || links_open_ || !balance_ || !balance_->survives_losses()) return {};
-    return "; --survive-host-loss covers a pipeserver lost once every pipeserver has delivered "
-           "its first frame, not one lost while the run starts";
+    if (ended || path_down) throw RunFault(blame());
   }
 
   // --survive-host-loss: the run goes on without a pipeserver that ended, its tiles planned over
@@ -356,10 +348,11 @@ class LiveRun {
   // the last pipeserver) or should not (the pipeserver gave up waiting for READY: an effect whose
   // cause blame() names): the run ends on it as without the option.
   bool survive(LivePipeserver& h) {
-    if (!balance_ || !balance_->survives_losses() || !links_open_) return false;
+    if (!balance_ || !balance_->survives_losses() || !pipeservers_started_) return false;
     if (gave_up_waiting(h)) return false;
     const std::string how = pipeservers_.ended_how(h);
-    const double seconds = ms_between(totals_.start, RunClock::now()) / 1000.0;
+    // Lost while the run starts (before every first frame), it is lost at the run's second 0.
+    const double seconds = links_open_ ? ms_between(totals_.start, RunClock::now()) / 1000.0 : 0.0;
     if (!balance_->lose(h.pipeserver, pipeservers_.delivered(h), how, seconds)) return false;
     pipeservers_.lose(h);
     std::fprintf(stderr, "%sl2wall: %s; the run goes on without it (--survive-host-loss)\n",

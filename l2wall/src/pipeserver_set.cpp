@@ -165,6 +165,7 @@ void PipeserverSet::open_links(milliseconds timeout, const std::function<void()>
     check();
     bool all = true;
     for (LivePipeserver& h : pipeservers_) {
+      if (h.lost) continue;  // survived before its first frame: its link never opens
       if (!h.reader) {
         try {
           h.reader = std::make_unique<DviLinkReader>(DviLinkReader::open(h.link_name));
@@ -180,7 +181,7 @@ void PipeserverSet::open_links(milliseconds timeout, const std::function<void()>
     if (RunClock::now() > deadline) {
       std::string missing;
       for (const LivePipeserver& h : pipeservers_)
-        if (!h.reader || h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
+        if (!h.lost && (!h.reader || h.sequence == 0)) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
     }
