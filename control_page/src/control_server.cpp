@@ -172,7 +172,10 @@ ControlServer::ControlServer(const HttpAddress& address, std::string token)
   s.token = std::move(token);
   s.server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   s.server.set_payload_max_length(kMaxBody);
-  s.server.set_read_timeout(std::chrono::seconds(5));
+  // A page asks at once and often: a connection that sends nothing for 2 s is closed, so idle
+  // peers do not hold the few threads long (cpp-httplib 0.11 queues connections unbounded).
+  s.server.set_read_timeout(std::chrono::seconds(2));
+  s.server.set_keep_alive_timeout(2);
   s.server.set_keep_alive_max_count(100);
   // Not cpp-httplib's default, which adds SO_REUSEPORT: a second run given the same port would
   // then share it with the first, each getting some of the page's requests.
