@@ -8,6 +8,7 @@
 #include "balance/assign_heaviest.hpp"
 #include "balance/kd_cost_grid.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/survival.hpp"
 
 namespace l2 {
 namespace {
@@ -100,7 +101,7 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
   }
 }
 
-TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool by_area) const {
+TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate) const {
   if (lost_.empty()) {
     if (!settings_.assign || estimate == nullptr) return plan_layout(wall);
     std::vector<double> cost;
@@ -108,39 +109,28 @@ TileLayout Balancer::plan(const Wall& wall, const CostEstimate* estimate, bool b
     return plan_layout(wall, assign_heaviest_first(cost, wall.pipeserver_count));
   }
   // The pipeservers still there, dealt the tiles as if they were the whole wall.
-  std::vector<int> serving;
-  for (int s = 0; s < wall.pipeserver_count; ++s) {
-    if (!std::binary_search(lost_.begin(), lost_.end(), s)) serving.push_back(s);
-  }
-  const int n = static_cast<int>(serving.size());
   const std::vector<Rect> logical = make_logical_tiles(wall);
-  std::vector<long long> visible(logical.size(), 0);
-  for (const DisplayTile& t : split_at_displays(wall, logical))
-    visible[static_cast<std::size_t>(t.logical_tile)] += t.on_display.area();
-  const auto by_policy = [&](AssignmentPolicy policy) {
-    return assign_pipeservers(policy, logical, visible, n,
-                              {0, 0, wall.canvas_width, wall.canvas_height});
-  };
-  const auto planned = [&](std::vector<int> of) {
-    for (int& s : of) s = serving[static_cast<std::size_t>(s)];
-    return plan_layout(wall, of, lost_);
-  };
-  if (by_area) return planned(by_policy(AssignmentPolicy::AreaBalanced));
   std::vector<int> of;
   if (settings_.assign && estimate != nullptr) {
+    std::vector<int> serving;
+    for (int s = 0; s < wall.pipeserver_count; ++s) {
+      if (!std::binary_search(lost_.begin(), lost_.end(), s)) serving.push_back(s);
+    }
     std::vector<double> cost;
     for (const Rect& r : logical) cost.push_back(estimate->cost(r));
-    of = assign_heaviest_first(cost, n);
+    of = assign_heaviest_first(cost, static_cast<int>(serving.size()));
+    for (int& s : of) s = serving[static_cast<std::size_t>(s)];
   } else {
-    of = by_policy(wall.assignment);
+    of = assign_without(wall, logical, wall.assignment, lost_);
   }
   try {
-    return planned(std::move(of));
+    return plan_layout(wall, of, lost_);
   } catch (const LayoutError&) {
     // Fewer framebuffers hold the same pixels: shared out by visible area they fit more often
     // than by the policy or by cost. The first refusal is the one to report.
     try {
-      return planned(by_policy(AssignmentPolicy::AreaBalanced));
+      return plan_layout(wall, assign_without(wall, logical, AssignmentPolicy::AreaBalanced, lost_),
+                         lost_);
     } catch (const LayoutError&) {
     }
     throw;
@@ -217,9 +207,10 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
     });
     if (holding == lost_.end()) return {false, e.what()};
     // The layout in use still has a lost pipeserver's tiles: it cannot stay. The last resort
-    // is the wall's own tiling shared out by visible area; the balancing goes on from there.
+    // is the wall's own tiling shared out by its policy or by visible area (what tilelayout's
+    // survival counts on); the balancing goes on from there.
     try {
-      planned = plan(wall_, nullptr, true);
+      planned = plan_without(wall_, lost_);
     } catch (const LayoutError&) {
       throw LayoutError(
           fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",

@@ -13,6 +13,7 @@
 #include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/survival.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "verify_plan.hpp"
@@ -51,6 +52,8 @@ int print_suggestions(const std::string& wall_path) {
     const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);
     const l2::FitSuggestions fit = l2::suggest_fit(wall);
     for (const std::string& line : l2::suggestion_lines(wall, fit)) std::cout << line << "\n";
+    for (const std::string& line : l2::survival_suggestions(wall, l2::survival(wall)))
+      std::cout << line << "\n";
     const bool any = fit.fits || fit.height_at_width || fit.width_at_height ||
                      !fit.policies.empty() || fit.pipeserver_count;
     return any ? 0 : 1;
@@ -65,7 +68,9 @@ int print_suggestions(const std::string& wall_path) {
 int main(int argc, char** argv) {
   CLI::App app{
       "Plans how a display wall is tiled, which pipeserver renders each tile and where each "
-      "tile sits in its framebuffer (spec §4), and prints the plan.\n"
+      "tile sits in its framebuffer (spec §4), and prints the plan, ending with how many lost "
+      "pipeservers the wall survives (l2wall run --survive-host-loss: their tiles go to the "
+      "others' framebuffers) and the framebuffer_height the next one needs.\n"
       "Without --wall it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
       "3 output files could not be written, 4 --verify found pixels out of place."};
@@ -104,7 +109,9 @@ int main(int argc, char** argv) {
                "print values that make the wall fit, each changed alone: the smallest "
                "framebuffer_height at its framebuffer_width and framebuffer_width at its height "
                "(header gaps included), the other assignment policies that fit and the fewest "
-               "pipeservers that fit at its framebuffer size; exit 0, 1 when none fits")
+               "pipeservers that fit at its framebuffer size; then the framebuffer_height (at its "
+               "framebuffer_width) with which it survives the loss of 1 pipeserver, and of 2 "
+               "when it has 3 or more; exit 0, 1 when none fits")
       ->excludes(png_option)
       ->excludes(scanout_option)
       ->excludes(verify_option);
@@ -134,7 +141,8 @@ int main(int argc, char** argv) {
     std::cerr << "tilelayout: " << e.what() << "\n";
     return 1;
   }
-  std::cout << l2::format_plan(layout) << l2::format_network_needs(layout);
+  std::cout << l2::format_plan(layout) << l2::format_network_needs(layout)
+            << l2::survival_line(layout.wall, l2::survival(layout.wall)) << "\n";
   try {
     if (!png_dir.empty()) write_pictures(layout, png_dir);
     if (!scanout_dir.empty()) write_scanout(layout, scanout_dir, parity == 1);

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 
+#include "packed_rows.hpp"
 #include "strip_headers/strip_header.hpp"
 #include "tilelayout/planner.hpp"
 
@@ -13,29 +13,8 @@ namespace {
 
 using Lists = std::vector<std::vector<DisplayTile>>;
 
-// Rows a pipeserver's tiles need at framebuffer width `width` (pack_tiles, rows unbounded);
-// none when a tile is wider than the framebuffer or cannot be encoded.
-std::optional<int> needed_height(const std::vector<DisplayTile>& tiles, int width) {
-  try {
-    return pack_tiles(0, width, std::numeric_limits<int>::max(), tiles).used_height();
-  } catch (const LayoutError&) {
-    return std::nullopt;
-  }
-}
-
 bool every_pipeserver_has_tiles(const Lists& lists) {
   return std::none_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); });
-}
-
-// The rows the fullest pipeserver needs at `width`; none as for needed_height.
-std::optional<int> tallest(const Lists& lists, int width) {
-  int most = 0;
-  for (const auto& list : lists) {
-    const std::optional<int> h = needed_height(list, width);
-    if (!h) return std::nullopt;
-    most = std::max(most, *h);
-  }
-  return most;
 }
 
 bool fits(const Lists& lists, int width, int height) {

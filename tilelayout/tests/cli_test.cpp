@@ -275,6 +275,35 @@ TEST_F(Cli, HelpAndDefault) {
   EXPECT_EQ(r.out.rfind("wall \"2x2 k-d wall\"", 0), 0u) << r.out;
 }
 
+TEST_F(Cli, PlanEndsWithTheLossesTheWallSurvives) {
+  // Survival.DefaultWall (survival_test.cpp) has the numbers from the planner's packing.
+  ChildRun r = run("");
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::string last =
+      "survives the loss of no pipeserver (framebuffers 800x600); 1: needs "
+      "framebuffer_height >= 910\n";
+  ASSERT_GE(r.out.size(), last.size());
+  EXPECT_EQ(r.out.substr(r.out.size() - last.size()), last) << r.out;
+  // The suggested height, written into the wall, survives the loss and names the next.
+  const fs::path wall = write("roomier.toml", std::string(default_wall_toml()));
+  std::string text = slurp(wall);
+  text.replace(text.find("framebuffer_height = 600"), 24, "framebuffer_height = 910");
+  write("roomier.toml", text);
+  r = run("--wall '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nsurvives the loss of 1 pipeserver (framebuffers 800x910); 2: needs "
+                       "framebuffer_height >= 1440 with [mesh] board_max_height = 1440\n"),
+            std::string::npos)
+      << r.out;
+  r = run("--suggest");
+  EXPECT_NE(r.out.find("\nframebuffer_height = 910 (at framebuffer_width = 800): survives the "
+                       "loss of 1 pipeserver\nframebuffer_height = 1440 (at framebuffer_width = "
+                       "800, and [mesh] board_max_height = 1440): survives the loss of 2 "
+                       "pipeservers\n"),
+            std::string::npos)
+      << r.out;
+}
+
 std::vector<fs::path> example_walls() {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(L2_WALLS_DIR)) {
@@ -386,7 +415,9 @@ TEST_F(Cli, SuggestPrintsWhatFits) {
             "framebuffer_width = 202, framebuffer_height = 200: the smallest framebuffer\n"
             "assignment = \"blocks\" (at 310x100, 2 pipeservers)\n"
             "assignment = \"area-balanced\" (at 310x100, 2 pipeservers)\n"
-            "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n");
+            "pipeservers.count = 3 (at 310x100, round-robin): the fewest that fit\n"
+            "framebuffer_height = 200 (at framebuffer_width = 310): survives the loss of 1 "
+            "pipeserver\n");
   r = run("--wall '" + wall.string() + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.out, "");
@@ -419,7 +450,9 @@ TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
             "assignment = \"spiral\" (at 200x60, 1 pipeserver)\n"
             "assignment = \"blocks\" (at 200x60, 1 pipeserver)\n"
             "assignment = \"area-balanced\" (at 200x60, 1 pipeserver)\n"
-            "pipeservers.count = 1 (at 200x60, round-robin): the fewest that fit\n");
+            "pipeservers.count = 1 (at 200x60, round-robin): the fewest that fit\n"
+            "survives the loss of no pipeserver: its one pipeserver has nobody to take its "
+            "tiles\n");
 }
 
 }  // namespace

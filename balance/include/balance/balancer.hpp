@@ -55,7 +55,8 @@ class Balancer {
   // pipeserver's times are not read (it measured nothing): its tiles count at the mean cost per
   // pixel of the others'. While the layout still gives a lost pipeserver tiles it cannot stay:
   // when the next one does not fit the others' framebuffers, the wall's own tiling shared out
-  // by visible area is tried, and when that does not fit either, throws LayoutError.
+  // by its policy or visible area is tried (plan_without, tilelayout/survival.hpp), and when
+  // that does not fit either, throws LayoutError.
   BalanceStep next(const TileSeconds& seconds);
 
   // Pipeserver `pipeserver` died: from the next step on it gets no tile, the others share them
@@ -71,9 +72,7 @@ class Balancer {
   void switch_mode(BalanceMode mode);
 
  private:
-  // `by_area`: with a pipeserver lost, the others get the tiles by visible area (the planner's
-  // area-balanced policy) whatever the settings.
-  TileLayout plan(const Wall& wall, const CostEstimate* estimate, bool by_area = false) const;
+  TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
   TileSeconds with_stand_ins(const TileSeconds& seconds) const;
 
   Wall wall_;
