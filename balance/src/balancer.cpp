@@ -7,6 +7,7 @@
 
 #include "balance/assign_heaviest.hpp"
 #include "balance/kd_cost_grid.hpp"
+#include "balance/layout_cost.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/survival.hpp"
 
@@ -90,6 +91,14 @@ Balancer::Balancer(const Wall& wall, BalanceSettings settings) : wall_(wall), se
         with_kd(wall, wall.tiling.kind == TilingKind::KdSplit ? wall.tiling.cost
                                                               : std::vector<std::vector<double>>{});
   }
+  if (settings.resistance < 0 || settings.resistance >= 1 || settings.tile_cost < 0 ||
+      settings.tile_cost >= 1) {
+    throw std::invalid_argument(fmt::format(
+        "balance resistance and tile cost are fractions from 0 up to below 1, got {} and {}",
+        settings.resistance, settings.tile_cost));
+  }
+  // Resisting, the wall's own layout stays until a cut is predicted to beat it.
+  if (settings.resistance > 0) first = wall;
   try {
     layout_ = plan(first, nullptr);
   } catch (const LayoutError& e) {
@@ -220,8 +229,21 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
   grid_ = std::move(grid);
   const bool changed = planned.logical_tiles != layout_.logical_tiles ||
                        planned.tile_pipeserver != layout_.tile_pipeserver;
+  if (!changed) return {};
+  const double ratio = predicted_ratio(planned, seconds);
+  // A layout still giving a lost pipeserver tiles cannot stay, whatever the change gains.
+  if (lost_.empty() && ratio > 1 - settings_.resistance && settings_.resistance > 0)
+    return {false, "", true, ratio};
   layout_ = std::move(planned);
-  return {changed, ""};
+  return {true, "", false, ratio};
+}
+
+double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds) const {
+  const TileSeconds measured = with_stand_ins(seconds);
+  const double overhead = tile_overhead(measured, settings_.tile_cost);
+  const CostEstimate pixels = pixel_estimate(layout_, measured, overhead);
+  const double now = predicted_frame_seconds(layout_, pixels, overhead);
+  return now > 0 ? predicted_frame_seconds(candidate, pixels, overhead) / now : 1;
 }
 
 }  // namespace l2

@@ -228,5 +228,105 @@ TEST(Balancer, RefusesADepthWall) {
   }
 }
 
+// Resistance: timing noise of up to 8 % a tile on an even load. Without it the edges chase the
+// noise; with it (10 %) no step is predicted to pay, and the layout stays.
+TileSeconds noisy_even(int frame) {
+  static constexpr double kNoise[] = {0.08, -0.05, 0.02, -0.08, 0.06, -0.03, 0.07, -0.06};
+  TileSeconds t = {{2.5, 2.5}, {2.5, 2.5}};
+  for (int i = 0; i < 4; ++i) t[i / 2][i % 2] *= 1 + kNoise[(frame + 3 * i) % 8];
+  return t;
+}
+
+BalanceSettings resisting(double resistance) {
+  BalanceSettings s = strips();
+  s.motion = {};  // the default gain and dead band
+  s.resistance = resistance;
+  return s;
+}
+
+TEST(Balancer, ResistanceKeepsNoiseFromMovingEdges) {
+  Balancer chasing(strips_wall(), resisting(0));
+  int moves = 0;
+  for (int k = 0; k < 40; ++k) moves += chasing.next(noisy_even(k)).changed ? 1 : 0;
+  EXPECT_GT(moves, 5);
+  Balancer b(strips_wall(), resisting(0.1));
+  const std::vector<Rect> own = b.layout().logical_tiles;
+  for (int k = 0; k < 40; ++k) {
+    const BalanceStep step = b.next(noisy_even(k));
+    EXPECT_FALSE(step.changed) << k;
+    EXPECT_GT(step.predicted_ratio, 0.9) << k;
+  }
+  EXPECT_EQ(b.layout().logical_tiles, own);
+}
+
+TEST(Balancer, ResistanceStillMovesEdgesForARealImbalance) {
+  // kHeavyTopLeft: pipeserver 0 takes 10 of 15 s. Half-way to balance the strips give it 8.75
+  // and pipeserver 1 6.25 (strip_edges_test's cut): 0.875 of the frame, a gain of 12.5 %.
+  Balancer b(strips_wall(), resisting(0.1));
+  const BalanceStep step = b.next(kHeavyTopLeft);
+  EXPECT_TRUE(step.changed);
+  EXPECT_FALSE(step.resisted);
+  EXPECT_NEAR(step.predicted_ratio, 0.875, 0.01);
+  // The same move against a resistance of 20 % does not pay.
+  Balancer stiff(strips_wall(), resisting(0.2));
+  const BalanceStep held = stiff.next(kHeavyTopLeft);
+  EXPECT_FALSE(held.changed);
+  EXPECT_TRUE(held.resisted);
+  EXPECT_NEAR(held.predicted_ratio, 0.875, 0.01);
+}
+
+// Two 50x100 displays side by side, a tile each, one pipeserver each. Strips cut across both
+// displays: two display tiles a pipeserver instead of one.
+Wall two_displays() {
+  Wall w = strips_wall();
+  Display right = w.displays[0];
+  w.displays[0].width = 50;
+  right.id = 1;
+  right.canvas_x = 50;
+  right.width = 50;
+  w.displays.push_back(right);
+  w.tiling = {};
+  w.tiling.kind = TilingKind::Grid;
+  w.tiling.tile_width = 50;
+  w.tiling.tile_height = 100;
+  return w;
+}
+
+TEST(Balancer, ResistanceCountsWhatMoreTilesCost) {
+  // Pipeserver 0's display costs 6 s, pipeserver 1's 4 s. Even horizontal strips give each 5
+  // by pixels: a gain of a sixth. With a fifth of the mean tile (1 s) fixed a display tile, the
+  // strips' four tiles cost each pipeserver 4 + 2 x 1 = 6 s: nothing gained, not taken.
+  BalanceSettings s = resisting(0.1);
+  Balancer by_pixels(two_displays(), s);
+  ASSERT_EQ(by_pixels.layout().tiles.size(), 2u);
+  const BalanceStep moved = by_pixels.next({{6}, {4}});
+  EXPECT_TRUE(moved.changed);
+  EXPECT_DOUBLE_EQ(moved.predicted_ratio, 5.0 / 6);
+  EXPECT_EQ(by_pixels.layout().tiles.size(), 4u);
+  s.tile_cost = 0.2;
+  Balancer counted(two_displays(), s);
+  const BalanceStep held = counted.next({{6}, {4}});
+  EXPECT_FALSE(held.changed);
+  EXPECT_TRUE(held.resisted);
+  EXPECT_DOUBLE_EQ(held.predicted_ratio, 1);
+  EXPECT_EQ(counted.layout().tiles.size(), 2u);
+}
+
+TEST(Balancer, ALostPipeserverMovesTilesWhateverTheResistance) {
+  Balancer b(strips_wall(), resisting(0.5));
+  b.lose_pipeserver(1);
+  EXPECT_TRUE(b.next({{1, 1}, {}}).changed);
+  EXPECT_TRUE(b.layout().pipeservers[1].tiles.empty());
+}
+
+TEST(Balancer, ResistanceAndTileCostAreFractions) {
+  BalanceSettings s = strips();
+  s.resistance = 1;
+  EXPECT_THROW(Balancer(strips_wall(), s), std::invalid_argument);
+  s.resistance = 0.1;
+  s.tile_cost = -0.1;
+  EXPECT_THROW(Balancer(strips_wall(), s), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace l2

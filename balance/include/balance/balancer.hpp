@@ -26,14 +26,27 @@ struct BalanceSettings {
                         // of the wall's assignment policy
   EdgeMotion motion;    // strip edges, and the blending of the k-d cost grid
   int kd_grid_columns = 32, kd_grid_rows = 32;
+  // Resistance (Equalizer's issue #186): a new layout is taken only when it is predicted to
+  // shorten the frame by at least this fraction of the last one; 0 takes every new layout.
+  // With it a balancing mode starts from the wall's own layout, and its cut replaces that only
+  // once it pays.
+  double resistance = 0;
+  // The fixed part of a display tile in that prediction, as a fraction (0 up to below 1) of the
+  // last frame's mean tile time: what a cut into more tiles costs beyond its pixels
+  // (layout_cost.hpp).
+  double tile_cost = 0;
 };
 
 // What the wall's [balance] asks for, with the default motion and grid.
 BalanceSettings balance_settings(const Wall& wall);
 
 struct BalanceStep {
-  bool changed = false;  // the next frame's tiles or their pipeservers differ
-  std::string rejected;  // the planner's error when the new layout did not fit; the old stays
+  bool changed = false;   // the next frame's tiles or their pipeservers differ
+  std::string rejected;   // the planner's error when the new layout did not fit; the old stays
+  bool resisted = false;  // a new layout was planned but not taken: it would not pay
+  // The predicted frame time of the layout planned, over the last frame's (1: the same; below
+  // 1: shorter); 1 when nothing new was planned.
+  double predicted_ratio = 1;
 };
 
 class Balancer {
@@ -51,7 +64,8 @@ class Balancer {
   const std::string& first_refused() const { return first_refused_; }
   const BalanceSettings& settings() const { return settings_; }
 
-  // Frame k's render times, measured on layout(): makes layout() frame k+1's. A lost
+  // Frame k's render times, measured on layout(): makes layout() frame k+1's (with resistance,
+  // only when the new layout pays; else layout() stays, while the cut moves on). A lost
   // pipeserver's times are not read (it measured nothing): its tiles count at the mean cost per
   // pixel of the others'. While the layout still gives a lost pipeserver tiles it cannot stay:
   // when the next one does not fit the others' framebuffers, the wall's own tiling shared out
@@ -73,6 +87,8 @@ class Balancer {
 
  private:
   TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
+  // The predicted frame time of `candidate` over the last frame's, measured on layout().
+  double predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds) const;
   TileSeconds with_stand_ins(const TileSeconds& seconds) const;
 
   Wall wall_;

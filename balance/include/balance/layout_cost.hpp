@@ -1,0 +1,24 @@
+// What a layout is predicted to take, for deciding whether a new one pays (resistance). Each
+// display tile costs a fixed part, whatever its pixels (its clear, the GL set-up, every batch
+// its footprint touches drawn again), plus its pixels' share of the rest: the uniform estimate
+// alone says a tiling cut into more tiles costs the same in all, and it does not.
+#pragma once
+
+#include "balance/cost_estimate.hpp"
+
+namespace l2 {
+
+// The fixed part of a display tile: `fraction` of the mean measured tile time of `seconds`.
+double tile_overhead(const TileSeconds& seconds, double fraction);
+
+// The last frame's times less `overhead` a tile (not below 0), spread over the tiles' pixels:
+// the part of the cost that follows the pixels.
+CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead);
+
+// The slowest pipeserver's predicted time on `layout`: per display tile, `overhead` plus its
+// pixels' cost under `estimate`. On the layout the estimate was measured on, with the same
+// overhead, it is the measured frame time.
+double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,
+                               double overhead);
+
+}  // namespace l2
