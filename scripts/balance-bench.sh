@@ -2,12 +2,15 @@
 # The load balancer's benchmark (balance/, issue 21): a fixed camera path rendered on 4 and 8
 # pipeservers of the default wall, tiled static, by strips and by k-d re-split, each with and
 # without the heaviest-first assignment. Writes OUT/balance.csv (a row per frame: frame time =
-# the slowest pipeserver's render time, imbalance = that over the mean), OUT/balance.png
-# (frame time per frame) and OUT/balance-summary.txt (median speed-up over static per frame).
+# the slowest pipeserver's render time, imbalance = that over the mean, the frame time the last
+# frame's estimate predicted, display tiles, overlap factor, whether a new layout was not taken
+# for not paying), OUT/balance.png (frame time per frame) and OUT/balance-summary.txt (median
+# speed-up over static per frame).
 #
 #   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"] [--scene S]
-#                            [--build DIR] [--plot-only] [-- SCENE OPTIONS...]
-# --plot-only draws the PNG and the summary again from an existing OUT/balance.csv.
+#                            [--build DIR] [--plot-only] [-- BENCH OPTIONS...]
+# --plot-only draws the PNG and the summary again from an existing OUT/balance.csv. BENCH
+# OPTIONS go to every balance_bench run: scene options, or --resistance R --tile-cost F.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -18,7 +21,7 @@ scene=strips
 build=$root/build/default
 scene_args=()
 plot_only=0
-usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --out) out=$2; shift 2 ;;
@@ -41,7 +44,7 @@ csv=$out/balance.csv
 # whatever else the machine runs.
 export LP_NUM_THREADS=1
 if ((!plot_only)); then
-echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled" >"$csv"
+echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled,predicted_ms,tiles,overlap,resisted" >"$csv"
 for p in $pipeservers; do
   for mode in static strips kd; do
     for assign in 0 1; do
