@@ -115,8 +115,8 @@ TEST(GoldenManifest, ErrorsNameFileLineAndField) {
   EXPECT_EQ(error_of(with("scene = \"test-pattern\"", "scene = \"mesh\"")),
             "m.toml:6: entry.scene: routing-only entries use \"test-pattern\"");
   EXPECT_EQ(error_of(with("scene = \"mesh\"", "scene = \"teapot\"")),
-            "m.toml:15: entry.scene: must be one of mesh, strips, isosurface, patches, swap, got "
-            "\"teapot\"");
+            "m.toml:15: entry.scene: must be one of mesh, strips, hotspot, isosurface, patches, "
+            "swap, got \"teapot\"");
   EXPECT_EQ(error_of(with("paths = [\"dvi\"]", "paths = [\"vizserver\"]")),
             "m.toml:17: entry.paths: must include \"dvi\"");
   EXPECT_EQ(error_of(with("paths = [\"dvi\"]", "paths = [\"dvi\", \"hdmi\"]")),

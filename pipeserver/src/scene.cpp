@@ -54,7 +54,8 @@ void Scene::set_camera(const CameraOptions& camera) {
 }
 
 const std::vector<std::string>& built_in_scene_names() {
-  static const std::vector<std::string> names{"mesh", "strips", "isosurface", "patches", "swap"};
+  static const std::vector<std::string> names{"mesh",       "strips",  "hotspot",
+                                              "isosurface", "patches", "swap"};
   return names;
 }
 
@@ -84,6 +85,7 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
     return detail::make_mesh_scene(load_mesh(path), options.fit != "fill");
   }
   if (name == "strips") return detail::make_strips_scene(options);
+  if (name == "hotspot") return detail::make_hotspot_scene(options);
   if (name == "isosurface") return detail::make_isosurface_scene(options);
   if (name == "patches") return detail::make_patches_scene(options);
   if (name == "swap") return detail::make_swap_scene();
@@ -100,7 +102,8 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
                                     fit.value_or(SourceFit::Fit));
   }
   throw std::invalid_argument(fmt::format(
-      "unknown scene '{}' (expected mesh, strips, isosurface, patches, swap, picture or movie)",
+      "unknown scene '{}' (expected mesh, strips, hotspot, isosurface, patches, swap, picture or "
+      "movie)",
       name));
 }
 

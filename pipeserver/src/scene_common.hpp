@@ -31,6 +31,7 @@ class Random {
 // `whole`: the model seen whole on any canvas (--fit fit), else a wide wall spanned (fill).
 std::unique_ptr<Scene> make_mesh_scene(const TriangleMesh& mesh, bool whole);
 std::unique_ptr<Scene> make_strips_scene(const SceneOptions& options);
+std::unique_ptr<Scene> make_hotspot_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_swap_scene();

@@ -91,8 +91,8 @@ TEST(Scenes, UnknownNameIsAClearError) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
-                 "unknown scene 'teapot' (expected mesh, strips, isosurface, patches, swap, "
-                 "picture or movie)");
+                 "unknown scene 'teapot' (expected mesh, strips, hotspot, isosurface, patches, "
+                 "swap, picture or movie)");
   }
 }
 

@@ -49,12 +49,13 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "frame k (exact; l2wall run passes its --refresh, 0 at full speed)")
            ->check(number_in(0, 1000)),
        "movie"},
-      {app.add_option("--triangles", o.triangles, "strips scene: triangle count")
+      {app.add_option("--triangles", o.triangles, "strips and hotspot scenes: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
-       "strips"},
-      {app.add_option("--strip-length", o.strip_length, "strips scene: triangles per strip")
+       "strips hotspot"},
+      {app.add_option("--strip-length", o.strip_length,
+                      "strips and hotspot scenes: triangles per strip")
            ->check(CLI::Range(1, 4096)),
-       "strips"},
+       "strips hotspot"},
       {app.add_option("--grid", o.grid, "isosurface scene: cells per axis")
            ->check(CLI::Range(2, 256)),
        "isosurface"},
