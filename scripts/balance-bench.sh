@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# The load balancer's benchmark (balance/, issue 21): a fixed camera path rendered on 4 and 8
-# pipeservers of the default wall, tiled static, by strips and by k-d re-split, each with and
-# without the heaviest-first assignment. Writes OUT/balance.csv (a row per frame: frame time =
+# The load balancer's benchmark (balance/, issues 21 and 34): fixed camera paths rendered on 4
+# and 8 pipeservers of the default wall, by default of two scenes: `strips` (a cloud turning at
+# the centre, which the wall's own tiling is cut for) and `hotspot` (a small cloud travelling
+# round the view: static tiling unbalanced), tiled static, by strips and by k-d re-split, each
+# with and without the heaviest-first assignment. Writes OUT/balance.csv (a row per frame: frame time =
 # the slowest pipeserver's render time, imbalance = that over the mean, the frame time the last
 # frame's estimate predicted, display tiles, overlap factor, whether a new layout was not taken
-# for not paying), OUT/balance.png (frame time per frame) and OUT/balance-summary.txt (median
-# speed-up over static per frame).
+# for not paying, the scene), OUT/balance.png (frame time per frame) and
+# OUT/balance-summary.txt (per scene and configuration: median speed-up over static per frame,
+# median, mean and largest imbalance after the first five frames).
 #
-#   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"] [--scene S]
+#   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"]
+#                            [--scene "strips hotspot"]
 #                            [--build DIR] [--plot-only] [-- BENCH OPTIONS...]
 # --plot-only draws the PNG and the summary again from an existing OUT/balance.csv. BENCH
 # OPTIONS go to every balance_bench run: scene options, or --resistance R --tile-cost F.
@@ -17,17 +21,17 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/build/balance-bench
 frames=40
 pipeservers="4 8"
-scene=strips
+scenes="strips hotspot"
 build=$root/build/default
 scene_args=()
 plot_only=0
-usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --out) out=$2; shift 2 ;;
     --frames) frames=$2; shift 2 ;;
     --pipeservers) pipeservers=$2; shift 2 ;;
-    --scene) scene=$2; shift 2 ;;
+    --scene) scenes=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
     --plot-only) plot_only=1; shift ;;
     --) shift; scene_args=("$@"); break ;;
@@ -44,43 +48,50 @@ csv=$out/balance.csv
 # whatever else the machine runs.
 export LP_NUM_THREADS=1
 if ((!plot_only)); then
-echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled,predicted_ms,tiles,overlap,resisted" >"$csv"
-for p in $pipeservers; do
-  for mode in static strips kd; do
-    for assign in 0 1; do
-      flag=()
-      ((assign)) && flag=(--assign)
-      "$bench" --pipeservers "$p" --mode "$mode" "${flag[@]}" --frames "$frames" \
-        --scene "$scene" "${scene_args[@]}" >>"$csv"
+echo "pipeservers,mode,assign,frame,frame_ms,imbalance,retiled,predicted_ms,tiles,overlap,resisted,scene" >"$csv"
+for scene in $scenes; do
+  for p in $pipeservers; do
+    for mode in static strips kd; do
+      for assign in 0 1; do
+        flag=()
+        ((assign)) && flag=(--assign)
+        "$bench" --pipeservers "$p" --mode "$mode" "${flag[@]}" --frames "$frames" \
+          --scene "$scene" "${scene_args[@]}" | sed "s/\$/,$scene/" >>"$csv"
+      done
     done
   done
 done
 fi
 
-# Per configuration, the median over frames of static's frame time over its own (same
-# pipeserver count, same frame), and its median imbalance.
+# Per scene and configuration, the median over frames of static's frame time over its own
+# (same scene, pipeserver count and frame), and its imbalance after the first five frames.
 summary=$out/balance-summary.txt
 {
-  echo "pipeservers mode assign median_speedup median_imbalance"
+  echo "scene pipeservers mode assign median_speedup median_imbalance mean_imbalance max_imbalance"
   # Static's frame times first (the whole file), then each row against the same frame's.
-  awk -F, 'NR == FNR { if (FNR > 1 && $2 == "static" && $3 == 0) base[$1 " " $4] = $5; next }
-           FNR > 1 { key = $1 " " $2 " " $3; ratio[key] = ratio[key] " " base[$1 " " $4] / $5
-                     imb[key] = imb[key] " " $6 }
+  awk -F, 'NR == FNR { if (FNR > 1 && $2 == "static" && $3 == 0) base[$12 " " $1 " " $4] = $5; next }
+           FNR > 1 { key = $12 " " $1 " " $2 " " $3
+                     ratio[key] = ratio[key] " " base[$12 " " $1 " " $4] / $5
+                     if ($4 >= 5) imb[key] = imb[key] " " $6 }
            END { for (k in ratio) print k "|" ratio[k] "|" imb[k] }' "$csv" "$csv" |
     while IFS='|' read -r key ratios imbalances; do
       median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-      printf '%s %.3f %.3f\n' "$key" "$(median <<<"$ratios")" "$(median <<<"$imbalances")"
-    done | sort -k1,1n -k2,2 -k3,3n
+      stats() { tr ' ' '\n' | grep . | awk '{ s += $1; if ($1 > m) m = $1 } END { printf "%.3f %.3f", NR ? s / NR : 0, m }'; }
+      printf '%s %.3f %.3f %s\n' "$key" "$(median <<<"$ratios")" "$(median <<<"$imbalances")" \
+        "$(stats <<<"$imbalances")"
+    done | sort -k1,1 -k2,2n -k3,3 -k4,4n
 } >"$summary"
 
 plot=$out/balance.gnuplot
 {
-  echo "set terminal pngcairo size 1000,900 font ',11'"
+  rows=$(($(wc -w <<<"$scenes") * $(wc -w <<<"$pipeservers")))
+  echo "set terminal pngcairo size 1000,$((400 * rows + 100)) font ',11'"
   echo "set output '$out/balance.png'"
   echo "set datafile separator ','"
-  echo "set multiplot layout $(wc -w <<<"$pipeservers"),1 title 'frame time per frame (slowest pipeserver), scene $scene, default wall'"
+  echo "set multiplot layout $rows,1 title 'frame time per frame (slowest pipeserver), default wall'"
+  for scene in $scenes; do
   for p in $pipeservers; do
-    echo "set title '$p pipeservers'"
+    echo "set title 'scene $scene, $p pipeservers'"
     echo "set xlabel 'frame'"
     echo "set ylabel 'frame time (ms)'"
     echo "set key outside right"
@@ -90,10 +101,11 @@ plot=$out/balance.gnuplot
       for assign in 0 1; do
         name=$mode
         ((assign)) && name="$mode + assignment"
-        curves+=("'$csv' using (\$1 == $p && strcol(2) eq '$mode' && \$3 == $assign ? \$4 : 1/0):5 with lines lw 2 title '$name'")
+        curves+=("'$csv' using (strcol(12) eq '$scene' && \$1 == $p && strcol(2) eq '$mode' && \$3 == $assign ? \$4 : 1/0):5 with lines lw 2 title '$name'")
       done
     done
     printf 'plot %s\n' "$(IFS=,; echo "${curves[*]}")"
+  done
   done
   echo "unset multiplot"
 } >"$plot"
