@@ -165,7 +165,7 @@ bad_value "--ticks: Value 1000000 not in range" lightning2_emu sequence --displa
 bad_value "--out: an empty path" lightning2_emu route --displays 8x8 --out '' x.png
 bad_value "--out: an empty path" l2wall run --out ''
 # Options of a mode or scene not asked for were ignored without a word.
-bad_value "--triangles is an option of --scene strips, not mesh" pipeserver --triangles 10 \
+bad_value "--triangles is an option of --scene strips or hotspot, not mesh" pipeserver --triangles 10 \
   --out /tmp/x
 bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene strips \
   --mesh /etc/hostname
