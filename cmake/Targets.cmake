@@ -182,6 +182,9 @@ endfunction()
 # together, up to 8 per unit (each unit re-instantiates what GoogleTest, fmt and the standard
 # library leave pending): two test files of one executable must not both define a helper of
 # the same name.
+set(L2_TEST_TMPDIR ${CMAKE_BINARY_DIR}/test-tmp)
+file(MAKE_DIRECTORY ${L2_TEST_TMPDIR})
+
 function(l2_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PRIVATE_INCLUDES;LINKS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
@@ -196,7 +199,12 @@ function(l2_test name)
   target_link_libraries(${name} PRIVATE GTest::gtest_main GTest::gmock fmt::fmt)
   add_test(NAME ${name} COMMAND ${name} --gtest_brief=1
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-  set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 600)
+  # Scratch files in a temporary folder of this build's own (TMPDIR, which
+  # std::filesystem::temp_directory_path() follows): many tests name theirs by test, not by
+  # process, and the suites of two checkouts run at once (a developer's and CI's) must not share
+  # them.
+  set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 600
+                                          ENVIRONMENT "TMPDIR=${L2_TEST_TMPDIR}")
   foreach(sanitizer asan tsan)
     if(sanitizer IN_LIST ARG_LABELS)
       add_dependencies(l2_${sanitizer}_tests ${name})
