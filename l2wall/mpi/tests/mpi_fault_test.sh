@@ -52,6 +52,44 @@ check_saved() {
   echo "  saved displays $expected: frame $frame's pixels"
 }
 
+# signal_and_wait SIGNAL PID RUN DIR LABEL: sends SIGNAL to PID, then waits for mpirun (RUN) to
+# end, at most end_ceiling_ms; it must end non-zero. Sets `status`.
+signal_and_wait() {
+  local signal=$1 pid=$2 run=$3 dir=$4 label=$5 t0 took
+  status=0
+  t0=$(date +%s%N)
+  kill -s "$signal" "$pid"
+  while kill -0 "$run" 2>/dev/null; do
+    took=$((($(date +%s%N) - t0) / 1000000))
+    if ((took > end_ceiling_ms)); then
+      echo "FAIL: $label: still running $took ms after the fault"
+      kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
+      exit 1
+    fi
+    sleep 0.05
+  done
+  wait "$run" || status=$?
+  took=$((($(date +%s%N) - t0) / 1000000))
+  echo "$label: ended after $took ms, exit $status"
+  [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
+}
+
+# nothing_left DIR PIDS RUN: no process of the run in DIR, no shared memory of PIDS, no session of
+# mpirun RUN. mpirun has returned; the ranks it ended may still be exiting on a loaded machine:
+# allowed a few seconds, not a fixed moment.
+nothing_left() {
+  local dir=$1 pids=$2 run=$3 waited p
+  for ((waited = 0; waited < 100; ++waited)); do
+    pgrep -f -- "$dir" >/dev/null || break
+    sleep 0.1
+  done
+  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
+  for p in $pids; do
+    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
+  done
+  if compgen -G "/tmp/ompi.*/pid.$run" >/dev/null; then echo "FAIL: mpirun's session left"; exit 1; fi
+}
+
 # fault SIGNAL RANK ROLE NP WALL SAVED (the display ids saved; empty: none, no fault/ folder;
 # maybe:IDS: those if any)
 fault() {
@@ -69,22 +107,7 @@ fault() {
   pid=$(rank_pid "$dir" "$rank")
   pids=$(pgrep -f -- "$dir" || true)
   [[ -n $pid ]] || { echo "FAIL: no process of rank $rank"; kill "$run"; exit 1; }
-  local t0 took status=0
-  t0=$(date +%s%N)
-  kill -s "$signal" "$pid"
-  while kill -0 "$run" 2>/dev/null; do
-    took=$((($(date +%s%N) - t0) / 1000000))
-    if ((took > end_ceiling_ms)); then
-      echo "FAIL: $signal rank $rank ($role, -np $np): still running $took ms after the fault"
-      kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
-      exit 1
-    fi
-    sleep 0.05
-  done
-  wait "$run" || status=$?
-  took=$((($(date +%s%N) - t0) / 1000000))
-  echo "$signal rank $rank ($role, -np $np): ended after $took ms, exit $status"
-  [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
+  signal_and_wait "$signal" "$pid" "$run" "$dir" "$signal rank $rank ($role, -np $np)"
   local line
   line=$(grep -E "^l2wall: .*$role \(rank $rank on [^,]+, pid $pid\).*frame [0-9]+" "$dir.err") ||
     { echo "FAIL: no line naming rank $rank:"; cat "$dir.err"; exit 1; }
@@ -131,20 +154,7 @@ fault() {
     echo "FAIL: displays saved, but every display was on the rank that is gone"
     exit 1
   fi
-  # mpirun has returned; the ranks it ended may still be exiting on a loaded machine: allowed
-  # a few seconds, not a fixed moment.
-  local waited
-  for ((waited = 0; waited < 100; ++waited)); do
-    pgrep -f -- "$dir" >/dev/null || break
-    sleep 0.1
-  done
-  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
-  # No shared memory: neither the links of the run's processes nor mpirun's session folder.
-  local p
-  for p in $pids; do
-    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
-  done
-  if compgen -G "/tmp/ompi.*/pid.$run" >/dev/null; then echo "FAIL: mpirun's session left"; exit 1; fi
+  nothing_left "$dir" "$pids" "$run"
 }
 
 fault KILL 2 "pipeserver 1" 6 "" "maybe:0 1 2 3"
@@ -164,35 +174,13 @@ coordinator_killed() {
     [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
     sleep 0.05
   done
-  local pid pids t0 took status=0
+  local pid pids
   pid=$(rank_pid "$dir" 0)
   pids=$(pgrep -f -- "$dir" || true)
   [[ -n $pid ]] || { echo "FAIL: no process of rank 0"; kill "$run"; exit 1; }
-  t0=$(date +%s%N)
-  kill -s KILL "$pid"
-  while kill -0 "$run" 2>/dev/null; do
-    took=$((($(date +%s%N) - t0) / 1000000))
-    if ((took > end_ceiling_ms)); then
-      echo "FAIL: KILL rank 0 (coordinator): still running $took ms after the fault"
-      kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
-      exit 1
-    fi
-    sleep 0.05
-  done
-  wait "$run" || status=$?
-  took=$((($(date +%s%N) - t0) / 1000000))
-  echo "KILL rank 0 (coordinator, -np 6): ended after $took ms, exit $status"
-  [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
+  signal_and_wait KILL "$pid" "$run" "$dir" "KILL rank 0 (coordinator, -np 6)"
   grep -q "mpirun noticed that process rank 0 with PID [0-9]* on node [^ ]* exited on signal 9" "$dir.err" ||
     { echo "FAIL: mpirun did not name rank 0:"; cat "$dir.err"; exit 1; }
-  local waited p
-  for ((waited = 0; waited < 100; ++waited)); do
-    pgrep -f -- "$dir" >/dev/null || break
-    sleep 0.1
-  done
-  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left running"; exit 1; fi
-  for p in $pids; do
-    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
-  done
+  nothing_left "$dir" "$pids" "$run"
 }
 coordinator_killed
