@@ -3,9 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 
 #include "command_line/printable.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "toml_shape.hpp"
 
 namespace l2 {
 
@@ -20,6 +24,40 @@ void TomlSource::fail(int line, std::string_view field, std::string_view message
 void TomlSource::fail(const toml::node& at, std::string_view field,
                       std::string_view message) const {
   fail(line_of(at), field, message);
+}
+
+std::string read_toml_file(const std::filesystem::path& path, std::string_view kind) {
+  // A directory opens as a stream here and reads as nothing, which would be reported as a file
+  // without content. (Not "anything but a regular file": a pipe such as <(...) is fine.)
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(EISDIR)));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));
+  }
+  constexpr std::size_t kMaxBytes = 16u << 20;
+  std::string text(kMaxBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxBytes) {
+    throw LayoutError(
+        fmt::format("{}: more than {} MiB: not {}", path.string(), kMaxBytes >> 20, kind));
+  }
+  return text;
+}
+
+toml::table parse_toml(std::string_view text, const TomlSource& source) {
+  check_toml_shape(text, source.file);
+  try {
+    return toml::parse(text, source.file);
+  } catch (const toml::parse_error& e) {
+    const int line = static_cast<int>(e.source().begin.line);
+    // The description quotes the file: escaped, it stays one line and cannot reach a terminal.
+    throw LayoutError(
+        fmt::format("{}:{}: malformed TOML: {}", source.file, line, printable(e.description())));
+  }
 }
 
 int line_of(const toml::node& node) {

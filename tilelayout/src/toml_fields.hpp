@@ -1,10 +1,11 @@
 // Typed, range-checked reads from one TOML table, with errors that name the file, the line and
 // the dotted field ("walls/x.toml:12: tiling.tile_width: must be 1..4095, got 0"). Private to
-// the wall-file loader.
+// the loaders of wall and session files.
 #pragma once
 
 #include <toml++/toml.h>
 
+#include <filesystem>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -20,6 +21,14 @@ struct TomlSource {
   [[noreturn]] void fail(const toml::node& at, std::string_view field,
                          std::string_view message) const;
 };
+
+// A file's text, read with a limit: a wall or session file is a few kilobytes, and /dev/zero or
+// a wrong file (a frame dump, a log) would otherwise be read to the end of memory before TOML
+// refuses it. `kind` names what it should be ("a wall file"). Throws LayoutError.
+std::string read_toml_file(const std::filesystem::path& path, std::string_view kind);
+// The text parsed, its shape checked first (toml_shape.hpp). Throws LayoutError
+// ("x.toml:3: malformed TOML: ...").
+toml::table parse_toml(std::string_view text, const TomlSource& source);
 
 class TomlFields {
  public:
