@@ -1,0 +1,49 @@
+// Reading a session file (TOML, format in docs/session-file.md): the windows a wall shows, each
+// a source laid on a canvas rectangle, in z-order, over a background colour. One-line errors
+// naming file, line and field, as wall files have; limits that refuse a hostile file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tilelayout/geometry.hpp"
+
+namespace l2 {
+
+// Each window is a scene of its own, in every pipeserver and in every GL context it draws with:
+// a bound keeps the sources a pipeserver opens (files, decoders, models) few.
+inline constexpr int kMaxWindows = 32;
+inline constexpr int kMaxWindowId = 9999;
+inline constexpr int kMaxWindowSide = 16384;
+// How far a window may lie off the canvas's top-left corner (and its side past that).
+inline constexpr int kWindowReach = 16384;
+
+struct SessionWindow {
+  int id = 0;          // what commands name it by: unique in the session
+  std::string source;  // picture, movie, mesh, strips, isosurface, patches, swap
+  // picture, movie: the file; mesh: the model (empty: the bunny). Relative to the session file.
+  std::filesystem::path content;
+  Rect on_canvas;
+  int z = 0;        // higher in front; at equal z, later in the file in front
+  std::string fit;  // picture, movie: fit, fill, stretch or 1:1; mesh: fit or fill; empty: fit
+};
+
+struct Session {
+  std::filesystem::path source;        // the file, for messages
+  std::uint32_t background = 0;        // 0xRRGGBB, where no window is
+  std::vector<SessionWindow> windows;  // back to front (sort_windows)
+};
+
+// Parses session text; relative content paths are taken from `path_for_messages`'s folder.
+// Throws LayoutError ("s.toml:12: window[1].width: must be 1..16384, got 0").
+Session parse_session(std::string_view toml_text, const std::filesystem::path& path_for_messages);
+// Reads and parses a session file. Throws LayoutError, also when the file cannot be read.
+Session load_session(const std::filesystem::path& path);
+
+// Back to front: by z, and at equal z in the order they are listed.
+void sort_windows(std::vector<SessionWindow>& windows);
+
+}  // namespace l2
