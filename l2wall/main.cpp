@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
     o.scene_args = l2::scene_arguments(scene_options);
     // A movie plays by its own clock at the wall's refresh rate unless told otherwise; at full
     // speed there is no clock to play by.
-    if (o.scene == "movie" && run->count("--movie-rate") == 0)
+    if ((o.scene == "movie" || o.scene == "session") && run->count("--movie-rate") == 0)
       o.scene_args.insert(o.scene_args.end(), {"--movie-rate", fmt::format("{:g}", o.refresh_hz)});
   });
   bool plot = false;
@@ -258,6 +258,9 @@ int main(int argc, char** argv) {
       tell_once(mpi, l2::check_model(scene.mesh_file));
     if (o.scene == "picture") l2::PictureRegions{scene.content};
     if (o.scene == "movie") l2::MovieFile(scene.content).frame(0);
+    // A session is read whole, every window's source with it: a wrong line or file is one
+    // line here, not one from every pipeserver.
+    if (o.scene == "session") tell_once(mpi, l2::make_scene("session", scene)->note());
     const int status = mpi ? run_over_mpi(o) : l2::run_wall(o);
     // A run stopped by a signal wrote its report too (stop_signal.hpp).
     const bool reported = status == 0 || status == l2::stopped_exit_status(SIGINT);

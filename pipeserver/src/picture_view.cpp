@@ -28,6 +28,8 @@ std::pair<double, double> fitted_scale(double w, double h, const Canvas& canvas,
       return {std::min(across, down), std::min(across, down)};
     case SourceFit::Stretch:
       return {across, down};
+    case SourceFit::OneToOne:
+      return {1.0, 1.0};
   }
   return {across, down};
 }
@@ -38,6 +40,7 @@ std::optional<SourceFit> parse_source_fit(std::string_view name) {
   if (name == "fit") return SourceFit::Fit;
   if (name == "fill") return SourceFit::Fill;
   if (name == "stretch") return SourceFit::Stretch;
+  if (name == "1:1") return SourceFit::OneToOne;
   return std::nullopt;
 }
 
@@ -60,6 +63,9 @@ SourceView picture_view(int frame, int source_width, int source_height, const Ca
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas, SourceFit fit) {
   const double w = source_width, h = source_height;
   const auto [sx, sy] = fitted_scale(w, h, canvas, fit);
+  // 1:1 puts the source's top-left pixel at the canvas's: canvas pixel X shows source pixel
+  // floor(W / 2 + X + 0.5 - W / 2) = X.
+  if (fit == SourceFit::OneToOne) return {canvas.width / 2.0, canvas.height / 2.0, sx, sy};
   return {w / 2.0, h / 2.0, sx, sy};
 }
 

@@ -53,6 +53,10 @@ void Scene::set_camera(const CameraOptions& camera) {
   camera_ = camera;
 }
 
+void Scene::place_windows(const std::vector<WindowPlacement>& /*back_to_front*/) {
+  throw std::invalid_argument(fmt::format("the {} scene has no windows to place", name()));
+}
+
 const std::vector<std::string>& built_in_scene_names() {
   static const std::vector<std::string> names{"mesh",       "strips",  "hotspot",
                                               "isosurface", "patches", "swap"};
@@ -62,7 +66,7 @@ const std::vector<std::string>& built_in_scene_names() {
 const std::vector<std::string>& scene_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all = built_in_scene_names();
-    all.insert(all.end(), {"picture", "movie"});
+    all.insert(all.end(), {"picture", "movie", "session"});
     return all;
   }();
   return names;
@@ -101,10 +105,15 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
     return detail::make_movie_scene(options.content, options.movie_rate,
                                     fit.value_or(SourceFit::Fit));
   }
-  throw std::invalid_argument(fmt::format(
-      "unknown scene '{}' (expected mesh, strips, hotspot, isosurface, patches, swap, picture or "
-      "movie)",
-      name));
+  if (name == "session") {
+    if (options.session.empty())
+      throw std::invalid_argument("--scene session needs --session FILE");
+    return detail::make_session_scene(options.session, options);
+  }
+  throw std::invalid_argument(
+      fmt::format("unknown scene '{}' (expected mesh, strips, hotspot, isosurface, patches, swap, "
+                  "picture, movie or session)",
+                  name));
 }
 
 std::function<std::unique_ptr<Scene>()>& replacement() {

@@ -35,7 +35,13 @@ std::unique_ptr<Scene> make_hotspot_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_swap_scene();
-std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit);
+// `still`: laid as `fit` says at every frame (a session's window), not panned and zoomed.
+std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit,
+                                          bool still = false);
+// A session (session_file.hpp): every window's source drawn into its rectangle, over the
+// background; `options` are the run's, for the sources (camera, movie rate, ...).
+std::unique_ptr<Scene> make_session_scene(const std::filesystem::path& file,
+                                          const SceneOptions& options);
 std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate,
                                         SourceFit fit);
 

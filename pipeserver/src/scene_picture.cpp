@@ -1,6 +1,7 @@
 // `picture`: a still picture, of any size and format OpenImageIO reads, panned and zoomed
 // across the canvas (picture_view.hpp). Each tile reads only the rows and columns it shows,
-// through an image cache of bounded size, so a pipeserver never holds the whole picture.
+// through an image cache of bounded size, so a pipeserver never holds the whole picture. In a
+// session's window the picture stays still, laid on the window as its fit says.
 #include "image/picture_regions.hpp"
 #include "scene_common.hpp"
 #include "source_fill.hpp"
@@ -11,13 +12,16 @@ namespace {
 
 class PictureScene : public Scene {
  public:
-  PictureScene(const std::filesystem::path& file, SourceFit fit) : picture_(file), fit_(fit) {
+  PictureScene(const std::filesystem::path& file, SourceFit fit, bool still)
+      : picture_(file), fit_(fit), still_(still) {
     lit_ = false;
   }
   const char* name() const override { return "picture"; }
 
   bool fill_tile(const Canvas& canvas, const Rect& on_canvas, RgbImage& rgb) const override {
-    const SourceView view = picture_view(frame_, picture_.width(), picture_.height(), canvas, fit_);
+    const SourceView view =
+        still_ ? movie_view(picture_.width(), picture_.height(), canvas, fit_)
+               : picture_view(frame_, picture_.width(), picture_.height(), canvas, fit_);
     fill_from_source(
         view, picture_.width(), picture_.height(), canvas, on_canvas,
         [this](int y, int x_begin, int x_end, std::uint8_t* out) {
@@ -33,13 +37,15 @@ class PictureScene : public Scene {
  private:
   PictureRegions picture_;
   SourceFit fit_;
+  bool still_;
   int frame_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit) {
-  return std::make_unique<PictureScene>(file, fit);
+std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit,
+                                          bool still) {
+  return std::make_unique<PictureScene>(file, fit, still);
 }
 
 }  // namespace l2::detail

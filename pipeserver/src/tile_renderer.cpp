@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "draw_rgb.hpp"
 
@@ -11,11 +12,16 @@ namespace l2 {
 
 namespace {
 
-void setup_state(bool lit) {
+void clear_framebuffer() {
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// Set for every tile, not once a frame: a session's windows draw scenes lit and unlit into one
+// framebuffer, each tile of each window in its own scene's state.
+void setup_state(bool lit) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
@@ -81,19 +87,22 @@ std::size_t primitives(const Batch& b) {
 }  // namespace
 
 TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share)
+    : TileRenderer(scene, canvas, share, true) {}
+
+TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share,
+                           bool clear)
     : scene_(scene),
       canvas_(canvas),
       camera_(
           frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera(), scene.seen_whole())),
       drawn_(scene.batches().size(), false) {
-  setup_state(scene.lit());
+  if (clear) clear_framebuffer();
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();
   footprints_.reserve(scene.batches().size());
   for (const auto& b : scene.batches()) {
     footprints_.push_back(canvas_footprint(canvas, clip_from_model, b.bounds));
   }
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(glm::value_ptr(camera_.view * scene.model()));
+  make_windows(share);
 
   std::size_t total = 0;
   for (const auto& b : scene.batches()) total += primitives(b);
@@ -111,11 +120,35 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometrySha
   }
 }
 
+void TileRenderer::make_windows(GeometryShare share) {
+  // A window's scene is drawn apart from the others: its batches split by layer would leave
+  // the composite of one layer's window over another's picture meaningless.
+  const std::vector<SceneWindow> windows = scene_.windows();
+  if (!windows.empty() && share.layers > 1)
+    throw std::invalid_argument("a session cannot be drawn on a wall of depth layers");
+  for (const SceneWindow& w : windows) {
+    const Canvas own{w.on_canvas.w, w.on_canvas.h};
+    windows_.push_back({w.on_canvas, std::unique_ptr<TileRenderer>(
+                                         new TileRenderer(*w.scene, own, share, false))});
+  }
+}
+
+BucketStats TileRenderer::stats() const {
+  BucketStats all = stats_;
+  for (const auto& w : windows_) {
+    const BucketStats s = w.renderer->stats();
+    all.batches += s.batches;
+    all.tile_draws += s.tile_draws;
+  }
+  return all;
+}
+
 void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
   draw_tile(on_canvas, window, scene_.clear_colour());
 }
 
 void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear) {
+  setup_state(scene_.lit());
   glViewport(0, 0, window.w, window.h);
   // GL rows count from the bottom of the window.
   const int gl_x = on_canvas.x - window.x, gl_y = window.bottom() - on_canvas.bottom();
@@ -130,6 +163,7 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec
   const glm::dmat4 to_window = tile_matrix(canvas_, window);
   glLoadMatrixd(glm::value_ptr(to_window * glm::dmat4(camera_.projection)));
   glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixf(glm::value_ptr(camera_.view * scene_.model()));
   scene_.draw_tile({canvas_, on_canvas, scene_.frame(), to_window, camera_});
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
@@ -140,6 +174,20 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec
       drawn_[i] = true;
       ++stats_.batches;
     }
+  }
+  draw_windows(on_canvas, window);
+}
+
+void TileRenderer::draw_windows(const Rect& on_canvas, const Rect& window) {
+  // Each window sees the canvas from its own top-left corner: the tile's part of it and the GL
+  // window, moved by the same whole pixels, keep every pixel where it was.
+  for (const auto& w : windows_) {
+    const Rect part = intersect(on_canvas, w.on_canvas);
+    if (part.empty()) continue;
+    const auto moved = [&w](Rect r) {
+      return Rect{r.x - w.on_canvas.x, r.y - w.on_canvas.y, r.w, r.h};
+    };
+    w.renderer->draw_tile(moved(part), moved(window));
   }
 }
 

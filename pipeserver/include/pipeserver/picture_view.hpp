@@ -18,10 +18,12 @@ struct SourceView {
 };
 
 // How a picture or movie frame is laid on the canvas (--fit): all of it in view, black bars on
-// two sides (fit); the canvas covered, the source cropped on two sides (fill); or both axes
-// scaled apart to cover the canvas exactly (stretch).
-enum class SourceFit { Fit, Fill, Stretch };
-std::optional<SourceFit> parse_source_fit(std::string_view name);  // "fit", "fill", "stretch"
+// two sides (fit); the canvas covered, the source cropped on two sides (fill); both axes
+// scaled apart to cover the canvas exactly (stretch); or one source pixel per canvas pixel
+// (1:1, a session's windows: the source's top-left pixel at the canvas's top-left).
+enum class SourceFit { Fit, Fill, Stretch, OneToOne };
+// "fit", "fill", "stretch", "1:1"
+std::optional<SourceFit> parse_source_fit(std::string_view name);
 
 // Frames a zoom takes to go from the picture's cover view to 1:1 and back.
 inline constexpr int kPictureZoomPeriod = 600;
@@ -34,8 +36,8 @@ inline constexpr int kPictureZoomPeriod = 600;
 SourceView picture_view(int frame, int source_width, int source_height, const Canvas& canvas,
                         SourceFit fit = SourceFit::Fill);
 
-// The movie scene: the whole frame laid on the canvas as `fit` says (by default as large as it
-// fits, centred, black bars on the other sides).
+// The movie scene, and a still picture in a session's window: the whole frame laid on the canvas
+// as `fit` says (by default as large as it fits, centred, black bars on the other sides).
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas,
                       SourceFit fit = SourceFit::Fit);
 

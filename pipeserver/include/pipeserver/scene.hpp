@@ -64,7 +64,23 @@ struct SceneOptions {
   // (picture_view.hpp); mesh: "fit" (the whole model in view) or "fill" (a wide wall spanned,
   // the model cropped across it); empty: the scene's own (picture: fill, movie and mesh: fit).
   std::string fit;
-  CameraOptions camera;  // every scene
+  std::filesystem::path session;  // session: the session file (session_file.hpp)
+  CameraOptions camera;           // every scene
+};
+
+class Scene;
+
+// One window of a session: a scene drawn into a rectangle of the canvas as if that rectangle
+// were its whole canvas, over what is behind it.
+struct SceneWindow {
+  Rect on_canvas;
+  const Scene* scene = nullptr;
+};
+
+// Where a session's window (by its id in the session file) is to be drawn.
+struct WindowPlacement {
+  int id = 0;
+  Rect on_canvas;
 };
 
 // What a program's own drawing (renderer.hpp) is given for each tile. When it is called, the
@@ -121,6 +137,13 @@ class Scene {
   }
   // A program's own scene (renderer.hpp) draws each tile itself (it has no batches).
   virtual void draw_tile(const TileView& /*view*/) const {}
+  // A session's windows, back to front, drawn over the tile after its clear to clear_colour():
+  // the scene itself has no batches and no pixels. Empty for every other scene.
+  virtual std::vector<SceneWindow> windows() const { return {}; }
+  // A session's windows from now on, back to front (moved, resized, raised; one not listed is
+  // closed): the coordinator's WINDOWS line, the same on every pipeserver. Throws
+  // std::invalid_argument for a window the session does not have, or when this is no session.
+  virtual void place_windows(const std::vector<WindowPlacement>& back_to_front);
 
  protected:
   // The scene's own animation: batches_ and model_ of frame `frame`.
@@ -141,7 +164,8 @@ class Scene {
 // "mesh", "strips", "isosurface", "patches", "swap" (no geometry: frame k is cleared to
 // ((64 + 37k) mod 256, (128 + 101k) mod 256, (192 + 173k) mod 256) as 8-bit RGB), "picture"
 // (options.content, any format OpenImageIO reads, panned and zoomed: picture_view.hpp) or
-// "movie" (options.content, any format FFmpeg reads, fitted to the canvas). Throws
+// "movie" (options.content, any format FFmpeg reads, fitted to the canvas) or "session"
+// (options.session: windows of those, session_file.hpp). Throws
 // std::invalid_argument on an unknown name or a picture or movie without a file, and
 // std::runtime_error (naming the file, and the line where there is one) on an unreadable mesh,
 // picture or movie.

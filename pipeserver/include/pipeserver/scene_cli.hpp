@@ -19,8 +19,8 @@ struct SceneOption {
   const char* scene;  // the scenes it belongs to, separated by spaces; nullptr: every scene
 };
 
-// Adds --mesh, --content, --triangles, --strip-length, --grid, --tessellation, --patches and the
-// camera's
+// Adds --mesh, --content, --fit, --session, --movie-rate, --triangles, --strip-length, --grid,
+// --tessellation, --patches and the camera's
 // --camera-distance, --camera-orbit, --camera-fov to `app`, writing into `o`.
 inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o) {
   std::vector<SceneOption> added{
@@ -42,13 +42,18 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "exactly); default: fill for a picture, fit for a model or a movie")
            ->check(CLI::IsMember({"fit", "fill", "stretch"})),
        "mesh picture movie"},
+      {app.add_option("--session", o.session,
+                      "session scene: a session file, the windows the wall shows "
+                      "(docs/session-file.md)")
+           ->check(CLI::ExistingFile),
+       "session"},
       {app.add_option("--movie-rate", o.movie_rate,
                       "movie scene: application frames per second the movie's clock runs at: "
                       "application frame k shows the movie at k / HZ seconds, movie frames "
                       "dropped or repeated as the rates differ; 0: movie frame k is application "
                       "frame k (exact; l2wall run passes its --refresh, 0 at full speed)")
            ->check(number_in(0, 1000)),
-       "movie"},
+       "movie session"},
       {app.add_option("--triangles", o.triangles, "strips and hotspot scenes: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
        "strips hotspot"},
@@ -84,13 +89,15 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
 }
 
 // An option of one scene given for another was ignored without a word: refused instead.
-// A picture or movie scene without its file is refused too.
+// A picture, movie or session scene without its file is refused too.
 inline void check_scene_options(const std::vector<SceneOption>& options, const std::string& scene) {
   for (const SceneOption& s : options) {
     if (s.option->get_name() == "--content" && s.option->count() == 0 &&
         (scene == "picture" || scene == "movie")) {
       throw CLI::ValidationError(fmt::format("--scene {} needs --content FILE", scene));
     }
+    if (s.option->get_name() == "--session" && s.option->count() == 0 && scene == "session")
+      throw CLI::ValidationError("--scene session needs --session FILE");
     if (s.scene == nullptr || s.option->count() == 0) continue;
     std::string scenes = s.scene;
     if ((" " + scenes + " ").find(" " + scene + " ") != std::string::npos) continue;

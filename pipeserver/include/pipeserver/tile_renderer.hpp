@@ -6,6 +6,7 @@
 // coordinates, and even an integer shift of the viewport changes a few colours by a level.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "image/rgb_image.hpp"
@@ -27,21 +28,32 @@ struct GeometryShare {
 
 class TileRenderer {
  public:
-  // Prepares one frame: GL state, a clear of the whole framebuffer to the scene's clear colour
-  // (colour and depth), and every batch's canvas footprint. The scene must already be at the frame
-  // to draw.
+  // Prepares one frame: a clear of the whole framebuffer to black (colour and depth), every
+  // batch's canvas footprint, and a renderer for each window of a session (Scene::windows, each
+  // on a canvas of the window's size). The scene must already be at the frame to draw. Throws
+  // std::invalid_argument for a session shared by depth layers.
   TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share = {});
 
   // Draws canvas rectangle `on_canvas` as the window showing canvas rectangle `window` — the
   // current framebuffer, window.w x window.h, its row 0 the window's bottom row — draws it:
   // only the part inside `on_canvas`, first cleared to `clear` (0..1 per channel; the scene's
-  // clear colour by default) and the far depth.
+  // clear colour by default) and the far depth; then a session's windows over it, clipped to
+  // the tile, back to front.
   void draw_tile(const Rect& on_canvas, const Rect& window);
   void draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear);
 
-  const BucketStats& stats() const { return stats_; }
+  // The windows' draws included.
+  BucketStats stats() const;
 
  private:
+  struct Window {
+    Rect on_canvas;
+    std::unique_ptr<TileRenderer> renderer;
+  };
+  // `clear`: the whole framebuffer, once a frame (not again for each window).
+  TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share, bool clear);
+  void make_windows(GeometryShare share);
+  void draw_windows(const Rect& on_canvas, const Rect& window);
   // Draws primitives [first, first + count) of `batch`, with its texture when it has one.
   void draw_batch(const Batch& batch, std::size_t first, std::size_t count) const;
   void draw_primitives(const Batch& batch, std::size_t first, std::size_t count) const;
@@ -55,6 +67,7 @@ class TileRenderer {
   std::vector<std::size_t> share_first_, share_count_;
   BucketStats stats_;
   RgbImage pixels_;  // a picture or movie scene's tile
+  std::vector<Window> windows_;
 };
 
 }  // namespace l2
