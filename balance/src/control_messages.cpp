@@ -127,6 +127,50 @@ LayoutMessage decode_layout(std::string_view line) {
   return m;
 }
 
+std::string encode(const WantMessage& m) {
+  return fmt::format("WANT {} {}", m.frame, m.pipeserver);
+}
+
+std::string encode(const WindowsMessage& m) {
+  std::string out = fmt::format("WINDOWS {} {}", m.frame, m.windows.size());
+  for (const WindowPlace& w : m.windows) {
+    const Rect& r = w.on_canvas;
+    out += fmt::format(" {} {} {} {} {}", w.id, r.x, r.y, r.w, r.h);
+  }
+  return out;
+}
+
+WantMessage decode_want(std::string_view line) {
+  Words w(line);
+  w.keyword("WANT");
+  WantMessage m;
+  m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
+  m.pipeserver = static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1));
+  w.end();
+  return m;
+}
+
+WindowsMessage decode_windows(std::string_view line) {
+  Words w(line);
+  w.keyword("WINDOWS");
+  WindowsMessage m;
+  m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
+  const auto n = w.integer("window count", 0, kMaxControlWindows);
+  for (long long i = 0; i < n; ++i) {
+    WindowPlace p;
+    p.id = static_cast<int>(w.integer("window id", 0, kMaxControlWindowId));
+    p.on_canvas.x = static_cast<int>(w.integer("x", -kControlWindowReach, kControlWindowReach));
+    p.on_canvas.y = static_cast<int>(w.integer("y", -kControlWindowReach, kControlWindowReach));
+    p.on_canvas.w = static_cast<int>(w.integer("width", 1, kMaxControlWindowSide));
+    p.on_canvas.h = static_cast<int>(w.integer("height", 1, kMaxControlWindowSide));
+    for (const WindowPlace& before : m.windows)
+      if (before.id == p.id) w.fail(fmt::format("window {} listed twice", p.id));
+    m.windows.push_back(p);
+  }
+  w.end();
+  return m;
+}
+
 LayoutMessage layout_message(int frame, const TileLayout& layout) {
   LayoutMessage m;
   m.frame = frame;

@@ -20,6 +20,21 @@ TEST(ControlMessages, TimesRoundTrip) {
   EXPECT_EQ(m.seconds, (std::vector<double>{0.0125, 0.5, 0}));
 }
 
+TEST(ControlMessages, WindowsRoundTrip) {
+  EXPECT_EQ(encode(WantMessage{9, 3}), "WANT 9 3");
+  EXPECT_EQ(decode_want("WANT 9 3").pipeserver, 3);
+  const WindowsMessage m{4, {{2, {-10, 20, 300, 200}}, {0, {5, 6, 7, 8}}}};
+  EXPECT_EQ(encode(m), "WINDOWS 4 2 2 -10 20 300 200 0 5 6 7 8");
+  const WindowsMessage d = decode_windows(encode(m));
+  EXPECT_EQ(d.frame, 4);
+  EXPECT_EQ(d.windows, m.windows);
+  EXPECT_TRUE(decode_windows("WINDOWS 5 0").windows.empty());  // every window closed
+  EXPECT_THROW(decode_windows("WINDOWS 4 2 1 0 0 5 5 1 0 0 5 5"), ControlError);  // id twice
+  EXPECT_THROW(decode_windows("WINDOWS 4 1 1 0 0 0 5"), ControlError);            // no width
+  EXPECT_THROW(decode_windows("WINDOWS 4 33"), ControlError);                     // too many
+  EXPECT_THROW(decode_windows("WINDOWS 4 1 1 0 0 5 5 9"), ControlError);          // a word more
+}
+
 TEST(ControlMessages, LayoutRoundTrip) {
   const LayoutMessage m{3, {{0, 0, 33, 38}, {33, 0, 67, 38}}, {1, 0}, {}};
   EXPECT_EQ(encode(m), "LAYOUT 3 2 0 0 33 38 1 33 0 67 38 0");

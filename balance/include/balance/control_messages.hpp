@@ -7,6 +7,11 @@
 //   LAYOUT <frame> <n> (<x> <y> <w> <h> <pipeserver>)... [GONE <m> <pipeserver>...]
 //                                                    n = logical tiles, in tiling order;
 //                                                    GONE: pipeservers that died (no tiles)
+//
+// A session run's windows travel the same way, on a channel of their own (docs/session-file.md):
+//
+//   WANT <frame> <pipeserver>                          before its READY wait: that frame's windows
+//   WINDOWS <frame> <n> (<id> <x> <y> <w> <h>)...      n = windows shown, back to front
 #pragma once
 
 #include <stdexcept>
@@ -41,10 +46,37 @@ class ControlError : public std::runtime_error {
 // display, but a line this long is already a wrong peer): refused before anything is kept.
 inline constexpr int kMaxControlTiles = 65536;
 
+struct WantMessage {
+  int frame = 0, pipeserver = 0;
+};
+
+// Where a window of the session is; a window the message does not list is closed.
+struct WindowPlace {
+  int id = 0;
+  Rect on_canvas;
+  friend bool operator==(const WindowPlace&, const WindowPlace&) = default;
+};
+
+struct WindowsMessage {
+  int frame = 0;
+  std::vector<WindowPlace> windows;  // back to front
+};
+
+// A session's bounds (tilelayout/session_file.hpp: kMaxWindows, kMaxWindowId, kMaxWindowSide,
+// kWindowReach), checked again on a line from the channel.
+inline constexpr int kMaxControlWindows = 32;
+inline constexpr int kMaxControlWindowId = 9999;
+inline constexpr int kMaxControlWindowSide = 16384;
+inline constexpr int kControlWindowReach = 16384;
+
 std::string encode(const TimesMessage& m);
 std::string encode(const LayoutMessage& m);
 TimesMessage decode_times(std::string_view line);
 LayoutMessage decode_layout(std::string_view line);
+std::string encode(const WantMessage& m);
+std::string encode(const WindowsMessage& m);
+WantMessage decode_want(std::string_view line);
+WindowsMessage decode_windows(std::string_view line);
 
 // What the coordinator sends every pipeserver: `layout` as frame `frame`'s tiling. Its
 // pipeservers without a tile are gone (the planner gives every other one a tile).
