@@ -111,6 +111,25 @@ void take_layout(ControlChannel& control, const Wall& wall, Pipeserver& ps, int 
   ps.set_layout(plan_from_message(wall, m));
 }
 
+// Frame `frame`'s windows from the coordinator, placed in `scene`. Throws ControlError when
+// none comes within `timeout` or it is for another frame.
+void take_windows(ControlChannel& windows, Scene& scene, int frame,
+                  std::chrono::milliseconds timeout) {
+  const std::optional<std::string> line = windows.receive_line(timeout);
+  if (!line) {
+    throw ControlError(fmt::format("windows channel: no WINDOWS for frame {} within {} ms", frame,
+                                   timeout.count()));
+  }
+  const WindowsMessage m = decode_windows(*line);
+  if (m.frame != frame) {
+    throw ControlError(fmt::format("windows channel: WINDOWS for frame {} while frame {} is next",
+                                   m.frame, frame));
+  }
+  std::vector<WindowPlacement> placed;
+  for (const WindowPlace& w : m.windows) placed.push_back({w.id, w.on_canvas});
+  scene.place_windows(placed);
+}
+
 // The SYNC? retries (or, for SWAPPED, the timeouts) a pipeserver allows the swap of `frame`. The
 // swap of frame 0 also waits for every other pipeserver's start-up (GL context, first render),
 // which on a loaded machine can take seconds: that wait gets more, whichever path paces the
@@ -160,6 +179,8 @@ int run_live_mode(const LiveOptions& o) {
     const double render_ms = ms_since(t0);
     // Sent before the READY wait, so the coordinator plans the next frame meanwhile.
     if (o.control) send_times(*o.control, ps, k);
+    if (o.windows && k + 1 < o.frames)
+      o.windows->send_line(encode(WantMessage{k + 1, o.pipeserver}));
     const auto t1 = Clock::now();
     int retries = 0;
     const int retries_allowed = swap_retries(o, k - 1);
@@ -183,6 +204,8 @@ int run_live_mode(const LiveOptions& o) {
     if (o.control && k + 1 < o.frames) {
       take_layout(*o.control, wall, ps, k + 1, timeout * (o.ready_retries + 1));
     }
+    if (o.windows && k + 1 < o.frames)
+      take_windows(*o.windows, *scene, k + 1, timeout * (o.ready_retries + 1));
     // The bucketing figures too: how many tiles a batch lands in, which a large model drives up.
     const BucketStats& b = ps.last_times().buckets;
     report.line(fmt::format(

@@ -88,6 +88,9 @@ struct LiveOptions {
   // frame k+1 is rendered in the layout of the LAYOUT k+1 that comes back. Empty: the wall's
   // layout every frame.
   std::shared_ptr<ControlChannel> control;
+  // A session run's windows (--windows-fd): WANT out before each READY wait, WINDOWS in for the
+  // next frame after it, so every pipeserver moves a window in the same frame.
+  std::shared_ptr<ControlChannel> windows;
 };
 
 // Every frame carries its frame number in the first pixel of the pipeserver's first tile (24 bits,

@@ -191,6 +191,12 @@ int run_pipeserver(int argc, char** argv) {
                    "live: inherited socket of the load balancer's control channel (TIMES out, "
                    "LAYOUT in, one line each: balance/)")
       ->check(CLI::Range(3, 1 << 20));
+  int windows_fd = -1;
+  group
+      ->add_option("--windows-fd", windows_fd,
+                   "live, --scene session: inherited socket of the run's windows channel (WANT "
+                   "out, WINDOWS in, one line each: docs/session-file.md)")
+      ->check(CLI::Range(3, 1 << 20));
   group->add_option("--report", live_options.report,
                     "live: file receiving one line per frame (render and READY wait times)");
   l2::add_timeout_option(*group, "ready-timeout", live_options.ready_timeout_ms, false,
@@ -254,6 +260,8 @@ int run_pipeserver(int argc, char** argv) {
     if (control_fd >= 0) {
       live_options.control = std::make_shared<l2::SocketControlChannel>(l2::Fd(control_fd));
     }
+    if (windows_fd >= 0)
+      live_options.windows = std::make_shared<l2::SocketControlChannel>(l2::Fd(windows_fd));
     if ((mpi_viz || mpi_control) && !mpi) {
       std::fprintf(stderr, "pipeserver: --mpi-viz and --mpi-control need --mpi\n");
       return 2;
