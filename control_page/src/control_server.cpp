@@ -89,7 +89,7 @@ struct ControlServer::Impl {
                  if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
                  serve_picture(req.matches[1].str(), res);
                });
-    server.Post(R"(/api/(pause|resume|save|stop|balance))",
+    server.Post(R"(/api/(pause|resume|save|stop|balance|window))",
                 [this](const httplib::Request& req, httplib::Response& res) {
                   if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
                   if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
@@ -148,6 +148,24 @@ struct ControlServer::Impl {
     res.set_content(std::move(bytes), "image/png");
   }
 
+  // The run's command line for a window ("move 1 100 80 300 200"): the run checks its words
+  // and numbers, and says in the events what it did. Empty: the request lacks a parameter.
+  static std::string window_command(const httplib::Request& req) {
+    const std::string action = req.get_param_value("action");
+    std::vector<const char*> keys{"id"};
+    if (action == "move")
+      keys.insert(keys.end(), {"x", "y", "w", "h"});
+    else if (action != "raise" && action != "close")
+      return {};
+    std::string command = action;
+    for (const char* key : keys) {
+      const std::string value = req.get_param_value(key);
+      if (value.empty() || value.size() > 12 || value.find(' ') != std::string::npos) return {};
+      command += " " + value;
+    }
+    return command;
+  }
+
   void steer(const httplib::Request& req, httplib::Response& res) {
     const std::string what = req.matches[1].str();
     ControlRequest r;
@@ -159,6 +177,14 @@ struct ControlServer::Impl {
       r.action = ControlAction::Balance;
       r.argument = req.get_param_value("mode");
       if (r.argument.empty()) return refuse(res, 400, "balance: give ?mode=");
+    }
+    if (what == "window") {
+      r.action = ControlAction::Window;
+      r.argument = window_command(req);
+      if (r.argument.empty())
+        return refuse(res, 400,
+                      "window: give ?action=move&id=ID&x=X&y=Y&w=W&h=H, or action=raise or "
+                      "close with id");
     }
     inbox.push(std::move(r));
     reply_json(res, 202, R"({"taken":true})");

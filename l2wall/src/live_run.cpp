@@ -31,10 +31,12 @@
 #include "l2wall/run_report.hpp"
 #include "l2wall/run_time.hpp"
 #include "live_page.hpp"
+#include "live_windows.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/session_file.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "vizserver_process.hpp"
 
@@ -73,6 +75,7 @@ class LiveRun {
                                          backends_.stops_pipeservers_early());  // a taken port too
     make_paths();
     start_balance();
+    start_windows();
     backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
     pipeservers_started_ = true;
     if (page_) watch_pipeservers_on_the_page();
@@ -182,6 +185,18 @@ class LiveRun {
     paths_.front()->follow_layouts(*balance_, pipeservers_);
   }
 
+  // A session run: the coordinator of its windows, which the page moves.
+  void start_windows() {
+    if (o_.scene != "session") return;
+    const auto at = std::find(o_.scene_args.begin(), o_.scene_args.end(), "--session");
+    if (at == o_.scene_args.end() || at + 1 == o_.scene_args.end()) return;
+    windows_ = std::make_unique<LiveWindows>(load_session(*(at + 1)));
+  }
+
+  void serve_windows() {
+    if (windows_) windows_->serve(pipeservers_);
+  }
+
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
   // the compositing server, whose frames are taken (and compared) as the lead swaps.
   void make_paths() {
@@ -194,6 +209,7 @@ class LiveRun {
     for (const auto& p : paths_) p->add_pipeserver_args(l);
     l.extra_args = pausable_pipeserver_args(o_);
     l.control = balance_ != nullptr;
+    l.windows = windows_ != nullptr;
     return l;
   }
 
@@ -552,6 +568,9 @@ class LiveRun {
         case ControlAction::Balance:
           switch_balance(r.argument, frame);
           break;
+        case ControlAction::Window:
+          window_command(r.argument, frame);
+          break;
       }
     }
   }
@@ -564,6 +583,17 @@ class LiveRun {
         frame,
         fmt::format("saved the displays to {}",
                     (std::filesystem::path(o_.out) / fmt::format("frame-{}", frame)).string()));
+  }
+
+  // Taken from the next frame whose windows are decided: every pipeserver moves it then.
+  void window_command(const std::string& command, int frame) {
+    std::string why = "this run shows no session (start it with --scene session)";
+    if (windows_ && !pipeservers_.all().empty() && !pipeservers_.all().front().windows)
+      why = "windows do not move under --mpi";
+    else if (windows_)
+      why = windows_->command(command);
+    if (why.empty()) return page_->event(frame, "window: " + command + " from the next frame");
+    page_->event(frame, "window not changed: " + why);
   }
 
   void switch_balance(const std::string& mode, int frame) {
@@ -630,6 +660,7 @@ class LiveRun {
   // Returns the summary.
   std::string write_report(const std::string& fault) {
     if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
+    if (windows_) windows_->write_windows(std::filesystem::path(o_.out) / "windows.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     totals_.lost.clear();
     for (const LivePipeserver& h : pipeservers_.all()) totals_.lost.push_back(h.lost);
@@ -637,7 +668,8 @@ class LiveRun {
     for (const LivePipeserver& h : pipeservers_.all()) pipeserver_logs.push_back(h.report_path);
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
                               (page_ ? steering_.summary() : std::string()) +
-                              (balance_ ? balance_->summary() : std::string());
+                              (balance_ ? balance_->summary() : std::string()) +
+                              (windows_ ? windows_->summary() : std::string());
     const std::string summary =
         write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
     if (o_.progress && fault.empty()) std::fputs("\n", stderr);  // a fault's line ended it
@@ -655,18 +687,22 @@ class LiveRun {
   PageSteering steering_;                            // what the page asked for
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
   std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
+  std::unique_ptr<LiveWindows> windows_;             // a session run's windows
   PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the
                                // compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
+  // A session's windows are served with the processes: WANT comes before each READY wait.
   const RunWatch watch_{[this] {
                           check_processes();
+                          serve_windows();
                           if (!links_open_) waiting_progress();
                         },
                         [this] {
                           check_processes();
                           check_stall();
                           pipeservers_.serve_channels();
+                          serve_windows();
                         }};
   bool progress_shown_ = false;
   std::optional<RunClock::time_point> waiting_since_;  // the wait for the first frames

@@ -66,14 +66,16 @@ StampSpot stamp_spot(const PipeserverPlan& plan) {
 // The pipeserver's end gets a descriptor number on its command line; ours must not leak into
 // the other pipeservers, or a dead pipeserver's channel would never read as closed.
 // Returns the pipeserver's end, to be closed here once the process holds its copy.
-std::optional<SocketControlChannel> open_control(LivePipeserver& h,
-                                                 std::vector<std::string>& argv) {
-  auto [ours, theirs] = control_socket_pair();
-  if (::fcntl(ours.fd(), F_SETFD, FD_CLOEXEC) != 0)
-    throw std::runtime_error("control channel: fcntl(FD_CLOEXEC) failed");
-  argv.push_back("--control-fd");
+// `option`: how the pipeserver is told the number (--control-fd, --windows-fd); `ours` gets our
+// end.
+SocketControlChannel open_channel(std::unique_ptr<ControlChannel>& ours, const char* option,
+                                  std::vector<std::string>& argv) {
+  auto [mine, theirs] = control_socket_pair();
+  if (::fcntl(mine.fd(), F_SETFD, FD_CLOEXEC) != 0)
+    throw std::runtime_error(fmt::format("{}: fcntl(FD_CLOEXEC) failed", option));
+  argv.push_back(option);
   argv.push_back(std::to_string(theirs.fd()));
-  h.control = std::make_unique<SocketControlChannel>(std::move(ours));
+  ours = std::make_unique<SocketControlChannel>(std::move(mine));
   return std::move(theirs);
 }
 
@@ -105,7 +107,9 @@ void PipeserverSet::start(const PipeserverLaunch& launch, const TileLayout& layo
     h.pty = std::make_unique<PtyPair>(PtyPair::open());
     h.channel = std::make_unique<BackChannel>(h.pty->master());
     std::vector<std::string> argv = pipeserver_argv(launch, h);
-    const auto theirs = launch.control ? open_control(h, argv) : std::nullopt;
+    std::vector<SocketControlChannel> theirs;
+    if (launch.control) theirs.push_back(open_channel(h.control, "--control-fd", argv));
+    if (launch.windows) theirs.push_back(open_channel(h.windows, "--windows-fd", argv));
     h.process = child_pipeserver_process(argv, launch.env);
     pipeservers_.push_back(std::move(h));
   }

@@ -9,11 +9,11 @@
 
 namespace l2 {
 
-enum class ControlAction { Pause, Resume, Save, Stop, Balance };
+enum class ControlAction { Pause, Resume, Save, Stop, Balance, Window };
 
 struct ControlRequest {
   ControlAction action = ControlAction::Pause;
-  std::string argument;  // Balance: the mode asked for
+  std::string argument;  // Balance: the mode asked for; Window: "move ID X Y W H", "raise ID"...
 };
 
 class ControlInbox {

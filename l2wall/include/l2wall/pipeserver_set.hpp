@@ -52,6 +52,8 @@ struct LivePipeserver {
   // Balancing: this end of the pipeserver's control channel (TIMES in, LAYOUT out): a socket on one
   // machine, MPI messages with an MPI rank.
   std::unique_ptr<ControlChannel> control;
+  // A session run's: this end of the pipeserver's windows channel (WANT in, WINDOWS out).
+  std::unique_ptr<ControlChannel> windows;
   // Fault injection: a READY held back until the pipeserver asks with SYNC?.
   std::optional<int> held_ready;
   // It died and the run went on without it (--survive-host-loss): its link is no input any
@@ -74,6 +76,7 @@ struct PipeserverLaunch {
   std::vector<std::string> extra_args;  // appended to every pipeserver's arguments
   std::vector<std::string> env;         // "NAME=value" added to every pipeserver's environment
   bool control = false;  // a control channel per pipeserver (--control-fd): balancing
+  bool windows = false;  // a windows channel per pipeserver (--windows-fd): a session's windows
 };
 
 // The command line of pipeserver `h`'s pipeserver process.

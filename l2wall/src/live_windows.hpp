@@ -1,0 +1,46 @@
+// A session run's windows on the coordinator (docs/session-file.md): where each window is now,
+// changed by commands from the control page, and the WINDOWS line of every frame. A frame's
+// line is decided the first time a pipeserver asks for it (WANT) and sent alike to every
+// pipeserver that asks, so all of them move a window in the same frame, as they switch layouts
+// (live_balance.hpp).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "balance/control_messages.hpp"
+#include "l2wall/pipeserver_set.hpp"
+#include "tilelayout/session_file.hpp"
+
+namespace l2 {
+
+class LiveWindows {
+ public:
+  explicit LiveWindows(const Session& session);
+
+  // "move ID X Y W H" (its top-left and size on the canvas), "raise ID" (in front of the
+  // others), "close ID": taken from the next frame decided. Empty when taken, else why not in
+  // one line.
+  std::string command(std::string_view line);
+  // Answers every WANT waiting. Throws RunFault for a line that is not one.
+  void serve(PipeserverSet& pipeservers);
+
+  // "windows: move 1 to 100,80 300x200 from frame 14", a line a change; empty without any.
+  std::string summary() const;
+  // OUT/windows.txt: frame k's WINDOWS line on line k (frames 1.. as decided; frame 0 is the
+  // session file's).
+  void write_windows(const std::filesystem::path& file) const;
+
+ private:
+  const std::string& line_for(int frame);
+
+  std::vector<WindowPlace> now_;      // back to front
+  std::vector<int> ids_;              // every window of the session, closed ones too
+  std::vector<std::string> lines_;    // by frame decided so far, from frame 0
+  std::vector<std::string> pending_;  // commands taken since the last frame decided
+  std::vector<std::string> changes_;  // "move 1 to ... from frame 14"
+};
+
+}  // namespace l2
