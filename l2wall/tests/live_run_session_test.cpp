@@ -1,0 +1,206 @@
+// A session of overlapping windows through `l2wall run`: every display of every kept frame
+// equals its reference render (`pipeserver --reference`) byte for byte, but for the frame
+// stamps, which are checked to carry their frame; a window moved from the control page moves on
+// every display in the same frame.
+#include "control_page_run.hpp"
+#include "l2wall/frame_stamp.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+using namespace testing_support;
+
+Rgb pattern(int x, int y) {
+  return {static_cast<std::uint8_t>(x * 3), static_cast<std::uint8_t>(y * 5),
+          static_cast<std::uint8_t>(x ^ y)};
+}
+
+// The default wall's canvas is 1300x980; the windows cross the mullions and the wall's edge.
+const char* kSession = R"(
+background = 0x302010
+
+[[window]]
+source = "mesh"
+x = 40
+y = 30
+width = 760
+height = 560
+
+[[window]]
+source = "picture"
+content = "pattern.png"
+fit = "1:1"
+x = 500
+y = 380
+width = 400
+height = 300
+z = 2
+
+[[window]]
+source = "isosurface"
+x = 720
+y = 420
+width = 640
+height = 600
+z = 1
+
+[[window]]
+source = "picture"
+content = "pattern.png"
+fit = "fit"
+x = -100
+y = 600
+width = 500
+height = 500
+z = 3
+)";
+
+// The reference of every display for frame `frame`, rendered by the pipeserver program (a test
+// process that shows windows through l2wall's libraries draws through another libGL than
+// OSMesa's).
+std::vector<RgbImage> references(const fs::path& session, int frame) {
+  const fs::path dir =
+      session.parent_path() / fmt::format("ref-{}-{}", session.stem().string(), frame);
+  const Finished f = run({L2_PIPESERVER_PATH, "--scene", "session", "--session", session.string(),
+                          "--frame", std::to_string(frame), "--reference", dir.string()},
+                         120s);
+  EXPECT_TRUE(f.status.ok()) << f.out;
+  std::vector<RgbImage> out;
+  for (std::size_t d = 0; d < default_wall().displays.size(); ++d)
+    out.push_back(read_png(dir / fmt::format("display-{}.png", d)));
+  return out;
+}
+
+// Frame `frame`'s displays as the run kept them, each pipeserver's stamp checked to carry the
+// frame and set to the reference's pixel: what is left must equal the reference render.
+void expect_references(const WallRun& run, int frame, const fs::path& session) {
+  const TileLayout layout = plan_layout(default_wall());
+  const std::vector<RgbImage> reference = references(session, frame);
+  std::vector<RgbImage> shown;
+  for (std::size_t d = 0; d < layout.wall.displays.size(); ++d)
+    shown.push_back(
+        read_png(run.out() / fmt::format("frame-{}", frame) / fmt::format("display-{}.png", d)));
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    const DisplayTile& t = plan.tiles.front().tile;
+    RgbImage& d = shown[static_cast<std::size_t>(t.display)];
+    const Rgb p = d.at(t.on_display.x, t.on_display.y);
+    const std::uint8_t rgb[3] = {p.r, p.g, p.b};
+    EXPECT_EQ(decode_stamp(rgb), frame);
+    d.set(t.on_display.x, t.on_display.y,
+          reference[static_cast<std::size_t>(t.display)].at(t.on_display.x, t.on_display.y));
+  }
+  for (std::size_t d = 0; d < shown.size(); ++d)
+    EXPECT_TRUE(shown[d] == reference[d]) << "frame " << frame << " display " << d;
+}
+
+fs::path write_pattern(const fs::path& dir) {
+  fs::create_directories(dir);
+  RgbImage picture(320, 240);
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x) picture.set(x, y, pattern(x, y));
+  write_png(dir / "pattern.png", picture);
+  return dir / "pattern.png";
+}
+
+TEST(SessionOnTheWall, EveryDisplayEqualsItsReference) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-session-{}", getpid());
+  write_pattern(dir);
+  std::ofstream(dir / "session.toml") << kSession;
+  // A movie window too, where the ffmpeg tool can make one: FFV1, lossless, so nearest
+  // sampling shows its pixels as decoded, and the movie frame changes with the frame.
+  const fs::path movie = dir / "clip.mkv";
+  if (run({"/usr/bin/ffmpeg", "-loglevel", "error", "-y", "-f", "lavfi", "-i",
+           "testsrc2=size=200x150:rate=10", "-frames:v", "3", "-c:v", "ffv1", "-pix_fmt", "bgr0",
+           movie.string()},
+          60s)
+          .status.ok()) {
+    std::ofstream(dir / "session.toml", std::ios::app)
+        << "\n[[window]]\nsource = \"movie\"\ncontent = \"clip.mkv\"\nfit = \"stretch\"\n"
+           "x = 880\ny = 40\nwidth = 380\nheight = 300\nz = 4\n";
+  } else {
+    std::fprintf(stderr, "no ffmpeg tool: the session has no movie window\n");
+  }
+  constexpr int kFrames = 3;
+  WallRun run("session",
+              {"--scene", "session", "--session", (dir / "session.toml").string(), "--frames",
+               std::to_string(kFrames), "--keep", "every", "--refresh", "0"});
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  for (int frame = 0; frame < kFrames; ++frame) expect_references(run, frame, dir / "session.toml");
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// A picture window over the swap scene's, moved from the control page while the wall runs:
+// every frame before the one the coordinator's WINDOWS lines moved it in shows it in its old
+// place on every display, every frame from it on in its new place, across a mullion.
+TEST(SessionOnTheWall, AWindowMovedMidRunMovesOnEveryDisplayInOneFrame) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-session-move-{}", getpid());
+  write_pattern(dir);
+  const std::string swap =
+      "[[window]]\nsource = \"swap\"\nx = 100\ny = 100\nwidth = 400\n"
+      "height = 300\n";
+  const std::string picture =
+      "[[window]]\nsource = \"picture\"\ncontent = \"pattern.png\"\n"
+      "fit = \"1:1\"\nz = 1\nwidth = 200\nheight = 150\n";
+  std::ofstream(dir / "session.toml") << swap << picture << "x = 300\ny = 200\n";
+  std::ofstream(dir / "moved.toml") << swap << picture << "x = 600\ny = 420\n";
+  constexpr int kFrames = 60;
+  PageRun run("session-move", {"--scene", "session", "--session", (dir / "session.toml").string(),
+                               "--frames", std::to_string(kFrames), "--keep", "every"});
+  run.wait_for_frame(5);
+  run.post("window?action=move&id=1&x=600&y=420&w=200&h=150");
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+
+  // The frame the coordinator moved it in: its first WINDOWS line with the new place.
+  std::ifstream lines(run.out() / "windows.txt");
+  int moved = -1;
+  int frame = 0;
+  for (std::string line; std::getline(lines, line); ++frame) {
+    const bool there = line.find(" 1 600 420 200 150") != std::string::npos;
+    if (there && moved < 0) moved = frame;
+    EXPECT_EQ(there, moved >= 0) << line;  // moved once, and stays
+  }
+  ASSERT_GT(moved, 5);
+  ASSERT_LT(moved, kFrames);
+  EXPECT_NE(slurp(run.out() / "summary.txt")
+                .find(fmt::format("windows: move 1 600 420 200 150 from frame {}", moved)),
+            std::string::npos);
+  // Every display, around the frame it moved in and at the end, equals its session's reference.
+  for (const int k : {moved - 2, moved - 1, moved, moved + 1, kFrames - 1})
+    expect_references(run, k, dir / (k < moved ? "session.toml" : "moved.toml"));
+  // And every frame: the picture's corner in its old place on display 0 (canvas 310,210) until
+  // the frame it moved in, its corner beyond the mullions on display 3 (canvas 670,510) from it.
+  const auto at = [&run](int k, int display, int x, int y) {
+    return read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", display))
+        .at(x, y);
+  };
+  for (int k = 0; k < kFrames; ++k) {
+    EXPECT_EQ(at(k, 0, 310, 210) == pattern(10, 10), k < moved) << "frame " << k;
+    EXPECT_EQ(at(k, 3, 10, 10) == pattern(70, 90), k >= moved) << "frame " << k;
+  }
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// A malformed session is refused before any pipeserver starts, in one line naming file, line
+// and field.
+TEST(SessionOnTheWall, AMalformedSessionIsOneLine) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-session-bad-{}", getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.toml") << "[[window]]\nsource = \"swap\"\nx = 0\ny = 0\n"
+                                         "width = 10\nheight = 10\nz = \"top\"\n";
+  WallRun run("session-bad", {"--scene", "session", "--session", (dir / "session.toml").string()});
+  const ExitStatus status = run.wait(60s);
+  EXPECT_EQ(status.code, 1) << status.describe();
+  EXPECT_EQ(run.output(), fmt::format("l2wall: {}:7: window[0].z: must be an integer, got a "
+                                      "string\n",
+                                      (dir / "session.toml").string()));
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace l2
