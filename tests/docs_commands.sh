@@ -48,12 +48,13 @@ cleanup() {
 trap cleanup EXIT
 cd "$work" || exit 1
 
-# What the commands take for granted: the repository's walls and model beside them (as when
-# run from a working tree), the displays scripts/main.sh writes, a scanned-out frame, frames
-# captured from a pipeserver (the test pattern), a picture and a movie, a serial line with the
-# emulator's end of the back-channel on it.
+# What the commands take for granted: the repository's walls, model and example sessions beside
+# them (as when run from a working tree), the displays scripts/main.sh writes, a scanned-out
+# frame, frames captured from a pipeserver (the test pattern), a picture and a movie, a serial
+# line with the emulator's end of the back-channel on it.
 ln -s "$root/walls" walls
 ln -s "$root/data" data
+ln -s "$root/examples" examples
 mkdir -p out/default-wall/frame-9
 cp "$root"/tests/golden_images/kd-2x2-bunny/display-*.png out/default-wall/frame-9/
 "${path_of[tilelayout]}" --scanout out/row-scan >/dev/null
