@@ -12,8 +12,8 @@ namespace l2 {
 namespace {
 
 // The sources a window may show: those with a file first.
-const std::vector<std::string_view> kSources{"picture",    "movie",   "mesh", "strips",
-                                             "isosurface", "patches", "swap"};
+const std::vector<std::string_view> kSources{"picture", "movie",      "mesh",    "strips",
+                                             "hotspot", "isosurface", "patches", "swap"};
 
 bool takes_file(std::string_view source) {
   return source == "picture" || source == "movie" || source == "mesh";

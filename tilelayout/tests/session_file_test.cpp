@@ -57,7 +57,7 @@ TEST(SessionFile, AWrongFieldIsOneLineNamingFileLineAndField) {
             "s/x.toml:1: window[0].content: missing (a movie window needs its file)");
   EXPECT_EQ(session_error("[[window]]\nsource = \"vnc\"\n"),
             "s/x.toml:2: window[0].source: must be one of picture, movie, mesh, strips, "
-            "isosurface, patches, swap, got \"vnc\"");
+            "hotspot, isosurface, patches, swap, got \"vnc\"");
   EXPECT_EQ(session_error(kSessionWindow + "colour = 1\n"),
             "s/x.toml:8: window[0].colour: unknown key");
   EXPECT_EQ(session_error(kSessionWindow + "id = 1\n" + kSessionWindow),

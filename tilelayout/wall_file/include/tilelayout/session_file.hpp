@@ -23,7 +23,7 @@ inline constexpr int kWindowReach = 16384;
 
 struct SessionWindow {
   int id = 0;          // what commands name it by: unique in the session
-  std::string source;  // picture, movie, mesh, strips, isosurface, patches, swap
+  std::string source;  // picture, movie, mesh, strips, hotspot, isosurface, patches, swap
   // picture, movie: the file; mesh: the model (empty: the bunny). Relative to the session file.
   std::filesystem::path content;
   Rect on_canvas;
