@@ -184,6 +184,10 @@ int main(int argc, char** argv) {
                   "after its last frame. With --mpi: monitors only, each board column rank "
                   "showing its own displays on its machine's DISPLAY; no keys")
       ->check(CLI::IsMember({"window", "monitors"}));
+  run->add_flag("--window-stdin", o.window_stdin,
+                "with --scene session: take window commands from stdin, one a line: 'move ID X Y "
+                "W H', 'raise ID', 'close ID', each on every pipeserver from the same frame "
+                "(docs/session-file.md); what was taken or why not goes to stderr");
   run->add_option("--http", o.http,
                   "serve a control page for the run at [ADDR:]PORT (ADDR: 127.0.0.1, this "
                   "machine only, unless given; PORT 0: a free one): the wall with each display's "

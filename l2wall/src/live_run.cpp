@@ -30,6 +30,7 @@
 #include "l2wall/run_pictures.hpp"
 #include "l2wall/run_report.hpp"
 #include "l2wall/run_time.hpp"
+#include "line_reader.hpp"
 #include "live_page.hpp"
 #include "live_windows.hpp"
 #include "pipeserver/live_exit.hpp"
@@ -254,6 +255,7 @@ class LiveRun {
     while (shown_ < o_.frames) {
       if (show_ && !keep_showing()) break;
       if (page_ && !follow_page()) break;
+      if (o_.window_stdin) take_stdin_windows();
       if (const auto swap = lead.step(shown_, pipeservers_, records_, watch_)) on_swap(*swap);
       check_stall();
     }
@@ -585,15 +587,23 @@ class LiveRun {
                     (std::filesystem::path(o_.out) / fmt::format("frame-{}", frame)).string()));
   }
 
-  // Taken from the next frame whose windows are decided: every pipeserver moves it then.
+  // Taken from the next frame whose windows are decided: every pipeserver moves it then. The
+  // page's events say what was done, and without a page stderr does.
   void window_command(const std::string& command, int frame) {
     std::string why = "this run shows no session (start it with --scene session)";
     if (windows_ && !pipeservers_.all().empty() && !pipeservers_.all().front().windows)
       why = "windows do not move under --mpi";
     else if (windows_)
       why = windows_->command(command);
-    if (why.empty()) return page_->event(frame, "window: " + command + " from the next frame");
-    page_->event(frame, "window not changed: " + why);
+    const std::string said =
+        why.empty() ? "window: " + command + " from the next frame" : "window not changed: " + why;
+    if (page_) return page_->event(frame, said);
+    std::fprintf(stderr, "l2wall: %s\n", said.c_str());
+  }
+
+  // --window-stdin: the whole lines waiting on stdin, without waiting for more.
+  void take_stdin_windows() {
+    for (const std::string& line : stdin_lines_.take()) window_command(line, shown_ - 1);
   }
 
   void switch_balance(const std::string& mode, int frame) {
@@ -688,6 +698,7 @@ class LiveRun {
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
   std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
   std::unique_ptr<LiveWindows> windows_;             // a session run's windows
+  LineReader stdin_lines_{STDIN_FILENO};             // --window-stdin
   PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the
                                // compositing server
   std::vector<FrameRecord> records_;

@@ -2,6 +2,8 @@
 // equals its reference render (`pipeserver --reference`) byte for byte, but for the frame
 // stamps, which are checked to carry their frame; a window moved from the control page moves on
 // every display in the same frame.
+#include <sys/stat.h>
+
 #include "control_page_run.hpp"
 #include "l2wall/frame_stamp.hpp"
 #include "wall_run.hpp"
@@ -132,57 +134,101 @@ TEST(SessionOnTheWall, EveryDisplayEqualsItsReference) {
   fs::remove_all(dir);
 }
 
-// A picture window over the swap scene's, moved from the control page while the wall runs:
-// every frame before the one the coordinator's WINDOWS lines moved it in shows it in its old
-// place on every display, every frame from it on in its new place, across a mullion.
-TEST(SessionOnTheWall, AWindowMovedMidRunMovesOnEveryDisplayInOneFrame) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-session-move-{}", getpid());
-  write_pattern(dir);
-  const std::string swap =
-      "[[window]]\nsource = \"swap\"\nx = 100\ny = 100\nwidth = 400\n"
-      "height = 300\n";
-  const std::string picture =
-      "[[window]]\nsource = \"picture\"\ncontent = \"pattern.png\"\n"
-      "fit = \"1:1\"\nz = 1\nwidth = 200\nheight = 150\n";
-  std::ofstream(dir / "session.toml") << swap << picture << "x = 300\ny = 200\n";
-  std::ofstream(dir / "moved.toml") << swap << picture << "x = 600\ny = 420\n";
-  constexpr int kFrames = 60;
-  PageRun run("session-move", {"--scene", "session", "--session", (dir / "session.toml").string(),
-                               "--frames", std::to_string(kFrames), "--keep", "every"});
+// A picture window over the swap scene's window, which a test moves while the wall runs.
+struct MovingSession {
+  static constexpr int kFrames = 60;
+  fs::path dir;
+
+  explicit MovingSession(const std::string& name)
+      : dir(fs::temp_directory_path() / fmt::format("l2wall-{}-{}", name, getpid())) {
+    write_pattern(dir);
+    const std::string swap =
+        "[[window]]\nsource = \"swap\"\nx = 100\ny = 100\nwidth = 400\nheight = 300\n";
+    const std::string picture =
+        "[[window]]\nsource = \"picture\"\ncontent = \"pattern.png\"\n"
+        "fit = \"1:1\"\nz = 1\nwidth = 200\nheight = 150\n";
+    std::ofstream(dir / "session.toml") << swap << picture << "x = 300\ny = 200\n";
+    std::ofstream(dir / "moved.toml") << swap << picture << "x = 600\ny = 420\n";
+  }
+  ~MovingSession() { fs::remove_all(dir); }
+
+  std::vector<std::string> args() const {
+    return {"--scene",   "session",
+            "--session", (dir / "session.toml").string(),
+            "--frames",  std::to_string(kFrames),
+            "--keep",    "every"};
+  }
+
+  // After the run, moved by "move 1 600 420 200 150": every frame before the one the
+  // coordinator's WINDOWS lines moved it in shows it in its old place on every display, every
+  // frame from it on in its new place, across a mullion.
+  void expect_moved_once(const WallRun& run) const {
+    std::ifstream lines(run.out() / "windows.txt");
+    int moved = -1;
+    int frame = 0;
+    for (std::string line; std::getline(lines, line); ++frame) {
+      const bool there = line.find(" 1 600 420 200 150") != std::string::npos;
+      if (there && moved < 0) moved = frame;
+      EXPECT_EQ(there, moved >= 0) << line;  // moved once, and stays
+    }
+    ASSERT_GT(moved, 5);
+    ASSERT_LT(moved, kFrames);
+    EXPECT_NE(slurp(run.out() / "summary.txt")
+                  .find(fmt::format("windows: move 1 600 420 200 150 from frame {}", moved)),
+              std::string::npos);
+    // Every display, around the frame it moved in and at the end, equals its session's
+    // reference.
+    for (const int k : {moved - 2, moved - 1, moved, moved + 1, kFrames - 1})
+      expect_references(run, k, dir / (k < moved ? "session.toml" : "moved.toml"));
+    // And every frame: the picture's corner in its old place on display 0 (canvas 310,210)
+    // until the frame it moved in, its corner beyond the mullions on display 3 (canvas 670,510)
+    // from it.
+    const auto at = [&run](int k, int display, int x, int y) {
+      return read_png(run.out() / fmt::format("frame-{}", k) /
+                      fmt::format("display-{}.png", display))
+          .at(x, y);
+    };
+    for (int k = 0; k < kFrames; ++k) {
+      EXPECT_EQ(at(k, 0, 310, 210) == pattern(10, 10), k < moved) << "frame " << k;
+      EXPECT_EQ(at(k, 3, 10, 10) == pattern(70, 90), k >= moved) << "frame " << k;
+    }
+  }
+};
+
+TEST(SessionOnTheWall, AWindowMovedFromThePageMovesOnEveryDisplayInOneFrame) {
+  const MovingSession session("session-page");
+  PageRun run("session-move", session.args());
   run.wait_for_frame(5);
   run.post("window?action=move&id=1&x=600&y=420&w=200&h=150");
   const ExitStatus status = run.wait(120s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
-
-  // The frame the coordinator moved it in: its first WINDOWS line with the new place.
-  std::ifstream lines(run.out() / "windows.txt");
-  int moved = -1;
-  int frame = 0;
-  for (std::string line; std::getline(lines, line); ++frame) {
-    const bool there = line.find(" 1 600 420 200 150") != std::string::npos;
-    if (there && moved < 0) moved = frame;
-    EXPECT_EQ(there, moved >= 0) << line;  // moved once, and stays
-  }
-  ASSERT_GT(moved, 5);
-  ASSERT_LT(moved, kFrames);
-  EXPECT_NE(slurp(run.out() / "summary.txt")
-                .find(fmt::format("windows: move 1 600 420 200 150 from frame {}", moved)),
-            std::string::npos);
-  // Every display, around the frame it moved in and at the end, equals its session's reference.
-  for (const int k : {moved - 2, moved - 1, moved, moved + 1, kFrames - 1})
-    expect_references(run, k, dir / (k < moved ? "session.toml" : "moved.toml"));
-  // And every frame: the picture's corner in its old place on display 0 (canvas 310,210) until
-  // the frame it moved in, its corner beyond the mullions on display 3 (canvas 670,510) from it.
-  const auto at = [&run](int k, int display, int x, int y) {
-    return read_png(run.out() / fmt::format("frame-{}", k) / fmt::format("display-{}.png", display))
-        .at(x, y);
-  };
-  for (int k = 0; k < kFrames; ++k) {
-    EXPECT_EQ(at(k, 0, 310, 210) == pattern(10, 10), k < moved) << "frame " << k;
-    EXPECT_EQ(at(k, 3, 10, 10) == pattern(70, 90), k >= moved) << "frame " << k;
-  }
+  session.expect_moved_once(run);
   expect_clean(run);
-  fs::remove_all(dir);
+}
+
+// The same command as a line on l2wall's stdin (--window-stdin), here a pipe the test writes
+// once frame 5 is on the displays; a command that cannot be taken is said on stderr.
+TEST(SessionOnTheWall, AWindowMovedFromStdinMovesOnEveryDisplayInOneFrame) {
+  const MovingSession session("session-stdin");
+  const fs::path fifo = session.dir / "commands";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::vector<std::string> args = session.args();
+  args.push_back("--window-stdin");
+  WallRun run("session-stdin", args, {}, false, "", false, fifo.string());
+  std::ofstream commands(fifo);  // opens once the shell opened its end for l2wall
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (!fs::exists(run.out() / "frame-5") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(20ms);
+  commands << "move 1 600 420 200 150\nraise 7\n" << std::flush;
+  commands.close();
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  session.expect_moved_once(run);
+  EXPECT_NE(run.output().find("l2wall: window: move 1 600 420 200 150 from the next frame\n"),
+            std::string::npos);
+  EXPECT_NE(run.output().find("l2wall: window not changed: window 7 is not in the session\n"),
+            std::string::npos);
+  expect_clean(run);
 }
 
 // A malformed session is refused before any pipeserver starts, in one line naming file, line

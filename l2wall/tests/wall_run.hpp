@@ -44,9 +44,10 @@ class WallRun {
   // command started from a terminal leads the terminal's foreground group. `launcher`: words
   // (shell syntax) that start l2wall, e.g. "mpirun -np 6"; pid() is then the launcher's.
   // `progress`: without --no-progress, so the run decides for itself (its stderr is a file).
+  // `input`: a file (a pipe) for l2wall's stdin.
   WallRun(const std::string& name, const std::vector<std::string>& args,
           const std::function<void(const fs::path& out)>& before = {}, bool own_session = false,
-          const std::string& launcher = "", bool progress = false)
+          const std::string& launcher = "", bool progress = false, const std::string& input = "")
       : dir_(fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "out");
@@ -58,6 +59,7 @@ class WallRun {
                     progress ? "" : " --no-progress");
     for (const auto& a : args) command += " '" + a + "'";
     command += fmt::format(" > '{}' 2>&1", (dir_ / "output.txt").string());
+    if (!input.empty()) command += fmt::format(" < '{}'", input);
     // exec: the shell becomes l2wall, so pid() is l2wall's and names its shm segments.
     process_.emplace(std::vector<std::string>{"/bin/sh", "-c", command});
   }
