@@ -8,6 +8,8 @@
 #include <chrono>
 #include <regex>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "image/png_io.hpp"
 #include "l2wall/frame_stamp.hpp"
@@ -115,22 +117,51 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
   expect_clean(run);
 }
 
-// Two runs at once on one machine (both paths each): their shared-memory links, ptys, ports and
-// compositing servers are their own, so both succeed and show the same pictures.
+// Two runs at once on one machine, one on each kind of path: their shared-memory links, ptys,
+// ports and compositing server are their own, so both succeed and show the same pictures. The
+// runs' links are watched as they run, so the test knows the two were at once (60 frames at
+// 60 Hz: each run lasts longer than the other takes to start).
 TEST(LiveRun, TwoRunsAtOnceBothSucceed) {
-  const std::vector<std::string> args = {"--frames", "8",    "--refresh", "0",
-                                         "--path",   "both", "--compare"};
-  WallRun first("at-once-1", args), second("at-once-2", args);
+  const std::vector<std::string> args = {"--frames", "60", "--refresh", "60", "--keep", "last"};
+  std::vector<std::string> dvi = args, both = args;
+  dvi.insert(dvi.end(), {"--path", "dvi"});
+  both.insert(both.end(), {"--path", "both", "--compare"});
+  WallRun first("at-once-dvi", dvi), second("at-once-both", both);
+  bool together = false;
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (!together && !first.ended() && !second.ended() &&
+         std::chrono::steady_clock::now() < deadline) {
+    together = first.leftover_segments().size() == 4 && second.leftover_segments().size() == 4;
+    std::this_thread::sleep_for(5ms);
+  }
+  EXPECT_TRUE(together) << "the two runs' links were never there at the same time";
   for (WallRun* run : {&first, &second}) {
     const ExitStatus status = run->wait(60s);
     ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run->output();
-    EXPECT_NE(run->output().find("compare: 32 display pictures identical byte for byte"),
-              std::string::npos)
+    EXPECT_NE(run->output().find("60 frames on 4 displays from 4 pipeservers"), std::string::npos)
         << run->output();
+    EXPECT_NE(run->output().find("latency: 1 frame "), std::string::npos) << run->output();
+  }
+  EXPECT_NE(second.output().find("compare: 240 display pictures identical byte for byte"),
+            std::string::npos)
+      << second.output();
+  // The last frame on both runs and both paths, stamped with its number at every pipeserver's
+  // first tile.
+  const TileLayout layout = plan_layout(default_wall());
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    const DisplayTile& t = plan.tiles.front().tile;
+    const RgbImage shown =
+        read_png(first.out() / "frame-59" / fmt::format("display-{}.png", t.display));
+    const Rgb px = shown.at(t.on_display.x, t.on_display.y);
+    const std::uint8_t bytes[3] = {px.r, px.g, px.b};
+    EXPECT_EQ(decode_stamp(bytes), 59) << "pipeserver " << plan.pipeserver;
   }
   for (int d = 0; d < 4; ++d) {
     const std::string name = fmt::format("display-{}.png", d);
-    EXPECT_EQ(slurp(first.out() / "frame-7" / name), slurp(second.out() / "frame-7" / name))
+    const std::string dvi_picture = slurp(first.out() / "frame-59" / name);
+    EXPECT_EQ(dvi_picture, slurp(second.out() / "frame-59" / name)) << name;
+    EXPECT_EQ(dvi_picture,
+              slurp(second.out() / "frame-59" / fmt::format("display-{}-vizserver.png", d)))
         << name;
   }
   expect_clean(first);

@@ -75,6 +75,8 @@ class WallRun {
     }
     return *status;
   }
+  // Whether l2wall has ended (reaped here; wait() then returns at once).
+  bool ended() { return process_->poll().has_value(); }
   std::string output() const { return slurp(dir_ / "output.txt"); }
   fs::path out() const { return dir_ / "out"; }
   pid_t pid() const { return process_->pid(); }
