@@ -4,10 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <iterator>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 #include <utility>
 
@@ -64,6 +66,60 @@ void check_writable(const std::filesystem::path& file) {
   const int error = errno;
   throw std::runtime_error(file.string() + ": cannot write: " +
                            (error == EISDIR ? "a folder, not a file" : std::strerror(error)));
+}
+
+void check_folder_writable(const std::filesystem::path& folder, const std::string& what) {
+  const std::string probe = (folder / (".write-test-" + std::to_string(::getpid()))).string();
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return;
+  }
+  const int error = errno;
+  throw std::runtime_error((what.empty() ? "" : what + " ") + folder.string() +
+                           ": cannot write into the folder: " + std::strerror(error));
+}
+
+namespace {
+
+// Every byte, or errno.
+int write_all(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return 0;
+}
+
+// A name beside `file` that no other writer, in this process or another, uses.
+std::string temporary_name(const std::filesystem::path& file) {
+  static std::atomic<unsigned> count{0};
+  return file.string() + ".part-" + std::to_string(::getpid()) + "-" + std::to_string(count++);
+}
+
+}  // namespace
+
+void write_whole_file(const std::filesystem::path& file, std::string_view bytes) {
+  const auto refuse = [&](int error) {
+    throw std::runtime_error(file.string() + ": cannot write: " +
+                             (error == EISDIR ? "a folder, not a file" : std::strerror(error)));
+  };
+  std::error_code ignored;
+  if (std::filesystem::is_directory(file, ignored)) refuse(EISDIR);
+  const std::string temp = temporary_name(file);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) refuse(errno);
+  int error = write_all(fd, bytes);
+  // close() reports what a file system only finds out then (a network one, a quota).
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && ::rename(temp.c_str(), file.c_str()) != 0) error = errno;
+  if (error != 0) {
+    ::unlink(temp.c_str());
+    refuse(error);
+  }
 }
 
 std::runtime_error partly_written(const std::runtime_error& error, const std::filesystem::path& out,

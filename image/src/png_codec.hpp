@@ -66,7 +66,10 @@ class MovieDecoder {
 // A failure's reason does not name the file. read_rgb() is ok, reading nothing, when the sink's
 // `accept` refused the size (the caller knows why).
 struct Codec {
-  Status (*write_rgb)(const char* path, int width, int height, const std::uint8_t* rgb);
+  // A picture file's bytes, in the format `name`'s extension says; the caller writes them (so
+  // that every error of the file system reaches it: OpenImageIO's PNG writer lost ENOSPC).
+  Result<std::string> (*encode_file)(const char* name, int width, int height,
+                                     const std::uint8_t* rgb);
   Status (*read_rgb)(const char* path, RgbSink sink, Source* source);
   // The same for a picture in memory (`size` bytes): its format told by its first bytes, else by
   // `format_hint` (an extension, "tga"). The bytes are only read.
@@ -83,7 +86,7 @@ struct Codec {
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v9";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v10";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -33,15 +33,20 @@ using l2::png_codec::open_failed;
 using l2::png_codec::RgbSink;
 using l2::png_codec::Source;
 
-l2::Status write_rgb(const char* path, int width, int height, const std::uint8_t* rgb) try {
-  auto out = OIIO::ImageOutput::create(path);
+l2::Result<std::string> encode_file(const char* name, int width, int height,
+                                    const std::uint8_t* rgb) try {
+  auto out = OIIO::ImageOutput::create(name);
   if (!out) {
     OIIO::geterror();  // cleared: our wording replaces OpenImageIO's
-    const std::string ext = std::filesystem::path(path).extension().string();
+    const std::string ext = std::filesystem::path(name).extension().string();
     if (ext.empty()) {
       return Failure{"cannot write: no extension to choose a picture format by (give .png)"};
     }
     return Failure{"cannot write: no picture format is known for '" + ext + "' (give .png)"};
+  }
+  if (!out->supports("ioproxy")) {
+    return Failure{std::string("cannot write: OpenImageIO cannot write ") + out->format_name() +
+                   " into memory (give .png)"};
   }
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   // libpng's defaults (every row filter tried, zlib level 6) took 108-117 ms for a 1984x768
@@ -50,10 +55,13 @@ l2::Status write_rgb(const char* path, int width, int height, const std::uint8_t
   // spent most of their time here.
   spec.attribute("png:filter", PNG_FILTER_UP);
   spec.attribute("png:compressionLevel", 1);
-  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb) || !out->close()) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  if (!out->set_ioproxy(&memory) || !out->open(name, spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, rgb) || !out->close()) {
     return Failure{"cannot write: " + out->geterror()};
   }
-  return {};
+  return std::string(bytes.begin(), bytes.end());
 } catch (const std::exception& e) {
   return Failure{std::string("cannot write: ") + e.what()};
 }
@@ -392,7 +400,7 @@ std::string open_failed(const char* path) {
 
 namespace {
 
-constexpr l2::png_codec::Codec kCodec{write_rgb,
+constexpr l2::png_codec::Codec kCodec{encode_file,
                                       read_rgb,
                                       read_rgb_bytes,
                                       l2::png_codec::open_regions,
@@ -403,6 +411,6 @@ constexpr l2::png_codec::Codec kCodec{write_rgb,
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v9() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v10() {
   return &kCodec;
 }

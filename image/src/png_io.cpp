@@ -96,14 +96,10 @@ struct Target {
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
-  std::error_code error;
-  const bool existed = std::filesystem::exists(path, error);
-  check_writable(path);  // OpenImageIO says only "Could not open file"
-  const Status written =
-      png_codec::codec(path).write_rgb(path.c_str(), image.width(), image.height(), image.data());
-  // check_writable() made the file: a write that failed leaves no empty file behind.
-  if (!written.ok() && !existed) std::filesystem::remove(path, error);
-  check(path, written);
+  Result<std::string> encoded =
+      png_codec::codec(path).encode_file(path.c_str(), image.width(), image.height(), image.data());
+  if (!encoded.ok()) throw std::runtime_error(path.string() + ": " + encoded.reason());
+  write_whole_file(path, *encoded);
 }
 
 std::string encode_png(const RgbImage& image) {

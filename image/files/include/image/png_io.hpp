@@ -12,8 +12,10 @@
 
 namespace l2 {
 
-// Writes 8-bit RGB PNG; creates parent folders. Throws std::runtime_error naming the file (and
-// why, where the system says: "out/display-2.png: cannot write: a folder, not a file").
+// Writes 8-bit RGB PNG (or the format the extension names); creates parent folders. The file is
+// written whole or not at all (write_whole_file, image/folders.hpp): a full file system leaves no
+// picture cut short under its name. Throws std::runtime_error naming the file and why
+// ("out/display-2.png: cannot write: No space left on device").
 void write_png(const std::filesystem::path& path, const RgbImage& image);
 
 // The bytes of a PNG file of `image`, as write_png() would write them, for a program that sends

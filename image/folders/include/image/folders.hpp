@@ -23,6 +23,18 @@ void make_folders(const std::filesystem::path& folder, const std::string& what =
 // file" or "<file>: cannot write: <the system's reason>" (e.g. Permission denied).
 void check_writable(const std::filesystem::path& file);
 
+// Throws std::runtime_error "<what> <folder>: cannot write into the folder: <the system's
+// reason>" (Read-only file system, Permission denied) when no file can be made in `folder`, a
+// folder that exists: found before a program starts work whose output would be lost there.
+void check_folder_writable(const std::filesystem::path& folder, const std::string& what = "");
+
+// Writes `bytes` as `file`, whole or not at all: into a file of its own beside it first, renamed
+// to `file` once every byte is written and closed. A file system that is full or read-only
+// leaves no file cut short under the name, and an earlier file of that name as it was. Throws
+// std::runtime_error "<file>: cannot write: a folder, not a file" or "<file>: cannot write:
+// <the system's reason>" (No space left on device).
+void write_whole_file(const std::filesystem::path& file, std::string_view bytes);
+
 // `error` (a file that could not be written, named) with what the output folder `out` holds of
 // this run: "<error>; <out> holds only part of this run: <written>, <missing>" ("display-0.png",
 // "no report.json"), or, with `written` empty (nothing of this run written yet), the error alone.
