@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
-#include <fstream>
 #include <stdexcept>
 
 #include "balance/control_messages.hpp"
@@ -229,10 +228,10 @@ std::string LiveBalance::summary() const {
   return s;
 }
 
-void LiveBalance::write_layouts(const std::filesystem::path& file) const {
-  std::ofstream out(file);
-  for (const std::string& line : lines_) out << line << '\n';
-  if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
+std::string LiveBalance::layouts() const {
+  std::string text;
+  for (const std::string& line : lines_) text += line + '\n';
+  return text;
 }
 
 }  // namespace l2

@@ -69,6 +69,8 @@ class LiveRun {
     for (const std::string& w : layout_.warnings) std::fprintf(stderr, "l2wall: %s\n", w.c_str());
     cap_refresh_at_the_link();
     make_folders(o_.out, "--out");
+    // A read-only OUT is found now, not by each pipeserver opening its log in it.
+    check_folder_writable(o_.out, "--out");
     remove_earlier_pictures(o_.out);
     if (!o_.show.empty()) show_ = std::make_unique<LiveShow>(o_, wall_);  // before any process
     if (!o_.http.empty())
@@ -332,19 +334,25 @@ class LiveRun {
   void save_frame(int frame) {
     const Timed timed(writing_ms_);
     const auto dir = std::filesystem::path(o_.out) / fmt::format("frame-{}", frame);
-    // A picture that cannot be written stops the run: the error also says what OUT holds.
+    // A picture that cannot be written stops the run: the error also says what OUT holds, the
+    // pictures of this frame written before it included (each is whole or not there).
     const auto write = [&](const DisplayPictures& pictures, const std::string& suffix) {
       try {
         write_display_pictures(dir, wall_, pictures, suffix);
       } catch (const RunFault&) {
         throw;
       } catch (const std::runtime_error& e) {
-        throw partly_written(e, o_.out, fmt::format("the frames kept before frame {}", frame),
+        std::vector<std::string> held;
+        if (kept_ > 0) held.push_back(fmt::format("the frames kept before frame {}", frame));
+        if (const std::string part = pictures_in(dir); !part.empty())
+          held.push_back(fmt::format("{} of frame {}", part, frame));
+        throw partly_written(e, o_.out, fmt::format("{}", fmt::join(held, ", ")),
                              "no summary.txt or report.csv of this run");
       }
     };
     for (std::size_t i = 0; i < paths_.size(); ++i)
       write(paths_[i]->frame_pictures(frame, watch_), picture_suffix(i));
+    ++kept_;
   }
 
   // --- faults ----------------------------------------------------------------------------
@@ -669,8 +677,6 @@ class LiveRun {
   // `fault`: the fault that ended the run at frame shown_, or empty.
   // Returns the summary.
   std::string write_report(const std::string& fault) {
-    if (balance_) balance_->write_layouts(std::filesystem::path(o_.out) / "layouts.txt");
-    if (windows_) windows_->write_windows(std::filesystem::path(o_.out) / "windows.txt");
     for (const auto& p : paths_) p->add_totals(totals_);
     totals_.lost.clear();
     for (const LivePipeserver& h : pipeservers_.all()) totals_.lost.push_back(h.lost);
@@ -680,11 +686,34 @@ class LiveRun {
                               (page_ ? steering_.summary() : std::string()) +
                               (balance_ ? balance_->summary() : std::string()) +
                               (windows_ ? windows_->summary() : std::string());
-    const std::string summary =
-        write_run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
+    const RunReportTexts report =
+        run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
+    std::vector<std::pair<std::string, std::string>> files;
+    if (balance_) files.emplace_back("layouts.txt", balance_->layouts());
+    if (windows_) files.emplace_back("windows.txt", windows_->windows());
+    files.emplace_back("report.csv", report.csv);
+    files.emplace_back("summary.txt", report.summary);
+    write_report_files(files);
     if (o_.progress && fault.empty()) std::fputs("\n", stderr);  // a fault's line ended it
-    std::fputs(summary.c_str(), stdout);
-    return summary;
+    std::fputs(report.summary.c_str(), stdout);
+    return report.summary;
+  }
+
+  // In order; one that cannot be written ends the run, saying what OUT holds and what not.
+  void write_report_files(const std::vector<std::pair<std::string, std::string>>& files) const {
+    std::vector<std::string> held;
+    if (kept_ > 0) held.emplace_back("the frames kept");
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      try {
+        write_whole_file(std::filesystem::path(o_.out) / files[i].first, files[i].second);
+      } catch (const std::runtime_error& e) {
+        std::vector<std::string> missing;
+        for (std::size_t j = i; j < files.size(); ++j) missing.push_back(files[j].first);
+        throw partly_written(e, o_.out, fmt::format("{}", fmt::join(held, ", ")),
+                             fmt::format("no {} of this run", fmt::join(missing, " or ")));
+      }
+      held.push_back(files[i].first);
+    }
   }
 
   RunOptions o_;
@@ -724,6 +753,7 @@ class LiveRun {
   bool latency_ok_ = true;
   int stopped_ = 0;        // the stop signal that ended the frames, or 0
   double writing_ms_ = 0;  // spent writing saved pictures during the run
+  int kept_ = 0;           // frames whose pictures were all written (--keep)
   double paused_ms_ = 0;   // spent paused by the --show keys
   RunClock::time_point last_swap_{};
 };

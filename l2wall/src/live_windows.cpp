@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
-#include <fstream>
 #include <stdexcept>
 
 #include "l2wall/run_fault.hpp"
@@ -126,10 +125,10 @@ std::string LiveWindows::summary() const {
   return out;
 }
 
-void LiveWindows::write_windows(const std::filesystem::path& file) const {
-  std::ofstream out(file);
-  for (const std::string& line : lines_) out << line << '\n';
-  if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
+std::string LiveWindows::windows() const {
+  std::string text;
+  for (const std::string& line : lines_) text += line + '\n';
+  return text;
 }
 
 }  // namespace l2

@@ -29,9 +29,9 @@ class LiveWindows {
 
   // "windows: move 1 to 100,80 300x200 from frame 14", a line a change; empty without any.
   std::string summary() const;
-  // OUT/windows.txt: frame k's WINDOWS line on line k (frames 1.. as decided; frame 0 is the
-  // session file's).
-  void write_windows(const std::filesystem::path& file) const;
+  // OUT/windows.txt's text: frame k's WINDOWS line on line k (frames 1.. as decided; frame 0 is
+  // the session file's).
+  std::string windows() const;
 
  private:
   const std::string& line_for(int frame);

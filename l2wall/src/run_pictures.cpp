@@ -1,6 +1,7 @@
 #include "l2wall/run_pictures.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
@@ -59,6 +60,16 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
         frame, d.id, diff.differing_pixels, dir.string()));
   }
   return compared;
+}
+
+std::string pictures_in(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    if (entry.is_regular_file(error)) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 void remove_earlier_pictures(const std::filesystem::path& out) {

@@ -6,9 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 
-#include "image/folders.hpp"
 #include "pipeserver_log.hpp"
 #include "run_stats.hpp"
 
@@ -47,34 +45,32 @@ long latency_of(const FrameRecord& r) {
   return static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
 }
 
-void write_csv(const std::filesystem::path& path, const RunOptions& o,
-               const std::vector<PipeserverLog>& logs, const std::vector<FrameRecord>& records) {
+std::string csv_text(const RunOptions& o, const std::vector<PipeserverLog>& logs,
+                     const std::vector<FrameRecord>& records) {
   const bool dvi = runs_dvi(o.path);
-  check_writable(path);  // a report that cannot be written was left out without a word
-  std::ofstream csv(path);
-  csv << "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
+  std::string csv = "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   for (std::size_t i = 0; i < logs.size(); ++i)
-    csv << fmt::format(",render_ms_{0},ready_wait_ms_{0},sync_retries_{0}", i);
-  csv << "\n";
+    csv += fmt::format(",render_ms_{0},ready_wait_ms_{0},sync_retries_{0}", i);
+  csv += "\n";
   for (std::size_t k = 0; k < records.size(); ++k) {
     const FrameRecord& r = records[k];
     if (dvi) {
-      csv << fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh,
+      csv += fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh,
                          latency_of(r), r.route_ms, ms_between(r.in_time, r.swap_time));
     } else {
-      csv << fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
+      csv += fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
     }
     for (const PipeserverLog& log : logs) {
       const PipeserverFrame& f = log.frames[k];
       if (f.logged) {
-        csv << fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
+        csv += fmt::format(",{:.3f},{:.3f},{}", f.render_ms, f.wait_ms, f.retries);
       } else {
-        csv << ",,,";  // no line: its pipeserver was lost (or stopped) before
+        csv += ",,,";  // no line: its pipeserver was lost (or stopped) before
       }
     }
-    csv << "\n";
+    csv += "\n";
   }
-  if (!csv.flush()) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
+  return csv;
 }
 
 // The times report.csv holds, for the summary's percentiles.
@@ -100,15 +96,14 @@ RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
 
 }  // namespace
 
-std::string write_run_report(const RunOptions& o, const Wall& wall,
-                             const std::vector<std::string>& pipeserver_logs,
-                             const std::vector<FrameRecord>& records, const RunTotals& totals,
-                             const std::string& extra, const std::string& fault) {
+RunReportTexts run_report(const RunOptions& o, const Wall& wall,
+                          const std::vector<std::string>& pipeserver_logs,
+                          const std::vector<FrameRecord>& records, const RunTotals& totals,
+                          const std::string& extra, const std::string& fault) {
   const int frames = static_cast<int>(records.size());
   std::vector<PipeserverLog> logs;
   for (const std::string& path : pipeserver_logs) logs.push_back(read_pipeserver_log(path, frames));
   const auto csv_path = std::filesystem::path(o.out) / "report.csv";
-  write_csv(csv_path, o, logs, records);
 
   long min_latency = 1 << 30, max_latency = -1;
   for (const FrameRecord& r : records) {
@@ -183,12 +178,7 @@ std::string write_run_report(const RunOptions& o, const Wall& wall,
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());
-  const auto summary_path = std::filesystem::path(o.out) / "summary.txt";
-  check_writable(summary_path);
-  if (!(std::ofstream(summary_path) << summary).flush()) {
-    throw std::runtime_error(fmt::format("{}: cannot write", summary_path.string()));
-  }
-  return summary;
+  return {csv_text(o, logs, records), summary};
 }
 
 }  // namespace l2

@@ -142,8 +142,11 @@ TEST(LiveRun, SummaryThatCannotBeWrittenIsNamed) {
               [](const fs::path& out) { fs::create_directories(out / "summary.txt"); });
   const ExitStatus status = run.wait(60s);
   EXPECT_EQ(status.code, 1);
-  EXPECT_EQ(run.output(),
-            "l2wall: " + run.out().string() + "/summary.txt: cannot write: a folder, not a file\n");
+  const std::string out = run.out().string();
+  EXPECT_EQ(run.output(), "l2wall: " + out + "/summary.txt: cannot write: a folder, not a file; " +
+                              out +
+                              " holds only part of this run: report.csv, no summary.txt of "
+                              "this run\n");
   expect_clean(run);
 }
 

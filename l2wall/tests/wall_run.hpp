@@ -48,7 +48,7 @@ class WallRun {
   WallRun(const std::string& name, const std::vector<std::string>& args,
           const std::function<void(const fs::path& out)>& before = {}, bool own_session = false,
           const std::string& launcher = "", bool progress = false, const std::string& input = "")
-      : dir_(fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name)) {
+      : dir_(folder_for(name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "out");
     if (before) before(dir_ / "out");
@@ -62,6 +62,10 @@ class WallRun {
     if (!input.empty()) command += fmt::format(" < '{}'", input);
     // exec: the shell becomes l2wall, so pid() is l2wall's and names its shm segments.
     process_.emplace(std::vector<std::string>{"/bin/sh", "-c", command});
+  }
+  // The folder a run of this name works in; its --out is out/ in it.
+  static fs::path folder_for(const std::string& name) {
+    return fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name);
   }
   ~WallRun() {
     process_.reset();

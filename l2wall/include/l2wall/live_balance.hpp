@@ -70,9 +70,9 @@ class LiveBalance {
   // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, the first rejected
   // plan in full and how many more were rejected, the pipeservers lost and the frames stale.
   std::string summary() const;
-  // OUT/layouts.txt: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame 0: the
-  // wall's plan, which the pipeservers start in).
-  void write_layouts(const std::filesystem::path& file) const;
+  // OUT/layouts.txt's text: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame
+  // 0: the wall's plan, which the pipeservers start in).
+  std::string layouts() const;
 
  private:
   void send_layout(PipeserverSet& pipeservers, int frame);

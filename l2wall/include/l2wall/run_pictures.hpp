@@ -30,6 +30,10 @@ int compare_paths(int frame, const Wall& wall, const DisplayPictures& via_dvi,
                   const DisplayPictures& via_viz, bool tamper_display_0,
                   const std::filesystem::path& out);
 
+// The files in `dir`, by name ("display-0.png, display-1.png"); empty when none (or no `dir`).
+// After a picture could not be written: those written before it, each whole.
+std::string pictures_in(const std::filesystem::path& dir);
+
 // Removes the pictures an earlier run into `out` left: frame-<k>/, mismatch-frame-<k>/ and
 // fault/, which would stand beside this run's as if it had made them (a passing run next to an
 // old fault/). Only folders named as a run names them; screenshots and anything else stay.

@@ -35,14 +35,19 @@ struct RunTotals {
   std::vector<bool> lost;        // by pipeserver: lost mid-run (--survive-host-loss)
 };
 
-// Writes OUT/report.csv and OUT/summary.txt from the records and the pipeservers' reports
-// (`pipeserver_logs`: pipeserver-<i>.log, in pipeserver order); returns the summary. `extra` lines
-// go into the summary before its last line. `fault`: the one-line reason of the fault that ended
-// the run at frame records.size() (the summary's first line says so), or empty for a run that
-// ended as it should.
-std::string write_run_report(const RunOptions& o, const Wall& wall,
-                             const std::vector<std::string>& pipeserver_logs,
-                             const std::vector<FrameRecord>& records, const RunTotals& totals,
-                             const std::string& extra, const std::string& fault);
+// The texts of OUT/report.csv and OUT/summary.txt (the run writes them, and says what OUT holds
+// when it cannot).
+struct RunReportTexts {
+  std::string csv, summary;
+};
+
+// The report from the records and the pipeservers' reports (`pipeserver_logs`:
+// pipeserver-<i>.log, in pipeserver order). `extra` lines go into the summary before its last
+// line. `fault`: the one-line reason of the fault that ended the run at frame records.size()
+// (the summary's first line says so), or empty for a run that ended as it should.
+RunReportTexts run_report(const RunOptions& o, const Wall& wall,
+                          const std::vector<std::string>& pipeserver_logs,
+                          const std::vector<FrameRecord>& records, const RunTotals& totals,
+                          const std::string& extra, const std::string& fault);
 
 }  // namespace l2
