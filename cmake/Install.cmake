@@ -100,6 +100,7 @@ set(l2_package_finds
     glm::glm "find_dependency(glm)"
     CLI11::CLI11 "find_dependency(CLI11)"
     Threads::Threads "find_dependency(Threads)"
+    nlohmann_json::nlohmann_json "find_dependency(nlohmann_json)"
     MPI::MPI_CXX "find_dependency(MPI COMPONENTS CXX)"
     PkgConfig::OSMESA "l2_pkg_target(OSMESA osmesa)"
     PkgConfig::ASSIMP "l2_pkg_target(ASSIMP assimp)"

@@ -17,7 +17,9 @@
 #include <string_view>
 #include <utility>
 
+#include "gltf_check.hpp"
 #include "model_textures.hpp"
+#include "off_counts.hpp"
 #include "pipeserver/model_file.hpp"
 #include "ply_counts.hpp"
 
@@ -248,6 +250,10 @@ std::string lines(std::string faces, const std::vector<std::string>& textures) {
 std::string read_checked(Assimp::Importer& importer, const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) fail(path, "cannot open: no such file");
+  // What Assimp would take on trust (sizes a header declares, nesting it walks recursively) is
+  // checked against the file first: one line naming the file, not a crash, a hang or gigabytes.
+  detail::check_gltf(path);
+  detail::check_off_counts(path);
   const bool ascii_ply = detail::check_ply_counts(path) == detail::PlyFormat::ascii;
   const aiScene* scene = importer.ReadFile(path.string(), kRead);
   if (scene == nullptr) fail(path, importer.GetErrorString());

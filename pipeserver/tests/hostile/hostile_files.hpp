@@ -1,0 +1,145 @@
+// Model and picture files made to hurt a reader that trusts them: nested past any real scene,
+// declaring sizes the file cannot hold, cut short, or not what their names say. Each is small;
+// what it claims is not. Written by the tests that need them (unit and process tests).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace l2::hostile {
+
+inline void write(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+template <typename T>
+std::string bytes_of(const T& value) {
+  return std::string(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+// A glTF 2.0 triangle (its buffer inline) under `nodes`, a JSON array of node objects (node 0
+// the scene's root), with `extra` members added to the document.
+inline std::string gltf(const std::string& nodes, const std::string& extra = "") {
+  // Three vertices (0,0,0) (1,0,0) (0,1,0) as 36 bytes of little-endian floats, in base64.
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+         nodes + R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+"buffers": [{"byteLength": 36,
+  "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+"bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+  "min": [0, 0, 0], "max": [1, 1, 0]}])" +
+         extra + "}";
+}
+
+// Nodes 0..n-1, each the only child of the one before; the last holds the mesh.
+inline std::string node_chain(int n) {
+  std::string nodes = "[";
+  for (int i = 0; i + 1 < n; ++i) nodes += R"({"children": [)" + std::to_string(i + 1) + "]},";
+  return nodes + R"({"mesh": 0}])";
+}
+
+// Nodes 0..levels, each listing the next twice: 2^levels paths to the last.
+inline std::string node_diamonds(int levels) {
+  std::string nodes = "[";
+  for (int i = 0; i < levels; ++i) {
+    nodes += R"({"children": [)" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+  }
+  return nodes + R"({"mesh": 0}])";
+}
+
+// `depth` arrays nested in one another.
+inline std::string nested_arrays(int depth) {
+  return std::string(static_cast<std::size_t>(depth), '[') +
+         std::string(static_cast<std::size_t>(depth), ']');
+}
+
+// A binary glTF (2.0) whose JSON chunk declares `declared` bytes; it holds a small document.
+inline std::string glb(std::uint32_t declared) {
+  const std::string json = R"({"asset": {"version": "2.0"}})";
+  std::string out = "glTF" + bytes_of(std::uint32_t{2}) +
+                    bytes_of(static_cast<std::uint32_t>(12 + 8 + json.size())) +
+                    bytes_of(declared) + "JSON" + json;
+  return out;
+}
+
+// A PLY triangle's header (`format`: ascii or binary_little_endian; `count_type` the faces'
+// list length's type) and an ASCII body.
+inline std::string ply_header(const std::string& format, const std::string& count_type = "uchar") {
+  return "ply\nformat " + format +
+         " 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 1\nproperty list " +
+         count_type + " int vertex_indices\nend_header\n";
+}
+inline const std::string kPlyAsciiBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+// A binary PLY triangle whose face declares `length` indices (its list length a uint) and holds
+// three.
+inline std::string binary_ply_list(std::uint32_t length) {
+  std::string body;
+  for (const float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) body += bytes_of(c);
+  body += bytes_of(length);
+  for (const std::int32_t i : {0, 1, 2}) body += bytes_of(i);
+  return ply_header("binary_little_endian", "uint") + body;
+}
+
+// --- PNG, chunk by chunk --------------------------------------------------------------------
+
+inline std::uint32_t crc32(const std::string& bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const unsigned char b : bytes) {
+    crc ^= b;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+inline std::string big_endian(std::uint32_t v) {
+  return {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
+          static_cast<char>(v)};
+}
+
+inline std::string png_chunk(const std::string& type, const std::string& data) {
+  return big_endian(static_cast<std::uint32_t>(data.size())) + type + data +
+         big_endian(crc32(type + data));
+}
+
+// A PNG of width x height 8-bit RGB pixels (interlaced or not) whose image data is a zlib
+// stream of `raw` (the filtered rows, which may hold far fewer bytes than the size claims) in
+// stored blocks.
+inline std::string png(std::uint32_t width, std::uint32_t height, bool interlaced,
+                       const std::string& raw) {
+  std::string idat = "\x78\x01";  // zlib, no compression
+  for (std::size_t at = 0; at == 0 || at < raw.size(); at += 0xFFFF) {
+    const auto n = static_cast<std::uint16_t>(std::min<std::size_t>(raw.size() - at, 0xFFFF));
+    idat += at + n >= raw.size() ? '\x01' : '\x00';  // the last block or not, stored
+    idat += bytes_of(n) + bytes_of(static_cast<std::uint16_t>(~n)) + raw.substr(at, n);
+  }
+  std::uint32_t a = 1, b = 0;  // Adler-32
+  for (const unsigned char c : raw) {
+    a = (a + c) % 65521;
+    b = (b + a) % 65521;
+  }
+  idat += big_endian(b << 16 | a);
+  const std::string ihdr = big_endian(width) + big_endian(height) +
+                           std::string("\x08\x02\x00\x00", 4) +
+                           std::string(1, interlaced ? '\x01' : '\x00');
+  return "\x89PNG\r\n\x1a\n" + png_chunk("IHDR", ihdr) + png_chunk("IDAT", idat) +
+         png_chunk("IEND", "");
+}
+
+// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour.
+inline std::string small_png() {
+  std::string raw;
+  for (int y = 0; y < 2; ++y) {
+    raw += '\0';
+    for (int x = 0; x < 4; ++x) raw += std::string{char(40 * x), char(100 * y), '\x7f'};
+  }
+  return png(4, 2, false, raw);
+}
+
+}  // namespace l2::hostile

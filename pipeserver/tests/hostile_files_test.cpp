@@ -1,0 +1,173 @@
+// Model files made to hurt a reader that trusts them (hostile_files.hpp): each is
+// refused in one line naming the file, and the field where there is one, before anything the
+// file claims is allocated or walked. Issue 32 found a glTF node chain crashing the process, a
+// PLY header cut short hanging it, and counts and lengths of a few bytes taking gigabytes.
+// pipeserver_hostile_process_tests runs the same files through the program and measures it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "hostile_files.hpp"
+#include "pipeserver/model_file.hpp"
+
+namespace l2 {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Hostile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("l2_hostile_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path file(const std::string& name, const std::string& bytes) const {
+    hostile::write(dir_ / name, bytes);
+    return dir_ / name;
+  }
+  // What loading the model says: the error, which must be one line, or "loaded".
+  static std::string model_error(const fs::path& p) {
+    try {
+      load_mesh(p);
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      return e.what();
+    }
+    return "loaded";
+  }
+  fs::path dir_;
+};
+
+// Assimp walks a glTF's nodes recursively: 20000 nested overflowed the stack (issue 32: 17400).
+// As deep as the limit still loads.
+TEST_F(Hostile, GltfNodesNestedPastTheLimitAreRefusedUpToItLoad) {
+  const auto deep = file("deep.gltf", hostile::gltf(hostile::node_chain(20000)));
+  EXPECT_EQ(model_error(deep), deep.string() +
+                                   ": nodes nested 20000 deep (node 19999), more than the 1000 "
+                                   "levels read here");
+  const auto limit = file("limit.gltf", hostile::gltf(hostile::node_chain(1000)));
+  EXPECT_EQ(load_mesh(limit).positions.size(), 3u);
+}
+
+// glTF 1.0 names its nodes: the message does too.
+TEST_F(Hostile, Gltf1NodesNestedPastTheLimitAreNamed) {
+  std::string nodes = R"({"asset": {"version": "1.0"}, "nodes": {)";
+  for (int i = 0; i < 1200; ++i) {
+    nodes += "\"n" + std::to_string(i) + R"(": {"children": ["n)" + std::to_string(i + 1) + "\"]},";
+  }
+  const auto deep = file("deep1.gltf", nodes + R"("n1200": {}}})");
+  EXPECT_EQ(model_error(deep), deep.string() +
+                                   ": nodes nested 1201 deep (node 'n1200'), more than the 1000 "
+                                   "levels read here");
+}
+
+// A node listed twice (or by two parents) is copied once per path to it: forty levels of that
+// asked for 2^40 copies.
+TEST_F(Hostile, GltfNodeWithTwoParentsIsRefused) {
+  const auto twice = file("twice.gltf", hostile::gltf(hostile::node_diamonds(40)));
+  EXPECT_EQ(model_error(twice),
+            twice.string() + ": node 1 is a child of node 0 twice (a glTF node has one parent)");
+  const auto two =
+      file("two.gltf", hostile::gltf(R"([{"children": [1, 2]}, {"children": [2]}, {"mesh": 0}])"));
+  EXPECT_EQ(
+      model_error(two),
+      two.string() + ": node 2 is a child of node 0 and of node 1 (a glTF node has one parent)");
+}
+
+// Assimp's JSON parser is recursive too: a million nested arrays overflowed the stack. The
+// file's own levels (the document and "extras") count.
+TEST_F(Hostile, GltfJsonNestedPastTheLimitIsRefusedUpToItLoads) {
+  const auto deep = file(
+      "json.gltf",
+      hostile::gltf(hostile::node_chain(1), ", \"extras\": " + hostile::nested_arrays(1000000)));
+  EXPECT_EQ(model_error(deep), deep.string() + ": JSON nested deeper than 256 levels");
+  const auto limit =
+      file("limit.gltf",
+           hostile::gltf(hostile::node_chain(1), ", \"extras\": " + hostile::nested_arrays(255)));
+  EXPECT_EQ(load_mesh(limit).positions.size(), 3u);
+  // A JSON document of another name is tried as glTF by Assimp all the same.
+  const auto other = file("arrays.json", hostile::nested_arrays(1000000));
+  EXPECT_EQ(model_error(other), other.string() + ": JSON nested deeper than 256 levels");
+}
+
+TEST_F(Hostile, GlbJsonChunkLongerThanTheFileIsRefused) {
+  const auto glb = file("big.glb", hostile::glb(0xFFFFFFF0u));
+  EXPECT_EQ(model_error(glb), glb.string() +
+                                  ": its JSON chunk declares 4294967280 bytes, more than the "
+                                  "file's 49");
+}
+
+// A header cut anywhere: Assimp waited for end_header for ever (issue 32: 21 bytes sufficed).
+TEST_F(Hostile, PlyHeaderCutAnywhereIsOneLine) {
+  const std::string whole = hostile::ply_header("ascii") + hostile::kPlyAsciiBody;
+  const std::size_t end_header = whole.find("end_header");
+  for (std::size_t cut = 1; cut < end_header + 10; ++cut) {
+    const auto cut_file = file("cut.ply", whole.substr(0, cut));
+    const std::string error = model_error(cut_file);
+    if (cut < 3) {  // not "ply": Assimp's own line
+      EXPECT_EQ(error.rfind(cut_file.string() + ": Invalid .ply file", 0), 0u) << cut << error;
+    } else {
+      EXPECT_EQ(error, cut_file.string() + ": the PLY header ends without end_header (cut short?)")
+          << "cut at " << cut;
+    }
+  }
+  EXPECT_EQ(load_mesh(file("whole.ply", whole)).positions.size(), 3u);
+}
+
+// A list's length is read from the body, and Assimp sized the list by it first: 1e8 took 800 MB,
+// 4e9 ended in a bare "std::bad_alloc".
+TEST_F(Hostile, PlyListLongerThanTheFileIsRefused) {
+  for (const std::uint32_t length : {100000000u, 4000000000u}) {
+    const auto binary = file("binary.ply", hostile::binary_ply_list(length));
+    EXPECT_EQ(model_error(binary), binary.string() + ": face 0: list 'vertex_indices' declares " +
+                                       std::to_string(length) +
+                                       " values, more than the rest of the file can hold");
+    const auto ascii =
+        file("ascii.ply", hostile::ply_header("ascii", "uint") + "0 0 0\n1 0 0\n0 1 0\n" +
+                              std::to_string(length) + " 0 1 2\n");
+    EXPECT_EQ(model_error(ascii), ascii.string() + ": face 0: list 'vertex_indices' declares " +
+                                      std::to_string(length) +
+                                      " values, more than the rest of the file can hold");
+  }
+  // A negative length is one near 2^32 to Assimp.
+  const auto negative = file(
+      "negative.ply", hostile::ply_header("ascii", "char") + "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
+  EXPECT_EQ(model_error(negative), negative.string() +
+                                       ": face 0: list 'vertex_indices' declares 4294967295 "
+                                       "values, more than the rest of the file can hold");
+  EXPECT_EQ(load_mesh(file("fits.ply", hostile::binary_ply_list(3))).indices.size(), 3u);
+}
+
+// A 309-byte OFF file declaring a billion vertices took 6 GB (issue 32).
+TEST_F(Hostile, OffCountsBeyondTheFileAreRefused) {
+  const auto vertices = file("vertices.off", "OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(model_error(vertices), vertices.string() +
+                                       ": declares 1000000000 vertices and 1 faces, more than "
+                                       "the rest of the file can hold (a line each)");
+  const auto faces = file("faces.off", "OFF\n# a comment\n3 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_EQ(model_error(faces), faces.string() +
+                                    ": declares 3 vertices and 1000000000 faces, more than the "
+                                    "rest of the file can hold (a line each)");
+  EXPECT_EQ(
+      load_mesh(file("fits.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).indices.size(), 3u);
+}
+
+// OBJ declares no counts; a coordinate written as nan or inf is read as one, and refused.
+TEST_F(Hostile, ObjNanAndInfinityAreRefused) {
+  for (const std::string word : {"nan", "inf", "-inf", "1e999"}) {
+    const auto obj = file("v.obj", "v 0 0 0\nv 1 " + word + " 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string shown = word == "1e999" ? "inf" : word;
+    EXPECT_EQ(model_error(obj),
+              obj.string() + ": vertex 1: y = " + shown + " is not a finite float");
+  }
+}
+
+}  // namespace
+}  // namespace l2
