@@ -8,6 +8,9 @@
 
 namespace l2::png_codec {
 
+// OpenImageIO's error text (several lines, one per complaint) as one line: "a; b".
+std::string one_line(const std::string& text);
+
 // Why OpenImageIO could not open `path`, in one line, in the words of the reader that knows
 // the file's content ("cannot read: a TIFF file: ...").
 std::string open_failed(const char* path);

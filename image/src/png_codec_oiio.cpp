@@ -219,7 +219,7 @@ std::string upper(std::string text) {
 // OpenImageIO's reason, or ours where it gives none (its PNM reader fails a file that ends
 // early with an empty error).
 std::string read_failed(const std::string& format, const std::string& error) {
-  if (!error.empty()) return "cannot read: " + error;
+  if (!error.empty()) return "cannot read: " + l2::png_codec::one_line(error);
   return "cannot read: the " + upper(format) + " file is damaged or ends early";
 }
 
@@ -384,14 +384,25 @@ namespace l2::png_codec {
 // When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
 // .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
 // the file is.
+std::string one_line(const std::string& text) {
+  std::string line;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    if (end > at) line += (line.empty() ? "" : "; ") + text.substr(at, end - at);
+    at = end + 1;
+  }
+  return line;
+}
+
 std::string open_failed(const char* path) {
-  const std::string error = OIIO::geterror();
+  const std::string error = one_line(OIIO::geterror());
   const std::string format = format_by_signature(path);
   if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
   const auto reader = OIIO::ImageInput::create(format);
   OIIO::ImageSpec spec;
   std::string why = "damaged";
-  if (reader && !reader->open(path, spec)) why = reader->geterror();
+  if (reader && !reader->open(path, spec)) why = one_line(reader->geterror());
   if (why.empty()) why = "damaged or ends early";
   return "cannot read: a " + upper(format) + " file: " + why;
 }

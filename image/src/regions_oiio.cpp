@@ -5,11 +5,14 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <string>
 
 #include "media_oiio.hpp"
+#include "png_chunks.hpp"
 
 namespace l2::png_codec {
 
@@ -26,8 +29,11 @@ constexpr float kWholeScanlinePictureMegabytes = 512;
 // Pictures stored as scanlines are read in tiles of this side as well.
 constexpr int kAutoTile = 64;
 
-std::string first_line(const std::string& text) {
-  return text.substr(0, text.find('\n'));
+// The cache that holds a picture of `decoded_mb` whole, with room for its bookkeeping; zero for
+// a picture larger than kWholeScanlinePictureMegabytes allows.
+float whole_picture_cache(double decoded_mb) {
+  if (decoded_mb * 1.1 > kWholeScanlinePictureMegabytes) return 0;
+  return static_cast<float>(decoded_mb * 1.1 + 8);
 }
 
 struct CacheDeleter {
@@ -51,7 +57,7 @@ class CacheRegions final : public RegionReader {
     // Grey is read into the start of the row and spread over R, G and B from the end back.
     if (!cache_->get_pixels(file_, 0, 0, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
                             OIIO::TypeDesc::UINT8, rgb)) {
-      const std::string why = first_line(cache_->geterror());
+      const std::string why = one_line(cache_->geterror());
       return Failure{"cannot read row " + std::to_string(y) + ": " +
                      (why.empty() ? "damaged" : why)};
     }
@@ -71,7 +77,33 @@ class CacheRegions final : public RegionReader {
 
 }  // namespace
 
+// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp): nothing for
+// another format; else the megabytes it decodes to as stored, or why it cannot be read.
+Result<double> png_megabytes(const char* path) {
+  unsigned char signature[8] = {};
+  if (std::FILE* file = std::fopen(path, "rb")) {
+    std::fread(signature, 1, sizeof signature, file);
+    std::fclose(file);
+  }
+  if (std::memcmp(signature, "\x89PNG\r\n\x1a\n", 8) != 0) return 0.0;
+  const Result<PngLayout> png = png_layout(path);
+  if (!png.ok()) return Failure{png.reason()};
+  const double megabytes = png->decoded_bytes() / (1 << 20);
+  // The cache reads an interlaced PNG whole; one larger than it may hold aborted the process.
+  if (png->interlaced && whole_picture_cache(megabytes) == 0) {
+    return Failure{"cannot read: an interlaced PNG of " + std::to_string(png->width) + "x" +
+                   std::to_string(png->height) + " pixels is read whole, " +
+                   std::to_string(static_cast<long long>(megabytes)) +
+                   " MiB, more than a picture read whole may take (" +
+                   std::to_string(static_cast<int>(kWholeScanlinePictureMegabytes)) +
+                   " MiB of cache); save it without interlacing"};
+  }
+  return megabytes;
+}
+
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
+  const Result<double> png = png_megabytes(path);
+  if (!png.ok()) return Failure{png.reason()};
   // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
   float cache_megabytes = kCacheMegabytes;
   {
@@ -87,9 +119,9 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
       return Failure{"cannot read: the picture has no pixels"};
     }
     const double decoded_mb =
-        double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20);
-    if (spec.tile_width == 0 && decoded_mb * 1.1 <= kWholeScanlinePictureMegabytes)
-      cache_megabytes = std::max(cache_megabytes, static_cast<float>(decoded_mb * 1.1 + 8));
+        std::max(*png, double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20));
+    if (spec.tile_width == 0)
+      cache_megabytes = std::max(cache_megabytes, whole_picture_cache(decoded_mb));
   }
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);
@@ -97,7 +129,7 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   const OIIO::ustring file(path);
   OIIO::ImageSpec spec;
   if (!cache->get_imagespec(file, spec)) {
-    return Failure{"cannot read: " + first_line(cache->geterror())};
+    return Failure{"cannot read: " + one_line(cache->geterror())};
   }
   return std::unique_ptr<RegionReader>(new CacheRegions(std::move(cache), file, spec));
 } catch (const std::exception& e) {

@@ -1,8 +1,7 @@
-// Model files made to hurt a reader that trusts them (hostile_files.hpp): each is
+// Model and picture files made to hurt a reader that trusts them (hostile_files.hpp): each is
 // refused in one line naming the file, and the field where there is one, before anything the
 // file claims is allocated or walked. Issue 32 found a glTF node chain crashing the process, a
 // PLY header cut short hanging it, and counts and lengths of a few bytes taking gigabytes.
-// pipeserver_hostile_process_tests runs the same files through the program and measures it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +11,7 @@
 
 #include "hostile_files.hpp"
 #include "pipeserver/model_file.hpp"
+#include "pipeserver/scene.hpp"
 
 namespace l2 {
 namespace {
@@ -167,6 +167,72 @@ TEST_F(Hostile, ObjNanAndInfinityAreRefused) {
     EXPECT_EQ(model_error(obj),
               obj.string() + ": vertex 1: y = " + shown + " is not a finite float");
   }
+}
+
+// What the picture scene says of a picture, or "opened".
+std::string picture_error(const fs::path& p) {
+  SceneOptions options;
+  options.content = p;
+  try {
+    make_scene("picture", options);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "opened";
+}
+
+// A PNG claiming 100000x100000 pixels in 70 bytes was read row by row until libpng (printing its
+// own line first) ran out of data; interlaced, the image cache aborted the process.
+TEST_F(Hostile, PngClaimingMorePixelsThanItsDataHoldsIsOneLineAndPrintsNothing) {
+  for (const bool interlaced : {false, true}) {
+    const auto huge =
+        file("huge.png", hostile::png(100000, 100000, interlaced, std::string(8, '\0')));
+    ::testing::internal::CaptureStderr();
+    const std::string error = picture_error(huge);
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(error, huge.string() +
+                         ": cannot read: a PNG of 100000x100000 pixels whose image data, 19 bytes, "
+                         "is too little to hold them (cut short or damaged)");
+  }
+  EXPECT_EQ(picture_error(file("small.png", hostile::small_png())), "opened");
+}
+
+// An interlaced PNG is read whole: past what a picture read whole may take it is refused before
+// the cache sees it. Its image data is as much as such a picture compresses to at best.
+TEST_F(Hostile, AnInterlacedPngTooLargeToReadWholeIsRefused) {
+  const std::uint32_t side = 14000;
+  const auto big = file("big.png", hostile::png(side, side, true, std::string(600000, '\0')));
+  EXPECT_EQ(picture_error(big), big.string() +
+                                    ": cannot read: an interlaced PNG of 14000x14000 pixels is "
+                                    "read whole, 560 MiB, more than a picture read whole may take "
+                                    "(512 MiB of cache); save it without interlacing");
+}
+
+TEST_F(Hostile, PngCutShortAnywhereIsOneLine) {
+  const std::string whole = hostile::small_png();
+  const std::size_t iend = whole.size() - 12;
+  for (std::size_t cut = 9; cut < iend; ++cut) {
+    const auto cut_file = file("cut.png", whole.substr(0, cut));
+    ::testing::internal::CaptureStderr();
+    const std::string error = picture_error(cut_file);
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << cut;
+    EXPECT_EQ(error, cut_file.string() + ": cannot read: the PNG file ends early (truncated)")
+        << "cut at " << cut;
+  }
+}
+
+// Named as a picture, holding something else: OpenImageIO's reasons were several lines.
+TEST_F(Hostile, APictureThatIsNotOneIsOneLine) {
+  const auto text_png = file("text.png", "not a picture\n");
+  EXPECT_EQ(picture_error(text_png), text_png.string() + ": cannot read: Not a PNG file");
+  const auto text_jpg = file("text.jpg", "not a picture\n");
+  EXPECT_EQ(picture_error(text_jpg).rfind(text_jpg.string() + ": cannot read: ", 0), 0u);
+  const auto bad_jpeg = file("bad.jpg", std::string("\xff\xd8\xff\xe0", 4) + std::string(60, 'x'));
+  const std::string error = picture_error(bad_jpeg);
+  EXPECT_EQ(error.rfind(bad_jpeg.string() + ": cannot read: a JPEG file: ", 0), 0u) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  const auto png_named_jpg = file("png.jpg", hostile::small_png());  // read by its content
+  EXPECT_EQ(picture_error(png_named_jpg), "opened");
 }
 
 }  // namespace
