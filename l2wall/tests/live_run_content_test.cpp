@@ -5,6 +5,7 @@
 
 #include <regex>
 
+#include "hostile_files.hpp"
 #include "model_files.hpp"
 #include "wall_run.hpp"
 #include "wide_wall.hpp"
@@ -179,6 +180,36 @@ TEST(ModelOnTheWall, MissingOrDamagedModelIsOneLine) {
   EXPECT_NE(wrong_scene.output().find("--mesh is an option of --scene mesh, not strips"),
             std::string::npos)
       << wrong_scene.output();
+  fs::remove_all(dir);
+}
+
+// What would crash, hang or exhaust a pipeserver (pipeserver/tests/hostile/) is refused by the
+// run's own look at the file, in one line, before any pipeserver starts: a glTF nested past any
+// real scene, a PLY header cut short, a PNG claiming more pixels than its data holds (each
+// pipeserver found that at its first row, after libpng's own line).
+TEST(ModelOnTheWall, HostileContentIsRefusedBeforeAnyPipeserverStarts) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-hostile-{}", getpid());
+  fs::create_directories(dir);
+  const std::string ply = hostile::ply_header("ascii") + hostile::kPlyAsciiBody;
+  hostile::write(dir / "deep.gltf", hostile::gltf(hostile::node_chain(20000)));
+  hostile::write(dir / "cut.ply", ply.substr(0, 40));
+  hostile::write(dir / "huge.png", hostile::png(100000, 100000, false, std::string(8, '\0')));
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--mesh", (dir / "deep.gltf").string()},
+       "deep.gltf: nodes nested 20000 deep (node 19999), more than the 1000 levels read here"},
+      {{"--mesh", (dir / "cut.ply").string()},
+       "cut.ply: the PLY header ends without end_header (cut short?)"},
+      {{"--scene", "picture", "--content", (dir / "huge.png").string()},
+       "huge.png: cannot read: a PNG of 100000x100000 pixels whose image data, 19 bytes, is too "
+       "little to hold them (cut short or damaged)"},
+  };
+  for (const auto& [args, line] : cases) {
+    WallRun run("hostile", args);
+    EXPECT_EQ(run.wait(60s).code, 1) << line;
+    EXPECT_EQ(run.output(), "l2wall: " + dir.string() + "/" + line + "\n");
+    EXPECT_FALSE(fs::exists(run.out() / "pipeserver-0.log")) << "a pipeserver was started";
+    expect_clean(run);
+  }
   fs::remove_all(dir);
 }
 

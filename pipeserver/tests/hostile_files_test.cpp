@@ -2,6 +2,7 @@
 // refused in one line naming the file, and the field where there is one, before anything the
 // file claims is allocated or walked. Issue 32 found a glTF node chain crashing the process, a
 // PLY header cut short hanging it, and counts and lengths of a few bytes taking gigabytes.
+// pipeserver_hostile_process_tests runs the same files through the program and measures it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
