@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -89,9 +88,14 @@ struct NodeReader {
   bool arrays_[kMaxJsonDepth + 1] = {};
 };
 
-std::string file_bytes(const std::filesystem::path& path) {
+// Up to `count` bytes of the file from `offset`.
+std::string file_bytes(const std::filesystem::path& path, std::size_t offset, std::size_t count) {
   std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string bytes(count, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(count));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  return bytes;
 }
 
 std::uint32_t u32(const std::string& bytes, std::size_t at) {
@@ -100,16 +104,17 @@ std::uint32_t u32(const std::string& bytes, std::size_t at) {
   return v;
 }
 
-// The JSON of a binary glTF (1.0: after a 20-byte header; 2.0: the first chunk), checked against
-// the file's size first: Assimp allocates what the header declares.
-std::string glb_json(const std::filesystem::path& path, const std::string& bytes) {
-  if (bytes.size() < 20) return {};  // Assimp says the header is cut short
-  const std::uint32_t length = u32(bytes, 12);
-  if (length > bytes.size() - 20) {
-    fail(path, fmt::format("its JSON chunk declares {} bytes, more than the file's {}", length,
-                           bytes.size()));
+// The JSON of a binary glTF (1.0: after a 20-byte header; 2.0: the first chunk), its length
+// checked against the file's size first: Assimp allocates what the header declares.
+std::string glb_json(const std::filesystem::path& path, std::uintmax_t size) {
+  const std::string header = file_bytes(path, 0, 20);
+  if (header.size() < 20) return {};  // Assimp says the header is cut short
+  const std::uint32_t length = u32(header, 12);
+  if (length > size - 20) {
+    fail(path,
+         fmt::format("its JSON chunk declares {} bytes, more than the file's {}", length, size));
   }
-  return bytes.substr(20, length);
+  return file_bytes(path, 20, length);
 }
 
 // "node 3" (2.0) or "node 'arm'" (1.0).
@@ -175,12 +180,16 @@ void check_depth(const std::filesystem::path& path, const std::vector<Node>& nod
 }  // namespace
 
 void check_gltf(const std::filesystem::path& path) {
-  const std::string bytes = file_bytes(path);
-  const bool binary = bytes.rfind("glTF", 0) == 0;
-  const auto first = bytes.find_first_not_of(" \t\r\n");
-  if (!binary && (first == std::string::npos || (bytes[first] != '{' && bytes[first] != '[')))
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return;
+  // Only a binary glTF or JSON is read on: a model of another format costs a look at its start.
+  const std::string start = file_bytes(path, 0, 4096);
+  const bool binary = start.rfind("glTF", 0) == 0;
+  const auto first = start.find_first_not_of(" \t\r\n");
+  if (!binary && (first == std::string::npos || (start[first] != '{' && start[first] != '[')))
     return;
-  const std::string text = binary ? glb_json(path, bytes) : bytes;
+  const std::string text = binary ? glb_json(path, size) : file_bytes(path, 0, size);
   NodeReader reader;
   const bool parsed = json::sax_parse(text, &reader);
   if (reader.too_deep) fail(path, fmt::format("JSON nested deeper than {} levels", kMaxJsonDepth));

@@ -48,8 +48,10 @@ struct OffHeader {
   }
 };
 
-bool read_as_off(const std::filesystem::path& path, const std::string& text) {
-  std::string ext = path.extension().string(), head = text.substr(0, 3);
+bool read_as_off(const std::filesystem::path& path) {
+  std::string head(3, '\0');
+  std::ifstream(path, std::ios::binary).read(head.data(), 3);
+  std::string ext = path.extension().string();
   for (std::string* s : {&ext, &head})
     std::transform(s->begin(), s->end(), s->begin(),
                    [](unsigned char c) { return std::tolower(c); });
@@ -59,9 +61,9 @@ bool read_as_off(const std::filesystem::path& path, const std::string& text) {
 }  // namespace
 
 void check_off_counts(const std::filesystem::path& path) {
+  if (!read_as_off(path)) return;  // a model of another format costs a look at its start
   std::ifstream in(path, std::ios::binary);
   const std::string text{std::istreambuf_iterator<char>(in), {}};
-  if (!read_as_off(path, text)) return;
   OffHeader h{text};
   h.next_token();
   h.take("ST");

@@ -98,8 +98,10 @@ PlyHeader read_header(const std::filesystem::path& path, const std::string& text
 
 PlyFormat check_ply_counts(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  const std::string text{std::istreambuf_iterator<char>(in), {}};
-  if (text.rfind("ply", 0) != 0) return PlyFormat::none;
+  std::string text(3, '\0');
+  in.read(text.data(), 3);
+  if (text != "ply") return PlyFormat::none;  // another format costs a look at its start
+  text.append(std::istreambuf_iterator<char>(in), {});
   const PlyHeader h = read_header(path, text);
   const PlyFormat format = h.ascii ? PlyFormat::ascii : PlyFormat::binary;
   if (h.body == 0 || !h.counts) return format;
