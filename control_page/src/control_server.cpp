@@ -266,6 +266,11 @@ void ControlServer::refuse_steering(std::string why) {
   impl_->steering_refused = std::move(why);
 }
 
+bool ControlServer::watched(std::chrono::milliseconds recently) const {
+  const std::lock_guard lock(impl_->mutex);
+  return impl_->last_read != Clock::time_point{} && Clock::now() - impl_->last_read <= recently;
+}
+
 void ControlServer::let_readers_see_the_end(std::chrono::milliseconds recently,
                                             std::chrono::milliseconds limit) {
   std::unique_lock lock(impl_->mutex);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "control_page/access_token.hpp"
 #include "image/png_io.hpp"
@@ -85,6 +86,19 @@ TEST(ControlServer, ServesThePageItsStateAndTheDisplays) {
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->status, 404);
   EXPECT_EQ(client.Get("/api/display/0.png?scale=0")->status, 400);
+}
+
+TEST(ControlServer, IsWatchedOnlyWhileAPageReadsItsState) {
+  ControlServer server(any_port(), kToken);
+  server.publish(RunState{});
+  EXPECT_FALSE(server.watched(std::chrono::hours(1)));  // nobody has asked yet
+  httplib::Client client("127.0.0.1", server.port());
+  ASSERT_TRUE(client.Get("/app.js"));
+  EXPECT_FALSE(server.watched(std::chrono::hours(1)));  // the page, not yet its state
+  ASSERT_TRUE(client.Get("/api/state"));
+  EXPECT_TRUE(server.watched(std::chrono::hours(1)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(server.watched(std::chrono::milliseconds(10)));  // the reader went away
 }
 
 TEST(ControlServer, SteeringNeedsTheTokenAndARefusalChangesNothing) {

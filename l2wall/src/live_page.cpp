@@ -17,6 +17,8 @@ using std::chrono::milliseconds;
 
 // A few pictures a second is what a person watching needs; more would take the run's time.
 constexpr milliseconds kPublishEvery{250};
+// The page reads its state a few times a second; a reader this long silent has gone away.
+constexpr milliseconds kWatchedWithin{3000};
 constexpr std::size_t kRecentFrames = 60;
 constexpr std::size_t kEventsKept = 50;
 
@@ -107,6 +109,10 @@ void LivePage::watch_pipeservers(const std::vector<std::string>& logs,
 
 bool LivePage::due() const {
   return publish_now_ || RunClock::now() - last_publish_ >= kPublishEvery;
+}
+
+bool LivePage::watched() const {
+  return server_->watched(kWatchedWithin);
 }
 
 void LivePage::read_logs() {

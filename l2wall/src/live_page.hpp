@@ -49,6 +49,9 @@ class LivePage {
   // Whether the page should be told again: a few times a second, or at once after a change the
   // user made (a pause, a save).
   bool due() const;
+  // Whether a page has read the state lately: the displays' pictures are gathered for the page
+  // only then.
+  bool watched() const;
   // The state and, when given, the displays' pictures of moment.frame.
   void publish(const PageMoment& moment, const DisplayPictures* pictures);
   // Something the page lists as it happens (a save, a stale frame, a lost pipeserver, a fault).

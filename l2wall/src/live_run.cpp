@@ -639,7 +639,8 @@ class LiveRun {
       m.refresh_hz = o_.refresh_hz;
     }
     if (balance_) m.balance_mode = balance_->mode();
-    if (shown_ == 0) return page_->publish(m, nullptr);
+    // Nobody watching: no pictures gathered (under --mpi each is a fetch from a column rank).
+    if (shown_ == 0 || !page_->watched()) return page_->publish(m, nullptr);
     const DisplayPictures pictures = paths_.front()->frame_pictures(shown_ - 1, watch_);
     page_->publish(m, &pictures);
   }

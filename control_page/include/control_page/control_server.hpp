@@ -59,6 +59,10 @@ class ControlServer {
   // run served by `l2wall view` has nothing to steer.
   void refuse_steering(std::string why);
 
+  // Whether a page read /api/state within `recently`: a run with nobody watching need not
+  // gather its displays' pictures (under MPI that is a fetch from every column rank).
+  bool watched(std::chrono::milliseconds recently) const;
+
   // Whether a page read /api/state within `recently`; if so, waits (at most `limit`) until it
   // has read the state published last, so a run that ends shows the page how it ended.
   void let_readers_see_the_end(std::chrono::milliseconds recently, std::chrono::milliseconds limit);
