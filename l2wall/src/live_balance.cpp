@@ -10,6 +10,7 @@
 #include "balance/control_messages.hpp"
 #include "l2wall/run_fault.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "waiting_message.hpp"
 
 namespace l2 {
 
@@ -86,26 +87,16 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
     if (!h.control) continue;
     const std::size_t i = static_cast<std::size_t>(h.pipeserver);
     while (!have_[i]) {
-      std::optional<std::string> line;
-      try {
-        line = h.control->receive_line(std::chrono::milliseconds(0));
-      } catch (const ControlError&) {
-        return;  // the pipeserver is gone: the run names it from its exit
-      }
-      if (!line) break;
-      TimesMessage m;
-      try {
-        m = decode_times(*line);
-      } catch (const ControlError& e) {
-        throw RunFault(fmt::format("pipeserver {}: {}", h.pipeserver, e.what()));
-      }
-      if (m.frame != next_times_ || m.pipeserver != h.pipeserver) {
+      std::optional<TimesMessage> m = waiting_message(
+          *h.control, h.pipeserver, [](const std::string& line) { return decode_times(line); });
+      if (!m) break;
+      if (m->frame != next_times_ || m->pipeserver != h.pipeserver) {
         throw RunFault(
             fmt::format("pipeserver {}: TIMES for frame {} of pipeserver {} while frame {} "
                         "is due",
-                        h.pipeserver, m.frame, m.pipeserver, next_times_));
+                        h.pipeserver, m->frame, m->pipeserver, next_times_));
       }
-      pending_[i] = std::move(m.seconds);
+      pending_[i] = std::move(m->seconds);
       have_[i] = true;
     }
   }

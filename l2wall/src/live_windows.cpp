@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "l2wall/run_fault.hpp"
+#include "waiting_message.hpp"
 
 namespace l2 {
 
@@ -93,19 +94,10 @@ void LiveWindows::serve(PipeserverSet& pipeservers) {
   for (LivePipeserver& h : pipeservers.serving()) {
     if (!h.windows) continue;
     for (;;) {
-      std::optional<std::string> line;
-      try {
-        line = h.windows->receive_line(std::chrono::milliseconds(0));
-      } catch (const ControlError&) {
-        break;  // the pipeserver is gone: the run names it from its exit
-      }
-      if (!line) break;
-      WantMessage m;
-      try {
-        m = decode_want(*line);
-      } catch (const ControlError& e) {
-        throw RunFault(fmt::format("pipeserver {}: {}", h.pipeserver, e.what()));
-      }
+      const std::optional<WantMessage> want = waiting_message(
+          *h.windows, h.pipeserver, [](const std::string& line) { return decode_want(line); });
+      if (!want) break;
+      const WantMessage& m = *want;
       // A pipeserver asks for each frame once, in order: never more than one ahead of the rest.
       if (m.pipeserver != h.pipeserver || m.frame > static_cast<int>(lines_.size()))
         throw RunFault(fmt::format("pipeserver {}: WANT {} of pipeserver {} out of turn",
