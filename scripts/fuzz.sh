@@ -5,7 +5,7 @@
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
 # broke a promise; the input that did it is saved in build/fuzz/runs/<harness>/artifacts/
 # (under FUZZ_OUT instead of build/fuzz/runs when set).
-# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all six)
+# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all seven)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound).
 set -euo pipefail
@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file vizserver_wire png_frame frame_delta)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file vizserver_wire png_frame frame_delta)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
@@ -33,9 +33,9 @@ for h in "${harnesses[@]}"; do
   # A READY message is 17 bytes: 512 hold thirty, and longer inputs only slow the search.
   limits=()
   [[ $h == ready ]] && limits=(-max_len=512)
-  # Wall files as large as the 100 KB one whose nesting overflowed toml++'s stack: the shape
-  # check that refuses it must itself hold at that size.
-  [[ $h == wall_file ]] && limits=(-max_len=131072)
+  # Wall and session files as large as the 100 KB one whose nesting overflowed toml++'s stack:
+  # the shape check that refuses it must itself hold at that size.
+  [[ $h == wall_file || $h == session_file ]] && limits=(-max_len=131072)
   status=0
   build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
