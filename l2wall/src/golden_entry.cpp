@@ -53,7 +53,9 @@ EntryDisplays produce_entry(const GoldenEntry& entry, const GoldenPaths& paths,
   if (entry.kind == GoldenKind::RoutingOnly) {
     return produce_test_pattern(layout, entry.frame, entry.vizserver);
   }
-  return produce_rendered(layout, wall_file, entry, {tools.l2wall, tools.pipeserver_program, work});
+  RenderedRun run{tools.l2wall, tools.pipeserver_program, work, {}};
+  if (!entry.session.empty()) run.session = paths.root / entry.session;
+  return produce_rendered(layout, wall_file, entry, run);
 }
 
 bool same_renderer(const GoldenEntry& entry, const GlInfo& gl) {

@@ -57,7 +57,7 @@ class EntryReader {
 
   void reject_unknown_keys() const {
     static const std::vector<std::string_view> known{
-        "name",  "kind",      "wall", "scene",      "frame",
+        "name",  "kind",      "wall", "scene",      "session",    "frame",
         "paths", "tolerance", "mesa", "gl_version", "gl_renderer"};
     for (const auto& [key, node] : table_) {
       if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
@@ -146,6 +146,20 @@ bool valid_name(const std::string& name) {
   });
 }
 
+// A rendered entry shows a built-in scene, or a session (windows of them) from its file.
+void check_rendered_scene(const EntryReader& r, const GoldenEntry& e) {
+  if (e.scene == "session") {
+    if (e.session.empty()) r.fail("session", "missing: scene \"session\" names its session file");
+    return;
+  }
+  if (!e.session.empty()) r.fail("session", "only with scene \"session\"");
+  std::vector<std::string> scenes = built_in_scene_names();
+  if (std::find(scenes.begin(), scenes.end(), e.scene) == scenes.end()) {
+    scenes.push_back("session");
+    r.fail("scene", fmt::format("must be one of {}, got \"{}\"", fmt::join(scenes, ", "), e.scene));
+  }
+}
+
 GoldenEntry read_entry(const toml::table& table, const std::string& file) {
   const EntryReader r(table, file);
   r.reject_unknown_keys();
@@ -162,6 +176,7 @@ GoldenEntry read_entry(const toml::table& table, const std::string& file) {
   e.kind = kind == "rendered" ? GoldenKind::Rendered : GoldenKind::RoutingOnly;
   e.wall = r.string("wall", true);
   e.scene = r.string("scene", true);
+  e.session = r.string("session", false);
   e.frame = r.integer("frame", 0, 100000);
   e.vizserver = r.paths();
   e.tolerance = r.tolerance();
@@ -170,16 +185,13 @@ GoldenEntry read_entry(const toml::table& table, const std::string& file) {
   e.gl_renderer = r.string("gl_renderer", false);
   if (e.kind == GoldenKind::RoutingOnly) {
     if (e.scene != kTestPatternScene) r.fail("scene", "routing-only entries use \"test-pattern\"");
+    if (!e.session.empty()) r.fail("session", "only with scene \"session\"");
     if (!e.tolerance.exact) r.fail("tolerance", "routing-only entries are \"exact\"");
     if (!e.mesa.empty() || !e.gl_version.empty() || !e.gl_renderer.empty()) {
       r.fail("mesa", "routing-only entries render nothing: no Mesa version");
     }
   } else {
-    const auto& scenes = built_in_scene_names();
-    if (std::find(scenes.begin(), scenes.end(), e.scene) == scenes.end()) {
-      r.fail("scene",
-             fmt::format("must be one of {}, got \"{}\"", fmt::join(scenes, ", "), e.scene));
-    }
+    check_rendered_scene(r, e);
   }
   return e;
 }
@@ -257,6 +269,7 @@ std::string format_manifest(const GoldenManifest& manifest) {
     out += fmt::format("\n[[entry]]\nname = {}\nkind = {}\nwall = {}\nscene = {}\nframe = {}\n",
                        quoted(e.name), rendered ? "\"rendered\"" : "\"routing-only\"",
                        quoted(e.wall), quoted(e.scene), e.frame);
+    if (!e.session.empty()) out += fmt::format("session = {}\n", quoted(e.session));
     out += e.vizserver ? "paths = [\"dvi\", \"vizserver\"]\n" : "paths = [\"dvi\"]\n";
     out += e.tolerance.exact ? "tolerance = \"exact\"\n"
                              : fmt::format(

@@ -37,6 +37,7 @@ struct GoldenEntry {
   GoldenKind kind = GoldenKind::RoutingOnly;
   std::string wall;                     // wall file, relative to the repository root
   std::string scene;                    // kTestPatternScene or a pipeserver scene
+  std::string session;                  // scene "session": its file, relative to the repository
   int frame = 0;                        // application frame (its parity goes into the headers)
   bool vizserver = true;                // also run the viz path (DVI always runs)
   Tolerance tolerance;                  // reassembled against the reference; golden on another GL

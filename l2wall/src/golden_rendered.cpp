@@ -124,11 +124,21 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
                                 (run.work / "live").string()};
   if (entry.vizserver) live.insert(live.end(), {"--path", "both", "--compare"});
   const auto reference = run.work / "reference";
+  std::vector<std::string> rendering_args{run.pipeserver_program,
+                                          "--wall",
+                                          wall_file.string(),
+                                          "--scene",
+                                          entry.scene,
+                                          "--frame",
+                                          std::to_string(entry.frame),
+                                          "--reference",
+                                          reference.string()};
+  if (!run.session.empty()) {
+    for (auto* args : {&live, &rendering_args})
+      args->insert(args->end(), {"--session", run.session.string()});
+  }
   // Both at once: the live run spends most of its time starting its pipeservers.
-  LoggedCommand rendering(
-      {run.pipeserver_program, "--wall", wall_file.string(), "--scene", entry.scene, "--frame",
-       std::to_string(entry.frame), "--reference", reference.string()},
-      run.work / "reference.log");
+  LoggedCommand rendering(rendering_args, run.work / "reference.log");
   LoggedCommand running(live, run.work / "live.log");
   running.finish(run.timeout);
   rendering.finish(run.timeout);

@@ -20,6 +20,7 @@ struct RenderedRun {
   std::string l2wall;              // the executable whose `run` subcommand renders the frame
   std::string pipeserver_program;  // renders the reference
   std::filesystem::path work;      // the run's --out folder, and the commands' logs
+  std::filesystem::path session;   // scene "session": its file; otherwise empty
   std::chrono::seconds timeout{180};
 };
 

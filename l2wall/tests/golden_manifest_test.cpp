@@ -66,6 +66,23 @@ TEST(GoldenManifest, WritesWhatItReads) {
   EXPECT_EQ(again.entries[1].tolerance.beyond_one_percent, 0.003);
 }
 
+// A session entry: its file is read, written back, and only there.
+TEST(GoldenManifest, ASessionEntryKeepsItsFile) {
+  const GoldenManifest m =
+      parse_manifest(std::string(kTwoEntries)
+                         .replace(std::string(kTwoEntries).find("scene = \"mesh\""), 14,
+                                  "scene = \"session\"\nsession = \"sessions/w.toml\""),
+                     "m.toml");
+  EXPECT_EQ(m.entries[1].scene, "session");
+  EXPECT_EQ(m.entries[1].session, "sessions/w.toml");
+  EXPECT_TRUE(m.entries[0].session.empty());
+  const std::string text = format_manifest(m);
+  EXPECT_NE(text.find("scene = \"session\"\nframe = 3\nsession = \"sessions/w.toml\"\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(format_manifest(parse_manifest(text, "again.toml")), text);
+}
+
 // Strings are written as TOML basic strings with every control character escaped: a renderer
 // name with a newline or a control byte in it used to make a manifest that could not be read.
 TEST(GoldenManifest, WritesControlCharactersItCanReadBack) {
@@ -116,7 +133,14 @@ TEST(GoldenManifest, ErrorsNameFileLineAndField) {
             "m.toml:6: entry.scene: routing-only entries use \"test-pattern\"");
   EXPECT_EQ(error_of(with("scene = \"mesh\"", "scene = \"teapot\"")),
             "m.toml:15: entry.scene: must be one of mesh, strips, hotspot, isosurface, patches, "
-            "swap, got \"teapot\"");
+            "swap, session, got \"teapot\"");
+  EXPECT_EQ(error_of(with("scene = \"mesh\"", "scene = \"session\"")),
+            "m.toml:11: entry.session: missing: scene \"session\" names its session file");
+  EXPECT_EQ(error_of(with("scene = \"mesh\"", "scene = \"mesh\"\nsession = \"s.toml\"")),
+            "m.toml:16: entry.session: only with scene \"session\"");
+  EXPECT_EQ(
+      error_of(with("scene = \"test-pattern\"", "scene = \"test-pattern\"\nsession = \"s.toml\"")),
+      "m.toml:7: entry.session: only with scene \"session\"");
   EXPECT_EQ(error_of(with("paths = [\"dvi\"]", "paths = [\"vizserver\"]")),
             "m.toml:17: entry.paths: must include \"dvi\"");
   EXPECT_EQ(error_of(with("paths = [\"dvi\"]", "paths = [\"dvi\", \"hdmi\"]")),
@@ -152,6 +176,9 @@ TEST(GoldenManifest, TheRepositoryManifestCoversEveryExampleWall) {
   int rendered = 0;
   for (const GoldenEntry& e : m.entries) {
     EXPECT_TRUE(std::filesystem::exists(root / e.wall)) << e.wall;
+    if (!e.session.empty()) {
+      EXPECT_TRUE(std::filesystem::exists(root / e.session)) << e.session;
+    }
     if (e.kind == GoldenKind::RoutingOnly) walls_with_pattern.insert(e.wall);
     if (e.kind == GoldenKind::Rendered) {
       ++rendered;
