@@ -64,7 +64,9 @@ function buildWall(s) {
   svg.id = 'tiles';
   svg.setAttribute('viewBox', `0 0 ${canvas.width} ${canvas.height}`);
   svg.setAttribute('preserveAspectRatio', 'none');
-  wall.append(svg);
+  const windows = svg.cloneNode();
+  windows.id = 'windows';
+  wall.append(svg, windows);
   picturesShown = -1;
 }
 
@@ -81,6 +83,80 @@ function drawTiles(s) {
     r.append(title);
     svg.append(r);
   }
+}
+
+let dragging = null;  // the window being dragged: its id, rectangle and where the drag began
+
+// A point of the page in canvas pixels.
+function canvasPoint(e) {
+  const box = $('windows').getBoundingClientRect();
+  const canvas = state.wall.canvas;
+  return { x: ((e.clientX - box.left) * canvas.width) / box.width,
+           y: ((e.clientY - box.top) * canvas.height) / box.height };
+}
+
+// A session's windows as the displays show them. Where the run can move them, a window is
+// dragged to a new place (POST /api/window, taken from the run's next frame) and raised by a
+// double click.
+let windowsKey = '';  // what the window outlines show: redrawn only when that changes
+
+function drawWindows(s) {
+  const svg = $('windows');
+  if (dragging) return;  // the dragged outline follows the pointer, not the state
+  const key = JSON.stringify([s.windows, s.live && !s.ended, $('show-windows').checked, wallKey]);
+  if (key === windowsKey) return;
+  windowsKey = key;
+  svg.replaceChildren();
+  if (!$('show-windows').checked) return;
+  for (const w of s.windows.shown) {
+    const g = document.createElementNS('http://www.w3.org/2000/svg', 'g');
+    g.classList.add('window');
+    g.classList.toggle('movable', s.windows.movable && s.live && !s.ended);
+    g.dataset.id = w.id;
+    const r = document.createElementNS('http://www.w3.org/2000/svg', 'rect');
+    for (const k of ['x', 'y', 'width', 'height']) r.setAttribute(k, w[k]);
+    const label = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+    label.setAttribute('x', w.x + 8);
+    label.setAttribute('y', w.y + 24);
+    label.textContent = `${w.id}: ${w.source}`;
+    const title = document.createElementNS('http://www.w3.org/2000/svg', 'title');
+    title.textContent = `window ${w.id} (${w.source}): ${w.width}x${w.height} at (${w.x}, ${w.y})` +
+                        (s.windows.movable ? '; drag to move, double-click to raise' : '');
+    g.append(r, label, title);
+    if (g.classList.contains('movable')) {
+      g.addEventListener('pointerdown', (e) => startDrag(e, g, w));
+      g.addEventListener('pointermove', followDrag);
+      g.addEventListener('pointerup', endDrag);
+      g.addEventListener('dblclick', () => post('window', { action: 'raise', id: w.id }));
+    }
+    svg.append(g);
+  }
+}
+
+function startDrag(e, g, w) {
+  e.preventDefault();
+  g.setPointerCapture(e.pointerId);
+  dragging = { g, w, from: canvasPoint(e), dx: 0, dy: 0 };
+}
+
+function followDrag(e) {
+  if (!dragging) return;
+  const at = canvasPoint(e);
+  dragging.dx = Math.round(at.x - dragging.from.x);
+  dragging.dy = Math.round(at.y - dragging.from.y);
+  dragging.g.setAttribute('transform', `translate(${dragging.dx} ${dragging.dy})`);
+}
+
+// A click that moved nothing keeps the outline as it is, so a double click reaches it.
+async function endDrag() {
+  if (!dragging) return;
+  const { g, w, dx, dy } = dragging;
+  dragging = null;
+  if (!dx && !dy) return g.removeAttribute('transform');
+  windowsKey = '';  // the outline moved by hand: drawn again from the state
+  await post('window', { action: 'move', id: w.id, x: w.x + dx, y: w.y + dy, w: w.width,
+                         h: w.height });
+  if (state) drawWindows(state);
 }
 
 // A display's picture is replaced only once the new one has loaded: no flicker, and at most one
@@ -190,6 +266,7 @@ function drawStatus(s) {
   $('stop').disabled = !steerable || !s.stoppable;
   $('stop').title = s.stoppable ? 'End the run after this frame, as q does'
                                 : 'Under --mpi the pipeserver ranks cannot be ended early: Ctrl-C on mpirun ends the run';
+  $('windows-control').hidden = !s.windows.shown.length;
   const modes = $('balance-mode');
   $('balance-control').hidden = !s.balance.mode;
   if (s.balance.mode && modes.options.length !== s.balance.modes.length) {
@@ -206,6 +283,7 @@ function draw(s) {
   }
   drawStatus(s);
   drawTiles(s);
+  drawWindows(s);
   reloadPictures(s);
   drawPipeservers(s);
   drawEvents(s);
@@ -240,4 +318,5 @@ $('save').addEventListener('click', () => post('save'));
 $('stop').addEventListener('click', () => post('stop'));
 $('balance-mode').addEventListener('change', (e) => post('balance', { mode: e.target.value }));
 $('show-tiles').addEventListener('change', () => state && drawTiles(state));
+$('show-windows').addEventListener('change', () => state && drawWindows(state));
 poll();

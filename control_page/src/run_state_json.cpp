@@ -32,6 +32,17 @@ json tiles(const std::vector<PageTile>& all) {
   return out;
 }
 
+json windows(const std::vector<PageWindow>& all) {
+  json out = json::array();
+  for (const PageWindow& w : all) {
+    json j = rect(w.x, w.y, w.width, w.height);
+    j["id"] = w.id;
+    j["source"] = w.source;
+    out.push_back(j);
+  }
+  return out;
+}
+
 json pipeservers(const std::vector<PagePipeserver>& all) {
   json out = json::array();
   for (const PagePipeserver& p : all) {
@@ -76,6 +87,7 @@ std::string to_json(const RunState& s) {
       {"summary", s.summary},
       {"balance", {{"mode", s.balance_mode}, {"modes", s.balance_modes}}},
       {"tiles", tiles(s.tiles)},
+      {"windows", {{"shown", windows(s.windows)}, {"movable", s.windows_movable}}},
       {"pipeservers", pipeservers(s.pipeservers)},
       {"events", events(s.events)},
       {"pictures", s.pictures},

@@ -20,6 +20,8 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   s.events = {{40, "saved"}};
   s.balance_mode = "kd";
   s.balance_modes = {"static", "kd"};
+  s.windows = {{7, "picture", -20, 30, 400, 300}};
+  s.windows_movable = true;
   const auto j = nlohmann::json::parse(to_json(s));
   EXPECT_EQ(j["wall"]["name"], "two");
   EXPECT_EQ(j["wall"]["canvas"]["width"], 2048);
@@ -36,6 +38,12 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   EXPECT_EQ(j["pipeservers"][0]["recent"][0]["sync_retries"], 1);
   EXPECT_EQ(j["events"][0]["text"], "saved");
   EXPECT_EQ(j["balance"]["modes"][1], "kd");
+  ASSERT_EQ(j["windows"]["shown"].size(), 1u);
+  EXPECT_EQ(j["windows"]["shown"][0]["id"], 7);
+  EXPECT_EQ(j["windows"]["shown"][0]["source"], "picture");
+  EXPECT_EQ(j["windows"]["shown"][0]["x"], -20);
+  EXPECT_EQ(j["windows"]["shown"][0]["height"], 300);
+  EXPECT_EQ(j["windows"]["movable"], true);
 }
 
 TEST(RunStateJson, ANameThatIsNotUtf8StillGivesJson) {

@@ -148,6 +148,8 @@ void LivePage::publish(const PageMoment& m, const DisplayPictures* pictures) {
     state_.pipeservers[i].lost = m.lost[i];
   state_.limited_by = limited_by(m);
   state_.balance_mode = m.balance_mode;
+  state_.windows = m.windows;
+  state_.windows_movable = m.windows_movable;
   state_.balance_modes.clear();
   if (!m.balance_mode.empty()) state_.balance_modes = {"static", "strips", "kd"};
   if (pictures) {

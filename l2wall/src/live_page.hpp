@@ -33,6 +33,8 @@ struct PageMoment {
   std::vector<double> recent_route;  // the emulator's route ms of the last frames; none: no
   double refresh_hz = 0;             // emulator (the vizserver path)
   std::string balance_mode;          // "" for a run that does not balance
+  std::vector<PageWindow> windows;   // a session's, at `frame`
+  bool windows_movable = false;
 };
 
 class LivePage {

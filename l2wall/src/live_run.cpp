@@ -599,7 +599,7 @@ class LiveRun {
   // page's events say what was done, and without a page stderr does.
   void window_command(const std::string& command, int frame) {
     std::string why = "this run shows no session (start it with --scene session)";
-    if (windows_ && !pipeservers_.all().empty() && !pipeservers_.all().front().windows)
+    if (windows_ && !windows_moving_here())
       why = "windows do not move under --mpi";
     else if (windows_)
       why = windows_->command(command);
@@ -607,6 +607,11 @@ class LiveRun {
         why.empty() ? "window: " + command + " from the next frame" : "window not changed: " + why;
     if (page_) return page_->event(frame, said);
     std::fprintf(stderr, "l2wall: %s\n", said.c_str());
+  }
+
+  // Whether the pipeservers take WINDOWS lines (not the ranks of an --mpi run).
+  bool windows_moving_here() const {
+    return !pipeservers_.all().empty() && pipeservers_.all().front().windows;
   }
 
   // --window-stdin: the whole lines waiting on stdin, without waiting for more.
@@ -639,6 +644,13 @@ class LiveRun {
       m.refresh_hz = o_.refresh_hz;
     }
     if (balance_) m.balance_mode = balance_->mode();
+    if (windows_) {
+      for (const WindowPlace& w : windows_->shown_at(shown_ - 1)) {
+        const Rect& r = w.on_canvas;
+        m.windows.push_back({w.id, windows_->source_of(w.id), r.x, r.y, r.w, r.h});
+      }
+      m.windows_movable = windows_moving_here();
+    }
     // Nobody watching: no pictures gathered (under --mpi each is a fetch from a column rank).
     if (shown_ == 0 || !page_->watched()) return page_->publish(m, nullptr);
     const DisplayPictures pictures = paths_.front()->frame_pictures(shown_ - 1, watch_);

@@ -41,6 +41,7 @@ LiveWindows::LiveWindows(const Session& session) {
   for (const SessionWindow& w : session.windows) {
     now_.push_back({w.id, w.on_canvas});
     ids_.push_back(w.id);
+    sources_.push_back(w.source);
   }
   lines_.push_back(encode(WindowsMessage{0, now_}));
 }
@@ -109,6 +110,17 @@ void LiveWindows::serve(PipeserverSet& pipeservers) {
       }
     }
   }
+}
+
+std::vector<WindowPlace> LiveWindows::shown_at(int frame) const {
+  const int decided = static_cast<int>(lines_.size()) - 1;
+  return decode_windows(lines_[static_cast<std::size_t>(std::clamp(frame, 0, decided))]).windows;
+}
+
+const std::string& LiveWindows::source_of(int id) const {
+  const auto at = std::find(ids_.begin(), ids_.end(), id);
+  static const std::string none;
+  return at == ids_.end() ? none : sources_[static_cast<std::size_t>(at - ids_.begin())];
 }
 
 std::string LiveWindows::summary() const {

@@ -27,6 +27,12 @@ class LiveWindows {
   // Answers every WANT waiting. Throws RunFault for a line that is not one.
   void serve(PipeserverSet& pipeservers);
 
+  // The windows of `frame` (back to front) as every pipeserver draws them: the latest decided for
+  // a frame not decided yet, the session file's before frame 0.
+  std::vector<WindowPlace> shown_at(int frame) const;
+  // A window's source ("picture", "mesh", ...), as the session file names it.
+  const std::string& source_of(int id) const;
+
   // "windows: move 1 to 100,80 300x200 from frame 14", a line a change; empty without any.
   std::string summary() const;
   // OUT/windows.txt's text: frame k's WINDOWS line on line k (frames 1.. as decided; frame 0 is
@@ -38,6 +44,7 @@ class LiveWindows {
 
   std::vector<WindowPlace> now_;      // back to front
   std::vector<int> ids_;              // every window of the session, closed ones too
+  std::vector<std::string> sources_;  // by the same index as ids_
   std::vector<std::string> lines_;    // by frame decided so far, from frame 0
   std::vector<std::string> pending_;  // commands taken since the last frame decided
   std::vector<std::string> changes_;  // "move 1 to ... from frame 14"

@@ -21,6 +21,14 @@ struct PageTile {
   int pipeserver = 0;
 };
 
+// A session's window as the displays show it (docs/session-file.md): the page draws its outline
+// and moves it by dragging.
+struct PageWindow {
+  int id = 0;
+  std::string source;                       // "picture", "mesh", ...
+  int x = 0, y = 0, width = 0, height = 0;  // on the canvas
+};
+
 // One pipeserver's figures of one frame, as its log line says them.
 struct PageFrameTimes {
   int frame = 0;
@@ -59,6 +67,8 @@ struct RunState {
   std::string balance_mode;                 // "" for a run that does not balance
   std::vector<std::string> balance_modes;   // what POST /api/balance accepts
   std::vector<PageTile> tiles;              // the layout of `frame`
+  std::vector<PageWindow> windows;          // a session's windows at `frame`, back to front
+  bool windows_movable = false;             // whether POST /api/window moves them in this run
   std::vector<PagePipeserver> pipeservers;  // in pipeserver order
   std::vector<PageEvent> events;            // oldest first, the last few dozen
   std::vector<std::string> pictures;        // other pictures served at /api/picture/NAME
