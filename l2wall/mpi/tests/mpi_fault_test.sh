@@ -62,7 +62,9 @@ signal_and_wait() {
   while kill -0 "$run" 2>/dev/null; do
     took=$((($(date +%s%N) - t0) / 1000000))
     if ((took > end_ceiling_ms)); then
-      echo "FAIL: $label: still running $took ms after the fault"
+      echo "FAIL: $label: still running $took ms after the fault; what it said, and what runs:"
+      cat "$dir.err"
+      ps -o pid,stat,wchan:24,etime,args --ppid "$run" -p "$run" $(pgrep -f -- "$dir" | sed 's/^/-p /') || true
       kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
       exit 1
     fi
