@@ -6,7 +6,9 @@
 #      pipeservers 2-3, display-a: the column), both paths (--compare);
 #   2. a two-column wall with its columns on two hosts (display-a, display-b);
 #   3. pipeserver 2 killed, then stopped, on render-b: one line naming it with its host, exit
-#      non-zero, and nothing left running on any host.
+#      non-zero, and nothing left running on any host;
+#   4. the coordinator (rank 0, on render-a) killed: every rank on the other hosts ends by
+#      itself (cluster.sh names any it had to kill), nothing left, no shared memory.
 # Exit 77 (skipped) where this machine cannot make network namespaces.
 # Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL
 set -euo pipefail
@@ -58,35 +60,76 @@ same_displays "$out/one-2col" "$out/two-columns"
 
 # 3. Pipeserver 2 (rank 3, on render-b) killed, then stopped, mid-run: one line naming it with
 # its host, exit non-zero, nothing left on any host (cluster.sh names what it had to kill).
-fault() {
-  local signal=$1 dir=$out/$1
+# rank_pid DIR RANK: the pid of MPI rank RANK of the run writing to DIR (mpirun gives each its
+# rank in its environment).
+rank_pid() {
+  local p
+  for p in $(pgrep -f -- "$1" || true); do
+    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2"; then
+      echo "$p"
+      return
+    fi
+  done
+}
+
+# start_run DIR: the default wall over three hosts in the background, until its displays have
+# swapped a few frames. Sets `run`.
+start_run() {
+  local dir=$1
   bash "$cluster" -- "$l2wall" run --mpi --frames 100000 --stall-timeout 1000 --ready-timeout 3000 \
     --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
-  local run=$!
-  for _ in $(seq 1200); do  # until the displays have swapped a few frames
+  run=$!
+  for _ in $(seq 1200); do
     [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
     sleep 0.05
   done
-  local p pid=
-  for p in $(pgrep -f -- "$dir" || true); do
-    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=3"; then pid=$p; fi
-  done
-  [[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
-  kill -s "$signal" "$pid"
-  local status=0
-  wait "$run" || status=$?
-  ((status != 0)) || { echo "FAIL: exit 0 after rank 3 got SIG$signal"; exit 1; }
-  local line
-  line=$(grep -E "^l2wall: .*pipeserver 2 \(rank 3 on render-b, pid $pid\).*frame [0-9]+" "$dir.err") ||
-    { echo "FAIL: no line naming pipeserver 2 on render-b:"; cat "$dir.err"; exit 1; }
-  echo "pipeserver 2 SIG$signal on render-b: $line"
+}
+
+# nothing_left DIR PIDS: no rank had to be killed by cluster.sh, no process of the run, no shared
+# memory of PIDS.
+nothing_left() {
+  local dir=$1 pids=$2 p
   if grep -q "^cluster: left running" "$dir.err"; then
     echo "FAIL: processes left on a host:"
     grep "^cluster: left running" "$dir.err"
     exit 1
   fi
   if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
+  for p in $pids; do
+    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
+  done
+}
+
+fault() {
+  local signal=$1 dir=$out/$1 run pid pids status=0 line
+  start_run "$dir"
+  pids=$(pgrep -f -- "$dir" || true)
+  pid=$(rank_pid "$dir" 3)
+  [[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
+  kill -s "$signal" "$pid"
+  wait "$run" || status=$?
+  ((status != 0)) || { echo "FAIL: exit 0 after rank 3 got SIG$signal"; exit 1; }
+  line=$(grep -E "^l2wall: .*pipeserver 2 \(rank 3 on render-b, pid $pid\).*frame [0-9]+" "$dir.err") ||
+    { echo "FAIL: no line naming pipeserver 2 on render-b:"; cat "$dir.err"; exit 1; }
+  echo "pipeserver 2 SIG$signal on render-b: $line"
+  nothing_left "$dir" "$pids"
 }
 fault KILL
 fault STOP
+
+# 4. The coordinator killed on render-a: nobody is left to say it but Open MPI (mpirun -q is
+# quiet), so what is asserted is that the run ends, non-zero, with nothing left on any host.
+coordinator_killed() {
+  local dir=$out/coordinator run pid pids status=0
+  start_run "$dir"
+  pid=$(rank_pid "$dir" 0)
+  [[ -n $pid ]] || { echo "FAIL: no process of rank 0"; kill "$run"; exit 1; }
+  pids=$(pgrep -f -- "$dir" || true)
+  kill -s KILL "$pid"
+  wait "$run" || status=$?
+  ((status != 0)) || { echo "FAIL: exit 0 after the coordinator was killed"; exit 1; }
+  echo "coordinator (rank 0) killed on render-a: the run ended, exit $status"
+  nothing_left "$dir" "$pids"
+}
+coordinator_killed
 echo "nothing left running on any host"
