@@ -30,6 +30,7 @@
 #include "l2wall/run_pictures.hpp"
 #include "l2wall/run_report.hpp"
 #include "l2wall/run_time.hpp"
+#include "l2wall/stall_verdict.hpp"
 #include "line_reader.hpp"
 #include "live_page.hpp"
 #include "live_windows.hpp"
@@ -449,10 +450,20 @@ class LiveRun {
     const auto now = RunClock::now();
     // Before the first swap the pipeservers may still be starting (GL context, first render).
     const int limit_ms = shown_ == 0 ? o_.start_timeout_ms : o_.stall_timeout_ms;
-    if (ms_between(last_swap_, now) < limit_ms) return;
+    const double waited_ms = ms_between(last_swap_, now);
+    if (waited_ms < limit_ms) return;
     // A pipeserver that has not delivered the frame the displays wait for is the one that hangs; if
     // every pipeserver delivered it, the compositing server did not.
     std::string culprits = pipeservers_.late_pipeservers(shown_);
+    if (const std::string server = server_process(); culprits.empty() && !server.empty())
+      culprits = "the " + server;
+    if (!stall_ends_run(waited_ms, limit_ms, !culprits.empty())) return;
+    if (culprits.empty()) {
+      throw RunFault(fmt::format(
+          "no display swap for {:.0f} ms though every pipeserver delivered frame {}: no process "
+          "of the run is late (was the machine too busy?); {}",
+          waited_ms, shown_, displays_showing()));
+    }
     // What the pipeservers that did deliver are doing: waiting for the swap that cannot come.
     std::string note;
     const auto& all = pipeservers_.all();
@@ -465,11 +476,8 @@ class LiveRun {
           fmt::format("{}; the other pipeservers are waiting for {}",
                       PipeserverSet::stopped_note(*hung), paths_.front()->pipeservers_wait_for());
     }
-    if (const std::string server = server_process(); culprits.empty() && !server.empty())
-      culprits = "the " + server;
     throw RunFault(fmt::format("no display swap for {} ms: {} did not deliver frame {}{}; {}",
-                               limit_ms, culprits.empty() ? "no pipeserver" : culprits, shown_,
-                               note, displays_showing()));
+                               limit_ms, culprits, shown_, note, displays_showing()));
   }
 
   // What the displays show now, for a fault message. With both paths they can differ by a
