@@ -1,10 +1,13 @@
-// The compositing loops of composite.hpp. Each is a compare and a select per pixel with no
-// branch, over a row span with the pixel size fixed at compile time, so that GCC vectorises it.
-// Three-byte pixels need byte shuffles to be taken apart 16 at a time, which SSE2 (the x86-64
-// baseline) lacks: each loop is also compiled for AVX2 and the one for the machine is chosen at
-// load time (target_clones). This file is compiled with -O3 (CMakeLists.txt): at -O2 GCC 12's
-// vectoriser takes on only loops it costs as very cheap, which these are not.
+// The compositing loops of composite.hpp. Where the machine has AVX2, composite_simd.cpp does
+// all but the last few pixels of a span, and these plain loops the rest. Each is a compare and a
+// select per pixel with no branch, over a row span with the pixel size fixed at compile time, so
+// that GCC vectorises it. Three-byte pixels need byte shuffles to be taken apart 16 at a time,
+// which SSE2 (the x86-64 baseline) lacks: each loop is also compiled for AVX2 and the one for the
+// machine is chosen at load time (target_clones). This file is compiled with -O3 (CMakeLists.txt):
+// at -O2 GCC 12's vectoriser takes on only loops it costs as very cheap, which these are not.
 #include "composite.hpp"
+
+#include "composite_simd.hpp"
 
 namespace l2::composite {
 
@@ -161,7 +164,15 @@ void overlay(bool keyed, std::uint8_t* dst, std::uint32_t* rank, const std::uint
   if (bpp != 3 && bpp != 4) {  // wider pixels: no link carries them; not worth a clone
     keyed ? overlay_span<true, 0>(dst, rank, src, n, bpp, key, r)
           : overlay_span<false, 0>(dst, rank, src, n, bpp, 0, r);
-  } else if (keyed) {
+    return;
+  }
+  // The AVX2 steps first (composite_simd.hpp), the plain loop for the rest of the span.
+  const int done = simd::available() ? simd::overlay(keyed, dst, rank, src, n, bpp, key, r) : 0;
+  dst += 3 * done;
+  rank += done;
+  src += bpp * done;
+  n -= done;
+  if (keyed) {
     bpp == 3 ? key3(dst, rank, src, n, key, r) : key4(dst, rank, src, n, key, r);
   } else {
     bpp == 3 ? copy3(dst, rank, src, n, r) : copy4(dst, rank, src, n, r);
@@ -171,18 +182,24 @@ void overlay(bool keyed, std::uint8_t* dst, std::uint32_t* rank, const std::uint
 void depth(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src,
            const std::uint8_t* depth, int n, int bpp, int input) {
   const auto tag = static_cast<std::uint32_t>(input);
-  if (bpp == 3) {
-    depth3(dst, rank, src, depth, n, tag);
-  } else if (bpp == 4) {
-    depth4(dst, rank, src, depth, n, tag);
-  } else {
+  if (bpp != 3 && bpp != 4) {
     depth_span<0>(dst, rank, src, depth, n, bpp, tag);
+    return;
   }
+  const int done = simd::available() ? simd::depth(dst, rank, src, depth, n, bpp, tag) : 0;
+  dst += 3 * done;
+  rank += done;
+  src += bpp * done;
+  depth += bpp * done;
+  n -= done;
+  bpp == 3 ? depth3(dst, rank, src, depth, n, tag) : depth4(dst, rank, src, depth, n, tag);
 }
 
 int settle(std::uint8_t* dst, std::uint32_t* rank, int n, std::uint8_t r, std::uint8_t g,
            std::uint8_t b) {
-  return settle_span(dst, rank, n, r, g, b);
+  int written = 0;
+  const int done = simd::available() ? simd::settle(dst, rank, n, r, g, b, written) : 0;
+  return written + settle_span(dst + 3 * done, rank + done, n - done, r, g, b);
 }
 
 }  // namespace l2::composite

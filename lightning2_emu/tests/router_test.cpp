@@ -182,6 +182,21 @@ TEST(Router, CompositingStartsEveryFrameFromTheFarPlane) {
   EXPECT_EQ(r.displays[0].covered_pixels, 1u);
 }
 
+// The one rank that does not fit (composite.hpp): depth FFFFFE from input 255 of a 64-row mesh
+// is still nearer than the far plane, in a span long enough for the vector loop and its tail.
+TEST(Router, DepthJustShortOfTheFarPlaneFromTheLastInputIsWritten) {
+  WorkerPool pool(1);
+  Router router(Mesh(64, 1), {{0, 40, 1, 0}}, pool, kBackground);
+  FrameBuilder in(128, 1);
+  const std::vector<std::uint32_t> depths(40, 0xFFFFFE);
+  depth_strip(in, 0, 0, 0, 0, 0, std::vector<Rgb>(40, kGreen), depths);
+  std::vector<InputFrame> frames(256);
+  frames[255] = InputFrame::of(in.image());
+  const RouteReport r = router.route(frames);
+  EXPECT_EQ(row_of(router.display(0).back(), 0), std::vector<Rgb>(40, kGreen));
+  EXPECT_EQ(r.displays[0].covered_pixels, 40u);
+}
+
 // §7's error rows the router counts: a KEY to a display the mesh does not have skips its payload
 // and the scanline goes on; a DEPTH partly outside its display writes the pixels inside.
 TEST(Router, KeyAndDepthCountMissingDisplaysAndClips) {
