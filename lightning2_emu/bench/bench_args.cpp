@@ -22,6 +22,8 @@ std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args) {
                "them");
   app.add_flag("--small-tiles", args.small_tiles_only,
                "only the 4-display wall of 64x48 tiles (the per-strip cost)");
+  app.add_flag("--headline", args.headline_only,
+               "only the WireGL headline case (one 3200x2400 display from 12 inputs)");
   app.add_flag("--compositing", args.compositing_only,
                "only the DEPTH compositing cases (sort-last and hybrid)");
   return l2::parse_command_line(app, argc, argv);

@@ -9,6 +9,7 @@ struct BenchArgs {
   bool sweep_only = false;        // --sweep: only the mesh-size sweep
   bool small_tiles_only = false;  // --small-tiles: only the wall of 64x48 tiles
   bool compositing_only = false;  // --compositing: only the DEPTH compositing cases
+  bool headline_only = false;     // --headline: only the WireGL headline case
 };
 
 // Parses the command line into `args`. Returns the exit status to end with at once (0 after
