@@ -22,11 +22,18 @@ bool operator==(const CacheLineBytes& a, const CacheLineBytes& b) {
   return a.size_ == b.size_ && (a.size_ == 0 || std::memcmp(a.data(), b.data(), a.size_) == 0);
 }
 
-RgbImage::RgbImage(int width, int height, Rgb fill_colour) : width_(width), height_(height) {
+RgbImage::RgbImage(int width, int height, Unfilled) : width_(width), height_(height) {
   if (width < 0 || height < 0) throw std::invalid_argument("RgbImage: negative size");
   bytes_ = CacheLineBytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
                           kChannels);
+}
+
+RgbImage::RgbImage(int width, int height, Rgb fill_colour) : RgbImage(width, height, Unfilled{}) {
   fill(fill_colour);
+}
+
+RgbImage RgbImage::unfilled(int width, int height) {
+  return RgbImage(width, height, Unfilled{});
 }
 
 Rgb RgbImage::at(int x, int y) const {

@@ -186,7 +186,7 @@ void DisplayWatcher::read_stream() {
             fmt::format("{}: DISPLAY {} of frame {} where display {} of frame {} was due", peer_,
                         d.display, d.frame, building.displays.size(), building.frame));
       }
-      RgbImage image(static_cast<int>(d.width), static_cast<int>(d.height));
+      RgbImage image = RgbImage::unfilled(static_cast<int>(d.width), static_cast<int>(d.height));
       if (!read_exact(image.data(), d.pixel_bytes(), false, "DISPLAY")) return;
       building.displays.push_back(std::move(image));
     } else if (h.kind == Kind::Shown) {

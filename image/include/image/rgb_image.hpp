@@ -57,6 +57,9 @@ class RgbImage {
 
   RgbImage() = default;
   RgbImage(int width, int height, Rgb fill = {});
+  // Pixels left as the allocator gives them, for a caller that writes every byte next (a
+  // picture received whole): filling first would be one more pass over all of it.
+  static RgbImage unfilled(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -82,6 +85,9 @@ class RgbImage {
   friend bool operator==(const RgbImage&, const RgbImage&) = default;
 
  private:
+  struct Unfilled {};
+  RgbImage(int width, int height, Unfilled);
+
   int width_ = 0;
   int height_ = 0;
   CacheLineBytes bytes_;
