@@ -135,6 +135,15 @@ int main(int argc, char** argv) {
                   "over a cost grid); on every --path, also with --mpi (docs/wall-file.md)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(l2::kBalanceModeNames),
                                                      std::end(l2::kBalanceModeNames))));
+  run->add_option("--resistance", o.resistance,
+                  "with balancing: take a new layout only when it is predicted to shorten the "
+                  "frame by this fraction (0 up to below 1; over [balance] resistance; the "
+                  "summary counts the layouts not taken)")
+      ->check(CLI::Range(0.0, 0.999));
+  run->add_option("--tile-cost", o.tile_cost,
+                  "with --resistance: a display tile's fixed part in that prediction, as a "
+                  "fraction of the mean tile time (0 up to below 1; over [balance] tile_cost)")
+      ->check(CLI::Range(0.0, 0.999));
   run->add_flag("--survive-host-loss", o.survive_host_loss,
                 "with balancing: a pipeserver that dies (killed, crashed, exited) does not end "
                 "the run; its tiles go to the others from the next layout on, and the summary "

@@ -36,7 +36,7 @@ struct Options {
   int pipeservers = 0;  // 0: the wall's count
   std::string mode;     // empty: the wall's [balance] mode
   bool assign = false;
-  double resistance = 0, tile_cost = 0;
+  std::optional<double> resistance, tile_cost;  // unset: the wall's [balance]
   bool header = false;
   std::string tiles_csv;  // a row per tile and frame, for finding where the time goes
 };
@@ -75,8 +75,8 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
   l2::BalanceSettings settings = l2::balance_settings(wall);
   if (!o.mode.empty()) settings.mode = *l2::parse_balance_mode(o.mode);
   settings.assign = settings.assign || o.assign;
-  settings.resistance = o.resistance;
-  settings.tile_cost = o.tile_cost;
+  settings.resistance = o.resistance.value_or(settings.resistance);
+  settings.tile_cost = o.tile_cost.value_or(settings.tile_cost);
   l2::Balancer balancer(wall, settings);
   auto scene = l2::make_scene(o.scene, scene_options);
   auto pipeservers = pipeservers_of(balancer.layout());
@@ -155,14 +155,12 @@ int main(int argc, char** argv) {
                "assignment policy (as [balance] assignment = \"heaviest-first\")");
   app.add_option("--resistance", o.resistance,
                  "take a new layout only when it is predicted to shorten the frame by this "
-                 "fraction (0: every one)")
-      ->check(CLI::Range(0.0, 0.99))
-      ->capture_default_str();
+                 "fraction (0: every one; default: the wall's [balance] resistance)")
+      ->check(CLI::Range(0.0, 0.99));
   app.add_option("--tile-cost", o.tile_cost,
                  "the fixed part of a display tile in that prediction, as a fraction of the mean "
-                 "tile time")
-      ->check(CLI::Range(0.0, 0.99))
-      ->capture_default_str();
+                 "tile time (default: the wall's [balance] tile_cost)")
+      ->check(CLI::Range(0.0, 0.99));
   app.add_flag("--header", o.header, "print the CSV header line first");
   app.add_option("--tiles", o.tiles_csv,
                  "append a CSV row per tile and frame to FILE: pipeservers, mode, assign, frame, "

@@ -62,6 +62,8 @@ BalanceSettings balance_settings(const Wall& wall) {
   BalanceSettings s;
   s.mode = wall.balance.mode;
   s.assign = wall.balance.heaviest_first;
+  s.resistance = wall.balance.resistance;
+  s.tile_cost = wall.balance.tile_cost;
   return s;
 }
 

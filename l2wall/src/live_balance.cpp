@@ -114,6 +114,10 @@ void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
       const BalanceStep step = balancer_.next(pending_);
       if (!step.rejected.empty())
         rejected_.push_back(fmt::format("frame {}: {}", frame, step.rejected));
+      if (step.resisted) {
+        ++resisted_;
+        best_resisted_ = std::min(best_resisted_, step.predicted_ratio);
+      }
     } catch (const std::invalid_argument& e) {
       throw RunFault(fmt::format("balancing frame {}: {}", frame, e.what()));
     } catch (const LayoutError& e) {
@@ -196,6 +200,12 @@ std::string LiveBalance::summary() const {
   s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
                    swaps_checked_);
   for (const std::string& line : switches_) s += line;
+  if (resisted_ > 0) {
+    s += fmt::format(
+        "balance: {} new layout{} not taken (resistance {}): the best was predicted to take "
+        "{:.2f} of the frame time\n",
+        resisted_, resisted_ == 1 ? "" : "s", balancer_.settings().resistance, best_resisted_);
+  }
   // The planner's reason is a long line, and on a tightly packed wall nearly every frame's plan
   // is refused for much the same one: the first in full, the rest counted.
   if (!rejected_.empty()) s += fmt::format("balance: not used, {}\n", rejected_.front());

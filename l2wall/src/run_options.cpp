@@ -72,6 +72,8 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   BalanceSpec spec = wall.balance;
   if (const auto mode = parse_balance_mode(o.balance)) spec.mode = *mode;
   spec.survive_host_loss = spec.survive_host_loss || o.survive_host_loss;
+  spec.resistance = o.resistance.value_or(spec.resistance);
+  spec.tile_cost = o.tile_cost.value_or(spec.tile_cost);
   return spec;
 }
 
@@ -83,6 +85,11 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
       return Failure{
           "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
           "[balance]"};
+    }
+    if (o.resistance || o.tile_cost) {
+      return Failure{
+          fmt::format("{} needs balancing: --balance strips or kd, or a wall file's [balance]",
+                      o.resistance ? "--resistance" : "--tile-cost")};
     }
     if (spec.survive_host_loss) {  // the wall's, balancing turned off by --balance static
       return Failure{fmt::format(

@@ -81,5 +81,26 @@ TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
             "turns off");
 }
 
+// --resistance and --tile-cost set the wall's [balance] values over its own, and ask for a
+// balancing run (only it plans layouts to resist).
+TEST(BalanceOptions, ResistanceFromTheWallOrTheCommandLine) {
+  Wall wall = strips_wall();
+  wall.balance.resistance = 0.1;
+  wall.balance.tile_cost = 0.15;
+  RunOptions o;
+  EXPECT_DOUBLE_EQ(run_balance(o, wall).resistance, 0.1);
+  EXPECT_DOUBLE_EQ(run_balance(o, wall).tile_cost, 0.15);
+  o.resistance = 0;
+  o.tile_cost = 0.3;
+  EXPECT_DOUBLE_EQ(run_balance(o, wall).resistance, 0);
+  EXPECT_DOUBLE_EQ(run_balance(o, wall).tile_cost, 0.3);
+  EXPECT_TRUE(balance_refusal(o, wall, false).ok());
+  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+            "--resistance needs balancing: --balance strips or kd, or a wall file's [balance]");
+  o.resistance.reset();
+  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+            "--tile-cost needs balancing: --balance strips or kd, or a wall file's [balance]");
+}
+
 }  // namespace
 }  // namespace l2

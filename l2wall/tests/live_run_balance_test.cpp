@@ -171,6 +171,58 @@ TEST(LiveRunBalance, StripsRetileLiveOnTheVizserverPathToo) {
   expect_clean(both);
 }
 
+// Resistance ([balance] resistance): a new layout is taken only when predicted to shorten the
+// frame by that fraction. On 4 pipeservers no layout can be predicted to take less than a
+// quarter of the frame (the slowest pipeserver has at least the mean of the work), so against a
+// resistance of 0.8 every new cut is predicted to gain too little: the wall's own layout stays
+// every frame, and the summary counts the cuts not taken. Beside it the same run without
+// resistance re-tiles from frame 1 on (the even strips).
+TEST(LiveRunBalance, ResistanceKeepsTheLayoutWhenTheGainIsBelowItAndWithoutItTheRunRetiles) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-resist-{}", getpid());
+  fs::create_directories(dir);
+  const fs::path wall_file =
+      write_roomy_default_wall(dir, "\n[balance]\nmode = \"strips\"\nresistance = 0.8\n");
+  const std::vector<std::string> common{
+      "--scene", "strips",          "--frames", std::to_string(kFrames), "--refresh", "0", "--keep",
+      "none",    "--ready-timeout", "5000",     "--stall-timeout",       "60000"};
+  std::vector<std::string> resisting_args = common, free_args = common;
+  resisting_args.insert(resisting_args.end(), {"--wall", wall_file.string()});
+  free_args.insert(free_args.end(), {"--wall", wall_file.string(), "--resistance", "0"});
+  WallRun resisting("resist-on", resisting_args);
+  WallRun free_run("resist-off", free_args);
+  ASSERT_TRUE(resisting.wait(120s).ok()) << resisting.output();
+  ASSERT_TRUE(free_run.wait(120s).ok()) << free_run.output();
+  fs::remove_all(dir);
+
+  const std::string kept = resisting.output();
+  EXPECT_NE(kept.find("balance strips: 1 layouts, strips"), std::string::npos) << kept;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(kept, m,
+                                std::regex("\nbalance: (\\d+) new layouts? not taken \\(resistance "
+                                           "0.8\\): the best was predicted to take ([0-9.]+) of "
+                                           "the frame time\n")))
+      << kept;
+  // Every step from frame 2 to the last planned a cut other than the wall's own.
+  EXPECT_EQ(std::stoi(m[1].str()), kFrames - 2);
+  EXPECT_GE(std::stod(m[2].str()), 0.25);
+  EXPECT_NE(slurp(resisting.out() / "summary.txt").find(m[0].str().substr(1)), std::string::npos);
+  std::istringstream lines(slurp(resisting.out() / "layouts.txt"));
+  std::set<std::string> tiles;  // each frame's LAYOUT line without its frame number
+  int count = 0;
+  for (std::string line; std::getline(lines, line); ++count)
+    tiles.insert(line.substr(line.find(' ', line.find(' ') + 1)));
+  EXPECT_EQ(count, kFrames);
+  EXPECT_EQ(tiles.size(), 1u);
+
+  const std::string moved = free_run.output();
+  ASSERT_TRUE(std::regex_search(moved, m, std::regex("balance strips: (\\d+) layouts, strips")))
+      << moved;
+  EXPECT_GE(std::stoi(m[1].str()), 2);
+  EXPECT_EQ(moved.find("not taken"), std::string::npos) << moved;
+  expect_clean(resisting);
+  expect_clean(free_run);
+}
+
 // On a tightly packed wall nearly every frame's plan is refused, and each refusal was a line of
 // the planner's reason (200 to 300 characters) in the summary: 5 frames, 4 such lines. Here no
 // strip fits (a strip is the display's width, a framebuffer half of it), so every plan from

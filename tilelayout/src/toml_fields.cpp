@@ -141,6 +141,16 @@ int TomlFields::required_integer(std::string_view key, long long min, long long 
   return *v;
 }
 
+double TomlFields::fraction(std::string_view key, double min, double below, double fallback) const {
+  const toml::node* n = table_.get(key);
+  if (!n) return fallback;
+  const auto v = n->value<double>();  // an integer too: 0 is a fraction
+  if (!v) fail(key, fmt::format("must be a number, got {}", type_name(*n)));
+  if (!(*v >= min && *v < below))
+    fail(key, fmt::format("must be a number from {} up to below {}, got {}", min, below, *v));
+  return *v;
+}
+
 std::optional<std::string> TomlFields::string(std::string_view key) const {
   const toml::node* n = table_.get(key);
   if (!n) return std::nullopt;

@@ -45,6 +45,8 @@ class TomlFields {
   std::optional<int> integer(std::string_view key, long long min, long long max) const;
   int integer(std::string_view key, long long min, long long max, int fallback) const;
   int required_integer(std::string_view key, long long min, long long max) const;
+  // A number (integer or not) from `min` up to below `below`; `fallback` when missing.
+  double fraction(std::string_view key, double min, double below, double fallback) const;
   std::optional<std::string> string(std::string_view key) const;
   bool boolean(std::string_view key, bool fallback) const;
   // One of `choices`; returns its index.

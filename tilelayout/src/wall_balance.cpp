@@ -10,13 +10,17 @@ namespace l2 {
 void read_balance(const TomlFields& top, Wall& wall) {
   const toml::table* table = top.table("balance");
   if (!table) return;
-  const TomlFields f(*table, "balance", top.source(), {"mode", "assignment", "survive_host_loss"});
+  const TomlFields f(*table, "balance", top.source(),
+                     {"mode", "assignment", "survive_host_loss", "resistance", "tile_cost"});
   wall.balance.line = f.line();
   const std::vector<std::string_view> modes(std::begin(kBalanceModeNames),
                                             std::end(kBalanceModeNames));
   wall.balance.mode = static_cast<BalanceMode>(f.choice("mode", modes, 0));
   wall.balance.heaviest_first = f.choice("assignment", {"policy", "heaviest-first"}, 0) == 1;
   wall.balance.survive_host_loss = f.boolean("survive_host_loss", false);
+  // Below 1: a resistance of 1 would never take a layout, and a tile cost of 1 is all overhead.
+  wall.balance.resistance = f.fraction("resistance", 0, 1, 0);
+  wall.balance.tile_cost = f.fraction("tile_cost", 0, 1, 0);
   const bool balancing = wall.balance.balancing();
   // Only a balancing run re-plans, so only it can hand a dead host's tiles to the others.
   if (wall.balance.survive_host_loss && !balancing) {

@@ -377,6 +377,15 @@ TEST(WallFile, BalanceSection) {
   EXPECT_FALSE(w.balance.survive_host_loss);
   EXPECT_TRUE(parse_wall(kBase + "[balance]\nmode = \"kd\"\nsurvive_host_loss = true\n", "t.toml")
                   .balance.survive_host_loss);
+  EXPECT_EQ(w.balance.resistance, 0);
+  EXPECT_EQ(w.balance.tile_cost, 0);
+  const Wall r = parse_wall(
+      kBase + "[balance]\nmode = \"strips\"\nresistance = 0.1\ntile_cost = 0.15\n", "t.toml");
+  EXPECT_DOUBLE_EQ(r.balance.resistance, 0.1);
+  EXPECT_DOUBLE_EQ(r.balance.tile_cost, 0.15);
+  EXPECT_EQ(
+      parse_wall(kBase + "[balance]\nmode = \"kd\"\nresistance = 0\n", "t.toml").balance.resistance,
+      0);
 }
 
 TEST(WallFile, BalanceErrorsNameTheLineAndField) {
@@ -392,6 +401,15 @@ TEST(WallFile, BalanceErrorsNameTheLineAndField) {
   EXPECT_EQ(error_of(kBase + "[balance]\nsurvive_host_loss = true\n"),
             "walls/t.toml:17: balance.survive_host_loss: needs balancing: mode = \"strips\" or "
             "\"kd\", or assignment = \"heaviest-first\"");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\nresistance = 1\n"),
+            "walls/t.toml:18: balance.resistance: must be a number from 0 up to below 1, got 1");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\nresistance = -0.5\n"),
+            "walls/t.toml:18: balance.resistance: must be a number from 0 up to below 1, got "
+            "-0.5");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\nresistance = \"10%\"\n"),
+            "walls/t.toml:18: balance.resistance: must be a number, got a string");
+  EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\ntile_cost = 1.5\n"),
+            "walls/t.toml:18: balance.tile_cost: must be a number from 0 up to below 1, got 1.5");
   EXPECT_EQ(error_of(kBase + "[balance]\nmodes = \"kd\"\n"),
             "walls/t.toml:17: balance.modes: unknown key");
   EXPECT_EQ(error_of(kBase + "[depth]\nlayers = 2\n[balance]\nmode = \"strips\"\n"),

@@ -99,6 +99,8 @@ class LiveBalance {
   std::uint64_t mixed_swaps_ = 0;
   std::uint64_t swaps_checked_ = 0;
   std::vector<std::string> rejected_;
+  int resisted_ = 0;                   // new layouts not taken: they would not pay (resistance)
+  double best_resisted_ = 1;           // the lowest predicted frame time ratio among them
   std::string strips_uncounted_;       // why the strips are not counted; empty: they are
   LayoutMessage last_;                 // the last layout's tiles and pipeservers
   std::vector<std::string> lines_;     // by frame sent so far, the LAYOUT line

@@ -35,6 +35,8 @@ struct RunOptions {
   PathChoice path = PathChoice::Dvi;   // --path dvi | vizserver | both
   std::string balance;                 // static | strips | kd; empty: the wall's [balance]
   bool survive_host_loss = false;      // balancing: a dead pipeserver's tiles to the others
+  std::optional<double> resistance;    // over the wall's [balance] resistance
+  std::optional<double> tile_cost;     // over the wall's [balance] tile_cost
   bool compare = false;                // both: every display identical byte for byte on both paths
   int threads = 1;                     // emulator routing threads
   std::string link_codec = "auto";     // frames to the columns, tiles to the server (frame_delta)
@@ -74,7 +76,8 @@ Status run_options_error(const RunOptions& options);
 // ms for longer than it would otherwise. Empty for other runs.
 std::vector<std::string> pausable_pipeserver_args(const RunOptions& options);
 
-// The wall's [balance] with --balance over its mode, and --survive-host-loss.
+// The wall's [balance] with --balance over its mode, --resistance and --tile-cost over its
+// own, and --survive-host-loss.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
 // Why this run cannot balance as asked (--survive-host-loss without balancing, or on another
 // path than dvi, or over MPI), or nullopt: one line naming the option or the wall file's line.

@@ -66,6 +66,11 @@ struct BalanceSpec {
   // `survive_host_loss = true`: a live run goes on when a pipeserver dies, its tiles re-planned
   // over the others (l2wall run --survive-host-loss).
   bool survive_host_loss = false;
+  // `resistance`: a new layout is taken only when predicted to shorten the frame by this
+  // fraction; `tile_cost`: a display tile's fixed part in that prediction, as a fraction of
+  // the mean tile time (balance/balancer.hpp, BalanceSettings). 0: off.
+  double resistance = 0;
+  double tile_cost = 0;
   int line = 0;  // of [balance], for errors found later
   // Whether it asks for more than the static tiling: a mode that re-cuts, or the assignment.
   bool balancing() const { return mode != BalanceMode::Static || heaviest_first; }
