@@ -1,14 +1,18 @@
 // --survive-host-loss at the edges (issues 32, 34): a pipeserver lost at frame 0, 1 or 2 (the
-// run goes on), two lost (it goes on where the others' framebuffers hold every tile, or ends
-// saying they cannot), one stopped (SIGSTOP) rather than killed (it ends naming it). Each says
-// so in one line naming the pipeserver; none hangs, none leaves a process or a shared-memory
-// link.
+// run goes on), two lost (it goes on where tilelayout says two framebuffers hold every tile, and
+// ends saying they cannot on a wall that survives only one), one stopped (SIGSTOP) rather than
+// killed (it ends naming it). Each says so in one line naming the pipeserver; none hangs, none
+// leaves a process or a shared-memory link.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <fstream>
+#include <optional>
 #include <regex>
+#include <utility>
 
+#include "tilelayout/survival.hpp"
 #include "wall_run.hpp"
 
 namespace l2 {
@@ -18,18 +22,6 @@ using namespace std::chrono_literals;
 using namespace testing_support;
 
 constexpr auto kRunBound = 120s;
-
-// Pipeserver `pipeserver`'s pid once it runs and has logged `frames` frames (0: as soon as it
-// runs, before its first frame reaches anyone); -1 if that never happens.
-pid_t pipeserver_at(const WallRun& run, int pipeserver, int frames) {
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < deadline) {
-    const auto pids = run.pipeservers(pipeserver);
-    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= frames) return pids.front();
-    std::this_thread::sleep_for(2ms);
-  }
-  return -1;
-}
 
 std::vector<std::string> surviving_run(const fs::path& wall, const std::string& frames,
                                        const std::string& stall_ms = "60000") {
@@ -83,36 +75,90 @@ TEST_P(LostAtFrame, IsSurvived) {
 
 INSTANTIATE_TEST_SUITE_P(Frames, LostAtFrame, ::testing::Values(0, 1, 2));
 
-// Two of four lost: the two left take every tile where their framebuffers hold them, or the run
-// ends saying they cannot; both losses are named either way.
-TEST(LostTwo, IsSurvivedOrEndsTheRunSayingWhy) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-lost-two-{}", getpid());
-  WallRun run("lost-two", surviving_run(write_roomy_default_wall(dir), "60"));
+// Kills pipeserver 1 once it has logged 3 frames, then pipeserver 2 once it has logged 6; the
+// two pids.
+std::pair<pid_t, pid_t> kill_two(const WallRun& run) {
   const pid_t first = pipeserver_at(run, 1, 3);
-  ASSERT_GT(first, 0) << run.output();
-  ASSERT_EQ(kill(first, SIGKILL), 0);
+  EXPECT_GT(first, 0) << run.output();
+  if (first > 0) {
+    EXPECT_EQ(kill(first, SIGKILL), 0);
+  }
   const pid_t second = pipeserver_at(run, 2, 6);
-  ASSERT_GT(second, 0) << run.output();
-  ASSERT_EQ(kill(second, SIGKILL), 0);
+  EXPECT_GT(second, 0) << run.output();
+  if (second > 0) {
+    EXPECT_EQ(kill(second, SIGKILL), 0);
+  }
+  return {first, second};
+}
+
+std::string killed(int pipeserver, pid_t pid) {
+  return fmt::format("pipeserver {} (pid {}) killed by signal 9 (Killed)", pipeserver, pid);
+}
+
+// Four 320x240 displays cut into 320x60 tiles for four pipeservers, their framebuffers 322 wide
+// (one tile a row, after its gap) and `height` high, written to DIR/`name`.
+constexpr int kGridFramebufferWidth = 322;
+std::string grid_wall(int height) {
+  return fmt::format(
+      "[display_grid]\ncolumns = 2\nrows = 2\nwidth = 320\nheight = 240\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 60\n"
+      "[pipeservers]\ncount = 4\nframebuffer_width = {}\nframebuffer_height = {}\n",
+      kGridFramebufferWidth, height);
+}
+
+// The grid wall at the framebuffer height tilelayout finds for `lost` losses, written to
+// DIR/`name`.
+fs::path grid_wall_surviving(const fs::path& dir, const std::string& name, int lost) {
+  const std::optional<int> height = survival_height(parse_wall(grid_wall(240), "grid.toml"), lost);
+  EXPECT_TRUE(height);
+  fs::create_directories(dir);
+  const fs::path file = dir / name;
+  std::ofstream(file) << grid_wall(height.value_or(240));
+  return file;
+}
+
+// Two of four lost on a wall whose framebuffers tilelayout says hold every tile on any two
+// pipeservers: the run goes on to its last frame, and the summary names both losses.
+TEST(LostTwo, IsSurvivedWhereTilelayoutSaysTwoLeftHoldEveryTile) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-lost-two-{}", getpid());
+  const fs::path wall_file = grid_wall_surviving(dir, "two.toml", 2);
+  ASSERT_EQ(survival(load_wall(wall_file)).survives, 2);
+  WallRun run("lost-two", surviving_run(wall_file, "40"));
+  const auto [first, second] = kill_two(run);
   const ExitStatus status = run.wait(kRunBound);
   const std::string output = run.output();
-  EXPECT_NE(output.find(fmt::format("pipeserver 1 (pid {}) killed by signal 9 (Killed)", first)),
-            std::string::npos)
-      << output;
-  EXPECT_NE(output.find(fmt::format("pipeserver 2 (pid {}) killed by signal 9 (Killed)", second)),
-            std::string::npos)
-      << output;
+  EXPECT_EQ(status.code, 0) << output;
+  EXPECT_NE(output.find(killed(1, first)), std::string::npos) << output;
+  EXPECT_NE(output.find(killed(2, second)), std::string::npos) << output;
   const std::string summary = slurp(run.out() / "summary.txt");
-  if (status.code == 0) {
-    EXPECT_NE(summary.find("balance: lost pipeserver 1"), std::string::npos) << summary;
-    EXPECT_NE(summary.find("balance: lost pipeserver 2"), std::string::npos) << summary;
-  } else {
-    EXPECT_EQ(status.code, 1) << output;
-    EXPECT_NE(output.find("the run cannot go on without it: the other pipeservers' framebuffers "
-                          "cannot hold"),
-              std::string::npos)
-        << output;
-  }
+  EXPECT_NE(summary.find("l2wall run: 40 frames"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("balance: lost " + killed(1, first)), std::string::npos) << summary;
+  EXPECT_NE(summary.find("balance: lost " + killed(2, second)), std::string::npos) << summary;
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// Two of four lost on the same wall sized for one loss only: two framebuffers carry fewer tile
+// pixels than the displays have, whatever the cut, so the second loss ends the run in one line
+// saying why, and the run names both.
+TEST(LostTwo, EndsTheRunSayingWhyWhereTheWallSurvivesOnlyOne) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-lost-one-{}", getpid());
+  const fs::path wall_file = grid_wall_surviving(dir, "one.toml", 1);
+  const Wall wall = load_wall(wall_file);
+  ASSERT_EQ(survival(wall).survives, 1);
+  ASSERT_LT(2 * wall.framebuffer_height * (kGridFramebufferWidth - 2), 4 * 320 * 240);
+  WallRun run("lost-two-ends", surviving_run(wall_file, "100000"));
+  const auto [first, second] = kill_two(run);
+  const ExitStatus status = run.wait(kRunBound);
+  const std::string output = run.output();
+  EXPECT_EQ(status.code, 1) << output;
+  EXPECT_NE(output.find(killed(1, first) + " while rendering frame "), std::string::npos) << output;
+  EXPECT_NE(output.find(killed(2, second) + " while rendering frame "), std::string::npos)
+      << output;
+  EXPECT_NE(output.find(", and the run cannot go on without it: the other pipeservers' "
+                        "framebuffers cannot hold pipeserver 2's tiles: "),
+            std::string::npos)
+      << output;
   expect_clean(run);
   fs::remove_all(dir);
 }

@@ -193,6 +193,19 @@ inline fs::path write_roomy_default_wall(const fs::path& dir, const std::string&
   return file;
 }
 
+// Pipeserver `pipeserver`'s pid once it runs and has logged `frames` frames (0: as soon as it
+// runs, before its first frame reaches anyone); -1 if that never happens. Found by its log
+// (--report OUT/pipeserver-<i>.log), which it has on every path.
+inline pid_t pipeserver_at(const WallRun& run, int pipeserver, int frames) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const auto pids = run.processes_naming(fmt::format("pipeserver-{}.log", pipeserver));
+    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= frames) return pids.front();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return -1;
+}
+
 // Waits until pipeserver `pipeserver` has published a few frames; returns its pid.
 inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
