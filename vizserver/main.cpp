@@ -67,6 +67,11 @@ void put_frame(Outputs& out, const l2::viz::ComposedFrame& frame) {
 void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Outputs& out,
            int frames) {
   for (int written = 0; written < frames;) {
+    // The watcher's verdicts first: a frame may wait for nothing but a lost pipeserver.
+    if (out.stream) {
+      for (const std::uint32_t lost : out.stream->take_lost())
+        server.lose_pipeserver(static_cast<int>(lost));
+    }
     const l2::viz::FramePtr frame = queue.pop(std::chrono::milliseconds(100));
     if (frame) {
       put_frame(out, *frame);
@@ -147,6 +152,12 @@ int main(int argc, char** argv) {
                  "port first, then every swapped frame's display pictures, ERROR before a "
                  "failed run exits (docs/vizserver-protocol.md)")
       ->check(l2::viz::endpoint_error, "HOST:PORT");
+  bool survive_loss = false;
+  app.add_flag("--survive-loss", survive_loss,
+               "a pipeserver whose connection closes early does not end the run: the watcher "
+               "says on the display stream whether it is lost (LOST; frames then complete "
+               "without it) or the run ends (l2wall run --survive-host-loss)")
+      ->needs("--display-stream");
   app.add_option("--log", log_path, "Write the listening and per-swap lines here, not stdout");
   l2::add_timeout_option(app, "accept-timeout", accept_timeout_ms, true,
                          "for all pipeservers to connect; 0 waits forever");
@@ -168,6 +179,7 @@ int main(int argc, char** argv) {
   options.port = static_cast<std::uint16_t>(port);
   options.accept_timeout = std::chrono::milliseconds(accept_timeout_ms);
   options.stall_timeout = std::chrono::milliseconds(stall_timeout_ms);
+  options.survive_losses = survive_loss;
   Outputs out;
   out.png_dir = out_dir;
   try {

@@ -31,6 +31,10 @@ void CompositingServer::start() {
   loop_ = std::make_unique<ServerLoop>(options_, std::move(listener_), port_, shared_, on_swap_);
 }
 
+void CompositingServer::lose_pipeserver(int pipeserver) {
+  if (loop_) loop_->lose(pipeserver);
+}
+
 void CompositingServer::stop() {
   loop_.reset();  // the loop's destructor wakes and joins its thread
   listener_.reset();

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <span>
 #include <vector>
 
 namespace l2::viz {
@@ -57,6 +59,25 @@ void DisplaySender::send_error(const std::string& text) noexcept {
     send_all(fd_.get(), parts, Clock::now() + std::chrono::seconds(1), peer_);
   } catch (const std::exception&) {
     // The watcher is gone or not reading: it will see the connection close instead.
+  }
+}
+
+std::vector<std::uint32_t> DisplaySender::take_lost() {
+  std::vector<std::uint32_t> lost;
+  for (;;) {
+    std::array<std::uint8_t, kHeaderBytes + 4> m{};
+    const ssize_t n = ::recv(fd_.get(), m.data(), m.size(), MSG_PEEK | MSG_DONTWAIT);
+    // Nothing yet, EOF (watcher_gone() says so), or a message not all here: later.
+    if (n < static_cast<ssize_t>(m.size())) return lost;
+    const Result<Header> h =
+        decode_header(std::span<const std::uint8_t, kHeaderBytes>(m.data(), kHeaderBytes),
+                      Protocol::DisplayStream);
+    if (!h.ok() || h->kind != Kind::Lost || h->payload_bytes != 4) {
+      throw VizError(fmt::format("{}: the watcher sent {} where only LOST may come", peer_,
+                                 h.ok() ? kind_name(h->kind) : h.reason()));
+    }
+    [[maybe_unused]] const ssize_t taken = ::recv(fd_.get(), m.data(), m.size(), MSG_DONTWAIT);
+    lost.push_back(get_u32(m.data() + kHeaderBytes));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "vizserver/display_stream.hpp"
 #include "vizserver/frame_assembler.hpp"
@@ -27,7 +28,11 @@ class DisplaySender {
   void send_frame(const ComposedFrame& frame);
   // The failure line as ERROR, before the server exits. Best effort: never throws.
   void send_error(const std::string& text) noexcept;
-  // True once the watcher has closed its end (it never sends, so anything readable is EOF).
+  // The pipeservers the watcher said are lost (LOST messages), as they arrive; never blocks.
+  // Throws VizError for anything else the watcher sends, or a LOST cut short.
+  std::vector<std::uint32_t> take_lost();
+  // True once the watcher has closed its end (it sends nothing but LOST, which take_lost()
+  // reads first, so anything else readable is EOF).
   bool watcher_gone() const;
 
   const std::string& peer() const { return peer_; }

@@ -30,6 +30,12 @@ std::array<std::uint8_t, kHeaderBytes + 20> encode(const Shown& m) {
   return out;
 }
 
+std::array<std::uint8_t, kHeaderBytes + 4> encode_lost(std::uint32_t pipeserver) {
+  auto out = message_start<4>(Kind::Lost);
+  put_u32(out.data() + 12, pipeserver);
+  return out;
+}
+
 Listening decode_listening(std::span<const std::uint8_t> f) {
   return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
 }

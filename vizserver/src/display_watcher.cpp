@@ -208,6 +208,13 @@ void DisplayWatcher::read_stream() {
   }
 }
 
+void DisplayWatcher::send_lost(std::uint32_t pipeserver) {
+  // The reader thread only reads this socket: a send from here does not meet it.
+  const auto message = encode_lost(pipeserver);
+  const iovec parts[] = {{const_cast<std::uint8_t*>(message.data()), message.size()}};
+  send_all(fd_.get(), parts, Clock::now() + io_timeout_, peer_);
+}
+
 void DisplayWatcher::publish(ComposedFrame frame) {
   const std::uint32_t number = frame.frame;
   auto ptr = std::make_shared<const ComposedFrame>(std::move(frame));

@@ -26,7 +26,7 @@ std::string FrameAssembler::name(int pipeserver) const {
 }
 
 bool FrameAssembler::waits_for(const Pipeserver& s, std::uint32_t frame) const {
-  return !s.last_done || *s.last_done < frame;
+  return !s.lost && (!s.last_done || *s.last_done < frame);
 }
 
 Status FrameAssembler::connect(int pipeserver) {
@@ -36,6 +36,8 @@ Status FrameAssembler::connect(int pipeserver) {
   }
   if (pipeservers_[pipeserver].connected)
     return Failure{fmt::format("{} is already connected", name(pipeserver))};
+  if (pipeservers_[pipeserver].lost)
+    return Failure{fmt::format("{} was lost: the run goes on without it", name(pipeserver))};
   pipeservers_[pipeserver].connected = true;
   return {};
 }
@@ -44,7 +46,7 @@ Status FrameAssembler::connect(int pipeserver) {
 Status FrameAssembler::check_new_frame(std::uint32_t frame) const {
   for (int i = 0; i < pipeserver_count(); ++i) {
     const Pipeserver& s = pipeservers_[i];
-    if (!s.closed || !waits_for(s, frame)) continue;
+    if (!s.closed || !waits_for(s, frame) || survive_losses_) continue;
     return Failure{s.last_done
                        ? fmt::format("frame {} can never complete: {} disconnected after frame {}",
                                      frame, name(i), *s.last_done)
@@ -116,6 +118,7 @@ Status FrameAssembler::finish(int pipeserver, const FrameDone& done) {
 Status FrameAssembler::disconnect(int pipeserver) {
   Pipeserver& s = pipeservers_[pipeserver];
   s.closed = true;
+  if (survive_losses_) return {};  // lost, or the run ends: the watcher decides
   if (s.open_frame) {
     return Failure{fmt::format("{} disconnected during frame {} ({} tiles received, no FRAME_DONE)",
                                name(pipeserver), *s.open_frame,
@@ -132,6 +135,17 @@ Status FrameAssembler::disconnect(int pipeserver) {
   return {};
 }
 
+Status FrameAssembler::lose(int pipeserver) {
+  if (pipeserver < 0 || pipeserver >= pipeserver_count()) {
+    return Failure{
+        fmt::format("pipeserver id {} is outside 0..{}", pipeserver, pipeserver_count() - 1)};
+  }
+  Pipeserver& s = pipeservers_[pipeserver];
+  s.lost = true;
+  s.open_frame.reset();
+  return {};
+}
+
 std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int pipeserver) const {
   for (const auto& entry : frames_) {
     if (waits_for(pipeservers_[pipeserver], entry.first)) return entry.first;
@@ -141,7 +155,7 @@ std::optional<std::uint32_t> FrameAssembler::frame_waiting_for(int pipeserver) c
 
 bool FrameAssembler::all_done() const {
   for (const Pipeserver& s : pipeservers_) {
-    if (!s.connected || !s.closed) return false;
+    if (!s.lost && (!s.connected || !s.closed)) return false;
   }
   return frames_.empty();
 }

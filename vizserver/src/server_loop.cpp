@@ -40,6 +40,7 @@ ServerLoop::ServerLoop(const ServerOptions& options, Fd listener, std::uint16_t 
       on_swap_(std::move(on_swap)),
       assembler_(options.display_sizes, options.pipeservers, options.background,
                  options.max_buffered_bytes) {
+  if (options.survive_losses) assembler_.survive_losses();
   int fds[2];
   if (::pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) {
     throw VizError(fmt::format("vizserver: pipe failed: {}", std::strerror(errno)));
@@ -56,8 +57,60 @@ ServerLoop::~ServerLoop() {
 }
 
 void ServerLoop::stop() {
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->stop = true;
+  }
   const char byte = 1;
   [[maybe_unused]] const ssize_t n = ::write(wake_write_.get(), &byte, 1);
+}
+
+void ServerLoop::lose(int pipeserver) {
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->lose.push_back(pipeserver);
+  }
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t n = ::write(wake_write_.get(), &byte, 1);
+}
+
+bool ServerLoop::woken() {
+  char scratch[64];
+  while (::read(wake_read_.get(), scratch, sizeof scratch) > 0) {
+  }
+  std::vector<int> lose;
+  {
+    std::lock_guard lock(shared_->mutex);
+    if (shared_->stop) return true;
+    lose.swap(shared_->lose);
+  }
+  for (const int s : lose) {
+    if (const Status taken = assembler_.lose(s); !taken.ok()) {
+      log_error(fmt::format("LOST from the watcher: {}", taken.reason()));
+      continue;
+    }
+    bool connected = false;
+    for (auto& c : conns_) {
+      if (c->dead || c->pipeserver != s) continue;
+      connected = true;
+      close(*c, std::nullopt);
+    }
+    if (!connected && !assembler_.connected(s)) ++lost_before_hello_;
+    log_error(fmt::format("pipeserver {} lost: the run goes on without it", s));
+  }
+  return false;
+}
+
+void ServerLoop::peer_closed(Connection& c, std::optional<std::string> reason) {
+  if (options_.survive_losses && c.pipeserver >= 0) {
+    // Noted when it leaves work behind; one that ends after its last frame leaves none.
+    if (reason || assembler_.frame_waiting_for(c.pipeserver)) {
+      log_error(reason.value_or(
+          fmt::format("{} closed the connection while a frame waits for it", who(c))));
+    }
+    reason.reset();
+  }
+  close(c, reason);
 }
 
 void ServerLoop::run() {
@@ -74,7 +127,7 @@ void ServerLoop::run() {
     if (rc < 0 && errno != EINTR) {
       fail(fmt::format("vizserver: poll failed: {}", std::strerror(errno)));
     }
-    if (rc > 0 && (fds[0].revents & POLLIN)) break;  // stop()
+    if (rc > 0 && (fds[0].revents & POLLIN) && woken()) break;  // stop()
     if (rc > 0 && (fds[1].revents & POLLIN)) accept_all();
     // conns_ may have grown in accept_all; only the ones polled have revents.
     for (std::size_t i = 2; i < fds.size() && !failure_; ++i) {
@@ -157,16 +210,17 @@ void ServerLoop::read_some(Connection& c) {
                 : std::span<std::uint8_t>(c.body.data() + c.body_got, c.body.size() - c.body_got);
     const ssize_t n = ::recv(c.fd.get(), dst.data(), std::min(dst.size(), budget), 0);
     if (n == 0 || (n < 0 && errno == ECONNRESET)) {
-      close(c, c.head.has_header() ? std::optional<std::string>(fmt::format(
-                                         "{} closed the connection in the middle of a {} message",
-                                         who(c), kind_name(c.head.header().kind)))
-                                   : std::nullopt);
+      peer_closed(c, c.head.has_header()
+                         ? std::optional<std::string>(
+                               fmt::format("{} closed the connection in the middle of a {} message",
+                                           who(c), kind_name(c.head.header().kind)))
+                         : std::nullopt);
       return;
     }
     if (n < 0) {
       if (errno == EINTR) continue;
       if (errno == EAGAIN || errno == EWOULDBLOCK) return;
-      close(c, fmt::format("{}: receive failed: {}", who(c), std::strerror(errno)));
+      peer_closed(c, fmt::format("{}: receive failed: {}", who(c), std::strerror(errno)));
       return;
     }
     c.last_activity = Clock::now();
@@ -390,8 +444,8 @@ void ServerLoop::publish_swaps() {
 }
 
 void ServerLoop::check_timers(Clock::time_point now) {
-  if (hellos_ < assembler_.pipeserver_count() && options_.accept_timeout.count() > 0 &&
-      now - started_ > options_.accept_timeout) {
+  if (hellos_ + lost_before_hello_ < assembler_.pipeserver_count() &&
+      options_.accept_timeout.count() > 0 && now - started_ > options_.accept_timeout) {
     fail(fmt::format("only {} of {} pipeservers said HELLO within {:.1f} s (listening on {}:{})",
                      hellos_, assembler_.pipeserver_count(), seconds(options_.accept_timeout),
                      options_.host, port_));

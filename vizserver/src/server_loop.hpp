@@ -32,6 +32,8 @@ struct ServerShared {
   StripErrorCounts counts;
   bool ended = false;     // the loop has returned
   bool all_left = false;  // ... because every pipeserver finished and disconnected
+  bool stop = false;      // stop() asked the loop to end
+  std::vector<int> lose;  // lose() asked, not yet taken by the loop
 };
 
 class ServerLoop {
@@ -41,6 +43,7 @@ class ServerLoop {
   ~ServerLoop();  // stops and joins
 
   void stop();
+  void lose(int pipeserver);  // CompositingServer::lose_pipeserver, from any thread
 
  private:
   // One peer. Reads go header (12 bytes) -> fixed part -> variable part (pixels, text), each
@@ -88,8 +91,13 @@ class ServerLoop {
   bool stalled_mid_message(const Connection& c, Clock::time_point now);
   std::string message_progress(const Connection& c) const;
   void shut_down();
+  // The wake-up pipe was readable: drains it; true when stop() asked, else takes lose()s.
+  bool woken();
+  // A pipeserver's connection ended (EOF, reset): with survive_losses it awaits lose().
+  void peer_closed(Connection& c, std::optional<std::string> reason);
 
   ServerOptions options_;
+  int lost_before_hello_ = 0;  // lost without ever saying HELLO: not awaited
   Fd listener_;
   std::uint16_t port_;
   std::shared_ptr<ServerShared> shared_;

@@ -19,7 +19,7 @@ constexpr std::size_t kMaxDisplayPayload =
 
 bool of_protocol(std::uint16_t k, Protocol protocol) {
   if (protocol == Protocol::Tiles) return k >= 1 && k <= 8;
-  return k == 6 || (k >= 16 && k <= 18);
+  return k == 6 || (k >= 16 && k <= 19);
 }
 
 // A refused kind, in the words each protocol's readers have always used.
@@ -70,6 +70,8 @@ std::size_t fixed_bytes(Kind kind) {
       return 16;
     case Kind::Shown:
       return 20;
+    case Kind::Lost:
+      return 4;
   }
   return 0;
 }
@@ -98,6 +100,8 @@ const char* kind_name(Kind kind) {
       return "DISPLAY";
     case Kind::Shown:
       return "SHOWN";
+    case Kind::Lost:
+      return "LOST";
   }
   return "?";
 }

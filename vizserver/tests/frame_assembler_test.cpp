@@ -125,6 +125,51 @@ TEST_F(Assembler, DisconnectWhileAnotherFrameWaitsIsAnError) {
             "pipeserver 1 disconnected before finishing any frame; frame 0 is waiting for it");
 }
 
+// Surviving losses (l2wall run --survive-host-loss): a pipeserver closing mid-frame is no error
+// and the frame waits for the verdict; once lost, frames complete from the others' tiles, with
+// what the lost one sent of its unfinished frame, and later frames never wait for it.
+TEST_F(Assembler, ALostPipeserverIsWaitedForByNoFrame) {
+  a.survive_losses();
+  ASSERT_TRUE(a.add_tile(1, solid(0, 0, 4, 0, 4, 4, kRed)).ok());  // no FRAME_DONE: killed
+  EXPECT_TRUE(a.disconnect(1).ok());
+  ASSERT_TRUE(a.add_tile(0, solid(0, 0, 0, 0, 4, 4, kGreen)).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 1}).ok());
+  EXPECT_TRUE(a.take_complete().empty());  // the verdict is not in yet
+  EXPECT_EQ(a.frame_waiting_for(1), 0u);
+  ASSERT_TRUE(a.lose(1).ok());
+  EXPECT_TRUE(a.lost(1));
+  EXPECT_FALSE(a.frame_waiting_for(1).has_value());
+  auto frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].displays[0].at(1, 1), kGreen);
+  EXPECT_EQ(frames[0].displays[0].at(5, 1), kRed);                  // what it sent before it died
+  ASSERT_TRUE(a.add_tile(0, solid(1, 0, 0, 0, 8, 4, kBlue)).ok());  // its tiles now 0's
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 1, 1}).ok());
+  frames = a.take_complete();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].frame, 1u);
+  EXPECT_EQ(frames[0].displays[0].at(5, 1), kBlue);
+  EXPECT_THAT(a.connect(1).reason(), HasSubstr("pipeserver 1 is already connected"));
+  EXPECT_TRUE(a.disconnect(0).ok());
+  EXPECT_TRUE(a.all_done());
+  EXPECT_THAT(a.lose(2).reason(), HasSubstr("outside 0..1"));
+}
+
+// One lost before it ever connected (killed at frame 0): the other's frames complete alone, and
+// it may no longer say HELLO.
+TEST(AssemblerLosses, APipeserverLostBeforeConnectingIsNotAwaited) {
+  FrameAssembler a{{{4, 4}}, 2};
+  a.survive_losses();
+  ASSERT_TRUE(a.connect(0).ok());
+  ASSERT_TRUE(a.finish(0, FrameDone{0, 0, 0}).ok());
+  EXPECT_TRUE(a.take_complete().empty());
+  ASSERT_TRUE(a.lose(1).ok());
+  EXPECT_EQ(a.take_complete().size(), 1u);
+  EXPECT_EQ(a.connect(1).reason(), "pipeserver 1 was lost: the run goes on without it");
+  EXPECT_TRUE(a.disconnect(0).ok());
+  EXPECT_TRUE(a.all_done());
+}
+
 TEST(AssemblerLimits, BufferedBytesAreBounded) {
   FrameAssembler a({{8, 8}}, 2, {}, 100);
   ASSERT_TRUE(a.connect(0).ok());

@@ -41,6 +41,7 @@ enum class Kind : std::uint16_t {
   Listening = 16,  // display stream (display_stream.hpp) from here on
   Display = 17,
   Shown = 18,
+  Lost = 19,  // watcher -> server: a pipeserver is gone, frames no longer wait for it
 };
 
 // How a tile is composited (spec §7), as TILE_EXT carries it; a TILE is Copy.

@@ -44,6 +44,9 @@ struct ServerOptions {
   std::size_t recent_frames = 8;                    // swapped frames wait_frame can still find
   std::size_t max_buffered_bytes = std::size_t{1} << 30;  // tile bytes held for open frames
   RunToken token{};  // a HELLO without it is refused (run_token.hpp); all zero: none needed
+  // A pipeserver's connection closing early does not end the run: it awaits lose_pipeserver()
+  // (l2wall run --survive-host-loss decides), and frames then complete without it.
+  bool survive_losses = false;
 };
 
 using FramePtr = std::shared_ptr<const ComposedFrame>;
@@ -70,6 +73,10 @@ class CompositingServer {
   void start();
   // Ends the loop and closes every connection. Idempotent.
   void stop();
+  // Pipeserver `pipeserver` is gone (survive_losses): its connection, if any, is closed and no
+  // frame waits for it from now on; frames waiting only for it are swapped. Any thread; after
+  // start().
+  void lose_pipeserver(int pipeserver);
 
   // The displays of `frame` once it is swapped. Throws VizError when the run failed (the
   // failure line), every pipeserver left without sending it, it is older than the recent

@@ -7,6 +7,8 @@
 //   DISPLAY    server -> watcher: one display picture of one frame
 //   SHOWN      server -> watcher: every DISPLAY of that frame was sent (counts of the frame)
 //   ERROR      server -> watcher: why the server ends (its failure line), then it closes
+//   LOST       watcher -> server: a pipeserver died and the run goes on without it
+//              (--survive-loss): frames from then on do not wait for it
 //
 // Pure encoding and validation here; DisplaySender and DisplayWatcher do the I/O.
 #pragma once
@@ -45,6 +47,8 @@ struct Shown {
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Listening& m);
 std::array<std::uint8_t, kHeaderBytes + 16> encode(const DisplayHeader& m);
 std::array<std::uint8_t, kHeaderBytes + 20> encode(const Shown& m);
+// LOST: the pipeserver's id.
+std::array<std::uint8_t, kHeaderBytes + 4> encode_lost(std::uint32_t pipeserver);
 
 // Headers of the stream are read with decode_header(bytes, Protocol::DisplayStream) or a
 // MessageHead of that protocol (wire.hpp): a DISPLAY's length is bounded by kMaxDisplaySide

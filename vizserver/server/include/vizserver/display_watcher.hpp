@@ -53,6 +53,10 @@ class DisplayWatcher {
   Status ended() const;
   bool ended_with_error_message() const;
 
+  // Tells the server that pipeserver `pipeserver` is gone (LOST; a server started with
+  // --survive-loss stops waiting for it). Throws VizError when the stream cannot take it.
+  void send_lost(std::uint32_t pipeserver);
+
  private:
   void run();
   void read_stream();

@@ -12,6 +12,11 @@
 // frame before that frame's FRAME_DONE. A frame is complete when every pipeserver has sent a
 // FRAME_DONE for it or for a later frame (a pipeserver that skips a frame number had nothing
 // for it). Complete frames are composed lowest first.
+//
+// Losses (survive_losses, l2wall run --survive-host-loss): a pipeserver whose connection closes
+// early is then not an error but awaits a verdict, and one declared lost (lose()) is waited for
+// by no frame from then on: a frame is complete when every other pipeserver has finished it.
+// What a lost pipeserver sent of its unfinished frame is composed with that frame.
 #pragma once
 
 #include <cstdint>
@@ -61,8 +66,16 @@ class FrameAssembler {
   Status connect(int pipeserver);
   Status add_tile(int pipeserver, ReceivedTile tile);
   Status finish(int pipeserver, const FrameDone& done);
-  // The connection of `pipeserver` closed. Error if a frame is, or will be, waiting for it.
+  // The connection of `pipeserver` closed. Error if a frame is, or will be, waiting for it
+  // (unless losses are survived: then it waits for lose() or the end of the run).
   Status disconnect(int pipeserver);
+  // Frames close-ended by a pipeserver's connection do not end the run; lose() is expected.
+  void survive_losses() { survive_losses_ = true; }
+  // `pipeserver` is gone for good (connected or not): no frame waits for it from now on.
+  // Error for an id out of range.
+  Status lose(int pipeserver);
+  bool lost(int pipeserver) const { return pipeservers_[pipeserver].lost; }
+  bool connected(int pipeserver) const { return pipeservers_[pipeserver].connected; }
 
   // Removes and composes every complete frame, lowest first.
   std::vector<ComposedFrame> take_complete();
@@ -77,6 +90,7 @@ class FrameAssembler {
  private:
   struct Pipeserver {
     bool connected = false, closed = false;
+    bool lost = false;                        // lose(): no frame waits for it
     std::optional<std::uint32_t> last_done;   // its last FRAME_DONE
     std::optional<std::uint32_t> open_frame;  // tiles sent, FRAME_DONE not yet
   };
@@ -98,6 +112,7 @@ class FrameAssembler {
   std::map<std::uint32_t, Frame> frames_;
   std::size_t buffered_bytes_ = 0;
   std::optional<std::uint32_t> last_composed_;
+  bool survive_losses_ = false;
 };
 
 }  // namespace l2::viz
