@@ -227,6 +227,7 @@ class LiveRun {
     l.frames = o_.frames;
     l.start_timeout = milliseconds(o_.start_timeout_ms);
     l.log = std::filesystem::path(o_.out) / "vizserver.log";
+    l.survive_losses = run_balance(o_, wall_).survive_host_loss;
     return l;
   }
 
@@ -382,6 +383,7 @@ class LiveRun {
     const double seconds = links_open_ ? ms_between(totals_.start, RunClock::now()) / 1000.0 : 0.0;
     if (!balance_->lose(h.pipeserver, pipeservers_.delivered(h), how, seconds)) return false;
     pipeservers_.lose(h);
+    for (auto& p : paths_) p->lose_pipeserver(h.pipeserver);
     std::fprintf(stderr, "%sl2wall: %s; the run goes on without it (--survive-host-loss)\n",
                  progress_shown_ ? "\n" : "", how.c_str());
     if (page_) page_->event(shown_ - 1, how + "; the run goes on without it");

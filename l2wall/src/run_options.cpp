@@ -106,12 +106,13 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
     return Failure{survive +
                    ": does not run over MPI (--mpi): mpirun ends every rank once one "
                    "dies"};
-  // The compositing server completes a frame when every pipeserver has sent its part: one that
-  // died would hold up every frame after it.
-  if (spec.survive_host_loss && runs_viz(o.path)) {
+  // A frame shown stale keeps older pixels where the lost pipeserver's tiles were on the DVI
+  // path, and the background on the vizserver path: the two paths would differ there.
+  if (spec.survive_host_loss && o.path == PathChoice::Both) {
     return Failure{survive +
-                   ": runs on --path dvi only (the compositing server waits for every "
-                   "pipeserver's tiles of a frame)"};
+                   ": runs on --path dvi or vizserver, not both (a frame shown stale differs "
+                   "between them: older pixels on the DVI path, the background on the "
+                   "vizserver path)"};
   }
   return {};
 }

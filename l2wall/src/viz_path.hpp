@@ -50,6 +50,7 @@ class VizPath final : public DisplayPath {
     pipeservers_ = &pipeservers;
   }
 
+  void lose_pipeserver(int pipeserver) override { side_->lose_pipeserver(pipeserver); }
   void finish() override;
   void shut_down() override { side_->shut_down(); }
   void add_totals(RunTotals&) const override {}

@@ -28,13 +28,19 @@ std::vector<std::string> vizserver_argv(const VizLaunch& l, std::uint16_t stream
           "--stall-timeout", "0"};
 }
 
+std::vector<std::string> vizserver_args(const VizLaunch& l, std::uint16_t stream_port) {
+  std::vector<std::string> argv = vizserver_argv(l, stream_port);
+  if (l.survive_losses) argv.push_back("--survive-loss");
+  return argv;
+}
+
 }  // namespace
 
 VizserverProcess::VizserverProcess(const VizLaunch& launch)
     : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
   const Fd listener = viz::listen_tcp("127.0.0.1", 0);
-  process_.emplace(vizserver_argv(launch, viz::local_port(listener.get())),
+  process_.emplace(vizserver_args(launch, viz::local_port(listener.get())),
                    std::vector<std::string>{token_variable()});
   accept_stream(listener, launch);
 }
@@ -97,6 +103,15 @@ viz::FramePtr VizserverProcess::frame(int frame, milliseconds timeout) {
   } catch (const viz::VizError& e) {
     stream_error_ = e.what();
     return nullptr;
+  }
+}
+
+void VizserverProcess::lose_pipeserver(int pipeserver) {
+  if (!watcher_ || stream_error_) return;
+  try {
+    watcher_->send_lost(static_cast<std::uint32_t>(pipeserver));
+  } catch (const viz::VizError& e) {
+    stream_error_ = e.what();
   }
 }
 

@@ -30,6 +30,7 @@ struct VizLaunch {
   int frames = 0;
   std::chrono::milliseconds start_timeout{60000};  // to listen, and for every HELLO
   std::filesystem::path log;                       // its listening and per-swap lines
+  bool survive_losses = false;  // a pipeserver's early close awaits lose_pipeserver()
 };
 
 class VizserverProcess {
@@ -58,6 +59,10 @@ class VizserverProcess {
   // The last frame returned by frame(), if any: what the displays show on this path.
   const viz::FramePtr& last() const { return last_; }
 
+  // Tells the server pipeserver `pipeserver` is lost (LOST on the display stream; it was
+  // started with --survive-loss): its frames stop waiting for it. A stream that cannot take it
+  // is one that ended: down() says so.
+  void lose_pipeserver(int pipeserver);
   // The process ended, or its display stream ended or broke.
   bool down();
   // Waits up to `grace` for a server whose stream ended to be reaped too, so the fault names

@@ -25,15 +25,18 @@ TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
   EXPECT_EQ(run_balance(o, default_wall()).mode, BalanceMode::Kd);
 }
 
-TEST(BalanceOptions, EveryPathBalancesAndOnlyTheOneMachineDviPathSurvivesALoss) {
+TEST(BalanceOptions, EveryPathBalancesAndEachOneMachinePathAloneSurvivesALoss) {
   RunOptions o;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.path = PathChoice::Both;
   EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.survive_host_loss = true;
   EXPECT_EQ(balance_refusal(o, strips_wall(), false).reason(),
-            "--survive-host-loss: runs on --path dvi only (the compositing server waits for "
-            "every pipeserver's tiles of a frame)");
+            "--survive-host-loss: runs on --path dvi or vizserver, not both (a frame shown stale "
+            "differs between them: older pixels on the DVI path, the background on the "
+            "vizserver path)");
+  o.path = PathChoice::Vizserver;
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
   o.survive_host_loss = false;
   o.path = PathChoice::Dvi;
   o.balance = "strips";

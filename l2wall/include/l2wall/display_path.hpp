@@ -108,6 +108,10 @@ class DisplayPath {
   // pipeservers wait for each frame's layout), and checks its swaps against the layouts where it
   // can. The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.
   virtual void follow_layouts(LiveBalance& /*balance*/, PipeserverSet& /*pipeservers*/) {}
+  // --survive-host-loss: pipeserver `pipeserver` is lost and the run goes on without it. The DVI
+  // path learns it from the PipeserverSet (its link carries no signal from then on); the
+  // compositing server is told, so that its frames stop waiting for it.
+  virtual void lose_pipeserver(int /*pipeserver*/) {}
 };
 
 }  // namespace l2
