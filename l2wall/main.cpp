@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
                 "the run; its tiles go to the others from the next layout on, and the summary "
                 "names it and counts the frames shown stale meanwhile (as [balance] "
                 "survive_host_loss = true; without it a dead pipeserver ends the run, named); "
-                "--path dvi only");
+                "--path dvi or vizserver");
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "
