@@ -95,9 +95,13 @@ int main(int argc, char** argv) {
                       "default: the built-in default wall (walls/kd-2x2.toml: 4 pipeservers, "
                       "2x2 displays)");
   run->add_option("--scene", o.scene,
-                  "mesh | strips | isosurface | patches | swap | picture | movie")
+                  "mesh | strips | isosurface | patches | swap | picture | movie | session | vnc")
       ->check(CLI::IsMember(l2::scene_names()))
       ->capture_default_str();
+  run->add_option("--vnc-password-file", o.vnc_password_file,
+                  "vnc scene: the server's password, in the file `vncpasswd -f` writes (as "
+                  "Xvnc -PasswordFile and x11vnc -rfbauth read it)")
+      ->check(CLI::ExistingFile);
   run->add_option("--frames", o.frames, "application frames to render")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

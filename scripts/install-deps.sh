@@ -16,6 +16,8 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin
   socat iproute2 curl jq xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox
+  libvncserver-dev  # --scene vnc: the coordinator's RFB client (libvncclient)
+  tigervnc-standalone-server tigervnc-tools x11-xserver-utils  # its test: Xvnc, vncpasswd, xsetroot
   chromium  # the control page's browser test (tests/browser/)
 )
 # Node.js and npm drive that browser (playwright-core, which downloads no browser): Debian's,

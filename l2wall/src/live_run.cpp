@@ -32,6 +32,7 @@
 #include "l2wall/run_time.hpp"
 #include "l2wall/stall_verdict.hpp"
 #include "line_reader.hpp"
+#include "live_desktop.hpp"
 #include "live_page.hpp"
 #include "live_windows.hpp"
 #include "pipeserver/live_exit.hpp"
@@ -80,6 +81,7 @@ class LiveRun {
     make_paths();
     start_balance();
     start_windows();
+    start_desktop();
     backends_.start_pipeservers(pipeservers_, launch_pipeservers(), layout_);
     pipeservers_started_ = true;
     if (page_) watch_pipeservers_on_the_page();
@@ -199,6 +201,25 @@ class LiveRun {
 
   void serve_windows() {
     if (windows_) windows_->serve(pipeservers_);
+    if (desktop_) desktop_->serve(pipeservers_);
+  }
+
+  // A vnc run: the one connection to the desktop's server, made before any pipeserver starts
+  // (a server that cannot be reached is one line, not a fault of every pipeserver).
+  void start_desktop() {
+    if (o_.scene != "vnc") return;
+    if (balance_)
+      throw std::runtime_error(
+          "--scene vnc sends each pipeserver the desktop of the wall's tiles: it takes no "
+          "balancing (--balance, or the wall file's [balance])");
+    const auto at = std::find(o_.scene_args.begin(), o_.scene_args.end(), "--content");
+    if (at == o_.scene_args.end() || at + 1 == o_.scene_args.end()) return;
+    try {
+      desktop_ =
+          std::make_unique<LiveDesktop>(connect_vnc(*(at + 1), o_.vnc_password_file), layout_);
+    } catch (const DesktopError& e) {
+      throw std::runtime_error(e.what());
+    }
   }
 
   // The lead path first: the DVI path when it runs (its refreshes pace the run), beside it
@@ -213,7 +234,7 @@ class LiveRun {
     for (const auto& p : paths_) p->add_pipeserver_args(l);
     l.extra_args = pausable_pipeserver_args(o_);
     l.control = balance_ != nullptr;
-    l.windows = windows_ != nullptr;
+    l.windows = windows_ != nullptr || desktop_ != nullptr;  // a vnc run's desktop goes there
     return l;
   }
 
@@ -708,7 +729,8 @@ class LiveRun {
     const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
                               (page_ ? steering_.summary() : std::string()) +
                               (balance_ ? balance_->summary() : std::string()) +
-                              (windows_ ? windows_->summary() : std::string());
+                              (windows_ ? windows_->summary() : std::string()) +
+                              (desktop_ ? desktop_->summary() : std::string());
     const RunReportTexts report =
         run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
     std::vector<std::pair<std::string, std::string>> files;
@@ -750,12 +772,14 @@ class LiveRun {
   std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
   std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
   std::unique_ptr<LiveWindows> windows_;             // a session run's windows
+  std::unique_ptr<LiveDesktop> desktop_;             // a vnc run's desktop
   LineReader stdin_lines_{STDIN_FILENO};             // --window-stdin
   PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the
                                // compositing server
   std::vector<FrameRecord> records_;
   RunTotals totals_;
-  // A session's windows are served with the processes: WANT comes before each READY wait.
+  // A session's windows and a vnc run's desktop are served with the processes: WANT comes
+  // before each READY wait.
   const RunWatch watch_{[this] {
                           check_processes();
                           serve_windows();

@@ -1,0 +1,38 @@
+// A vnc run's desktop on the coordinator (docs/vnc.md): the one RFB connection, and the
+// answers to every pipeserver's WANT on its windows channel, each pipeserver sent only the
+// part of the frame's frozen desktop its tiles show (desktop_frames.hpp).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "desktop_frames.hpp"
+#include "desktop_source.hpp"
+#include "l2wall/pipeserver_set.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+class LiveDesktop {
+ public:
+  // Waits for the server's first picture; throws DesktopError when none comes.
+  LiveDesktop(std::unique_ptr<DesktopSource> source, const TileLayout& layout);
+
+  // Takes in the server's updates and answers every WANT waiting. Throws RunFault when the
+  // server is gone or the desktop changed size (naming the server), or for a line that is not
+  // a WANT.
+  void serve(PipeserverSet& pipeservers);
+
+  // "vnc: desktop 1300x980", for the summary.
+  std::string summary() const;
+
+ private:
+  void take_updates();
+
+  std::unique_ptr<DesktopSource> source_;
+  DesktopFrames frames_;
+  std::vector<std::vector<Rect>> tiles_;  // by pipeserver: its tiles' canvas rectangles
+};
+
+}  // namespace l2
