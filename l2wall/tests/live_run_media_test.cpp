@@ -370,9 +370,10 @@ TEST_F(Media, MissingDamagedOrEmptyContentIsOneLine) {
   EXPECT_EQ(
       refused("missing", {"--scene", "movie", "--content", "/nonexistent/movie.mkv"}),
       std::pair(2, "l2wall: --content: File does not exist: /nonexistent/movie.mkv\n" + usage));
-  EXPECT_EQ(refused("wrong-scene", {"--scene", "mesh", "--content", picture().string()}),
-            std::pair(2, "l2wall: --content is an option of --scene picture or movie, not mesh\n" +
-                             usage));
+  EXPECT_EQ(
+      refused("wrong-scene", {"--scene", "mesh", "--content", picture().string()}),
+      std::pair(2, "l2wall: --content is an option of --scene picture, movie or vnc, not mesh\n" +
+                       usage));
 
   const fs::path empty = dir_ / "empty.tif";
   std::ofstream{empty};

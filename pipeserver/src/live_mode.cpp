@@ -9,9 +9,11 @@
 #include <optional>
 #include <stdexcept>
 
+#include "balance/desktop_messages.hpp"
 #include "dvi_link/dvi_link.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/viz_target.hpp"
+#include "scene_vnc.hpp"
 #include "sync_backchannel/back_channel.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -130,6 +132,37 @@ void take_windows(ControlChannel& windows, Scene& scene, int frame,
   scene.place_windows(placed);
 }
 
+// Frame `frame`'s desktop from the coordinator (desktop_messages.hpp), asked for with WANT and
+// taken into `scene` at once: the coordinator answers every WANT as it comes, so a large answer
+// never waits for this pipeserver to finish a READY wait. Throws ControlError when none comes
+// within `timeout`, it is for another frame or its pixels are not the desktop's.
+void take_desktop(ControlChannel& channel, detail::DesktopScene& scene, int pipeserver, int frame,
+                  std::chrono::milliseconds timeout) {
+  channel.send_line(encode(WantMessage{frame, pipeserver}));
+  const auto line = [&] {
+    std::optional<std::string> l = channel.receive_line(timeout);
+    if (!l)
+      throw ControlError(
+          fmt::format("desktop: nothing for frame {} within {} ms from the run "
+                      "({})",
+                      frame, timeout.count(), scene.address()));
+    return *l;
+  };
+  const DesktopMessage m = decode_desktop(line());
+  if (m.frame != frame)
+    throw ControlError(
+        fmt::format("desktop: DESKTOP for frame {} while frame {} is next", m.frame, frame));
+  scene.hold(m.width, m.height, m.regions);
+  for (int i = 0; i < m.rects; ++i) {
+    const DesktopRect r = decode_desktop_rect(line());
+    try {
+      scene.put(r.rect, r.rgb.data());
+    } catch (const std::invalid_argument& e) {
+      throw ControlError(e.what());
+    }
+  }
+}
+
 // The SYNC? retries (or, for SWAPPED, the timeouts) a pipeserver allows the swap of `frame`. The
 // swap of frame 0 also waits for every other pipeserver's start-up (GL context, first render),
 // which on a loaded machine can take seconds: that wait gets more, whichever path paces the
@@ -167,6 +200,15 @@ int run_live_mode(const LiveOptions& o) {
           : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()), o.link_codec);
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
+  // A vnc scene shows the desktop the coordinator sends on the windows channel.
+  auto* const desktop = dynamic_cast<detail::DesktopScene*>(scene.get());
+  if (desktop && !o.windows)
+    throw ControlError(
+        "--scene vnc shows the desktop l2wall run sends (--windows-fd): run it "
+        "through l2wall run");
+  // Frame 0's waits for every other pipeserver's start-up too.
+  if (desktop && o.frames > 0)
+    take_desktop(*o.windows, *desktop, o.pipeserver, 0, timeout * (swap_retries(o, 0) + 1));
 
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
@@ -179,7 +221,9 @@ int run_live_mode(const LiveOptions& o) {
     const double render_ms = ms_since(t0);
     // Sent before the READY wait, so the coordinator plans the next frame meanwhile.
     if (o.control) send_times(*o.control, ps, k);
-    if (o.windows && k + 1 < o.frames)
+    if (desktop && k + 1 < o.frames)
+      take_desktop(*o.windows, *desktop, o.pipeserver, k + 1, timeout * (o.ready_retries + 1));
+    else if (o.windows && k + 1 < o.frames)
       o.windows->send_line(encode(WantMessage{k + 1, o.pipeserver}));
     const auto t1 = Clock::now();
     int retries = 0;
@@ -204,7 +248,7 @@ int run_live_mode(const LiveOptions& o) {
     if (o.control && k + 1 < o.frames) {
       take_layout(*o.control, wall, ps, k + 1, timeout * (o.ready_retries + 1));
     }
-    if (o.windows && k + 1 < o.frames)
+    if (o.windows && !desktop && k + 1 < o.frames)
       take_windows(*o.windows, *scene, k + 1, timeout * (o.ready_retries + 1));
     // The bucketing figures too: how many tiles a batch lands in, which a large model drives up.
     const BucketStats& b = ps.last_times().buckets;

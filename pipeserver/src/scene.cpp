@@ -66,7 +66,7 @@ const std::vector<std::string>& built_in_scene_names() {
 const std::vector<std::string>& scene_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all = built_in_scene_names();
-    all.insert(all.end(), {"picture", "movie", "session"});
+    all.insert(all.end(), {"picture", "movie", "session", "vnc"});
     return all;
   }();
   return names;
@@ -110,9 +110,14 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
       throw std::invalid_argument("--scene session needs --session FILE");
     return detail::make_session_scene(options.session, options);
   }
+  if (name == "vnc") {
+    if (options.content.empty())
+      throw std::invalid_argument("--scene vnc needs --content HOST:DISPLAY");
+    return detail::make_vnc_scene(options.content.string());
+  }
   throw std::invalid_argument(
       fmt::format("unknown scene '{}' (expected mesh, strips, hotspot, isosurface, patches, swap, "
-                  "picture, movie or session)",
+                  "picture, movie, session or vnc)",
                   name));
 }
 

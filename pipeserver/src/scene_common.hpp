@@ -45,4 +45,7 @@ std::unique_ptr<Scene> make_session_scene(const std::filesystem::path& file,
 std::unique_ptr<Scene> make_movie_scene(const std::filesystem::path& file, double rate,
                                         SourceFit fit);
 
+// A desktop the run's coordinator sends (scene_vnc.hpp); `address`: HOST:DISPLAY, for messages.
+std::unique_ptr<Scene> make_vnc_scene(const std::string& address);
+
 }  // namespace l2::detail

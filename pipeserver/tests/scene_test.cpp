@@ -92,7 +92,7 @@ TEST(Scenes, UnknownNameIsAClearError) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
                  "unknown scene 'teapot' (expected mesh, strips, hotspot, isosurface, patches, "
-                 "swap, picture, movie or session)");
+                 "swap, picture, movie, session or vnc)");
   }
 }
 

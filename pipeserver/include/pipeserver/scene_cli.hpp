@@ -29,11 +29,12 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "...; default: the bunny)")
            ->check(CLI::ExistingFile),
        "mesh"},
+      // Checked as a file in check_scene_options: for vnc it is an address.
       {app.add_option("--content", o.content,
                       "picture scene: a picture, any format OpenImageIO reads, of any size; movie "
-                      "scene: a movie, any format FFmpeg reads")
-           ->check(CLI::ExistingFile),
-       "picture movie"},
+                      "scene: a movie, any format FFmpeg reads; vnc scene: the desktop's server, "
+                      "HOST:DISPLAY (port 5900 + DISPLAY) or HOST::PORT"),
+       "picture movie vnc"},
       {app.add_option("--fit", o.fit,
                       "mesh, picture and movie scenes: how the model or source is laid on the "
                       "canvas: fit (all of it in view, dark on two sides of a canvas of another "
@@ -89,22 +90,32 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
 }
 
 // An option of one scene given for another was ignored without a word: refused instead.
-// A picture, movie or session scene without its file is refused too.
+// A picture, movie or session scene without its file is refused too, as is a vnc scene
+// without its server.
 inline void check_scene_options(const std::vector<SceneOption>& options, const std::string& scene) {
   for (const SceneOption& s : options) {
     if (s.option->get_name() == "--content" && s.option->count() == 0 &&
         (scene == "picture" || scene == "movie")) {
       throw CLI::ValidationError(fmt::format("--scene {} needs --content FILE", scene));
     }
+    if (s.option->get_name() == "--content" && s.option->count() == 0 && scene == "vnc")
+      throw CLI::ValidationError("--scene vnc needs --content HOST:DISPLAY");
+    if (s.option->get_name() == "--content" && s.option->count() > 0 && scene != "vnc") {
+      std::string file = s.option->results().back();
+      if (std::string why = CLI::ExistingFile(file); !why.empty())
+        throw CLI::ValidationError("--content", why);
+    }
     if (s.option->get_name() == "--session" && s.option->count() == 0 && scene == "session")
       throw CLI::ValidationError("--scene session needs --session FILE");
     if (s.scene == nullptr || s.option->count() == 0) continue;
     std::string scenes = s.scene;
     if ((" " + scenes + " ").find(" " + scene + " ") != std::string::npos) continue;
-    for (std::size_t at = scenes.find(' '); at != std::string::npos; at = scenes.find(' ', at)) {
-      scenes.replace(at, 1, " or ");
-      at += 4;
-    }
+    // "a b c" as "a, b or c".
+    const std::size_t last = scenes.rfind(' ');
+    if (last != std::string::npos) scenes.replace(last, 1, " or ");
+    for (std::size_t at = scenes.find(' '); at < scenes.rfind(" or ");
+         at = scenes.find(' ', at + 2))
+      scenes.replace(at, 1, ", ");
     throw CLI::ValidationError(
         fmt::format("{} is an option of --scene {}, not {}", s.option->get_name(), scenes, scene));
   }
