@@ -118,4 +118,42 @@ RgbImage XClient::read(unsigned long window, int x, int y, int width, int height
   return out;
 }
 
+unsigned long XClient::root() const {
+  return DefaultRootWindow(dpy(display_));
+}
+
+void XClient::show_on_root(const RgbImage& picture) {
+  ::Display* d = dpy(display_);
+  const int screen = DefaultScreen(d);
+  const Window root = RootWindow(d, screen);
+  g_error = 0;
+  XSetWindowBackground(d, root, BlackPixel(d, screen));
+  XClearWindow(d, root);
+  const auto destroy = [](XImage* i) { XDestroyImage(i); };
+  std::unique_ptr<XImage, decltype(destroy)> image(
+      XGetImage(d, root, 0, 0, static_cast<unsigned>(picture.width()),
+                static_cast<unsigned>(picture.height()), AllPlanes, ZPixmap),
+      destroy);
+  if (!image) throw std::runtime_error("XClient: cannot make an image of the root's depth");
+  const auto place = [](std::uint8_t c, unsigned long mask) {
+    const int shift = std::countr_zero(mask);
+    return (static_cast<unsigned long>(c) * (mask >> shift) / 255) << shift;
+  };
+  for (int y = 0; y < picture.height(); ++y) {
+    for (int x = 0; x < picture.width(); ++x) {
+      const Rgb c = picture.at(x, y);
+      XPutPixel(image.get(), x, y,
+                place(c.r, image->red_mask) | place(c.g, image->green_mask) |
+                    place(c.b, image->blue_mask));
+    }
+  }
+  // Drawn on the root itself: nothing covers or clears it while the test runs.
+  const GC gc = XCreateGC(d, root, 0, nullptr);
+  XPutImage(d, root, gc, image.get(), 0, 0, 0, 0, static_cast<unsigned>(picture.width()),
+            static_cast<unsigned>(picture.height()));
+  XFreeGC(d, gc);
+  XSync(d, False);
+  if (g_error != 0) throw std::runtime_error("XClient: the X server refused the root's picture");
+}
+
 }  // namespace l2::testing

@@ -32,6 +32,12 @@ class XClient {
   // them: what the screen shows. Throws std::runtime_error when the server refuses.
   RgbImage read(unsigned long window, int x, int y, int width, int height);
 
+  // The screen's root window: the desktop.
+  unsigned long root() const;
+  // Draws `picture` on the root window at its top-left (the rest black) and waits until the
+  // server has drawn it: a desktop of known pixels.
+  void show_on_root(const RgbImage& picture);
+
  private:
   void* display_ = nullptr;  // ::Display*; Xlib's macros stay out of the tests
 };

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -55,9 +56,16 @@ bool XvfbServer::installed() {
   return !find_on_path("Xvfb").empty();
 }
 
-XvfbServer::XvfbServer(int width, int height) {
+XvfbServer::XvfbServer(int width, int height)
+    : XvfbServer("Xvfb",
+                 {"-screen", "0", std::to_string(width) + "x" + std::to_string(height) + "x24",
+                  "-nolisten", "tcp"}) {
+  setenv("DISPLAY", display_.c_str(), 1);
+}
+
+XvfbServer::XvfbServer(const std::string& name, const std::vector<std::string>& server_args) {
   int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("Xvfb: cannot make a pipe");
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(name + ": cannot make a pipe");
   // Keep the write end off fd 3, so the dup2 below really makes a fresh, inheritable fd 3.
   const int high = fcntl(fds[1], F_DUPFD_CLOEXEC, 10);
   close(fds[1]);
@@ -66,31 +74,31 @@ XvfbServer::XvfbServer(int width, int height) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], 3);  // fd 3 survives exec, the pipe not
   const int devnull = open("/dev/null", O_WRONLY | O_CLOEXEC);
-  posix_spawn_file_actions_adddup2(&actions, devnull, 2);  // Xvfb's chatter stays out of logs
-  const std::string program = find_on_path("Xvfb");
-  const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
-  std::vector<std::string> args = {program, "-displayfd", "3",         "-screen",
-                                   "0",     screen,       "-nolisten", "tcp"};
+  posix_spawn_file_actions_adddup2(&actions, devnull, 2);  // the server's chatter stays out of logs
+  const std::string program = find_on_path(name);
+  std::vector<std::string> args = {program, "-displayfd", "3"};
+  args.insert(args.end(), server_args.begin(), server_args.end());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, program.c_str(), &actions, nullptr, argv.data(), environ);
+  const int rc = program.empty()
+                     ? ENOENT
+                     : posix_spawn(&pid_, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
   close(devnull);
   if (rc != 0) {
     close(fds[0]);
-    throw std::runtime_error("Xvfb: cannot start " + program);
+    throw std::runtime_error(name + ": cannot start it");
   }
   const std::string number = read_display_number(fds[0], std::chrono::seconds(20));
   close(fds[0]);
   if (number.empty()) {
     kill(pid_, SIGKILL);
     waitpid(pid_, nullptr, 0);
-    throw std::runtime_error("Xvfb: did not report a display within 20 s");
+    throw std::runtime_error(name + ": did not report a display within 20 s");
   }
   display_ = ":" + number;
-  setenv("DISPLAY", display_.c_str(), 1);
 }
 
 XvfbServer::~XvfbServer() {

@@ -5,6 +5,7 @@
 #include <sys/types.h>
 
 #include <string>
+#include <vector>
 
 namespace l2::testing {
 
@@ -16,6 +17,9 @@ class XvfbServer {
   // Starts `Xvfb -screen 0 <width>x<height>x24 -nolisten tcp` and waits until it accepts
   // clients, then points DISPLAY at it. Throws std::runtime_error when it does not start.
   XvfbServer(int width, int height);
+  // Any X server that reports its display on -displayfd (Xvnc too): `program` (on PATH) with
+  // `args` after -displayfd. DISPLAY is left as it was.
+  XvfbServer(const std::string& program, const std::vector<std::string>& args);
   ~XvfbServer();
   XvfbServer(const XvfbServer&) = delete;
   XvfbServer& operator=(const XvfbServer&) = delete;

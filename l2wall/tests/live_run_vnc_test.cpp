@@ -1,0 +1,259 @@
+// A desktop on the wall through `l2wall run --scene vnc`: a private Xvnc (TigerVNC) on a display
+// it picks itself, loopback only, showing a known picture on its root window. Every display
+// must equal the desktop at its canvas position, 1:1, as the X server itself gives the root
+// back (XGetImage, not RFB); a desktop that changes every ~30 ms must never show two states at
+// once; and an unreachable server, a refused password and a server gone mid-run are one line.
+#include <sys/socket.h>
+
+#include <atomic>
+#include <set>
+#include <thread>
+#include <tuple>
+
+#include "wall_run.hpp"
+#include "wide_wall.hpp"
+#include "x_client.hpp"
+#include "xvfb_server.hpp"
+
+namespace l2 {
+namespace {
+
+using namespace testing_support;
+using ::l2::testing::XClient;
+using ::l2::testing::XvfbServer;
+
+bool installed(const std::string& program) {
+  return run_shell("command -v " + program + " >/dev/null", 10s).status.ok();
+}
+
+// A picture in which every pixel tells where it is: R and G the position within 256 pixels,
+// B which 256-pixel block.
+RgbImage position_picture(int w, int h) {
+  RgbImage p(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      p.set(x, y,
+            {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y),
+             static_cast<std::uint8_t>(16 * (x >> 8) + (y >> 8) + 1)});
+  return p;
+}
+
+// Xvnc at the default wall's canvas size, listening for RFB on 127.0.0.1 only, port 5900 +
+// its display number. `password_file`: VncAuth with that file (vncpasswd -f), else no security.
+class Xvnc {
+ public:
+  explicit Xvnc(const fs::path& password_file = {}) {
+    const Wall wall = default_wall();
+    width = wall.canvas_width;
+    height = wall.canvas_height;
+    std::vector<std::string> args{"-geometry",     fmt::format("{}x{}", width, height),
+                                  "-depth",        "24",
+                                  "-interface",    "127.0.0.1",
+                                  "-nolisten",     "tcp",
+                                  "-AlwaysShared", "-SecurityTypes"};
+    if (password_file.empty()) {
+      args.push_back("None");
+    } else {
+      args.insert(args.end(), {"VncAuth", "-PasswordFile", password_file.string()});
+    }
+    server = std::make_unique<XvfbServer>("Xvnc", args);
+    address = "127.0.0.1" + server->display();
+  }
+  int width = 0, height = 0;
+  std::unique_ptr<XvfbServer> server;
+  std::string address;  // 127.0.0.1:N
+};
+
+class VncRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!installed("Xvnc")) GTEST_SKIP() << "Xvnc is not installed (tigervnc-standalone-server)";
+  }
+};
+
+// Every display of frame `frame` against `desktop` at the display's canvas position (black
+// past the desktop's edge), each pipeserver's frame stamp aside; returns the wrong pixels.
+long wrong_pixels(const WallRun& run, const Wall& wall, int frame, const RgbImage& desktop) {
+  const TileLayout layout = plan_layout(wall);
+  long wrong = 0;
+  for (const Display& display : wall.displays) {
+    const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
+                                    fmt::format("display-{}.png", display.id));
+    std::vector<std::pair<int, int>> stamps;
+    for (const PipeserverPlan& plan : layout.pipeservers) {
+      const DisplayTile& t = plan.tiles.front().tile;
+      if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
+    }
+    const Rect r = display.on_canvas();
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
+        const int dx = r.x + x, dy = r.y + y;
+        const bool inside = dx < desktop.width() && dy < desktop.height();
+        const Rgb want = inside ? desktop.at(dx, dy) : Rgb{};
+        if (shown.at(x, y) != want && ++wrong <= 3)
+          ADD_FAILURE() << fmt::format(
+              "display {} pixel {},{} (canvas {},{}): {},{},{} instead of {},{},{}", display.id, x,
+              y, dx, dy, shown.at(x, y).r, shown.at(x, y).g, shown.at(x, y).b, want.r, want.g,
+              want.b);
+      }
+    }
+  }
+  return wrong;
+}
+
+void expect_desktop_on(const std::string& name, const fs::path& wall_file, const Xvnc& vnc,
+                       const RgbImage& desktop, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"--scene", "vnc", "--content", vnc.address, "--frames", "3"};
+  if (!wall_file.empty()) args.insert(args.end(), {"--wall", wall_file.string()});
+  args.insert(args.end(), extra.begin(), extra.end());
+  WallRun run(name, args);
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << run.output();
+  const Wall wall = wall_file.empty() ? default_wall() : load_wall(wall_file);
+  EXPECT_EQ(wrong_pixels(run, wall, 2, desktop), 0) << name;
+  EXPECT_NE(run.output().find("vnc: desktop " + std::to_string(vnc.width) + "x" +
+                              std::to_string(vnc.height)),
+            std::string::npos)
+      << run.output();
+  expect_clean(run);
+}
+
+TEST_F(VncRun, EveryDisplayIsTheDesktopAtItsCanvasPosition) {
+  Xvnc vnc;
+  XClient x(vnc.server->display());
+  x.show_on_root(position_picture(vnc.width, vnc.height));
+  // What the X server itself holds: the expected desktop, not what RFB carried.
+  const RgbImage desktop = x.read(x.root(), 0, 0, vnc.width, vnc.height);
+  ASSERT_EQ(desktop.at(300, 260), (Rgb{300 & 255, 260 & 255, 16 + 1 + 1}));
+  expect_desktop_on("vnc-default", {}, vnc, desktop);
+  const fs::path dir = WallRun::folder_for("vnc-walls");
+  fs::create_directories(dir);
+  expect_desktop_on("vnc-3x1", write_wide_wall(dir), vnc, desktop);
+  fs::remove_all(dir);
+}
+
+TEST_F(VncRun, ADesktopChangingEveryFewFramesIsNeverTorn) {
+  Xvnc vnc;
+  // Six colours, one after another every ~30 ms, for as long as the run lasts.
+  const std::vector<std::string> colours{"#ff0000", "#00ff00", "#0000ff",
+                                         "#ffff00", "#00ffff", "#ff00ff"};
+  std::atomic<bool> stop{false};
+  std::thread painter([&] {
+    for (std::size_t i = 0; !stop; ++i) {
+      run_shell(fmt::format("DISPLAY={} xsetroot -solid '{}'", vnc.server->display(),
+                            colours[i % colours.size()]),
+                10s);
+      std::this_thread::sleep_for(30ms);
+    }
+  });
+  const int frames = 40;
+  WallRun run("vnc-tearing", {"--scene", "vnc", "--content", vnc.address, "--frames",
+                              std::to_string(frames), "--keep", "every"});
+  const ExitStatus status = run.wait(180s);
+  stop = true;
+  painter.join();
+  ASSERT_TRUE(status.ok()) << run.output();
+  const Wall wall = default_wall();
+  const TileLayout layout = plan_layout(wall);
+  std::set<std::tuple<int, int, int>> seen;
+  for (int k = 0; k < frames; ++k) {
+    std::set<std::tuple<int, int, int>> in_frame;
+    for (const Display& display : wall.displays) {
+      const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", k) /
+                                      fmt::format("display-{}.png", display.id));
+      for (int y = 0; y < shown.height(); ++y) {
+        for (int x = 0; x < shown.width(); ++x) {
+          bool stamp = false;
+          for (const PipeserverPlan& plan : layout.pipeservers) {
+            const DisplayTile& t = plan.tiles.front().tile;
+            stamp =
+                stamp || (t.display == display.id && t.on_display.x == x && t.on_display.y == y);
+          }
+          if (stamp) continue;
+          const Rgb c = shown.at(x, y);
+          in_frame.insert({c.r, c.g, c.b});
+        }
+      }
+    }
+    EXPECT_EQ(in_frame.size(), 1u)
+        << "frame " << k << " shows " << in_frame.size() << " colours at once";
+    seen.insert(in_frame.begin(), in_frame.end());
+  }
+  // The desktop did change during the run: the frames followed it.
+  EXPECT_GE(seen.size(), 3u);
+  expect_clean(run);
+}
+
+TEST_F(VncRun, APasswordFileOpensAServerThatWantsOne) {
+  if (!installed("vncpasswd")) GTEST_SKIP() << "vncpasswd is not installed (tigervnc-tools)";
+  const fs::path dir = WallRun::folder_for("vnc-password");
+  fs::create_directories(dir);
+  const fs::path right = dir / "right.passwd", wrong = dir / "wrong.passwd";
+  ASSERT_TRUE(run_shell(fmt::format("echo wall-pw1 | vncpasswd -f > '{}'", right.string()), 10s)
+                  .status.ok());
+  ASSERT_TRUE(run_shell(fmt::format("echo other-pw | vncpasswd -f > '{}'", wrong.string()), 10s)
+                  .status.ok());
+  Xvnc vnc(right);
+  XClient x(vnc.server->display());
+  x.show_on_root(position_picture(vnc.width, vnc.height));
+  const RgbImage desktop = x.read(x.root(), 0, 0, vnc.width, vnc.height);
+  expect_desktop_on("vnc-password-ok", {}, vnc, desktop, {"--vnc-password-file", right.string()});
+
+  WallRun refused("vnc-password-wrong", {"--scene", "vnc", "--content", vnc.address, "--frames",
+                                         "3", "--vnc-password-file", wrong.string()});
+  EXPECT_EQ(refused.wait(60s).code, 1);
+  const std::string said = refused.output();
+  EXPECT_EQ(said.rfind("l2wall: vnc " + vnc.address + ": the server refused the password", 0), 0u)
+      << said;
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+
+  WallRun none("vnc-password-none", {"--scene", "vnc", "--content", vnc.address, "--frames", "3"});
+  EXPECT_EQ(none.wait(60s).code, 1);
+  EXPECT_EQ(none.output(), "l2wall: vnc " + vnc.address +
+                               ": the server wants a password: give it with --vnc-password-file\n");
+  fs::remove_all(dir);
+}
+
+TEST_F(VncRun, AServerThatCannotBeReachedIsOneLine) {
+  // A port bound but not listening: connections to it are refused.
+  Fd socket_fd(::socket(AF_INET, SOCK_STREAM, 0));
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t len = sizeof addr;
+  ASSERT_EQ(::bind(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  ASSERT_EQ(::getsockname(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), &len), 0);
+  const int port = ntohs(addr.sin_port);
+  const std::string address = fmt::format("127.0.0.1::{}", port);
+  WallRun run("vnc-unreachable", {"--scene", "vnc", "--content", address, "--frames", "3"});
+  EXPECT_EQ(run.wait(60s).code, 1);
+  const std::string out = run.output();
+  EXPECT_EQ(
+      out.rfind(fmt::format("l2wall: vnc {}: cannot connect to 127.0.0.1 port {}: ", address, port),
+                0),
+      0u)
+      << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
+  expect_clean(run);
+}
+
+TEST_F(VncRun, AServerGoneMidRunEndsTheRunNamingIt) {
+  auto vnc = std::make_unique<Xvnc>();
+  const std::string address = vnc->address;
+  WallRun run("vnc-gone", {"--scene", "vnc", "--content", address, "--frames", "100000"});
+  // Once frames reach the displays, the server goes.
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (run.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(50ms);
+  ASSERT_GE(run.pipeserver_log_lines(0), 3) << run.output();
+  vnc.reset();
+  EXPECT_EQ(run.wait(60s).code, 1);
+  EXPECT_NE(run.output().find("l2wall: vnc " + address + ": the server closed the connection"),
+            std::string::npos)
+      << run.output();
+  expect_clean(run);
+}
+
+}  // namespace
+}  // namespace l2
