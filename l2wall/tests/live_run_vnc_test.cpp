@@ -2,7 +2,8 @@
 // it picks itself, loopback only, showing a known picture on its root window. Every display
 // must equal the desktop at its canvas position, 1:1, as the X server itself gives the root
 // back (XGetImage, not RFB); a desktop that changes every ~30 ms must never show two states at
-// once; and an unreachable server, a refused password and a server gone mid-run are one line.
+// once; and an unreachable server, a refused password, a server gone or a desktop resized
+// mid-run are one line.
 #include <sys/socket.h>
 
 #include <atomic>
@@ -251,6 +252,26 @@ TEST_F(VncRun, AServerGoneMidRunEndsTheRunNamingIt) {
   EXPECT_EQ(run.wait(60s).code, 1);
   EXPECT_NE(run.output().find("l2wall: vnc " + address + ": the server closed the connection"),
             std::string::npos)
+      << run.output();
+  expect_clean(run);
+}
+
+TEST_F(VncRun, ADesktopResizedMidRunEndsTheRunSayingSo) {
+  if (!installed("xrandr")) GTEST_SKIP() << "xrandr is not installed (x11-xserver-utils)";
+  Xvnc vnc;
+  WallRun run("vnc-resized", {"--scene", "vnc", "--content", vnc.address, "--frames", "100000"});
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (run.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(50ms);
+  ASSERT_GE(run.pipeserver_log_lines(0), 3) << run.output();
+  ASSERT_TRUE(run_shell(fmt::format("DISPLAY={} xrandr -s 1024x768", vnc.server->display()), 30s)
+                  .status.ok());
+  EXPECT_EQ(run.wait(60s).code, 1);
+  EXPECT_EQ(run.output().rfind(fmt::format("l2wall: vnc {}: the desktop changed size from {}x{} "
+                                           "to 1024x768; the run shows one size\n",
+                                           vnc.address, vnc.width, vnc.height),
+                               0),
+            0u)
       << run.output();
   expect_clean(run);
 }
