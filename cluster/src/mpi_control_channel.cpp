@@ -41,8 +41,8 @@ void MpiControlChannel::send_line(const std::string& line) {
     throw ControlError(
         fmt::format("control channel: a line longer than {} bytes", kMaxControlLine));
   Sending s{std::make_unique<std::string>(line), MPI_REQUEST_NULL};
-  if (MPI_Isend(s.line->data(), static_cast<int>(s.line->size()), MPI_CHAR, peer_,
-                mpi_wire::kControl, MPI_COMM_WORLD, &s.request) != MPI_SUCCESS)
+  if (MPI_Isend(s.line->data(), static_cast<int>(s.line->size()), MPI_CHAR, peer_, tag_,
+                MPI_COMM_WORLD, &s.request) != MPI_SUCCESS)
     throw ControlError(fmt::format("control channel: sending to rank {} failed", peer_));
   sending_.push_back(std::move(s));
 }
@@ -51,13 +51,13 @@ std::optional<std::string> MpiControlChannel::receive_line(std::chrono::millisec
   reap();
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   for (;;) {
-    if (const auto bytes = mpi_wire::waiting(peer_, mpi_wire::kControl)) {
+    if (const auto bytes = mpi_wire::waiting(peer_, tag_)) {
       if (static_cast<std::size_t>(*bytes) > kMaxControlLine)
         throw ControlError(
             fmt::format("control channel: a line longer than {} bytes", kMaxControlLine));
       std::string line(static_cast<std::size_t>(*bytes), '\0');
-      if (MPI_Recv(line.data(), *bytes, MPI_CHAR, peer_, mpi_wire::kControl, MPI_COMM_WORLD,
-                   MPI_STATUS_IGNORE) != MPI_SUCCESS)
+      if (MPI_Recv(line.data(), *bytes, MPI_CHAR, peer_, tag_, MPI_COMM_WORLD, MPI_STATUS_IGNORE) !=
+          MPI_SUCCESS)
         throw ControlError(fmt::format("control channel: receiving from rank {} failed", peer_));
       return line;
     }

@@ -129,6 +129,7 @@ void PipeserverSet::attach(const PipeserverLaunch& launch, const TileLayout& lay
     h.process = std::move(end.process);
     h.channel = std::move(end.channel);
     h.control = std::move(end.control);
+    h.windows = std::move(end.windows);
   }
   place_stamps(layout, 0);
 }

@@ -26,6 +26,7 @@
 #ifdef L2_HAVE_MPI
 #include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_session.hpp"
+#include "cluster/mpi_wire.hpp"
 #include "cluster/rank_map.hpp"
 #include "mpi_rank.hpp"
 #endif
@@ -102,7 +103,8 @@ int run_live(const l2::LiveOptions& o) {
 
 // A rank of an MPI run: a pipeserver that fails ends every rank, since the others wait for it.
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
-int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control) {
+// `windows`: a vnc run's, its desktop over MPI from the coordinator.
+int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows) {
 #ifdef L2_HAVE_MPI
   l2::MpiSession session;
   const l2::CodecTo codec =
@@ -110,7 +112,12 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control) {
   const auto sent = std::make_shared<l2::SentBytes>();
   const auto tiles_sent = std::make_shared<l2::SentBytes>();
   // It lives no longer than the session (MPI_Finalize).
-  if (control) o.control = std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator);
+  if (control)
+    o.control =
+        std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator, l2::mpi_wire::kControl);
+  if (windows)
+    o.windows =
+        std::make_shared<l2::MpiControlChannel>(l2::RankMap::kCoordinator, l2::mpi_wire::kWindows);
   o.links = [sent, tiles, tiles_sent, control, codec](const l2::TileLayout& layout,
                                                       const l2::PipeserverPlan& plan) {
     l2::MpiRankLinks mpi = l2::mpi_rank_links(layout, plan.pipeserver, codec, sent, control);
@@ -123,6 +130,7 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control) {
   };
   const int code = run_live(o);
   o.control.reset();
+  o.windows.reset();
   if (code != 0) l2::MpiSession::abort_all(code);
   l2::report_rank_done(*sent, *tiles_sent);
   return 0;
@@ -130,6 +138,7 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control) {
   (void)o;
   (void)tiles;
   (void)control;
+  (void)windows;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -218,6 +227,10 @@ int run_pipeserver(int argc, char** argv) {
                   "live, with --mpi: also send every tile to the board column rank owning its "
                   "display (the viz path over MPI), waiting for SWAPPED from "
                   "the coordinator");
+  bool mpi_windows = false;
+  group->add_flag("--mpi-windows", mpi_windows,
+                  "live, with --mpi: a vnc run's windows channel as MPI messages with the "
+                  "coordinator (WANT out, the desktop's lines in; instead of --windows-fd)");
   bool mpi_control = false;
   group->add_flag("--mpi-control", mpi_control,
                   "live, with --mpi: a balanced run's control channel as MPI messages with the "
@@ -262,8 +275,8 @@ int run_pipeserver(int argc, char** argv) {
     }
     if (windows_fd >= 0)
       live_options.windows = std::make_shared<l2::SocketControlChannel>(l2::Fd(windows_fd));
-    if ((mpi_viz || mpi_control) && !mpi) {
-      std::fprintf(stderr, "pipeserver: --mpi-viz and --mpi-control need --mpi\n");
+    if ((mpi_viz || mpi_control || mpi_windows) && !mpi) {
+      std::fprintf(stderr, "pipeserver: --mpi-viz, --mpi-control and --mpi-windows need --mpi\n");
       return 2;
     }
     if (mpi_control && control_fd >= 0) {
@@ -271,7 +284,7 @@ int run_pipeserver(int argc, char** argv) {
       return 2;
     }
     live_options.link_codec = l2::parse_link_choice(link_codec).value();
-    if (mpi) return run_mpi_rank(live_options, mpi_viz, mpi_control);
+    if (mpi) return run_mpi_rank(live_options, mpi_viz, mpi_control, mpi_windows);
     return run_live(live_options);
   }
   if (o.out.empty() && o.reference.empty()) {

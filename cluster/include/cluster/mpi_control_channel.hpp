@@ -1,6 +1,7 @@
 // The load balancer's control channel (balance/control_channel.hpp) as MPI messages: the TIMES
 // and LAYOUT lines between a pipeserver rank and the coordinator, one line per message under a
-// tag of their own (mpi_wire::kControl), so neither end takes another message for one.
+// tag of their own (mpi_wire::kControl), so neither end takes another message for one; a vnc
+// run's desktop lines the same way under mpi_wire::kWindows.
 #pragma once
 
 #include <mpi.h>
@@ -17,9 +18,10 @@ namespace l2 {
 
 class MpiControlChannel final : public ControlChannel {
  public:
-  // `peer`: the rank at the other end. MPI must be initialised (MpiSession) and stay so while
-  // this channel lives.
-  explicit MpiControlChannel(int peer) : peer_(peer) {}
+  // `peer`: the rank at the other end; `tag`: the channel's own (mpi_wire::kControl for
+  // balancing, kWindows for a vnc run's desktop). MPI must be initialised (MpiSession) and stay
+  // so while this channel lives.
+  explicit MpiControlChannel(int peer, int tag) : peer_(peer), tag_(tag) {}
   ~MpiControlChannel() override;
   MpiControlChannel(const MpiControlChannel&) = delete;
   MpiControlChannel& operator=(const MpiControlChannel&) = delete;
@@ -38,6 +40,7 @@ class MpiControlChannel final : public ControlChannel {
   void reap();
 
   int peer_;
+  int tag_;
   std::deque<Sending> sending_;
 };
 

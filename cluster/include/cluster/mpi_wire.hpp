@@ -24,6 +24,7 @@ enum Tag : int {
   kComposed = 10,    // column -> coordinator: the frame its compositing completed
   kSwapped = 11,     // coordinator -> pipeserver: frames up to this one are composed everywhere
   kControl = 12,     // pipeserver <-> coordinator: a balanced run's TIMES and LAYOUT lines
+  kWindows = 13,     // pipeserver <-> coordinator: a vnc run's WANT, DESKTOP and RECT lines
 };
 
 // The viz path over MPI: a tile (kind 1, to the column owning its display)

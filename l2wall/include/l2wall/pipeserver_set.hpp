@@ -91,6 +91,7 @@ class PipeserverSet {
     std::unique_ptr<PipeserverProcess> process;  // remote_pipeserver_process(its place)
     std::unique_ptr<ReadyChannel> channel;       // its back-channel
     std::unique_ptr<ControlChannel> control;     // balancing (PipeserverLaunch::control), else null
+    std::unique_ptr<ControlChannel> windows;     // a vnc run's desktop, else null
   };
   // Pipeservers this process did not start (MPI ranks, mpi/): no link reader here; `connect` gives
   // each one's ends. Their links are taken in elsewhere, and the path that does records

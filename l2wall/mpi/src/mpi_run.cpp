@@ -12,6 +12,7 @@
 #include "cluster/mpi_control_channel.hpp"
 #include "cluster/mpi_ready_channel.hpp"
 #include "cluster/mpi_session.hpp"
+#include "cluster/mpi_wire.hpp"
 #include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
 #include "image/folders.hpp"
@@ -52,7 +53,11 @@ class MpiBackends final : public RunBackends {
           remote_pipeserver_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid));
       end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
-      if (launch.control) end.control = std::make_unique<MpiControlChannel>(rank);
+      if (launch.control)
+        end.control = std::make_unique<MpiControlChannel>(rank, mpi_wire::kControl);
+      // A vnc run's desktop: the rank was started with --mpi-windows (exec_pipeserver).
+      if (launch.windows && launch.scene == "vnc")
+        end.windows = std::make_unique<MpiControlChannel>(rank, mpi_wire::kWindows);
       return end;
     });
   }
@@ -75,6 +80,7 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   launch.extra_args = {"--mpi"};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
+  if (o.scene == "vnc") launch.extra_args.push_back("--mpi-windows");
   // Only the control page pauses an MPI run: the columns' windows take no keys.
   RunOptions pausable = o;
   pausable.show.clear();
@@ -110,8 +116,6 @@ Status mpi_options_error(const RunOptions& o) {
         "--mpi: --show window is one machine's; --show monitors shows each column's displays "
         "on its own machine's monitors"};
   if (o.noise_after >= 0) return Failure{"--mpi: --inject-noise needs a serial line (no --mpi)"};
-  // The desktop's lines travel on the windows channel, which an MPI run does not open yet.
-  if (o.scene == "vnc") return Failure{"--mpi: --scene vnc runs on one machine for now"};
   return {};
 }
 
