@@ -166,7 +166,8 @@ int run_pipeserver(int argc, char** argv) {
                  "written")
       ->check(CLI::Range(1, 100000));
   app.add_option("--scene", o.scene,
-                 "mesh | strips | isosurface | patches | swap | picture | movie")
+                 "mesh | strips | isosurface | patches | swap | picture | movie | session | vnc "
+                 "(vnc: under l2wall run only)")
       ->check(CLI::IsMember(l2::scene_names()));
   l2::add_out_option(app, o.out, "scanout-<pipeserver>.png, the scanned-out frame");
   app.add_option("--reference", o.reference,
@@ -286,6 +287,13 @@ int run_pipeserver(int argc, char** argv) {
     live_options.link_codec = l2::parse_link_choice(link_codec).value();
     if (mpi) return run_mpi_rank(live_options, mpi_viz, mpi_control, mpi_windows);
     return run_live(live_options);
+  }
+  // Its desktop comes from l2wall run's coordinator: alone it would only draw black.
+  if (o.scene == "vnc") {
+    std::fprintf(stderr,
+                 "pipeserver: --scene vnc shows the desktop l2wall run sends; run it through "
+                 "l2wall run --scene vnc\n");
+    return 2;
   }
   if (o.out.empty() && o.reference.empty()) {
     std::fprintf(stderr, "pipeserver: nothing to do: give --out and/or --reference\n");
