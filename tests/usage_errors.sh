@@ -169,7 +169,7 @@ bad_value "--triangles is an option of --scene strips or hotspot, not mesh" pipe
   --out /tmp/x
 bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene strips \
   --mesh /etc/hostname
-bad_value "--content is an option of --scene picture or movie, not swap" pipeserver \
+bad_value "--content is an option of --scene picture, movie or vnc, not swap" pipeserver \
   --scene swap --content /etc/hostname --out /tmp/x.png
 bad_value "--scene movie needs --content FILE" l2wall run --scene movie
 # NaN passed CLI::Range and made every pixel of the view NaN (a black wall).
