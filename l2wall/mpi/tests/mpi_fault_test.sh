@@ -20,20 +20,8 @@ stall_ms=1000
 # for nothing. A run that never ends is still caught, and killed, at this ceiling.
 end_ceiling_ms=15000
 source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/rank_pid.sh"
 rm -rf "$out" && mkdir -p "$out"
-
-# The pid of MPI rank $2 among the processes of run folder $1 (no folder name is a prefix of
-# another) (mpirun gives each its rank in
-# its environment; a pipeserver rank keeps it across its exec).
-rank_pid() {
-  local p
-  for p in $(pgrep -f -- "$1" || true); do
-    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2"; then
-      echo "$p"
-      return
-    fi
-  done
-}
 
 # The displays saved in $1/fault/ against the one-machine run of wall $2 (empty: the default)
 # at frame $3; $4: the display ids that must be there, the others must not.

@@ -15,6 +15,7 @@ set -euo pipefail
 l2wall=$1 out=$2 cluster=$3 two_columns=$4
 frames=8
 rm -rf "$out" && mkdir -p "$out"
+source "$(dirname "$0")/rank_pid.sh"
 
 # same_displays ONE MPI: every display picture of the last frame of ONE is in MPI, byte for byte.
 same_displays() {
@@ -60,17 +61,6 @@ same_displays "$out/one-2col" "$out/two-columns"
 
 # 3. Pipeserver 2 (rank 3, on render-b) killed, then stopped, mid-run: one line naming it with
 # its host, exit non-zero, nothing left on any host (cluster.sh names what it had to kill).
-# rank_pid DIR RANK: the pid of MPI rank RANK of the run writing to DIR (mpirun gives each its
-# rank in its environment).
-rank_pid() {
-  local p
-  for p in $(pgrep -f -- "$1" || true); do
-    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2"; then
-      echo "$p"
-      return
-    fi
-  done
-}
 
 # start_run DIR: the default wall over three hosts in the background, until its displays have
 # swapped a few frames. Sets `run`.
