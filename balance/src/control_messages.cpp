@@ -5,7 +5,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "message_words.hpp"
+#include "balance/message_words.hpp"
 #include "tilelayout/planner.hpp"
 
 namespace l2 {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <array>
 
-#include "message_words.hpp"
+#include "balance/message_words.hpp"
 
 namespace l2 {
 namespace {

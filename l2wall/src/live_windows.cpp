@@ -3,39 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <stdexcept>
 
+#include "balance/message_words.hpp"
+#include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_fault.hpp"
 #include "waiting_message.hpp"
 
 namespace l2 {
-
-namespace {
-
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  while (!line.empty()) {
-    const std::size_t start = line.find_first_not_of(' ');
-    if (start == std::string_view::npos) break;
-    line.remove_prefix(start);
-    const std::size_t n = std::min(line.find(' '), line.size());
-    words.push_back(line.substr(0, n));
-    line.remove_prefix(n);
-  }
-  return words;
-}
-
-// An integer word in [min, max], or why not.
-std::string number(std::string_view word, const char* what, int min, int max, int& out) {
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), out);
-  if (ec != std::errc() || end != word.data() + word.size() || out < min || out > max)
-    return fmt::format("{} must be {}..{}, got '{}'", what, min, max, word.substr(0, 20));
-  return {};
-}
-
-}  // namespace
 
 LiveWindows::LiveWindows(const Session& session) {
   for (const SessionWindow& w : session.windows) {
@@ -47,13 +23,30 @@ LiveWindows::LiveWindows(const Session& session) {
 }
 
 std::string LiveWindows::command(std::string_view line) {
-  const std::vector<std::string_view> w = words_of(line);
-  const std::string_view verb = w.empty() ? std::string_view() : w[0];
-  const std::size_t want = verb == "move" ? 6 : 2;
-  if ((verb != "move" && verb != "raise" && verb != "close") || w.size() != want)
+  Words w(line, "command");
+  const std::string_view verb = w.word();
+  if (verb != "move" && verb != "raise" && verb != "close")
     return "expected 'move ID X Y W H', 'raise ID' or 'close ID'";
-  int id = 0;
-  if (std::string why = number(w[1], "ID", 0, kMaxWindowId, id); !why.empty()) return why;
+  try {
+    const int id = static_cast<int>(w.integer("ID", 0, kMaxWindowId));
+    Rect r;
+    if (verb == "move") {
+      r.x = static_cast<int>(w.integer("X", -kWindowReach, kWindowReach));
+      r.y = static_cast<int>(w.integer("Y", -kWindowReach, kWindowReach));
+      r.w = static_cast<int>(w.integer("W", 1, kMaxWindowSide));
+      r.h = static_cast<int>(w.integer("H", 1, kMaxWindowSide));
+    }
+    w.end();
+    if (std::string why = apply(verb, id, r); !why.empty()) return why;
+    pending_.push_back(verb == "move" ? fmt::format("move {} {} {} {} {}", id, r.x, r.y, r.w, r.h)
+                                      : fmt::format("{} {}", verb, id));
+  } catch (const ControlError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+std::string LiveWindows::apply(std::string_view verb, int id, const Rect& r) {
   const auto at = std::find_if(now_.begin(), now_.end(), [id](auto& p) { return p.id == id; });
   if (at == now_.end()) {
     const bool closed = std::find(ids_.begin(), ids_.end(), id) != ids_.end();
@@ -64,19 +57,8 @@ std::string LiveWindows::command(std::string_view line) {
   } else if (verb == "raise") {
     std::rotate(at, at + 1, now_.end());
   } else {
-    Rect r;
-    for (const auto& [word, what, min, max, out] :
-         {std::tuple{w[2], "X", -kWindowReach, kWindowReach, &r.x},
-          std::tuple{w[3], "Y", -kWindowReach, kWindowReach, &r.y},
-          std::tuple{w[4], "W", 1, kMaxWindowSide, &r.w},
-          std::tuple{w[5], "H", 1, kMaxWindowSide, &r.h}}) {
-      if (std::string why = number(word, what, min, max, *out); !why.empty()) return why;
-    }
     at->on_canvas = r;
   }
-  std::string said;
-  for (std::size_t i = 0; i < w.size(); ++i) said += (i ? " " : "") + std::string(w[i]);
-  pending_.push_back(said);
   return {};
 }
 

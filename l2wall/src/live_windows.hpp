@@ -11,10 +11,11 @@
 #include <vector>
 
 #include "balance/control_messages.hpp"
-#include "l2wall/pipeserver_set.hpp"
 #include "tilelayout/session_file.hpp"
 
 namespace l2 {
+
+class PipeserverSet;
 
 class LiveWindows {
  public:
@@ -24,6 +25,9 @@ class LiveWindows {
   // others), "close ID": taken from the next frame decided. Empty when taken, else why not in
   // one line.
   std::string command(std::string_view line);
+  // Frame `frame`'s WINDOWS line, deciding every frame up to it (each with the commands taken
+  // since the one before).
+  const std::string& line_for(int frame);
   // Answers every WANT waiting. Throws RunFault for a line that is not one.
   void serve(PipeserverSet& pipeservers);
 
@@ -40,7 +44,8 @@ class LiveWindows {
   std::string windows() const;
 
  private:
-  const std::string& line_for(int frame);
+  // Changes window `id` now (move to `r`, raise, close); empty when done, else why not.
+  std::string apply(std::string_view verb, int id, const Rect& r);
 
   std::vector<WindowPlace> now_;      // back to front
   std::vector<int> ids_;              // every window of the session, closed ones too

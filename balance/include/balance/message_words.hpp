@@ -1,5 +1,5 @@
-// The words of one control line, each checked as it is taken: what every message decoder of
-// balance/ reads its line with.
+// The words of one line, each checked as it is taken: what every control message decoder of
+// balance/ reads its line with, and l2wall its window commands.
 #pragma once
 
 #include <fmt/format.h>
@@ -16,7 +16,9 @@ namespace l2 {
 // Reads the space-separated words of one line, each checked as it is taken.
 class Words {
  public:
-  explicit Words(std::string_view line) : line_(line), rest_(line) {}
+  // `kind` names the line in errors: "control line 'WANT x': ...".
+  explicit Words(std::string_view line, std::string_view kind = "control line")
+      : line_(line), rest_(line), kind_(kind) {}
 
   void keyword(std::string_view want) {
     if (next() != want) fail(fmt::format("not a {} message", want));
@@ -52,7 +54,7 @@ class Words {
     if (!next().empty()) fail("more words than its count says");
   }
   [[noreturn]] void fail(const std::string& why) const {
-    throw ControlError(fmt::format("control line '{}': {}", clip(line_), why));
+    throw ControlError(fmt::format("{} '{}': {}", kind_, clip(line_), why));
   }
 
  private:
@@ -68,7 +70,7 @@ class Words {
     rest_.remove_prefix(n);
     return w;
   }
-  std::string_view line_, rest_;
+  std::string_view line_, rest_, kind_;
 };
 
 // The largest frame number a line may carry.
