@@ -197,8 +197,12 @@ std::string LiveBalance::summary() const {
       s += fmt::format("{} {}", l == 0 ? "" : ",", first_frame_[l]);
     s += fmt::format("); strips routed per layout not counted: {}", strips_uncounted_);
   }
-  s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
-                   swaps_checked_);
+  if (swaps_unchecked_.empty()) {
+    s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
+                     swaps_checked_);
+  } else {
+    s += fmt::format("\nbalance: group swaps not checked: {}\n", swaps_unchecked_);
+  }
   for (const std::string& line : switches_) s += line;
   if (resisted_ > 0) {
     s += fmt::format(

@@ -9,6 +9,13 @@ namespace l2 {
 
 using std::chrono::milliseconds;
 
+void VizPath::follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) {
+  balance.strips_not_counted("the vizserver path sends whole tiles, no strips");
+  balance.swaps_not_checked("the compositing server composes every frame from its own tiles");
+  balance_ = &balance;
+  pipeservers_ = &pipeservers;
+}
+
 std::optional<PathSwap> VizPath::step(int next, PipeserverSet&, std::vector<FrameRecord>&,
                                       const RunWatch& watch) {
   wait_for(next, watch);

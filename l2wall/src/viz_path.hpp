@@ -44,11 +44,9 @@ class VizPath final : public DisplayPath {
   std::string process_name() const override { return side_->name(); }
 
   // The compositing server composes a frame from that frame's tiles only, so a swap never shows
-  // two layouts: there is nothing to check, only the control channels to serve.
-  void follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) override {
-    balance_ = &balance;
-    pipeservers_ = &pipeservers;
-  }
+  // two layouts: there is nothing to check, only the control channels to serve. No strip is
+  // routed either: tiles travel whole.
+  void follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) override;
 
   void lose_pipeserver(int pipeserver) override { side_->lose_pipeserver(pipeserver); }
   void finish() override;

@@ -37,6 +37,8 @@ class LiveBalance {
                     const std::vector<std::uint64_t>& routed_by_pipeserver);
   // The lead path cannot count strips (`why`): the summary says so instead of counts.
   void strips_not_counted(std::string why) { strips_uncounted_ = std::move(why); }
+  // A path whose swaps cannot show two layouts says why it does not check them.
+  void swaps_not_checked(std::string why) { swaps_unchecked_ = std::move(why); }
   // After a swap group swapped: whether the frames its displays (`group_displays`) now show
   // share one layout. `frame_shown(h)`: the frame pipeserver h's stamp says the displays show of it
   // (INT_MAX: not known); a pipeserver counts when that frame's stamp is on one of the group's.
@@ -102,6 +104,7 @@ class LiveBalance {
   int resisted_ = 0;                   // new layouts not taken: they would not pay (resistance)
   double best_resisted_ = 1;           // the lowest predicted frame time ratio among them
   std::string strips_uncounted_;       // why the strips are not counted; empty: they are
+  std::string swaps_unchecked_;        // why the group swaps are not checked; empty: they are
   LayoutMessage last_;                 // the last layout's tiles and pipeservers
   std::vector<std::string> lines_;     // by frame sent so far, the LAYOUT line
   std::vector<std::string> switches_;  // the mode switches, for the summary
