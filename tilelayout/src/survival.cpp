@@ -42,6 +42,24 @@ std::string height_need(const Wall& wall, std::optional<int> height) {
 
 }  // namespace
 
+namespace {
+
+// When the height a loss needs is past what the boards read: the framebuffer at the boards'
+// widest that holds the tiles within their rows, if one does.
+std::string within_boards(const Wall& wall, int lost) {
+  if (wall.framebuffer_width >= wall.board_max_width) return {};
+  Wall wide = wall;
+  wide.framebuffer_width = wall.board_max_width;
+  const std::optional<int> h = survival_height(wide, lost);
+  if (!h || *h > wall.board_max_height) return {};
+  return fmt::format(
+      "framebuffer_width = {}, framebuffer_height = {}: survives the loss of {} within the "
+      "boards' {}x{}",
+      wide.framebuffer_width, *h, plural(lost), wall.board_max_width, wall.board_max_height);
+}
+
+}  // namespace
+
 std::vector<int> assign_without(const Wall& wall, const std::vector<Rect>& logical,
                                 AssignmentPolicy policy, const std::vector<int>& gone) {
   std::vector<int> serving;
@@ -144,6 +162,9 @@ std::vector<std::string> survival_suggestions(const Wall& wall, const Survival& 
         fmt::format("framebuffer_height = {} (at framebuffer_width = {}{}): survives "
                     "the loss of {}",
                     *h, wall.framebuffer_width, board, plural(k)));
+    if (!board.empty()) {
+      if (std::string wider = within_boards(wall, k); !wider.empty()) lines.push_back(wider);
+    }
   }
   return lines;
 }

@@ -299,7 +299,8 @@ TEST_F(Cli, PlanEndsWithTheLossesTheWallSurvives) {
   EXPECT_NE(r.out.find("\nframebuffer_height = 910 (at framebuffer_width = 800): survives the "
                        "loss of 1 pipeserver\nframebuffer_height = 1440 (at framebuffer_width = "
                        "800, and [mesh] board_max_height = 1440): survives the loss of 2 "
-                       "pipeservers\n"),
+                       "pipeservers\nframebuffer_width = 1280, framebuffer_height = 769: survives "
+                       "the loss of 2 pipeservers within the boards' 1280x1024\n"),
             std::string::npos)
       << r.out;
 }

@@ -81,7 +81,16 @@ TEST(Survival, DefaultWall) {
                 "framebuffer_height = 910 (at framebuffer_width = 800): survives the loss of 1 "
                 "pipeserver",
                 "framebuffer_height = 1440 (at framebuffer_width = 800, and [mesh] "
-                "board_max_height = 1440): survives the loss of 2 pipeservers"}));
+                "board_max_height = 1440): survives the loss of 2 pipeservers",
+                "framebuffer_width = 1280, framebuffer_height = 769: survives the loss of 2 "
+                "pipeservers within the boards' 1280x1024"}));
+  // Past the boards' rows, the wider framebuffer suggested instead holds two losses exactly.
+  Wall wide = default_wall();
+  wide.framebuffer_width = 1280;
+  wide.framebuffer_height = 769;
+  EXPECT_EQ(survival(wide).survives, 2);
+  wide.framebuffer_height = 768;
+  EXPECT_EQ(survival(wide).survives, 1);
   // The planner agrees: at 910 rows every single loss plans, at 909 none does.
   wall.framebuffer_height = 910;
   EXPECT_EQ(survival(wall).survives, 1);
