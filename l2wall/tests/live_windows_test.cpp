@@ -7,9 +7,9 @@ namespace {
 
 Session three_windows() {
   Session s;
-  s.windows = {{0, "picture", "a.png", {0, 0, 100, 80}, 0, ""},
-               {1, "mesh", "", {50, 40, 200, 100}, 1, ""},
-               {7, "swap", "", {10, 10, 20, 20}, 2, ""}};
+  s.windows = {{0, "picture", "a.png", {0, 0, 100, 80}, 0, "", {}},
+               {1, "mesh", "", {50, 40, 200, 100}, 1, "", {}},
+               {7, "swap", "", {10, 10, 20, 20}, 2, "", {}}};
   return s;
 }
 

@@ -12,17 +12,19 @@ namespace l2 {
 namespace {
 
 // The sources a window may show: those with a file first.
-const std::vector<std::string_view> kSources{"picture", "movie",      "mesh",    "strips",
+const std::vector<std::string_view> kSources{"picture", "movie",      "mesh",    "vnc", "strips",
                                              "hotspot", "isosurface", "patches", "swap"};
 
-bool takes_file(std::string_view source) {
-  return source == "picture" || source == "movie" || source == "mesh";
+// A vnc window's content is the desktop's address, not a file.
+bool takes_content(std::string_view source) {
+  return source == "picture" || source == "movie" || source == "mesh" || source == "vnc";
 }
 
 // Which fits a source takes: pixels are laid four ways, a model framed two, the generated
 // scenes frame themselves.
 std::vector<std::string_view> fits_of(std::string_view source) {
-  if (source == "picture" || source == "movie") return {"fit", "fill", "stretch", "1:1"};
+  if (source == "picture" || source == "movie" || source == "vnc")
+    return {"fit", "fill", "stretch", "1:1"};
   if (source == "mesh") return {"fit", "fill"};
   return {};
 }
@@ -33,12 +35,20 @@ SessionWindow read_window(const TomlFields& f, const std::filesystem::path& fold
   if (source < 0) f.source().fail(f.line(), f.field("source"), "missing (required)");
   w.source = std::string(kSources[static_cast<std::size_t>(source)]);
   const auto content = f.string("content");
-  if (content && !takes_file(w.source))
+  if (content && !takes_content(w.source))
     f.fail("content", fmt::format("a {} window takes no file", w.source));
-  if (!content && w.source != "mesh" && takes_file(w.source))
+  if (!content && w.source != "mesh" && takes_content(w.source))
     f.source().fail(f.line(), f.field("content"),
-                    fmt::format("missing (a {} window needs its file)", w.source));
-  if (content) w.content = folder / *content;
+                    w.source == "vnc"
+                        ? std::string("missing (a vnc window needs its desktop, HOST:DISPLAY)")
+                        : fmt::format("missing (a {} window needs its file)", w.source));
+  if (content && w.source == "vnc" && content->empty())
+    f.fail("content", "empty (a vnc window needs its desktop, HOST:DISPLAY)");
+  if (content) w.content = w.source == "vnc" ? std::filesystem::path(*content) : folder / *content;
+  const auto password = f.string("password_file");
+  if (password && w.source != "vnc")
+    f.fail("password_file", fmt::format("a {} window takes no password", w.source));
+  if (password) w.password_file = folder / *password;
   w.on_canvas.x = f.required_integer("x", -kWindowReach, kWindowReach);
   w.on_canvas.y = f.required_integer("y", -kWindowReach, kWindowReach);
   w.on_canvas.w = f.required_integer("width", 1, kMaxWindowSide);
@@ -53,6 +63,22 @@ SessionWindow read_window(const TomlFields& f, const std::filesystem::path& fold
 
 std::uint32_t read_background(const TomlFields& top) {
   return static_cast<std::uint32_t>(top.integer("background", 0, 0xFFFFFF, 0));
+}
+
+// Desktops, counted as the coordinator connects to them: one per address and password file.
+void check_desktops(const Session& session, const toml::array& list, const TomlSource& source) {
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> desktops;
+  for (std::size_t i = 0; i < session.windows.size(); ++i) {
+    const SessionWindow& w = session.windows[i];
+    const auto desktop = std::pair{w.content, w.password_file};
+    if (w.source != "vnc" || std::find(desktops.begin(), desktops.end(), desktop) != desktops.end())
+      continue;
+    desktops.push_back(desktop);
+    if (desktops.size() > static_cast<std::size_t>(kMaxSessionDesktops))
+      source.fail(*list.get(i), fmt::format("window[{}].content", i),
+                  fmt::format("a {}th desktop, more than a session may show ({})", desktops.size(),
+                              kMaxSessionDesktops));
+  }
 }
 
 }  // namespace
@@ -76,8 +102,9 @@ Session parse_session(std::string_view toml_text, const std::filesystem::path& p
     const toml::node& node = *list->get(i);
     if (!node.is_table())
       source.fail(node, name, fmt::format("must be a table, got {}", type_name(node)));
-    const TomlFields f(*node.as_table(), name, source,
-                       {"id", "source", "content", "x", "y", "width", "height", "z", "fit"});
+    const TomlFields f(
+        *node.as_table(), name, source,
+        {"id", "source", "content", "password_file", "x", "y", "width", "height", "z", "fit"});
     SessionWindow w = read_window(f, path_for_messages.parent_path());
     w.id = f.integer("id", 0, kMaxWindowId, static_cast<int>(i));
     for (std::size_t j = 0; j < session.windows.size(); ++j) {
@@ -86,6 +113,7 @@ Session parse_session(std::string_view toml_text, const std::filesystem::path& p
     }
     session.windows.push_back(std::move(w));
   }
+  check_desktops(session, *list, source);
   sort_windows(session.windows);
   return session;
 }

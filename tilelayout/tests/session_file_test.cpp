@@ -55,9 +55,9 @@ TEST(SessionFile, AWrongFieldIsOneLineNamingFileLineAndField) {
             "s/x.toml:7: window[0].fit: a strips window frames itself: it takes no fit");
   EXPECT_EQ(session_error("[[window]]\nsource = \"movie\"\nx = 0\ny = 0\nwidth = 1\nheight = 1\n"),
             "s/x.toml:1: window[0].content: missing (a movie window needs its file)");
-  EXPECT_EQ(session_error("[[window]]\nsource = \"vnc\"\n"),
-            "s/x.toml:2: window[0].source: must be one of picture, movie, mesh, strips, "
-            "hotspot, isosurface, patches, swap, got \"vnc\"");
+  EXPECT_EQ(session_error("[[window]]\nsource = \"web\"\n"),
+            "s/x.toml:2: window[0].source: must be one of picture, movie, mesh, vnc, strips, "
+            "hotspot, isosurface, patches, swap, got \"web\"");
   EXPECT_EQ(session_error(kSessionWindow + "colour = 1\n"),
             "s/x.toml:8: window[0].colour: unknown key");
   EXPECT_EQ(session_error(kSessionWindow + "id = 1\n" + kSessionWindow),
@@ -69,7 +69,39 @@ TEST(SessionFile, AWrongFieldIsOneLineNamingFileLineAndField) {
   EXPECT_EQ(session_error("[[window]\n").rfind("s/x.toml:1: malformed TOML: ", 0), 0u);
 }
 
+// A desktop window: its content is an address, taken as written; its password file is beside
+// the session, as its pictures are.
+const std::string kDesktopWindow =
+    "[[window]]\n"                              // 1
+    "source = \"vnc\"\n"                        // 2
+    "content = \"127.0.0.1:3\"\n"               // 3
+    "x = 0\ny = 0\nwidth = 64\nheight = 48\n";  // 4..7
+
+TEST(SessionFile, AVncWindowShowsADesktopByItsAddress) {
+  const Session s = parse_session(
+      kDesktopWindow + "fit = \"stretch\"\npassword_file = \"pw\"\n" + kDesktopWindow, "s/x.toml");
+  ASSERT_EQ(s.windows.size(), 2u);
+  EXPECT_EQ(s.windows[0].source, "vnc");
+  EXPECT_EQ(s.windows[0].content, std::filesystem::path("127.0.0.1:3"));
+  EXPECT_EQ(s.windows[0].password_file, std::filesystem::path("s/pw"));
+  EXPECT_EQ(s.windows[0].fit, "stretch");
+  EXPECT_EQ(s.windows[1].password_file, std::filesystem::path());
+  EXPECT_EQ(s.windows[1].fit, "fit");
+  EXPECT_EQ(session_error("[[window]]\nsource = \"vnc\"\nx = 0\ny = 0\nwidth = 1\nheight = 1\n"),
+            "s/x.toml:1: window[0].content: missing (a vnc window needs its desktop, "
+            "HOST:DISPLAY)");
+  EXPECT_EQ(session_error(kSessionWindow + "password_file = \"pw\"\n"),
+            "s/x.toml:8: window[0].password_file: a picture window takes no password");
+}
+
 TEST(SessionFile, HostileSizesAndCountsAreRefused) {
+  // Five desktops: each is a connection of the coordinator. The same desktop again is none.
+  std::string desktops = kDesktopWindow + kDesktopWindow;
+  for (int d = 4; d <= 8; ++d)
+    desktops += "[[window]]\nsource = \"vnc\"\ncontent = \"h:" + std::to_string(d) +
+                "\"\nx = 0\ny = 0\nwidth = 1\nheight = 1\n";
+  EXPECT_EQ(session_error(desktops),
+            "s/x.toml:36: window[5].content: a 5th desktop, more than a session may show (4)");
   EXPECT_EQ(session_error(kSessionWindow + "z = 1\n" + "[[window]]\nx = 99999\n"),
             "s/x.toml:9: window[1].source: missing (required)");
   std::string many;

@@ -20,15 +20,21 @@ inline constexpr int kMaxWindowId = 9999;
 inline constexpr int kMaxWindowSide = 16384;
 // How far a window may lie off the canvas's top-left corner (and its side past that).
 inline constexpr int kWindowReach = 16384;
+// Desktops (vnc windows) a session shows: each is an RFB connection of the run's coordinator
+// and a copy of that desktop there; windows of the same address and password share one.
+inline constexpr int kMaxSessionDesktops = 4;
 
 struct SessionWindow {
   int id = 0;          // what commands name it by: unique in the session
-  std::string source;  // picture, movie, mesh, strips, hotspot, isosurface, patches, swap
+  std::string source;  // picture, movie, mesh, vnc, strips, hotspot, isosurface, patches, swap
   // picture, movie: the file; mesh: the model (empty: the bunny). Relative to the session file.
+  // vnc: the desktop's address as written, HOST:DISPLAY or HOST::PORT.
   std::filesystem::path content;
   Rect on_canvas;
   int z = 0;        // higher in front; at equal z, later in the file in front
-  std::string fit;  // picture, movie: fit, fill, stretch or 1:1; mesh: fit or fill; empty: fit
+  std::string fit;  // picture, movie, vnc: fit, fill, stretch or 1:1; mesh: fit or fill; empty: fit
+  // vnc: the file `vncpasswd -f` writes (relative to the session file); empty: no password.
+  std::filesystem::path password_file;
 };
 
 struct Session {
