@@ -132,13 +132,11 @@ void take_windows(ControlChannel& windows, Scene& scene, int frame,
   scene.place_windows(placed);
 }
 
-// Frame `frame`'s desktop from the coordinator (desktop_messages.hpp), asked for with WANT and
-// taken into `scene` at once: the coordinator answers every WANT as it comes, so a large answer
-// never waits for this pipeserver to finish a READY wait. Throws ControlError when none comes
-// within `timeout`, it is for another frame or its pixels are not the desktop's.
-void take_desktop(ControlChannel& channel, detail::DesktopScene& scene, int pipeserver, int frame,
+// One desktop's DESKTOP line and its RECTs for frame `frame`, taken into `scene`. Throws
+// ControlError when none comes within `timeout`, it is for another frame or its pixels are not
+// the desktop's.
+void take_desktop(ControlChannel& channel, detail::DesktopScene& scene, int frame,
                   std::chrono::milliseconds timeout) {
-  channel.send_line(encode(WantMessage{frame, pipeserver}));
   const auto line = [&] {
     std::optional<std::string> l = channel.receive_line(timeout);
     if (!l)
@@ -161,6 +159,18 @@ void take_desktop(ControlChannel& channel, detail::DesktopScene& scene, int pipe
       throw ControlError(e.what());
     }
   }
+}
+
+// Frame `frame`'s desktops from the coordinator (desktop_messages.hpp), asked for with WANT and
+// taken in at once: the coordinator answers every WANT as it comes, so a large answer never
+// waits for this pipeserver to finish a READY wait. A session's answer is its WINDOWS line
+// first, then each desktop's lines, in the order of scene.desktops().
+void take_desktops(ControlChannel& channel, Scene& scene, int pipeserver, int frame,
+                   std::chrono::milliseconds timeout) {
+  channel.send_line(encode(WantMessage{frame, pipeserver}));
+  const bool session = dynamic_cast<detail::DesktopScene*>(&scene) == nullptr;
+  if (session) take_windows(channel, scene, frame, timeout);
+  for (detail::DesktopScene* d : scene.desktops()) take_desktop(channel, *d, frame, timeout);
 }
 
 // The SYNC? retries (or, for SWAPPED, the timeouts) a pipeserver allows the swap of `frame`. The
@@ -200,15 +210,16 @@ int run_live_mode(const LiveOptions& o) {
           : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()), o.link_codec);
   Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
-  // A vnc scene shows the desktop the coordinator sends on the windows channel.
-  auto* const desktop = dynamic_cast<detail::DesktopScene*>(scene.get());
+  // A vnc scene, or a session's vnc windows, show the desktop the coordinator sends on the
+  // windows channel.
+  const bool desktop = !scene->desktops().empty();
   if (desktop && !o.windows)
-    throw ControlError(
-        "--scene vnc shows the desktop l2wall run sends (--windows-fd): run it "
-        "through l2wall run");
+    throw ControlError(fmt::format(
+        "--scene {} shows the desktop l2wall run sends (--windows-fd): run it through l2wall run",
+        o.scene));
   // Frame 0's waits for every other pipeserver's start-up too.
   if (desktop && o.frames > 0)
-    take_desktop(*o.windows, *desktop, o.pipeserver, 0, timeout * (swap_retries(o, 0) + 1));
+    take_desktops(*o.windows, *scene, o.pipeserver, 0, timeout * (swap_retries(o, 0) + 1));
 
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
@@ -222,7 +233,7 @@ int run_live_mode(const LiveOptions& o) {
     // Sent before the READY wait, so the coordinator plans the next frame meanwhile.
     if (o.control) send_times(*o.control, ps, k);
     if (desktop && k + 1 < o.frames)
-      take_desktop(*o.windows, *desktop, o.pipeserver, k + 1, timeout * (o.ready_retries + 1));
+      take_desktops(*o.windows, *scene, o.pipeserver, k + 1, timeout * (o.ready_retries + 1));
     else if (o.windows && k + 1 < o.frames)
       o.windows->send_line(encode(WantMessage{k + 1, o.pipeserver}));
     const auto t1 = Clock::now();

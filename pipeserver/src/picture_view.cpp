@@ -69,4 +69,47 @@ SourceView movie_view(int source_width, int source_height, const Canvas& canvas,
   return {w / 2.0, h / 2.0, sx, sy};
 }
 
+long source_index(double centre, double scale, int size, int x) {
+  return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
+}
+
+namespace {
+
+// The source indices [first, last + 1) pixels [begin, end) of an axis show inside [0, size):
+// scales are positive, so the index grows with the pixel, and the first pixel at or past 0 and
+// the last before `size` bound them (found by bisection). first >= last: none.
+std::pair<long, long> sampled_span(double centre, double scale, int canvas_size, int begin, int end,
+                                   int size) {
+  const auto index = [&](int x) { return source_index(centre, scale, canvas_size, x); };
+  // The first pixel in [lo, hi) whose index passes `reached`, or hi.
+  const auto first_where = [](int lo, int hi, const auto& reached) {
+    while (lo < hi) {
+      const int mid = lo + (hi - lo) / 2;
+      if (reached(mid)) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    return lo;
+  };
+  const int in = first_where(begin, end, [&](int x) { return index(x) >= 0; });
+  const int out = first_where(in, end, [&](int x) { return index(x) >= size; });
+  if (in >= out) return {0, 0};
+  return {index(in), index(out - 1) + 1};
+}
+
+}  // namespace
+
+Rect sampled_source(const SourceView& view, int source_width, int source_height,
+                    const Canvas& canvas, const Rect& on_canvas) {
+  const auto [x0, x1] = sampled_span(view.centre_x, view.scale_x, canvas.width, on_canvas.x,
+                                     on_canvas.right(), source_width);
+  const auto [y0, y1] = sampled_span(view.centre_y, view.scale_y, canvas.height, on_canvas.y,
+                                     on_canvas.bottom(), source_height);
+  if (x1 <= x0 || y1 <= y0) return {};
+  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
+          static_cast<int>(y1 - y0)};
+}
+
 }  // namespace l2

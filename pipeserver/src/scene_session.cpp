@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "scene_common.hpp"
+#include "scene_vnc.hpp"
 #include "tilelayout/session_file.hpp"
 
 namespace l2::detail {
@@ -20,10 +21,14 @@ glm::vec3 colour_of(std::uint32_t rgb) {
 }
 
 // The window's source, made as the scene of that name with the run's options but the window's
-// file and fit. Only a picture is made apart: still, where the picture scene pans and zooms.
-std::unique_ptr<Scene> make_source(const SessionWindow& w, const SceneOptions& run) {
+// file and fit. Only a picture is made apart: still, where the picture scene pans and zooms;
+// and a desktop, which draws from the session's desktop of its address.
+std::unique_ptr<Scene> make_source(const SessionWindow& w, const SceneOptions& run,
+                                   const DesktopScene* desktop) {
   SceneOptions o = run;
   o.fit = w.fit;
+  if (desktop)
+    return make_desktop_window(*desktop, parse_source_fit(w.fit).value_or(SourceFit::Fit));
   if (w.source == "picture") {
     auto scene =
         make_picture_scene(w.content, parse_source_fit(w.fit).value_or(SourceFit::Fit), true);
@@ -43,7 +48,7 @@ class SessionScene : public Scene {
     clear_colour_ = colour_of(session.background);
     for (const SessionWindow& w : session.windows) {
       placed_.push_back({sources_.size(), w.on_canvas});
-      sources_.push_back(make_source(w, options));
+      sources_.push_back(make_source(w, options, desktop_of(w)));
       // What a window's model leaves out is told once for the session, naming the window.
       if (!sources_.back()->note().empty()) {
         if (!note_.empty()) note_ += "; ";
@@ -56,6 +61,12 @@ class SessionScene : public Scene {
   std::vector<SceneWindow> windows() const override {
     std::vector<SceneWindow> out;
     for (const Placed& p : placed_) out.push_back({p.on_canvas, sources_[p.source].get()});
+    return out;
+  }
+
+  std::vector<DesktopScene*> desktops() override {
+    std::vector<DesktopScene*> out;
+    for (const auto& d : desktops_) out.push_back(d.scene.get());
     return out;
   }
 
@@ -83,7 +94,23 @@ class SessionScene : public Scene {
     Rect on_canvas;
   };
 
+  // A vnc window's desktop: one per address and password file, as the coordinator connects.
+  const DesktopScene* desktop_of(const SessionWindow& w) {
+    if (w.source != "vnc") return nullptr;
+    const auto key = std::pair{w.content, w.password_file};
+    for (const auto& d : desktops_)
+      if (d.key == key) return d.scene.get();
+    desktops_.push_back({key, std::make_unique<DesktopScene>(w.content.string())});
+    return desktops_.back().scene.get();
+  }
+
+  struct Desktop {
+    std::pair<std::filesystem::path, std::filesystem::path> key;  // address, password file
+    std::unique_ptr<DesktopScene> scene;
+  };
+
   Session session_;
+  std::vector<Desktop> desktops_;                // before sources_, which draw from them
   std::vector<std::unique_ptr<Scene>> sources_;  // by session_.windows index
   std::vector<Placed> placed_;                   // back to front
 };

@@ -7,16 +7,6 @@
 
 namespace l2::detail {
 
-namespace {
-
-// The source pixel canvas pixel `x` of a canvas `size` wide shows along one axis; out of
-// [0, source_size) means none.
-long source_index(double centre, double scale, int size, int x) {
-  return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
-}
-
-}  // namespace
-
 void fill_from_source(const SourceView& view, int source_width, int source_height,
                       const Canvas& canvas, const Rect& on_canvas, const SourceRows& rows,
                       RgbImage& rgb) {

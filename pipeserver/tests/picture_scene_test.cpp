@@ -89,6 +89,39 @@ TEST(SourceFit, EachFitLaysTheSourceAsItsNameSays) {
   EXPECT_EQ(parse_source_fit("cover"), std::nullopt);
 }
 
+// What a desktop's coordinator sends for a tile (sampled_source) is exactly what nearest
+// sampling reads for it: the bounding box of every pixel's source index, clipped to the source,
+// for every fit and rectangles inside, across and past a window's edges.
+TEST(SourceFit, TheSampledSourceIsExactlyWhatTheSamplingReads) {
+  const Canvas canvas{136, 48};
+  for (const SourceFit f :
+       {SourceFit::Fit, SourceFit::Fill, SourceFit::Stretch, SourceFit::OneToOne}) {
+    const SourceView v = movie_view(kWidth, kHeight, canvas, f);
+    for (const Rect r : {Rect{0, 0, 136, 48}, Rect{3, 5, 1, 1}, Rect{0, 0, 7, 48},
+                         Rect{120, 40, 16, 8}, Rect{50, 10, 30, 20}}) {
+      long x0 = kWidth, y0 = kHeight, x1 = -1, y1 = -1;
+      for (int y = r.y; y < r.bottom(); ++y) {
+        for (int x = r.x; x < r.right(); ++x) {
+          const long sx = sampled(v.centre_x, v.scale_x, canvas.width, x);
+          const long sy = sampled(v.centre_y, v.scale_y, canvas.height, y);
+          if (sx < 0 || sx >= kWidth || sy < 0 || sy >= kHeight) continue;
+          x0 = std::min(x0, sx), y0 = std::min(y0, sy);
+          x1 = std::max(x1, sx), y1 = std::max(y1, sy);
+        }
+      }
+      const Rect want = x1 < 0 ? Rect{}
+                               : Rect{static_cast<int>(x0), static_cast<int>(y0),
+                                      static_cast<int>(x1 - x0 + 1), static_cast<int>(y1 - y0 + 1)};
+      EXPECT_EQ(sampled_source(v, kWidth, kHeight, canvas, r), want)
+          << static_cast<int>(f) << " " << r.x << "," << r.y << " " << r.w << "x" << r.h;
+    }
+  }
+  // 1:1 on a window wider than the source: its right part samples nothing.
+  EXPECT_TRUE(
+      sampled_source(movie_view(10, 10, canvas, SourceFit::OneToOne), 10, 10, canvas, {20, 0, 5, 5})
+          .empty());
+}
+
 TEST(PictureScene, RoutedDisplaysArePicturePixels) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("picture-scene-{}", getpid());
   SceneOptions options;

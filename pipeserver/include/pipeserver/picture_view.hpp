@@ -41,4 +41,12 @@ SourceView picture_view(int frame, int source_width, int source_height, const Ca
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas,
                       SourceFit fit = SourceFit::Fit);
 
+// The source index canvas pixel `x` shows along one axis of a canvas `size` wide (the formula
+// above); out of [0, source size) it shows none.
+long source_index(double centre, double scale, int size, int x);
+// The source pixels `on_canvas` shows, clipped to the source (empty: none): all that nearest
+// sampling reads for it, so what a desktop's coordinator sends a pipeserver for a tile.
+Rect sampled_source(const SourceView& view, int source_width, int source_height,
+                    const Canvas& canvas, const Rect& on_canvas);
+
 }  // namespace l2

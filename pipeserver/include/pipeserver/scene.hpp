@@ -69,6 +69,9 @@ struct SceneOptions {
 };
 
 class Scene;
+namespace detail {
+class DesktopScene;  // scene_vnc.hpp
+}
 
 // One window of a session: a scene drawn into a rectangle of the canvas as if that rectangle
 // were its whole canvas, over what is behind it.
@@ -144,6 +147,10 @@ class Scene {
   // closed): the coordinator's WINDOWS line, the same on every pipeserver. Throws
   // std::invalid_argument for a window the session does not have, or when this is no session.
   virtual void place_windows(const std::vector<WindowPlacement>& back_to_front);
+  // The desktops the scene shows, whose pixels the run's coordinator sends each frame
+  // (docs/vnc.md): the vnc scene's, or those of a session's vnc windows, one per address, in
+  // the order of the session's windows (back to front). Empty for every other scene.
+  virtual std::vector<detail::DesktopScene*> desktops() { return {}; }
 
  protected:
   // The scene's own animation: batches_ and model_ of frame `frame`.
