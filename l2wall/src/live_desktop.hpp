@@ -24,12 +24,21 @@ class LiveDesktop {
   // a WANT.
   void serve(PipeserverSet& pipeservers);
 
+  // Takes in the server's updates, waiting for none. Throws RunFault as serve() does.
+  void take_updates();
+  // The lines that answer `pipeserver`'s WANT for `frame`, of the frame's one frozen desktop:
+  // the parts of it in `regions` (desktop pixels) that changed since it was last sent them
+  // (DesktopFrames::answer). A session's desktops ask with the regions its windows sample.
+  std::vector<std::string> answer(int pipeserver, int frame, const std::vector<Rect>& regions) {
+    return frames_.answer(pipeserver, frame, regions);
+  }
+  int width() const { return frames_.width(); }
+  int height() const { return frames_.height(); }
+
   // "vnc: desktop 1300x980", for the summary.
   std::string summary() const;
 
  private:
-  void take_updates();
-
   std::unique_ptr<DesktopSource> source_;
   DesktopFrames frames_;
   std::vector<std::vector<Rect>> tiles_;  // by pipeserver: its tiles' canvas rectangles

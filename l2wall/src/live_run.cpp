@@ -36,6 +36,7 @@
 #include "live_page.hpp"
 #include "live_windows.hpp"
 #include "pipeserver/live_exit.hpp"
+#include "session_desktops.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
@@ -196,11 +197,30 @@ class LiveRun {
     if (o_.scene != "session") return;
     const auto at = std::find(o_.scene_args.begin(), o_.scene_args.end(), "--session");
     if (at == o_.scene_args.end() || at + 1 == o_.scene_args.end()) return;
-    windows_ = std::make_unique<LiveWindows>(load_session(*(at + 1)));
+    const Session session = load_session(*(at + 1));
+    windows_ = std::make_unique<LiveWindows>(session);
+    start_session_desktops(session);
+  }
+
+  // A session's vnc windows: one connection per desktop, made before any pipeserver starts,
+  // as a vnc run's.
+  void start_session_desktops(const Session& session) {
+    if (std::none_of(session.windows.begin(), session.windows.end(),
+                     [](const SessionWindow& w) { return w.source == "vnc"; }))
+      return;
+    if (balance_)
+      throw std::runtime_error(
+          "a session's vnc windows are sent for the wall file's tiles: it takes no balancing "
+          "(--balance, or the wall file's [balance])");
+    try {
+      session_desktops_ = std::make_unique<SessionDesktops>(session, layout_, connect_vnc);
+    } catch (const DesktopError& e) {
+      throw std::runtime_error(e.what());
+    }
   }
 
   void serve_windows() {
-    if (windows_) windows_->serve(pipeservers_);
+    if (windows_) windows_->serve(pipeservers_, session_desktops_.get());
     if (desktop_) desktop_->serve(pipeservers_);
   }
 
@@ -730,7 +750,8 @@ class LiveRun {
                               (page_ ? steering_.summary() : std::string()) +
                               (balance_ ? balance_->summary() : std::string()) +
                               (windows_ ? windows_->summary() : std::string()) +
-                              (desktop_ ? desktop_->summary() : std::string());
+                              (desktop_ ? desktop_->summary() : std::string()) +
+                              (session_desktops_ ? session_desktops_->summary() : std::string());
     const RunReportTexts report =
         run_report(o_, wall_, pipeserver_logs, records_, totals_, extra, fault);
     std::vector<std::pair<std::string, std::string>> files;
@@ -766,14 +787,15 @@ class LiveRun {
   SavedFrames saved_;
   Wall wall_;
   TileLayout layout_;
-  std::unique_ptr<LiveShow> show_;                   // --show: the displays on screen, keys
-  std::unique_ptr<LivePage> page_;                   // --http: the control page
-  PageSteering steering_;                            // what the page asked for
-  std::vector<std::unique_ptr<DisplayPath>> paths_;  // the lead first (--path)
-  std::unique_ptr<LiveBalance> balance_;             // a balanced run's coordinator
-  std::unique_ptr<LiveWindows> windows_;             // a session run's windows
-  std::unique_ptr<LiveDesktop> desktop_;             // a vnc run's desktop
-  LineReader stdin_lines_{STDIN_FILENO};             // --window-stdin
+  std::unique_ptr<LiveShow> show_;                     // --show: the displays on screen, keys
+  std::unique_ptr<LivePage> page_;                     // --http: the control page
+  PageSteering steering_;                              // what the page asked for
+  std::vector<std::unique_ptr<DisplayPath>> paths_;    // the lead first (--path)
+  std::unique_ptr<LiveBalance> balance_;               // a balanced run's coordinator
+  std::unique_ptr<LiveWindows> windows_;               // a session run's windows
+  std::unique_ptr<LiveDesktop> desktop_;               // a vnc run's desktop
+  std::unique_ptr<SessionDesktops> session_desktops_;  // a session's vnc windows' desktops
+  LineReader stdin_lines_{STDIN_FILENO};               // --window-stdin
   PipeserverSet pipeservers_;  // after paths_: destroyed first, so pipeservers end before the
                                // compositing server
   std::vector<FrameRecord> records_;

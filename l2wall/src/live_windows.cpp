@@ -9,6 +9,7 @@
 #include "balance/message_words.hpp"
 #include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_fault.hpp"
+#include "session_desktops.hpp"
 #include "waiting_message.hpp"
 
 namespace l2 {
@@ -73,7 +74,8 @@ const std::string& LiveWindows::line_for(int frame) {
   return lines_[static_cast<std::size_t>(frame)];
 }
 
-void LiveWindows::serve(PipeserverSet& pipeservers) {
+void LiveWindows::serve(PipeserverSet& pipeservers, SessionDesktops* desktops) {
+  if (desktops) desktops->take_updates();
   for (LivePipeserver& h : pipeservers.serving()) {
     if (!h.windows) continue;
     for (;;) {
@@ -85,8 +87,18 @@ void LiveWindows::serve(PipeserverSet& pipeservers) {
       if (m.pipeserver != h.pipeserver || m.frame > static_cast<int>(lines_.size()))
         throw RunFault(fmt::format("pipeserver {}: WANT {} of pipeserver {} out of turn",
                                    h.pipeserver, m.frame, m.pipeserver));
+      std::vector<std::string> answer{line_for(m.frame)};
+      if (desktops) {
+        try {
+          const std::vector<std::string> lines =
+              desktops->answer(h.pipeserver, m.frame, shown_at(m.frame));
+          answer.insert(answer.end(), lines.begin(), lines.end());
+        } catch (const DesktopError& e) {
+          throw RunFault(fmt::format("pipeserver {}: {}", h.pipeserver, e.what()));
+        }
+      }
       try {
-        h.windows->send_line(line_for(m.frame));
+        for (const std::string& line : answer) h.windows->send_line(line);
       } catch (const ControlError&) {
         break;
       }

@@ -16,6 +16,7 @@
 namespace l2 {
 
 class PipeserverSet;
+class SessionDesktops;
 
 class LiveWindows {
  public:
@@ -28,8 +29,10 @@ class LiveWindows {
   // Frame `frame`'s WINDOWS line, deciding every frame up to it (each with the commands taken
   // since the one before).
   const std::string& line_for(int frame);
-  // Answers every WANT waiting. Throws RunFault for a line that is not one.
-  void serve(PipeserverSet& pipeservers);
+  // Answers every WANT waiting, each with its frame's WINDOWS line and then `desktops`' lines
+  // for that pipeserver and frame (a session with vnc windows). Throws RunFault for a line
+  // that is not one, or a desktop's server gone.
+  void serve(PipeserverSet& pipeservers, SessionDesktops* desktops = nullptr);
 
   // The windows of `frame` (back to front) as every pipeserver draws them: the latest decided for
   // a frame not decided yet, the session file's before frame 0.
