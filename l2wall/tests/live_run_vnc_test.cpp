@@ -5,65 +5,22 @@
 // once; and an unreachable server, a refused password, a server gone or a desktop resized
 // mid-run are one line.
 #include <sys/socket.h>
+#include <sys/stat.h>
 
 #include <atomic>
 #include <set>
 #include <thread>
 #include <tuple>
 
+#include "session_references.hpp"
 #include "wall_run.hpp"
 #include "wide_wall.hpp"
-#include "x_client.hpp"
-#include "xvfb_server.hpp"
+#include "xvnc_desktop.hpp"
 
 namespace l2 {
 namespace {
 
 using namespace testing_support;
-using ::l2::testing::XClient;
-using ::l2::testing::XvfbServer;
-
-bool installed(const std::string& program) {
-  return run_shell("command -v " + program + " >/dev/null", 10s).status.ok();
-}
-
-// A picture in which every pixel tells where it is: R and G the position within 256 pixels,
-// B which 256-pixel block.
-RgbImage position_picture(int w, int h) {
-  RgbImage p(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      p.set(x, y,
-            {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y),
-             static_cast<std::uint8_t>(16 * (x >> 8) + (y >> 8) + 1)});
-  return p;
-}
-
-// Xvnc at the default wall's canvas size, listening for RFB on 127.0.0.1 only, port 5900 +
-// its display number. `password_file`: VncAuth with that file (vncpasswd -f), else no security.
-class Xvnc {
- public:
-  explicit Xvnc(const fs::path& password_file = {}) {
-    const Wall wall = default_wall();
-    width = wall.canvas_width;
-    height = wall.canvas_height;
-    std::vector<std::string> args{"-geometry",     fmt::format("{}x{}", width, height),
-                                  "-depth",        "24",
-                                  "-interface",    "127.0.0.1",
-                                  "-nolisten",     "tcp",
-                                  "-AlwaysShared", "-SecurityTypes"};
-    if (password_file.empty()) {
-      args.push_back("None");
-    } else {
-      args.insert(args.end(), {"VncAuth", "-PasswordFile", password_file.string()});
-    }
-    server = std::make_unique<XvfbServer>("Xvnc", args);
-    address = "127.0.0.1" + server->display();
-  }
-  int width = 0, height = 0;
-  std::unique_ptr<XvfbServer> server;
-  std::string address;  // 127.0.0.1:N
-};
 
 class VncRun : public ::testing::Test {
  protected:
@@ -274,6 +231,141 @@ TEST_F(VncRun, ADesktopResizedMidRunEndsTheRunSayingSo) {
             0u)
       << run.output();
   expect_clean(run);
+}
+
+// A wall of four overlapping windows: the desktop (laid on its window by fill, so nearest
+// sampling picks some of its pixels), a model, a picture at 1:1 and a movie stretched. Every
+// display of every frame must equal the reference render of the same session with the desktop
+// window showing a picture of the desktop as the X server holds it: a vnc window draws a
+// desktop as a picture window draws a picture. Mid-run, the desktop window moves (a line on
+// stdin): from the frame the coordinator moved it in, every display shows it in its new place.
+TEST_F(VncRun, AWallOfFourWindowsWithADesktopEqualsItsReference) {
+  Xvnc vnc;
+  XClient x(vnc.server->display());
+  x.show_on_root(position_picture(vnc.width, vnc.height));
+  const fs::path dir = WallRun::folder_for("vnc-windows-files");
+  fs::create_directories(dir);
+  write_png(dir / "desktop.png", x.read(x.root(), 0, 0, vnc.width, vnc.height));
+  write_png(dir / "pattern.png", position_picture(300, 200));
+  ASSERT_TRUE(run({"/usr/bin/ffmpeg", "-loglevel", "error", "-y", "-f", "lavfi", "-i",
+                   "testsrc2=size=160x120:rate=10", "-frames:v", "3", "-c:v", "ffv1", "-pix_fmt",
+                   "bgr0", (dir / "clip.mkv").string()},
+                  60s)
+                  .status.ok());
+  // The default wall's canvas is 1300x980: every window crosses a mullion.
+  const std::string others =
+      "[[window]]\nsource = \"mesh\"\nx = 500\ny = 60\nwidth = 700\nheight = 520\n"
+      "[[window]]\nsource = \"picture\"\ncontent = \"pattern.png\"\nfit = \"1:1\"\nz = 2\n"
+      "x = 560\ny = 420\nwidth = 260\nheight = 180\n"
+      "[[window]]\nsource = \"movie\"\ncontent = \"clip.mkv\"\nfit = \"stretch\"\nz = 3\n"
+      "x = 880\ny = 600\nwidth = 380\nheight = 300\n";
+  const auto desktop = [](const std::string& source, const std::string& content, int left,
+                          int top) {
+    return fmt::format(
+        "[[window]]\nid = 9\nsource = \"{}\"\ncontent = \"{}\"\nfit = \"fill\"\nz = 1\n"
+        "x = {}\ny = {}\nwidth = 620\nheight = 400\n",
+        source, content, left, top);
+  };
+  std::ofstream(dir / "session.toml") << desktop("vnc", vnc.address, 40, 300) << others;
+  std::ofstream(dir / "reference.toml") << desktop("picture", "desktop.png", 40, 300) << others;
+  std::ofstream(dir / "moved.toml") << desktop("picture", "desktop.png", 300, 80) << others;
+
+  const fs::path fifo = dir / "commands";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  constexpr int kFrames = 16;
+  WallRun run("vnc-windows",
+              {"--scene", "session", "--session", (dir / "session.toml").string(), "--frames",
+               std::to_string(kFrames), "--keep", "every", "--refresh", "0", "--window-stdin"},
+              {}, false, "", false, fifo.string());
+  std::ofstream commands(fifo);  // opens once the shell opened its end for l2wall
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (!fs::exists(run.out() / "frame-3") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(20ms);
+  commands << "move 9 300 80 620 400\n" << std::flush;
+  commands.close();
+  const ExitStatus status = run.wait(180s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  // The frame the coordinator moved it in.
+  std::ifstream lines(run.out() / "windows.txt");
+  int moved = -1, frame = 0;
+  for (std::string line; std::getline(lines, line) && moved < 0; ++frame)
+    if (line.find(" 9 300 80 620 400") != std::string::npos) moved = frame;
+  ASSERT_GT(moved, 1);
+  ASSERT_LT(moved, kFrames);
+  for (const int k : {0, moved - 1, moved, kFrames - 1})
+    expect_references(run, k, dir / (k < moved ? "reference.toml" : "moved.toml"));
+  EXPECT_NE(run.output().find(fmt::format("window 9: vnc: desktop {}x{}", vnc.width, vnc.height)),
+            std::string::npos)
+      << run.output();
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// A desktop window's server that cannot be reached, refuses the password or goes mid-run is
+// the vnc scene's one line, naming the window.
+TEST_F(VncRun, ADesktopWindowsErrorsNameTheWindow) {
+  const fs::path dir = WallRun::folder_for("vnc-window-errors-files");
+  fs::create_directories(dir);
+  const auto session = [&dir](const std::string& name, const std::string& address,
+                              const std::string& password) {
+    std::ofstream(dir / name) << "[[window]]\nsource = \"swap\"\nx = 0\ny = 0\nwidth = 300\n"
+                                 "height = 200\n[[window]]\nid = 2\nsource = \"vnc\"\ncontent = \""
+                              << address << "\"\n"
+                              << password << "x = 100\ny = 100\nwidth = 900\nheight = 700\n";
+    return std::vector<std::string>{"--scene",  "session", "--session", (dir / name).string(),
+                                    "--frames", "100000"};
+  };
+  Fd socket_fd(::socket(AF_INET, SOCK_STREAM, 0));
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t len = sizeof addr;
+  ASSERT_EQ(::bind(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  ASSERT_EQ(::getsockname(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), &len), 0);
+  const std::string nobody = fmt::format("127.0.0.1::{}", ntohs(addr.sin_port));
+  WallRun unreachable("vnc-window-unreachable", session("a.toml", nobody, ""));
+  EXPECT_EQ(unreachable.wait(60s).code, 1);
+  const std::string said = unreachable.output();
+  EXPECT_EQ(
+      said.rfind(fmt::format("l2wall: window 2: vnc {}: cannot connect to 127.0.0.1 port {}: ",
+                             nobody, ntohs(addr.sin_port)),
+                 0),
+      0u)
+      << said;
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+
+  if (installed("vncpasswd")) {
+    ASSERT_TRUE(run_shell(fmt::format("echo wall-pw1 | vncpasswd -f > '{}/right'; echo other-pw | "
+                                      "vncpasswd -f > '{}/wrong'",
+                                      dir.string(), dir.string()),
+                          10s)
+                    .status.ok());
+    Xvnc locked(dir / "right");
+    WallRun refused("vnc-window-refused",
+                    session("b.toml", locked.address, "password_file = \"wrong\"\n"));
+    EXPECT_EQ(refused.wait(60s).code, 1);
+    EXPECT_EQ(
+        refused.output().rfind(
+            "l2wall: window 2: vnc " + locked.address + ": the server refused the password", 0),
+        0u)
+        << refused.output();
+  }
+
+  auto vnc = std::make_unique<Xvnc>();
+  const std::string address = vnc->address;
+  WallRun gone("vnc-window-gone", session("c.toml", address, ""));
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (gone.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(50ms);
+  ASSERT_GE(gone.pipeserver_log_lines(0), 3) << gone.output();
+  vnc.reset();
+  EXPECT_EQ(gone.wait(60s).code, 1);
+  EXPECT_NE(
+      gone.output().find("l2wall: window 2: vnc " + address + ": the server closed the connection"),
+      std::string::npos)
+      << gone.output();
+  expect_clean(gone);
+  fs::remove_all(dir);
 }
 
 }  // namespace
