@@ -660,7 +660,7 @@ class LiveRun {
     std::fprintf(stderr, "l2wall: %s\n", said.c_str());
   }
 
-  // Whether the pipeservers take WINDOWS lines (not the ranks of an --mpi run).
+  // Whether the pipeservers take WINDOWS lines (over MPI too, --mpi-windows): all of a session's.
   bool windows_moving_here() const {
     return !pipeservers_.all().empty() && pipeservers_.all().front().windows;
   }

@@ -29,6 +29,12 @@ namespace {
 constexpr const char* kOnlyDvi =
     "--mpi: --path vizserver does not run over MPI alone; --path dvi or both";
 
+// The scenes whose pipeservers take lines of the coordinator each frame (WANT out): a vnc run's
+// desktop, a session's windows (and its desktops), as balanced layouts travel (kControl).
+bool takes_windows(const std::string& scene) {
+  return scene == "vnc" || scene == "session";
+}
+
 class MpiBackends final : public RunBackends {
  public:
   MpiBackends(const TileLayout& layout, const RankMap& map, MpiSession& session,
@@ -55,8 +61,9 @@ class MpiBackends final : public RunBackends {
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
       if (launch.control)
         end.control = std::make_unique<MpiControlChannel>(rank, mpi_wire::kControl);
-      // A vnc run's desktop: the rank was started with --mpi-windows (exec_pipeserver).
-      if (launch.windows && launch.scene == "vnc")
+      // A vnc run's desktop, a session's windows: the rank was started with --mpi-windows
+      // (exec_pipeserver).
+      if (launch.windows && takes_windows(launch.scene))
         end.windows = std::make_unique<MpiControlChannel>(rank, mpi_wire::kWindows);
       return end;
     });
@@ -80,7 +87,7 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   launch.extra_args = {"--mpi"};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
-  if (o.scene == "vnc") launch.extra_args.push_back("--mpi-windows");
+  if (takes_windows(o.scene)) launch.extra_args.push_back("--mpi-windows");
   // Only the control page pauses an MPI run: the columns' windows take no keys.
   RunOptions pausable = o;
   pausable.show.clear();
