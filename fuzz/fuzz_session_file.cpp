@@ -20,6 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       require(w.on_canvas.w >= 1 && w.on_canvas.w <= l2::kMaxWindowSide, "a window's width");
       require(w.on_canvas.h >= 1 && w.on_canvas.h <= l2::kMaxWindowSide, "a window's height");
       require(w.id >= 0 && w.id <= l2::kMaxWindowId, "a window's id");
+      require(w.source == "vnc" || w.password_file.empty(), "a password only for a desktop");
     }
   } catch (const l2::LayoutError& e) {
     const std::string_view message = e.what();

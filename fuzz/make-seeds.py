@@ -66,9 +66,9 @@ put("ready", "bad-checksum", b"\x01" + message("READY", 42)[:-4] + b"00\r\n")
 for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml"):
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
 
-# --- session_file: the example session, and a window of each fit -------------------------------
-put("session_file", "windows.toml",
-    (HERE.parent / "examples" / "sessions" / "windows.toml").read_bytes())
+# --- session_file: the example sessions, and a window of each fit -------------------------------
+for session in ("windows.toml", "desktop.toml"):
+    put("session_file", session, (HERE.parent / "examples" / "sessions" / session).read_bytes())
 put("session_file", "fits.toml", b"background = 0x000000\n" + b"".join(
     b'[[window]]\nid = %d\nsource = "picture"\ncontent = "p.png"\nfit = "%s"\n'
     b"x = %d\ny = 0\nwidth = 10\nheight = 10\nz = %d\n" % (i, fit, 10 * i, -i)
