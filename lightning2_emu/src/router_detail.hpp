@@ -7,12 +7,17 @@
 #include <cstring>
 #include <vector>
 
-#include "band_coverage.hpp"
+#include "image/band_coverage.hpp"
 #include "lightning2_emu/input_frame.hpp"
 #include "lightning2_emu/route_report.hpp"
 #include "strip_headers/strip_header.hpp"
 
 namespace l2::router_detail {
+
+using coverage::Area;
+using coverage::CoverageCounts;
+using coverage::CoverageScratch;
+using coverage::sweep_coverage;
 
 // Where the strips of one display id go: the one table the scan looks up per strip.
 struct Target {

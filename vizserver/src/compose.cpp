@@ -68,6 +68,31 @@ void compose_tile(std::vector<RgbImage>& displays, std::vector<DepthPlane>& dept
   }
 }
 
+std::optional<coverage::Area> copy_area(const TileHeader& tile, int width, int height) {
+  if (tile.how != TileKind::Copy || width > 0xFFFF || height > 0xFFFF) return std::nullopt;
+  // 64-bit arithmetic: dx + w can pass INT_MAX for a hostile header.
+  const long long x0 = std::max<long long>(tile.dx, 0);
+  const long long x1 = std::min<long long>(static_cast<long long>(tile.dx) + tile.w, width);
+  const long long y0 = std::max<long long>(tile.dy, 0);
+  const long long y1 = std::min<long long>(static_cast<long long>(tile.dy) + tile.h, height);
+  if (x0 >= x1 || y0 >= y1) return std::nullopt;
+  return coverage::Area{static_cast<std::uint16_t>(y0), static_cast<std::uint16_t>(y1),
+                        static_cast<std::uint16_t>(x0), static_cast<std::uint16_t>(x1), 0};
+}
+
+void fill_uncovered(RgbImage& display, const std::vector<coverage::Area>& areas, Rgb background,
+                    coverage::CoverageScratch& scratch) {
+  if (display.width() > 0xFFFF || display.height() > 0xFFFF) {  // beyond the sweep's 16-bit rows
+    display.fill(background);
+    return;
+  }
+  coverage::sweep_coverage(
+      areas, 0, display.height(), display.width(), scratch,
+      [&](int y0, int y1, const std::vector<coverage::CoverageScratch::Gap>& gaps) {
+        for (const auto& g : gaps) display.fill_rect(g.x0, y0, g.x1 - g.x0, y1 - y0, background);
+      });
+}
+
 void compose_tile(std::vector<RgbImage>& displays, const TileHeader& tile,
                   const std::uint8_t* pixels, std::size_t stride, StripErrorCounts& counts) {
   std::vector<DepthPlane> none;

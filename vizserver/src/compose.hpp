@@ -6,8 +6,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "image/band_coverage.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/wire.hpp"
@@ -29,5 +31,16 @@ void compose_tile(std::vector<RgbImage>& displays, std::vector<DepthPlane>& dept
 // The same for displays without depth planes.
 void compose_tile(std::vector<RgbImage>& displays, const TileHeader& tile,
                   const std::uint8_t* pixels, std::size_t stride, StripErrorCounts& counts);
+
+// The display pixels a COPY tile writes, clipped to a display of width x height (a COPY tile
+// writes every pixel of its clipped rectangle, whatever its colours); nothing for a KEY or DEPTH
+// tile (the background shows through where they write nothing), a tile outside the display or
+// a display too large for an Area's 16-bit sides.
+std::optional<coverage::Area> copy_area(const TileHeader& tile, int width, int height);
+
+// Paints `background` on the pixels of `display` that no area covers, and only those: a display
+// whose COPY tiles cover it is then written once a frame, by its tiles.
+void fill_uncovered(RgbImage& display, const std::vector<coverage::Area>& areas, Rgb background,
+                    coverage::CoverageScratch& scratch);
 
 }  // namespace l2::viz

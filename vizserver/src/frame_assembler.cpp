@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "compose.hpp"
@@ -171,17 +172,57 @@ std::vector<ComposedFrame> FrameAssembler::take_complete() {
     for (const auto& pipeserver_tiles : it->second.tiles) {
       for (const ReceivedTile& t : pipeserver_tiles) buffered_bytes_ -= t.pixels.size();
     }
+    keep_buffers(it->second);
     last_composed_ = it->first;
     frames_.erase(it);
   }
   return out;
 }
 
-ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) const {
+// The last composed frame's tile buffers, in place of the ones before: as many as a frame
+// uses, so the spares never hold more than one frame's tiles.
+void FrameAssembler::keep_buffers(Frame& frame) {
+  spare_buffers_.clear();
+  for (auto& pipeserver_tiles : frame.tiles) {
+    for (ReceivedTile& t : pipeserver_tiles) spare_buffers_.push_back(std::move(t.pixels));
+  }
+}
+
+std::vector<std::uint8_t> FrameAssembler::take_buffer(std::size_t bytes) {
+  std::vector<std::uint8_t> out;
+  // The same size first (resize() then writes nothing), else any large enough.
+  auto it = std::find_if(spare_buffers_.begin(), spare_buffers_.end(),
+                         [&](const auto& b) { return b.size() == bytes; });
+  if (it == spare_buffers_.end()) {
+    it = std::find_if(spare_buffers_.begin(), spare_buffers_.end(),
+                      [&](const auto& b) { return b.capacity() >= bytes; });
+  }
+  if (it != spare_buffers_.end()) {
+    out = std::move(*it);
+    *it = std::move(spare_buffers_.back());
+    spare_buffers_.pop_back();
+  }
+  out.resize(bytes);
+  return out;
+}
+
+ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) {
   ComposedFrame out;
   out.frame = number;
   out.displays.reserve(sizes_.size());
-  for (const auto& [w, h] : sizes_) out.displays.emplace_back(w, h, background_);
+  for (const auto& [w, h] : sizes_) out.displays.push_back(RgbImage::unfilled(w, h));
+  // The background only where no COPY tile will write: every other pixel is written once.
+  for (std::size_t d = 0; d < sizes_.size(); ++d) {
+    const auto [w, h] = sizes_[d];
+    copy_areas_.clear();
+    for (const auto& pipeserver_tiles : frame.tiles) {
+      for (const ReceivedTile& t : pipeserver_tiles) {
+        if (t.header.display != d) continue;
+        if (const auto area = copy_area(t.header, w, h)) copy_areas_.push_back(*area);
+      }
+    }
+    fill_uncovered(out.displays[d], copy_areas_, background_, coverage_);
+  }
   // A depth plane for every display a DEPTH tile goes to, made before any tile is applied:
   // COPY and KEY pixels written earlier on the bus must hold depth 0 there too (spec §7).
   std::vector<DepthPlane> depths(sizes_.size());

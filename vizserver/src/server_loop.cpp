@@ -269,7 +269,11 @@ bool ServerLoop::advance(Connection& c) {
       } else if (header.kind == Kind::Error) {
         variable = header.payload_bytes;
       }
-      c.body.resize(variable);
+      if (header.kind == Kind::Tile || header.kind == Kind::TileExt) {
+        c.body = assembler_.take_buffer(variable);  // the assembler keeps it: reused
+      } else {
+        c.body.resize(variable);
+      }
       c.body_got = 0;
       c.body_ready = true;
     }

@@ -187,5 +187,31 @@ TEST(AssemblerLimits, BackgroundColourFillsUnwrittenPixels) {
   EXPECT_EQ(frames[0].displays[0], RgbImage(2, 2, Rgb{1, 2, 3}));
 }
 
+// Only pixels no COPY tile covers get the background first (compose()): a KEY or DEPTH tile that
+// writes nothing must still show it, and so must a display's pixels beside a COPY tile clipped
+// at its edge. Several frames, so that the pictures reuse memory earlier frames wrote.
+TEST(AssemblerLimits, BackgroundShowsWhereOnlyKeyOrDepthTilesOrNoTilesAre) {
+  constexpr Rgb kBackground{1, 2, 3};
+  FrameAssembler a({{6, 4}}, 1, kBackground);
+  ASSERT_TRUE(a.connect(0).ok());
+  for (std::uint32_t f = 0; f < 4; ++f) {
+    ASSERT_TRUE(a.add_tile(0, solid(f, 0, -2, -1, 4, 3, kGreen)).ok());  // clipped: 2x2 left
+    ReceivedTile key = solid(f, 0, 2, 0, 2, 4, kRed);  // every pixel the key colour
+    key.header.how = TileKind::Key;
+    key.header.key = 0xFF0000;
+    ASSERT_TRUE(a.add_tile(0, std::move(key)).ok());
+    ReceivedTile depth = solid(f, 0, 4, 0, 2, 4, kBlue);
+    depth.header.how = TileKind::Depth;
+    depth.pixels.assign(depth.header.pixel_bytes(), 0xFF);  // far plane: writes nothing
+    ASSERT_TRUE(a.add_tile(0, std::move(depth)).ok());
+    ASSERT_TRUE(a.finish(0, FrameDone{0, f, 3}).ok());
+    const auto frames = a.take_complete();
+    ASSERT_EQ(frames.size(), 1u);
+    RgbImage expected(6, 4, kBackground);
+    expected.fill_rect(0, 0, 2, 2, kGreen);
+    EXPECT_EQ(frames[0].displays[0], expected) << "frame " << f;
+  }
+}
+
 }  // namespace
 }  // namespace l2::viz

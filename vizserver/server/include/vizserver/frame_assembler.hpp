@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "image/band_coverage.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/wire.hpp"
@@ -80,6 +81,11 @@ class FrameAssembler {
   // Removes and composes every complete frame, lowest first.
   std::vector<ComposedFrame> take_complete();
 
+  // A buffer of `bytes` to receive a tile into: one a composed frame's tile left, when there is
+  // one (tiles repeat their sizes frame to frame, so it is mostly the same size: no allocation
+  // and no zero fill); else a new one.
+  std::vector<std::uint8_t> take_buffer(std::size_t bytes);
+
   // The lowest frame that exists and still waits for `pipeserver`, if any.
   std::optional<std::uint32_t> frame_waiting_for(int pipeserver) const;
   // Every pipeserver connected and disconnected, and no frame is waiting.
@@ -103,7 +109,8 @@ class FrameAssembler {
   Status check_order(int pipeserver, std::uint32_t frame, const char* what) const;
   Frame& frame_entry(std::uint32_t frame);
   bool waits_for(const Pipeserver& s, std::uint32_t frame) const;
-  ComposedFrame compose(std::uint32_t number, Frame& frame) const;
+  ComposedFrame compose(std::uint32_t number, Frame& frame);
+  void keep_buffers(Frame& frame);
 
   std::vector<std::pair<int, int>> sizes_;
   Rgb background_;
@@ -113,6 +120,9 @@ class FrameAssembler {
   std::size_t buffered_bytes_ = 0;
   std::optional<std::uint32_t> last_composed_;
   bool survive_losses_ = false;
+  std::vector<std::vector<std::uint8_t>> spare_buffers_;  // composed tiles' pixels, for reuse
+  std::vector<coverage::Area> copy_areas_;                // compose()'s scratch
+  coverage::CoverageScratch coverage_;
 };
 
 }  // namespace l2::viz

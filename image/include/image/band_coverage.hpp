@@ -1,4 +1,6 @@
-// Coverage of one band of display rows, from the rectangles the strips of a frame wrote.
+// Coverage of one band of display rows, from the rectangles the strips of a frame wrote (the
+// emulator's router) or a frame's tiles cover (the compositing server): where the background
+// must go, and nowhere else.
 //
 // Strips come in runs — a tile is the same source columns on consecutive scanlines going to the
 // same display columns on consecutive rows — so the router records one rectangle per run, not
@@ -15,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace l2::router_detail {
+namespace l2::coverage {
 
 // Rows y0..y1-1, columns x0..x1-1 of a display, written by `input` during the current frame.
 struct Area {
@@ -107,4 +109,4 @@ CoverageCounts sweep_coverage(const std::vector<Area>& areas, int row0, int row1
   return total;
 }
 
-}  // namespace l2::router_detail
+}  // namespace l2::coverage
