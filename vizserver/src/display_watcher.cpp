@@ -47,7 +47,9 @@ DisplayWatcher::DisplayWatcher(Fd fd, std::string peer, std::uint32_t display_co
       peer_(std::move(peer)),
       display_count_(display_count),
       max_held_(std::max<std::size_t>(max_held, 1)),
-      io_timeout_(io_timeout) {
+      io_timeout_(io_timeout),
+      // The frames held, the one being read and the one its reader still looks at.
+      pictures_(PicturePool::make((max_held_ + 2) * display_count)) {
   thread_ = std::thread([this] { run(); });
 }
 
@@ -186,7 +188,7 @@ void DisplayWatcher::read_stream() {
             fmt::format("{}: DISPLAY {} of frame {} where display {} of frame {} was due", peer_,
                         d.display, d.frame, building.displays.size(), building.frame));
       }
-      RgbImage image = RgbImage::unfilled(static_cast<int>(d.width), static_cast<int>(d.height));
+      RgbImage image = pictures_->take(static_cast<int>(d.width), static_cast<int>(d.height));
       if (!read_exact(image.data(), d.pixel_bytes(), false, "DISPLAY")) return;
       building.displays.push_back(std::move(image));
     } else if (h.kind == Kind::Shown) {
@@ -217,7 +219,7 @@ void DisplayWatcher::send_lost(std::uint32_t pipeserver) {
 
 void DisplayWatcher::publish(ComposedFrame frame) {
   const std::uint32_t number = frame.frame;
-  auto ptr = std::make_shared<const ComposedFrame>(std::move(frame));
+  FramePtr ptr = pictures_->share(std::move(frame));
   {
     std::lock_guard lock(mutex_);
     held_[number] = std::move(ptr);

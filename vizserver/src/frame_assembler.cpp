@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "compose.hpp"
+#include "vizserver/picture_pool.hpp"
 
 namespace l2::viz {
 
@@ -20,6 +21,9 @@ FrameAssembler::FrameAssembler(std::vector<std::pair<int, int>> display_sizes, i
     if (w < 1 || h < 1) throw std::invalid_argument(fmt::format("display size {}x{}", w, h));
   }
   pipeservers_.resize(static_cast<std::size_t>(pipeserver_count));
+  // Frames wait in the server's recent frames and the program's queue to the display stream:
+  // the pool keeps up to eight frames' pictures, never more than were in use at once.
+  pictures_ = PicturePool::make(8 * sizes_.size());
 }
 
 std::string FrameAssembler::name(int pipeserver) const {
@@ -179,12 +183,18 @@ std::vector<ComposedFrame> FrameAssembler::take_complete() {
   return out;
 }
 
-// The last composed frame's tile buffers, in place of the ones before: as many as a frame
-// uses, so the spares never hold more than one frame's tiles.
+// A composed frame's tile buffers join the spares. Pipeservers run a frame ahead, so the next
+// frame's tiles may have arrived already and not taken theirs: two frames' tiles are kept,
+// the oldest dropped beyond that.
 void FrameAssembler::keep_buffers(Frame& frame) {
-  spare_buffers_.clear();
+  std::size_t tiles = 0;
   for (auto& pipeserver_tiles : frame.tiles) {
     for (ReceivedTile& t : pipeserver_tiles) spare_buffers_.push_back(std::move(t.pixels));
+    tiles += pipeserver_tiles.size();
+  }
+  if (spare_buffers_.size() > 2 * tiles) {
+    spare_buffers_.erase(spare_buffers_.begin(),
+                         spare_buffers_.end() - static_cast<std::ptrdiff_t>(2 * tiles));
   }
 }
 
@@ -210,7 +220,7 @@ ComposedFrame FrameAssembler::compose(std::uint32_t number, Frame& frame) {
   ComposedFrame out;
   out.frame = number;
   out.displays.reserve(sizes_.size());
-  for (const auto& [w, h] : sizes_) out.displays.push_back(RgbImage::unfilled(w, h));
+  for (const auto& [w, h] : sizes_) out.displays.push_back(pictures_->take(w, h));
   // The background only where no COPY tile will write: every other pixel is written once.
   for (std::size_t d = 0; d < sizes_.size(); ++d) {
     const auto [w, h] = sizes_[d];

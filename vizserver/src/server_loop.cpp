@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "command_line/printable.hpp"
+#include "vizserver/picture_pool.hpp"
 
 namespace l2::viz {
 namespace {
@@ -428,7 +429,7 @@ void ServerLoop::fail(const std::string& line) {
 
 void ServerLoop::publish_swaps() {
   for (ComposedFrame& composed : assembler_.take_complete()) {
-    auto frame = std::make_shared<const ComposedFrame>(std::move(composed));
+    const FramePtr frame = assembler_.pictures().share(std::move(composed));
     {
       std::lock_guard lock(shared_->mutex);
       shared_->counts += frame->counts;

@@ -18,6 +18,7 @@
 #include "base/result.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_stream.hpp"
+#include "vizserver/picture_pool.hpp"
 #include "vizserver/socket.hpp"
 
 namespace l2::viz {
@@ -78,6 +79,7 @@ class DisplayWatcher {
   std::optional<std::string> ended_;
   bool error_message_ = false;
   std::atomic<bool> stop_{false};
+  std::shared_ptr<PicturePool> pictures_;  // received frames' pictures, reused
   std::thread thread_;
 };
 

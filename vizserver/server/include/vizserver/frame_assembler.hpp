@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,6 +34,8 @@
 #include "vizserver/wire.hpp"
 
 namespace l2::viz {
+
+class PicturePool;
 
 struct ReceivedTile {
   TileHeader header;
@@ -85,6 +88,9 @@ class FrameAssembler {
   // one (tiles repeat their sizes frame to frame, so it is mostly the same size: no allocation
   // and no zero fill); else a new one.
   std::vector<std::uint8_t> take_buffer(std::size_t bytes);
+  // Where composed frames' pictures come from: frames shared through its share() give their
+  // pictures back for the frames after them (picture_pool.hpp).
+  PicturePool& pictures() { return *pictures_; }
 
   // The lowest frame that exists and still waits for `pipeserver`, if any.
   std::optional<std::uint32_t> frame_waiting_for(int pipeserver) const;
@@ -120,6 +126,7 @@ class FrameAssembler {
   std::size_t buffered_bytes_ = 0;
   std::optional<std::uint32_t> last_composed_;
   bool survive_losses_ = false;
+  std::shared_ptr<PicturePool> pictures_;
   std::vector<std::vector<std::uint8_t>> spare_buffers_;  // composed tiles' pixels, for reuse
   std::vector<coverage::Area> copy_areas_;                // compose()'s scratch
   coverage::CoverageScratch coverage_;
