@@ -33,6 +33,22 @@ inline __m256i load(const void* p) {
 inline void store(void* p, __m256i v) {
   _mm256_storeu_si256(static_cast<__m256i*>(p), v);
 }
+// Bytes 0-23 of p as load() places them, 24-31 zero, reading nothing past the 24: the last
+// step of a span, whose next bytes may lie past the end of the frame or display.
+inline __m256i load24(const std::uint8_t* p) {
+  const __m128i low = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+  const __m128i high = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + 16));
+  return _mm256_inserti128_si256(_mm256_castsi128_si256(low), high, 1);
+}
+// Eight RGB pixels: 32 bytes read inside a span, exactly 24 at its end (kLast).
+template <bool kLast>
+inline __m256i load_rgb(const std::uint8_t* p) {
+  if constexpr (kLast) {
+    return load24(p);
+  } else {
+    return load(p);
+  }
+}
 
 // The byte shuffle that makes 32-bit lanes of the four pixels in each 128-bit half: lane byte
 // b + up holds colour byte 2 - b of its pixel (the lane is R << 16 | G << 8 | B, << 8 with up).
@@ -51,13 +67,13 @@ inline constexpr LaneOrder<kBpp, kUp> kLaneOrder;
 
 // Eight pixels of kBpp bytes as 32-bit lanes R << 16 | G << 8 | B, or that << 8 (kUp). Byte
 // shuffles stay inside 128-bit halves, so RGB pixels 4-7 (bytes 12-23) first move to the upper.
-template <int kBpp, bool kUp = false>
+template <int kBpp, bool kUp = false, bool kLast = false>
 inline __m256i lanes(const std::uint8_t* p) {
   const __m256i order =
       _mm256_load_si256(reinterpret_cast<const __m256i*>(kLaneOrder<kBpp, kUp>.at));
   if constexpr (kBpp == 3) {
     const __m256i halves =
-        _mm256_permutevar8x32_epi32(load(p), _mm256_setr_epi32(0, 1, 2, 0, 3, 4, 5, 0));
+        _mm256_permutevar8x32_epi32(load_rgb<kLast>(p), _mm256_setr_epi32(0, 1, 2, 0, 3, 4, 5, 0));
     return _mm256_shuffle_epi8(halves, order);
   } else {
     return _mm256_shuffle_epi8(load(p), order);
@@ -65,10 +81,10 @@ inline __m256i lanes(const std::uint8_t* p) {
 }
 
 // Eight pixels' colours as the first 24 bytes, R G B R G B ... (RGBA: A dropped).
-template <int kBpp>
+template <int kBpp, bool kLast = false>
 inline __m256i colours(const std::uint8_t* p) {
   if constexpr (kBpp == 3) {
-    return load(p);
+    return load_rgb<kLast>(p);
   } else {
     const __m256i packed = _mm256_shuffle_epi8(
         load(p), _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0, 1, 2,
@@ -99,10 +115,31 @@ inline void store24(std::uint8_t* p, __m256i v) {
 }
 
 // Rank and colour of eight pixels replaced where `write`.
+template <bool kLast>
 inline void select(std::uint8_t* dst, std::uint32_t* rank, __m256i old, __m256i to, __m256i write,
                    __m256i colour) {
   store(rank, _mm256_blendv_epi8(old, to, write));
-  store24(dst, _mm256_blendv_epi8(load(dst), colour, spread(write)));
+  store24(dst, _mm256_blendv_epi8(load_rgb<kLast>(dst), colour, spread(write)));
+}
+
+// The last step of a span of n >= 8 pixels whose steps stopped at i: pixels n-8 to n-1, the
+// first of them again. Applying a strip pixel twice leaves what applying it once did (an
+// opaque pixel of equal rank writes the same colour again, a DEPTH pixel of equal rank is not
+// nearer), so the overlap changes nothing and the plain loop has nothing left: its calls, a
+// few pixels each, cost as much as a sixth of the steps in the profile.
+inline bool last_step(int n, int i) {
+  return n >= 8 && i < n;
+}
+
+template <bool kKeyed, int kBpp, bool kLast>
+inline void overlay_step(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* s, __m256i to,
+                         __m256i key_lanes) {
+  const __m256i old = load(rank);
+  __m256i write = _mm256_cmpeq_epi32(_mm256_min_epu32(to, old), to);  // r <= old
+  if constexpr (kKeyed) {
+    write = _mm256_andnot_si256(_mm256_cmpeq_epi32(lanes<kBpp, false, kLast>(s), key_lanes), write);
+  }
+  select<kLast>(dst, rank, old, to, write, colours<kBpp, kLast>(s));
 }
 
 template <bool kKeyed, int kBpp>
@@ -112,39 +149,52 @@ int overlay_steps(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* sr
   const __m256i key_lanes = _mm256_set1_epi32(static_cast<int>(key));
   int i = 0;
   for (; i < stop(n); i += 8) {
-    const std::uint8_t* s = src + i * kBpp;
-    const __m256i old = load(rank + i);
-    __m256i write = _mm256_cmpeq_epi32(_mm256_min_epu32(to, old), to);  // r <= old
-    if constexpr (kKeyed) {
-      write = _mm256_andnot_si256(_mm256_cmpeq_epi32(lanes<kBpp>(s), key_lanes), write);
-    }
-    select(dst + 3 * i, rank + i, old, to, write, colours<kBpp>(s));
+    overlay_step<kKeyed, kBpp, false>(dst + 3 * i, rank + i, src + i * kBpp, to, key_lanes);
   }
-  return i;
+  for (; n - i > 8; i += 8) {
+    overlay_step<kKeyed, kBpp, true>(dst + 3 * i, rank + i, src + i * kBpp, to, key_lanes);
+  }
+  if (!last_step(n, i)) return i;
+  const int at = n - 8;
+  overlay_step<kKeyed, kBpp, true>(dst + 3 * at, rank + at, src + at * kBpp, to, key_lanes);
+  return n;
 }
 
 // Ranks (D + 1) << 8 | tag, as (D << 8) + (256 | tag): the byte shuffle that takes the depths
 // apart puts them 8 bits up. Where a pixel is kept (far plane, or a rank not below the pixel's)
 // the blends take the old values, so the mask needs no inverting.
-template <int kBpp, bool kInput255>
-int depth_steps(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src,
-                const std::uint8_t* depth, int n, std::uint32_t tag) {
+template <int kBpp, bool kInput255, bool kLast>
+inline void depth_step(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src,
+                       const std::uint8_t* depth, std::uint32_t tag) {
   const __m256i above = _mm256_set1_epi32(static_cast<int>(256 | tag));
   const __m256i far_plane = _mm256_set1_epi32(static_cast<int>(kFarDepth << 8));
   const __m256i last_rank = _mm256_set1_epi32(static_cast<int>(kFar - 1));
+  const __m256i d8 = lanes<kBpp, true, kLast>(depth);
+  __m256i to = _mm256_add_epi32(d8, above);
+  if constexpr (kInput255) to = _mm256_min_epu32(to, last_rank);  // FFFFFE as input 254's
+  const __m256i old = load(rank);
+  const __m256i keep = _mm256_or_si256(_mm256_cmpeq_epi32(d8, far_plane),
+                                       _mm256_cmpeq_epi32(_mm256_max_epu32(to, old), to));
+  store(rank, _mm256_blendv_epi8(to, old, keep));
+  store24(dst, _mm256_blendv_epi8(colours<kBpp, kLast>(src), load_rgb<kLast>(dst), spread(keep)));
+}
+
+template <int kBpp, bool kInput255>
+int depth_steps(std::uint8_t* dst, std::uint32_t* rank, const std::uint8_t* src,
+                const std::uint8_t* depth, int n, std::uint32_t tag) {
   int i = 0;
   for (; i < stop(n); i += 8) {
-    const __m256i d8 = lanes<kBpp, true>(depth + i * kBpp);
-    __m256i to = _mm256_add_epi32(d8, above);
-    if constexpr (kInput255) to = _mm256_min_epu32(to, last_rank);  // FFFFFE as input 254's
-    const __m256i old = load(rank + i);
-    const __m256i keep = _mm256_or_si256(_mm256_cmpeq_epi32(d8, far_plane),
-                                         _mm256_cmpeq_epi32(_mm256_max_epu32(to, old), to));
-    store(rank + i, _mm256_blendv_epi8(to, old, keep));
-    store24(dst + 3 * i,
-            _mm256_blendv_epi8(colours<kBpp>(src + i * kBpp), load(dst + 3 * i), spread(keep)));
+    depth_step<kBpp, kInput255, false>(dst + 3 * i, rank + i, src + i * kBpp, depth + i * kBpp,
+                                       tag);
   }
-  return i;
+  for (; n - i > 8; i += 8) {
+    depth_step<kBpp, kInput255, true>(dst + 3 * i, rank + i, src + i * kBpp, depth + i * kBpp, tag);
+  }
+  if (!last_step(n, i)) return i;
+  const int at = n - 8;
+  depth_step<kBpp, kInput255, true>(dst + 3 * at, rank + at, src + at * kBpp, depth + at * kBpp,
+                                    tag);
+  return n;
 }
 
 }  // namespace
@@ -178,15 +228,25 @@ int settle(std::uint8_t* dst, std::uint32_t* rank, int n, std::uint8_t r, std::u
   const __m256i background = load(pattern);
   const __m256i far = _mm256_set1_epi32(-1);
   __m256i empties = _mm256_setzero_si256();  // minus the empty pixels, lane by lane
-  int i = 0;
-  for (; i < stop(n); i += 8) {
-    const __m256i empty = _mm256_cmpeq_epi32(load(rank + i), far);
+  const __m256i every = _mm256_set1_epi32(-1);
+  // Eight pixels from `at`, those of the lanes in `judged`. Most pixels of a composited display
+  // were written: their colours are left unread.
+  const auto step = [&](int at, __m256i judged) {
+    const __m256i empty = _mm256_and_si256(_mm256_cmpeq_epi32(load(rank + at), far), judged);
     empties = _mm256_add_epi32(empties, empty);
-    store(rank + i, far);
-    // Most pixels of a composited display were written: their colours are left unread.
+    store(rank + at, far);
     if (!_mm256_testz_si256(empty, empty)) {
-      store24(dst + 3 * i, _mm256_blendv_epi8(load(dst + 3 * i), background, spread(empty)));
+      store24(dst + 3 * at, _mm256_blendv_epi8(load24(dst + 3 * at), background, spread(empty)));
     }
+  };
+  int i = 0;
+  for (; n - i > 8; i += 8) step(i, every);
+  if (last_step(n, i)) {
+    // Pixels n-8 to n-1 again, as the other loops end; but settled pixels look empty (kFar),
+    // so only the lanes of pixels i and on (the last n - i) are judged.
+    step(n - 8, _mm256_cmpgt_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
+                                   _mm256_set1_epi32(7 - (n - i))));
+    i = n;
   }
   alignas(32) std::int32_t lane[8];
   store(lane, empties);

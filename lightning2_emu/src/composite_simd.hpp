@@ -5,10 +5,11 @@
 // into 32-bit lanes with one permute and one byte shuffle, compares and selects the ranks, and
 // blends the eight colours as bytes under a mask spread the same way back.
 //
-// Each returns how many leading pixels of the span it did (a multiple of 8, none where the
-// machine lacks AVX2); the caller's plain loop does the rest. A step loads 32 bytes for its 24
-// of RGB pixels, so it stops 11 pixels before the span's end: the bytes past a span may be past
-// the end of the frame or display.
+// Each returns how many leading pixels of the span it did: all of a span of 8 or more, none of
+// a shorter one or where the machine lacks AVX2; the caller's plain loop does the rest. A step
+// loads 32 bytes for its 24 of RGB pixels, so the steps stop 11 pixels before the span's end
+// (the bytes past a span may be past the end of the frame or display) and one last step, with
+// loads of exactly 24 bytes, does its last 8 pixels, some of them a second time.
 #pragma once
 
 #include <cstdint>
