@@ -37,6 +37,7 @@ struct Options {
   std::string mode;     // empty: the wall's [balance] mode
   bool assign = false;
   std::optional<double> resistance, tile_cost;  // unset: the wall's [balance]
+  std::optional<double> gain;                   // unset: EdgeMotion's
   bool header = false;
   std::string tiles_csv;  // a row per tile and frame, for finding where the time goes
 };
@@ -77,6 +78,7 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
   settings.assign = settings.assign || o.assign;
   settings.resistance = o.resistance.value_or(settings.resistance);
   settings.tile_cost = o.tile_cost.value_or(settings.tile_cost);
+  settings.motion.gain = o.gain.value_or(settings.motion.gain);
   l2::Balancer balancer(wall, settings);
   auto scene = l2::make_scene(o.scene, scene_options);
   auto pipeservers = pipeservers_of(balancer.layout());
@@ -161,6 +163,10 @@ int main(int argc, char** argv) {
                  "the fixed part of a display tile in that prediction, as a fraction of the mean "
                  "tile time (default: the wall's [balance] tile_cost)")
       ->check(CLI::Range(0.0, 0.99));
+  app.add_option("--gain", o.gain,
+                 "the part of its distance to the balanced cut an edge moves each frame (strips), "
+                 "or of the measured cost grid blended in (k-d); default: 0.5")
+      ->check(CLI::Range(0.05, 1.0));
   app.add_flag("--header", o.header, "print the CSV header line first");
   app.add_option("--tiles", o.tiles_csv,
                  "append a CSV row per tile and frame to FILE: pipeservers, mode, assign, frame, "
