@@ -9,16 +9,12 @@ set -euo pipefail
 l2wall=$1 out=$2 np=$3
 frames=5
 source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/xvnc_local.sh"    # xvnc_local: a private desktop
 rm -rf "$out" && mkdir -p "$out"
-# Its own display number (-displayfd), RFB on 127.0.0.1 at 5900 + that number.
-Xvnc -displayfd 3 -geometry 1300x980 -depth 24 -interface 127.0.0.1 -nolisten tcp \
-  -SecurityTypes None 3>"$out/display" 2>"$out/xvnc.log" &
-xvnc=$!
+xvnc=""
 trap 'kill $xvnc 2>/dev/null; wait $xvnc 2>/dev/null || true' EXIT
-for _ in $(seq 200); do grep -q . "$out/display" 2>/dev/null && break; sleep 0.1; done
-n=$(head -1 "$out/display")
-[[ -n $n ]] || { echo "FAIL: Xvnc reported no display"; exit 1; }
-DISPLAY=:$n xsetroot -mod 7 5 -fg '#c04020' -bg '#203060'
+xvnc_local "$out"
+n=$display
 
 "$l2wall" run --scene vnc --content "127.0.0.1:$n" --frames $frames --out "$out/one" \
   --no-progress >"$out/one.txt" 2>&1 || { echo "FAIL: the one-machine run failed:"; cat "$out/one.txt"; exit 1; }
