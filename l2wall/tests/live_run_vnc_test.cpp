@@ -4,7 +4,6 @@
 // back (XGetImage, not RFB); a desktop that changes every ~30 ms must never show two states at
 // once; and an unreachable server, a refused password, a server gone or a desktop resized
 // mid-run are one line.
-#include <sys/socket.h>
 #include <sys/stat.h>
 
 #include <atomic>
@@ -174,15 +173,8 @@ TEST_F(VncRun, APasswordFileOpensAServerThatWantsOne) {
 }
 
 TEST_F(VncRun, AServerThatCannotBeReachedIsOneLine) {
-  // A port bound but not listening: connections to it are refused.
-  Fd socket_fd(::socket(AF_INET, SOCK_STREAM, 0));
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t len = sizeof addr;
-  ASSERT_EQ(::bind(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
-  ASSERT_EQ(::getsockname(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), &len), 0);
-  const int port = ntohs(addr.sin_port);
+  const HeldPort closed(HeldPort::Mode::kRefusing);
+  const int port = closed.port;
   const std::string address = fmt::format("127.0.0.1::{}", port);
   WallRun run("vnc-unreachable", {"--scene", "vnc", "--content", address, "--frames", "3"});
   EXPECT_EQ(run.wait(60s).code, 1);
@@ -315,20 +307,14 @@ TEST_F(VncRun, ADesktopWindowsErrorsNameTheWindow) {
     return std::vector<std::string>{"--scene",  "session", "--session", (dir / name).string(),
                                     "--frames", "100000"};
   };
-  Fd socket_fd(::socket(AF_INET, SOCK_STREAM, 0));
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t len = sizeof addr;
-  ASSERT_EQ(::bind(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
-  ASSERT_EQ(::getsockname(socket_fd.get(), reinterpret_cast<sockaddr*>(&addr), &len), 0);
-  const std::string nobody = fmt::format("127.0.0.1::{}", ntohs(addr.sin_port));
+  const HeldPort closed(HeldPort::Mode::kRefusing);
+  const std::string nobody = fmt::format("127.0.0.1::{}", closed.port);
   WallRun unreachable("vnc-window-unreachable", session("a.toml", nobody, ""));
   EXPECT_EQ(unreachable.wait(60s).code, 1);
   const std::string said = unreachable.output();
   EXPECT_EQ(
       said.rfind(fmt::format("l2wall: window 2: vnc {}: cannot connect to 127.0.0.1 port {}: ",
-                             nobody, ntohs(addr.sin_port)),
+                             nobody, closed.port),
                  0),
       0u)
       << said;

@@ -134,16 +134,18 @@ class WallRun {
   std::optional<ChildProcess> process_;
 };
 
-// A TCP port on 127.0.0.1 held open (bound, listening) until destroyed.
+// A TCP port on 127.0.0.1 held until destroyed: listening (connections wait in its backlog), or
+// only bound, so that connections to it are refused and no other program can take it meanwhile.
 class HeldPort {
  public:
-  HeldPort() : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
+  enum class Mode { kListening, kRefusing };
+  explicit HeldPort(Mode mode = Mode::kListening) : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     socklen_t len = sizeof addr;
     if (!fd_ || bind(fd_.get(), reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
-        listen(fd_.get(), 1) != 0 ||
+        (mode == Mode::kListening && listen(fd_.get(), 1) != 0) ||
         getsockname(fd_.get(), reinterpret_cast<sockaddr*>(&addr), &len) != 0)
       ADD_FAILURE() << "cannot hold a TCP port";
     port = ntohs(addr.sin_port);
