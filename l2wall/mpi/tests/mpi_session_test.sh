@@ -15,11 +15,10 @@ rm -rf "$out" && mkdir -p "$out"
 xvnc="" run=""
 trap 'kill $xvnc $run 2>/dev/null; wait $xvnc 2>/dev/null || true' EXIT
 xvnc_local "$out"
-n=$display
 
 session() {  # the desktop window's X and Y
   printf '[[window]]\nsource = "swap"\nx = 100\ny = 100\nwidth = 700\nheight = 500\n'
-  printf '[[window]]\nid = 1\nsource = "vnc"\ncontent = "127.0.0.1:%s"\nfit = "stretch"\n' "$n"
+  printf '[[window]]\nid = 1\nsource = "vnc"\ncontent = "127.0.0.1:%s"\nfit = "stretch"\n' "$display"
   printf 'z = 1\nx = %s\ny = %s\nwidth = 400\nheight = 300\n' "$1" "$2"
 }
 session 200 150 >"$out/session.toml"

@@ -14,11 +14,10 @@ rm -rf "$out" && mkdir -p "$out"
 xvnc=""
 trap 'kill $xvnc 2>/dev/null; wait $xvnc 2>/dev/null || true' EXIT
 xvnc_local "$out"
-n=$display
 
-"$l2wall" run --scene vnc --content "127.0.0.1:$n" --frames $frames --out "$out/one" \
+"$l2wall" run --scene vnc --content "127.0.0.1:$display" --frames $frames --out "$out/one" \
   --no-progress >"$out/one.txt" 2>&1 || { echo "FAIL: the one-machine run failed:"; cat "$out/one.txt"; exit 1; }
-"${mpirun_local[@]}" -np "$np" "$l2wall" run --mpi --scene vnc --content "127.0.0.1:$n" \
+"${mpirun_local[@]}" -np "$np" "$l2wall" run --mpi --scene vnc --content "127.0.0.1:$display" \
   --frames $frames --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" ||
   { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 
