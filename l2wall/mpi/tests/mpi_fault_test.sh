@@ -19,7 +19,7 @@ stall_ms=1000
 # machine (a sanitizer build beside the suite), and a bound near the idle time failed there
 # for nothing. A run that never ends is still caught, and killed, at this ceiling.
 end_ceiling_ms=15000
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 source "$(dirname "$0")/rank_pid.sh"
 rm -rf "$out" && mkdir -p "$out"
 
@@ -41,7 +41,7 @@ check_saved() {
 }
 
 # signal_and_wait SIGNAL PID RUN DIR LABEL: sends SIGNAL to PID, then waits for mpirun (RUN) to
-# end, at most end_ceiling_ms; it must end non-zero. Sets `status`.
+# end, at most end_ceiling_ms; it must end non-zero. Sets `status` (and `mpirun_left`).
 signal_and_wait() {
   local signal=$1 pid=$2 run=$3 dir=$4 label=$5 t0 took
   status=0
@@ -54,23 +54,25 @@ signal_and_wait() {
       cat "$dir.err"
       ps -o pid,stat,wchan:24,etime,args --ppid "$run" -p "$run" $(pgrep -f -- "$dir" | sed 's/^/-p /') || true
       kill -s KILL -- $(pgrep -f -- "$dir") "$run" 2>/dev/null || true
+      mpirun_wait "$run" || true  # its session folder, which a killed mpirun leaves
       exit 1
     fi
     sleep 0.05
   done
-  wait "$run" || status=$?
+  mpirun_wait "$run" || status=$?
   took=$((($(date +%s%N) - t0) / 1000000))
   echo "$label: ended after $took ms, exit $status"
   [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
 }
 
-# nothing_left DIR PIDS RUN [CRASHED]: no process of the run in DIR, no shared memory of PIDS, no
-# session of mpirun RUN. mpirun has returned; the ranks it ended may still be exiting on a loaded
-# machine: allowed a few seconds, not a fixed moment. CRASHED (1: mpirun crashed in its PMIx
-# finalize, see fault()): a crash that early skips mpirun's removal of its own session folder,
-# which is then Open MPI's litter, not the run's: removed here and said, the rest still checked.
+# nothing_left DIR PIDS [CRASHED]: no process of the run in DIR, no shared memory of PIDS, no
+# session folder left by mpirun (mpirun_left, from mpirun_wait). mpirun has returned; the ranks
+# it ended may still be exiting on a loaded machine: allowed a few seconds, not a fixed moment.
+# CRASHED (1: mpirun crashed in its PMIx finalize, see fault()): a crash that early skips
+# mpirun's removal of its own session folder, which is then Open MPI's litter, not the run's
+# (mpirun_wait removed it and said so); the rest still checked.
 nothing_left() {
-  local dir=$1 pids=$2 run=$3 crashed=${4:-0} waited p
+  local dir=$1 pids=$2 crashed=${3:-0} waited p
   for ((waited = 0; waited < 100; ++waited)); do
     pgrep -f -- "$dir" >/dev/null || break
     sleep 0.1
@@ -79,11 +81,7 @@ nothing_left() {
   for p in $pids; do
     if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
   done
-  if compgen -G "/tmp/ompi.*/pid.$run" >/dev/null; then
-    ((crashed)) || { echo "FAIL: mpirun's session left"; exit 1; }
-    echo "  (mpirun's crash left its session folder /tmp/ompi.*/pid.$run: removed)"
-    rm -rf /tmp/ompi.*/pid."$run"
-  fi
+  if ((mpirun_left && !crashed)); then echo "FAIL: mpirun's session left"; exit 1; fi
 }
 
 # fault SIGNAL RANK ROLE NP WALL SAVED (the display ids saved; empty: none, no fault/ folder;
@@ -152,7 +150,7 @@ fault() {
     echo "FAIL: displays saved, but every display was on the rank that is gone"
     exit 1
   fi
-  nothing_left "$dir" "$pids" "$run" "$crashed"
+  nothing_left "$dir" "$pids" "$crashed"
 }
 
 fault KILL 2 "pipeserver 1" 6 "" "maybe:0 1 2 3"
@@ -179,6 +177,6 @@ coordinator_killed() {
   signal_and_wait KILL "$pid" "$run" "$dir" "KILL rank 0 (coordinator, -np 6)"
   grep -q "mpirun noticed that process rank 0 with PID [0-9]* on node [^ ]* exited on signal 9" "$dir.err" ||
     { echo "FAIL: mpirun did not name rank 0:"; cat "$dir.err"; exit 1; }
-  nothing_left "$dir" "$pids" "$run"
+  nothing_left "$dir" "$pids"
 }
 coordinator_killed

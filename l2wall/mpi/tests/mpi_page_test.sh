@@ -5,7 +5,7 @@
 # refused with its reason (remote ranks cannot be ended early). Usage: mpi_page_test.sh L2WALL OUT
 set -euo pipefail
 l2wall=$1 out=$2
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 rm -rf "$out" && mkdir -p "$out"
 frames=150
 "${mpirun_local[@]}" -np 6 "$l2wall" run --mpi --frames $frames --keep none --out "$out/run" \
@@ -45,7 +45,7 @@ wait_state '[.events[].text] | any(startswith("not stopped: the pipeserver ranks
 [[ $(state | jq .stoppable) == false ]] || fail "the page offers Stop under --mpi"
 curl -s -m 10 -d '' "$base/api/resume?token=$token" >/dev/null
 
-wait $run || fail "the MPI run failed after the pause"
+mpirun_wait $run || fail "the MPI run failed after the pause"
 trap - EXIT
 grep -q "^l2wall run: $frames frames" "$out/run/summary.txt" || fail "not every frame: $(head -1 "$out/run/summary.txt")"
 grep -q "control page: 1 pause, 0 saves" "$out/run/summary.txt" || fail "summary: $(cat "$out/run/summary.txt")"

@@ -13,7 +13,7 @@
 set -euo pipefail
 l2wall=$1 out=$2 np=$3 path=$4 wall=${5:+--wall $5} codec=${6:-auto}
 frames=10
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 mpirun=("${mpirun_local[@]}")
 rm -rf "$out" && mkdir -p "$out"
 paths=(--path "$path")
@@ -24,8 +24,8 @@ start=$(date +%s%N)
   --no-progress >/dev/null
 one_done=$(date +%s%N)
 "${mpirun[@]}" -np "$np" "$l2wall" run $wall --mpi --link-codec "$codec" "${paths[@]}" --frames $frames --refresh 0 \
-  --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" ||
-  { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
+  --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" &
+mpirun_wait $! || { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 mpi_done=$(date +%s%N)
 cat "$out/mpi.err" >&2
 if grep "busy-poll" "$out/mpi.err"; then echo "FAIL: a busy-polling warning, yet mpirun yields"; exit 1; fi
@@ -49,8 +49,9 @@ if [[ $path == both ]]; then
     { echo "FAIL: the MPI run compared nothing"; exit 1; }
 fi
 if [[ $path == both && -z $wall ]]; then
-  if "${mpirun[@]}" -np "$np" "$l2wall" run --mpi "${paths[@]}" --inject-mismatch 3 \
-    --frames 5 --out "$out/mismatch" --no-progress >/dev/null 2>"$out/mismatch.txt"; then
+  "${mpirun[@]}" -np "$np" "$l2wall" run --mpi "${paths[@]}" --inject-mismatch 3 \
+    --frames 5 --out "$out/mismatch" --no-progress >/dev/null 2>"$out/mismatch.txt" &
+  if mpirun_wait $!; then
     echo "FAIL: an injected mismatch passed under MPI"
     exit 1
   fi
@@ -59,8 +60,9 @@ if [[ $path == both && -z $wall ]]; then
 fi
 
 # One rank short: refused before anything runs, in one line with the numbers.
-if "${mpirun[@]}" -np $((np - 1)) "$l2wall" run $wall --mpi --frames 1 --out "$out/short" \
-  2>"$out/short.txt" >/dev/null; then
+"${mpirun[@]}" -np $((np - 1)) "$l2wall" run $wall --mpi --frames 1 --out "$out/short" \
+  2>"$out/short.txt" >/dev/null &
+if mpirun_wait $!; then
   echo "FAIL: -np $((np - 1)) was accepted"
   exit 1
 fi
@@ -73,8 +75,8 @@ echo "-np $((np - 1)) refused"
 if [[ $path == dvi && -z $wall ]]; then
   echo "localhost slots=64" >"$out/hosts"
   "${mpirun_loopback[@]}" --hostfile "$out/hosts" -np "$np" "$l2wall" run --mpi --frames 2 \
-    --out "$out/busy" --no-progress >/dev/null 2>"$out/busy.err" ||
-    { echo "FAIL: the run on the hostfile failed:"; cat "$out/busy.err"; exit 1; }
+    --out "$out/busy" --no-progress >/dev/null 2>"$out/busy.err" &
+  mpirun_wait $! || { echo "FAIL: the run on the hostfile failed:"; cat "$out/busy.err"; exit 1; }
   cores=$(getconf _NPROCESSORS_ONLN)
   want=$((np > cores ? 1 : 0))
   got=$(grep -c "^l2wall: --mpi: $np ranks on $(hostname), which has $cores cores\?, busy-poll while they wait (Open MPI's mpi_yield_when_idle is off), which can make the run several times slower: add --mca mpi_yield_when_idle 1 to mpirun$" \

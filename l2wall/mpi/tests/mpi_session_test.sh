@@ -9,7 +9,7 @@
 set -euo pipefail
 l2wall=$1 out=$2 np=$3
 frames=24
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 source "$(dirname "$0")/xvnc_local.sh"    # xvnc_local: a private desktop
 rm -rf "$out" && mkdir -p "$out"
 xvnc="" run=""
@@ -38,7 +38,7 @@ exec 4>"$out/commands"
 for _ in $(seq 600); do [[ -d $out/mpi/frame-4 ]] && break; sleep 0.1; done
 echo "move 1 600 420 400 300" >&4
 exec 4>&-
-wait $run || { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
+mpirun_wait $run || { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 run=""
 
 moved=$(grep -n " 1 600 420 400 300" "$out/mpi/windows.txt" | head -1 | cut -d: -f1)

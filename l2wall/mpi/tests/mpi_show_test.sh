@@ -7,7 +7,7 @@
 set -euo pipefail
 l2wall=$1 out=$2 wall=$3
 frames=3
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 mpirun=("${mpirun_local[@]}" -q)
 rm -rf "$out" && mkdir -p "$out"
 command -v Xvfb >/dev/null || { echo "Xvfb is not installed: skipped"; exit 77; }  # ctest: skipped
@@ -22,7 +22,8 @@ export DISPLAY=:$(head -1 "$out/display")
 
 "${mpirun[@]}" -np 4 "$l2wall" run --wall "$wall" --mpi --show monitors --frames $frames \
   --refresh 0 --keep every --out "$out/run" --show-readback "$out/screen" --no-progress \
-  >"$out/run.txt" 2>&1 || { echo "FAIL: the run failed"; cat "$out/run.txt"; exit 1; }
+  >"$out/run.txt" 2>&1 &
+mpirun_wait $! || { echo "FAIL: the run failed"; cat "$out/run.txt"; exit 1; }
 grep -q "^l2wall run: $frames frames" "$out/run.txt" || { echo "FAIL: no summary"; cat "$out/run.txt"; exit 1; }
 for ((k = 0; k < frames; ++k)); do
   shown=$out/screen/frame-$k/display-0.png
@@ -32,8 +33,9 @@ for ((k = 0; k < frames; ++k)); do
 done
 echo "the column's monitor showed frames 0-$((frames - 1)) byte for byte"
 
-if "${mpirun[@]}" -np 4 "$l2wall" run --wall "$wall" --mpi --show window --frames 1 \
-  --out "$out/window" >/dev/null 2>"$out/window.txt"; then
+"${mpirun[@]}" -np 4 "$l2wall" run --wall "$wall" --mpi --show window --frames 1 \
+  --out "$out/window" >/dev/null 2>"$out/window.txt" &
+if mpirun_wait $!; then
   echo "FAIL: --show window was accepted with --mpi"
   exit 1
 fi
@@ -43,8 +45,9 @@ echo "--show window refused"
 
 # A column whose displays outnumber its machine's monitors fails before MPI starts: one line
 # naming its rank and the monitors it sees, and nothing of the run left running.
-if "${mpirun[@]}" -np 6 "$l2wall" run --mpi --show monitors --frames 3 --out "$out/few" \
-  --no-progress >/dev/null 2>"$out/few.txt"; then
+"${mpirun[@]}" -np 6 "$l2wall" run --mpi --show monitors --frames 3 --out "$out/few" \
+  --no-progress >/dev/null 2>"$out/few.txt" &
+if mpirun_wait $!; then
   echo "FAIL: 4 displays on 1 monitor were accepted"
   exit 1
 fi

@@ -8,7 +8,7 @@
 set -euo pipefail
 l2wall=$1 out=$2 np=$3
 frames=5
-source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only
+source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 source "$(dirname "$0")/xvnc_local.sh"    # xvnc_local: a private desktop
 rm -rf "$out" && mkdir -p "$out"
 xvnc=""
@@ -18,8 +18,8 @@ xvnc_local "$out"
 "$l2wall" run --scene vnc --content "127.0.0.1:$display" --frames $frames --out "$out/one" \
   --no-progress >"$out/one.txt" 2>&1 || { echo "FAIL: the one-machine run failed:"; cat "$out/one.txt"; exit 1; }
 "${mpirun_local[@]}" -np "$np" "$l2wall" run --mpi --scene vnc --content "127.0.0.1:$display" \
-  --frames $frames --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" ||
-  { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
+  --frames $frames --out "$out/mpi" --no-progress >"$out/mpi.txt" 2>"$out/mpi.err" &
+mpirun_wait $! || { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 
 shopt -s nullglob
 pictures=("$out"/one/frame-$((frames - 1))/display-*.png)
