@@ -2,7 +2,10 @@
 # The three test phases of scripts/test.sh, N times over: builds what each needs once (release:
 # everything; ASan+UBSan and TSan: the executables their tests need), then runs the release
 # (default), the ASan and the TSan ctest phase N times each, and counts failures per test and
-# phase. A test that fails once in N is a flake to fix, not to re-run.
+# phase. A test that fails once in N is a flake to fix, not to re-run. After each phase it lists
+# what the phase left behind (new since the phase began, named with round and phase): Open MPI
+# session folders (/tmp/ompi.<host>.<uid> and the job folders in them) and our shared memory
+# (/dev/shm/l2-*); a passing test must leave neither. The phase's log is then kept too.
 #
 # --load  loads the machine as CI does, for the whole run: beside the tests, a compile at the
 #         idle scheduling priority (SCHED_IDLE, as scripts/test.sh's builds beside the tests) —
@@ -13,7 +16,7 @@
 # Usage: scripts/repeat-tests.sh [--load] N
 set -euo pipefail
 cd "$(dirname "$0")/.."
-usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; }
 load=0
 while (($#)); do
   case $1 in
@@ -63,6 +66,28 @@ load_alive() {
   exit 1
 }
 
+# What a test can leave behind, one path a line: mpirun's session folders and the job folders
+# in them, and our shared-memory segments. Another user's runs on the machine may show up too:
+# each line is a lead to follow, not a verdict.
+leftover_paths() {
+  find /tmp -maxdepth 2 -path '/tmp/ompi.*' 2>/dev/null || true
+  find /dev/shm -maxdepth 1 -name 'l2-*' 2>/dev/null || true
+}
+# leftovers_since BEFORE ROUND PRESET LOG: says each path new since the listing BEFORE (a file),
+# with its time, and keeps LOG; adds them to `leftovers`.
+leftovers=()
+leftovers_since() {
+  local path line new
+  new=$(comm -13 "$1" <(leftover_paths | sort))
+  [[ -n $new ]] || return 0
+  while read -r path; do
+    line="round $2, $3: $path ($(date -r "$path" +%T 2>/dev/null || echo gone))"
+    echo "=== left behind: $line"
+    leftovers+=("$line")
+  done <<<"$new"
+  cp "$4" "build/$3/repeat-round-$2.log"
+}
+
 declare -A failures=() phase_seconds=()
 failed_rounds=0
 for ((round = 1; round <= rounds; round++)); do
@@ -73,6 +98,7 @@ for ((round = 1; round <= rounds; round++)); do
   for preset in "${phases[@]}"; do
     log="$logs/$preset-$round.log"
     p0=$SECONDS
+    leftover_paths | sort >"$logs/before"
     if ! ctest --preset "$preset" -j "$jobs" >"$log" 2>&1; then
       round_failed=1
       cp "$log" "build/$preset/repeat-round-$round.log"
@@ -84,6 +110,7 @@ for ((round = 1; round <= rounds; round++)); do
       failures["$preset $name"]=$((${failures["$preset $name"]:-0} + 1))
       failed_here+=" $preset:$name"
     done < <(sed -n 's/^[[:space:]]*[0-9]\+ - \([^ ]*\) (.*)$/\1/p' "$log")
+    leftovers_since "$logs/before" "$round" "$preset" "$log"
     load_alive
   done
   failed_rounds=$((failed_rounds + round_failed))
@@ -99,6 +126,12 @@ if [[ ${#failures[@]} -eq 0 ]]; then
 else
   for key in "${!failures[@]}"; do echo "${failures[$key]} $key"; done | sort -rn
   echo "(the log of each failed round: build/<preset>/repeat-round-<n>.log)"
+fi
+if [[ ${#leftovers[@]} -eq 0 ]]; then
+  echo "=== leftovers: none"
+else
+  echo "=== leftovers: ${#leftovers[@]} (the log of each such phase: build/<preset>/repeat-round-<n>.log)"
+  printf '%s\n' "${leftovers[@]}"
 fi
 totals=
 for preset in "${phases[@]}"; do totals+="$preset ${phase_seconds[$preset]} s, "; done
