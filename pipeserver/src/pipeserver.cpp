@@ -157,7 +157,10 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
     }
     times_.scanout_ms += ms_since(t0);
   }
-  if (renderer) times_.buckets = renderer->stats();
+  if (renderer) {
+    times_.buckets = renderer->stats();
+    times_.footprints = renderer->footprints();
+  }
 }
 
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {

@@ -143,6 +143,17 @@ BucketStats TileRenderer::stats() const {
   return all;
 }
 
+Footprints TileRenderer::footprints() const {
+  Footprints out;
+  const auto& batches = scene_.batches();
+  for (std::size_t i = 0; i < batches.size(); ++i) {
+    if (share_count_[i] == 0 || footprints_[i].empty()) continue;
+    const double share = double(share_count_[i]) / double(primitives(batches[i]));
+    out.push_back({footprints_[i], share * double(batches[i].triangle_count())});
+  }
+  return out;
+}
+
 void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
   draw_tile(on_canvas, window, scene_.clear_colour());
 }

@@ -65,6 +65,20 @@ TEST(Pipeserver, ReportsTimesAndOverlap) {
   // Fewer draws than drawing every batch into every tile: bucketing saved something.
   EXPECT_LT(t.buckets.tile_draws,
             static_cast<long>(scene->batches().size() * ps.plan().tiles.size()));
+  // The batches' footprints for the balancer: every batch (the whole cloud is in view) with
+  // its triangles, on the canvas; as many draws as footprints touching the tiles.
+  ASSERT_EQ(t.footprints.size(), scene->batches().size());
+  double triangles = 0;
+  long touching = 0;
+  const Rect canvas{0, 0, layout.wall.canvas_width, layout.wall.canvas_height};
+  for (const BatchFootprint& f : t.footprints) {
+    EXPECT_EQ(intersect(f.on_canvas, canvas), f.on_canvas);
+    triangles += f.triangles;
+    for (const PackedTile& p : ps.plan().tiles)
+      touching += overlaps(f.on_canvas, p.tile.on_canvas) ? 1 : 0;
+  }
+  EXPECT_DOUBLE_EQ(triangles, double(scene->triangle_count()));
+  EXPECT_EQ(touching, t.buckets.tile_draws);
 }
 
 TEST(Pipeserver, ANewLayoutRendersAsAPipeserverMadeForIt) {

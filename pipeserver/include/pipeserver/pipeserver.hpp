@@ -13,6 +13,7 @@
 #include "pipeserver/camera.hpp"
 #include "pipeserver/gl_context.hpp"
 #include "pipeserver/scene.hpp"
+#include "tilelayout/batch_footprint.hpp"
 #include "tilelayout/frame_headers.hpp"
 #include "tilelayout/tile_layout.hpp"
 
@@ -25,6 +26,9 @@ struct FrameTimes {
   // Each tile's draw, glFinish included, by plan().tiles index, in CPU time of the process:
   // the load balancer's measure (balance/). It leaves out each display window's set-up.
   std::vector<double> tile_ms;
+  // The scene's batches this frame (its share of them on a depth wall; a session's windows
+  // left out): what the load balancer prices a tile's overlap with.
+  Footprints footprints;
   double total_ms() const { return render_ms + scanout_ms; }
 };
 

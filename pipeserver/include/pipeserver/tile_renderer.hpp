@@ -13,6 +13,7 @@
 #include "pipeserver/bucketing.hpp"
 #include "pipeserver/camera.hpp"
 #include "pipeserver/scene.hpp"
+#include "tilelayout/batch_footprint.hpp"
 #include "tilelayout/geometry.hpp"
 
 namespace l2 {
@@ -44,6 +45,9 @@ class TileRenderer {
 
   // The windows' draws included.
   BucketStats stats() const;
+  // Every batch with something of this share to draw: its footprint and the share's triangles
+  // of it (a session's windows left out: their canvases are their own).
+  Footprints footprints() const;
 
  private:
   struct Window {
