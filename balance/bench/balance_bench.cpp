@@ -39,6 +39,7 @@ struct Options {
   std::optional<double> resistance, tile_cost;  // unset: the wall's [balance]
   std::optional<double> gain;                   // unset: EdgeMotion's
   bool header = false;
+  bool footprints = true, verbose = false;
   std::string tiles_csv;  // a row per tile and frame, for finding where the time goes
 };
 
@@ -94,6 +95,7 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
   for (int k = 0; k < o.frames; ++k) {
     const auto predicted = predicted_ms(balancer.layout(), estimate);
     l2::TileSeconds tile_seconds;
+    l2::Footprints footprints;
     long draws = 0, batches = 0;
     for (std::size_t s = 0; s < pipeservers.size(); ++s) {
       auto& ps = pipeservers[s];
@@ -101,6 +103,7 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
       const l2::FrameTimes& t = ps->last_times();
       std::vector<double>& tiles = tile_seconds.emplace_back();
       for (double ms : t.tile_ms) tiles.push_back(ms / 1000);
+      if (o.footprints && footprints.empty()) footprints = t.footprints;
       draws += t.buckets.tile_draws;
       batches += t.buckets.batches;
       for (std::size_t i = 0; tiles_out && i < t.tile_ms.size(); ++i) {
@@ -111,9 +114,11 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
       }
     }
     const l2::FrameLoad load = l2::frame_load(tile_seconds);
-    estimate = l2::CostEstimate::from_layout(balancer.layout(), tile_seconds);
+    estimate = l2::CostEstimate::from_layout(balancer.layout(), tile_seconds, footprints);
     const std::size_t tile_count = balancer.layout().tiles.size();
-    const l2::BalanceStep step = balancer.next(tile_seconds);
+    const l2::BalanceStep step = balancer.next(tile_seconds, footprints);
+    if (o.verbose)
+      std::fprintf(stderr, "frame %d: per triangle %.3g us\n", k, estimate->per_triangle() * 1e6);
     if (!step.rejected.empty()) {
       std::fprintf(stderr, "balance_bench: frame %d: next layout not used: %s\n", k,
                    step.rejected.c_str());
@@ -168,6 +173,9 @@ int main(int argc, char** argv) {
                  "or of the measured cost grid blended in (k-d); default: 0.5")
       ->check(CLI::Range(0.05, 1.0));
   app.add_flag("--header", o.header, "print the CSV header line first");
+  app.add_flag("!--no-footprints", o.footprints,
+               "price tiles by their pixels alone, not also by the batches they touch");
+  app.add_flag("--verbose", o.verbose, "print each frame's fitted price per triangle (stderr)");
   app.add_option("--tiles", o.tiles_csv,
                  "append a CSV row per tile and frame to FILE: pipeservers, mode, assign, frame, "
                  "pipeserver, tile, x, y, w, h (on the canvas), measured ms, the ms the last "

@@ -194,8 +194,9 @@ TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {
   return out;
 }
 
-BalanceStep Balancer::next(const TileSeconds& seconds) {
-  const CostEstimate estimate = CostEstimate::from_layout(layout_, with_stand_ins(seconds));
+BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footprints) {
+  const CostEstimate estimate =
+      CostEstimate::from_layout(layout_, with_stand_ins(seconds), footprints);
   Wall next = wall_;
   const std::optional<StripEdges> old_strips = strips_;
   std::vector<std::vector<double>> grid;
@@ -232,7 +233,7 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
   const bool changed = planned.logical_tiles != layout_.logical_tiles ||
                        planned.tile_pipeserver != layout_.tile_pipeserver;
   if (!changed) return {};
-  const double ratio = predicted_ratio(planned, seconds);
+  const double ratio = predicted_ratio(planned, seconds, footprints);
   // A layout still giving a lost pipeserver tiles cannot stay, whatever the change gains.
   if (lost_.empty() && ratio > 1 - settings_.resistance && settings_.resistance > 0)
     return {false, "", true, ratio};
@@ -240,10 +241,11 @@ BalanceStep Balancer::next(const TileSeconds& seconds) {
   return {true, "", false, ratio};
 }
 
-double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds) const {
+double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
+                                 const Footprints& footprints) const {
   const TileSeconds measured = with_stand_ins(seconds);
   const double overhead = tile_overhead(measured, settings_.tile_cost);
-  const CostEstimate pixels = pixel_estimate(layout_, measured, overhead);
+  const CostEstimate pixels = pixel_estimate(layout_, measured, overhead, footprints);
   const double now = predicted_frame_seconds(layout_, pixels, overhead);
   return now > 0 ? predicted_frame_seconds(candidate, pixels, overhead) / now : 1;
 }

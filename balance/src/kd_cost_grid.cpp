@@ -4,6 +4,8 @@ namespace l2 {
 
 std::vector<std::vector<double>> kd_cost_grid(const Wall& wall, const CostEstimate& estimate,
                                               int columns, int rows) {
+  // The cells are not drawn one by one: a footprint's price belongs to its pixels here.
+  const CostEstimate spread = estimate.spread();
   std::vector<std::vector<double>> grid(static_cast<std::size_t>(rows),
                                         std::vector<double>(static_cast<std::size_t>(columns)));
   const long long w = wall.canvas_width, h = wall.canvas_height;
@@ -15,7 +17,7 @@ std::vector<std::vector<double>> kd_cost_grid(const Wall& wall, const CostEstima
       const Rect cell{x0, y0, x1 - x0, y1 - y0};
       long long visible = 0;
       for (const Display& d : wall.displays) visible += intersect(cell, d.on_canvas()).area();
-      grid[j][i] = visible > 0 ? estimate.cost(cell) / double(visible) : 0.0;
+      grid[j][i] = visible > 0 ? spread.cost(cell) / double(visible) : 0.0;
     }
   }
   return grid;

@@ -14,12 +14,13 @@ double tile_overhead(const TileSeconds& seconds, double fraction) {
   return tiles == 0 ? 0 : fraction * sum / double(tiles);
 }
 
-CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead) {
+CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead,
+                            const Footprints& footprints) {
   TileSeconds rest = seconds;
   for (auto& pipeserver : rest) {
     for (double& s : pipeserver) s = std::max(s - overhead, 0.0);
   }
-  return CostEstimate::from_layout(layout, rest);
+  return CostEstimate::from_layout(layout, rest, footprints);
 }
 
 double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,

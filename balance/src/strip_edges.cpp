@@ -20,20 +20,16 @@ StripEdges::StripEdges(int canvas_width, int canvas_height, int strips, int subs
 void StripEdges::step(const CostEstimate& estimate, const EdgeMotion& motion) {
   const int strips = static_cast<int>(columns_.size());
   const Rect canvas{0, 0, width_, height_};
-  const double total = estimate.cost(canvas);
-  for (int i = 1; i < strips; ++i) {
-    rows_[i] = move_edge(rows_[i], estimate.cut_y(canvas, total * i / strips), motion);
-  }
+  const std::vector<double> rows = estimate.cuts_y(canvas, strips);
+  for (int i = 1; i < strips; ++i) rows_[i] = move_edge(rows_[i], rows[i - 1], motion);
   const std::vector<int> y = pixel_edges(rows_);
   for (int i = 0; i < strips; ++i) {
     const Rect band{0, y[i], width_, y[i + 1] - y[i]};
-    const double band_total = estimate.cost(band);
-    if (band_total <= 0) continue;  // nothing measured there: no reason to move
+    if (estimate.cost(band) <= 0) continue;  // nothing measured there: no reason to move
     std::vector<double>& x = columns_[i];
     const int subs = static_cast<int>(x.size()) - 1;
-    for (int j = 1; j < subs; ++j) {
-      x[j] = move_edge(x[j], estimate.cut_x(band, band_total * j / subs), motion);
-    }
+    const std::vector<double> columns = estimate.cuts_x(band, subs);
+    for (int j = 1; j < subs; ++j) x[j] = move_edge(x[j], columns[j - 1], motion);
   }
 }
 

@@ -71,7 +71,9 @@ class Balancer {
   // when the next one does not fit the others' framebuffers, the wall's own tiling shared out
   // by its policy or visible area is tried (plan_without, tilelayout/survival.hpp), and when
   // that does not fit either, throws LayoutError.
-  BalanceStep next(const TileSeconds& seconds);
+  // `footprints`: the scene's batches that frame (FrameTimes::footprints of any pipeserver), so
+  // that a tile is priced for the batches it touches; none prices pixels alone.
+  BalanceStep next(const TileSeconds& seconds, const Footprints& footprints = {});
 
   // Pipeserver `pipeserver` died: from the next step on it gets no tile, the others share them
   // (by the wall's assignment policy over them, or heaviest first). Throws
@@ -88,7 +90,8 @@ class Balancer {
  private:
   TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
   // The predicted frame time of `candidate` over the last frame's, measured on layout().
-  double predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds) const;
+  double predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
+                         const Footprints& footprints) const;
   TileSeconds with_stand_ins(const TileSeconds& seconds) const;
 
   Wall wall_;

@@ -11,13 +11,14 @@ namespace l2 {
 // The fixed part of a display tile: `fraction` of the mean measured tile time of `seconds`.
 double tile_overhead(const TileSeconds& seconds, double fraction);
 
-// The last frame's times less `overhead` a tile (not below 0), spread over the tiles' pixels:
-// the part of the cost that follows the pixels.
-CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead);
+// The last frame's times less `overhead` a tile (not below 0), as CostEstimate::from_layout
+// estimates them: the part of the cost that follows the pixels and the footprints touched.
+CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead,
+                            const Footprints& footprints = {});
 
 // The slowest pipeserver's predicted time on `layout`: per display tile, `overhead` plus its
-// pixels' cost under `estimate`. On the layout the estimate was measured on, with the same
-// overhead, it is the measured frame time.
+// pixels' (and footprints') cost under `estimate`. On the layout the estimate was measured on, with
+// the same overhead, it is the measured frame time.
 double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,
                                double overhead);
 
