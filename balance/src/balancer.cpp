@@ -217,7 +217,7 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
     const auto holding = std::find_if(lost_.begin(), lost_.end(), [&](int s) {
       return !layout_.pipeservers[static_cast<std::size_t>(s)].tiles.empty();
     });
-    if (holding == lost_.end()) return {false, e.what()};
+    if (holding == lost_.end()) return {false, e.what(), false, 1, estimate.per_triangle()};
     // The layout in use still has a lost pipeserver's tiles: it cannot stay. The last resort
     // is the wall's own tiling shared out by its policy or by visible area (what tilelayout's
     // survival counts on); the balancing goes on from there.
@@ -230,15 +230,16 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
     }
   }
   grid_ = std::move(grid);
+  const double price = estimate.per_triangle();
   const bool changed = planned.logical_tiles != layout_.logical_tiles ||
                        planned.tile_pipeserver != layout_.tile_pipeserver;
-  if (!changed) return {};
+  if (!changed) return {false, "", false, 1, price};
   const double ratio = predicted_ratio(planned, seconds, footprints);
   // A layout still giving a lost pipeserver tiles cannot stay, whatever the change gains.
   if (lost_.empty() && ratio > 1 - settings_.resistance && settings_.resistance > 0)
-    return {false, "", true, ratio};
+    return {false, "", true, ratio, price};
   layout_ = std::move(planned);
-  return {true, "", false, ratio};
+  return {true, "", false, ratio, price};
 }
 
 double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,

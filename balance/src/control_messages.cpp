@@ -13,6 +13,13 @@ namespace l2 {
 std::string encode(const TimesMessage& m) {
   std::string out = fmt::format("TIMES {} {} {}", m.frame, m.pipeserver, m.seconds.size());
   for (double s : m.seconds) out += fmt::format(" {}", s);  // shortest exact form
+  if (!m.footprints.empty()) {
+    out += fmt::format(" BATCHES {}", m.footprints.size());
+    for (const BatchFootprint& f : m.footprints) {
+      const Rect& r = f.on_canvas;
+      out += fmt::format(" {} {} {} {} {}", r.x, r.y, r.w, r.h, std::llround(f.triangles));
+    }
+  }
   return out;
 }
 
@@ -37,6 +44,18 @@ TimesMessage decode_times(std::string_view line) {
   m.pipeserver = static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1));
   const auto n = w.integer("tile count", 0, kMaxControlTiles);
   for (long long i = 0; i < n; ++i) m.seconds.push_back(w.seconds());
+  if (w.optional_keyword("BATCHES")) {
+    const auto batches = w.integer("batch count", 1, kMaxControlBatches);
+    for (long long i = 0; i < batches; ++i) {
+      Rect r;
+      r.x = static_cast<int>(w.integer("batch x", 0, 65535));
+      r.y = static_cast<int>(w.integer("batch y", 0, 65535));
+      r.w = static_cast<int>(w.integer("batch width", 1, 65535));
+      r.h = static_cast<int>(w.integer("batch height", 1, 65535));
+      const auto triangles = w.integer("batch triangles", 0, 1LL << 40);
+      m.footprints.push_back({r, double(triangles)});
+    }
+  }
   w.end();
   return m;
 }

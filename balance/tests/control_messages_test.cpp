@@ -12,12 +12,21 @@ namespace {
 using test::strips_wall;
 
 TEST(ControlMessages, TimesRoundTrip) {
-  const std::string line = encode(TimesMessage{7, 2, {0.0125, 0.5, 0}});
+  const std::string line = encode(TimesMessage{7, 2, {0.0125, 0.5, 0}, {}});
   EXPECT_EQ(line, "TIMES 7 2 3 0.0125 0.5 0");
   const TimesMessage m = decode_times(line);
   EXPECT_EQ(m.frame, 7);
   EXPECT_EQ(m.pipeserver, 2);
   EXPECT_EQ(m.seconds, (std::vector<double>{0.0125, 0.5, 0}));
+}
+
+TEST(ControlMessages, TimesCarryTheBatchesFootprints) {
+  TimesMessage sent{3, 1, {0.25}, {{{10, 20, 30, 40}, 640}, {{0, 0, 1, 1}, 2.4}}};
+  const std::string line = encode(sent);
+  EXPECT_EQ(line, "TIMES 3 1 1 0.25 BATCHES 2 10 20 30 40 640 0 0 1 1 2");
+  const TimesMessage m = decode_times(line);
+  EXPECT_EQ(m.seconds, (std::vector<double>{0.25}));
+  EXPECT_EQ(m.footprints, (Footprints{{{10, 20, 30, 40}, 640}, {{0, 0, 1, 1}, 2}}));
 }
 
 TEST(ControlMessages, WindowsRoundTrip) {
@@ -82,6 +91,12 @@ TEST(ControlMessages, BadLinesAreOneLineErrors) {
                "control line 'TIMES 1 0 2 0.5': a render time must be seconds >= 0, got ''");
   expect_error("TIMES 1 0 1 -1", false,
                "control line 'TIMES 1 0 1 -1': a render time must be seconds >= 0, got '-1'");
+  expect_error("TIMES 1 0 1 0.5 BATCHES 1 0 0 0 5 9", false,
+               "control line 'TIMES 1 0 1 0.5 BATCHES 1 0 0 0 5 9': batch width must be an "
+               "integer 1..65535, got '0'");
+  expect_error("TIMES 1 0 0 BATCHES 99999999 1", false,
+               "control line 'TIMES 1 0 0 BATCHES 99999999 1': batch count must be an integer "
+               "1..65536, got '99999999'");
   expect_error("TIMES 1 0 1 0.5 9", false,
                "control line 'TIMES 1 0 1 0.5 9': more words than its count says");
   expect_error("TIMES 1 0 99999999999", false,

@@ -9,6 +9,7 @@
 
 #include "balance/control_messages.hpp"
 #include "l2wall/run_fault.hpp"
+#include "run_stats.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "waiting_message.hpp"
 
@@ -97,6 +98,8 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
                         h.pipeserver, m->frame, m->pipeserver, next_times_));
       }
       pending_[i] = std::move(m->seconds);
+      // Every pipeserver draws the same scene on the same canvas: one's batches are all's.
+      if (batches_.empty()) batches_ = std::move(m->footprints);
       have_[i] = true;
     }
   }
@@ -104,6 +107,7 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
   const int frame = next_times_++;
   std::fill(have_.begin(), have_.end(), false);
   if (frame + 1 < frames_) send_layout(pipeservers, frame + 1);
+  batches_.clear();
 }
 
 // Frame 0 was rendered in the wall's plan, not in the balancer's first layout: frame 1 takes
@@ -111,7 +115,9 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
 void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   if (frame > 1) {
     try {
-      const BalanceStep step = balancer_.next(pending_);
+      const BalanceStep step = balancer_.next(pending_, batches_);
+      most_batches_ = std::max(most_batches_, batches_.size());
+      per_triangle_.push_back(step.per_triangle);
       if (!step.rejected.empty())
         rejected_.push_back(fmt::format("frame {}: {}", frame, step.rejected));
       if (step.resisted) {
@@ -184,6 +190,20 @@ void LiveBalance::check_swap(const std::vector<int>& group_displays,
   mixed_swaps_ += mixed ? 1 : 0;
 }
 
+// How the tiles were priced: by the batches they touch (the pipeservers' footprints) as well
+// as their pixels, or by pixels alone when no footprints came.
+std::string LiveBalance::pricing() const {
+  const std::optional<Spread> price = spread_of(per_triangle_);
+  if (!price) return {};
+  if (most_batches_ == 0) {
+    return "balance: tiles priced by their pixels alone (the pipeservers reported no batches)\n";
+  }
+  return fmt::format(
+      "balance: tiles priced by their pixels and the batches they touch ({} batches a frame at "
+      "most), median {:.1f} ns a triangle a tile\n",
+      most_batches_, price->p50 * 1e9);
+}
+
 std::string LiveBalance::summary() const {
   std::string s =
       fmt::format("balance {}: {} layouts", to_string(balancer_.settings().mode), strips_.size());
@@ -204,6 +224,7 @@ std::string LiveBalance::summary() const {
     s += fmt::format("\nbalance: group swaps not checked: {}\n", swaps_unchecked_);
   }
   for (const std::string& line : switches_) s += line;
+  s += pricing();
   if (resisted_ > 0) {
     s += fmt::format(
         "balance: {} new layout{} not taken (resistance {}): the best was predicted to take "

@@ -71,6 +71,12 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
   ASSERT_TRUE(std::regex_search(output, m, std::regex("balance strips: (\\d+) layouts, strips")))
       << output;
   const int layouts_counted = std::stoi(m[1].str());
+  // The pipeservers' batch footprints reached the balancer: the strips scene's 100,000
+  // triangles in strips of 16, 64 strips a batch, are 98 batches, all in view.
+  EXPECT_NE(output.find("balance: tiles priced by their pixels and the batches they touch (98 "
+                        "batches a frame at most)"),
+            std::string::npos)
+      << output;
 
   const Wall wall = default_wall();
   const std::vector<TileLayout> layouts = layouts_of(balanced, wall);

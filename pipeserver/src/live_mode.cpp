@@ -91,8 +91,10 @@ std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver
 
 // Frame k's tile times to the coordinator.
 void send_times(ControlChannel& control, const Pipeserver& ps, int frame) {
-  TimesMessage m{frame, ps.plan().pipeserver, {}};
+  TimesMessage m{frame, ps.plan().pipeserver, {}, {}};
   for (double ms : ps.last_times().tile_ms) m.seconds.push_back(ms / 1000);
+  if (ps.last_times().footprints.size() <= kMaxControlBatches)
+    m.footprints = ps.last_times().footprints;
   control.send_line(encode(m));
 }
 

@@ -47,6 +47,9 @@ struct BalanceStep {
   // The predicted frame time of the layout planned, over the last frame's (1: the same; below
   // 1: shorter); 1 when nothing new was planned.
   double predicted_ratio = 1;
+  // The price per triangle of a batch a tile touches, fitted to the frame (0 without
+  // footprints, or when the tiles' times do not show one).
+  double per_triangle = 0;
 };
 
 class Balancer {

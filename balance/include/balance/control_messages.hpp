@@ -3,7 +3,9 @@
 // every pipeserver that frame's tiling, the same to all, so all switch together. One text line
 // each, whatever moves them (control_channel.hpp).
 //
-//   TIMES <frame> <pipeserver> <n> <seconds>...          n = the pipeserver's packed tiles
+//   TIMES <frame> <pipeserver> <n> <seconds>... [BATCHES <m> (<x> <y> <w> <h> <triangles>)...]
+//                                                    n = the pipeserver's packed tiles;
+//                                                    BATCHES: the scene's batch footprints
 //   LAYOUT <frame> <n> (<x> <y> <w> <h> <pipeserver>)... [GONE <m> <pipeserver>...]
 //                                                    n = logical tiles, in tiling order;
 //                                                    GONE: pipeservers that died (no tiles)
@@ -19,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tilelayout/batch_footprint.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -26,6 +29,7 @@ namespace l2 {
 struct TimesMessage {
   int frame = 0, pipeserver = 0;
   std::vector<double> seconds;  // by packed tile, as the pipeserver's plan orders them
+  Footprints footprints;        // the frame's batches (FrameTimes::footprints), triangles whole
 };
 
 struct LayoutMessage {
@@ -45,6 +49,9 @@ class ControlError : public std::runtime_error {
 // More tiles than a wall can have (every tile is at least one canvas pixel of a 4095-square
 // display, but a line this long is already a wrong peer): refused before anything is kept.
 inline constexpr int kMaxControlTiles = 65536;
+// The most batch footprints a TIMES line carries; a scene of more sends none (its tiles are
+// then priced by their pixels), which keeps every line far under kMaxControlLine.
+inline constexpr int kMaxControlBatches = 65536;
 
 struct WantMessage {
   int frame = 0, pipeserver = 0;

@@ -69,7 +69,8 @@ class LiveBalance {
   std::string mode() const;
   bool switch_mode(std::string_view mode, int frame, std::string& why);
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
-  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, the first rejected
+  // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, how tiles were
+  // priced (pixels, and the batches they touch), the first rejected
   // plan in full and how many more were rejected, the pipeservers lost and the frames stale.
   std::string summary() const;
   // OUT/layouts.txt's text: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame
@@ -78,6 +79,7 @@ class LiveBalance {
 
  private:
   void send_layout(PipeserverSet& pipeservers, int frame);
+  std::string pricing() const;
 
   struct Loss {
     int pipeserver = 0;
@@ -94,7 +96,10 @@ class LiveBalance {
   int frames_;
   int next_times_ = 0;                        // the frame whose times are being collected
   std::vector<std::vector<double>> pending_;  // by pipeserver, that frame's times
-  std::vector<bool> have_;                    // by pipeserver, whether they are in
+  Footprints batches_;  // that frame's batch footprints, from the first pipeserver to send them
+  std::size_t most_batches_ = 0;       // the most footprints a frame brought
+  std::vector<double> per_triangle_;   // each step's fitted price of a batch's triangle
+  std::vector<bool> have_;             // by pipeserver, whether they are in
   std::vector<int> frame_layout_;      // by frame sent so far; later frames are in the last layout
   std::vector<std::uint64_t> strips_;  // by layout
   std::vector<int> first_frame_;       // by layout

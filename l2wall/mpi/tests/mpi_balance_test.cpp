@@ -84,6 +84,11 @@ TEST(MpiBalance, StripsRetileOverMpiWithTheDisplaysOfAStaticRun) {
       << output;
   const int layouts_counted = std::stoi(m[1].str());
   EXPECT_NE(output.find("strips routed per layout not counted"), std::string::npos) << output;
+  // The ranks' batch footprints crossed MPI with their times (the strips scene's 98 batches).
+  EXPECT_NE(output.find("balance: tiles priced by their pixels and the batches they touch (98 "
+                        "batches a frame at most)"),
+            std::string::npos)
+      << output;
   // Every group swap was checked against the layouts, and none mixed two.
   ASSERT_TRUE(std::regex_search(
       output, m, std::regex("balance: (\\d+) of (\\d+) group swaps showed frames of two layouts")))
