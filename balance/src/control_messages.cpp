@@ -9,6 +9,19 @@
 #include "tilelayout/planner.hpp"
 
 namespace l2 {
+namespace {
+
+// A canvas rectangle's four words; `what` names them in errors ("batch " + "width").
+Rect take_rect(Words& w, const std::string& what) {
+  Rect r;
+  r.x = static_cast<int>(w.integer((what + "x").c_str(), 0, 65535));
+  r.y = static_cast<int>(w.integer((what + "y").c_str(), 0, 65535));
+  r.w = static_cast<int>(w.integer((what + "width").c_str(), 1, 65535));
+  r.h = static_cast<int>(w.integer((what + "height").c_str(), 1, 65535));
+  return r;
+}
+
+}  // namespace
 
 std::string encode(const TimesMessage& m) {
   std::string out = fmt::format("TIMES {} {} {}", m.frame, m.pipeserver, m.seconds.size());
@@ -47,11 +60,7 @@ TimesMessage decode_times(std::string_view line) {
   if (w.optional_keyword("BATCHES")) {
     const auto batches = w.integer("batch count", 1, kMaxControlBatches);
     for (long long i = 0; i < batches; ++i) {
-      Rect r;
-      r.x = static_cast<int>(w.integer("batch x", 0, 65535));
-      r.y = static_cast<int>(w.integer("batch y", 0, 65535));
-      r.w = static_cast<int>(w.integer("batch width", 1, 65535));
-      r.h = static_cast<int>(w.integer("batch height", 1, 65535));
+      const Rect r = take_rect(w, "batch ");
       const auto triangles = w.integer("batch triangles", 0, 1LL << 40);
       m.footprints.push_back({r, double(triangles)});
     }
@@ -67,12 +76,7 @@ LayoutMessage decode_layout(std::string_view line) {
   m.frame = static_cast<int>(w.integer("frame", 0, kMaxFrame));
   const auto n = w.integer("tile count", 1, kMaxControlTiles);
   for (long long i = 0; i < n; ++i) {
-    Rect r;
-    r.x = static_cast<int>(w.integer("x", 0, 65535));
-    r.y = static_cast<int>(w.integer("y", 0, 65535));
-    r.w = static_cast<int>(w.integer("width", 1, 65535));
-    r.h = static_cast<int>(w.integer("height", 1, 65535));
-    m.tiles.push_back(r);
+    m.tiles.push_back(take_rect(w, ""));
     m.pipeservers.push_back(static_cast<int>(w.integer("pipeserver", 0, kMaxPipeservers - 1)));
   }
   if (w.optional_keyword("GONE")) {
