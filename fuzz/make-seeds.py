@@ -129,3 +129,11 @@ put("frame_delta", "unchanged-4x3", frame_delta(4, 3, {}))
 put("frame_delta", "xor-row-1", frame_delta(4, 3, {1: (0, bytes(range(12)))}))
 put("frame_delta", "sub-rows-0-2", frame_delta(2, 3, {0: (1, bytes([9] * 6)), 2: (0, bytes(6))}))
 put("frame_delta", "every-row-9x9", frame_delta(9, 9, {y: (y % 2, bytes([y] * 27)) for y in range(9)}))
+
+
+# --- control_line: the balancing control channel's lines (balance/control_messages.hpp) -------
+put("control_line", "times", b"TIMES 7 2 3 0.0125 0.5 0")
+put("control_line", "times-batches", b"TIMES 3 1 1 0.25 BATCHES 2 10 20 30 40 640 0 0 1 1 2")
+put("control_line", "layout-gone", b"LAYOUT 1 2 0 0 50 50 0 50 0 50 50 1 GONE 1 2")
+put("control_line", "want", b"WANT 9 3")
+put("control_line", "windows", b"WINDOWS 4 2 2 -10 20 300 200 0 5 6 7 8")
