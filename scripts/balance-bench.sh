@@ -3,7 +3,10 @@
 # and 8 pipeservers of the default wall, by default of two scenes: `strips` (a cloud turning at
 # the centre, which the wall's own tiling is cut for) and `hotspot` (a small cloud travelling
 # round the view: static tiling unbalanced), tiled static, by strips and by k-d re-split, each
-# with and without the heaviest-first assignment. Writes OUT/balance.csv (a row per frame: frame time =
+# with and without the heaviest-first assignment. `hotspot` runs on the default wall with
+# 1280x1024 framebuffers (the boards' limit; written to OUT/kd-2x2-1280x1024.toml): the
+# balanced cuts of a load in one corner give the pipeserver of the empty rest most of the
+# canvas, which 800x600 framebuffers cannot hold (the planner refuses such layouts). Writes OUT/balance.csv (a row per frame: frame time =
 # the slowest pipeserver's render time, imbalance = that over the mean, the frame time the last
 # frame's estimate predicted, display tiles, overlap factor, whether a new layout was not taken
 # for not paying, the scene), OUT/balance.png (frame time per frame) and
@@ -12,9 +15,10 @@
 #
 #   scripts/balance-bench.sh [--out DIR] [--frames N] [--pipeservers "4 8"]
 #                            [--scene "strips hotspot"]
-#                            [--build DIR] [--plot-only] [-- BENCH OPTIONS...]
-# --plot-only draws the PNG and the summary again from an existing OUT/balance.csv. BENCH
-# OPTIONS go to every balance_bench run: scene options, or --resistance R --tile-cost F.
+#                            [--wall FILE] [--build DIR] [--plot-only] [-- BENCH OPTIONS...]
+# --wall: every scene on FILE instead. --plot-only draws the PNG and the summary again from an
+# existing OUT/balance.csv. BENCH OPTIONS go to every balance_bench run: scene options, or
+# --resistance R --tile-cost F, or --gain G.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,7 +29,8 @@ scenes="strips hotspot"
 build=$root/build/default
 scene_args=()
 plot_only=0
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
+wall=
+usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --out) out=$2; shift 2 ;;
@@ -33,6 +38,7 @@ while (($#)); do
     --pipeservers) pipeservers=$2; shift 2 ;;
     --scene) scenes=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
+    --wall) wall=$2; shift 2 ;;
     --plot-only) plot_only=1; shift ;;
     --) shift; scene_args=("$@"); break ;;
     -h | --help) usage; exit 0 ;;
@@ -44,6 +50,14 @@ bench=$build/balance/balance_bench
 command -v gnuplot >/dev/null || { echo "balance-bench: gnuplot not installed (scripts/install-deps.sh)" >&2; exit 1; }
 mkdir -p "$out"
 csv=$out/balance.csv
+roomy=$out/kd-2x2-1280x1024.toml
+sed -e 's/^framebuffer_width = .*/framebuffer_width = 1280/' \
+  -e 's/^framebuffer_height = .*/framebuffer_height = 1024/' "$root/walls/kd-2x2.toml" >"$roomy"
+wall_of() {
+  if [[ -n $wall ]]; then echo "$wall"
+  elif [[ $1 == hotspot ]]; then echo "$roomy"
+  else echo "$root/walls/kd-2x2.toml"; fi
+}
 # One rendering thread: every pipeserver is timed alone, so the times compare across runs
 # whatever else the machine runs.
 export LP_NUM_THREADS=1
@@ -55,8 +69,8 @@ for scene in $scenes; do
       for assign in 0 1; do
         flag=()
         ((assign)) && flag=(--assign)
-        "$bench" --pipeservers "$p" --mode "$mode" "${flag[@]}" --frames "$frames" \
-          --scene "$scene" "${scene_args[@]}" | sed "s/\$/,$scene/" >>"$csv"
+        "$bench" --wall "$(wall_of "$scene")" --pipeservers "$p" --mode "$mode" "${flag[@]}" \
+          --frames "$frames" --scene "$scene" "${scene_args[@]}" | sed "s/\$/,$scene/" >>"$csv"
       done
     done
   done
@@ -88,10 +102,10 @@ plot=$out/balance.gnuplot
   echo "set terminal pngcairo size 1000,$((400 * rows + 100)) font ',11'"
   echo "set output '$out/balance.png'"
   echo "set datafile separator ','"
-  echo "set multiplot layout $rows,1 title 'frame time per frame (slowest pipeserver), default wall'"
+  echo "set multiplot layout $rows,1 title 'frame time per frame (slowest pipeserver)'"
   for scene in $scenes; do
   for p in $pipeservers; do
-    echo "set title 'scene $scene, $p pipeservers'"
+    echo "set title 'scene $scene, $p pipeservers, $(basename "$(wall_of "$scene")" .toml)'"
     echo "set xlabel 'frame'"
     echo "set ylabel 'frame time (ms)'"
     echo "set key outside right"
