@@ -39,7 +39,7 @@ struct Options {
   std::optional<double> resistance, tile_cost;  // unset: the wall's [balance]
   std::optional<double> gain;                   // unset: EdgeMotion's
   bool header = false;
-  bool footprints = true, verbose = false;
+  bool no_footprints = false, verbose = false;
   std::string tiles_csv;  // a row per tile and frame, for finding where the time goes
 };
 
@@ -103,7 +103,7 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
       const l2::FrameTimes& t = ps->last_times();
       std::vector<double>& tiles = tile_seconds.emplace_back();
       for (double ms : t.tile_ms) tiles.push_back(ms / 1000);
-      if (o.footprints && footprints.empty()) footprints = t.footprints;
+      if (!o.no_footprints && footprints.empty()) footprints = t.footprints;
       draws += t.buckets.tile_draws;
       batches += t.buckets.batches;
       for (std::size_t i = 0; tiles_out && i < t.tile_ms.size(); ++i) {
@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
                  "or of the measured cost grid blended in (k-d); default: 0.5")
       ->check(CLI::Range(0.05, 1.0));
   app.add_flag("--header", o.header, "print the CSV header line first");
-  app.add_flag("!--no-footprints", o.footprints,
+  app.add_flag("--no-footprints", o.no_footprints,
                "price tiles by their pixels alone, not also by the batches they touch");
   app.add_flag("--verbose", o.verbose, "print each frame's fitted price per triangle (stderr)");
   app.add_option("--tiles", o.tiles_csv,
