@@ -47,5 +47,20 @@ TEST(StripEdges, AStripWithNothingMeasuredKeepsItsSubStrips) {
   EXPECT_DOUBLE_EQ(s.columns(1)[1], 50);
 }
 
+TEST(StripEdges, ASubStripEdgeStopsAtACloudRatherThanCutThroughIt) {
+  // 1 per pixel over 20x10, and ten batches of 10 triangles at columns 10..13, 1 a triangle in
+  // every tile a footprint touches. A cut through the cloud (10 < x < 14) makes both tiles pay
+  // its 100; at its left edge the right tile pays 200 and the left 100, the least largest part.
+  // Spread over its pixels instead, the cloud would put the edge at 11.43, through it.
+  const CostEstimate cloud({{{0, 0, 20, 10}, 1}}, Footprints(10, {{10, 0, 4, 10}, 10}), 1);
+  StripEdges s(20, 10, 1, 2);
+  s.step(cloud, {1.0, 0});
+  EXPECT_NEAR(s.columns(0)[1], 10, 1e-6);
+  EXPECT_EQ(s.tiles(), (std::vector<Rect>{{0, 0, 10, 10}, {10, 0, 10, 10}}));
+  StripEdges spread(20, 10, 1, 2);
+  spread.step(cloud.spread(), {1.0, 0});
+  EXPECT_EQ(spread.tiles(), (std::vector<Rect>{{0, 0, 11, 10}, {11, 0, 9, 10}}));
+}
+
 }  // namespace
 }  // namespace l2
