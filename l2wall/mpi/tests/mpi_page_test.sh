@@ -11,7 +11,7 @@ frames=150
 "${mpirun_local[@]}" -np 6 "$l2wall" run --mpi --frames $frames --keep none --out "$out/run" \
   --no-progress --http 127.0.0.1:0 >"$out/run.txt" 2>"$out/run.err" &
 run=$!
-trap 'kill $run 2>/dev/null || true' EXIT
+trap 'kill $run 2>/dev/null || true; mpirun_base_remove' EXIT
 
 fail() { echo "FAIL: $*"; cat "$out/run.err"; exit 1; }
 # Waits (at most 60 s) until the jq filter $1 is true of the state.
@@ -46,7 +46,7 @@ wait_state '[.events[].text] | any(startswith("not stopped: the pipeserver ranks
 curl -s -m 10 -d '' "$base/api/resume?token=$token" >/dev/null
 
 mpirun_wait $run || fail "the MPI run failed after the pause"
-trap - EXIT
+trap mpirun_base_remove EXIT
 grep -q "^l2wall run: $frames frames" "$out/run/summary.txt" || fail "not every frame: $(head -1 "$out/run/summary.txt")"
 grep -q "control page: 1 pause, 0 saves" "$out/run/summary.txt" || fail "summary: $(cat "$out/run/summary.txt")"
 if grep -q "no READY" "$out/run.err"; then fail "a pipeserver gave up during the pause"; fi

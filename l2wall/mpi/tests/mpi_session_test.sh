@@ -13,7 +13,7 @@ source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback onl
 source "$(dirname "$0")/xvnc_local.sh"    # xvnc_local: a private desktop
 rm -rf "$out" && mkdir -p "$out"
 xvnc="" run=""
-trap 'kill $xvnc $run 2>/dev/null; wait $xvnc 2>/dev/null || true' EXIT
+trap 'kill $xvnc $run 2>/dev/null; wait $xvnc 2>/dev/null || true; mpirun_base_remove' EXIT
 xvnc_local "$out"
 
 session() {  # the desktop window's X and Y

@@ -15,7 +15,7 @@ command -v Xvfb >/dev/null || { echo "Xvfb is not installed: skipped"; exit 77; 
 # A private X server on a display number it picks itself (-displayfd), so tests never collide.
 Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$out/display" 2>"$out/xvfb.txt" &
 xvfb=$!
-trap 'kill $xvfb 2>/dev/null; wait $xvfb 2>/dev/null || true' EXIT
+trap 'kill $xvfb 2>/dev/null; wait $xvfb 2>/dev/null || true; mpirun_base_remove' EXIT
 for _ in $(seq 100); do [[ -s $out/display ]] && break; sleep 0.05; done
 [[ -s $out/display ]] || { echo "FAIL: Xvfb did not start"; cat "$out/xvfb.txt"; exit 1; }
 export DISPLAY=:$(head -1 "$out/display")

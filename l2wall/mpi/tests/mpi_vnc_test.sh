@@ -12,7 +12,7 @@ source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback onl
 source "$(dirname "$0")/xvnc_local.sh"    # xvnc_local: a private desktop
 rm -rf "$out" && mkdir -p "$out"
 xvnc=""
-trap 'kill $xvnc 2>/dev/null; wait $xvnc 2>/dev/null || true' EXIT
+trap 'kill $xvnc 2>/dev/null; wait $xvnc 2>/dev/null || true; mpirun_base_remove' EXIT
 xvnc_local "$out"
 
 "$l2wall" run --scene vnc --content "127.0.0.1:$display" --frames $frames --out "$out/one" \
