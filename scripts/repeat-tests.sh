@@ -4,8 +4,9 @@
 # (default), the ASan and the TSan ctest phase N times each, and counts failures per test and
 # phase. A test that fails once in N is a flake to fix, not to re-run. After each phase it lists
 # what the phase left behind (new since the phase began, named with round and phase): Open MPI
-# session folders (/tmp/ompi.<host>.<uid> and the job folders in them) and our shared memory
-# (/dev/shm/l2-*); a passing test must leave neither. The phase's log is then kept too.
+# session folders (/tmp/ompi.<host>.<uid>, the MPI tests' own bases /tmp/l2mpi.*, and the job
+# folders in them) and our shared memory (/dev/shm/l2-*); a passing test must leave neither.
+# The phase's log is then kept too.
 #
 # --load  loads the machine as CI does, for the whole run: beside the tests, a compile at the
 #         idle scheduling priority (SCHED_IDLE, as scripts/test.sh's builds beside the tests) —
@@ -67,10 +68,11 @@ load_alive() {
 }
 
 # What a test can leave behind, one path a line: mpirun's session folders and the job folders
-# in them, and our shared-memory segments. Another user's runs on the machine may show up too:
-# each line is a lead to follow, not a verdict.
+# in them (in /tmp, or in a test's own base /tmp/l2mpi.*), and our shared-memory segments.
+# Another user's runs on the machine may show up too: each line is a lead to follow, not a
+# verdict.
 leftover_paths() {
-  find /tmp -maxdepth 2 -path '/tmp/ompi.*' 2>/dev/null || true
+  find /tmp -maxdepth 2 \( -path '/tmp/ompi.*' -o -path '/tmp/l2mpi.*' \) 2>/dev/null || true
   find /dev/shm -maxdepth 1 -name 'l2-*' 2>/dev/null || true
 }
 # leftovers_since BEFORE ROUND PRESET LOG: says each path new since the listing BEFORE (a file),
