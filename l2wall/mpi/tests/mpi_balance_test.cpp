@@ -28,44 +28,55 @@ using namespace testing_support;
 
 constexpr int kFrames = 10;
 
-// mpirun as the shell tests start it (mpirun_local.sh says why each part): root allowed for
-// this test only, no hwloc GL plugin, TCP only and on loopback only, so an interface another
-// process adds mid-run is never used, a waiting rank yielding its core. The default wall: 4
-// pipeservers, 1 board column, the coordinator.
-const std::string kMpirun =
-    "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl "
-    "mpirun --mca btl self,tcp --mca btl_tcp_if_include lo --mca oob_tcp_if_include lo "
-    "--oversubscribe --mca mpi_yield_when_idle 1 -np 6";
+// A folder for mpirun's session folders of this test alone, removed with everything in it when
+// the test ends, however it ends: as mpirun_local.sh's mpirun_base (which says why; short, as
+// PMIx's socket paths under it must be).
+class MpirunBase {
+ public:
+  MpirunBase() {
+    std::string name = "/tmp/l2mpi.XXXXXX";
+    if (mkdtemp(name.data()) == nullptr) ADD_FAILURE() << "cannot make " << name;
+    path_ = name;
+  }
+  MpirunBase(const MpirunBase&) = delete;
+  MpirunBase& operator=(const MpirunBase&) = delete;
+  ~MpirunBase() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// mpirun as the shell tests start it (mpirun_local.sh says why each part): its session folders
+// under BASE, root allowed for this test only, no hwloc GL plugin, TCP only and on loopback
+// only, so an interface another process adds mid-run is never used, a waiting rank yielding
+// its core. NP 6: the default wall's 4 pipeservers, 1 board column, the coordinator.
+std::string mpirun(const MpirunBase& base, int np = 6) {
+  return fmt::format(
+      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl "
+      "mpirun --mca orte_tmpdir_base '{}' --mca btl self,tcp --mca btl_tcp_if_include lo "
+      "--mca oob_tcp_if_include lo --oversubscribe --mca mpi_yield_when_idle 1 -np {}",
+      base.path().string(), np);
+}
 
 // Patience for a loaded machine (six ranks on few cores).
 const std::vector<std::string> kCommon{
     "--scene", "strips",          "--frames", std::to_string(kFrames), "--refresh", "0", "--keep",
     "9",       "--ready-timeout", "5000",     "--stall-timeout",       "60000"};
 
-// An mpirun that ended without its own cleanup (Open MPI 4.1's now and then crashes in its PMIx
-// finalize once the job has ended; or it was killed) leaves its session folder: removed here by
-// mpirun's pid, that folder and no other, and said, as the shell tests' mpirun_wait does
-// (mpirun_local.sh says why). Open MPI's names: the host up to its first dot, the user's id.
-void remove_session_left(pid_t mpirun) {
-  char host[256] = {};
-  gethostname(host, sizeof host - 1);
-  const std::string name = std::string(host).substr(0, std::string(host).find('.'));
-  const char* tmp = std::getenv("TMPDIR");
-  const fs::path top = fs::path(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") /
-                       fmt::format("ompi.{}.{}", name, getuid());
-  const fs::path folder = top / fmt::format("pid.{}", mpirun);
-  std::error_code ec;
-  if (!fs::exists(folder, ec)) return;
-  fs::remove_all(folder, ec);
-  fs::remove(top, ec);  // only if that left it empty, as mpirun's own cleanup does
-  std::cout << fmt::format("(mpirun {} left its session folder {}: removed)\n", mpirun,
-                           folder.string());
-}
-
-// Waits for a run under mpirun, then removes the session folder that mpirun left, if any.
-ExitStatus wait_mpirun(WallRun& run, std::chrono::milliseconds timeout) {
+// Waits for a run under mpirun, and says in one line a session folder that mpirun left in BASE:
+// one that ended without its own cleanup (Open MPI 4.1's now and then crashes in its PMIx
+// finalize once the job has ended; or it was killed), as the shell tests' mpirun_wait does.
+// BASE, one mpirun's, takes it away with itself.
+ExitStatus wait_mpirun(WallRun& run, const MpirunBase& base, std::chrono::milliseconds timeout) {
   const ExitStatus status = run.wait(timeout);
-  remove_session_left(run.pid());
+  std::error_code ec;
+  for (const auto& left : fs::directory_iterator(base.path(), ec))
+    std::cout << fmt::format("(mpirun {} left its session folder {}: removed with its base)\n",
+                             run.pid(), left.path().string());
   return status;
 }
 
@@ -74,8 +85,9 @@ TEST(MpiBalance, StripsRetileOverMpiWithTheDisplaysOfAStaticRun) {
   balanced_args.insert(balanced_args.end(), {"--mpi", "--balance", "strips"});
   WallRun fixed("mpi-balance-static", kCommon);
   ASSERT_TRUE(fixed.wait(120s).ok()) << fixed.output();
-  WallRun balanced("mpi-balance-strips", balanced_args, {}, false, kMpirun);
-  ASSERT_TRUE(wait_mpirun(balanced, 180s).ok()) << balanced.output();
+  const MpirunBase base;
+  WallRun balanced("mpi-balance-strips", balanced_args, {}, false, mpirun(base));
+  ASSERT_TRUE(wait_mpirun(balanced, base, 180s).ok()) << balanced.output();
   const std::string output = balanced.output();
 
   // The summary names the mode and does not pretend to have counted strips.
@@ -120,9 +132,9 @@ TEST(MpiBalance, TwoColumnsOnBothPathsRetileOverMpi) {
   WallRun fixed("mpi-balance-2col-static", common);
   ASSERT_TRUE(fixed.wait(120s).ok()) << fixed.output();
   // 2 pipeservers, 2 board columns, the coordinator.
-  WallRun balanced("mpi-balance-2col-strips", balanced_args, {}, false,
-                   kMpirun.substr(0, kMpirun.rfind("-np")) + "-np 5");
-  ASSERT_TRUE(wait_mpirun(balanced, 180s).ok()) << balanced.output();
+  const MpirunBase base;
+  WallRun balanced("mpi-balance-2col-strips", balanced_args, {}, false, mpirun(base, 5));
+  ASSERT_TRUE(wait_mpirun(balanced, base, 180s).ok()) << balanced.output();
   const std::string output = balanced.output();
   EXPECT_NE(output.find("over 2 board column rank(s)"), std::string::npos) << output;
   EXPECT_TRUE(std::regex_search(
@@ -143,10 +155,11 @@ TEST(MpiBalance, TwoColumnsOnBothPathsRetileOverMpi) {
 
 // A rank that dies ends the mpirun job: surviving one is refused before anything runs.
 TEST(MpiBalance, SurvivingAHostLossIsRefusedOverMpi) {
+  const MpirunBase base;
   WallRun run("mpi-balance-survive",
               {"--frames", "2", "--mpi", "--balance", "strips", "--survive-host-loss"}, {}, false,
-              kMpirun);
-  EXPECT_FALSE(wait_mpirun(run, 120s).ok());
+              mpirun(base));
+  EXPECT_FALSE(wait_mpirun(run, base, 120s).ok());
   EXPECT_NE(run.output().find("l2wall: --survive-host-loss: does not run over MPI (--mpi): "
                               "mpirun ends every rank once one dies"),
             std::string::npos)
