@@ -50,7 +50,10 @@ if ! ip netns add "$id-probe" 2>/dev/null; then
   exit 77
 fi
 ip netns del "$id-probe"
-work=$(mktemp -d)
+# The hostfile, and every host's Open MPI session folders (orte_tmpdir_base below): each daemon
+# leaves its host's folder behind when it ends, and in /tmp they would meet another mpirun's
+# (every mpirun on a machine shares its host's folder). Short: PMIx's socket paths go under it.
+work=$(mktemp -d /tmp/l2mpi.XXXXXX)
 # Processes still on a host once the command has ended are named (a run must leave none: give
 # them 10 s to exit) and killed, at once when this script was interrupted; then the namespaces,
 # links and bridge go.
@@ -109,7 +112,7 @@ export HWLOC_COMPONENTS=-gl
 # Every host is this machine: their ranks share its cores, more ranks than cores, which the
 # hostfile's slots hide from Open MPI; a waiting rank must yield its core, not busy-poll it.
 mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
-  --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
+  --mca orte_tmpdir_base "$work" --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
   --mca mpi_yield_when_idle 1)
 echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
