@@ -2,7 +2,9 @@
 // camera path on every pipeserver of a wall, in this one process and one pipeserver after the
 // other, so each pipeserver's render time is measured alone on a machine whose cores the
 // pipeservers of a live run would share. Between frames the balancer plans the next frame's
-// layout from the tiles' times, as a live run's coordinator would. Prints one CSV row a frame:
+// layout from the tiles' times, as a live run's coordinator would; as it does, not from frame
+// 0's, which carry the renderer's warm-up (far longer than a later frame's; a resisting balancer
+// would take a layout that seemed to pay on them and keep it). Prints one CSV row a frame:
 // the frame time (the slowest pipeserver's render time: the frame waits for it) and the
 // imbalance (that over the mean). Render times are the tiles' CPU times (FrameTimes::tile_ms),
 // which other work on the machine does not lengthen. Beside them: the frame time the last
@@ -116,7 +118,8 @@ int run(const Options& o, const l2::SceneOptions& scene_options) {
     const l2::FrameLoad load = l2::frame_load(tile_seconds);
     estimate = l2::CostEstimate::from_layout(balancer.layout(), tile_seconds, footprints);
     const std::size_t tile_count = balancer.layout().tiles.size();
-    const l2::BalanceStep step = balancer.next(tile_seconds, footprints);
+    const l2::BalanceStep step =
+        k == 0 ? l2::BalanceStep{} : balancer.next(tile_seconds, footprints);
     if (o.verbose)
       std::fprintf(stderr, "frame %d: per triangle %.3g us\n", k, estimate->per_triangle() * 1e6);
     if (!step.rejected.empty()) {
