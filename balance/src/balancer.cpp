@@ -197,6 +197,8 @@ TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {
 BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footprints) {
   const CostEstimate estimate =
       CostEstimate::from_layout(layout_, with_stand_ins(seconds), footprints);
+  BalanceStep step;
+  step.per_triangle = estimate.per_triangle();
   Wall next = wall_;
   const std::optional<StripEdges> old_strips = strips_;
   std::vector<std::vector<double>> grid;
@@ -217,7 +219,10 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
     const auto holding = std::find_if(lost_.begin(), lost_.end(), [&](int s) {
       return !layout_.pipeservers[static_cast<std::size_t>(s)].tiles.empty();
     });
-    if (holding == lost_.end()) return {false, e.what(), false, 1, estimate.per_triangle()};
+    if (holding == lost_.end()) {
+      step.rejected = e.what();
+      return step;
+    }
     // The layout in use still has a lost pipeserver's tiles: it cannot stay. The last resort
     // is the wall's own tiling shared out by its policy or by visible area (what tilelayout's
     // survival counts on); the balancing goes on from there.
@@ -230,16 +235,17 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
     }
   }
   grid_ = std::move(grid);
-  const double price = estimate.per_triangle();
   const bool changed = planned.logical_tiles != layout_.logical_tiles ||
                        planned.tile_pipeserver != layout_.tile_pipeserver;
-  if (!changed) return {false, "", false, 1, price};
-  const double ratio = predicted_ratio(planned, seconds, footprints);
+  if (!changed) return step;
+  step.predicted_ratio = predicted_ratio(planned, seconds, footprints);
   // A layout still giving a lost pipeserver tiles cannot stay, whatever the change gains.
-  if (lost_.empty() && ratio > 1 - settings_.resistance && settings_.resistance > 0)
-    return {false, "", true, ratio, price};
+  step.resisted =
+      lost_.empty() && settings_.resistance > 0 && step.predicted_ratio > 1 - settings_.resistance;
+  if (step.resisted) return step;
   layout_ = std::move(planned);
-  return {true, "", false, ratio, price};
+  step.changed = true;
+  return step;
 }
 
 double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
