@@ -122,11 +122,14 @@ fault() {
   # descriptor"), one run in a few: that line is the runtime's, which -q does not reach. So are
   # the coordinator's TCP transport's two lines when the killed rank's socket is reset under a
   # send already under way (writev: Connection reset by peer, then the endpoint's state): the
-  # kernel resets it when the rank dies, before anyone can know. A rank stopped resets nothing.
+  # kernel resets it when the rank dies, before anyone can know. Any rank's blocking receive from
+  # the killed one may report the same reset (btl_tcp_recv_blocking). A rank stopped resets
+  # nothing.
   local runtime=(-e "^l2wall: " -e "^\[warn\] Epoll [A-Z]*([0-9]*) on fd [0-9]* failed")
   [[ $signal != KILL ]] || runtime+=(
     -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],0\]\[[^]]*/btl_tcp_frag\.c:[0-9]*:mca_btl_tcp_frag_send\] mca_btl_tcp_frag_send: writev failed: Connection reset by peer (104)$"
-    -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],0\]\[[^]]*/btl_tcp_endpoint\.c:[0-9]*:mca_btl_tcp_endpoint_send_handler\] invalid connection state ([0-9]*)$")
+    -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],0\]\[[^]]*/btl_tcp_endpoint\.c:[0-9]*:mca_btl_tcp_endpoint_send_handler\] invalid connection state ([0-9]*)$"
+    -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],[0-9]*\]\[[^]]*/btl_tcp\.c:[0-9]*:mca_btl_tcp_recv_blocking\] recv([0-9]*) failed: Connection reset by peer (104)$")
   # mpirun itself (Open MPI 4.1) now and then crashes in its PMIx server's finalize as it ends
   # the job a rank's MPI_Abort ended, after our lines are out and every rank is gone: its own
   # report, lines "[host:<mpirun's pid>] ...", is taken only with that function in it.
