@@ -19,12 +19,11 @@ int tag_of(MessageKind kind) {
 }  // namespace
 
 bool MpiReadyChannel::send_line(const std::string& line, MessageKind kind) {
-  MPI_Send(line.data(), static_cast<int>(line.size()), MPI_CHAR, peer_, tag_of(kind),
-           MPI_COMM_WORLD);
-  return true;
+  return outbox_.send(line, tag_of(kind));
 }
 
 bool MpiReadyChannel::receive(MessageKind awaited, std::chrono::milliseconds timeout) {
+  outbox_.reap();
   const int tag = tag_of(awaited);
   bool any = false;
   while (const auto bytes = mpi_wire::waiting(peer_, tag)) {

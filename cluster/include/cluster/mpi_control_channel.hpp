@@ -7,12 +7,11 @@
 #include <mpi.h>
 
 #include <chrono>
-#include <deque>
-#include <memory>
 #include <optional>
 #include <string>
 
 #include "balance/control_channel.hpp"
+#include "cluster/mpi_outbox.hpp"
 
 namespace l2 {
 
@@ -21,10 +20,7 @@ class MpiControlChannel final : public ControlChannel {
   // `peer`: the rank at the other end; `tag`: the channel's own (mpi_wire::kControl for
   // balancing, kWindows for a vnc run's desktop). MPI must be initialised (MpiSession) and stay
   // so while this channel lives.
-  explicit MpiControlChannel(int peer, int tag) : peer_(peer), tag_(tag) {}
-  ~MpiControlChannel() override;
-  MpiControlChannel(const MpiControlChannel&) = delete;
-  MpiControlChannel& operator=(const MpiControlChannel&) = delete;
+  explicit MpiControlChannel(int peer, int tag) : peer_(peer), tag_(tag), outbox_(peer) {}
 
   // Does not wait for the peer to take the line: a blocking send of a long LAYOUT line would
   // wait for a receive the peer posts only after the READY this process is yet to send.
@@ -32,16 +28,9 @@ class MpiControlChannel final : public ControlChannel {
   std::optional<std::string> receive_line(std::chrono::milliseconds timeout) override;
 
  private:
-  struct Sending {
-    std::unique_ptr<std::string> line;  // stays put until the send completes
-    MPI_Request request = MPI_REQUEST_NULL;
-  };
-  // Forgets the sends that completed.
-  void reap();
-
   int peer_;
   int tag_;
-  std::deque<Sending> sending_;
+  MpiOutbox outbox_;
 };
 
 }  // namespace l2

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "cluster/mpi_outbox.hpp"
 #include "sync_backchannel/ready_line.hpp"
 
 namespace l2 {
@@ -13,7 +14,8 @@ class MpiReadyChannel final : public ReadyLine {
  public:
   // `peer`: the rank at the other end (the coordinator for a host, a host for the
   // coordinator); `name` is how a wait that timed out names the line ("MPI rank 0").
-  MpiReadyChannel(int peer, std::string name) : peer_(peer), name_(std::move(name)) {}
+  MpiReadyChannel(int peer, std::string name)
+      : peer_(peer), name_(std::move(name)), outbox_(peer) {}
 
  private:
   bool send_line(const std::string& line, MessageKind kind) override;
@@ -22,6 +24,9 @@ class MpiReadyChannel final : public ReadyLine {
 
   int peer_;
   std::string name_;
+  // A READY to a pipeserver rank that has just died is never taken: it must not hold the
+  // coordinator (MpiOutbox).
+  MpiOutbox outbox_;
 };
 
 }  // namespace l2
