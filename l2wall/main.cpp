@@ -153,7 +153,9 @@ int main(int argc, char** argv) {
                 "the run; its tiles go to the others from the next layout on, and the summary "
                 "names it and counts the frames shown stale meanwhile (as [balance] "
                 "survive_host_loss = true; without it a dead pipeserver ends the run, named); "
-                "--path dvi or vizserver");
+                "--path dvi or vizserver; with --mpi, a pipeserver rank, under an mpirun that "
+                "keeps the job (mpirun --mca orte_enable_recovery 1 --mca "
+                "orte_abort_on_non_zero_status 0)");
   run->add_flag("--compare", o.compare,
                 "with --path both: every display must be identical byte for byte on both paths; "
                 "a mismatch writes both pictures and a diff picture to "
@@ -176,7 +178,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   l2::add_threads_option(*run, o.threads);
   l2::add_timeout_option(*run, "start-timeout", o.start_timeout_ms, false,
-                         "until every pipeserver must have published its first frame");
+                         "until every pipeserver must have published its first frame (with "
+                         "--mpi, also until every rank has joined MPI)");
   l2::add_timeout_option(*run, "stall-timeout", o.stall_timeout_ms, false,
                          "without a display swap after which the run names the hung pipeserver "
                          "(or compositing server) and stops");

@@ -113,6 +113,7 @@ std::vector<std::uint8_t> MpiDviReceiver::spare_buffer() {
 }
 
 bool MpiDviReceiver::poll() {
+  if (lost_) return false;
   int done = 0;
   MPI_Status status;
   check_link(MPI_Test(&request_, &done, &status), "receiving a frame", source_);
@@ -154,7 +155,7 @@ std::uint64_t MpiDviReceiver::sequence_of(const Held& m) {
 
 void MpiDviReceiver::take(std::uint64_t sequence, const std::function<void()>& watch) {
   if (sequence == 0 || (current_ && sequence_of(*current_) == sequence)) return;
-  for (;;) {
+  while (!lost_) {
     while (poll()) {
     }
     while (!arrived_.empty() && sequence_of(arrived_.front()) < sequence) {
@@ -165,9 +166,23 @@ void MpiDviReceiver::take(std::uint64_t sequence, const std::function<void()>& w
     watch();
     std::this_thread::sleep_for(std::chrono::microseconds(50));
   }
+  if (lost_) return;
   if (current_) spare_.push_back(std::move(current_->bytes));
   current_ = std::move(arrived_.front());
   arrived_.pop_front();
+}
+
+void MpiDviReceiver::lose() {
+  lost_ = true;
+  if (request_ != MPI_REQUEST_NULL) {
+    // Not waited for: a frame its sender died sending would never end the wait. Its buffer is
+    // left to the process's end, in case MPI still writes into it.
+    MPI_Cancel(&request_);
+    MPI_Request_free(&request_);
+    static_cast<void>(new std::vector<std::uint8_t>(std::move(posted_)));
+  }
+  arrived_.clear();
+  current_.reset();
 }
 
 std::optional<FrameView> MpiDviReceiver::latest() {

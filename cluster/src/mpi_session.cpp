@@ -5,15 +5,20 @@
 #include <fmt/ranges.h>
 #include <mpi.h>
 #include <poll.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 #include "base/fd.hpp"
@@ -26,6 +31,8 @@ namespace l2 {
 namespace {
 
 constexpr int kHostBytes = 64;
+// Far above what MPI_Finalize takes on a loaded machine when every rank is there.
+constexpr std::chrono::seconds kFinalizeTimeout{10};
 
 struct WireIdentity {
   int pid = 0;
@@ -37,7 +44,50 @@ struct WireIdentity {
 
 }  // namespace
 
-MpiSession::MpiSession() {
+namespace {
+
+// Calls `expire` (which ends the process) unless disarmed within `timeout`: for the MPI calls
+// that wait for every rank, which wait for ever for one that died when mpirun keeps the job.
+class Deadline {
+ public:
+  Deadline(std::chrono::milliseconds timeout, std::function<void()> expire)
+      : expire_(std::move(expire)), thread_([this, timeout](std::stop_token) { watch(timeout); }) {}
+  ~Deadline() { disarm(); }
+  Deadline(const Deadline&) = delete;
+  Deadline& operator=(const Deadline&) = delete;
+  void disarm() {
+    {
+      const std::lock_guard lock(mutex_);
+      disarmed_ = true;
+    }
+    wake_.notify_all();
+  }
+
+ private:
+  void watch(std::chrono::milliseconds timeout) {
+    std::unique_lock lock(mutex_);
+    if (!wake_.wait_for(lock, timeout, [this] { return disarmed_; })) expire_();
+  }
+
+  std::function<void()> expire_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool disarmed_ = false;
+  std::jthread thread_;  // last: it starts once the rest is built
+};
+
+}  // namespace
+
+MpiSession::MpiSession(std::chrono::milliseconds start_timeout) {
+  Deadline start(start_timeout, [start_timeout] {
+    const auto launched = launched_rank();
+    if (launched && launched->rank == 0)
+      std::fprintf(stderr,
+                   "l2wall: --mpi: the run's %d ranks did not all start within %lld ms "
+                   "(--start-timeout): a rank died or hung as MPI started it\n",
+                   launched->size, static_cast<long long>(start_timeout.count()));
+    std::_Exit(1);  // MPI is still starting: nothing of it can be ended cleanly
+  });
   if (MPI_Init(nullptr, nullptr) != MPI_SUCCESS) throw std::runtime_error("MPI_Init failed");
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
@@ -55,14 +105,37 @@ MpiSession::MpiSession() {
     identities_.push_back(
         {w.pid, std::string(w.host.data()), std::string(w.stack.data()), w.cores, w.yields != 0});
   connect_liveness();
+  start.disarm();
+  if (const auto launched = launched_rank(); rank_ != 0 && launched && launched->keeps_job)
+    watcher_ = std::jthread([this](std::stop_token stop) { follow_coordinator(stop); });
 }
 
 MpiSession::~MpiSession() {
   stop_watching();
-  // An end, not a death: the coordinator no longer takes this connection's close as a fault.
-  if (rank_ != 0 && !liveness_.empty()) send(liveness_.front().get(), "e", 1, MSG_NOSIGNAL);
+  // An end, not a death: the other end no longer takes this connection's close as a fault.
+  for (const Fd& fd : liveness_)
+    if (fd) send(fd.get(), "e", 1, MSG_NOSIGNAL);
   liveness_.clear();
+  // MPI_Finalize waits for every rank, and now and then for ever for one lost under an mpirun
+  // that keeps the job (Open MPI 4.1): this rank's part is done, it ends as it would have.
+  std::optional<Deadline> end;
+  if (const auto launched = launched_rank(); launched && launched->keeps_job)
+    end.emplace(kFinalizeTimeout, [] { std::_Exit(0); });
   MPI_Finalize();
+}
+
+void MpiSession::follow_coordinator(std::stop_token stop) {
+  const int fd = liveness_.front().get();
+  while (!stop.stop_requested()) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 20) <= 0) continue;
+    char byte = 0;
+    if (recv(fd, &byte, 1, MSG_DONTWAIT) > 0) return;  // the coordinator ended well
+    std::fprintf(stderr,
+                 "l2wall: rank %d: the coordinator (rank 0 on %s) is gone; this rank ends\n", rank_,
+                 identities_.front().host.c_str());
+    std::_Exit(1);
+  }
 }
 
 namespace {
@@ -219,13 +292,25 @@ void MpiSession::stop_watching() {
 }
 
 void MpiSession::report_unclaimed() {
-  const std::lock_guard lock(line_mutex_);
-  if (!lost_line_.empty() && !claimed_.exchange(true))
-    std::fprintf(stderr, "l2wall: %s\n", lost_line_.c_str());
+  const std::lock_guard lock(mutex_);
+  if (lost_line_.empty() || claimed_) return;
+  claimed_ = true;
+  std::fprintf(stderr, "l2wall: %s\n", lost_line_.c_str());
+}
+
+bool MpiSession::note_lost(int rank) {
+  const std::string line = describe_(rank);
+  const std::lock_guard lock(mutex_);
+  lost_.push_back(rank);
+  if (line.empty()) return false;
+  lost_line_ = line;
+  claimed_ = false;  // this loss is still to be taken up
+  return true;
 }
 
 void MpiSession::watch(std::stop_token stop) {
-  while (!stop.stop_requested() && lost_ < 0) {
+  bool fatal = false;
+  while (!stop.stop_requested() && !fatal) {
     std::vector<pollfd> fds;
     std::vector<std::size_t> ranks;  // by entry of fds
     for (std::size_t r = 0; r < liveness_.size(); ++r) {
@@ -235,38 +320,74 @@ void MpiSession::watch(std::stop_token stop) {
     }
     if (fds.empty()) return;
     if (poll(fds.data(), fds.size(), 5) <= 0) continue;
-    for (std::size_t i = 0; i < fds.size(); ++i) {
+    for (std::size_t i = 0; i < fds.size() && !fatal; ++i) {
       if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const std::size_t r = ranks[i];
       char byte = 0;
-      if (recv(fds[i].fd, &byte, 1, MSG_DONTWAIT) > 0) {  // the rank ended well
-        liveness_[r].reset();
-        continue;
-      }
-      {
-        const std::lock_guard lock(line_mutex_);
-        lost_line_ = describe_(static_cast<int>(r));
-      }
-      lost_ = static_cast<int>(r);
-      break;
+      const bool ended_well = recv(fds[i].fd, &byte, 1, MSG_DONTWAIT) > 0;
+      liveness_[r].reset();
+      if (!ended_well) fatal = note_lost(static_cast<int>(r));
     }
   }
-  if (lost_ < 0) return;
+  if (!fatal) return;
   // The run takes the loss up within milliseconds when it can; if it does not, this process
   // may be ending already (mpirun's SIGTERM): the line must be out first.
-  for (int i = 0; i < 30 && !stop.stop_requested() && !claimed_; ++i)
+  for (int i = 0; i < 30 && !stop.stop_requested(); ++i) {
+    {
+      const std::lock_guard lock(mutex_);
+      if (claimed_) break;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   report_unclaimed();
 }
 
-std::optional<int> MpiSession::lost_rank() {
-  const int r = lost_;
-  if (r < 0) return std::nullopt;
+std::vector<int> MpiSession::lost_ranks() {
+  const std::lock_guard lock(mutex_);
   claimed_ = true;
-  return r;
+  return lost_;
+}
+
+bool MpiSession::gone(int rank) {
+  const std::lock_guard lock(mutex_);
+  if (std::find(lost_.begin(), lost_.end(), rank) == lost_.end()) return false;
+  claimed_ = true;
+  return true;
+}
+
+namespace {
+
+// Asks the process that started this rank to end the job (SIGTERM): mpirun, or its daemon on
+// this host (whose end mpirun takes as the job's). Only under an mpirun that keeps the job, and
+// only a parent that is one of them. "mpirun, pid 4242", or empty when none was asked.
+std::string end_job() {
+  const auto launched = launched_rank();
+  if (!launched || !launched->keeps_job) return "";
+  const pid_t parent = getppid();
+  std::FILE* f = std::fopen(fmt::format("/proc/{}/comm", parent).c_str(), "r");
+  if (!f) return "";
+  char comm[32] = {};
+  const bool read = std::fgets(comm, sizeof comm, f) != nullptr;
+  std::fclose(f);
+  const std::string name = read ? std::string(comm, strcspn(comm, "\n")) : "";
+  if (name != "mpirun" && name != "orterun" && name != "orted") return "";
+  kill(parent, SIGTERM);
+  return fmt::format("{}, pid {}", name, parent);
+}
+
+}  // namespace
+
+void MpiSession::end_job_after_loss() {
+  if (rank_ != 0 || lost_ranks().empty()) return;
+  if (const std::string parent = end_job(); !parent.empty())
+    std::fprintf(stderr,
+                 "l2wall: --mpi: ending the job (SIGTERM to %s): Open MPI's mpirun does not end a "
+                 "job that lost a rank by itself; every rank's part is done\n",
+                 parent.c_str());
 }
 
 void MpiSession::abort_all(int code) {
+  end_job();
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
 }
@@ -275,7 +396,13 @@ std::optional<LaunchedRank> launched_rank() {
   const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
   const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
   if (!rank || !size) return std::nullopt;
-  return LaunchedRank{std::atoi(rank), std::atoi(size)};
+  const auto is = [](const char* name, std::string_view value) {
+    const char* v = std::getenv(name);
+    return v && value == v;
+  };
+  return LaunchedRank{std::atoi(rank), std::atoi(size),
+                      is("OMPI_MCA_orte_enable_recovery", "1") &&
+                          is("OMPI_MCA_orte_abort_on_non_zero_status", "0")};
 }
 
 }  // namespace l2

@@ -179,7 +179,8 @@ class LiveRun {
  private:
   void check_options() const {
     if (const Status s = run_options_error(o_); !s.ok()) throw std::invalid_argument(s.reason());
-    if (const Status s = balance_refusal(o_, wall_, false); !s.ok()) throw LayoutError(s.reason());
+    if (const Status s = balance_refusal(o_, wall_, RunPlace::OneMachine); !s.ok())
+      throw LayoutError(s.reason());
   }
 
   // A balanced run: the coordinator, and the DVI path following its layouts.

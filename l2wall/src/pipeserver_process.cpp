@@ -1,5 +1,6 @@
 #include "l2wall/pipeserver_process.hpp"
 
+#include <functional>
 #include <utility>
 
 namespace l2 {
@@ -23,12 +24,18 @@ class ChildPipeserver final : public PipeserverProcess {
 };
 
 // Watched from elsewhere: the coordinator learns of a rank's end from its liveness connection
-// (mpi/), and mpirun ends and reaps it.
+// (mpi/), and mpirun reaps it.
 class RemotePipeserver final : public PipeserverProcess {
  public:
-  explicit RemotePipeserver(std::string place) : place_(std::move(place)) {}
+  RemotePipeserver(std::string place, std::function<bool()> gone)
+      : place_(std::move(place)), gone_(std::move(gone)) {}
   std::string place() const override { return place_; }
-  std::optional<ExitStatus> poll() override { return std::nullopt; }
+  std::optional<ExitStatus> poll() override {
+    if (!gone_()) return std::nullopt;
+    ExitStatus s;
+    s.gone = true;
+    return s;
+  }
   bool stopped() const override { return false; }
   bool awaited() const override { return false; }
   void request_stop() override {}
@@ -36,6 +43,7 @@ class RemotePipeserver final : public PipeserverProcess {
 
  private:
   std::string place_;
+  std::function<bool()> gone_;
 };
 
 }  // namespace
@@ -45,8 +53,9 @@ std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<st
   return std::make_unique<ChildPipeserver>(argv, env);
 }
 
-std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place) {
-  return std::make_unique<RemotePipeserver>(std::move(place));
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
+                                                             std::function<bool()> gone) {
+  return std::make_unique<RemotePipeserver>(std::move(place), std::move(gone));
 }
 
 }  // namespace l2

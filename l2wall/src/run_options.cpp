@@ -79,7 +79,7 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   return spec;
 }
 
-Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
+Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
   const BalanceSpec spec = run_balance(o, wall);
   if (!spec.balancing()) {
     // Only a balancing run re-plans, so only it can hand a dead pipeserver's tiles to the others.
@@ -103,11 +103,12 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, bool mpi) {
   const std::string survive = o.survive_host_loss ? std::string("--survive-host-loss")
                                                   : fmt::format("{}:{}: balance.survive_host_loss",
                                                                 wall.source.string(), spec.line);
-  // A rank that dies ends the whole mpirun job: there is no run left to go on.
-  if (spec.survive_host_loss && mpi)
-    return Failure{survive +
-                   ": does not run over MPI (--mpi): mpirun ends every rank once one "
-                   "dies"};
+  // By default a rank that dies ends the whole mpirun job: there would be no run left to go on.
+  if (spec.survive_host_loss && place == RunPlace::MpiEndingOnLoss)
+    return Failure{fmt::format(
+        "{}: over MPI (--mpi) needs an mpirun that keeps the job when a rank dies: mpirun {} "
+        "...",
+        survive, kMpirunKeepsJob)};
   // A frame shown stale keeps older pixels where the lost pipeserver's tiles were on the DVI
   // path, and the background on the vizserver path: the two paths would differ there.
   if (spec.survive_host_loss && o.path == PathChoice::Both) {

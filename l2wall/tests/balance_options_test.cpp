@@ -27,40 +27,44 @@ TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
 
 TEST(BalanceOptions, EveryPathBalancesAndEachOneMachinePathAloneSurvivesALoss) {
   RunOptions o;
-  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), RunPlace::OneMachine).ok());
   o.path = PathChoice::Both;
-  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), RunPlace::OneMachine).ok());
   o.survive_host_loss = true;
-  EXPECT_EQ(balance_refusal(o, strips_wall(), false).reason(),
+  EXPECT_EQ(balance_refusal(o, strips_wall(), RunPlace::OneMachine).reason(),
             "--survive-host-loss: runs on --path dvi or vizserver, not both (a frame shown stale "
             "differs between them: older pixels on the DVI path, the background on the "
             "vizserver path)");
   o.path = PathChoice::Vizserver;
-  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), RunPlace::OneMachine).ok());
   o.survive_host_loss = false;
   o.path = PathChoice::Dvi;
   o.balance = "strips";
   EXPECT_TRUE(run_balance(o, default_wall()).balancing());
-  // MPI balances, on either path, but a rank that dies ends the job.
-  EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
+  // MPI balances, on either path; a rank that dies ends the job unless mpirun keeps it.
+  EXPECT_TRUE(balance_refusal(o, default_wall(), RunPlace::MpiEndingOnLoss).ok());
   o.path = PathChoice::Both;
-  EXPECT_TRUE(balance_refusal(o, default_wall(), true).ok());
+  EXPECT_TRUE(balance_refusal(o, default_wall(), RunPlace::MpiEndingOnLoss).ok());
   o.path = PathChoice::Dvi;
   o.survive_host_loss = true;
-  EXPECT_EQ(balance_refusal(o, default_wall(), true).reason(),
-            "--survive-host-loss: does not run over MPI (--mpi): mpirun ends every rank once one "
-            "dies");
+  EXPECT_EQ(balance_refusal(o, default_wall(), RunPlace::MpiEndingOnLoss).reason(),
+            "--survive-host-loss: over MPI (--mpi) needs an mpirun that keeps the job when a rank "
+            "dies: mpirun --mca orte_enable_recovery 1 --mca orte_abort_on_non_zero_status 0 ...");
+  // An mpirun that keeps the job: a pipeserver rank that dies is survived.
+  EXPECT_TRUE(balance_refusal(o, default_wall(), RunPlace::MpiKeepingJob).ok());
   Wall survive = strips_wall();
   survive.balance.survive_host_loss = true;
-  EXPECT_EQ(balance_refusal(RunOptions{}, survive, true).reason(),
-            "walls/x.toml:14: balance.survive_host_loss: does not run over MPI (--mpi): mpirun "
-            "ends every rank once one dies");
+  EXPECT_EQ(balance_refusal(RunOptions{}, survive, RunPlace::MpiEndingOnLoss).reason(),
+            "walls/x.toml:14: balance.survive_host_loss: over MPI (--mpi) needs an mpirun that "
+            "keeps the job when a rank dies: mpirun --mca orte_enable_recovery 1 --mca "
+            "orte_abort_on_non_zero_status 0 ...");
+  EXPECT_TRUE(balance_refusal(RunOptions{}, survive, RunPlace::MpiKeepingJob).ok());
   o.survive_host_loss = false;
   // Static asks for nothing to refuse.
   o.balance = "static";
   o.path = PathChoice::Vizserver;
   EXPECT_FALSE(run_balance(o, strips_wall()).balancing());
-  EXPECT_TRUE(balance_refusal(o, strips_wall(), true).ok());
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), RunPlace::MpiEndingOnLoss).ok());
 }
 
 // Surviving a dead pipeserver is the same on the command line and in the wall file, and needs a
@@ -70,8 +74,8 @@ TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
   EXPECT_FALSE(run_balance(o, strips_wall()).survive_host_loss);
   o.survive_host_loss = true;
   EXPECT_TRUE(run_balance(o, strips_wall()).survive_host_loss);
-  EXPECT_TRUE(balance_refusal(o, strips_wall(), false).ok());
-  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+  EXPECT_TRUE(balance_refusal(o, strips_wall(), RunPlace::OneMachine).ok());
+  EXPECT_EQ(balance_refusal(o, default_wall(), RunPlace::OneMachine).reason(),
             "--survive-host-loss needs balancing: --balance strips or kd, or a wall file's "
             "[balance]");
   Wall wall = strips_wall();
@@ -79,7 +83,7 @@ TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
   EXPECT_TRUE(run_balance(RunOptions{}, wall).survive_host_loss);
   RunOptions static_run;
   static_run.balance = "static";
-  EXPECT_EQ(balance_refusal(static_run, wall, false).reason(),
+  EXPECT_EQ(balance_refusal(static_run, wall, RunPlace::OneMachine).reason(),
             "walls/x.toml:14: balance.survive_host_loss needs balancing, which --balance static "
             "turns off");
 }
@@ -97,11 +101,11 @@ TEST(BalanceOptions, ResistanceFromTheWallOrTheCommandLine) {
   o.tile_cost = 0.3;
   EXPECT_DOUBLE_EQ(run_balance(o, wall).resistance, 0);
   EXPECT_DOUBLE_EQ(run_balance(o, wall).tile_cost, 0.3);
-  EXPECT_TRUE(balance_refusal(o, wall, false).ok());
-  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+  EXPECT_TRUE(balance_refusal(o, wall, RunPlace::OneMachine).ok());
+  EXPECT_EQ(balance_refusal(o, default_wall(), RunPlace::OneMachine).reason(),
             "--resistance needs balancing: --balance strips or kd, or a wall file's [balance]");
   o.resistance.reset();
-  EXPECT_EQ(balance_refusal(o, default_wall(), false).reason(),
+  EXPECT_EQ(balance_refusal(o, default_wall(), RunPlace::OneMachine).reason(),
             "--tile-cost needs balancing: --balance strips or kd, or a wall file's [balance]");
 }
 

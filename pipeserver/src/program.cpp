@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -104,9 +105,10 @@ int run_live(const l2::LiveOptions& o) {
 // A rank of an MPI run: a pipeserver that fails ends every rank, since the others wait for it.
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
 // `windows`: a vnc run's, its desktop over MPI from the coordinator.
-int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows) {
+int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows,
+                 std::chrono::milliseconds start_timeout) {
 #ifdef L2_HAVE_MPI
-  l2::MpiSession session;
+  l2::MpiSession session(start_timeout);
   const l2::CodecTo codec =
       l2::codec_to(o.link_codec, [&session](int rank) { return session.beside(rank); });
   const auto sent = std::make_shared<l2::SentBytes>();
@@ -139,6 +141,7 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows) {
   (void)tiles;
   (void)control;
   (void)windows;
+  (void)start_timeout;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -223,6 +226,10 @@ int run_pipeserver(int argc, char** argv) {
                   "live: a rank of `mpirun ... l2wall run --mpi`: frames go to the board column "
                   "ranks and READY comes from the coordinator as MPI messages (instead of "
                   "--link and --backchannel)");
+  int mpi_start_timeout_ms = 60000;  // as l2wall run's --start-timeout
+  l2::add_timeout_option(*group, "start-timeout", mpi_start_timeout_ms, false,
+                         "live, with --mpi: every rank of the run must have joined MPI within "
+                         "this, or this rank ends (l2wall run passes its own)");
   bool mpi_viz = false;
   group->add_flag("--mpi-viz", mpi_viz,
                   "live, with --mpi: also send every tile to the board column rank owning its "
@@ -285,7 +292,9 @@ int run_pipeserver(int argc, char** argv) {
       return 2;
     }
     live_options.link_codec = l2::parse_link_choice(link_codec).value();
-    if (mpi) return run_mpi_rank(live_options, mpi_viz, mpi_control, mpi_windows);
+    if (mpi)
+      return run_mpi_rank(live_options, mpi_viz, mpi_control, mpi_windows,
+                          std::chrono::milliseconds(mpi_start_timeout_ms));
     return run_live(live_options);
   }
   // Its desktop comes from l2wall run's coordinator: alone it would only draw black.

@@ -32,10 +32,13 @@ namespace l2 {
 struct ExitStatus {
   int code = 0;    // exit code when the process exited
   int signal = 0;  // terminating signal, 0 if it exited
-  bool ok() const { return signal == 0 && code == 0; }
+  // A process elsewhere (an MPI rank) seen to end without its status: its connection closed.
+  bool gone = false;
+  bool ok() const { return !gone && signal == 0 && code == 0; }
   // What a shell's $? shows: the exit code, or 128 + the signal.
   int shell_code() const { return signal != 0 ? 128 + signal : code; }
-  std::string describe() const;  // "exited with code 3" / "killed by signal 9 (Killed)"
+  // "exited with code 3" / "killed by signal 9 (Killed)" / "is gone (its connection ...)"
+  std::string describe() const;
 };
 
 // Which of the child's output streams go to pipes this process reads (the others are

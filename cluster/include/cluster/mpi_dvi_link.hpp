@@ -76,9 +76,13 @@ class MpiDviReceiver final : public DviReceiver {
   MpiDviReceiver& operator=(const MpiDviReceiver&) = delete;
 
   // Waits for frame `sequence` (0: none yet, nothing to wait for), calling `watch` meanwhile;
-  // older frames are dropped.
+  // older frames are dropped. Returns without it once `watch` has lost the input (lose()).
   void take(std::uint64_t sequence, const std::function<void()>& watch);
   std::optional<FrameView> latest() override;
+  // Its sender is gone (a pipeserver lost under --survive-host-loss): no signal from now on,
+  // nothing more received. A frame it died sending never arrives whole.
+  void lose();
+  bool lost() const { return lost_; }
 
  private:
   // Completes the posted receive if it is done (rebuilding its frame) and posts the next; true
@@ -105,6 +109,7 @@ class MpiDviReceiver final : public DviReceiver {
   std::deque<Held> arrived_;  // oldest first
   std::vector<std::vector<std::uint8_t>> spare_;
   std::optional<Held> current_;
+  bool lost_ = false;
 };
 
 }  // namespace l2

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -31,7 +32,10 @@ class MpiSession {
  public:
   // Errors come back as return codes (MPI_ERRORS_RETURN), not as an abort inside MPI, so a
   // rank that lost a peer can say which one. Collective: every rank constructs one.
-  MpiSession();
+  // A rank that dies while the run starts (before its liveness connection) leaves the others in
+  // a collective for ever when mpirun keeps the job (orte_enable_recovery): each rank ends
+  // after `start_timeout` without a session, rank 0 saying why in one line.
+  explicit MpiSession(std::chrono::milliseconds start_timeout);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -50,16 +54,27 @@ class MpiSession {
   // On rank 0, every rank holds a TCP connection to it for its whole life, beside MPI: when a
   // rank's process is gone its connection closes (without the word a rank sends as it ends
   // well), at once, and the coordinator can name the rank before mpirun ends the job. A thread
-  // watches them: after a loss it waits briefly for the run to take it up (lost_rank()), and
-  // otherwise prints `describe(rank)` itself ("l2wall: ..."), since mpirun may be ending this
-  // process already.
+  // watches them. `describe(rank)` is the line of a loss that ends the run, empty for one the
+  // run survives (a pipeserver under --survive-host-loss, whose mpirun keeps the job): after a
+  // loss that ends the run the thread waits briefly for the run to take it up (lost_ranks()),
+  // otherwise prints the line itself ("l2wall: ..."), since mpirun may be ending this process
+  // already, and watches no more.
   void watch_ranks(std::function<std::string(int rank)> describe);
   void stop_watching();
-  // The rank found gone, or nullopt; the run reports it from here on.
-  std::optional<int> lost_rank();
+  // The ranks found gone so far, in the order found; the run reports them from here on.
+  std::vector<int> lost_ranks();
+  // Whether `rank` was found gone (the run reports it from here on, if so).
+  bool gone(int rank);
 
-  // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed.
+  // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
+  // an mpirun that keeps the job, where MPI_Abort ends only its caller, mpirun is asked to end
+  // the job too (end_job()).
   [[noreturn]] static void abort_all(int code);
+  // Rank 0, after a run that went on without a lost rank under an mpirun that keeps the job:
+  // Open MPI 4.1's mpirun, and the daemon of the lost rank's host, never count that rank as
+  // ended and wait for ever once every other has. Every rank's part is done: asks mpirun to end
+  // the job, saying so in one line.
+  void end_job_after_loss();
 
  private:
   // Every rank connects to the coordinator's listener (coordinator_address.hpp); a rank
@@ -69,7 +84,13 @@ class MpiSession {
                        const std::vector<std::array<char, 240>>& errors);
   void refuse_unreached(const std::vector<std::array<char, 240>>& errors);
   void watch(std::stop_token stop);
-  // Prints the line of a rank found gone, unless the run reported it.
+  // Any rank but 0, under an mpirun that keeps the job (LaunchedRank::keeps_job): there
+  // MPI_Abort ends only the rank that calls it, so a rank whose coordinator is gone without
+  // its word of a good end (ended by a fault, killed) ends itself, rather than wait for ever.
+  void follow_coordinator(std::stop_token stop);
+  // Takes in a rank found gone; true when its loss ends the run.
+  bool note_lost(int rank);
+  // Prints the line of a loss that ends the run, unless the run reported it.
   void report_unclaimed();
 
   int rank_ = 0;
@@ -77,11 +98,11 @@ class MpiSession {
   std::vector<RankIdentity> identities_;
   std::vector<Fd> liveness_;  // rank 0: by rank, the connection (none for itself); else one
   std::function<std::string(int)> describe_;
-  std::atomic<int> lost_{-1};
-  std::atomic<bool> claimed_{false};
-  std::mutex line_mutex_;
+  std::mutex mutex_;  // guards the three below: the watcher writes them, the run reads them
+  std::vector<int> lost_;
+  bool claimed_ = false;  // the run took up the losses found so far
   std::string lost_line_;
-  std::jthread watcher_;
+  std::jthread watcher_;  // rank 0: watch(); any other: follow_coordinator(), or none
 };
 
 // The rank and size mpirun gave this process, read from its environment before MPI_Init
@@ -89,6 +110,9 @@ class MpiSession {
 struct LaunchedRank {
   int rank = 0;
   int size = 0;
+  // mpirun keeps the job when a rank dies (--mca orte_enable_recovery 1 --mca
+  // orte_abort_on_non_zero_status 0, which it passes on to every rank's environment).
+  bool keeps_job = false;
 };
 std::optional<LaunchedRank> launched_rank();
 

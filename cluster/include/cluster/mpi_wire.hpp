@@ -25,6 +25,7 @@ enum Tag : int {
   kSwapped = 11,     // coordinator -> pipeserver: frames up to this one are composed everywhere
   kControl = 12,     // pipeserver <-> coordinator: a balanced run's TIMES and LAYOUT lines
   kWindows = 13,     // pipeserver <-> coordinator: a vnc run's WANT, DESKTOP and RECT lines
+  kLost = 14,        // coordinator -> column: a pipeserver whose rank is gone, survived
 };
 
 // The viz path over MPI: a tile (kind 1, to the column owning its display)
@@ -47,6 +48,9 @@ inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2, kTileDeltaKind 
 
 // In a column's answer: a host's stamp that lands on another column's display, not read there.
 inline constexpr int kStampNotHere = -1;
+// In the coordinator's tick, for a pipeserver lost (--survive-host-loss): its input carries no
+// signal from now on.
+inline constexpr std::uint64_t kNoSignal = ~std::uint64_t{0};
 
 // What the coordinator asks of a column (the first word of a record).
 enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4, kFetchComposed = 5 };

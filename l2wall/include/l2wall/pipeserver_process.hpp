@@ -9,6 +9,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,8 +24,8 @@ class PipeserverProcess {
   virtual ~PipeserverProcess() = default;
   // How messages name it: "pid 4242", or "rank 3 on node-a, pid 4242".
   virtual std::string place() const = 0;
-  // Its exit status once it has ended; nullopt while it runs, and always for a process this
-  // one cannot watch (an MPI rank: mpirun ends the job when a rank dies).
+  // Its exit status once it has ended; nullopt while it runs. An MPI rank's is only ever
+  // ExitStatus::gone, once its liveness connection closed.
   virtual std::optional<ExitStatus> poll() = 0;
   // Stopped by a signal (SIGSTOP), as far as this process can tell.
   virtual bool stopped() const = 0;
@@ -39,7 +40,9 @@ class PipeserverProcess {
 // A pipeserver process started here with `argv` and `env` ("NAME=value" added).
 std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<std::string>& argv,
                                                             const std::vector<std::string>& env);
-// A pipeserver another process started (an MPI rank), named by `place`.
-std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place);
+// A pipeserver another process started (an MPI rank), named by `place`; `gone` says whether
+// its process was seen to end.
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
+                                                             std::function<bool()> gone);
 
 }  // namespace l2

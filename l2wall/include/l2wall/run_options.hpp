@@ -80,8 +80,15 @@ std::vector<std::string> pausable_pipeserver_args(const RunOptions& options);
 // The wall's [balance] with --balance over its mode, --resistance and --tile-cost over its
 // own, and --survive-host-loss.
 BalanceSpec run_balance(const RunOptions& options, const Wall& wall);
-// Why this run cannot balance as asked (--survive-host-loss without balancing, or on another
-// path than dvi, or over MPI), or nullopt: one line naming the option or the wall file's line.
-Status balance_refusal(const RunOptions& options, const Wall& wall, bool mpi);
+// Where a run's processes run, as balancing's refusals need it: on this machine, or as MPI
+// ranks whose mpirun ends the job once one dies (its default) or keeps the job going
+// (kMpirunKeepsJob's options).
+enum class RunPlace { OneMachine, MpiEndingOnLoss, MpiKeepingJob };
+inline constexpr const char* kMpirunKeepsJob =
+    "--mca orte_enable_recovery 1 --mca orte_abort_on_non_zero_status 0";
+// Why this run cannot balance as asked (--survive-host-loss without balancing, on both paths,
+// or over MPI whose mpirun would end the job), or nullopt: one line naming the option or the
+// wall file's line.
+Status balance_refusal(const RunOptions& options, const Wall& wall, RunPlace place);
 
 }  // namespace l2

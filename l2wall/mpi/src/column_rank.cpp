@@ -121,10 +121,12 @@ class Column {
       const auto p = static_cast<std::size_t>(input.pipeserver);
       if (p >= sequences.size())
         throw std::runtime_error(fmt::format("the coordinator's tick has no pipeserver {}", p));
-      input.receiver->take(sequences[p], pump_);
-      const auto f = input.receiver->latest();
       InputFrame& frame = frames_[p];
       frame = {};
+      if (sequences[p] == mpi_wire::kNoSignal) input.receiver->lose();  // its pipeserver is lost
+      if (input.receiver->lost()) continue;
+      input.receiver->take(sequences[p], pump_);
+      const auto f = input.receiver->latest();
       if (!f) continue;
       frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
       // The spot is the new frame's: an input with none keeps the stamp it had.
@@ -197,6 +199,22 @@ class Column {
         done_frame_[static_cast<std::size_t>(index)] = back_frame_[static_cast<std::size_t>(index)];
         back_frame_[static_cast<std::size_t>(index)] = -1;
       }
+    }
+  }
+
+  // What the coordinator says at any time: a pipeserver lost (its frame being waited for may
+  // never arrive whole); the viz path's tiles.
+  void pump() {
+    take_losses();
+    pump_tiles();
+  }
+
+  void take_losses() {
+    while (mpi_wire::waiting(RankMap::kCoordinator, mpi_wire::kLost)) {
+      Reader in(mpi_wire::receive(RankMap::kCoordinator, mpi_wire::kLost));
+      const int pipeserver = in.next_int();
+      for (ColumnInput& input : inputs_)
+        if (input.pipeserver == pipeserver) input.receiver->lose();
     }
   }
 
@@ -298,7 +316,7 @@ class Column {
   std::vector<std::uint8_t> tile_bytes_;
   std::map<int, viz::TileDeltaDecoder> tile_deltas_;  // by pipeserver: its TILE_DELTA tiles
   ColumnShow* show_;                                  // --show monitors, or null
-  const std::function<void()> pump_ = [this] { pump_tiles(); };
+  const std::function<void()> pump_ = [this] { pump(); };
 };
 
 }  // namespace

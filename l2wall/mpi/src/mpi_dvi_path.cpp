@@ -48,6 +48,7 @@ MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession&
       map_(map),
       session_(session),
       stall_timeout_ms_(o.stall_timeout_ms),
+      survive_(run_balance(o, layout.wall).survive_host_loss),
       clock_(o.refresh_hz),
       refresh_hz_(o.refresh_hz),
       frames_(o.frames),
@@ -58,7 +59,12 @@ MpiDviPath::MpiDviPath(const TileLayout& layout, const RankMap& map, MpiSession&
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     for (const int id : groups_[g].displays) group_of_display_[id] = static_cast<int>(g);
   }
-  session_.watch_ranks([this](int rank) { return lost_message(rank); });
+  session_.watch_ranks(
+      [this](int rank) { return survived(rank) ? std::string() : lost_message(rank); });
+}
+
+bool MpiDviPath::survived(int rank) const {
+  return survive_ && map_.pipeserver_of(rank).has_value();
 }
 
 std::string MpiDviPath::lost_message(int rank) const {
@@ -71,7 +77,7 @@ std::string MpiDviPath::lost_message(int rank) const {
 
 bool MpiDviPath::take_notices(PipeserverSet& pipeservers) {
   bool fresh = false;
-  for (LivePipeserver& h : pipeservers.all()) {
+  for (LivePipeserver& h : pipeservers.serving()) {
     const int rank = map_.pipeserver_rank(h.pipeserver);
     while (mpi_wire::waiting(rank, mpi_wire::kNotice)) {
       const Record notice = mpi_wire::receive(rank, mpi_wire::kNotice);
@@ -89,16 +95,17 @@ void MpiDviPath::open(PipeserverSet& pipeservers, std::chrono::milliseconds time
     watch.processes();
     take_notices(pipeservers);
     const auto& all = pipeservers.all();
-    // As on one machine: the refreshes start once every input carries a signal.
+    // As on one machine: the refreshes start once every input carries a signal (a pipeserver
+    // lost before its first frame never will).
     if (std::all_of(all.begin(), all.end(),
-                    [](const LivePipeserver& h) { return h.sequence > 0; })) {
+                    [](const LivePipeserver& h) { return h.lost || h.sequence > 0; })) {
       unseen_ = true;  // the first frames are still to be taken in
       return;
     }
     if (RunClock::now() > deadline) {
       std::string missing;
       for (const LivePipeserver& h : all)
-        if (h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
+        if (!h.lost && h.sequence == 0) missing += fmt::format(" {}", h.pipeserver);
       throw RunFault(fmt::format("no first frame within {} ms from pipeserver(s){}",
                                  timeout.count(), missing));
     }
@@ -125,7 +132,8 @@ void MpiDviPath::refresh(PipeserverSet& pipeservers) {
   // one.
   accepted_.clear();
   for (const LivePipeserver& h : pipeservers.all()) {
-    tick.sequences.push_back(h.sequence);
+    // A lost pipeserver's input carries no signal from now on: it feeds no group, holds none up.
+    tick.sequences.push_back(h.lost ? mpi_wire::kNoSignal : h.sequence);
     tick.stamps.push_back({h.stamp(h.accepted + 1), h.stamp(h.accepted), h.stamp(h.accepted - 1)});
     accepted_.push_back(h.accepted);
   }
@@ -183,8 +191,9 @@ void MpiDviPath::refresh(PipeserverSet& pipeservers) {
   }
   // As on one machine (LocalLightning2::frame_shown): the last frame if its stamp says so, else the
   // one before if its stamp says so, else what the last frame's spot shows. Pipeservers on no
-  // answering column stay INT_MAX.
+  // answering column, and those lost, stay INT_MAX.
   for (std::size_t i = 0; i < stamp_shown_.size(); ++i) {
+    if (pipeservers.all()[i].lost) continue;
     const int last = accepted_[i];
     if (last >= 0 && seen_last[i] == last)
       stamp_shown_[i] = last;
@@ -221,7 +230,7 @@ std::optional<Record> MpiDviPath::column_answer(int c, PipeserverSet& pipeserver
   struct Failed {};
   try {
     return mpi_wire::receive_watched(rank, mpi_wire::kObservation, [&] {
-      if (down() && *lost_ == rank) throw Failed{};
+      if (down() && *lost_ == rank) throw Failed{};  // and tells the columns of losses survived
       pipeservers.serve_channels();
       if (RunClock::now() >= deadline) {
         stuck_ = rank;
@@ -257,8 +266,24 @@ std::string MpiDviPath::displays_showing() const {
 }
 
 bool MpiDviPath::down() {
-  if (!lost_) lost_ = session_.lost_rank();
+  // A pipeserver rank the run survives ends as a pipeserver does (PipeserverSet::poll_ended).
+  for (const int rank : session_.lost_ranks()) {
+    if (lost_) break;
+    if (!survived(rank))
+      lost_ = rank;
+    else
+      tell_columns_lost(*map_.pipeserver_of(rank));
+  }
   return lost_.has_value();
+}
+
+void MpiDviPath::tell_columns_lost(int pipeserver) {
+  if (std::find(told_.begin(), told_.end(), pipeserver) != told_.end()) return;
+  told_.push_back(pipeserver);
+  // At once, not at the next tick: a column may be waiting for a frame the pipeserver died
+  // sending, and this process for that column's answer.
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send({pipeserver}, map_.column_rank(c), mpi_wire::kLost);
 }
 
 Status MpiDviPath::failure_as_cause(int, const std::string&) {
@@ -362,6 +387,7 @@ void MpiDviPath::finish() {
   SentBytes frames_sent, tiles_sent;
   const auto deadline = RunClock::now() + std::chrono::seconds(10);
   for (int s = 0; s < map_.pipeservers; ++s) {
+    if (std::find(gone_.begin(), gone_.end(), s) != gone_.end()) continue;  // sends nothing more
     while (!mpi_wire::waiting(map_.pipeserver_rank(s), mpi_wire::kDone)) {
       if (RunClock::now() > deadline)
         throw RunFault(fmt::format("pipeserver {} (rank {}) did not end after the last frame", s,

@@ -50,7 +50,8 @@ class MpiDviPath final : public DisplayPath {
   // The line for rank `rank` gone; from any thread.
   std::string lost_message(int rank) const;
 
-  // A rank whose process is gone (MpiSession::lost_rank).
+  // A rank whose process is gone (MpiSession::lost_ranks), but for a pipeserver the run
+  // survives: that one ends as a pipeserver (its RemotePipeserver is gone) and is lost.
   bool down() override;
   Status failure_as_cause(int shown, const std::string& showing) override;
   Status failure(int shown, const std::string& showing) override {
@@ -64,9 +65,21 @@ class MpiDviPath final : public DisplayPath {
   // A balanced run: serves the control channels as it steps and checks each swap's frames
   // share a layout. The columns do not count the strips they route, so neither does this.
   void follow_layouts(LiveBalance& balance, PipeserverSet&) override;
+  // --survive-host-loss: its rank's input carries no signal from the next refresh on
+  // (mpi_wire::kNoSignal in the tick), and the run's end does not wait for it. Losing the
+  // signal is news, as a new frame is: a group it held up may complete now, and at full speed
+  // (--refresh 0) only news starts a refresh.
+  void lose_pipeserver(int pipeserver) override {
+    gone_.push_back(pipeserver);
+    unseen_ = true;
+  }
 
  private:
   void check_groups_for_balance(const PipeserverSet& pipeservers);
+  // Whether the run goes on when `rank` is gone: a pipeserver's, under --survive-host-loss.
+  bool survived(int rank) const;
+  // Says to every column, once, that `pipeserver`'s rank is gone (mpi_wire::kLost).
+  void tell_columns_lost(int pipeserver);
   // Takes in every pipeserver's notices of frames published; true when one is new.
   bool take_notices(PipeserverSet& pipeservers);
   // One refresh over every column; the tick's decision. A column that fails is named after
@@ -90,7 +103,10 @@ class MpiDviPath final : public DisplayPath {
   const RankMap& map_;
   MpiSession& session_;
   int stall_timeout_ms_;
-  std::optional<int> lost_;  // a rank that is gone
+  bool survive_;             // --survive-host-loss
+  std::vector<int> gone_;    // pipeservers lost, the run going on without them
+  std::vector<int> told_;    // pipeservers whose loss the columns were told of
+  std::optional<int> lost_;  // a rank that is gone, ending the run
   int stuck_ = -1;           // a column rank that stopped answering
   RefreshClock clock_;
   double refresh_hz_;

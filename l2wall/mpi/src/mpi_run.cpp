@@ -56,7 +56,8 @@ class MpiBackends final : public RunBackends {
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
       PipeserverSet::RemoteEnd end;
       end.process =
-          remote_pipeserver_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid));
+          remote_pipeserver_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid),
+                                    [this, rank] { return session_.gone(rank); });
       end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
       if (launch.control)
@@ -84,7 +85,7 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   h.report_path =
       (std::filesystem::path(o.out) / fmt::format("pipeserver-{}.log", pipeserver)).string();
   PipeserverLaunch launch = pipeserver_launch(o);
-  launch.extra_args = {"--mpi"};
+  launch.extra_args = {"--mpi", "--start-timeout", std::to_string(o.start_timeout_ms)};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
   if (takes_windows(o.scene)) launch.extra_args.push_back("--mpi-windows");
@@ -158,7 +159,8 @@ int run_wall_mpi(const RunOptions& o) {
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
-  if (const Status s = balance_refusal(o, layout->wall, true); !s.ok()) return refuse(s.reason());
+  const RunPlace place = launched->keeps_job ? RunPlace::MpiKeepingJob : RunPlace::MpiEndingOnLoss;
+  if (const Status s = balance_refusal(o, layout->wall, place); !s.ok()) return refuse(s.reason());
   if (const Status s = rank_count_error(*map, launched->size); !s.ok()) return refuse(s.reason());
   if (const auto pipeserver = map->pipeserver_of(launched->rank))
     return exec_pipeserver(o, *pipeserver, balanced);
@@ -177,7 +179,7 @@ int run_wall_mpi(const RunOptions& o) {
     }
   }
 
-  MpiSession session;
+  MpiSession session(std::chrono::milliseconds(o.start_timeout_ms));
   if (column)
     return run_column_rank(*layout, *map, *column, o, session.rank(), show ? &*show : nullptr);
   // A machine with more ranks than cores whose MPI busy-polls: said once, before the frames.
@@ -190,6 +192,7 @@ int run_wall_mpi(const RunOptions& o) {
   const MpiBackends backends(*layout, *map, session, coordinator);
   const int code = run_wall(coordinator, backends);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
+  session.end_job_after_loss();
   return 0;
 }
 

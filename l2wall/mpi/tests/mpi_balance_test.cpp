@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "balanced_run.hpp"
+#include "mpirun_run.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "wall_run.hpp"
@@ -28,57 +29,10 @@ using namespace testing_support;
 
 constexpr int kFrames = 10;
 
-// A folder for mpirun's session folders of this test alone, removed with everything in it when
-// the test ends, however it ends: as mpirun_local.sh's mpirun_base (which says why; short, as
-// PMIx's socket paths under it must be).
-class MpirunBase {
- public:
-  MpirunBase() {
-    std::string name = "/tmp/l2mpi.XXXXXX";
-    if (mkdtemp(name.data()) == nullptr) ADD_FAILURE() << "cannot make " << name;
-    path_ = name;
-  }
-  MpirunBase(const MpirunBase&) = delete;
-  MpirunBase& operator=(const MpirunBase&) = delete;
-  ~MpirunBase() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-// mpirun as the shell tests start it (mpirun_local.sh says why each part): its session folders
-// under BASE, root allowed for this test only, no hwloc GL plugin, TCP only and on loopback
-// only, so an interface another process adds mid-run is never used, a waiting rank yielding
-// its core. NP 6: the default wall's 4 pipeservers, 1 board column, the coordinator.
-std::string mpirun(const MpirunBase& base, int np = 6) {
-  return fmt::format(
-      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 HWLOC_COMPONENTS=-gl "
-      "mpirun --mca orte_tmpdir_base '{}' --mca btl self,tcp --mca btl_tcp_if_include lo "
-      "--mca oob_tcp_if_include lo --oversubscribe --mca mpi_yield_when_idle 1 -np {}",
-      base.path().string(), np);
-}
-
 // Patience for a loaded machine (six ranks on few cores).
 const std::vector<std::string> kCommon{
     "--scene", "strips",          "--frames", std::to_string(kFrames), "--refresh", "0", "--keep",
     "9",       "--ready-timeout", "5000",     "--stall-timeout",       "60000"};
-
-// Waits for a run under mpirun, and says in one line a session folder that mpirun left in BASE:
-// one that ended without its own cleanup (Open MPI 4.1's now and then crashes in its PMIx
-// finalize once the job has ended; or it was killed), as the shell tests' mpirun_wait does.
-// BASE, one mpirun's, takes it away with itself.
-ExitStatus wait_mpirun(WallRun& run, const MpirunBase& base, std::chrono::milliseconds timeout) {
-  const ExitStatus status = run.wait(timeout);
-  std::error_code ec;
-  for (const auto& left : fs::directory_iterator(base.path(), ec))
-    std::cout << fmt::format("(mpirun {} left its session folder {}: removed with its base)\n",
-                             run.pid(), left.path().string());
-  return status;
-}
 
 TEST(MpiBalance, StripsRetileOverMpiWithTheDisplaysOfAStaticRun) {
   std::vector<std::string> balanced_args = kCommon;
@@ -151,19 +105,6 @@ TEST(MpiBalance, TwoColumnsOnBothPathsRetileOverMpi) {
     distinct.insert(line.substr(line.find(' ', std::string("LAYOUT ").size())));
   EXPECT_GE(distinct.size(), 3u);
   expect_displays_equal_stamps_aside(fixed, plan_layout(wall), balanced, layouts, {5});
-}
-
-// A rank that dies ends the mpirun job: surviving one is refused before anything runs.
-TEST(MpiBalance, SurvivingAHostLossIsRefusedOverMpi) {
-  const MpirunBase base;
-  WallRun run("mpi-balance-survive",
-              {"--frames", "2", "--mpi", "--balance", "strips", "--survive-host-loss"}, {}, false,
-              mpirun(base));
-  EXPECT_FALSE(wait_mpirun(run, base, 120s).ok());
-  EXPECT_NE(run.output().find("l2wall: --survive-host-loss: does not run over MPI (--mpi): "
-                              "mpirun ends every rank once one dies"),
-            std::string::npos)
-      << run.output();
 }
 
 }  // namespace
