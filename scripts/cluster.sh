@@ -6,24 +6,29 @@
 # user would on the head node. Everything made is removed when it ends, however it ends; names
 # are unique to the run, so two runs at once do not meet. Needs root (CI is).
 #
-# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--subnet A.B.C] -- PROGRAM ARGS...
+# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--subnet A.B.C] [--keep-job]
+#                           -- PROGRAM ARGS...
 #   --hosts    the hosts and how many ranks each takes, in rank order (default
 #              render-a:3,render-b:2,display-a:1: the default wall's coordinator and
 #              pipeservers 0-1, pipeservers 2-3, its board column)
 #   --rate     each host's link, both ways: e.g. 1gbit, 10gbit, 500mbit (default: unshaped)
 #   --subnet   the hosts' /24, host i at .(i+2) (default 10.213.7; only inside the namespaces)
+#   --keep-job mpirun keeps the job when a rank dies (--mca orte_enable_recovery 1 --mca
+#              orte_abort_on_non_zero_status 0), as `l2wall run --mpi --survive-host-loss` needs;
+#              mpirun then exits 0 whatever its ranks did
 # It runs: mpirun -np <the slots' sum> --hostfile ... PROGRAM ARGS..., prints that command on
 # one line ("cluster: ..."), and exits with its code; 77 when this machine cannot make network
 # namespaces (not root, no ip netns), said in one line.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-hosts_spec=render-a:3,render-b:2,display-a:1 rate= subnet=10.213.7
+hosts_spec=render-a:3,render-b:2,display-a:1 rate= subnet=10.213.7 keep_job=()
 usage() { sed -n '/^# Usage:/,/^set /p' "$0" | sed '$d; s/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --hosts) hosts_spec=${2:?--hosts needs NAME:SLOTS,...}; shift 2 ;;
     --rate) rate=${2:?--rate needs a rate such as 1gbit}; shift 2 ;;
     --subnet) subnet=${2:?--subnet needs A.B.C}; shift 2 ;;
+    --keep-job) keep_job=(--mca orte_enable_recovery 1 --mca orte_abort_on_non_zero_status 0); shift ;;
     -h | --help) usage; exit 0 ;;
     --) shift; break ;;
     *) echo "cluster.sh: unknown option '$1' (--help lists them)" >&2; exit 2 ;;
@@ -114,7 +119,7 @@ export HWLOC_COMPONENTS=-gl
 mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca orte_tmpdir_base "$work" --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
-  --mca mpi_yield_when_idle 1)
+  --mca mpi_yield_when_idle 1 "${keep_job[@]}")
 echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
 # In the background and waited for: a signal to this script is then taken at once (bash runs a
 # trap only after a foreground command ends), and the cleanup ends the run on every host.

@@ -8,7 +8,10 @@
 #   3. pipeserver 2 killed, then stopped, on render-b: one line naming it with its host, exit
 #      non-zero, and nothing left running on any host;
 #   4. the coordinator (rank 0, on render-a) killed: every rank on the other hosts ends by
-#      itself (cluster.sh names any it had to kill), nothing left, no shared memory.
+#      itself (cluster.sh names any it had to kill), nothing left, no shared memory;
+#   5. --balance strips --survive-host-loss under an mpirun that keeps the job (--keep-job):
+#      pipeserver 2 killed on render-b, the run goes on over the other host's and says so, every
+#      frame rendered, nothing left running.
 # Exit 77 (skipped) where this machine cannot make network namespaces.
 # Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL
 set -euo pipefail
@@ -122,4 +125,39 @@ coordinator_killed() {
   nothing_left "$dir" "$pids"
 }
 coordinator_killed
+
+# 5. Pipeserver 2 (rank 3, on render-b) killed in a run that survives it: the default wall with
+# framebuffers that hold four pipeservers' tiles on three.
+survived() {
+  local dir=$out/survived run pid pids line
+  sed -e 's/framebuffer_width = 800/framebuffer_width = 1024/' \
+    -e 's/framebuffer_height = 600/framebuffer_height = 768/' "$(dirname "$0")/../../../walls/kd-2x2.toml" \
+    >"$out/roomy.toml"
+  bash "$cluster" --keep-job -- "$l2wall" run --mpi --wall "$out/roomy.toml" --balance strips \
+    --survive-host-loss --frames 60 --refresh 0 --stall-timeout 60000 --ready-timeout 5000 \
+    --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+  run=$!
+  for _ in $(seq 1200); do
+    [[ $(cat "$dir"/pipeserver-2.log 2>/dev/null | wc -l) -ge 5 ]] && break
+    sleep 0.05
+  done
+  pids=$(pgrep -f -- "$dir" || true)
+  pid=$(rank_pid "$dir" 3)
+  [[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
+  kill -s KILL "$pid"
+  # mpirun keeping the job exits 0 whatever the ranks did, 1 when l2wall ended it after the
+  # loss (it would wait for ever for the lost rank): the output says how the run went.
+  wait "$run" || true
+  line=$(grep -E "^l2wall: pipeserver 2 \(rank 3 on render-b, pid $pid\) is gone .* the run goes on without it" "$dir.err") ||
+    { echo "FAIL: no line naming pipeserver 2 on render-b gone, the run going on:"; cat "$dir.err"; exit 1; }
+  grep -q "^l2wall run: 60 frames on 4 displays" "$dir.out" ||
+    { echo "FAIL: not every frame rendered"; cat "$dir.out" "$dir.err"; exit 1; }
+  grep -E "^balance: lost pipeserver 2 \(rank 3 on render-b, pid $pid\)" "$dir.out" ||
+    { echo "FAIL: the summary does not name the loss"; cat "$dir.out"; exit 1; }
+  grep -q "^l2wall: --mpi: ending the job (SIGTERM to mpirun, pid [0-9]*)" "$dir.err" ||
+    { echo "FAIL: mpirun was not asked to end the job"; cat "$dir.err"; exit 1; }
+  echo "pipeserver 2 SIGKILL on render-b, survived: $line"
+  nothing_left "$dir" "$pids"
+}
+survived
 echo "nothing left running on any host"
