@@ -111,17 +111,21 @@ MpiSession::MpiSession(std::chrono::milliseconds start_timeout) {
 }
 
 MpiSession::~MpiSession() {
-  stop_watching();
-  // An end, not a death: the other end no longer takes this connection's close as a fault.
-  for (const Fd& fd : liveness_)
-    if (fd) send(fd.get(), "e", 1, MSG_NOSIGNAL);
-  liveness_.clear();
+  say_ended();
   // MPI_Finalize waits for every rank, and now and then for ever for one lost under an mpirun
   // that keeps the job (Open MPI 4.1): this rank's part is done, it ends as it would have.
   std::optional<Deadline> end;
   if (const auto launched = launched_rank(); launched && launched->keeps_job)
     end.emplace(kFinalizeTimeout, [] { std::_Exit(0); });
   MPI_Finalize();
+}
+
+void MpiSession::say_ended() {
+  stop_watching();
+  // An end, not a death: the other end no longer takes this connection's close as a fault.
+  for (const Fd& fd : liveness_)
+    if (fd) send(fd.get(), "e", 1, MSG_NOSIGNAL);
+  liveness_.clear();
 }
 
 void MpiSession::follow_coordinator(std::stop_token stop) {
@@ -379,6 +383,7 @@ std::string end_job() {
 
 void MpiSession::end_job_after_loss() {
   if (rank_ != 0 || lost_ranks().empty()) return;
+  say_ended();  // the ranks mpirun now ends take it as the coordinator's good end
   if (const std::string parent = end_job(); !parent.empty())
     std::fprintf(stderr,
                  "l2wall: --mpi: ending the job (SIGTERM to %s): Open MPI's mpirun does not end a "

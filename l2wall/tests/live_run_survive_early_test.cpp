@@ -95,28 +95,6 @@ std::string killed(int pipeserver, pid_t pid) {
   return fmt::format("pipeserver {} (pid {}) killed by signal 9 (Killed)", pipeserver, pid);
 }
 
-// Four 320x240 displays cut into 320x60 tiles for four pipeservers, their framebuffers 322 wide
-// (one tile a row, after its gap) and `height` high, written to DIR/`name`.
-constexpr int kGridFramebufferWidth = 322;
-std::string grid_wall(int height) {
-  return fmt::format(
-      "[display_grid]\ncolumns = 2\nrows = 2\nwidth = 320\nheight = 240\n"
-      "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 60\n"
-      "[pipeservers]\ncount = 4\nframebuffer_width = {}\nframebuffer_height = {}\n",
-      kGridFramebufferWidth, height);
-}
-
-// The grid wall at the framebuffer height tilelayout finds for `lost` losses, written to
-// DIR/`name`.
-fs::path grid_wall_surviving(const fs::path& dir, const std::string& name, int lost) {
-  const std::optional<int> height = survival_height(parse_wall(grid_wall(240), "grid.toml"), lost);
-  EXPECT_TRUE(height);
-  fs::create_directories(dir);
-  const fs::path file = dir / name;
-  std::ofstream(file) << grid_wall(height.value_or(240));
-  return file;
-}
-
 // Two of four lost on a wall whose framebuffers tilelayout says hold every tile on any two
 // pipeservers: the run goes on to its last frame, and the summary names both losses.
 TEST(LostTwo, IsSurvivedWhereTilelayoutSaysTwoLeftHoldEveryTile) {

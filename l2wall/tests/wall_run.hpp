@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -22,6 +23,7 @@
 #include "image/png_io.hpp"
 #include "l2wall/frame_stamp.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/survival.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2::testing_support {
@@ -192,6 +194,28 @@ inline fs::path write_roomy_default_wall(const fs::path& dir, const std::string&
   fs::create_directories(dir);
   const fs::path file = dir / "roomy-default.toml";
   std::ofstream(file) << text << extra;
+  return file;
+}
+
+// Four 320x240 displays cut into 320x60 tiles for four pipeservers, their framebuffers 322 wide
+// (one tile a row, after its gap) and `height` high, written to DIR/`name`.
+inline constexpr int kGridFramebufferWidth = 322;
+inline std::string grid_wall(int height) {
+  return fmt::format(
+      "[display_grid]\ncolumns = 2\nrows = 2\nwidth = 320\nheight = 240\n"
+      "[tiling]\nkind = \"grid\"\ntile_width = 320\ntile_height = 60\n"
+      "[pipeservers]\ncount = 4\nframebuffer_width = {}\nframebuffer_height = {}\n",
+      kGridFramebufferWidth, height);
+}
+
+// The grid wall at the framebuffer height tilelayout finds for `lost` losses, written to
+// DIR/`name`.
+inline fs::path grid_wall_surviving(const fs::path& dir, const std::string& name, int lost) {
+  const std::optional<int> height = survival_height(parse_wall(grid_wall(240), "grid.toml"), lost);
+  EXPECT_TRUE(height);
+  fs::create_directories(dir);
+  const fs::path file = dir / name;
+  std::ofstream(file) << grid_wall(height.value_or(240));
   return file;
 }
 

@@ -88,6 +88,8 @@ class MpiSession {
   // MPI_Abort ends only the rank that calls it, so a rank whose coordinator is gone without
   // its word of a good end (ended by a fault, killed) ends itself, rather than wait for ever.
   void follow_coordinator(std::stop_token stop);
+  // Stops watching and tells the other end(s) of the liveness connections of a good end.
+  void say_ended();
   // Takes in a rank found gone; true when its loss ends the run.
   bool note_lost(int rank);
   // Prints the line of a loss that ends the run, unless the run reported it.

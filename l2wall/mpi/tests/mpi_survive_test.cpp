@@ -1,10 +1,11 @@
 // `mpirun --mca orte_enable_recovery 1 --mca orte_abort_on_non_zero_status 0 ... l2wall run
 // --mpi --balance strips --survive-host-loss`: a pipeserver rank killed (SIGKILL) mid-run, or
-// before its first frame, no longer ends the run. The coordinator learns it from the rank's
-// liveness connection, the board column stops waiting for its frames, its tiles go to the others,
-// and the last frames' displays equal a static one-machine run's byte for byte, frame stamps
-// aside. With mpirun's default (the job ends with any rank) the option is refused, saying what
-// mpirun needs. Real mpirun over the TCP transport.
+// before its first frame, or two of them where the room allows, no longer ends the run; where
+// the others cannot hold its tiles the run ends saying so. The coordinator learns it from the
+// rank's liveness connection, the board column stops waiting for its frames, its tiles go to the
+// others, and the last frames' displays equal a static one-machine run's byte for byte, frame
+// stamps aside. With mpirun's default (the job ends with any rank) the option is refused, saying
+// what mpirun needs. Real mpirun over the TCP transport.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -12,6 +13,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <functional>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -98,11 +102,16 @@ struct Loss {
   int died_in = -1, first_without = -1, stale = -1;
 };
 
-Loss loss_said(const std::string& output, pid_t victim) {
-  const std::string gone = fmt::format(
+// The words naming pipeserver `pipeserver` (pid `pid`) gone, as a regex, up to the frame.
+std::string gone_words(int pipeserver, pid_t pid) {
+  return fmt::format(
       "pipeserver {} \\(rank \\d+ on [^,]+, pid {}\\) is gone \\(its connection to the "
       "coordinator closed: killed or crashed\\) while rendering frame ",
-      kVictim, victim);
+      pipeserver, pid);
+}
+
+Loss loss_said(const std::string& output, int pipeserver, pid_t victim) {
+  const std::string gone = gone_words(pipeserver, victim);
   EXPECT_TRUE(std::regex_search(output, std::regex("l2wall: " + gone +
                                                    "\\d+; the run goes on without it "
                                                    "\\(--survive-host-loss\\)")))
@@ -151,35 +160,61 @@ class MpiSurvive : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
+  // Runs `wall` under an mpirun that keeps the job.
+  void start(const fs::path& wall) {
+    survivor_.emplace("mpi-survive", surviving_args(wall), std::function<void(const fs::path&)>{},
+                      false, mpirun(base_, 6, true));
+  }
+  // SIGKILLs pipeserver `pipeserver`'s rank once it has joined the session and logged `frames`
+  // frames; its pid.
+  pid_t kill_at(int pipeserver, int frames) {
+    const pid_t victim = joined_pipeserver(*survivor_, pipeserver, frames);
+    EXPECT_GT(victim, 0) << survivor_->output();
+    if (victim > 0) {
+      EXPECT_EQ(kill(victim, SIGKILL), 0);
+    }
+    return victim;
+  }
+  // Waits for the end: mpirun ended by l2wall, no rank left. The output.
+  std::string finish() {
+    wait_keeping_job(*survivor_, base_);
+    const std::string output = survivor_->output();
+    expect_job_ended(output);
+    EXPECT_TRUE(ranks_running(*survivor_).empty());
+    return output;
+  }
+  // The default wall's run with pipeserver kVictim killed at `frames`: every frame rendered.
+  // What the run said of the loss.
+  Loss kill_victim_at(int frames) {
+    start(wall_);
+    const pid_t victim = kill_at(kVictim, frames);
+    const std::string output = finish();
+    EXPECT_NE(
+        output.find(fmt::format("l2wall run: {} frames on 4 displays from 4 pipeservers", kFrames)),
+        std::string::npos)
+        << output;
+    return loss_said(output, kVictim, victim);
+  }
+
   // The static one-machine run of the same frames: what the displays must show.
-  void expect_displays_as_static(const WallRun& survivor) {
+  void expect_displays_as_static() {
     std::vector<std::string> args = surviving_args(wall_);
     args.resize(args.size() - 4);  // no --mpi, no balancing
     WallRun fixed("mpi-survive-static", args);
     ASSERT_TRUE(fixed.wait(120s).ok()) << fixed.output();
     const Wall wall = load_wall(wall_);
-    expect_displays_equal_stamps_aside(fixed, plan_layout(wall), survivor,
-                                       layouts_of(survivor, wall), {kFrames - 2, kFrames - 1});
+    expect_displays_equal_stamps_aside(fixed, plan_layout(wall), *survivor_,
+                                       layouts_of(*survivor_, wall), {kFrames - 2, kFrames - 1});
   }
 
   fs::path dir_, wall_;
+  MpirunBase base_;
+  std::optional<WallRun> survivor_;
 };
 
 TEST_F(MpiSurvive, APipeserverRankKilledMidRunIsSurvivedWithTheDisplaysOfAStaticRun) {
-  const MpirunBase base;
-  WallRun survivor("mpi-survive", surviving_args(wall_), {}, false, mpirun(base, 6, true));
-  const pid_t victim = joined_pipeserver(survivor, kVictim, 3);
-  ASSERT_GT(victim, 0) << survivor.output();
-  ASSERT_EQ(kill(victim, SIGKILL), 0);
-  wait_keeping_job(survivor, base);
-  const std::string output = survivor.output();
-  EXPECT_NE(
-      output.find(fmt::format("l2wall run: {} frames on 4 displays from 4 pipeservers", kFrames)),
-      std::string::npos)
-      << output;
-  const Loss loss = loss_said(output, victim);
-  ASSERT_GE(loss.died_in, 3) << output;
-  expect_job_ended(output);
+  const Loss loss = kill_victim_at(3);
+  ASSERT_GE(loss.died_in, 3) << survivor_->output();
   std::printf(
       "pipeserver %d killed while rendering frame %d; its tiles elsewhere from frame %d; "
       "%d frames stale\n",
@@ -187,29 +222,18 @@ TEST_F(MpiSurvive, APipeserverRankKilledMidRunIsSurvivedWithTheDisplaysOfAStatic
   EXPECT_LE(loss.stale, 3);
   EXPECT_EQ(loss.stale, loss.first_without - loss.died_in);
   ASSERT_LE(loss.first_without, kFrames - 3) << "killed too late to see the displays recover";
+  const std::string output = survivor_->output();
   EXPECT_NE(output.find("balance: 0 of "), std::string::npos) << output;  // no mixed swap
   EXPECT_NE(output.find("swap lock: every display"), std::string::npos) << output;
-  expect_layouts_without_victim(survivor, loss.first_without);
-  EXPECT_TRUE(ranks_running(survivor).empty());
-  expect_displays_as_static(survivor);
+  expect_layouts_without_victim(*survivor_, loss.first_without);
+  expect_displays_as_static();
 }
 
 // Killed once it has joined the session, before its first frame reached anyone: the run waits
 // for the others' first frames only.
 TEST_F(MpiSurvive, APipeserverRankKilledBeforeItsFirstFrameIsSurvived) {
-  const MpirunBase base;
-  WallRun survivor("mpi-survive-0", surviving_args(wall_), {}, false, mpirun(base, 6, true));
-  const pid_t victim = joined_pipeserver(survivor, kVictim, 0);
-  ASSERT_GT(victim, 0) << survivor.output();
-  ASSERT_EQ(kill(victim, SIGKILL), 0);
-  wait_keeping_job(survivor, base);
-  const std::string output = survivor.output();
-  EXPECT_NE(
-      output.find(fmt::format("l2wall run: {} frames on 4 displays from 4 pipeservers", kFrames)),
-      std::string::npos)
-      << output;
-  const Loss loss = loss_said(output, victim);
-  expect_job_ended(output);
+  const Loss loss = kill_victim_at(0);
+  const std::string output = survivor_->output();
   // Its first frame may have gone out between the look at its log and the kill.
   EXPECT_GE(loss.died_in, 0) << output;
   EXPECT_LE(loss.died_in, 1) << output;
@@ -220,9 +244,39 @@ TEST_F(MpiSurvive, APipeserverRankKilledBeforeItsFirstFrameIsSurvived) {
         << output;
   }
   EXPECT_LE(loss.first_without, 3) << output;
-  expect_layouts_without_victim(survivor, loss.first_without);
-  EXPECT_TRUE(ranks_running(survivor).empty());
-  expect_displays_as_static(survivor);
+  expect_layouts_without_victim(*survivor_, loss.first_without);
+  expect_displays_as_static();
+}
+
+// Two of four lost where tilelayout says two framebuffers hold every tile: the run goes on to
+// its last frame, naming both.
+TEST_F(MpiSurvive, TwoRanksLostAreSurvivedWhereTwoFramebuffersHoldEveryTile) {
+  start(grid_wall_surviving(dir_, "two.toml", 2));
+  const pid_t first = kill_at(1, 3);
+  const pid_t second = kill_at(2, 6);
+  const std::string output = finish();
+  EXPECT_NE(output.find(fmt::format("l2wall run: {} frames", kFrames)), std::string::npos)
+      << output;
+  EXPECT_GE(loss_said(output, 1, first).died_in, 3) << output;
+  EXPECT_GE(loss_said(output, 2, second).died_in, 6) << output;
+}
+
+// On a wall whose other framebuffers cannot hold the lost one's tiles the run ends, saying so
+// in one line; mpirun is ended too (its MPI_Abort ends only the coordinator).
+TEST_F(MpiSurvive, ALossTheOthersCannotHoldEndsTheRunSayingSo) {
+  const fs::path wall = dir_ / "none.toml";  // tilelayout: survives the loss of no pipeserver
+  std::ofstream(wall) << grid_wall(240);
+  start(wall);
+  const pid_t victim = kill_at(1, 3);
+  wait_keeping_job(*survivor_, base_);
+  const std::string output = survivor_->output();
+  EXPECT_TRUE(std::regex_search(
+      output, std::regex("\nl2wall: " + gone_words(1, victim) +
+                         "\\d+, and the run cannot go on without it: the other pipeservers' "
+                         "framebuffers cannot hold pipeserver 1's tiles: [^\n]*does not fit")))
+      << output;
+  EXPECT_EQ(output.find("l2wall run: 40 frames"), std::string::npos) << output;
+  EXPECT_TRUE(ranks_running(*survivor_).empty());
 }
 
 // mpirun's default ends the job with any rank: refused before anything runs, saying what mpirun
