@@ -392,7 +392,12 @@ void MpiSession::end_job_after_loss() {
 }
 
 void MpiSession::abort_all(int code) {
-  end_job();
+  // Another rank's MPI_Abort ends only itself: the coordinator then finds it gone, names it and
+  // ends the job. Its own line must reach mpirun first, which ending its daemon could prevent.
+  if (const auto launched = launched_rank(); launched && launched->rank == 0) {
+    std::fflush(stderr);
+    end_job();
+  }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
 }

@@ -67,8 +67,8 @@ class MpiSession {
   bool gone(int rank);
 
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
-  // an mpirun that keeps the job, where MPI_Abort ends only its caller, mpirun is asked to end
-  // the job too (end_job()).
+  // an mpirun that keeps the job, where MPI_Abort ends only its caller, the coordinator asks
+  // mpirun to end the job too.
   [[noreturn]] static void abort_all(int code);
   // Rank 0, after a run that went on without a lost rank under an mpirun that keeps the job:
   // Open MPI 4.1's mpirun, and the daemon of the lost rank's host, never count that rank as
