@@ -173,6 +173,7 @@ void MpiDviReceiver::take(std::uint64_t sequence, const std::function<void()>& w
 }
 
 void MpiDviReceiver::lose() {
+  if (lost_) return;
   lost_ = true;
   if (request_ != MPI_REQUEST_NULL) {
     // Not waited for: a frame its sender died sending would never end the wait. Its buffer is

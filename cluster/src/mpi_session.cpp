@@ -386,7 +386,7 @@ void MpiSession::end_job_after_loss() {
   say_ended();  // the ranks mpirun now ends take it as the coordinator's good end
   if (const std::string parent = end_job(); !parent.empty())
     std::fprintf(stderr,
-                 "l2wall: --mpi: ending the job (SIGTERM to %s): Open MPI's mpirun does not end a "
+                 "l2wall: --mpi: ending the job (SIGTERM to %s): Open MPI's mpirun may not end a "
                  "job that lost a rank by itself; every rank's part is done\n",
                  parent.c_str());
 }

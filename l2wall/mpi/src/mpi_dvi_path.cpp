@@ -278,8 +278,8 @@ bool MpiDviPath::down() {
 }
 
 void MpiDviPath::tell_columns_lost(int pipeserver) {
-  if (std::find(told_.begin(), told_.end(), pipeserver) != told_.end()) return;
-  told_.push_back(pipeserver);
+  if (std::find(gone_.begin(), gone_.end(), pipeserver) != gone_.end()) return;
+  gone_.push_back(pipeserver);
   // At once, not at the next tick: a column may be waiting for a frame the pipeserver died
   // sending, and this process for that column's answer.
   for (int c = 0; c < map_.columns; ++c)

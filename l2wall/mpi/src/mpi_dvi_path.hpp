@@ -66,19 +66,16 @@ class MpiDviPath final : public DisplayPath {
   // share a layout. The columns do not count the strips they route, so neither does this.
   void follow_layouts(LiveBalance& balance, PipeserverSet&) override;
   // --survive-host-loss: its rank's input carries no signal from the next refresh on
-  // (mpi_wire::kNoSignal in the tick), and the run's end does not wait for it. Losing the
-  // signal is news, as a new frame is: a group it held up may complete now, and at full speed
-  // (--refresh 0) only news starts a refresh.
-  void lose_pipeserver(int pipeserver) override {
-    gone_.push_back(pipeserver);
-    unseen_ = true;
-  }
+  // (mpi_wire::kNoSignal in the tick). Losing the signal is news, as a new frame is: a group it
+  // held up may complete now, and at full speed (--refresh 0) only news starts a refresh.
+  void lose_pipeserver(int) override { unseen_ = true; }
 
  private:
   void check_groups_for_balance(const PipeserverSet& pipeservers);
   // Whether the run goes on when `rank` is gone: a pipeserver's, under --survive-host-loss.
   bool survived(int rank) const;
-  // Says to every column, once, that `pipeserver`'s rank is gone (mpi_wire::kLost).
+  // Says to every column, once, that `pipeserver`'s rank is gone (mpi_wire::kLost); the run's
+  // end does not wait for it either.
   void tell_columns_lost(int pipeserver);
   // Takes in every pipeserver's notices of frames published; true when one is new.
   bool take_notices(PipeserverSet& pipeservers);
@@ -104,8 +101,7 @@ class MpiDviPath final : public DisplayPath {
   MpiSession& session_;
   int stall_timeout_ms_;
   bool survive_;             // --survive-host-loss
-  std::vector<int> gone_;    // pipeservers lost, the run going on without them
-  std::vector<int> told_;    // pipeservers whose loss the columns were told of
+  std::vector<int> gone_;    // pipeservers whose rank is gone, survived: the columns were told
   std::optional<int> lost_;  // a rank that is gone, ending the run
   int stuck_ = -1;           // a column rank that stopped answering
   RefreshClock clock_;

@@ -46,28 +46,10 @@ std::vector<pid_t> ranks_running(const WallRun& run) {
 }
 
 // Waits for the run under an mpirun that keeps the job, whose exit status says little (Open
-// MPI 4.1 then exits 0 whatever its ranks did, 1 when l2wall ended it after a loss): what
-// matters is the output. Once every rank has ended, an mpirun that has not ended 15 s later
-// hangs in its own teardown (Open MPI 4.1, as mpi_fault_test.sh meets): killed and said in one
-// line, and the test goes on.
+// MPI 4.1 then exits 0 whatever its ranks did, 1 when l2wall ended it): what matters is the
+// output. mpirun must end: after a loss l2wall ends it, since it may not end by itself.
 void wait_keeping_job(WallRun& run, const MpirunBase& base) {
-  const auto deadline = std::chrono::steady_clock::now() + 180s;
-  std::optional<std::chrono::steady_clock::time_point> ranks_gone;
-  while (!run.ended()) {
-    const auto now = std::chrono::steady_clock::now();
-    ASSERT_LT(now, deadline) << "the run did not end within 180 s\n" << run.output();
-    if (!ranks_running(run).empty()) {
-      ranks_gone.reset();
-    } else if (!ranks_gone) {
-      ranks_gone = now;
-    } else if (now - *ranks_gone > 15s) {
-      std::printf("(mpirun %d hung after every rank had ended: killed)\n", run.pid());
-      kill(run.pid(), SIGKILL);
-      break;
-    }
-    std::this_thread::sleep_for(50ms);
-  }
-  wait_mpirun(run, base, 10s);
+  wait_mpirun(run, base, 180s);
 }
 
 // Its pid once pipeserver `pipeserver` has joined the MPI session (its log is opened after)
@@ -133,7 +115,7 @@ Loss loss_said(const std::string& output, int pipeserver, pid_t victim) {
 void expect_job_ended(const std::string& output) {
   EXPECT_TRUE(std::regex_search(
       output, std::regex("\nl2wall: --mpi: ending the job \\(SIGTERM to mpirun, pid \\d+\\): Open "
-                         "MPI's mpirun does not end a job that lost a rank by itself; every "
+                         "MPI's mpirun may not end a job that lost a rank by itself; every "
                          "rank's part is done\n")))
       << output;
 }
