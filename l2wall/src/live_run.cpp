@@ -747,7 +747,9 @@ class LiveRun {
     for (const LivePipeserver& h : pipeservers_.all()) totals_.lost.push_back(h.lost);
     std::vector<std::string> pipeserver_logs;
     for (const LivePipeserver& h : pipeservers_.all()) pipeserver_logs.push_back(h.report_path);
-    const std::string extra = (show_ ? show_->summary(shown_) : std::string()) +
+    std::string paths_said;
+    for (const auto& p : paths_) paths_said += p->summary_lines();
+    const std::string extra = paths_said + (show_ ? show_->summary(shown_) : std::string()) +
                               (page_ ? steering_.summary() : std::string()) +
                               (balance_ ? balance_->summary() : std::string()) +
                               (windows_ ? windows_->summary() : std::string()) +

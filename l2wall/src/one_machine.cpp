@@ -1,10 +1,12 @@
 // The one-machine backends of a live run: pipeserver child processes on shared-memory DVI links
-// and pty back-channels, this process the Lightning-2 (DviPath), the compositing server as a
-// child process (VizPath). The MPI backends are beside it in mpi/src/mpi_run.cpp.
+// and pty back-channels, this process the Lightning-2 (DviPath over LocalColumns), the
+// compositing server as a child process (VizPath). The MPI backends are beside it in
+// mpi/src/mpi_run.cpp.
 #include <memory>
 
-#include "dvi_path.hpp"
+#include "l2wall/dvi_path.hpp"
 #include "l2wall/run_backends.hpp"
+#include "local_columns.hpp"
 #include "viz_path.hpp"
 
 namespace l2 {
@@ -14,8 +16,9 @@ class OneMachine final : public RunBackends {
  public:
   std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                         const RunOptions& o) const override {
-    return std::make_unique<DviPath>(layout.wall, o.threads, layout.pipeservers.size(),
-                                     o.refresh_hz, o.frames, o.drop_ready);
+    return std::make_unique<DviPath>(
+        layout, o,
+        std::make_unique<LocalColumns>(layout.wall, o.threads, layout.pipeservers.size()));
   }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
     return std::make_unique<VizPath>(launch);

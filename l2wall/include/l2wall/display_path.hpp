@@ -1,9 +1,9 @@
 // A display path of the live run: how the pipeservers' frames become what the displays show.
-// Two implementations sit beside each other: the DVI path (dvi_path.hpp: this process is the
-// emulated Lightning-2) and the viz path (viz_path.hpp: a compositing server
-// process). The live run drives one path as the lead, whose swaps are the run's frames, and
-// with --path both a second one beside it, whose frames it takes and compares; it talks to
-// this interface only.
+// Two implementations sit beside each other: the DVI path (dvi_path.hpp: the emulated
+// Lightning-2, its board columns in this process or over MPI) and the viz path (viz_path.hpp: a
+// compositing server process; mpi/src/mpi_viz_path.hpp: the column ranks composite). The live run
+// drives one path as the lead, whose swaps are the run's frames, and with --path both a second one
+// beside it, whose frames it takes and compares; it talks to this interface only.
 #pragma once
 
 #include <chrono>
@@ -104,6 +104,9 @@ class DisplayPath {
   virtual void shut_down() {}
   // Its counts for the report.
   virtual void add_totals(RunTotals& totals) const = 0;
+  // Lines of its own for the summary (what it proved, what crossed the network), each ending in
+  // a newline; empty when it has none.
+  virtual std::string summary_lines() const { return {}; }
   // A balanced run: the lead path serves the control channels while it waits for frames (the
   // pipeservers wait for each frame's layout), and checks its swaps against the layouts where it
   // can. The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.

@@ -91,4 +91,21 @@ Observation decode_observation(const Record& record) {
   return o;
 }
 
+Record encode(const ColumnRoute& route) {
+  Record r{mpi_wire::kRoute, static_cast<std::int64_t>(route.route.size())};
+  r.insert(r.end(), route.route.begin(), route.route.end());
+  r.push_back(static_cast<std::int64_t>(route.completed_groups.size()));
+  r.insert(r.end(), route.completed_groups.begin(), route.completed_groups.end());
+  return r;
+}
+
+ColumnRoute decode_route(Reader& in) {
+  ColumnRoute route;
+  route.route.resize(in.count(1));
+  for (std::uint8_t& c : route.route) c = static_cast<std::uint8_t>(in.next() != 0);
+  route.completed_groups.resize(in.count(1));
+  for (int& g : route.completed_groups) g = in.next_int();
+  return route;
+}
+
 }  // namespace l2

@@ -15,10 +15,7 @@
 #include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
 #include "column_show.hpp"
-#include "l2wall/frame_stamp.hpp"
-#include "lightning2_emu/router.hpp"
-#include "lightning2_emu/swap_group.hpp"
-#include "lightning2_emu/wall_emulator.hpp"
+#include "l2wall/board_column.hpp"
 #include "vizserver/frame_assembler.hpp"
 #include "vizserver/tile_delta.hpp"
 
@@ -31,8 +28,6 @@ using mpi_wire::Record;
 struct ColumnInput {
   int pipeserver = 0;
   std::unique_ptr<MpiDviReceiver> receiver;
-  int stamp = -1;              // the frame stamp of the frame taken in
-  std::uint64_t sequence = 0;  // the frame taken in
 };
 
 class Column {
@@ -42,17 +37,14 @@ class Column {
       : layout_(layout),
         map_(map),
         pool_(o.threads),
-        router_(wall_mesh(layout.wall), display_specs(layout.wall, map.displays_of_column[column]),
-                pool_),
+        // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be
+        // a second round trip to the coordinator.
+        column_(layout.wall, map.displays_of_column[static_cast<std::size_t>(column)],
+                map.pipeservers_of_column[static_cast<std::size_t>(column)], pool_,
+                /*predict=*/false),
         frames_(static_cast<std::size_t>(map.mesh_inputs)),
-        back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
-        done_frame_(back_frame_),
-        shown_frame_(back_frame_),
         show_(show) {
-    // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be a
-    // second round trip to the coordinator.
-    router_.predict_layouts(false);
-    for (const int s : map.pipeservers_of_column[column]) {
+    for (const int s : map.pipeservers_of_column[static_cast<std::size_t>(column)]) {
       const PipeserverPlan& plan = layout.pipeservers[static_cast<std::size_t>(s)];
       inputs_.push_back({s, std::make_unique<MpiDviReceiver>(map.pipeserver_rank(s), plan.fb_width,
                                                              plan.fb_height)});
@@ -64,12 +56,6 @@ class Column {
       for (int s = 0; s < map.pipeservers; ++s) {
         if (const Status joined = assembler_->connect(s); !joined.ok())
           throw std::runtime_error(joined.reason());
-      }
-    }
-    for (const SwapGroup& g : make_swap_groups(display_specs(layout.wall))) {
-      std::vector<int>& own = group_indices_.emplace_back();
-      for (const int id : g.displays) {
-        if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
       }
     }
   }
@@ -101,105 +87,38 @@ class Column {
   }
 
  private:
+  // The groups swap, each input's frame of the tick is taken in (waiting for it), and what the
+  // column saw goes to the coordinator.
   void tick(Reader& in) {
-    Tick tick = decode_tick(in);
-    bool swapped = false;
-    for (const int group : tick.swapped_groups) {
-      if (group < 0 || static_cast<std::size_t>(group) >= group_indices_.size())
-        throw std::runtime_error(fmt::format("the coordinator swapped group {}", group));
-      for (const int index : group_indices_[static_cast<std::size_t>(group)]) {
-        router_.display(index).swap();
-        shown_frame_[static_cast<std::size_t>(index)] =
-            done_frame_[static_cast<std::size_t>(index)];
-        swapped = true;
-      }
-    }
-    if (swapped && show_) present();
-    const std::vector<std::uint64_t>& sequences = tick.sequences;
-    spots_ = std::move(tick.stamps);
+    const Tick tick = decode_tick(in);
+    if (column_.swap(tick.swapped_groups) && show_) present();
     for (ColumnInput& input : inputs_) {
       const auto p = static_cast<std::size_t>(input.pipeserver);
-      if (p >= sequences.size())
+      if (p >= tick.sequences.size())
         throw std::runtime_error(fmt::format("the coordinator's tick has no pipeserver {}", p));
       InputFrame& frame = frames_[p];
       frame = {};
-      if (sequences[p] == mpi_wire::kNoSignal) input.receiver->lose();  // its pipeserver is lost
+      if (tick.sequences[p] == kNoSignal) input.receiver->lose();  // its pipeserver is lost
       if (input.receiver->lost()) continue;
-      input.receiver->take(sequences[p], pump_);
-      const auto f = input.receiver->latest();
-      if (!f) continue;
-      frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
-      // The spot is the new frame's: an input with none keeps the stamp it had.
-      if (sequences[p] != input.sequence && p < spots_.size()) {
-        input.sequence = sequences[p];
-        const StampSpot& next = spots_[p].next;
-        if (next.fb_x >= 0 && next.fb_y >= 0 && next.fb_x < f->width && next.fb_y < f->height)
-          input.stamp = decode_stamp(frame.row(next.fb_y) + next.fb_x * 3);
-      }
+      input.receiver->take(tick.sequences[p], pump_);
+      if (const auto f = input.receiver->latest())
+        frame = {f->pixels, static_cast<std::ptrdiff_t>(f->stride), f->width, f->height, 3};
     }
-    router_.scan(frames_);
-    mpi_wire::send(encode(observation(tick.refresh)), RankMap::kCoordinator,
+    column_.scan(frames_, tick);
+    mpi_wire::send(encode(column_.observe(tick.refresh)), RankMap::kCoordinator,
                    mpi_wire::kObservation);
   }
 
   void present() {
-    show_->present(*std::min_element(shown_frame_.begin(), shown_frame_.end()),
-                   [this](int id) -> const RgbImage& {
-                     return router_.display(router_.index_of_display(id)).front();
-                   });
+    show_->present(column_.lowest_frame_shown(),
+                   [this](int id) -> const RgbImage& { return column_.shown(id); });
   }
 
-  Observation observation(std::int64_t refresh) const {
-    Observation o;
-    o.refresh = refresh;
-    for (const ColumnInput& input : inputs_) {
-      const InputFrameStats& st = router_.scanned(input.pipeserver);
-      o.inputs.push_back({input.pipeserver, st.present, st.idle(), st.torn(), st.parity(),
-                          st.displays_fed, input.stamp});
-    }
-    // A spot on another column's display (or off this one) is not read here.
-    const auto read = [&](const StampSpot& s) -> int {
-      const int index = router_.index_of_display(s.display);
-      if (index < 0) return mpi_wire::kStampNotHere;
-      const RgbImage& front = router_.display(index).front();
-      if (s.dx < 0 || s.dy < 0 || s.dx >= front.width() || s.dy >= front.height())
-        return mpi_wire::kStampNotHere;
-      return decode_stamp(front.row(s.dy).data() + s.dx * 3);
-    };
-    for (std::size_t p = 0; p < spots_.size(); ++p) {
-      const StampsShown shown{static_cast<int>(p), read(spots_[p].last), read(spots_[p].before)};
-      if (shown.last != mpi_wire::kStampNotHere || shown.before != mpi_wire::kStampNotHere)
-        o.stamps.push_back(shown);
-    }
-    for (int d = 0; d < router_.display_count(); ++d)
-      o.displays.push_back({router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)], 0});
-    return o;
-  }
-
-  // [kRoute, n, route per mesh input..., n, completed group indices...]
+  // The route the coordinator chose: the inputs written, the groups completed.
   void route(Reader& in) {
-    std::vector<std::uint8_t> chosen(static_cast<std::size_t>(in.next_int()));
-    for (auto& c : chosen) c = static_cast<std::uint8_t>(in.next());
-    router_.write(chosen);
-    // The frame a display's next picture holds: the newest stamp routed into it.
-    for (const ColumnInput& input : inputs_) {
-      if (!chosen[static_cast<std::size_t>(input.pipeserver)]) continue;
-      const std::uint64_t fed = router_.scanned(input.pipeserver).displays_fed;
-      for (int d = 0; d < router_.display_count(); ++d) {
-        if (fed >> router_.display(d).id() & 1) {
-          int& f = back_frame_[static_cast<std::size_t>(d)];
-          f = std::max(f, input.stamp);
-        }
-      }
-    }
-    for (int n = in.next_int(); n > 0; --n) {
-      const std::vector<int>& own = group_indices_[static_cast<std::size_t>(in.next_int())];
-      router_.finish(own, finished_);
-      for (const int index : own) {
-        done_frame_[static_cast<std::size_t>(index)] = back_frame_[static_cast<std::size_t>(index)];
-        back_frame_[static_cast<std::size_t>(index)] = -1;
-      }
-    }
+    const ColumnRoute route = decode_route(in);
+    column_.write([&] { return std::span<const std::uint8_t>(route.route); });
+    column_.complete(route.completed_groups);
   }
 
   // What the coordinator says at any time: a pipeserver lost (its frame being waited for may
@@ -274,7 +193,8 @@ class Column {
                      mpi_wire::kComposed);
       // Only this column's displays are kept (the assembler composes every display's image).
       for (std::size_t i = 0; i < f.displays.size(); ++i) {
-        if (router_.index_of_display(layout_.wall.displays[i].id) < 0) f.displays[i] = RgbImage();
+        if (column_.router().index_of_display(layout_.wall.displays[i].id) < 0)
+          f.displays[i] = RgbImage();
       }
       composed_[f.frame] = std::move(f.displays);
       while (composed_.size() > 4) composed_.erase(composed_.begin());  // the run takes each
@@ -286,7 +206,7 @@ class Column {
     if (it == composed_.end()) throw std::runtime_error("asked for a frame not composed here");
     for (std::size_t i = 0; i < layout_.wall.displays.size(); ++i) {
       const int id = layout_.wall.displays[i].id;
-      if (router_.index_of_display(id) < 0) continue;  // another column's
+      if (column_.router().index_of_display(id) < 0) continue;  // another column's
       const RgbImage& picture = it->second[i];
       MPI_Send(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
                RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
@@ -294,8 +214,8 @@ class Column {
   }
 
   void send_pictures() {
-    for (int d = 0; d < router_.display_count(); ++d) {
-      const RgbImage& front = router_.display(d).front();
+    for (int d = 0; d < column_.router().display_count(); ++d) {
+      const RgbImage& front = column_.router().display(d).front();
       MPI_Send(front.data(), static_cast<int>(front.bytes().size()), MPI_BYTE,
                RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
     }
@@ -304,14 +224,10 @@ class Column {
   const TileLayout& layout_;
   const RankMap& map_;
   WorkerPool pool_;
-  Router router_;
+  BoardColumn column_;
   std::vector<ColumnInput> inputs_;
-  std::vector<PipeserverStamps> spots_;  // by pipeserver, this refresh's (the coordinator's tick)
-  std::vector<InputFrame> frames_;       // by mesh input; absent: no signal here
-  std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices
-  std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
-  std::vector<DisplayFrameStats> finished_;
-  std::optional<viz::FrameAssembler> assembler_;             // the viz path
+  std::vector<InputFrame> frames_;                // by mesh input; absent: no signal here
+  std::optional<viz::FrameAssembler> assembler_;  // the viz path
   std::map<std::uint32_t, std::vector<RgbImage>> composed_;  // by frame: every display
   std::vector<std::uint8_t> tile_bytes_;
   std::map<int, viz::TileDeltaDecoder> tile_deltas_;  // by pipeserver: its TILE_DELTA tiles

@@ -16,9 +16,10 @@
 #include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
 #include "image/folders.hpp"
+#include "l2wall/dvi_path.hpp"
 #include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
-#include "mpi_dvi_path.hpp"
+#include "mpi_columns.hpp"
 #include "mpi_viz_path.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -43,7 +44,8 @@ class MpiBackends final : public RunBackends {
 
   std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                         const RunOptions& o) const override {
-    return std::make_unique<MpiDviPath>(layout, map_, session_, o);
+    return std::make_unique<DviPath>(layout, o,
+                                     std::make_unique<MpiColumns>(layout, map_, session_, o));
   }
   bool stops_pipeservers_early() const override { return false; }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {

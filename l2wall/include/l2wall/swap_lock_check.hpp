@@ -1,6 +1,6 @@
-// The proof of swap lock across machines: in every refresh, every display of a swap-lock
-// group shows the same frame, whichever board column (rank) holds it. Columns record per
-// refresh the frame stamp each of their displays shows; this checks one refresh's records.
+// The proof of swap lock: in every refresh, every display of a swap-lock group shows the same
+// frame, whichever board column (rank) holds it. Columns record per refresh the frame stamp each
+// of their displays shows; this checks one refresh's records.
 // Pure logic, so a violation can be fed to it directly.
 #pragma once
 
@@ -11,16 +11,10 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "l2wall/column_records.hpp"
 #include "lightning2_emu/swap_group.hpp"
 
 namespace l2 {
-
-struct DisplayShown {
-  int display = 0;  // id
-  int frame = -1;   // the frame stamp it shows; -1: no frame yet (background only)
-  int rank = 0;     // the column rank that holds it
-  bool operator==(const DisplayShown&) const = default;
-};
 
 class SwapLockCheck {
  public:

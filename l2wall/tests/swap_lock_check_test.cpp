@@ -1,6 +1,6 @@
 // The swap-lock check, fed records directly: one refresh in lock passes, one display a frame
 // behind its group is named with refresh, group, display and rank.
-#include "swap_lock_check.hpp"
+#include "l2wall/swap_lock_check.hpp"
 
 #include <gtest/gtest.h>
 

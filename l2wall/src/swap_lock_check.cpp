@@ -1,4 +1,4 @@
-#include "swap_lock_check.hpp"
+#include "l2wall/swap_lock_check.hpp"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,117 @@
+// The DVI path as a display path (display_path.hpp), written once for every backend: the
+// emulated Lightning-2 paced by its refresh clock. At each refresh it tells the board columns
+// (board_columns.hpp: in this process, or column ranks over MPI) which groups swap and which
+// frame each input carries, decides from what they saw which inputs are routed and which groups
+// complete (the §6 frame sequencer), sends READY in the refresh a frame completed (spec §6.4),
+// and reads from the stamps on the displays which frame they show.
+//
+// Owns: the frame sequencer, the refresh clock, READY, the balance hooks (the control channels
+// served while stepping, every swap checked against the layouts), the frame-shown rule and the
+// swap-lock check. It may not touch pixels or the transport: the columns route, and say what
+// they saw.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "dvi_link/refresh_clock.hpp"
+#include "l2wall/board_columns.hpp"
+#include "l2wall/display_path.hpp"
+#include "l2wall/live_run.hpp"
+#include "l2wall/swap_lock_check.hpp"
+#include "lightning2_emu/frame_sequencer.hpp"
+#include "tilelayout/tile_layout.hpp"
+
+namespace l2 {
+
+// The frame pipeserver's stamps on the displays say it shows, its last frame being `last`:
+// `last` if its stamp says so, else the one before if its stamp says so, else whatever the last
+// frame's spot shows (a balanced run may have moved the stamp between them). `seen_last`,
+// `seen_before`: the stamps read at the spots of `last` and `last` - 1, kStampNotHere where no
+// column holds them. Nullopt when neither spot was read.
+std::optional<int> shown_by_stamps(int last, int seen_last, int seen_before);
+
+class DviPath final : public DisplayPath {
+ public:
+  DviPath(const TileLayout& layout, const RunOptions& options,
+          std::unique_ptr<BoardColumns> columns);
+
+  std::string label() const override { return "dvi"; }
+  std::string name() const override { return "DVI path"; }
+  void add_pipeserver_args(PipeserverLaunch& launch) const override { launch.dvi = true; }
+  void open(PipeserverSet& pipeservers, std::chrono::milliseconds timeout,
+            const RunWatch& watch) override;
+
+  bool refreshed() const override { return true; }
+  std::optional<PathSwap> step(int next, PipeserverSet& pipeservers,
+                               std::vector<FrameRecord>& records, const RunWatch& watch) override;
+  std::string pipeservers_wait_for() const override { return "READY"; }
+  std::uint64_t inject_noise(PipeserverSet& pipeservers) override {
+    return pipeservers.inject_noise();
+  }
+
+  DisplayPictures frame_pictures(int, const RunWatch&) override { return columns_->pictures(); }
+  std::optional<DisplayPictures> shown() const override { return columns_->shown(); }
+  int frame_shown() const override { return shown_; }
+
+  bool down() override { return columns_->gone().has_value(); }
+  Status failure_as_cause(int, const std::string&) override;
+  Status failure(int shown, const std::string& showing) override {
+    return failure_as_cause(shown, showing);
+  }
+
+  void finish() override;
+  void shut_down() override { columns_->shut_down(); }
+  void add_totals(RunTotals& totals) const override;
+  std::string summary_lines() const override;
+  void follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) override;
+  // Losing a signal is news, as a new frame is: a group it held up may complete now, and at
+  // full speed (--refresh 0) only news starts a refresh.
+  void lose_pipeserver(int pipeserver) override {
+    columns_->lose(pipeserver);
+    unseen_ = true;
+  }
+
+ private:
+  // One refresh over the columns: the tick, their observations, the sequencer's decision.
+  void refresh(PipeserverSet& pipeservers);
+  Tick make_tick(std::int64_t index, const PipeserverSet& pipeservers);
+  // What every column saw, by mesh input and by pipeserver; throws RunFault for an observation
+  // naming a pipeserver the wall lacks.
+  void take(std::span<const Observation> seen, const PipeserverSet& pipeservers);
+  const ColumnRoute& decide(std::span<const Observation> seen, const PipeserverSet& pipeservers);
+  // After a refresh that swapped: the frame the displays keep.
+  void note_swap();
+  std::uint64_t groups_of_displays(std::uint64_t displays) const;
+  void count_for_balance(PipeserverSet& pipeservers);
+  void check_groups_for_balance(const PipeserverSet& pipeservers);
+
+  std::unique_ptr<BoardColumns> columns_;
+  RefreshClock clock_;
+  double refresh_hz_;
+  int frames_;
+  int drop_ready_;
+  std::vector<SwapGroup> groups_;
+  std::map<int, int> group_of_display_;  // display id -> group index
+  FrameSequencer sequencer_;
+  SwapLockCheck lock_check_;
+  // This refresh: what the sequencer decided, and what the columns saw.
+  std::vector<int> swapped_;
+  FrameSequencer::Decision decision_;
+  ColumnRoute route_;
+  std::vector<FrameObservation> observations_;  // by mesh input
+  std::vector<int> stamps_;                     // by mesh input: the frame taken in
+  std::vector<int> stamp_shown_;                // by pipeserver: the frame its stamp shows
+  std::vector<int> accepted_;                   // by pipeserver: its last frame, as of the tick
+  std::vector<DisplayShown> displays_shown_;
+  LiveBalance* balance_ = nullptr;  // a balanced run's coordinator
+  std::uint64_t refreshes_ = 0;
+  std::uint64_t dropped_readies_ = 0;
+  bool swap_due_ = false;
+  bool unseen_ = false;    // news no refresh has taken in yet (first frames, a signal lost)
+  bool finished_ = false;  // every frame shown and the columns ended well
+  int shown_ = -1;         // the frame the displays show
+};
+
+}  // namespace l2

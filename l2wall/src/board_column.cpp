@@ -1,0 +1,127 @@
+#include "l2wall/board_column.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "lightning2_emu/swap_group.hpp"
+#include "lightning2_emu/wall_emulator.hpp"
+
+namespace l2 {
+
+BoardColumn::BoardColumn(const Wall& wall, std::span<const int> display_ids,
+                         std::vector<int> pipeservers, WorkerPool& pool, bool predict)
+    : router_(wall_mesh(wall), display_specs(wall, display_ids), pool),
+      pipeservers_(std::move(pipeservers)),
+      stamps_(static_cast<std::size_t>(router_.mesh().input_count()), -1),
+      sequences_(stamps_.size(), 0),
+      back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
+      done_frame_(back_frame_),
+      shown_frame_(back_frame_) {
+  router_.predict_layouts(predict);
+  for (const SwapGroup& g : make_swap_groups(display_specs(wall))) {
+    std::vector<int>& own = group_indices_.emplace_back();
+    for (const int id : g.displays) {
+      if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
+    }
+  }
+}
+
+bool BoardColumn::swap(std::span<const int> groups) {
+  bool swapped = false;
+  for (const int group : groups) {
+    if (group < 0 || static_cast<std::size_t>(group) >= group_indices_.size())
+      throw std::runtime_error(fmt::format("the DVI path swapped group {}", group));
+    for (const int index : group_indices_[static_cast<std::size_t>(group)]) {
+      router_.display(index).swap();
+      shown_frame_[static_cast<std::size_t>(index)] = done_frame_[static_cast<std::size_t>(index)];
+      swapped = true;
+    }
+  }
+  return swapped;
+}
+
+void BoardColumn::scan(std::span<const InputFrame> frames, const Tick& tick) {
+  spots_ = tick.stamps;
+  for (const int input : pipeservers_) {
+    const auto p = static_cast<std::size_t>(input);
+    if (p >= frames.size() || p >= tick.sequences.size() || !frames[p].present()) continue;
+    // The spot is the new frame's: an input with none keeps the stamp it had.
+    if (tick.sequences[p] == sequences_[p] || p >= spots_.size()) continue;
+    sequences_[p] = tick.sequences[p];
+    const InputFrame& f = frames[p];
+    const StampSpot& next = spots_[p].next;
+    if (next.fb_x >= 0 && next.fb_y >= 0 && next.fb_x < f.width && next.fb_y < f.height)
+      stamps_[p] = decode_stamp(f.row(next.fb_y) + next.fb_x * f.bytes_per_pixel);
+  }
+  router_.scan(frames);
+}
+
+Observation BoardColumn::observe(std::int64_t refresh) const {
+  Observation o;
+  o.refresh = refresh;
+  for (const int input : pipeservers_) {
+    const InputFrameStats& st = router_.scanned(input);
+    o.inputs.push_back({input, st.present, st.idle(), st.torn(), st.parity(), st.displays_fed,
+                        stamps_[static_cast<std::size_t>(input)]});
+  }
+  // A spot on another column's display (or off this one) is not read here.
+  const auto read = [&](const StampSpot& s) -> int {
+    const int index = router_.index_of_display(s.display);
+    if (index < 0) return kStampNotHere;
+    const RgbImage& front = router_.display(index).front();
+    if (s.dx < 0 || s.dy < 0 || s.dx >= front.width() || s.dy >= front.height())
+      return kStampNotHere;
+    return decode_stamp(front.row(s.dy).data() + s.dx * 3);
+  };
+  for (std::size_t p = 0; p < spots_.size(); ++p) {
+    const StampsShown shown{static_cast<int>(p), read(spots_[p].last), read(spots_[p].before)};
+    if (shown.last != kStampNotHere || shown.before != kStampNotHere) o.stamps.push_back(shown);
+  }
+  for (int d = 0; d < router_.display_count(); ++d)
+    o.displays.push_back({router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)], 0});
+  return o;
+}
+
+void BoardColumn::write(const Router::RouteChoice& choose) {
+  std::span<const std::uint8_t> chosen;
+  router_.write([&] { return chosen = choose(); });
+  // The frame a display's next picture holds: the newest stamp routed into it.
+  for (const int input : pipeservers_) {
+    const auto p = static_cast<std::size_t>(input);
+    if (p >= chosen.size() || !chosen[p]) continue;
+    const std::uint64_t fed = router_.scanned(input).displays_fed;
+    for (int d = 0; d < router_.display_count(); ++d) {
+      if (fed >> router_.display(d).id() & 1) {
+        int& f = back_frame_[static_cast<std::size_t>(d)];
+        f = std::max(f, stamps_[p]);
+      }
+    }
+  }
+}
+
+void BoardColumn::complete(std::span<const int> groups) {
+  for (const int group : groups) {
+    if (group < 0 || static_cast<std::size_t>(group) >= group_indices_.size())
+      throw std::runtime_error(fmt::format("the DVI path completed group {}", group));
+    const std::vector<int>& own = group_indices_[static_cast<std::size_t>(group)];
+    router_.finish(own, finished_);
+    for (const int index : own) {
+      done_frame_[static_cast<std::size_t>(index)] = back_frame_[static_cast<std::size_t>(index)];
+      back_frame_[static_cast<std::size_t>(index)] = -1;
+    }
+  }
+}
+
+const RgbImage& BoardColumn::shown(int id) const {
+  const int index = router_.index_of_display(id);
+  if (index < 0) throw std::out_of_range(fmt::format("display {} is not this column's", id));
+  return router_.display(index).front();
+}
+
+int BoardColumn::lowest_frame_shown() const {
+  return shown_frame_.empty() ? -1 : *std::min_element(shown_frame_.begin(), shown_frame_.end());
+}
+
+}  // namespace l2
