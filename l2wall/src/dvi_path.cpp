@@ -149,13 +149,13 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
       [&](std::span<const Observation> seen) -> const ColumnRoute& {
         return decide(seen, pipeservers);
       },
-      [&](std::span<const Observation> seen) { take(seen, pipeservers); });
-  if (!answered.ok()) {
-    // The columns that answered swapped with the one that did not: what the displays keep is
-    // known before the fault is named and the displays are saved.
-    if (!swapped_.empty()) note_swap();
-    throw RunFault(answered.reason());
-  }
+      // A column that did not answer: the others swapped without it, so what the displays keep
+      // is known before the fault is named (the columns' line says it) and they are saved.
+      [&](std::span<const Observation> seen) {
+        take(seen, pipeservers);
+        if (!swapped_.empty()) note_swap();
+      });
+  if (!answered.ok()) throw RunFault(answered.reason());
   sequencer_.commit(observations_, decision_);
   if (const Status s = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_);
       !s.ok())

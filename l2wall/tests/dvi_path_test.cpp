@@ -61,7 +61,8 @@ class FakeColumns final : public BoardColumns {
     }
     if (tick.refresh == fail_at) {
       took(std::span(&o, 1));
-      return Failure{"board column 0 did not answer"};
+      return Failure{"board column 0 did not answer; the displays keep frame " +
+                     std::to_string(showing_)};
     }
     const ColumnRoute& r = decide(std::span(&o, 1));
     for (std::size_t p = 0; p < published.size(); ++p) {
@@ -78,6 +79,7 @@ class FakeColumns final : public BoardColumns {
     return [this](int) -> const RgbImage& { return picture_; };
   }
   std::optional<DisplayPictures> shown() override { return pictures(); }
+  void showing(int frame) override { showing_ = frame; }
   std::optional<std::uint64_t> routed_strips(int) const override { return 1; }
   std::string where() const override { return "in the test"; }
 
@@ -88,6 +90,7 @@ class FakeColumns final : public BoardColumns {
 
  private:
   int frames_;
+  int showing_ = -1;  // what the path said the displays keep
   RgbImage picture_{1, 1};
 };
 
@@ -184,9 +187,11 @@ TEST(DviPath, AColumnThatDoesNotAnswerIsNamedWithTheFrameTheDisplaysKeep) {
     run.next_swap();
     FAIL() << "no fault";
   } catch (const RunFault& e) {
-    EXPECT_STREQ(e.what(), "board column 0 did not answer");
+    // The refresh that failed swapped frame 3 in on the columns that answered: the line says
+    // so, worded once the path knew it.
+    EXPECT_STREQ(e.what(), "board column 0 did not answer; the displays keep frame 3");
   }
-  EXPECT_EQ(run.path->frame_shown(), 3);  // the refresh that failed swapped frame 3 in
+  EXPECT_EQ(run.path->frame_shown(), 3);
 }
 
 TEST(DviPath, ADisplayOfAGroupShowingAnotherFrameBreaksSwapLock) {

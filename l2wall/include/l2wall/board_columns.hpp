@@ -38,8 +38,8 @@ class BoardColumns {
   using Decide = std::function<const ColumnRoute&(std::span<const Observation> seen)>;
   // One refresh: the columns swap `tick`'s groups, scan their inputs, and route and complete
   // what `decide` chose from their observations. A column that did not answer is the failure
-  // returned, after `took` was given what the others saw (what the displays keep is known
-  // then); `decide` is not asked.
+  // returned, its line worded after `took` was given what the others saw (what the displays keep
+  // is known then, showing()); `decide` is not asked.
   virtual Status refresh(const Tick& tick, PipeserverSet& pipeservers, const Decide& decide,
                          const std::function<void(std::span<const Observation>)>& took) = 0;
 
