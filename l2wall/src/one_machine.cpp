@@ -6,8 +6,9 @@
 
 #include "l2wall/dvi_path.hpp"
 #include "l2wall/run_backends.hpp"
+#include "l2wall/viz_path.hpp"
 #include "local_columns.hpp"
-#include "viz_path.hpp"
+#include "server_compositor.hpp"
 
 namespace l2 {
 namespace {
@@ -21,7 +22,7 @@ class OneMachine final : public RunBackends {
         std::make_unique<LocalColumns>(layout.wall, o.threads, layout.pipeservers.size()));
   }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
-    return std::make_unique<VizPath>(launch);
+    return std::make_unique<VizPath>(std::make_unique<ServerCompositor>(launch));
   }
   void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                          const TileLayout& layout) const override {

@@ -1,9 +1,10 @@
 // A display path of the live run: how the pipeservers' frames become what the displays show.
-// Two implementations sit beside each other: the DVI path (dvi_path.hpp: the emulated
-// Lightning-2, its board columns in this process or over MPI) and the viz path (viz_path.hpp: a
-// compositing server process; mpi/src/mpi_viz_path.hpp: the column ranks composite). The live run
-// drives one path as the lead, whose swaps are the run's frames, and with --path both a second one
-// beside it, whose frames it takes and compares; it talks to this interface only.
+// Two implementations sit beside each other, each written once for every backend: the DVI path
+// (dvi_path.hpp: the emulated Lightning-2 over its board columns, in this process or over MPI)
+// and the viz path (viz_path.hpp: compositors, the compositing server process or the column
+// ranks). The live run drives one path as the lead, whose swaps are the run's frames, and with
+// --path both a second one beside it, whose frames it takes and compares; it talks to this
+// interface only.
 #pragma once
 
 #include <chrono>

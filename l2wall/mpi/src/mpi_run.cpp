@@ -19,8 +19,9 @@
 #include "l2wall/dvi_path.hpp"
 #include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
+#include "l2wall/viz_path.hpp"
 #include "mpi_columns.hpp"
-#include "mpi_viz_path.hpp"
+#include "mpi_compositors.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 
@@ -49,7 +50,8 @@ class MpiBackends final : public RunBackends {
   }
   bool stops_pipeservers_early() const override { return false; }
   std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
-    return std::make_unique<MpiVizPath>(layout_, map_, stall_timeout_ms_);
+    return std::make_unique<VizPath>(
+        std::make_unique<MpiCompositors>(layout_, map_, stall_timeout_ms_));
   }
   void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                          const TileLayout& layout) const override {
