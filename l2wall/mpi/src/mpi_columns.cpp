@@ -182,10 +182,6 @@ void MpiColumns::finish() {
   end_columns();
 }
 
-std::string MpiColumns::where() const {
-  return fmt::format("over {} board column rank(s)", map_.columns);
-}
-
 void MpiColumns::end_columns() {
   if (ended_) return;
   ended_ = true;

@@ -42,7 +42,9 @@ class MpiColumns final : public BoardColumns {
 
   void finish() override;
   void shut_down() override { end_columns(); }
-  std::string where() const override;
+  std::string where() const override {
+    return "over " + std::to_string(map_.columns) + " board column rank(s)";
+  }
   std::string summary_lines() const override { return traffic_.lines(control_bytes_, frames_); }
 
  private:
