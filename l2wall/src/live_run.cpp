@@ -20,6 +20,9 @@
 #include <thread>
 #include <vector>
 
+#include "desktops/live_desktop.hpp"
+#include "desktops/live_windows.hpp"
+#include "desktops/session_desktops.hpp"
 #include "image/folders.hpp"
 #include "l2wall/display_path.hpp"
 #include "l2wall/live_balance.hpp"
@@ -32,11 +35,8 @@
 #include "l2wall/run_time.hpp"
 #include "l2wall/stall_verdict.hpp"
 #include "line_reader.hpp"
-#include "live_desktop.hpp"
 #include "live_page.hpp"
-#include "live_windows.hpp"
 #include "pipeserver/live_exit.hpp"
-#include "session_desktops.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
