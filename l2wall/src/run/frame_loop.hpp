@@ -1,9 +1,3 @@
-// The frame loop of a live run: the lead path's steps until every frame is on the displays, and
-// what each swap does: the frames it completed recorded, their latency checked, the other path's
-// frame taken (and compared), kept frames saved, fault injection, the displays on screen
-// (--show, whose keys it takes), the page told, the progress line. It alone advances the frame
-// ledger. It may not end processes or name a fault's cause: the watchdog names it, LiveRun ends
-// the processes.
 #pragma once
 
 #include <memory>
@@ -27,6 +21,12 @@ struct FrameLoopParts {
   ProgressLine& progress;
 };
 
+// The frame loop of a live run: the lead path's steps until every frame is on the displays, and
+// what each swap does: the frames it completed recorded, their latency checked, the other path's
+// frame taken (and compared), kept frames saved, fault injection, the displays on screen
+// (--show, whose keys it takes), the page told, the progress line. It alone advances the frame
+// ledger. It may not end processes or name a fault's cause: the watchdog names it, LiveRun ends
+// the processes.
 class FrameLoop {
  public:
   FrameLoop(RunCore& core, const RunWatch& watch, const FrameLoopParts& parts)

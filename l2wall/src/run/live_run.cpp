@@ -1,9 +1,3 @@
-// `l2wall run`'s live run, made of separately filed parts, each with its contract in its class
-// comment: the frame loop (frame_loop.hpp), the watchdog (watchdog.hpp), page steering
-// (page_steering.hpp), the windows and desktops (run_windows.hpp), the report writer
-// (run_writer.hpp) and the progress line (progress_line.hpp), all working on the run's core
-// (run_core.hpp). LiveRun owns them and the run's order: which display paths run for --path, the
-// pipeservers started, the frames, and the end, well or in a fault, with every process ended.
 #include "l2wall/live_run.hpp"
 
 #include <chrono>
@@ -34,6 +28,14 @@ namespace {
 
 using std::chrono::milliseconds;
 
+// `l2wall run`'s live run, made of separately filed parts, each with its contract in its class
+// comment: the frame loop (frame_loop.hpp), the watchdog (watchdog.hpp), page steering
+// (page_steering.hpp), the windows and desktops (run_windows.hpp), the report writer
+// (run_writer.hpp) and the progress line (progress_line.hpp), all working on the run's core
+// (run_core.hpp). LiveRun owns them and the run's order: which display paths run for --path, the
+// pipeservers started, the frames, and the end, well or in a fault, with every process ended.
+// It alone makes the paths and starts and ends the run's processes; what happens between the
+// first frame and the last is the parts'.
 class LiveRun {
  public:
   LiveRun(const RunOptions& o, const RunBackends& backends) : core_(o), backends_(backends) {}

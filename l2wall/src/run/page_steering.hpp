@@ -1,10 +1,3 @@
-// Page steering: what the control page (--http) asks of a live run, taken at frame boundaries,
-// and what the run tells it. It owns the steering state (a pause, a stop, the counts for the
-// summary) and publishes where the run is after each swap. A pause holds the run here while the
-// watchdog still watches the pipeservers. It may not advance frames or end processes: a stop is
-// a request the frame loop ends on; saves go through the report writer, window moves through
-// the run's windows, balance modes through the balance coordinator. Without a page it does
-// nothing.
 #pragma once
 
 #include <string>
@@ -16,6 +9,13 @@
 
 namespace l2 {
 
+// Page steering: what the control page (--http) asks of a live run, taken at frame boundaries,
+// and what the run tells it. It owns the steering state (a pause, a stop, the counts for the
+// summary) and publishes where the run is after each swap. A pause holds the run here while the
+// watchdog still watches the pipeservers. It may not advance frames or end processes: a stop is
+// a request the frame loop ends on; saves go through the report writer, window moves through
+// the run's windows, balance modes through the balance coordinator. Without a page it does
+// nothing.
 class PageSteering {
  public:
   // `stoppable`: whether a stop from the page can end the run (RunBackends).

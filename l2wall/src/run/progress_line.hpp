@@ -1,6 +1,3 @@
-// The progress line of a live run on stderr: frames on the displays and the frame rate, and
-// before the first frames a line a second saying what the run waits for. It owns that line and
-// nothing else: it reads where the frames are and changes none of the run.
 #pragma once
 
 #include <optional>
@@ -9,6 +6,9 @@
 
 namespace l2 {
 
+// The progress line of a live run on stderr: frames on the displays and the frame rate, and
+// before the first frames a line a second saying what the run waits for. It owns that line and
+// nothing else: it reads where the frames are and changes none of the run.
 class ProgressLine {
  public:
   explicit ProgressLine(const RunCore& core) : core_(core) {}

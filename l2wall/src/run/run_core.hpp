@@ -1,6 +1,3 @@
-// What every part of a live run works on: the options, the wall and its plan, the display paths,
-// the pipeservers, the balance coordinator, the control page and where the frames are. LiveRun
-// owns it and makes it; each part's class comment says which of it the part may change.
 #pragma once
 
 #include <memory>
@@ -35,6 +32,9 @@ struct FrameLedger {
   int stopped = 0;          // the stop signal that ended the frames, or 0
 };
 
+// What every part of a live run works on: the options, the wall and its plan, the display paths,
+// the pipeservers, the balance coordinator, the control page and where the frames are. LiveRun
+// owns it and makes it; each part's class comment says which of it the part may change.
 struct RunCore {
   // Loads the wall of `o` (the built-in default without one) and plans it; throws what the
   // wall file or the planner refuses, as --keep's parse does.

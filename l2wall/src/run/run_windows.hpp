@@ -1,8 +1,3 @@
-// The windows and desktops of a live run: a session run's windows (which the control page and
-// --window-stdin move), its vnc windows' desktops, and a vnc run's desktop. It owns their
-// connections, made before any pipeserver starts, and answers the pipeservers' requests for
-// them; it may not advance frames, end processes or write into OUT (the report writer takes its
-// summary and windows.txt).
 #pragma once
 
 #include <unistd.h>
@@ -23,6 +18,11 @@
 
 namespace l2 {
 
+// The windows and desktops of a live run: a session run's windows (which the control page and
+// --window-stdin move), its vnc windows' desktops, and a vnc run's desktop. It owns their
+// connections, made before any pipeserver starts, and answers the pipeservers' requests for
+// them; it may not advance frames, end processes or write into OUT (the report writer takes its
+// summary and windows.txt).
 class RunWindows {
  public:
   // Connects what the scene of `o` shows (a session's windows, a vnc desktop); a desktop that

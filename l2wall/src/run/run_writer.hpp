@@ -1,9 +1,3 @@
-// What a live run writes into OUT: the kept frames' displays (--keep, a save from the control
-// page or a key), the displays as they were after a fault (OUT/fault/), and the report
-// (report.csv, summary.txt and the files the run's parts add), also after a fault. A file that
-// cannot be written ends the run saying what OUT holds and what not. It may not advance frames,
-// steer the run or end processes; it reads where the frames are and notes the time it spent
-// writing pictures (not the pipeservers').
 #pragma once
 
 #include <optional>
@@ -15,6 +9,12 @@
 
 namespace l2 {
 
+// What a live run writes into OUT: the kept frames' displays (--keep, a save from the control
+// page or a key), the displays as they were after a fault (OUT/fault/), and the report
+// (report.csv, summary.txt and the files the run's parts add), also after a fault. A file that
+// cannot be written ends the run saying what OUT holds and what not. It may not advance frames,
+// steer the run or end processes; it reads where the frames are and notes the time it spent
+// writing pictures (not the pipeservers').
 class RunWriter {
  public:
   RunWriter(RunCore& core, const RunWatch& watch) : core_(core), watch_(watch) {}

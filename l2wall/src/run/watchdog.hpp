@@ -1,11 +1,3 @@
-// The watchdog of a live run: whether every process of the run still runs well, and when one
-// does not, which is the cause. It names the cause in a RunFault: a stop signal, a process that
-// ended (a process killed by a signal before a compositing server that died without saying
-// why, before a pipeserver that exited badly), a path that went down, or no display swap for
-// --stall-timeout. Under --survive-host-loss it lets the run go on without a lost pipeserver,
-// telling the balance coordinator, the pipeservers and the paths. It may not advance frames,
-// end processes or write into OUT; its only output besides the fault is the line (and page
-// event) of a pipeserver survived.
 #pragma once
 
 #include <string>
@@ -15,6 +7,14 @@
 
 namespace l2 {
 
+// The watchdog of a live run: whether every process of the run still runs well, and when one
+// does not, which is the cause. It names the cause in a RunFault: a stop signal, a process that
+// ended (a process killed by a signal before a compositing server that died without saying
+// why, before a pipeserver that exited badly), a path that went down, or no display swap for
+// --stall-timeout. Under --survive-host-loss it lets the run go on without a lost pipeserver,
+// telling the balance coordinator, the pipeservers and the paths. It may not advance frames,
+// end processes or write into OUT; its only output besides the fault is the line (and page
+// event) of a pipeserver survived.
 class Watchdog {
  public:
   Watchdog(RunCore& core, const ProgressLine& progress) : core_(core), progress_(progress) {}
