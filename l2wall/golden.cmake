@@ -4,8 +4,9 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(TOMLPP REQUIRED IMPORTED_TARGET tomlplusplus)
 
 l2_library(l2_golden
-           SOURCES src/golden_manifest.cpp src/golden_routing.cpp src/golden_rendered.cpp
-                   src/golden_entry.cpp src/golden_check.cpp src/golden_update.cpp
+           SOURCES src/golden/golden_manifest.cpp src/golden/golden_routing.cpp
+                   src/golden/golden_rendered.cpp src/golden/golden_entry.cpp
+                   src/golden/golden_check.cpp src/golden/golden_update.cpp
            COMMAND_LINE src/golden_command.cpp
            PRIVATE_INCLUDES src
            LINKS PUBLIC l2_wallrun l2_tilelayout l2_image l2_pipeserver l2_strip_headers fmt::fmt

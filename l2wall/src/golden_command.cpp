@@ -8,8 +8,8 @@
 
 #include "command_line/checks.hpp"
 #include "command_line/program_paths.hpp"
-#include "golden_check.hpp"
-#include "golden_update.hpp"
+#include "golden/golden_check.hpp"
+#include "golden/golden_update.hpp"
 
 namespace l2 {
 

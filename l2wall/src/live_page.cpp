@@ -71,15 +71,6 @@ std::vector<PageTile> page_tiles(const LayoutMessage& layout) {
   return tiles;
 }
 
-std::string PageSteering::summary() const {
-  const auto count = [](int n, const char* what) {
-    return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
-  };
-  std::string line = "control page: " + count(pauses, "pause") + ", " + count(saves, "save");
-  if (stop) line += fmt::format(", stopped from the page at frame {}", stopped_at);
-  return line + "\n";
-}
-
 LivePage::LivePage(const RunOptions& o, const Wall& wall, bool stoppable) {
   const HttpAddress address = address_of(o);
   server_ = std::make_unique<ControlServer>(address, make_access_token());

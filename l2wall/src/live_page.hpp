@@ -76,15 +76,6 @@ class LivePage {
   bool publish_now_ = true;
 };
 
-// What the page asked of the run so far: its state for the run, its line for the summary.
-struct PageSteering {
-  bool paused = false, stop = false;
-  int pauses = 0, saves = 0;
-  int stopped_at = -1;  // the last frame on the displays when the page stopped the run
-  // "control page: 1 pause, 2 saves, stopped from the page at frame 57\n"
-  std::string summary() const;
-};
-
 // A page's state with the wall filled in (name, canvas, displays), for a live run or a finished
 // one.
 RunState wall_state(const Wall& wall);

@@ -94,6 +94,22 @@ RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
   return t;
 }
 
+// The summary's latency line: the frame stamps' latency over the run, or why it was not measured.
+std::string latency_line(const std::vector<FrameRecord>& records, const RunTotals& totals) {
+  if (records.empty()) return "latency: not measured (no frame reached the displays)\n";
+  if (!totals.latency_measured)
+    return "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
+  long min_latency = 1 << 30, max_latency = -1;
+  for (const FrameRecord& r : records) {
+    min_latency = std::min(min_latency, latency_of(r));
+    max_latency = std::max(max_latency, latency_of(r));
+  }
+  return fmt::format(
+      "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
+      "measured from the frame stamps on the displays: min {}, max {}\n",
+      max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
+}
+
 }  // namespace
 
 RunReportTexts run_report(const RunOptions& o, const Wall& wall,
@@ -104,12 +120,6 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
   std::vector<PipeserverLog> logs;
   for (const std::string& path : pipeserver_logs) logs.push_back(read_pipeserver_log(path, frames));
   const auto csv_path = std::filesystem::path(o.out) / "report.csv";
-
-  long min_latency = 1 << 30, max_latency = -1;
-  for (const FrameRecord& r : records) {
-    min_latency = std::min(min_latency, latency_of(r));
-    max_latency = std::max(max_latency, latency_of(r));
-  }
   // Up to the last swap: writing the saved PNGs afterwards is not part of the frame rate, and
   // neither are --show pauses (the pipeservers wait). Pictures saved during the run are: the
   // pipeservers render the next frame meanwhile, so taking that time out would count their work as
@@ -141,16 +151,7 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
         "run would be faster\n",
         writing_s);
   }
-  if (records.empty()) {
-    summary += "latency: not measured (no frame reached the displays)\n";
-  } else if (totals.latency_measured) {
-    summary += fmt::format(
-        "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
-        "measured from the frame stamps on the displays: min {}, max {}\n",
-        max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
-  } else {
-    summary += "latency: not measured on the vizserver path (no DVI link, no refresh)\n";
-  }
+  summary += latency_line(records, totals);
   if (runs_dvi(o.path)) {
     summary += fmt::format(
         "emulator: {} input frames predicted from their input's last layout, {} of them found "

@@ -1,4 +1,4 @@
-#include "desktop_frames.hpp"
+#include "desktops/desktop_frames.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Which desktop pixels each pipeserver is sent for a session's vnc windows (pure): the parts its
 // tiles sample through the windows where the frame shows them.
-#include "desktop_regions.hpp"
+#include "desktops/desktop_regions.hpp"
 
 #include <gtest/gtest.h>
 

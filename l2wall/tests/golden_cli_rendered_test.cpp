@@ -6,8 +6,8 @@
 // l2wall_golden_check.
 #include <fstream>
 
+#include "golden/golden_manifest.hpp"
 #include "golden_cli.hpp"
-#include "golden_manifest.hpp"
 #include "image/png_io.hpp"
 #include "pipeserver/gl_context.hpp"
 

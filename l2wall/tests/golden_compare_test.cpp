@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "display_compare.hpp"
-#include "golden_entry.hpp"
+#include "golden/golden_entry.hpp"
 
 namespace l2 {
 namespace {

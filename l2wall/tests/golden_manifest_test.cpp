@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <set>
 
-#include "golden_manifest.hpp"
+#include "golden/golden_manifest.hpp"
 
 namespace l2 {
 namespace {

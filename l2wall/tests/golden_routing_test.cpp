@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "golden_routing.hpp"
+#include "golden/golden_routing.hpp"
 #include "pipeserver/gl_context.hpp"
 #include "strip_headers/strip_header.hpp"
 #include "tilelayout/planner.hpp"

@@ -1,4 +1,4 @@
-#include "live_windows.hpp"
+#include "desktops/live_windows.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "l2wall/stall_verdict.hpp"
+#include "run/stall_verdict.hpp"
 
 #include <gtest/gtest.h>
 
