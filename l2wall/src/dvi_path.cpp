@@ -237,6 +237,13 @@ void DviPath::add_totals(RunTotals& totals) const {
   totals.refreshes = refreshes_;
   totals.dropped_readies += dropped_readies_;
   columns_->add_totals(totals);
+  totals.pace = fmt::format("{} refreshes at {}", refreshes_,
+                            refresh_hz_ > 0 ? fmt::format("{:g} Hz", refresh_hz_) : "full speed");
+  totals.path_lines += fmt::format(
+      "emulator: {} input frames predicted from their input's last layout, {} of them found "
+      "different and parsed\n",
+      totals.frames_predicted, totals.predictions_missed);
+  totals.path_lines += summary_lines();
 }
 
 std::string DviPath::summary_lines() const {

@@ -45,9 +45,9 @@ long latency_of(const FrameRecord& r) {
   return static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
 }
 
-std::string csv_text(const RunOptions& o, const std::vector<PipeserverLog>& logs,
+std::string csv_text(const RunTotals& totals, const std::vector<PipeserverLog>& logs,
                      const std::vector<FrameRecord>& records) {
-  const bool dvi = runs_dvi(o.path);
+  const bool dvi = totals.latency_measured;
   std::string csv = "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   for (std::size_t i = 0; i < logs.size(); ++i)
     csv += fmt::format(",render_ms_{0},ready_wait_ms_{0},sync_retries_{0}", i);
@@ -74,7 +74,8 @@ std::string csv_text(const RunOptions& o, const std::vector<PipeserverLog>& logs
 }
 
 // The times report.csv holds, for the summary's percentiles.
-RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
+RunTimes run_times(const RunOptions& o, const RunTotals& totals,
+                   const std::vector<PipeserverLog>& logs,
                    const std::vector<FrameRecord>& records) {
   RunTimes t;
   for (const PipeserverLog& log : logs) {
@@ -83,7 +84,7 @@ RunTimes run_times(const RunOptions& o, const std::vector<PipeserverLog>& logs,
       if (f.logged) t.render.back().push_back(f.render_ms);
     }
   }
-  if (runs_dvi(o.path)) {  // no emulator on the vizserver path
+  if (totals.latency_measured) {  // no emulator on the vizserver path
     for (const FrameRecord& r : records) {
       t.route.push_back(r.route_ms);
       t.swap.push_back(ms_between(r.in_time, r.swap_time));
@@ -130,11 +131,6 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
           : (ms_between(totals.start, records.back().swap_time) - records.back().paused_ms) /
                 1000.0;
   const double writing_s = records.empty() ? 0.0 : records.back().writing_ms / 1000.0;
-  const std::string pace = !runs_dvi(o.path)
-                               ? std::string("no emulator refresh: the compositing server swaps")
-                               : fmt::format("{} refreshes at {}", totals.refreshes,
-                                             o.refresh_hz > 0 ? fmt::format("{:g} Hz", o.refresh_hz)
-                                                              : std::string("full speed"));
   // A run a fault ended says so first; its figures are those of the frames before the fault.
   std::string summary =
       fault.empty()
@@ -144,7 +140,7 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
   summary +=
       fmt::format("{} frames on {} displays from {} pipeservers in {:.2f} s: {:.1f} fps ({})\n",
                   frames, wall.displays.size(), pipeserver_logs.size(), seconds,
-                  seconds > 0 ? frames / seconds : 0.0, pace);
+                  seconds > 0 ? frames / seconds : 0.0, totals.pace);
   if (writing_s >= 0.005) {
     summary += fmt::format(
         "of which {:.2f} s writing the pictures kept during the run (--keep): without them the "
@@ -152,13 +148,8 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
         writing_s);
   }
   summary += latency_line(records, totals);
-  if (runs_dvi(o.path)) {
-    summary += fmt::format(
-        "emulator: {} input frames predicted from their input's last layout, {} of them found "
-        "different and parsed\n",
-        totals.frames_predicted, totals.predictions_missed);
-  }
-  RunTimes times = run_times(o, logs, records);
+  summary += totals.path_lines;
+  RunTimes times = run_times(o, totals, logs, records);
   times.lost = totals.lost;
   summary += spread_lines(times);
   if (runs_viz(o.path)) summary += fmt::format("paths: {}\n", path_choice_name(o.path));
@@ -179,7 +170,7 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());
-  return {csv_text(o, logs, records), summary};
+  return {csv_text(totals, logs, records), summary};
 }
 
 }  // namespace l2

@@ -103,11 +103,10 @@ class DisplayPath {
   virtual void finish() {}
   // Ends its process, if any, and reaps it.
   virtual void shut_down() {}
-  // Its counts for the report.
+  // What it says in the report, asked in path order (the lead first): its counts, how it paces
+  // the run (RunTotals::pace, the lead's), and lines of its own for the summary (what it
+  // proved, what crossed the network).
   virtual void add_totals(RunTotals& totals) const = 0;
-  // Lines of its own for the summary (what it proved, what crossed the network), each ending in
-  // a newline; empty when it has none.
-  virtual std::string summary_lines() const { return {}; }
   // A balanced run: the lead path serves the control channels while it waits for frames (the
   // pipeservers wait for each frame's layout), and checks its swaps against the layouts where it
   // can. The DVI paths (one machine and MPI) and the one-machine compositing server path lead one.

@@ -64,7 +64,9 @@ class DviPath final : public DisplayPath {
   void finish() override;
   void shut_down() override { columns_->shut_down(); }
   void add_totals(RunTotals& totals) const override;
-  std::string summary_lines() const override;
+  // What the path proved once every frame is shown (swap lock in every refresh) and the
+  // columns' own lines; empty before.
+  std::string summary_lines() const;
   void follow_layouts(LiveBalance& balance, PipeserverSet& pipeservers) override;
   // Losing a signal is news, as a new frame is: a group it held up may complete now, and at
   // full speed (--refresh 0) only news starts a refresh.

@@ -30,7 +30,12 @@ struct RunTotals {
   std::uint64_t noise_bytes = 0, dropped_readies = 0;
   std::uint64_t compared_displays = 0;
   std::uint64_t frames_predicted = 0, predictions_missed = 0;  // the emulator's (DVI path)
-  bool latency_measured = true;  // false on the vizserver path alone: no refresh to count
+  // Said by the lead path (DisplayPath::add_totals): whether it refreshes (so measures the
+  // one-frame latency and route times; false on the vizserver path alone), how it paces the run,
+  // and the lines the paths add to the summary (what they proved, what crossed the network).
+  bool latency_measured = true;
+  std::string pace;
+  std::string path_lines;
   RunClock::time_point start{};  // the clock starts once every pipeserver delivered a first frame
   std::vector<bool> lost;        // by pipeserver: lost mid-run (--survive-host-loss)
 };

@@ -61,7 +61,10 @@ class VizPath final : public DisplayPath {
   void lose_pipeserver(int pipeserver) override { compositors_->lose(pipeserver); }
   void finish() override { compositors_->finish(); }
   void shut_down() override { compositors_->shut_down(); }
-  void add_totals(RunTotals&) const override {}
+  // Beside a DVI path, that one paces the run.
+  void add_totals(RunTotals& totals) const override {
+    if (totals.pace.empty()) totals.pace = "no emulator refresh: the compositing server swaps";
+  }
 
  private:
   // Until frame `frame` is composed everywhere; meanwhile every process is still watched.

@@ -219,9 +219,7 @@ int LiveRun::exit_status() const {
 
 // `fault`: the fault that ended the run at the frames shown, or empty. Returns the summary.
 std::string LiveRun::write_report(const std::string& fault) {
-  std::string paths_said;  // what each path proved, and what crossed the network
-  for (const auto& p : core_.paths) paths_said += p->summary_lines();
-  const std::string extra = paths_said + loop_.show_summary() + steering_.summary() +
+  const std::string extra = loop_.show_summary() + steering_.summary() +
                             (core_.balance ? core_.balance->summary() : std::string()) +
                             windows_.summary();
   std::vector<std::pair<std::string, std::string>> files;

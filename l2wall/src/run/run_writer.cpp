@@ -62,6 +62,8 @@ std::optional<std::string> RunWriter::save_displays_after_fault() {
 std::string RunWriter::write_report(const std::string& fault, const std::string& extra,
                                     std::vector<std::pair<std::string, std::string>> files) {
   FrameLedger& f = core_.frames;
+  f.totals.pace.clear();  // asked anew: a fault's report may follow a report that failed
+  f.totals.path_lines.clear();
   for (const auto& p : core_.paths) p->add_totals(f.totals);
   f.totals.lost.clear();
   std::vector<std::string> pipeserver_logs;
