@@ -16,8 +16,9 @@
 # LINKS is target_link_libraries' list: PUBLIC, PRIVATE and INTERFACE keywords as there, and
 # items before any keyword are PRIVATE (INTERFACE for an INTERFACE library).
 #
-# A static library's files are compiled together, up to 8 per unit (unity build): each unit
-# otherwise re-instantiates what fmt and the standard library leave pending. HOT keeps one
+# A static library's files are compiled together, up to 8 per unit (unity build, while
+# L2_UNITY_BUILD is on, the default): each unit otherwise re-instantiates what fmt and the
+# standard library leave pending. HOT keeps one
 # object per file: the emulator's hot path, whose objects a test disassembles one by one and
 # whose code the routing benchmark measures.
 #
@@ -144,7 +145,7 @@ function(l2_library name)
   else()
     add_library(${name} STATIC ${ARG_SOURCES})
     if(NOT ARG_HOT)
-      set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+      set_target_properties(${name} PROPERTIES UNITY_BUILD ${L2_UNITY_BUILD})
     endif()
   endif()
   if(ARG_INCLUDES)
@@ -194,7 +195,7 @@ function(l2_test name)
   l2_warnings(${name})
   target_compile_options(${name} PRIVATE ${l2_test_code_flags})
   target_precompile_headers(${name} REUSE_FROM l2_test_pch)
-  set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+  set_target_properties(${name} PROPERTIES UNITY_BUILD ${L2_UNITY_BUILD})
   l2_link(${name} PRIVATE ${ARG_LINKS})
   target_link_libraries(${name} PRIVATE GTest::gtest_main GTest::gmock fmt::fmt)
   add_test(NAME ${name} COMMAND ${name} --gtest_brief=1
