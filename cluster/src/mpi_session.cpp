@@ -23,9 +23,9 @@
 
 #include "base/fd.hpp"
 #include "base/result.hpp"
+#include "base/socket.hpp"
 #include "cluster/busy_polling.hpp"
 #include "cluster/coordinator_address.hpp"
-#include "vizserver/socket.hpp"
 
 namespace l2 {
 namespace {
@@ -188,7 +188,7 @@ Result<Fd> reach(const WireOffer& offer, bool beside) {
   std::string why;
   for (const std::string& host : candidates) {
     try {
-      return viz::connect_tcp(host, offer.port, kReachTimeout, "the coordinator at");
+      return connect_tcp(host, offer.port, kReachTimeout, "the coordinator at");
     } catch (const std::exception& e) {
       why += (why.empty() ? "" : "; ") + std::string(e.what());
     }
@@ -202,8 +202,8 @@ void MpiSession::connect_liveness() {
   Fd listener;
   WireOffer offer;
   if (rank_ == 0) {
-    listener = viz::listen_tcp("0.0.0.0", 0);
-    offer = make_offer(viz::local_port(listener.get()));
+    listener = listen_tcp("0.0.0.0", 0);
+    offer = make_offer(local_port(listener.get()));
   }
   MPI_Bcast(&offer, sizeof offer, MPI_BYTE, 0, MPI_COMM_WORLD);
   WireReachError error{};

@@ -22,11 +22,11 @@ void recv_header(int fd, MessageHead& head, Clock::time_point deadline, const st
     recv_all(fd, head.space().data(), kHeaderBytes, deadline, peer);
   } catch (const ConnectionClosed& e) {
     rethrow_waiting(e, waiting_for);
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     rethrow_waiting(e, waiting_for);
   }
   if (const Status header = head.received(kHeaderBytes); !header.ok()) {
-    throw VizError(fmt::format("{}: {}", peer, header.reason()));
+    throw NetError(fmt::format("{}: {}", peer, header.reason()));
   }
 }
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "vizserver/socket.hpp"
+#include "base/socket.hpp"
 
 namespace l2::viz {
 
@@ -18,7 +18,7 @@ RunToken new_run_token() {
   while (got < token.size()) {
     const ssize_t n = ::getrandom(token.data() + got, token.size() - got, 0);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw VizError(fmt::format("cannot make a run token: {}", std::strerror(errno)));
+    if (n < 0) throw NetError(fmt::format("cannot make a run token: {}", std::strerror(errno)));
     got += static_cast<std::size_t>(n);
   }
   return token;
@@ -51,7 +51,7 @@ RunToken token_from_environment() {
   const char* value = std::getenv(kTokenVariable);
   if (!value) return RunToken{};
   if (auto token = parse_token(value)) return *token;
-  throw VizError(fmt::format("{} is set but is not 32 hex digits", kTokenVariable));
+  throw NetError(fmt::format("{} is set but is not 32 hex digits", kTokenVariable));
 }
 
 bool same_token(const RunToken& a, const RunToken& b) {

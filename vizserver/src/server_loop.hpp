@@ -13,9 +13,9 @@
 #include <thread>
 #include <vector>
 
+#include "base/socket.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/socket.hpp"
 #include "vizserver/tile_delta.hpp"
 #include "vizserver/wire.hpp"
 

@@ -41,7 +41,7 @@ TileSender TileSender::connect(const std::string& host, std::uint16_t port, int 
     TileSender s(std::move(fd), peer, pipeserver_id, options);
     if (s.say_hello(display_count)) return s;
     if (Clock::now() >= give_up) {
-      throw VizError(fmt::format("{} closed the connection before WELCOME, {} times within {} ms",
+      throw NetError(fmt::format("{} closed the connection before WELCOME, {} times within {} ms",
                                  peer, attempt, options.connect_timeout.count()));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -66,15 +66,15 @@ bool TileSender::say_hello(int display_count) {
 void TileSender::send(std::span<const iovec> parts) {
   try {
     send_all(fd_.get(), parts, Clock::now() + options_.io_timeout, peer_);
-  } catch (const VizError&) {
+  } catch (const NetError&) {
     // The server may have said why it closed us before it did: prefer its words.
     try {
       while (server_error_.empty()) {
         read_message(Clock::now() + std::chrono::milliseconds(200), "its reason");
       }
-    } catch (const VizError&) {
+    } catch (const NetError&) {
     }
-    if (!server_error_.empty()) throw VizError(fmt::format("{}: {}", peer_, server_error_));
+    if (!server_error_.empty()) throw NetError(fmt::format("{}: {}", peer_, server_error_));
     throw;
   }
 }
@@ -143,7 +143,7 @@ void TileSender::read_message(Clock::time_point deadline, const char* waiting_fo
   const Header& header = head.header();
   if (header.kind == Kind::Error) {
     server_error_ = recv_error_text(fd_.get(), head, deadline, peer_);
-    throw VizError(fmt::format("{}: {}", peer_, server_error_));
+    throw NetError(fmt::format("{}: {}", peer_, server_error_));
   }
   recv_fixed(fd_.get(), head, deadline, peer_);
   const std::span<const std::uint8_t> body = head.fixed();
@@ -152,7 +152,7 @@ void TileSender::read_message(Clock::time_point deadline, const char* waiting_fo
   } else if (header.kind == Kind::Welcome && !welcomed_) {
     welcomed_ = true;
   } else {
-    throw VizError(fmt::format("{}: unexpected {} message", peer_, kind_name(header.kind)));
+    throw NetError(fmt::format("{}: unexpected {} message", peer_, kind_name(header.kind)));
   }
 }
 

@@ -66,7 +66,7 @@ TEST(VizServerHostile, APipeserverClosedBeforeItsWelcomeConnectsAgain) {
   std::string error;
   try {
     TileSender::connect("127.0.0.1", port, 0, 1);
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     error = e.what();
   }
   server.join();
@@ -219,7 +219,7 @@ TEST(VizServerHostile, APipeserverWithoutTheTokenIsToldWhy) {
   try {
     TileSender::connect("127.0.0.1", server.port(), 0, 1);
     FAIL() << "welcomed without the token";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_EQ(std::string(e.what()),
               fmt::format("compositing server 127.0.0.1:{}: HELLO as pipeserver 0 without this "
                           "run's token",

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "vizserver/socket.hpp"
+#include "base/socket.hpp"
 #include "vizserver/wire.hpp"
 
 namespace l2::viz::testing {

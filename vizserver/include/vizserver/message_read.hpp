@@ -6,12 +6,12 @@
 #include <string>
 #include <string_view>
 
-#include "vizserver/socket.hpp"
+#include "base/socket.hpp"
 #include "vizserver/wire.hpp"
 
 namespace l2::viz {
 
-// Clears `head` and receives the next header into it. A failed receive is a VizError (or
+// Clears `head` and receives the next header into it. A failed receive is a NetError (or
 // ConnectionClosed) with " (waiting for <waiting_for>)" added when that is given; a bad header
 // is "<peer>: <reason>".
 void recv_header(int fd, MessageHead& head, Clock::time_point deadline, const std::string& peer,

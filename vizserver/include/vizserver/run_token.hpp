@@ -18,13 +18,13 @@ using RunToken = std::array<std::uint8_t, kTokenBytes>;  // all zero: no token (
 
 inline constexpr const char* kTokenVariable = "L2_VIZ_TOKEN";
 
-// 16 bytes from the kernel's random source. Throws VizError if it cannot be read.
+// 16 bytes from the kernel's random source. Throws NetError if it cannot be read.
 RunToken new_run_token();
 // 32 lowercase hex digits.
 std::string token_text(const RunToken& token);
 // The token written as 32 hex digits, or nullopt.
 std::optional<RunToken> parse_token(std::string_view text);
-// L2_VIZ_TOKEN from this process's environment; all zero when it is not set. Throws VizError
+// L2_VIZ_TOKEN from this process's environment; all zero when it is not set. Throws NetError
 // naming the variable when it is set but not 32 hex digits.
 RunToken token_from_environment();
 // Compared in time independent of where they differ, so timing does not reveal the token.

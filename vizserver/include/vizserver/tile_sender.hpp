@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "base/socket.hpp"
 #include "vizserver/run_token.hpp"
-#include "vizserver/socket.hpp"
 #include "vizserver/tile_delta.hpp"
 #include "vizserver/wire.hpp"
 
@@ -37,7 +37,7 @@ struct SenderOptions {
 
 class TileSender {
  public:
-  // Connects, says HELLO and waits for WELCOME. Throws VizError: unreachable server, or the
+  // Connects, says HELLO and waits for WELCOME. Throws NetError: unreachable server, or the
   // server's refusal (wrong display count or token, pipeserver id taken or out of range).
   static TileSender connect(const std::string& host, std::uint16_t port, int pipeserver_id,
                             int display_count, SenderOptions options = {});
@@ -45,12 +45,12 @@ class TileSender {
   // Sends one tile: h rows of w RGB pixels, row r starting at rgb + r * stride (stride in
   // bytes, so a tile inside a bigger framebuffer goes out row span by row span, uncopied); a
   // DEPTH tile's rows are 2w pixels, its depth right after its colour as packed (spec §7).
-  // Throws std::invalid_argument for sides outside 1..4095, VizError if the server is gone.
+  // Throws std::invalid_argument for sides outside 1..4095, NetError if the server is gone.
   void send_tile(std::uint32_t frame, const TileTarget& tile, const std::uint8_t* rgb,
                  std::size_t stride);
   // This pipeserver's part of `frame` is complete: tiles_sent tiles went out for it.
   void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent);
-  // Blocks until the server has swapped `frame` (or a later one). Throws VizError on timeout,
+  // Blocks until the server has swapped `frame` (or a later one). Throws NetError on timeout,
   // on an ERROR from the server (its text included) or when the server is gone.
   void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout);
 
@@ -64,7 +64,7 @@ class TileSender {
   TileSender(Fd fd, std::string peer, int pipeserver_id, SenderOptions options);
   // Says HELLO and reads until WELCOME. False when the server closed without a word first.
   bool say_hello(int display_count);
-  // Reads one server message and records it. Throws VizError on ERROR (text kept) or EOF.
+  // Reads one server message and records it. Throws NetError on ERROR (text kept) or EOF.
   void read_message(Clock::time_point deadline, const char* waiting_for);
   void send(std::span<const iovec> parts);
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -20,6 +21,9 @@
 #include "vizserver/run_token.hpp"
 
 namespace l2::viz {
+
+// The clock of every deadline on the viz path's sockets (base/socket.hpp).
+using Clock = std::chrono::steady_clock;
 
 inline constexpr std::uint32_t kMagic = 0x5A56324C;  // bytes "L2VZ" on the wire
 inline constexpr std::uint16_t kVersion = 2;         // 2: HELLO carries the run token

@@ -25,11 +25,11 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "base/socket.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
 #include "vizserver/frame_assembler.hpp"
 #include "vizserver/run_token.hpp"
-#include "vizserver/socket.hpp"
 
 namespace l2::viz {
 
@@ -58,7 +58,7 @@ struct ServerShared;  // what it publishes to callers, under a mutex
 
 class CompositingServer {
  public:
-  // Binds and listens (throws VizError); no thread runs until start().
+  // Binds and listens (throws NetError); no thread runs until start().
   explicit CompositingServer(ServerOptions options);
   ~CompositingServer();  // stop()
   CompositingServer(const CompositingServer&) = delete;
@@ -78,7 +78,7 @@ class CompositingServer {
   // start().
   void lose_pipeserver(int pipeserver);
 
-  // The displays of `frame` once it is swapped. Throws VizError when the run failed (the
+  // The displays of `frame` once it is swapped. Throws NetError when the run failed (the
   // failure line), every pipeserver left without sending it, it is older than the recent
   // frames (recent_frames), or `timeout` passed.
   FramePtr wait_frame(std::uint32_t frame, std::chrono::milliseconds timeout);

@@ -16,18 +16,24 @@
 #include <thread>
 
 #include "base/result.hpp"
+#include "base/socket.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_stream.hpp"
 #include "vizserver/picture_pool.hpp"
-#include "vizserver/socket.hpp"
 
 namespace l2::viz {
+
+// The socket names l2wall/src/vizserver_process.cpp still spells in this namespace, from before
+// the TCP helpers moved to base/socket.hpp (namespace l2); to go once it spells them there.
+using VizError = NetError;
+using l2::listen_tcp;
+using l2::local_port;
 
 // Waits up to `timeout` for a connection on `listener`; an empty Fd if none came. Short
 // timeouts let the caller check on the server process in between.
 Fd accept_within(const Fd& listener, std::chrono::milliseconds timeout);
 
-// Reads the first message of a display stream, which must be LISTENING. Throws VizError naming
+// Reads the first message of a display stream, which must be LISTENING. Throws NetError naming
 // `peer` (ERROR text included, e.g. the server could not bind its port).
 Listening read_listening(int fd, Clock::time_point deadline, const std::string& peer);
 
@@ -44,7 +50,7 @@ class DisplayWatcher {
   DisplayWatcher& operator=(const DisplayWatcher&) = delete;
 
   // Frame `frame` once every display of it arrived; it and every older frame leave the stream.
-  // nullptr if it did not arrive within `timeout`. Throws VizError when the stream ended first
+  // nullptr if it did not arrive within `timeout`. Throws NetError when the stream ended first
   // (the server's ERROR text, or how the connection closed), broke the protocol, or went past
   // `frame` without it.
   FramePtr take(std::uint32_t frame, std::chrono::milliseconds timeout);
@@ -55,7 +61,7 @@ class DisplayWatcher {
   bool ended_with_error_message() const;
 
   // Tells the server that pipeserver `pipeserver` is gone (LOST; a server started with
-  // --survive-loss stops waiting for it). Throws VizError when the stream cannot take it.
+  // --survive-loss stops waiting for it). Throws NetError when the stream cannot take it.
   void send_lost(std::uint32_t pipeserver);
 
  private:

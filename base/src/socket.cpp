@@ -1,4 +1,4 @@
-#include "vizserver/socket.hpp"
+#include "base/socket.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -20,8 +20,12 @@
 #include <thread>
 #include <vector>
 
-namespace l2::viz {
+#include "base/result.hpp"
+
+namespace l2 {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 std::string err_text(int e) {
   return std::strerror(e);
@@ -41,7 +45,7 @@ AddrInfoPtr resolve(const std::string& host, std::uint16_t port, bool passive) {
   const std::string service = std::to_string(port);
   const int rc = getaddrinfo(host.empty() ? nullptr : host.c_str(), service.c_str(), &hints, &res);
   if (rc != 0) {
-    throw VizError(fmt::format("cannot resolve host '{}': {}", host, gai_strerror(rc)));
+    throw NetError(fmt::format("cannot resolve host '{}': {}", host, gai_strerror(rc)));
   }
   return AddrInfoPtr(res);
 }
@@ -59,7 +63,7 @@ bool wait_for(int fd, short events, Clock::time_point deadline) {
     const int rc = ::poll(&p, 1, ms_until(deadline));
     if (rc > 0) return true;
     if (rc == 0) return false;
-    if (errno != EINTR) throw VizError(fmt::format("poll failed: {}", err_text(errno)));
+    if (errno != EINTR) throw NetError(fmt::format("poll failed: {}", err_text(errno)));
   }
 }
 
@@ -126,7 +130,7 @@ Fd listen_tcp(const std::string& host, std::uint16_t port) {
     }
     last_errno = errno;
   }
-  throw VizError(fmt::format("cannot listen on {}:{}: {}", host, port, err_text(last_errno)));
+  throw NetError(fmt::format("cannot listen on {}:{}: {}", host, port, err_text(last_errno)));
 }
 
 std::uint16_t local_port(int fd) {
@@ -190,7 +194,7 @@ Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::millise
     }
     // Refused: the server is probably still starting. Anything else will not get better.
     if (last.error != ECONNREFUSED || Clock::now() >= deadline) {
-      throw VizError(fmt::format("cannot connect to {} {}:{} within {} ms: {}", what, host, port,
+      throw NetError(fmt::format("cannot connect to {} {}:{} within {} ms: {}", what, host, port,
                                  timeout.count(), last.reason));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -210,14 +214,14 @@ void send_all(int fd, std::span<const iovec> parts, Clock::time_point deadline,
       if (errno == EINTR) continue;
       if (errno == EAGAIN || errno == EWOULDBLOCK) {
         if (!wait_for(fd, POLLOUT, deadline)) {
-          throw VizError(fmt::format("{}: send timed out (peer not reading)", peer));
+          throw NetError(fmt::format("{}: send timed out (peer not reading)", peer));
         }
         continue;
       }
       if (errno == EPIPE || errno == ECONNRESET) {
         throw ConnectionClosed(fmt::format("{} closed the connection", peer));
       }
-      throw VizError(fmt::format("{}: send failed: {}", peer, err_text(errno)));
+      throw NetError(fmt::format("{}: send failed: {}", peer, err_text(errno)));
     }
     // Advance past what went out; a part sent halfway keeps its tail.
     auto sent = static_cast<std::size_t>(n);
@@ -241,14 +245,14 @@ void recv_all(int fd, std::uint8_t* data, std::size_t n, Clock::time_point deadl
     if (r == 0) throw ConnectionClosed(fmt::format("{} closed the connection", peer));
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
-      if (!wait_for(fd, POLLIN, deadline)) throw VizError(fmt::format("{}: timed out", peer));
+      if (!wait_for(fd, POLLIN, deadline)) throw NetError(fmt::format("{}: timed out", peer));
       continue;
     }
     if (errno == ECONNRESET) {
       throw ConnectionClosed(fmt::format("{} closed the connection", peer));
     }
-    throw VizError(fmt::format("{}: receive failed: {}", peer, err_text(errno)));
+    throw NetError(fmt::format("{}: receive failed: {}", peer, err_text(errno)));
   }
 }
 
-}  // namespace l2::viz
+}  // namespace l2

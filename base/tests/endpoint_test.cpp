@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "vizserver/socket.hpp"
+#include "base/socket.hpp"
 
-namespace l2::viz {
+namespace l2 {
 namespace {
 
 TEST(Endpoint, HostIsEverythingBeforeTheLastColon) {
@@ -39,4 +39,4 @@ TEST(Endpoint, AnythingButOnePortInRangeIsRefusedByValue) {
 }
 
 }  // namespace
-}  // namespace l2::viz
+}  // namespace l2
