@@ -1,4 +1,4 @@
-#include "frame_files.hpp"
+#include "lightning2_emu/frame_files.hpp"
 
 #include <fmt/format.h>
 

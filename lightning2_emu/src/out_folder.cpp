@@ -1,4 +1,4 @@
-#include "out_folder.hpp"
+#include "lightning2_emu/out_folder.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "report_json.hpp"
+#include "lightning2_emu/report_json.hpp"
 
 #include <fmt/format.h>
 

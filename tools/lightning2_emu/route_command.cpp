@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "frame_files.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "lightning2_emu/frame_files.hpp"
+#include "lightning2_emu/out_folder.hpp"
+#include "lightning2_emu/report_json.hpp"
 #include "lightning2_emu/router.hpp"
-#include "out_folder.hpp"
-#include "report_json.hpp"
 
 namespace l2 {
 

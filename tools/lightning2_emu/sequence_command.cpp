@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "frame_files.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
-#include "out_folder.hpp"
-#include "report_json.hpp"
+#include "lightning2_emu/frame_files.hpp"
+#include "lightning2_emu/out_folder.hpp"
+#include "lightning2_emu/report_json.hpp"
 #include "sequence_show.hpp"
 
 namespace l2 {

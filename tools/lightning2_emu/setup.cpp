@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
-#include "frame_files.hpp"
+#include "lightning2_emu/frame_files.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
 #include "tilelayout/wall_file.hpp"
 
