@@ -107,66 +107,63 @@ const char* kind_name(Kind kind) {
 }
 
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const Hello& m) {
-  auto out = message_start<24>(Kind::Hello);
-  put_u32(out.data() + 12, m.pipeserver_id);
-  put_u32(out.data() + 16, m.display_count);
-  std::copy(m.token.begin(), m.token.end(), out.begin() + 20);
-  return out;
+  MessageWriter<24> w(Kind::Hello);
+  return w.u32(m.pipeserver_id).u32(m.display_count).bytes(m.token).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Welcome& m) {
-  auto out = message_start<12>(Kind::Welcome);
-  put_u32(out.data() + 12, m.pipeserver_id);
-  put_u32(out.data() + 16, m.display_count);
-  put_u32(out.data() + 20, m.pipeserver_count);
-  return out;
+  MessageWriter<12> w(Kind::Welcome);
+  return w.u32(m.pipeserver_id).u32(m.display_count).u32(m.pipeserver_count).done();
 }
 
+namespace {
+
+// TILE's fixed part, which TILE_EXT and TILE_DELTA begin with.
+template <std::size_t Fixed>
+MessageWriter<Fixed>& tile_fields(MessageWriter<Fixed>& w, const TileHeader& m) {
+  return w.u32(m.frame)
+      .u32(m.display)
+      .u32(static_cast<std::uint32_t>(m.dx))
+      .u32(static_cast<std::uint32_t>(m.dy))
+      .u32(m.w)
+      .u32(m.h);
+}
+
+// TILE_EXT's fixed part, which TILE_DELTA shares.
+MessageWriter<32>& tile_ext_fields(MessageWriter<32>& w, const TileHeader& m) {
+  return tile_fields(w, m).u32(static_cast<std::uint32_t>(m.how)).u32(m.key);
+}
+
+}  // namespace
+
 std::array<std::uint8_t, kHeaderBytes + 24> encode(const TileHeader& m) {
-  auto out = message_start<24>(Kind::Tile, m.pixel_bytes());
-  std::uint8_t* p = out.data() + 12;
-  put_u32(p, m.frame);
-  put_u32(p + 4, m.display);
-  put_u32(p + 8, static_cast<std::uint32_t>(m.dx));
-  put_u32(p + 12, static_cast<std::uint32_t>(m.dy));
-  put_u32(p + 16, m.w);
-  put_u32(p + 20, m.h);
-  return out;
+  MessageWriter<24> w(Kind::Tile, m.pixel_bytes());
+  return tile_fields(w, m).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 32> encode_ext(const TileHeader& m) {
-  auto out = message_start<32>(Kind::TileExt, m.pixel_bytes());
-  const auto tile = encode(m);
-  std::copy(tile.begin() + kHeaderBytes, tile.end(), out.begin() + kHeaderBytes);
-  put_u32(out.data() + 12 + 24, static_cast<std::uint32_t>(m.how));
-  put_u32(out.data() + 12 + 28, m.key);
-  return out;
+  MessageWriter<32> w(Kind::TileExt, m.pixel_bytes());
+  return tile_ext_fields(w, m).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 32> encode_delta(const TileHeader& m,
                                                          std::size_t encoded_bytes) {
-  auto out = encode_ext(m);
-  put_u16(out.data() + 6, static_cast<std::uint16_t>(Kind::TileDelta));
-  put_u32(out.data() + 8, static_cast<std::uint32_t>(32 + encoded_bytes));
-  return out;
+  MessageWriter<32> w(Kind::TileDelta, encoded_bytes);
+  return tile_ext_fields(w, m).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const FrameDone& m) {
-  auto out = message_start<12>(Kind::FrameDone);
-  put_u32(out.data() + 12, m.pipeserver_id);
-  put_u32(out.data() + 16, m.frame);
-  put_u32(out.data() + 20, m.tile_count);
-  return out;
+  MessageWriter<12> w(Kind::FrameDone);
+  return w.u32(m.pipeserver_id).u32(m.frame).u32(m.tile_count).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 4> encode(const Swapped& m) {
-  auto out = message_start<4>(Kind::Swapped);
-  put_u32(out.data() + 12, m.frame);
-  return out;
+  MessageWriter<4> w(Kind::Swapped);
+  return w.u32(m.frame).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes> encode_error_header(std::size_t text_bytes) {
-  return message_start<0>(Kind::Error, std::min(text_bytes, kMaxErrorText));
+  return MessageWriter<0>(Kind::Error, std::min(text_bytes, kMaxErrorText)).done();
 }
 
 Result<Header> decode_header(std::span<const std::uint8_t, kHeaderBytes> b, Protocol protocol) {
@@ -210,33 +207,59 @@ void MessageHead::clear() {
 }
 
 Hello decode_hello(std::span<const std::uint8_t> f) {
-  Hello h{get_u32(f.data()), get_u32(f.data() + 4), {}};
-  std::copy(f.begin() + 8, f.begin() + 8 + kTokenBytes, h.token.begin());
+  FieldReader r(f);
+  Hello h{r.u32(), r.u32(), {}};
+  const std::span<const std::uint8_t> token = r.bytes(kTokenBytes);
+  std::copy(token.begin(), token.end(), h.token.begin());
   return h;
 }
 Welcome decode_welcome(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
+  FieldReader r(f);
+  Welcome w;
+  w.pipeserver_id = r.u32();
+  w.display_count = r.u32();
+  w.pipeserver_count = r.u32();
+  return w;
 }
+
+namespace {
+
+// TILE's fixed part, which TILE_EXT begins with.
+TileHeader tile_fields(FieldReader& r) {
+  TileHeader t;
+  t.frame = r.u32();
+  t.display = r.u32();
+  t.dx = r.i32();
+  t.dy = r.i32();
+  t.w = r.u32();
+  t.h = r.u32();
+  return t;
+}
+
+}  // namespace
+
 TileHeader decode_tile(std::span<const std::uint8_t> f) {
-  const std::uint8_t* p = f.data();
-  return {get_u32(p),
-          get_u32(p + 4),
-          static_cast<std::int32_t>(get_u32(p + 8)),
-          static_cast<std::int32_t>(get_u32(p + 12)),
-          get_u32(p + 16),
-          get_u32(p + 20)};
+  FieldReader r(f);
+  return tile_fields(r);
 }
 TileHeader decode_tile_ext(std::span<const std::uint8_t> f) {
-  TileHeader t = decode_tile(f);
-  t.how = static_cast<TileKind>(get_u32(f.data() + 24));
-  t.key = get_u32(f.data() + 28);
+  FieldReader r(f);
+  TileHeader t = tile_fields(r);
+  t.how = static_cast<TileKind>(r.u32());
+  t.key = r.u32();
   return t;
 }
 FrameDone decode_frame_done(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
+  FieldReader r(f);
+  FrameDone d;
+  d.pipeserver_id = r.u32();
+  d.frame = r.u32();
+  d.tile_count = r.u32();
+  return d;
 }
 Swapped decode_swapped(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data())};
+  FieldReader r(f);
+  return {r.u32()};
 }
 
 Status validate(const TileHeader& t, std::uint32_t payload_bytes) {

@@ -9,12 +9,14 @@
 // kinds and MessageHead, the one reader of it.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include "base/little_endian.hpp"
 #include "base/result.hpp"
@@ -164,16 +166,72 @@ Status validate(const TileHeader& t, std::uint32_t payload_bytes);
 // tile's changes can be (max_frame_delta_bytes), checked before anything is allocated.
 Status validate_delta(const TileHeader& t, std::uint32_t payload_bytes);
 
-// A message's header and a zeroed fixed part of `Fixed` bytes; the payload length counts
-// `extra` bytes (pixels, text) the sender sends after it.
+// Writes one message: its header, then the fields of its fixed part of `Fixed` bytes in the
+// order they travel, each after the last, so that no encoder counts an offset by hand. The
+// payload length counts `extra` bytes (pixels, text) the sender sends after the fixed part.
+// A field past the fixed part, or a fixed part left short at done(), is a bug in the encoder:
+// std::logic_error.
+//
+//   MessageWriter<4> w(Kind::Swapped);
+//   const auto bytes = w.u32(frame).done();
 template <std::size_t Fixed>
-std::array<std::uint8_t, kHeaderBytes + Fixed> message_start(Kind kind, std::size_t extra = 0) {
-  std::array<std::uint8_t, kHeaderBytes + Fixed> out{};
-  put_u32(out.data(), kMagic);
-  put_u16(out.data() + 4, kVersion);
-  put_u16(out.data() + 6, static_cast<std::uint16_t>(kind));
-  put_u32(out.data() + 8, static_cast<std::uint32_t>(Fixed + extra));
-  return out;
-}
+class MessageWriter {
+ public:
+  using Bytes = std::array<std::uint8_t, kHeaderBytes + Fixed>;
+
+  explicit MessageWriter(Kind kind, std::size_t extra = 0) {
+    u32(kMagic).u16(kVersion).u16(static_cast<std::uint16_t>(kind));
+    u32(static_cast<std::uint32_t>(Fixed + extra));
+  }
+  MessageWriter& u16(std::uint16_t v) {
+    put_u16(take(2), v);
+    return *this;
+  }
+  MessageWriter& u32(std::uint32_t v) {
+    put_u32(take(4), v);
+    return *this;
+  }
+  MessageWriter& bytes(std::span<const std::uint8_t> b) {
+    std::copy(b.begin(), b.end(), take(b.size()));
+    return *this;
+  }
+  Bytes done() const {
+    if (at_ != out_.size()) throw std::logic_error("viz message: fixed part written short");
+    return out_;
+  }
+
+ private:
+  std::uint8_t* take(std::size_t n) {
+    if (out_.size() - at_ < n) throw std::logic_error("viz message: field past the fixed part");
+    std::uint8_t* at = out_.data() + at_;
+    at_ += n;
+    return at;
+  }
+
+  Bytes out_{};
+  std::size_t at_ = 0;
+};
+
+// Reads the fields of a received fixed part in the order they travel, the decoders' side of
+// MessageWriter. The caller has checked the fixed part's size (decode_header); a field past it
+// is a bug in the decoder: std::logic_error.
+class FieldReader {
+ public:
+  explicit FieldReader(std::span<const std::uint8_t> fixed) : fixed_(fixed) {}
+  std::uint32_t u32() { return get_u32(take(4).data()); }
+  std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
+  std::span<const std::uint8_t> bytes(std::size_t n) { return take(n); }
+
+ private:
+  std::span<const std::uint8_t> take(std::size_t n) {
+    if (fixed_.size() - at_ < n) throw std::logic_error("viz message: field past the fixed part");
+    const std::span<const std::uint8_t> field = fixed_.subspan(at_, n);
+    at_ += n;
+    return field;
+  }
+
+  std::span<const std::uint8_t> fixed_;
+  std::size_t at_ = 0;
+};
 
 }  // namespace l2::viz
