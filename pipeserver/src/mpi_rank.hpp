@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "cluster/mpi_dvi_link.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "vizserver/tile_delta.hpp"

@@ -25,10 +25,10 @@
 #include "tilelayout/wall_file.hpp"
 
 #ifdef L2_HAVE_MPI
-#include "cluster/mpi_control_channel.hpp"
-#include "cluster/mpi_session.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
+#include "mpi_link/mpi_control_channel.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "mpi_rank.hpp"
 #endif
 

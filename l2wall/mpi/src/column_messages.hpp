@@ -17,8 +17,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "cluster/mpi_wire.hpp"
 #include "l2wall/frame_stamp.hpp"
+#include "mpi_link/mpi_wire.hpp"
 #include "swap_lock_check.hpp"
 
 namespace l2 {

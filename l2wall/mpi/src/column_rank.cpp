@@ -11,14 +11,14 @@
 #include <optional>
 #include <vector>
 
-#include "cluster/mpi_dvi_link.hpp"
-#include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
 #include "column_show.hpp"
 #include "l2wall/frame_stamp.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/swap_group.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
+#include "mpi_link/mpi_wire.hpp"
 #include "vizserver/frame_assembler.hpp"
 #include "vizserver/tile_delta.hpp"
 

@@ -10,12 +10,12 @@
 #include <thread>
 #include <utility>
 
-#include "cluster/mpi_dvi_link.hpp"
-#include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
 #include "l2wall/live_balance.hpp"
 #include "l2wall/local_lightning2.hpp"
 #include "l2wall/run_fault.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 namespace {

@@ -11,13 +11,13 @@
 #include <map>
 #include <vector>
 
-#include "cluster/mpi_session.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
 #include "dvi_link/refresh_clock.hpp"
 #include "l2wall/display_path.hpp"
 #include "l2wall/live_run.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "swap_lock_check.hpp"
 
 namespace l2 {

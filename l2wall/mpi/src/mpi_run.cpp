@@ -8,17 +8,17 @@
 #include <cstring>
 #include <filesystem>
 
-#include "cluster/busy_polling.hpp"
-#include "cluster/mpi_control_channel.hpp"
-#include "cluster/mpi_ready_channel.hpp"
-#include "cluster/mpi_session.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
 #include "image/folders.hpp"
 #include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
 #include "mpi_dvi_path.hpp"
+#include "mpi_link/busy_polling.hpp"
+#include "mpi_link/mpi_control_channel.hpp"
+#include "mpi_link/mpi_ready_channel.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "mpi_viz_path.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"

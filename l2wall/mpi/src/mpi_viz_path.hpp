@@ -8,8 +8,8 @@
 #include <map>
 #include <vector>
 
-#include "cluster/rank_map.hpp"
 #include "l2wall/display_path.hpp"
+#include "mpi_link/rank_map.hpp"
 
 namespace l2 {
 

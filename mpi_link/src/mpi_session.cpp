@@ -1,4 +1,4 @@
-#include "cluster/mpi_session.hpp"
+#include "mpi_link/mpi_session.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -24,8 +24,8 @@
 #include "base/fd.hpp"
 #include "base/result.hpp"
 #include "base/socket.hpp"
-#include "cluster/busy_polling.hpp"
-#include "cluster/coordinator_address.hpp"
+#include "mpi_link/busy_polling.hpp"
+#include "mpi_link/coordinator_address.hpp"
 
 namespace l2 {
 namespace {

@@ -1,11 +1,11 @@
-#include "cluster/mpi_control_channel.hpp"
+#include "mpi_link/mpi_control_channel.hpp"
 
 #include <fmt/format.h>
 
 #include <thread>
 #include <vector>
 
-#include "cluster/mpi_wire.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 

@@ -1,4 +1,4 @@
-#include "cluster/mpi_ready_channel.hpp"
+#include "mpi_link/mpi_ready_channel.hpp"
 
 #include <mpi.h>
 
@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "cluster/mpi_wire.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 namespace {

@@ -1,4 +1,4 @@
-#include "cluster/busy_polling.hpp"
+#include "mpi_link/busy_polling.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "balance/control_channel.hpp"
-#include "cluster/mpi_outbox.hpp"
+#include "mpi_link/mpi_outbox.hpp"
 
 namespace l2 {
 

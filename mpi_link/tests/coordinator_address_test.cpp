@@ -1,5 +1,5 @@
 // Which of the coordinator's addresses a rank on another host is offered (pure logic).
-#include "cluster/coordinator_address.hpp"
+#include "mpi_link/coordinator_address.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "cluster/mpi_outbox.hpp"
+#include "mpi_link/mpi_outbox.hpp"
 #include "sync_backchannel/ready_line.hpp"
 
 namespace l2 {

@@ -1,5 +1,5 @@
 // The coordinator's warning of a machine given more ranks than cores whose MPI busy-polls.
-#include "cluster/busy_polling.hpp"
+#include "mpi_link/busy_polling.hpp"
 
 #include <gtest/gtest.h>
 

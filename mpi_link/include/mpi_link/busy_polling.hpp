@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "cluster/mpi_session.hpp"
+#include "mpi_link/mpi_session.hpp"
 
 namespace l2 {
 

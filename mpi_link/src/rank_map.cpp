@@ -1,4 +1,4 @@
-#include "cluster/rank_map.hpp"
+#include "mpi_link/rank_map.hpp"
 
 #include <fmt/format.h>
 

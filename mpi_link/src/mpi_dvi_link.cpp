@@ -1,4 +1,4 @@
-#include "cluster/mpi_dvi_link.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cluster/mpi_wire.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 namespace {

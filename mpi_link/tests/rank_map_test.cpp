@@ -1,5 +1,5 @@
 // The rank roles of an MPI run, from rank order, on the walls the tests run over MPI.
-#include "cluster/rank_map.hpp"
+#include "mpi_link/rank_map.hpp"
 
 #include <gtest/gtest.h>
 

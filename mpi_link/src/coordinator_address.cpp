@@ -1,4 +1,4 @@
-#include "cluster/coordinator_address.hpp"
+#include "mpi_link/coordinator_address.hpp"
 
 #include <arpa/inet.h>
 #include <fmt/format.h>

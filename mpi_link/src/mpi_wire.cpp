@@ -1,4 +1,4 @@
-#include "cluster/mpi_wire.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 #include <fmt/format.h>
 #include <mpi.h>

@@ -1,4 +1,4 @@
-#include "cluster/mpi_outbox.hpp"
+#include "mpi_link/mpi_outbox.hpp"
 
 namespace l2 {
 
