@@ -17,7 +17,7 @@
 #include "sync_backchannel/back_channel.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 namespace {

@@ -17,7 +17,7 @@
 #include "pipeserver/scene.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "command_line/printable.hpp"
-#include "vizserver/message_read.hpp"
+#include "viz_link/message_read.hpp"
 
 namespace l2::viz {
 namespace {

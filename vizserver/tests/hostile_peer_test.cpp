@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "raw_peer.hpp"
+#include "viz_link/tile_sender.hpp"
+#include "viz_link/wire.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/tile_sender.hpp"
-#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 namespace {

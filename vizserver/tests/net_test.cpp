@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "raw_peer.hpp"
+#include "viz_link/tile_sender.hpp"
+#include "viz_link/wire.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/tile_sender.hpp"
-#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 namespace {

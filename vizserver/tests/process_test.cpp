@@ -14,9 +14,9 @@
 
 #include "base/child_process.hpp"
 #include "image/png_io.hpp"
+#include "viz_link/tile_sender.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/tile_sender.hpp"
 
 namespace l2::viz {
 namespace {

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "base/socket.hpp"
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz::testing {
 

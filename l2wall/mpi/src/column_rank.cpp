@@ -19,8 +19,8 @@
 #include "lightning2_emu/wall_emulator.hpp"
 #include "mpi_link/mpi_dvi_link.hpp"
 #include "mpi_link/mpi_wire.hpp"
+#include "viz_link/tile_delta.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/tile_delta.hpp"
 
 namespace l2 {
 namespace {

@@ -28,8 +28,8 @@
 #include "base/socket.hpp"
 #include "image/rgb_image.hpp"
 #include "strip_headers/scanline_parser.hpp"
+#include "viz_link/run_token.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/run_token.hpp"
 
 namespace l2::viz {
 

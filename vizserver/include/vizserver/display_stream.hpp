@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <span>
 
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz {
 

@@ -20,7 +20,7 @@
 #include <string>
 #include "base/little_endian.hpp"
 #include "base/result.hpp"
-#include "vizserver/run_token.hpp"
+#include "viz_link/run_token.hpp"
 
 namespace l2::viz {
 

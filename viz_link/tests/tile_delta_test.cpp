@@ -1,7 +1,7 @@
 // Tiles as what changed since their last frame (tile_delta.hpp): the pixels arrive byte for
 // byte, frame after frame, through tiles that come and go; a peer cannot make the receiver hold
 // more than its budget or apply a message that does not decode.
-#include "vizserver/tile_delta.hpp"
+#include "viz_link/tile_delta.hpp"
 
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@
 
 #include "base/result.hpp"
 #include "dvi_link/frame_delta.hpp"
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz {
 

@@ -1,4 +1,4 @@
-#include "vizserver/tile_delta.hpp"
+#include "viz_link/tile_delta.hpp"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "base/socket.hpp"
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz {
 

@@ -1,4 +1,4 @@
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 #include <fmt/format.h>
 
@@ -9,9 +9,9 @@
 #include <thread>
 #include <vector>
 
-#include "vizserver/message_read.hpp"
+#include "viz_link/message_read.hpp"
 
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz {
 namespace {

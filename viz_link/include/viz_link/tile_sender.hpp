@@ -10,9 +10,9 @@
 #include <string>
 
 #include "base/socket.hpp"
-#include "vizserver/run_token.hpp"
-#include "vizserver/tile_delta.hpp"
-#include "vizserver/wire.hpp"
+#include "viz_link/run_token.hpp"
+#include "viz_link/tile_delta.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz {
 

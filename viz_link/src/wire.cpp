@@ -1,4 +1,4 @@
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 #include <fmt/format.h>
 

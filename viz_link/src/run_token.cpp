@@ -1,4 +1,4 @@
-#include "vizserver/run_token.hpp"
+#include "viz_link/run_token.hpp"
 
 #include <sys/random.h>
 

@@ -1,4 +1,4 @@
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

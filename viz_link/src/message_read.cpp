@@ -1,4 +1,4 @@
-#include "vizserver/message_read.hpp"
+#include "viz_link/message_read.hpp"
 
 #include <fmt/format.h>
 
