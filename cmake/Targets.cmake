@@ -101,14 +101,15 @@ function(l2_command_line_files target)
   endif()
 endfunction()
 
-# A library links only the project's libraries defined before it: parts point down, so the
-# order of the parts in the top-level CMakeLists.txt is an order in which each can be read
-# knowing only those before it. Programs and tests, which nothing links, may use any part.
-function(l2_check_links_defined name)
+# A library or program links only the project's libraries defined before it: parts point down,
+# so the order of the parts in the top-level CMakeLists.txt is an order in which each can be
+# read knowing only those before it, and a folder's program never needs a part above it
+# (tools/ holds the programs that do). Tests, which nothing links, may use any part.
+function(l2_check_links_defined call name)
   foreach(item ${ARGN})
     if(item MATCHES "^l2_" AND NOT TARGET ${item})
-      message(FATAL_ERROR "l2_library(${name}) links ${item}, which is not defined yet: a library "
-                          "may link only parts before its own (the list of parts in "
+      message(FATAL_ERROR "${call}(${name}) links ${item}, which is not defined yet: a ${call} "
+                          "may link only its own part and those before it (the list of parts in "
                           "CMakeLists.txt)")
     endif()
   endforeach()
@@ -129,7 +130,7 @@ endfunction()
 function(l2_library name)
   cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
                         "SOURCES;COMMAND_LINE;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
-  l2_check_links_defined(${name} ${ARG_LINKS})
+  l2_check_links_defined(l2_library ${name} ${ARG_LINKS})
   l2_public_includes(ARG_INCLUDES ${ARG_INCLUDES})
   if(ARG_INTERFACE)
     add_library(${name} INTERFACE)
@@ -167,6 +168,7 @@ endfunction()
 
 function(l2_program name)
   cmake_parse_arguments(ARG "" "" "SOURCES;COMMAND_LINE;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  l2_check_links_defined(l2_program ${name} ${ARG_LINKS})
   add_executable(${name} ${ARG_SOURCES} ${ARG_COMMAND_LINE})
   l2_command_line_files(${name} ${ARG_COMMAND_LINE})
   if(ARG_PRIVATE_INCLUDES)
