@@ -16,8 +16,9 @@
 # LINKS is target_link_libraries' list: PUBLIC, PRIVATE and INTERFACE keywords as there, and
 # items before any keyword are PRIVATE (INTERFACE for an INTERFACE library).
 #
-# A static library's files are compiled together, up to 8 per unit (unity build): each unit
-# otherwise re-instantiates what fmt and the standard library leave pending. HOT keeps one
+# A static library's files are compiled together, up to 8 per unit (unity build, while
+# L2_UNITY_BUILD is on, the default): each unit otherwise re-instantiates what fmt and the
+# standard library leave pending. HOT keeps one
 # object per file: the emulator's hot path, whose objects a test disassembles one by one and
 # whose code the routing benchmark measures.
 #
@@ -100,14 +101,15 @@ function(l2_command_line_files target)
   endif()
 endfunction()
 
-# A library links only the project's libraries defined before it: parts point down, so the
-# order of the parts in the top-level CMakeLists.txt is an order in which each can be read
-# knowing only those before it. Programs and tests, which nothing links, may use any part.
-function(l2_check_links_defined name)
+# A library or program links only the project's libraries defined before it: parts point down,
+# so the order of the parts in the top-level CMakeLists.txt is an order in which each can be
+# read knowing only those before it, and a folder's program never needs a part above it
+# (tools/ holds the programs that do). Tests, which nothing links, may use any part.
+function(l2_check_links_defined call name)
   foreach(item ${ARGN})
     if(item MATCHES "^l2_" AND NOT TARGET ${item})
-      message(FATAL_ERROR "l2_library(${name}) links ${item}, which is not defined yet: a library "
-                          "may link only parts before its own (the list of parts in "
+      message(FATAL_ERROR "${call}(${name}) links ${item}, which is not defined yet: a ${call} "
+                          "may link only its own part and those before it (the list of parts in "
                           "CMakeLists.txt)")
     endif()
   endforeach()
@@ -128,7 +130,7 @@ endfunction()
 function(l2_library name)
   cmake_parse_arguments(ARG "INTERFACE;OBJECT;MODULE;HOT" ""
                         "SOURCES;COMMAND_LINE;INCLUDES;PRIVATE_INCLUDES;LINKS" ${ARGN})
-  l2_check_links_defined(${name} ${ARG_LINKS})
+  l2_check_links_defined(l2_library ${name} ${ARG_LINKS})
   l2_public_includes(ARG_INCLUDES ${ARG_INCLUDES})
   if(ARG_INTERFACE)
     add_library(${name} INTERFACE)
@@ -144,7 +146,7 @@ function(l2_library name)
   else()
     add_library(${name} STATIC ${ARG_SOURCES})
     if(NOT ARG_HOT)
-      set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+      set_target_properties(${name} PROPERTIES UNITY_BUILD ${L2_UNITY_BUILD})
     endif()
   endif()
   if(ARG_INCLUDES)
@@ -166,6 +168,7 @@ endfunction()
 
 function(l2_program name)
   cmake_parse_arguments(ARG "" "" "SOURCES;COMMAND_LINE;PRIVATE_INCLUDES;LINKS" ${ARGN})
+  l2_check_links_defined(l2_program ${name} ${ARG_LINKS})
   add_executable(${name} ${ARG_SOURCES} ${ARG_COMMAND_LINE})
   l2_command_line_files(${name} ${ARG_COMMAND_LINE})
   if(ARG_PRIVATE_INCLUDES)
@@ -194,7 +197,7 @@ function(l2_test name)
   l2_warnings(${name})
   target_compile_options(${name} PRIVATE ${l2_test_code_flags})
   target_precompile_headers(${name} REUSE_FROM l2_test_pch)
-  set_target_properties(${name} PROPERTIES UNITY_BUILD ON)
+  set_target_properties(${name} PROPERTIES UNITY_BUILD ${L2_UNITY_BUILD})
   l2_link(${name} PRIVATE ${ARG_LINKS})
   target_link_libraries(${name} PRIVATE GTest::gtest_main GTest::gmock fmt::fmt)
   add_test(NAME ${name} COMMAND ${name} --gtest_brief=1

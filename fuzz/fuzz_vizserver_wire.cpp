@@ -12,7 +12,7 @@
 
 #include "dvi_link/frame_delta.hpp"
 #include "fuzz_check.hpp"
-#include "vizserver/wire.hpp"
+#include "viz_link/wire.hpp"
 
 namespace {
 

@@ -45,7 +45,7 @@ while (($#)); do
     *) echo "balance-bench: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
-bench=$build/balance/balance_bench
+bench=$build/tools/balance_bench/balance_bench
 ((plot_only)) || [[ -x $bench ]] || { echo "balance-bench: $bench not built (cmake --build --preset default --target balance_bench)" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "balance-bench: gnuplot not installed (scripts/install-deps.sh)" >&2; exit 1; }
 mkdir -p "$out"

@@ -37,7 +37,7 @@ png=${png:-$out/fig9.png}
 l2wall=$build/l2wall/l2wall
 pipeserver=$build/pipeserver/pipeserver
 vizserver=$build/vizserver/vizserver
-tilelayout=$build/tilelayout/tilelayout
+tilelayout=$build/tools/tilelayout/tilelayout
 for exe in "$l2wall" "$pipeserver" "$vizserver" "$tilelayout"; do
   [[ -x $exe ]] || { echo "fig9: $exe not built (cmake --build --preset default)" >&2; exit 1; }
 done

@@ -11,7 +11,7 @@ B=build/default
 OUT=${1:-out/default-wall}
 
 echo "== the plan of the default wall (pictures in $OUT/layout)"
-$B/tilelayout/tilelayout --png "$OUT/layout"
+$B/tools/tilelayout/tilelayout --png "$OUT/layout"
 echo "== the live wall"
 $B/l2wall/l2wall run --out "$OUT"
 echo "== pictures: $OUT/layout/wall.png, $OUT/frame-*/wall.png, $OUT/frame-*/display-*.png"

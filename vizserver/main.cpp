@@ -62,7 +62,7 @@ void put_frame(Outputs& out, const l2::viz::ComposedFrame& frame) {
   std::fflush(out.log);
 }
 
-// Hands `frames` swapped frames to `out`, in order. Throws VizError when the run fails first
+// Hands `frames` swapped frames to `out`, in order. Throws NetError when the run fails first
 // (the server's failure line), every pipeserver leaves early, or the watcher goes away.
 void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Outputs& out,
            int frames) {
@@ -80,15 +80,14 @@ void serve(l2::viz::CompositingServer& server, l2::viz::SwapQueue& queue, Output
     }
     // Whoever watches our displays has gone (l2wall ended): there is no one to compose for.
     if (out.stream && out.stream->watcher_gone()) {
-      throw l2::viz::VizError(
-          fmt::format("{}: the watcher closed the connection after {} of {} frames",
-                      out.stream->peer(), written, frames));
+      throw l2::NetError(fmt::format("{}: the watcher closed the connection after {} of {} frames",
+                                     out.stream->peer(), written, frames));
     }
     // The loop hands over its last frames before it ends: look again once it has ended.
     if (server.wait_finished(std::chrono::milliseconds(0)) && queue.empty()) {
       if (const l2::Status failure = server.failure(); !failure.ok())
-        throw l2::viz::VizError(failure.reason());
-      throw l2::viz::VizError(
+        throw l2::NetError(failure.reason());
+      throw l2::NetError(
           fmt::format("every pipeserver disconnected after {} of {} frames", written, frames));
     }
   }
@@ -151,7 +150,7 @@ int main(int argc, char** argv) {
                  "HOST:PORT of a watcher (l2wall run) to connect to: LISTENING with the bound "
                  "port first, then every swapped frame's display pictures, ERROR before a "
                  "failed run exits (docs/vizserver-protocol.md)")
-      ->check(l2::viz::endpoint_error, "HOST:PORT");
+      ->check(l2::endpoint_error, "HOST:PORT");
   bool survive_loss = false;
   app.add_flag("--survive-loss", survive_loss,
                "a pipeserver whose connection closes early does not end the run: the watcher "
@@ -193,7 +192,7 @@ int main(int argc, char** argv) {
     options.token = l2::viz::token_from_environment();
     // The stream first, so that even a port we cannot bind reaches the watcher as ERROR.
     if (!stream_address.empty()) {
-      const l2::viz::Endpoint stream = l2::viz::parse_endpoint(stream_address);
+      const l2::Endpoint stream = l2::parse_endpoint(stream_address);
       out.stream.emplace(l2::viz::DisplaySender::connect(stream.host, stream.port));
     }
     // Before listening: a folder that cannot be made failed only at the first swap, after the

@@ -7,8 +7,8 @@
 
 #include "displays/monitor_wall.hpp"
 #include "displays/wall_window.hpp"
+#include "displays/x_client.hpp"
 #include "screen_fixture.hpp"
-#include "x_client.hpp"
 
 namespace l2 {
 namespace {

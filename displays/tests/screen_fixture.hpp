@@ -5,9 +5,9 @@
 
 #include <memory>
 
+#include "displays/xvfb_server.hpp"
 #include "image/rgb_image.hpp"
 #include "tilelayout/wall.hpp"
-#include "xvfb_server.hpp"
 
 namespace l2::testing {
 

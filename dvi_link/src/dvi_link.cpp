@@ -55,7 +55,7 @@ static_assert(offsetof(LinkHeader, stride) == 24 && offsetof(LinkHeader, slot_pi
 namespace {
 
 using detail::LinkHeader;
-using detail::Mapping;
+using detail::Segment;
 
 static_assert(std::atomic<std::uint32_t>::is_always_lock_free);
 static_assert(std::atomic<std::int32_t>::is_always_lock_free);
@@ -95,7 +95,7 @@ int checked_slot(const std::string& name, std::uint32_t value, std::string_view 
 }
 
 // Where slot `slot`'s pixels start.
-std::uint8_t* slot_pixels(const Mapping& map, int slot, std::uint64_t pitch) {
+std::uint8_t* slot_pixels(const Segment& map, int slot, std::uint64_t pitch) {
   return map.bytes() + kHeaderBytes + static_cast<std::uint64_t>(slot) * pitch;
 }
 
@@ -105,12 +105,6 @@ bool process_alive(std::int32_t pid) {
 
 std::uint64_t slot_pitch(std::uint64_t frame_bytes) {
   return (frame_bytes + kSlotAlign - 1) / kSlotAlign * kSlotAlign;
-}
-
-Mapping map_fd(const std::string& name, int fd, std::size_t size) {
-  void* base = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
-  if (base == MAP_FAILED) fail_errno(name, "cannot map", errno);
-  return Mapping(base, size);
 }
 
 // Pid of the writer of an existing segment; -1 when it holds no complete DVI link header
@@ -123,9 +117,10 @@ std::int32_t existing_writer(const std::string& name) {
   if (::fstat(fd.get(), &st) != 0 || static_cast<std::uint64_t>(st.st_size) < kHeaderBytes) {
     return -1;
   }
-  Mapping map = map_fd(name, fd.get(), kHeaderBytes);
-  if (map.header().magic.load(std::memory_order_acquire) != kMagic) return -1;
-  return map.header().writer_pid.load();
+  Segment peek(name, Segment::Leaving::kNothing);
+  peek.map(fd.get(), kHeaderBytes);
+  if (peek.header().magic.load(std::memory_order_acquire) != kMagic) return -1;
+  return peek.header().writer_pid.load();
 }
 
 // Creates the segment exclusively; replaces one whose creator is dead.
@@ -153,20 +148,46 @@ int create_segment(const std::string& name) {
 
 namespace detail {
 
-Mapping::Mapping(Mapping&& other) noexcept
-    : base_(std::exchange(other.base_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+Segment::Segment(Segment&& other) noexcept
+    : name_(std::exchange(other.name_, {})),
+      leaving_(std::exchange(other.leaving_, Leaving::kNothing)),
+      base_(std::exchange(other.base_, nullptr)),
+      size_(std::exchange(other.size_, 0)) {}
 
-Mapping& Mapping::operator=(Mapping&& other) noexcept {
+Segment& Segment::operator=(Segment&& other) noexcept {
   if (this != &other) {
-    if (base_ != nullptr) ::munmap(base_, size_);
+    release();
+    name_ = std::exchange(other.name_, {});
+    leaving_ = std::exchange(other.leaving_, Leaving::kNothing);
     base_ = std::exchange(other.base_, nullptr);
     size_ = std::exchange(other.size_, 0);
   }
   return *this;
 }
 
-Mapping::~Mapping() {
+void Segment::map(int fd, std::size_t size) {
+  void* base = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  if (base == MAP_FAILED) fail_errno(name_, "cannot map", errno);
+  base_ = base;
+  size_ = size;
+}
+
+void Segment::release() noexcept {
+  switch (std::exchange(leaving_, Leaving::kNothing)) {
+    case Leaving::kNothing:
+      break;
+    case Leaving::kUnlink:
+      // Readers that still have the segment mapped keep reading it; the name is gone at once.
+      ::shm_unlink(name_.c_str());
+      break;
+    case Leaving::kDetach:
+      // Release: a later reader sees reader_slot as we left it.
+      header().reader_pid.store(0, std::memory_order_release);
+      break;
+  }
   if (base_ != nullptr) ::munmap(base_, size_);
+  base_ = nullptr;
+  size_ = 0;
 }
 
 }  // namespace detail
@@ -199,20 +220,14 @@ DviLinkWriter DviLinkWriter::create(const std::string& name, int width, int heig
 
   const Fd fd(create_segment(name));
   DviLinkWriter writer;
-  writer.name_ = name;  // from here on the destructor unlinks the segment on any error
+  // From here on the segment is unlinked on any error.
+  writer.segment_ = Segment(name, Segment::Leaving::kUnlink);
   if (::ftruncate(fd.get(), static_cast<off_t>(total)) != 0) {
-    const int error = errno;
-    writer.unlink();
-    fail_errno(name, fmt::format("cannot size to {} bytes", total), error);
+    fail_errno(name, fmt::format("cannot size to {} bytes", total), errno);
   }
-  try {
-    writer.map_ = map_fd(name, fd.get(), total);
-  } catch (...) {
-    writer.unlink();
-    throw;
-  }
+  writer.segment_.map(fd.get(), total);
   // ftruncate zero-filled everything: all slots are black, all counters 0.
-  LinkHeader& h = writer.map_.header();
+  LinkHeader& h = writer.segment_.header();
   h.version = kVersion;
   h.width = width;
   h.height = height;
@@ -234,58 +249,25 @@ DviLinkWriter DviLinkWriter::create(const std::string& name, int width, int heig
   return writer;
 }
 
-DviLinkWriter::DviLinkWriter(DviLinkWriter&& other) noexcept
-    : map_(std::move(other.map_)),
-      name_(std::exchange(other.name_, {})),
-      width_(other.width_),
-      height_(other.height_),
-      slot_pitch_(other.slot_pitch_),
-      back_(other.back_),
-      sequence_(other.sequence_) {}
-
-DviLinkWriter& DviLinkWriter::operator=(DviLinkWriter&& other) noexcept {
-  if (this != &other) {
-    unlink();
-    map_ = std::move(other.map_);
-    name_ = std::exchange(other.name_, {});
-    width_ = other.width_;
-    height_ = other.height_;
-    slot_pitch_ = other.slot_pitch_;
-    back_ = other.back_;
-    sequence_ = other.sequence_;
-  }
-  return *this;
-}
-
-DviLinkWriter::~DviLinkWriter() {
-  unlink();
-}
-
-// Readers that still have the segment mapped keep reading it; the name is gone at once.
-void DviLinkWriter::unlink() noexcept {
-  if (!name_.empty()) ::shm_unlink(name_.c_str());
-  name_.clear();
-}
-
 std::span<std::uint8_t> DviLinkWriter::back_frame() {
-  return {slot_pixels(map_, back_, slot_pitch_), stride() * static_cast<std::size_t>(height_)};
+  return {slot_pixels(segment_, back_, slot_pitch_), stride() * static_cast<std::size_t>(height_)};
 }
 
 std::span<std::uint8_t> DviLinkWriter::back_row(int y) {
   if (y < 0 || y >= height_) {
-    fail(name_, fmt::format("row {} is outside the frame (height {})", y, height_));
+    fail(name(), fmt::format("row {} is outside the frame (height {})", y, height_));
   }
   return back_frame().subspan(static_cast<std::size_t>(y) * stride(), stride());
 }
 
 std::uint64_t DviLinkWriter::publish() {
-  LinkHeader& h = map_.header();
+  LinkHeader& h = segment_.header();
   h.slot_sequence[back_] = ++sequence_;
   // Release: the pixels and sequence above become visible to the reader that takes this slot.
   // Acquire: the slot we get back was released by the reader, which no longer looks at it.
   const std::uint32_t old =
       h.middle.exchange(static_cast<std::uint32_t>(back_) | kFresh, std::memory_order_acq_rel);
-  back_ = checked_slot(name_, old, "the latest frame");
+  back_ = checked_slot(name(), old, "the latest frame");
   h.writer_slot = static_cast<std::uint32_t>(back_);
   h.published.store(sequence_, std::memory_order_release);
   return sequence_;
@@ -304,8 +286,9 @@ DviLinkReader DviLinkReader::open(const std::string& name) {
     fail(name, fmt::format("segment is {} bytes, too small for a DVI link header", size));
   }
   DviLinkReader reader;
-  reader.map_ = map_fd(name, fd.get(), size);
-  const LinkHeader& h = reader.map_.header();
+  reader.segment_ = Segment(name, Segment::Leaving::kNothing);
+  reader.segment_.map(fd.get(), size);
+  const LinkHeader& h = reader.segment_.header();
   const std::uint32_t magic = h.magic.load(std::memory_order_acquire);
   if (magic != kMagic) fail(name, fmt::format("not a DVI link (magic {:#010x})", magic));
   if (h.version != kVersion) {
@@ -327,76 +310,43 @@ DviLinkReader DviLinkReader::open(const std::string& name) {
   if (total != size) {
     fail(name, fmt::format("header declares {} bytes but the segment is {} bytes", total, size));
   }
-  reader.name_ = name;
   reader.width_ = width;
   reader.height_ = height;
   reader.slot_pitch_ = pitch;
 
   // Attach as the one reader; a reader that died does not block a new one.
-  LinkHeader& hw = reader.map_.header();
+  LinkHeader& hw = reader.segment_.header();
   std::int32_t current = hw.reader_pid.load(std::memory_order_acquire);
   for (;;) {
     if (current != 0 && process_alive(current)) {
-      reader.name_.clear();  // not attached: do not detach on the way out
       fail(name, fmt::format("already has a reader (process {})", current));
     }
     if (hw.reader_pid.compare_exchange_weak(current, ::getpid(), std::memory_order_acq_rel)) {
       break;
     }
   }
+  reader.segment_.leave_by(Segment::Leaving::kDetach);  // attached: free the place on leaving
   reader.front_ = checked_slot(name, hw.reader_slot, "the reader's frame");
   return reader;
 }
 
-DviLinkReader::DviLinkReader(DviLinkReader&& other) noexcept
-    : map_(std::move(other.map_)),
-      name_(std::exchange(other.name_, {})),
-      width_(other.width_),
-      height_(other.height_),
-      slot_pitch_(other.slot_pitch_),
-      front_(other.front_) {}
-
-DviLinkReader& DviLinkReader::operator=(DviLinkReader&& other) noexcept {
-  if (this != &other) {
-    detach();
-    map_ = std::move(other.map_);
-    name_ = std::exchange(other.name_, {});
-    width_ = other.width_;
-    height_ = other.height_;
-    slot_pitch_ = other.slot_pitch_;
-    front_ = other.front_;
-  }
-  return *this;
-}
-
-DviLinkReader::~DviLinkReader() {
-  detach();
-}
-
-void DviLinkReader::detach() noexcept {
-  if (name_.empty()) return;
-  // Release: a later reader sees reader_slot as we left it.
-  map_.header().reader_pid.store(0, std::memory_order_release);
-  name_.clear();
-}
-
 std::optional<FrameView> DviLinkReader::latest() {
-  LinkHeader& h = map_.header();
+  LinkHeader& h = segment_.header();
   if (h.middle.load(std::memory_order_relaxed) & kFresh) {
     // Hand back the slot we held and take the newest; see publish() for the ordering.
     const std::uint32_t old =
         h.middle.exchange(static_cast<std::uint32_t>(front_), std::memory_order_acq_rel);
-    front_ = checked_slot(name_, old, "the latest frame");
+    front_ = checked_slot(name(), old, "the latest frame");
     h.reader_slot = static_cast<std::uint32_t>(front_);
   }
   const std::uint64_t sequence = h.slot_sequence[front_];
   if (sequence == 0) return std::nullopt;
-  return FrameView{slot_pixels(map_, front_, slot_pitch_),
+  return FrameView{slot_pixels(segment_, front_, slot_pitch_),
                    static_cast<std::size_t>(width_) * kDviBytesPerPixel, width_, height_, sequence};
 }
 
 bool DviLinkReader::writer_alive() const {
-  return process_alive(map_.header().writer_pid.load(std::memory_order_relaxed));
+  return process_alive(segment_.header().writer_pid.load(std::memory_order_relaxed));
 }
 
 }  // namespace l2

@@ -4,6 +4,7 @@
 
 #include <thread>
 
+#include "base/socket.hpp"
 #include "l2wall/run_fault.hpp"
 #include "l2wall/run_time.hpp"
 
@@ -39,8 +40,8 @@ std::vector<std::string> vizserver_args(const VizLaunch& l, std::uint16_t stream
 VizserverProcess::VizserverProcess(const VizLaunch& launch)
     : host_(launch.host), token_(viz::new_run_token()) {
   // Our end of the display stream, on loopback: the server is our child on this machine.
-  const Fd listener = viz::listen_tcp("127.0.0.1", 0);
-  process_.emplace(vizserver_args(launch, viz::local_port(listener.get())),
+  const Fd listener = listen_tcp("127.0.0.1", 0);
+  process_.emplace(vizserver_args(launch, local_port(listener.get())),
                    std::vector<std::string>{token_variable()});
   accept_stream(listener, launch);
 }
@@ -74,7 +75,7 @@ void VizserverProcess::accept_stream(const Fd& listener, const VizLaunch& launch
   viz::Listening listening;
   try {
     listening = viz::read_listening(stream.get(), deadline, who);
-  } catch (const viz::VizError& e) {
+  } catch (const NetError& e) {
     throw RunFault(e.what());  // e.g. "...: cannot listen on 127.0.0.1:5000: Address in use"
   }
   if (listening.display_count != launch.display_sizes.size() ||
@@ -100,7 +101,7 @@ viz::FramePtr VizserverProcess::frame(int frame, milliseconds timeout) {
     viz::FramePtr f = watcher_->take(static_cast<std::uint32_t>(frame), timeout);
     if (f) last_ = f;
     return f;
-  } catch (const viz::VizError& e) {
+  } catch (const NetError& e) {
     stream_error_ = e.what();
     return nullptr;
   }
@@ -110,7 +111,7 @@ void VizserverProcess::lose_pipeserver(int pipeserver) {
   if (!watcher_ || stream_error_) return;
   try {
     watcher_->send_lost(static_cast<std::uint32_t>(pipeserver));
-  } catch (const viz::VizError& e) {
+  } catch (const NetError& e) {
     stream_error_ = e.what();
   }
 }

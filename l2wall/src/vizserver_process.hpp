@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "base/child_process.hpp"
+#include "viz_link/run_token.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/run_token.hpp"
 
 namespace l2 {
 

@@ -5,8 +5,8 @@
 
 #include <regex>
 
-#include "hostile_files.hpp"
 #include "model_files.hpp"
+#include "pipeserver/hostile_files.hpp"
 #include "wall_run.hpp"
 #include "wide_wall.hpp"
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <thread>
 
+#include "displays/x_client.hpp"
 #include "image/png_io.hpp"
 #include "show_run.hpp"
 #include "wall_run.hpp"
-#include "x_client.hpp"
 
 namespace l2 {
 namespace {

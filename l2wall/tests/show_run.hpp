@@ -12,9 +12,9 @@
 #include <thread>
 #include <vector>
 
+#include "displays/xvfb_server.hpp"
 #include "image/png_io.hpp"
 #include "wall_run.hpp"
-#include "xvfb_server.hpp"
 
 namespace l2::testing_support {
 

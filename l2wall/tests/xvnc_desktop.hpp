@@ -3,9 +3,9 @@
 // picture that tells its every pixel's position.
 #pragma once
 
+#include "displays/x_client.hpp"
+#include "displays/xvfb_server.hpp"
 #include "wall_run.hpp"
-#include "x_client.hpp"
-#include "xvfb_server.hpp"
 
 namespace l2::testing_support {
 

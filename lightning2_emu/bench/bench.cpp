@@ -39,7 +39,7 @@
 
 #include "bench_args.hpp"
 
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
 #include "pixel_copy.hpp"
 #include "tilelayout/tile_layout.hpp"

@@ -13,8 +13,8 @@
 #include <utility>
 
 #include "base/child_process.hpp"
-#include "frame_builder.hpp"
 #include "image/png_io.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "tilelayout/wall_file.hpp"

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 
 namespace l2 {
 namespace {

@@ -1,5 +1,5 @@
 // The order in which `sequence` plays a folder's frames.
-#include "frame_files.hpp"
+#include "lightning2_emu/frame_files.hpp"
 
 #include <gtest/gtest.h>
 

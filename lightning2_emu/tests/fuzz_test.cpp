@@ -6,8 +6,8 @@
 #include <chrono>
 #include <random>
 
-#include "frame_builder.hpp"
 #include "lightning2_emu/emulator.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
 
 namespace l2 {

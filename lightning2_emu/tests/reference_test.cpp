@@ -10,7 +10,7 @@
 #include <chrono>
 #include <random>
 
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
 #include "strip_headers/scanline_parser.hpp"
 

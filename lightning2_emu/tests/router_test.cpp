@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 
 namespace l2 {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 
 #include "base/child_process.hpp"
-#include "frame_builder.hpp"
+#include "displays/xvfb_server.hpp"
 #include "image/png_io.hpp"
-#include "xvfb_server.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 
 namespace l2 {
 namespace {

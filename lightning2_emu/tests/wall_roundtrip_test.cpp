@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <random>
 
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
 #include "tilelayout/planner.hpp"

@@ -17,7 +17,7 @@
 #include "sync_backchannel/back_channel.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 namespace {
@@ -80,7 +80,7 @@ void send_tiles(TileSink& sender, FramePixels fb, const PipeserverPlan& plan, in
 std::unique_ptr<TileSink> connect_viz(const std::string& address, int pipeserver, int display_count,
                                       std::optional<LinkCodec> codec) {
   if (address.empty()) return nullptr;
-  const viz::Endpoint at = viz::parse_endpoint(address);
+  const Endpoint at = parse_endpoint(address);
   viz::SenderOptions options;
   options.token = viz::token_from_environment();  // l2wall's run token (L2_VIZ_TOKEN)
   // Whole tiles go as TILE and TILE_EXT, straight from the framebuffer.

@@ -17,7 +17,7 @@
 #include "pipeserver/scene.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 
@@ -29,7 +29,7 @@ class TileSink {
   virtual void send_tile(std::uint32_t frame, const viz::TileTarget& tile, const std::uint8_t* rgb,
                          std::size_t stride) = 0;
   virtual void finish_frame(std::uint32_t frame, std::uint32_t tiles_sent) = 0;
-  // Throws (viz::VizError for the compositing server) when `frame` is not swapped in time.
+  // Throws (NetError for the compositing server) when `frame` is not swapped in time.
   virtual void wait_swapped(std::uint32_t frame, std::chrono::milliseconds timeout) = 0;
 };
 
@@ -98,7 +98,7 @@ struct LiveOptions {
 inline constexpr int kStampBits = 24;
 
 // Returns the process exit code: 0 on success, kExitNoReady when READY never came (message on
-// stderr). Throws viz::VizError when the compositing server is lost (kExitLostCompositingServer).
+// stderr). Throws NetError when the compositing server is lost (kExitLostCompositingServer).
 int run_live_mode(const LiveOptions& options);
 
 }  // namespace l2

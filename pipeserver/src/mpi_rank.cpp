@@ -7,11 +7,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cluster/mpi_dvi_link.hpp"
-#include "cluster/mpi_ready_channel.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
 #include "lightning2_emu/mesh.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
+#include "mpi_link/mpi_ready_channel.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 
 namespace l2 {
 

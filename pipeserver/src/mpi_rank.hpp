@@ -9,12 +9,12 @@
 #include <optional>
 #include <vector>
 
-#include "cluster/mpi_dvi_link.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
-#include "vizserver/tile_delta.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_delta.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "base/socket.hpp"
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "dvi_link/frame_delta.hpp"
@@ -22,13 +23,12 @@
 #include "pipeserver/scene_cli.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
-#include "vizserver/socket.hpp"
 
 #ifdef L2_HAVE_MPI
-#include "cluster/mpi_control_channel.hpp"
-#include "cluster/mpi_session.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
+#include "mpi_link/mpi_control_channel.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "mpi_rank.hpp"
 #endif
 
@@ -93,7 +93,7 @@ int run(const Options& o) {
 int run_live(const l2::LiveOptions& o) {
   try {
     return l2::run_live_mode(o);
-  } catch (const l2::viz::VizError& e) {
+  } catch (const l2::NetError& e) {
     std::fprintf(stderr, "pipeserver %d: %s\n", o.pipeserver, e.what());
     return l2::kExitLostCompositingServer;
   } catch (const std::exception& e) {
@@ -197,7 +197,7 @@ int run_pipeserver(int argc, char** argv) {
       ->add_option("--viz", live_options.viz,
                    "live: host:port of a compositing server; every tile is also sent there "
                    "(its HELLO carries the run token in L2_VIZ_TOKEN, if set)")
-      ->check(l2::viz::endpoint_error, "HOST:PORT");
+      ->check(l2::endpoint_error, "HOST:PORT");
   int control_fd = -1;
   group
       ->add_option("--control-fd", control_fd,

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "hostile_files.hpp"
+#include "pipeserver/hostile_files.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/scene.hpp"
 

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "hostile_files.hpp"
+#include "pipeserver/hostile_files.hpp"
 
 extern char** environ;
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "image/rgb_image.hpp"
+#include "viz_link/tile_sender.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/tile_sender.hpp"
 
 namespace {
 

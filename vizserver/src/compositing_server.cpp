@@ -53,21 +53,21 @@ FramePtr CompositingServer::wait_frame(std::uint32_t frame, std::chrono::millise
            (shared_->last_swapped && *shared_->last_swapped >= frame);
   });
   if (FramePtr f = find()) return f;
-  if (shared_->failure) throw VizError(*shared_->failure);
+  if (shared_->failure) throw NetError(*shared_->failure);
   if (shared_->last_swapped && *shared_->last_swapped >= frame) {
-    throw VizError(
+    throw NetError(
         fmt::format("frame {} is not available: no pipeserver sent it, or it was "
                     "swapped more than {} frames ago (last swapped: {})",
                     frame, options_.recent_frames, *shared_->last_swapped));
   }
   if (shared_->ended) {
-    throw VizError(shared_->all_left
+    throw NetError(shared_->all_left
                        ? fmt::format("every pipeserver finished and disconnected; frame {} "
                                      "never arrived",
                                      frame)
                        : fmt::format("the server stopped before frame {} was swapped", frame));
   }
-  throw VizError(fmt::format(
+  throw NetError(fmt::format(
       "frame {} not swapped within {} ms (last swapped: {})", frame, timeout.count(),
       shared_->last_swapped ? fmt::to_string(*shared_->last_swapped) : std::string("none")));
 }

@@ -73,7 +73,7 @@ std::vector<std::uint32_t> DisplaySender::take_lost() {
         decode_header(std::span<const std::uint8_t, kHeaderBytes>(m.data(), kHeaderBytes),
                       Protocol::DisplayStream);
     if (!h.ok() || h->kind != Kind::Lost || h->payload_bytes != 4) {
-      throw VizError(fmt::format("{}: the watcher sent {} where only LOST may come", peer_,
+      throw NetError(fmt::format("{}: the watcher sent {} where only LOST may come", peer_,
                                  h.ok() ? kind_name(h->kind) : h.reason()));
     }
     [[maybe_unused]] const ssize_t taken = ::recv(fd_.get(), m.data(), m.size(), MSG_DONTWAIT);

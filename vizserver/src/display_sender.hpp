@@ -7,16 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "base/socket.hpp"
 #include "vizserver/display_stream.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/socket.hpp"
 
 namespace l2::viz {
 
 class DisplaySender {
  public:
   // Connects to the watcher at host:port (it listens before it starts us). io_timeout bounds
-  // every send: a watcher that stops reading for that long is gone. Throws VizError
+  // every send: a watcher that stops reading for that long is gone. Throws NetError
   // "display stream HOST:PORT: ...".
   static DisplaySender connect(const std::string& host, std::uint16_t port,
                                std::chrono::milliseconds io_timeout = std::chrono::seconds(60));
@@ -29,7 +29,7 @@ class DisplaySender {
   // The failure line as ERROR, before the server exits. Best effort: never throws.
   void send_error(const std::string& text) noexcept;
   // The pipeservers the watcher said are lost (LOST messages), as they arrive; never blocks.
-  // Throws VizError for anything else the watcher sends, or a LOST cut short.
+  // Throws NetError for anything else the watcher sends, or a LOST cut short.
   std::vector<std::uint32_t> take_lost();
   // True once the watcher has closed its end (it sends nothing but LOST, which take_lost()
   // reads first, so anything else readable is EOF).

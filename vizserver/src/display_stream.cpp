@@ -4,49 +4,58 @@
 
 namespace l2::viz {
 std::array<std::uint8_t, kHeaderBytes + 12> encode(const Listening& m) {
-  auto out = message_start<12>(Kind::Listening);
-  put_u32(out.data() + 12, m.port);
-  put_u32(out.data() + 16, m.display_count);
-  put_u32(out.data() + 20, m.pipeserver_count);
-  return out;
+  MessageWriter<12> w(Kind::Listening);
+  return w.u32(m.port).u32(m.display_count).u32(m.pipeserver_count).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 16> encode(const DisplayHeader& m) {
-  auto out = message_start<16>(Kind::Display, m.pixel_bytes());
-  put_u32(out.data() + 12, m.frame);
-  put_u32(out.data() + 16, m.display);
-  put_u32(out.data() + 20, m.width);
-  put_u32(out.data() + 24, m.height);
-  return out;
+  MessageWriter<16> w(Kind::Display, m.pixel_bytes());
+  return w.u32(m.frame).u32(m.display).u32(m.width).u32(m.height).done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 20> encode(const Shown& m) {
-  auto out = message_start<20>(Kind::Shown);
-  put_u32(out.data() + 12, m.frame);
-  put_u32(out.data() + 16, m.display_count);
-  put_u32(out.data() + 20, m.tiles);
-  put_u32(out.data() + 24, m.clipped_rows);
-  put_u32(out.data() + 28, m.missing_display_rows);
-  return out;
+  MessageWriter<20> w(Kind::Shown);
+  return w.u32(m.frame)
+      .u32(m.display_count)
+      .u32(m.tiles)
+      .u32(m.clipped_rows)
+      .u32(m.missing_display_rows)
+      .done();
 }
 
 std::array<std::uint8_t, kHeaderBytes + 4> encode_lost(std::uint32_t pipeserver) {
-  auto out = message_start<4>(Kind::Lost);
-  put_u32(out.data() + 12, pipeserver);
-  return out;
+  MessageWriter<4> w(Kind::Lost);
+  return w.u32(pipeserver).done();
 }
 
 Listening decode_listening(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8)};
+  FieldReader r(f);
+  Listening l;
+  l.port = r.u32();
+  l.display_count = r.u32();
+  l.pipeserver_count = r.u32();
+  return l;
 }
 
 DisplayHeader decode_display(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8), get_u32(f.data() + 12)};
+  FieldReader r(f);
+  DisplayHeader d;
+  d.frame = r.u32();
+  d.display = r.u32();
+  d.width = r.u32();
+  d.height = r.u32();
+  return d;
 }
 
 Shown decode_shown(std::span<const std::uint8_t> f) {
-  return {get_u32(f.data()), get_u32(f.data() + 4), get_u32(f.data() + 8), get_u32(f.data() + 12),
-          get_u32(f.data() + 16)};
+  FieldReader r(f);
+  Shown s;
+  s.frame = r.u32();
+  s.display_count = r.u32();
+  s.tiles = r.u32();
+  s.clipped_rows = r.u32();
+  s.missing_display_rows = r.u32();
+  return s;
 }
 
 Status validate(const DisplayHeader& d, std::uint32_t payload_bytes) {

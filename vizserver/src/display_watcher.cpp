@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "command_line/printable.hpp"
-#include "vizserver/message_read.hpp"
+#include "viz_link/message_read.hpp"
 
 namespace l2::viz {
 namespace {
@@ -32,10 +32,10 @@ Listening read_listening(int fd, Clock::time_point deadline, const std::string& 
   recv_header(fd, head, deadline, peer);
   const Kind kind = head.header().kind;
   if (kind == Kind::Error) {
-    throw VizError(fmt::format("{}: {}", peer, recv_error_text(fd, head, deadline, peer)));
+    throw NetError(fmt::format("{}: {}", peer, recv_error_text(fd, head, deadline, peer)));
   }
   if (kind != Kind::Listening) {
-    throw VizError(fmt::format("{}: {} before LISTENING", peer, kind_name(kind)));
+    throw NetError(fmt::format("{}: {} before LISTENING", peer, kind_name(kind)));
   }
   recv_fixed(fd, head, deadline, peer);
   return decode_listening(head.fixed());
@@ -74,10 +74,10 @@ FramePtr DisplayWatcher::take(std::uint32_t frame, std::chrono::milliseconds tim
     return f;
   }
   if (last_arrived_ && *last_arrived_ >= frame) {
-    throw VizError(fmt::format("{}: frame {} is not in the stream (it went on to frame {})", peer_,
+    throw NetError(fmt::format("{}: frame {} is not in the stream (it went on to frame {})", peer_,
                                frame, *last_arrived_));
   }
-  if (ended_) throw VizError(*ended_);
+  if (ended_) throw NetError(*ended_);
   return nullptr;
 }
 
@@ -114,16 +114,16 @@ bool DisplayWatcher::read_exact(std::uint8_t* data, std::size_t n, bool at_bound
     const bool closed = r == 0 || errno == ECONNRESET;
     if (closed && at_boundary && got == 0) return false;
     if (closed) {
-      throw VizError(
+      throw NetError(
           fmt::format("{} closed the connection in the middle of a {} message", peer_, what));
     }
     if (errno != EAGAIN && errno != EWOULDBLOCK) {
-      throw VizError(fmt::format("{}: receive failed: {}", peer_, std::strerror(errno)));
+      throw NetError(fmt::format("{}: receive failed: {}", peer_, std::strerror(errno)));
     }
     // Between messages the server may be quiet as long as it likes (the run judges stalls);
     // inside a message the rest must follow within io_timeout.
     if ((!at_boundary || got > 0) && Clock::now() > deadline) {
-      throw VizError(fmt::format("{}: the rest of a {} message did not arrive within {} ms", peer_,
+      throw NetError(fmt::format("{}: the rest of a {} message did not arrive within {} ms", peer_,
                                  what, io_timeout_.count()));
     }
     pollfd p{fd_.get(), POLLIN, 0};
@@ -151,7 +151,7 @@ void DisplayWatcher::read_stream() {
                     false);
     }
     if (const Status header = head.received(kHeaderBytes); !header.ok()) {
-      throw VizError(fmt::format("{}: {}", peer_, header.reason()));
+      throw NetError(fmt::format("{}: {}", peer_, header.reason()));
     }
     const Header h = head.header();
     const std::size_t fixed = head.space().size();
@@ -167,11 +167,11 @@ void DisplayWatcher::read_stream() {
     if (h.kind == Kind::Display) {
       const DisplayHeader d = decode_display(fixed_part);
       if (const Status display = validate(d, h.payload_bytes); !display.ok()) {
-        throw VizError(peer_ + ": " + display.reason());
+        throw NetError(peer_ + ": " + display.reason());
       }
       if (!open) {
         if (last_arrived_ && d.frame <= *last_arrived_) {
-          throw VizError(
+          throw NetError(
               fmt::format("{}: frame {} after frame {}", peer_, d.frame, *last_arrived_));
         }
         building = ComposedFrame{};
@@ -179,12 +179,12 @@ void DisplayWatcher::read_stream() {
         open = true;
       }
       if (d.display >= display_count_) {
-        throw VizError(
+        throw NetError(
             fmt::format("{}: DISPLAY {} of frame {}, but the stream announced {} displays", peer_,
                         d.display, d.frame, display_count_));
       }
       if (d.frame != building.frame || d.display != building.displays.size()) {
-        throw VizError(
+        throw NetError(
             fmt::format("{}: DISPLAY {} of frame {} where display {} of frame {} was due", peer_,
                         d.display, d.frame, building.displays.size(), building.frame));
       }
@@ -194,7 +194,7 @@ void DisplayWatcher::read_stream() {
     } else if (h.kind == Kind::Shown) {
       const Shown s = decode_shown(fixed_part);
       if (!open || s.frame != building.frame || s.display_count != building.displays.size()) {
-        throw VizError(fmt::format(
+        throw NetError(fmt::format(
             "{}: SHOWN for frame {} with {} displays, but {} displays of "
             "frame {} arrived",
             peer_, s.frame, s.display_count, open ? building.displays.size() : 0, building.frame));
@@ -205,7 +205,7 @@ void DisplayWatcher::read_stream() {
       publish(std::move(building));
       open = false;
     } else {
-      throw VizError(fmt::format("{}: a second {}", peer_, kind_name(h.kind)));
+      throw NetError(fmt::format("{}: a second {}", peer_, kind_name(h.kind)));
     }
   }
 }

@@ -44,7 +44,7 @@ ServerLoop::ServerLoop(const ServerOptions& options, Fd listener, std::uint16_t 
   if (options.survive_losses) assembler_.survive_losses();
   int fds[2];
   if (::pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) {
-    throw VizError(fmt::format("vizserver: pipe failed: {}", std::strerror(errno)));
+    throw NetError(fmt::format("vizserver: pipe failed: {}", std::strerror(errno)));
   }
   wake_read_ = Fd(fds[0]);
   wake_write_ = Fd(fds[1]);

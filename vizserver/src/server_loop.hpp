@@ -13,11 +13,11 @@
 #include <thread>
 #include <vector>
 
+#include "base/socket.hpp"
+#include "viz_link/tile_delta.hpp"
+#include "viz_link/wire.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/socket.hpp"
-#include "vizserver/tile_delta.hpp"
-#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 

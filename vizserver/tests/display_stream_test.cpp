@@ -133,7 +133,7 @@ TEST(DisplayStream, EveryPixelOfEveryFrameArrivesAndTheEndIsReported) {
   try {
     watcher.take(5, 2000ms);
     FAIL() << "frame 5 arrived";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_STREQ(e.what(), "test stream closed the connection");
   }
   EXPECT_FALSE(watcher.ended_with_error_message());
@@ -199,7 +199,7 @@ TEST(DisplayStream, TheServersErrorLineEndsTheStream) {
   try {
     watcher.take(1, 5000ms);
     FAIL() << "frame 1 arrived";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_STREQ(e.what(), "pipeserver 2 disconnected during frame 1");
   }
   EXPECT_TRUE(watcher.ended_with_error_message());
@@ -214,7 +214,7 @@ TEST(DisplayStream, ASkippedFrameIsNamed) {
   try {
     watcher.take(1, 5000ms);
     FAIL() << "frame 1 arrived";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_STREQ(e.what(), "test stream: frame 1 is not in the stream (it went on to frame 2)");
   }
   EXPECT_TRUE(watcher.take(2, 5000ms));
@@ -229,7 +229,7 @@ TEST(DisplayStream, MoreDisplaysThanAnnouncedBreakTheProtocol) {
   try {
     watcher.take(0, 5000ms);
     FAIL() << "frame 0 arrived";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_STREQ(e.what(),
                  "test stream: DISPLAY 2 of frame 0, but the stream announced 2 displays");
   }
@@ -249,7 +249,7 @@ TEST(DisplayStream, AMessageCutOffByTheServersDeathIsNamed) {
   try {
     watcher.take(0, 5000ms);
     FAIL() << "frame 0 arrived";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_STREQ(e.what(), "test stream closed the connection in the middle of a DISPLAY message");
   }
   EXPECT_FALSE(watcher.ended_with_error_message());

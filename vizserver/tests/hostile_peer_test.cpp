@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "raw_peer.hpp"
+#include "viz_link/tile_sender.hpp"
+#include "viz_link/wire.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/tile_sender.hpp"
-#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 namespace {
@@ -66,7 +66,7 @@ TEST(VizServerHostile, APipeserverClosedBeforeItsWelcomeConnectsAgain) {
   std::string error;
   try {
     TileSender::connect("127.0.0.1", port, 0, 1);
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     error = e.what();
   }
   server.join();
@@ -219,7 +219,7 @@ TEST(VizServerHostile, APipeserverWithoutTheTokenIsToldWhy) {
   try {
     TileSender::connect("127.0.0.1", server.port(), 0, 1);
     FAIL() << "welcomed without the token";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_EQ(std::string(e.what()),
               fmt::format("compositing server 127.0.0.1:{}: HELLO as pipeserver 0 without this "
                           "run's token",

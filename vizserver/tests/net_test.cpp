@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "raw_peer.hpp"
+#include "viz_link/tile_sender.hpp"
+#include "viz_link/wire.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/tile_sender.hpp"
-#include "vizserver/wire.hpp"
 
 namespace l2::viz {
 namespace {
@@ -316,13 +316,13 @@ TEST(VizServerNet, OversizeLengthFromAPipeserverEndsTheRunWithItsName) {
   try {
     s.wait_swapped(0, 3000ms);
     FAIL() << "wait_swapped returned";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 0 (127.0.0.1:"));
     EXPECT_THAT(e.what(), HasSubstr("TILE payload of 4294967280 bytes, allowed 24..50307099"));
   }
   EXPECT_LT(Clock::now() - t0, 2000ms);
   EXPECT_THAT(server.failure().reason(), HasSubstr("TILE payload of 4294967280 bytes"));
-  EXPECT_THROW(server.wait_frame(0, 1000ms), VizError);
+  EXPECT_THROW(server.wait_frame(0, 1000ms), NetError);
 }
 
 TEST(VizServerNet, MisconfiguredPipeserversAreRefusedAtConnect) {
@@ -331,7 +331,7 @@ TEST(VizServerNet, MisconfiguredPipeserversAreRefusedAtConnect) {
   try {
     TileSender::connect("127.0.0.1", server.port(), 0, 3);
     FAIL() << "connected with the wrong display count";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("HELLO from pipeserver 0 announces 3 displays, this server "
                                     "composes 2"));
   }
@@ -340,13 +340,13 @@ TEST(VizServerNet, MisconfiguredPipeserversAreRefusedAtConnect) {
       {
         try {
           TileSender::connect("127.0.0.1", server.port(), 1, 2);
-        } catch (const VizError& e) {
+        } catch (const NetError& e) {
           EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 is already connected"));
           throw;
         }
       },
-      VizError);
-  EXPECT_THROW(TileSender::connect("127.0.0.1", server.port(), 7, 2), VizError);
+      NetError);
+  EXPECT_THROW(TileSender::connect("127.0.0.1", server.port(), 7, 2), NetError);
   EXPECT_EQ(server.errors().size(), 3u);
   EXPECT_EQ(server.failure().reason(), "");
 }
@@ -365,7 +365,7 @@ TEST(VizServerNet, ServerThatDiesIsNoticedByAWaitingPipeserver) {
   try {
     s.wait_swapped(0, 5000ms);
     FAIL() << "wait_swapped returned";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr(fmt::format("compositing server 127.0.0.1:{} closed the "
                                                 "connection (waiting for SWAPPED for frame 0)",
                                                 port)));
@@ -375,7 +375,7 @@ TEST(VizServerNet, ServerThatDiesIsNoticedByAWaitingPipeserver) {
   // Nobody listens any more: connecting gives up within its timeout.
   SenderOptions quick;
   quick.connect_timeout = 200ms;
-  EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1, quick), VizError);
+  EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1, quick), NetError);
 }
 
 TEST(VizServerNet, SilentPipeserverIsReportedAfterTheStallTimeout) {
@@ -392,12 +392,12 @@ TEST(VizServerNet, SilentPipeserverIsReportedAfterTheStallTimeout) {
   try {
     server.wait_frame(0, 5000ms);
     FAIL() << "frame 0 swapped";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 0 (127.0.0.1:"));
     EXPECT_THAT(e.what(), HasSubstr("sent nothing for 0.3 s while frame 0 waits for it"));
   }
   EXPECT_LT(Clock::now() - t0, 10 * o.stall_timeout);  // room for a loaded machine
-  EXPECT_THROW(s1.wait_swapped(0, 2000ms), VizError);
+  EXPECT_THROW(s1.wait_swapped(0, 2000ms), NetError);
 }
 
 TEST(VizServerNet, MissingPipeserverEndsTheRunAtTheAcceptTimeout) {
@@ -409,7 +409,7 @@ TEST(VizServerNet, MissingPipeserverEndsTheRunAtTheAcceptTimeout) {
   try {
     server.wait_frame(0, 5000ms);
     FAIL() << "frame 0 swapped";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("only 1 of 2 pipeservers said HELLO within 0.2 s"));
   }
 }
@@ -444,7 +444,7 @@ TEST(VizServerNet, WaitingForAFrameNobodySendsEndsWhenEveryoneLeft) {
   }
   EXPECT_NE(server.wait_frame(0, 1000ms), nullptr);
   const auto t0 = Clock::now();
-  EXPECT_THROW(server.wait_frame(5, 5000ms), VizError);
+  EXPECT_THROW(server.wait_frame(5, 5000ms), NetError);
   EXPECT_LT(Clock::now() - t0, 2000ms);
 }
 

@@ -14,9 +14,9 @@
 
 #include "base/child_process.hpp"
 #include "image/png_io.hpp"
+#include "viz_link/tile_sender.hpp"
 #include "vizserver/compositing_server.hpp"
 #include "vizserver/display_watcher.hpp"
-#include "vizserver/tile_sender.hpp"
 
 namespace l2::viz {
 namespace {
@@ -77,7 +77,7 @@ TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
   try {
     server.wait_frame(0, kPatience);
     FAIL() << "frame 0 swapped";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 disconnected during frame 0 (1 tiles "
                                     "received, no FRAME_DONE) (127.0.0.1:"));
   }
@@ -86,7 +86,7 @@ TEST(VizServerProcess, PipeserverKilledMidFrameIsReportedWithServerAndFrame) {
   try {
     s0.wait_swapped(0, 3000ms);
     FAIL() << "frame 0 swapped";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr("pipeserver 1 disconnected during frame 0"));
   }
 }
@@ -210,7 +210,7 @@ TEST(VizServerProcess, APortItCannotBindReachesTheWatcherAsError) {
   try {
     read_listening(stream.get(), Clock::now() + kPatience, "vizserver");
     FAIL() << "it listened on a taken port";
-  } catch (const VizError& e) {
+  } catch (const NetError& e) {
     EXPECT_THAT(e.what(), HasSubstr(fmt::format("vizserver: cannot listen on 127.0.0.1:{}: ",
                                                 local_port(taken.get()))));
   }
@@ -241,7 +241,7 @@ TEST(VizServerProcess, ExecutableWithARunTokenRefusesAHelloWithoutIt) {
   const auto line = exe.read_line(Stream::Out, kPatience).value_or("");
   ASSERT_THAT(line, HasSubstr("listening on 127.0.0.1:"));
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
-  EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1), VizError);
+  EXPECT_THROW(TileSender::connect("127.0.0.1", port, 0, 1), NetError);
   SenderOptions with_token;
   with_token.token = token;
   auto s = TileSender::connect("127.0.0.1", port, 0, 1, with_token);

@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "vizserver/socket.hpp"
-#include "vizserver/wire.hpp"
+#include "base/socket.hpp"
+#include "viz_link/wire.hpp"
 
 namespace l2::viz::testing {
 

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 5) {

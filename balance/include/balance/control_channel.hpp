@@ -1,6 +1,6 @@
 // What moves the control lines (control_messages.hpp) between a pipeserver and the coordinator:
 // a stream socket on one machine (a socket pair, one end inherited by the pipeserver process),
-// or MPI messages in an MPI run (cluster/include/cluster/mpi_control_channel.hpp).
+// or MPI messages in an MPI run (mpi_link/include/mpi_link/mpi_control_channel.hpp).
 #pragma once
 
 #include <chrono>

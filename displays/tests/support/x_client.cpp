@@ -1,4 +1,4 @@
-#include "x_client.hpp"
+#include "displays/x_client.hpp"
 
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>

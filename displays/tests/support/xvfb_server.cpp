@@ -1,4 +1,4 @@
-#include "xvfb_server.hpp"
+#include "displays/xvfb_server.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace l2 {
 
@@ -39,20 +40,36 @@ bool remove_stale(const std::string& name);
 
 namespace detail {
 struct LinkHeader;
-// A mapping of a whole segment; unmaps on destruction.
-class Mapping {
+// One end's hold on a segment, given up exactly once: what the end does on leaving (the writer
+// unlinks the name, the reader frees its place in the header), then the mapping unmapped.
+// Move-only, and the one hand-written move of the link: a moved-from Segment holds nothing, so
+// both ends move by their defaults.
+class Segment {
  public:
-  Mapping() = default;
-  Mapping(void* base, std::size_t size) : base_(base), size_(size) {}
-  Mapping(Mapping&& other) noexcept;
-  Mapping& operator=(Mapping&& other) noexcept;
-  Mapping(const Mapping&) = delete;
-  Mapping& operator=(const Mapping&) = delete;
-  ~Mapping();
+  enum class Leaving { kNothing, kUnlink, kDetach };
+
+  Segment() = default;
+  Segment(std::string name, Leaving leaving) : name_(std::move(name)), leaving_(leaving) {}
+  Segment(Segment&& other) noexcept;
+  Segment& operator=(Segment&& other) noexcept;
+  Segment(const Segment&) = delete;
+  Segment& operator=(const Segment&) = delete;
+  ~Segment() { release(); }
+
+  // Maps `size` bytes of the open segment `fd`; throws DviLinkError naming the segment.
+  void map(int fd, std::size_t size);
+  // From now on leaving does `leaving`.
+  void leave_by(Leaving leaving) { leaving_ = leaving; }
+
+  const std::string& name() const { return name_; }
   LinkHeader& header() const { return *static_cast<LinkHeader*>(base_); }
   std::uint8_t* bytes() const { return static_cast<std::uint8_t*>(base_); }
 
  private:
+  void release() noexcept;
+
+  std::string name_;
+  Leaving leaving_ = Leaving::kNothing;
   void* base_ = nullptr;
   std::size_t size_ = 0;
 };
@@ -78,12 +95,6 @@ class DviLinkWriter final : public DviSender {
   // Errors: DviLinkError "DVI link <name>: ...".
   static DviLinkWriter create(const std::string& name, int width, int height);
 
-  DviLinkWriter(DviLinkWriter&& other) noexcept;
-  DviLinkWriter& operator=(DviLinkWriter&& other) noexcept;
-  DviLinkWriter(const DviLinkWriter&) = delete;
-  DviLinkWriter& operator=(const DviLinkWriter&) = delete;
-  ~DviLinkWriter();
-
   // The frame being drawn: height rows of width * 3 bytes, row 0 on top. It keeps the contents
   // of an older frame (not the one just published), so draw every pixel.
   std::span<std::uint8_t> back_frame() override;
@@ -92,17 +103,15 @@ class DviLinkWriter final : public DviSender {
   // DviLinkError when the slot handed back does not exist (the header was written over).
   std::uint64_t publish() override;
 
-  const std::string& name() const { return name_; }
+  const std::string& name() const { return segment_.name(); }
   int width() const { return width_; }
   int height() const { return height_; }
   std::size_t stride() const { return static_cast<std::size_t>(width_) * kDviBytesPerPixel; }
 
  private:
   DviLinkWriter() = default;
-  void unlink() noexcept;
 
-  detail::Mapping map_;
-  std::string name_;
+  detail::Segment segment_;
   int width_ = 0;
   int height_ = 0;
   // Kept here, not read back from the shared header, which another process can overwrite.
@@ -143,12 +152,6 @@ class DviLinkReader final : public DviReceiver {
   // live reader).
   static DviLinkReader open(const std::string& name);
 
-  DviLinkReader(DviLinkReader&& other) noexcept;
-  DviLinkReader& operator=(DviLinkReader&& other) noexcept;
-  DviLinkReader(const DviLinkReader&) = delete;
-  DviLinkReader& operator=(const DviLinkReader&) = delete;
-  ~DviLinkReader();
-
   // The newest published frame; nullopt before the first publish(). Calling it again without a
   // new publish returns the same frame (same sequence number). Throws DviLinkError when the
   // header names a slot that does not exist (written over by another process).
@@ -156,16 +159,14 @@ class DviLinkReader final : public DviReceiver {
   // Whether the process that created the segment still runs.
   bool writer_alive() const;
 
-  const std::string& name() const { return name_; }
+  const std::string& name() const { return segment_.name(); }
   int width() const { return width_; }
   int height() const { return height_; }
 
  private:
   DviLinkReader() = default;
-  void detach() noexcept;
 
-  detail::Mapping map_;
-  std::string name_;
+  detail::Segment segment_;
   int width_ = 0;
   int height_ = 0;
   // Checked against the segment's size at open() and kept: the header is not read again for

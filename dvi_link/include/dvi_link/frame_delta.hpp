@@ -1,6 +1,6 @@
 // A scanned-out frame sent over a network as what changed since the last frame sent to the same
 // receiver, losslessly (the displays stay byte for byte): pure logic, no I/O. The DVI link over
-// MPI sends frames this way (cluster/mpi_dvi_link).
+// MPI sends frames this way (mpi_link/mpi_dvi_link).
 //
 // Each scanline is either unchanged (one bit) or sent as a residual, whichever of two predictions
 // leaves the smaller one (the sum of its bytes taken as signed, as PNG encoders choose):

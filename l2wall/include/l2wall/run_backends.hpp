@@ -1,6 +1,6 @@
 // Where the parts of a live run run: one machine (pipeserver child processes on shared-memory
 // DVI links and pty back-channels, this process the Lightning-2), or other backends beside it
-// (cluster/: MPI ranks). The live run makes its display paths and starts its pipeservers through
+// (mpi_link/: MPI ranks). The live run makes its display paths and starts its pipeservers through
 // this, once; nothing else in it knows which backends run.
 #pragma once
 

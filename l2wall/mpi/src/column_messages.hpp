@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "cluster/mpi_wire.hpp"
 #include "l2wall/column_records.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 

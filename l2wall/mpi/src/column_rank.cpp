@@ -11,13 +11,13 @@
 #include <optional>
 #include <vector>
 
-#include "cluster/mpi_dvi_link.hpp"
-#include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
 #include "column_show.hpp"
 #include "l2wall/board_column.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "viz_link/tile_delta.hpp"
 #include "vizserver/frame_assembler.hpp"
-#include "vizserver/tile_delta.hpp"
 
 namespace l2 {
 namespace {

@@ -8,9 +8,9 @@
 // --show monitors it shows its displays on its own machine's monitors after every swap.
 #pragma once
 
-#include "cluster/rank_map.hpp"
 #include "column_show.hpp"
 #include "l2wall/live_run.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {

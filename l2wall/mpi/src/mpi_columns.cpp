@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <thread>
 
-#include "cluster/mpi_wire.hpp"
 #include "column_messages.hpp"
 #include "l2wall/run_fault.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 

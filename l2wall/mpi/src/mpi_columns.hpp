@@ -14,6 +14,7 @@
 
 #include "l2wall/board_columns.hpp"
 #include "l2wall/live_run.hpp"
+#include "mpi_link/mpi_wire.hpp"
 #include "mpi_traffic.hpp"
 #include "rank_losses.hpp"
 

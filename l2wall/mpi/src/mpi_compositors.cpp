@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <thread>
 
-#include "cluster/mpi_wire.hpp"
 #include "lightning2_emu/mesh.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 

@@ -10,8 +10,8 @@
 #include <map>
 #include <vector>
 
-#include "cluster/rank_map.hpp"
 #include "l2wall/compositors.hpp"
+#include "mpi_link/rank_map.hpp"
 
 namespace l2 {
 

@@ -8,12 +8,6 @@
 #include <cstring>
 #include <filesystem>
 
-#include "cluster/busy_polling.hpp"
-#include "cluster/mpi_control_channel.hpp"
-#include "cluster/mpi_ready_channel.hpp"
-#include "cluster/mpi_session.hpp"
-#include "cluster/mpi_wire.hpp"
-#include "cluster/rank_map.hpp"
 #include "column_rank.hpp"
 #include "image/folders.hpp"
 #include "l2wall/dvi_path.hpp"
@@ -22,6 +16,12 @@
 #include "l2wall/viz_path.hpp"
 #include "mpi_columns.hpp"
 #include "mpi_compositors.hpp"
+#include "mpi_link/busy_polling.hpp"
+#include "mpi_link/mpi_control_channel.hpp"
+#include "mpi_link/mpi_ready_channel.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/mpi_wire.hpp"
+#include "mpi_link/rank_map.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <thread>
 
-#include "cluster/mpi_wire.hpp"
 #include "l2wall/run_fault.hpp"
 #include "l2wall/run_time.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 namespace {

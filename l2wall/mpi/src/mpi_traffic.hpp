@@ -7,8 +7,8 @@
 #include <span>
 #include <string>
 
-#include "cluster/mpi_dvi_link.hpp"
-#include "cluster/rank_map.hpp"
+#include "mpi_link/mpi_dvi_link.hpp"
+#include "mpi_link/rank_map.hpp"
 
 namespace l2 {
 

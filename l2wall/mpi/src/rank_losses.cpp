@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "cluster/mpi_wire.hpp"
+#include "mpi_link/mpi_wire.hpp"
 
 namespace l2 {
 

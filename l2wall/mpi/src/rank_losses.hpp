@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cluster/mpi_session.hpp"
-#include "cluster/rank_map.hpp"
+#include "mpi_link/mpi_session.hpp"
+#include "mpi_link/rank_map.hpp"
 
 namespace l2 {
 

@@ -11,8 +11,8 @@
 #include "pipeserver/viz_target.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/test_pattern.hpp"
+#include "viz_link/tile_sender.hpp"
 #include "vizserver/compositing_server.hpp"
-#include "vizserver/tile_sender.hpp"
 
 namespace l2 {
 

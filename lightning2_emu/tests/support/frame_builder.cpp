@@ -1,4 +1,4 @@
-#include "frame_builder.hpp"
+#include "lightning2_emu/frame_builder.hpp"
 
 #include <algorithm>
 

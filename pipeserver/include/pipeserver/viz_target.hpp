@@ -4,7 +4,7 @@
 #pragma once
 
 #include "tilelayout/tile_layout.hpp"
-#include "vizserver/tile_sender.hpp"
+#include "viz_link/tile_sender.hpp"
 
 namespace l2 {
 

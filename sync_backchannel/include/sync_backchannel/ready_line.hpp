@@ -1,6 +1,6 @@
 // The READY protocol itself (spec §6, docs/ready-protocol.md), over any transport of its lines:
 // the emulator end's READY and answers to SYNC?, the host end's wait with retries, and the
-// counts. A transport (the serial line of back_channel.hpp, MPI messages in cluster/) only
+// counts. A transport (the serial line of back_channel.hpp, MPI messages in mpi_link/) only
 // moves the 17-byte lines; what they mean is decided here, once.
 #pragma once
 
