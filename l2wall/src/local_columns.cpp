@@ -2,14 +2,10 @@
 
 #include <numeric>
 
+#include "lightning2_emu/wall_emulator.hpp"
+
 namespace l2 {
 namespace {
-
-std::vector<int> display_ids(const Wall& wall) {
-  std::vector<int> ids;
-  for (const Display& d : wall.displays) ids.push_back(d.id);
-  return ids;
-}
 
 std::vector<int> every_input(std::size_t pipeservers) {
   std::vector<int> inputs(pipeservers);

@@ -99,6 +99,25 @@ std::vector<PageTile> tiles_of(const fs::path& out, const Wall& wall, int frame)
   return page_tiles(plan_layout(wall));
 }
 
+// Frame `frame`'s latency in refreshes from OUT/report.csv (column latency_frames), as the live
+// page showed it; -1 where the run did not measure it (the vizserver path: "n/a").
+long latency_of_frame(const fs::path& out, int frame) {
+  std::ifstream csv(out / "report.csv");
+  std::string line;
+  const std::string row = std::to_string(frame) + ",";
+  while (std::getline(csv, line)) {
+    if (line.rfind(row, 0) != 0) continue;
+    std::stringstream fields(line);
+    std::string field;
+    for (int column = 0; column <= 3 && std::getline(fields, field, ','); ++column) {
+    }
+    long latency = -1;
+    const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), latency);
+    return ec == std::errc{} && end == field.data() + field.size() ? latency : -1;
+  }
+  return -1;
+}
+
 RunState finished_state(const ViewOptions& o, const Wall& wall, int frame) {
   RunState s = wall_state(wall);
   s.live = false;
@@ -107,6 +126,7 @@ RunState finished_state(const ViewOptions& o, const Wall& wall, int frame) {
   std::smatch m;
   if (std::regex_search(s.ended, m, std::regex("([0-9.]+) fps"))) s.fps = std::stod(m[1]);
   s.frame = frame;
+  if (frame >= 0) s.latency_frames = latency_of_frame(o.out, frame);
   s.tiles = tiles_of(o.out, wall, frame);
   s.pipeservers = pipeservers_in(o.out);
   for (const NamedPicture& p : pictures_in(o.out)) s.pictures.push_back(p.name);

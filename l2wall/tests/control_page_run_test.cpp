@@ -123,7 +123,8 @@ TEST(ControlPageView, ServesAFinishedRun) {
   ASSERT_TRUE(state);
   const auto s = nlohmann::json::parse(state->body);
   EXPECT_EQ(s["live"], false);
-  EXPECT_EQ(s["frame"], 5);  // the last kept
+  EXPECT_EQ(s["frame"], 5);           // the last kept
+  EXPECT_EQ(s["latency_frames"], 1);  // frame 5's, from report.csv, as the live page said
   EXPECT_EQ(s["displays"].size(), 4u);
   EXPECT_EQ(s["pipeservers"].size(), 4u);
   EXPECT_EQ(s["pipeservers"][0]["recent"].size(), 6u);

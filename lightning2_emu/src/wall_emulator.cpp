@@ -25,6 +25,12 @@ std::vector<DisplaySpec> display_specs(const Wall& wall, std::span<const int> id
   return out;
 }
 
+std::vector<int> display_ids(const Wall& wall) {
+  std::vector<int> ids;
+  for (const Display& d : wall.displays) ids.push_back(d.id);
+  return ids;
+}
+
 Mesh wall_mesh(const Wall& wall) {
   return Mesh::fit(wall.pipeserver_count, static_cast<int>(wall.displays.size()),
                    {wall.board_max_width, wall.board_max_height});

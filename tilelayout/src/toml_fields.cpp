@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "base/nearest_word.hpp"
 #include "command_line/printable.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "toml_shape.hpp"
@@ -103,8 +104,12 @@ TomlFields::TomlFields(const toml::table& table, std::string prefix, const TomlS
     if (!unknown || key.source().begin.line < unknown->source().begin.line) unknown = &key;
   }
   if (unknown) {
+    // Which keys the table takes, and the one a typo probably meant.
+    const auto meant = nearest_word(unknown->str(), allowed);
     source_.fail(static_cast<int>(unknown->source().begin.line), field(unknown->str()),
-                 "unknown key");
+                 fmt::format("unknown key{} (valid here: {})",
+                             meant ? fmt::format(": did you mean {}?", *meant) : std::string(),
+                             word_list(allowed)));
   }
 }
 

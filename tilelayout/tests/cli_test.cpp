@@ -189,7 +189,9 @@ TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
   const fs::path keyed = write("keyed.toml", "\"\\u001b[31mred\" = 1\n" + kGood);
   r = run("--wall '" + keyed.string() + "'");
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err, "tilelayout: " + keyed.string() + ":1: \\x1b[31mred: unknown key\n");
+  EXPECT_EQ(r.err, "tilelayout: " + keyed.string() +
+                       ":1: \\x1b[31mred: unknown key (valid here: name, canvas, display_grid, "
+                       "display, tiling, pipeservers, mesh, depth, overlay, balance)\n");
 }
 
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
@@ -199,7 +201,7 @@ TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
   const std::vector<Case> cases = {
       {replaced("[tiling]", "[tiling"), ":7: malformed TOML: "},
       {replaced("tile_height = 40\n", "tile_height = 40\ntile_hieght = 4\n"),
-       ":11: tiling.tile_hieght: unknown key"},
+       ":11: tiling.tile_hieght: unknown key: did you mean tile_height?"},
       {replaced("columns = 2", "columns = 65"), ":2: display_grid.columns: must be 1..64, got 65"},
       {replaced("width = 100", "width = 5000"),
        ":4: display_grid.width: must be 1..4095, got 5000"},

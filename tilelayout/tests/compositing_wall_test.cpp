@@ -92,7 +92,8 @@ TEST(DepthWall, BadLayersAreOneLineErrors) {
             "walls/t.toml:16: depth.layers: must be an integer or \"all\", got a boolean");
   EXPECT_EQ(error_of(kBase + "[depth]\n"),
             "walls/t.toml:15: depth.layers: missing (required): a number of layers or \"all\"");
-  EXPECT_EQ(error_of(kBase + "[depth]\nlayer = 2\n"), "walls/t.toml:16: depth.layer: unknown key");
+  EXPECT_EQ(error_of(kBase + "[depth]\nlayer = 2\n"),
+            "walls/t.toml:16: depth.layer: unknown key: did you mean layers? (valid here: layers)");
   EXPECT_EQ(error_of("depth = 2\n" + kBase),
             "walls/t.toml:1: depth: must be a table, got an integer");
 }
@@ -164,8 +165,10 @@ TEST(Overlay, BadValuesAreOneLineErrors) {
   EXPECT_EQ(error_of(with_count(1) + kOverlay),
             "walls/t.toml:15: overlay: needs a pipeserver of its own besides those of the "
             "tiles: pipeservers.count must be at least 2, got 1");
-  EXPECT_EQ(error_of(kBase + "[overlay]\nx = 0\ny = 0\nwidth = 1\nheight = 1\nkeys = 0\n"),
-            "walls/t.toml:20: overlay.keys: unknown key");
+  EXPECT_EQ(
+      error_of(kBase + "[overlay]\nx = 0\ny = 0\nwidth = 1\nheight = 1\nkeys = 0\n"),
+      "walls/t.toml:20: overlay.keys: unknown key: did you mean key? (valid here: display, x, y, "
+      "width, height, key)");
 }
 
 }  // namespace

@@ -59,7 +59,8 @@ TEST(SessionFile, AWrongFieldIsOneLineNamingFileLineAndField) {
             "s/x.toml:2: window[0].source: must be one of picture, movie, mesh, vnc, strips, "
             "hotspot, isosurface, patches, swap, got \"web\"");
   EXPECT_EQ(session_error(kSessionWindow + "colour = 1\n"),
-            "s/x.toml:8: window[0].colour: unknown key");
+            "s/x.toml:8: window[0].colour: unknown key (valid here: id, source, content, "
+            "password_file, x, y, width, height, z, fit)");
   EXPECT_EQ(session_error(kSessionWindow + "id = 1\n" + kSessionWindow),
             "s/x.toml:9: window[1].id: 1 is already the id of window[0]");
   EXPECT_EQ(session_error("background = 0x1000000\n" + kSessionWindow),

@@ -160,11 +160,14 @@ TEST(WallFile, NestingInStringsAndCommentsDoesNotCount) {
       "# [[[[[[[[[[[[[[[[[[[[[[[ ''' \"\"\"");
   EXPECT_EQ(error_of(text + "x = [1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 7.5, 8.5, 9.5, 0.5, 1.5, 2.5, "
                             "3.5, 4.5, 5.5, 6.5, 7.5]\n"),
-            "walls/t.toml:16: pipeservers.x: unknown key");
+            "walls/t.toml:16: pipeservers.x: unknown key (valid here: count, framebuffer_width, "
+            "framebuffer_height, assignment)");
   EXPECT_EQ(error_of(text + "[a" + repeated(".a", 14) + "]\nb = 1\n"),
-            "walls/t.toml:16: a: unknown key");
+            "walls/t.toml:16: a: unknown key (valid here: name, canvas, display_grid, display, "
+            "tiling, pipeservers, mesh, depth, overlay, balance)");
   EXPECT_EQ(error_of(text + "x = '[[[[[[[[[[[[[[[[[[[[' # ]\n"),
-            "walls/t.toml:16: pipeservers.x: unknown key");
+            "walls/t.toml:16: pipeservers.x: unknown key (valid here: count, framebuffer_width, "
+            "framebuffer_height, assignment)");
 }
 
 TEST(WallFile, MalformedTomlQuotingTheFileIsOneEscapedLine) {
@@ -180,10 +183,14 @@ TEST(WallFile, MalformedTomlQuotingTheFileIsOneEscapedLine) {
 
 TEST(WallFile, UnknownKeysAreErrors) {
   EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_widht = 5\n")),
-            "walls/t.toml:12: tiling.tile_widht: unknown key");
-  EXPECT_EQ(error_of("colour = 1\n" + kBase), "walls/t.toml:1: colour: unknown key");
+            "walls/t.toml:12: tiling.tile_widht: unknown key: did you mean tile_width? (valid "
+            "here: kind, tile_width, tile_height, tiles, tile_count, cost, strips, substrips)");
+  EXPECT_EQ(error_of("colour = 1\n" + kBase),
+            "walls/t.toml:1: colour: unknown key (valid here: name, canvas, display_grid, display, "
+            "tiling, pipeservers, mesh, depth, overlay, balance)");
   EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 2\nfb_width = 3\n")),
-            "walls/t.toml:14: pipeservers.fb_width: unknown key");
+            "walls/t.toml:14: pipeservers.fb_width: unknown key (valid here: count, "
+            "framebuffer_width, framebuffer_height, assignment)");
   EXPECT_EQ(error_of(replace(kBase, "tile_height = 40\n", "tile_height = 40\ntile_count = 5\n")),
             "walls/t.toml:12: tiling.tile_count: belongs to kind \"kd\", not \"grid\"");
 }
@@ -411,7 +418,8 @@ TEST(WallFile, BalanceErrorsNameTheLineAndField) {
   EXPECT_EQ(error_of(kBase + "[balance]\nmode = \"kd\"\ntile_cost = 1.5\n"),
             "walls/t.toml:18: balance.tile_cost: must be a number from 0 up to below 1, got 1.5");
   EXPECT_EQ(error_of(kBase + "[balance]\nmodes = \"kd\"\n"),
-            "walls/t.toml:17: balance.modes: unknown key");
+            "walls/t.toml:17: balance.modes: unknown key: did you mean mode? (valid here: mode, "
+            "assignment, survive_host_loss, resistance, tile_cost)");
   EXPECT_EQ(error_of(kBase + "[depth]\nlayers = 2\n[balance]\nmode = \"strips\"\n"),
             "walls/t.toml:19: balance.mode: cannot balance a wall with [depth]: its tiles are "
             "shared by layer, not by render time");

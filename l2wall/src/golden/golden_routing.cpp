@@ -16,16 +16,6 @@
 
 namespace l2 {
 
-namespace {
-
-std::vector<int> display_ids(const Wall& wall) {
-  std::vector<int> ids;
-  for (const Display& d : wall.displays) ids.push_back(d.id);
-  return ids;
-}
-
-}  // namespace
-
 std::vector<RgbImage> emulate_displays(const TileLayout& layout,
                                        const std::vector<RgbImage>& frames,
                                        StripErrorCounts& errors,

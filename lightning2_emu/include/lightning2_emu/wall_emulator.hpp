@@ -22,6 +22,8 @@ namespace l2 {
 std::vector<DisplaySpec> display_specs(const Wall& wall);
 // The displays of the wall whose ids are in `ids`, in the wall's order.
 std::vector<DisplaySpec> display_specs(const Wall& wall, std::span<const int> ids);
+// The ids of the wall's displays, in the wall's order.
+std::vector<int> display_ids(const Wall& wall);
 // The mesh the live run builds: as few boards as take the wall's pipeservers and displays,
 // inputs up to the wall's board limit.
 Mesh wall_mesh(const Wall& wall);
