@@ -146,8 +146,16 @@ survived() {
   [[ -n $pid ]] || { echo "FAIL: no process of rank 3"; kill "$run"; exit 1; }
   kill -s KILL "$pid"
   # mpirun keeping the job exits 0 whatever the ranks did, 1 when l2wall ended it after the
-  # loss (it would wait for ever for the lost rank): the output says how the run went.
-  wait "$run" || true
+  # loss (it would wait for ever for the lost rank), as cluster.sh's help says: the output says
+  # how the run went.
+  status=0
+  wait "$run" || status=$?
+  [[ $status == 1 ]] || { echo "FAIL: cluster.sh exited $status, its help says 1"; cat "$dir.err"; exit 1; }
+  # Open MPI's harmless lines (PMIx's BAD-PARAM, the launcher's setpgid) are not the user's to read.
+  if grep -E "PMIX ERROR|plm:rsh: Warning|Epoll MOD" "$dir.err"; then
+    echo "FAIL: Open MPI's noise in what the user reads"
+    exit 1
+  fi
   line=$(grep -E "^l2wall: pipeserver 2 \(rank 3 on render-b, pid $pid\) is gone .* the run goes on without it" "$dir.err") ||
     { echo "FAIL: no line naming pipeserver 2 on render-b gone, the run going on:"; cat "$dir.err"; exit 1; }
   grep -q "^l2wall run: 60 frames on 4 displays" "$dir.out" ||
