@@ -21,8 +21,8 @@
 #              line of its summary.txt.
 # It runs: mpirun -np <the slots' sum> --hostfile ... PROGRAM ARGS..., prints that command on
 # one line ("cluster: ..."), and exits with its code; 77 when this machine cannot make network
-# namespaces (not root, no ip netns), said in one line. Open MPI's own lines that no setting
-# silences and that say nothing wrong of the run here are left out of its stderr (noise() below).
+# namespaces (not root, no ip netns), said in one line. Open MPI's own lines that -q does not
+# reach and that say nothing wrong of the run here are left out of its stderr (noise() below).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 hosts_spec=render-a:3,render-b:2,display-a:1 rate= subnet=10.213.7 keep_job=()
@@ -125,7 +125,7 @@ mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
   --mca mpi_yield_when_idle 1 "${keep_job[@]}")
 echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
-# Open MPI 4.1's lines that -q does not reach and no setting silences, each harmless here: the
+# Open MPI 4.1's lines that -q does not reach, each harmless here: the
 # rsh launcher cannot move a namespace's agent into its own process group (the agent is ended
 # with the job all the same); PMIx reports a bad parameter of its event notification when a job
 # keeps going after a rank's end (--keep-job); its event library warns of a descriptor already
