@@ -45,6 +45,16 @@ long latency_of(const FrameRecord& r) {
   return static_cast<long>(r.swap_refresh) - static_cast<long>(r.in_refresh);
 }
 
+// Frame k's swap time: from its input taken in to the displays swapped, less the time the run was
+// paused since the frame before swapped (--show's space, the control page): a pause holds the
+// frame back, it is not the emulator's or a pipeserver's time. In a run that keeps up, the frame
+// is taken in as the one before swaps, so the pause falls between its input and its swap.
+double swap_ms(const std::vector<FrameRecord>& records, std::size_t k) {
+  const FrameRecord& r = records[k];
+  const double paused = r.paused_ms - (k > 0 ? records[k - 1].paused_ms : 0.0);
+  return std::max(0.0, ms_between(r.in_time, r.swap_time) - paused);
+}
+
 std::string csv_text(const RunTotals& totals, const std::vector<PipeserverLog>& logs,
                      const std::vector<FrameRecord>& records) {
   const bool dvi = totals.latency_measured;
@@ -56,7 +66,7 @@ std::string csv_text(const RunTotals& totals, const std::vector<PipeserverLog>& 
     const FrameRecord& r = records[k];
     if (dvi) {
       csv += fmt::format("{},{},{},{},{:.3f},{:.3f}", k, r.in_refresh, r.swap_refresh,
-                         latency_of(r), r.route_ms, ms_between(r.in_time, r.swap_time));
+                         latency_of(r), r.route_ms, swap_ms(records, k));
     } else {
       csv += fmt::format("{},,,n/a,,", k);  // no emulator on the vizserver path
     }
@@ -85,9 +95,9 @@ RunTimes run_times(const RunOptions& o, const RunTotals& totals,
     }
   }
   if (totals.latency_measured) {  // no emulator on the vizserver path
-    for (const FrameRecord& r : records) {
-      t.route.push_back(r.route_ms);
-      t.swap.push_back(ms_between(r.in_time, r.swap_time));
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      t.route.push_back(records[k].route_ms);
+      t.swap.push_back(swap_ms(records, k));
     }
     // With no frame shown (a fault before the first) nothing limited anything.
     if (!records.empty()) t.refresh_hz = o.refresh_hz;
