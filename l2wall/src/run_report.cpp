@@ -153,8 +153,8 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
                   seconds > 0 ? frames / seconds : 0.0, totals.pace);
   if (writing_s >= 0.005) {
     summary += fmt::format(
-        "of which {:.2f} s writing the pictures kept during the run (--keep): without them the "
-        "run would be faster\n",
+        "of which {:.2f} s writing the pictures saved during the run (--keep, or Save on the "
+        "control page): without them the run would be faster\n",
         writing_s);
   }
   summary += latency_line(records, totals);

@@ -37,7 +37,7 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
   std::smatch run_s, writing_s;
   ASSERT_TRUE(std::regex_search(output, run_s, std::regex("pipeservers in ([0-9.]+) s: ")));
   ASSERT_TRUE(std::regex_search(output, writing_s,
-                                std::regex("of which ([0-9.]+) s writing the pictures kept")))
+                                std::regex("of which ([0-9.]+) s writing the pictures saved")))
       << output;
   EXPECT_GT(std::stod(writing_s[1]), 0.0);
   EXPECT_GE(std::stod(run_s[1]), std::stod(writing_s[1])) << output;
