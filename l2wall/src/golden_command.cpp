@@ -102,7 +102,8 @@ void add_golden_command(CLI::App& app) {
       "regenerate the golden images of every entry (or --entry) and record the Mesa version of "
       "rendered ones in the manifest. Writes nothing unless every entry is sound (both paths "
       "identical, reference within tolerance); refuses to change a routing-only (test-pattern) "
-      "image unless --allow-routing-change");
+      "image unless --allow-routing-change. Needs --goldens: it never writes into the project's "
+      "own golden folder unasked");
   add_path_options(*u, update->paths, update->entries);
   u->add_option("--out", update->out, "where the runs and pictures of refused changes go")
       ->check(non_empty_path())
@@ -111,8 +112,17 @@ void add_golden_command(CLI::App& app) {
   u->add_flag("--allow-routing-change", update->allow_routing_change,
               "write changed routing-only (test-pattern) images too: only when the routing or "
               "the test pattern was changed on purpose");
-  u->callback([update] {
+  u->callback([update, u] {
     update->tools = tools();
+    // Unasked, the default folder is the project's own (the source tree, or the installed
+    // files): an update writes only where it was told to.
+    if (u->get_option("--goldens")->count() == 0) {
+      std::fprintf(stderr,
+                   "l2wall golden update: give --goldens DIR, the golden folder to write; the "
+                   "default, %s, is the project's own (to regenerate it, name it)\n",
+                   update->paths.goldens.string().c_str());
+      throw CLI::RuntimeError(2);
+    }
     finish([&] { return run_golden_update(*update, std::cout); });
   });
 }

@@ -47,7 +47,7 @@ TEST_F(GoldenCli, OnePixelChangedInAGoldenImageFailsWithADiffPicture) {
   EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
                           "`l2wall golden update --goldens " +
                           goldens().string() + " --root " + kSource.string() + " --entry " +
-                          kPattern + "`\n"),
+                          kPattern + " --allow-routing-change`\n"),
             std::string::npos)
       << r.output;
   // Only that display, only against the golden: both paths and the test pattern agree.
@@ -162,6 +162,25 @@ TEST_F(GoldenCli, AMissingGoldenImageNamesTheCommandThatMakesIt) {
                           kPattern + "`)"),
             std::string::npos)
       << r.output;
+}
+
+// Without --goldens an update would write into the project's own golden folder: it refuses,
+// before running anything, and says which folder that was.
+TEST_F(GoldenCli, UpdateWritesOnlyIntoAFolderItIsGiven) {
+  const fs::path manifest = kSource / "tests/golden_images/manifest.toml";
+  const auto before = fs::last_write_time(manifest);
+  const Result r = l2wall("update --out " + quote(out()) + " --entry " + kPattern);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("l2wall golden update: give --goldens DIR, the golden folder to write; "
+                          "the default, "),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("tests/golden_images, is the project's own (to regenerate it, name "
+                          "it)\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("[1/1]"), std::string::npos) << r.output;  // nothing was run
+  EXPECT_EQ(fs::last_write_time(manifest), before);
 }
 
 TEST_F(GoldenCli, UsageErrorsAreOneLine) {
