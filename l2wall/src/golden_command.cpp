@@ -81,11 +81,11 @@ void add_golden_command(CLI::App& app) {
       ->check(non_empty_path())
       ->type_name("DIR")
       ->capture_default_str();
-  c->add_option(
-       "--inputs", check->inputs,
-       "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
-       "`tilelayout --wall WALL --scanout DIR` names them) through the emulator and compare "
-       "the displays with the golden images of the one routing-only --entry")
+  c->add_option("--inputs", check->inputs,
+                "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
+                "`tilelayout --wall WALL --canvas-pattern --scanout DIR` names them) through the "
+                "emulator and compare "
+                "the displays with the golden images of the one routing-only --entry")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--write-actual", check->write_actual,

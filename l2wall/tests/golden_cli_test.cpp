@@ -2,8 +2,11 @@
 // golden folder: a changed golden pixel and a changed header field in a captured frame each
 // fail with a summary line and a diff picture that shows them, OpenImageIO's idiff agrees with
 // every verdict, and update refuses to change a routing-only golden without being told to.
-#include "golden_cli.hpp"
+#include <fstream>
+#include <sstream>
+
 #include "display_compare.hpp"
+#include "golden_cli.hpp"
 #include "image/png_io.hpp"
 #include "strip_headers/strip_header.hpp"
 #include "tilelayout/planner.hpp"
@@ -72,7 +75,7 @@ TEST_F(GoldenCli, OneHeaderFieldChangedInAnInputFrameFailsWithADiffPicture) {
   const fs::path inputs = dir_ / "captured";
   const Result scanout =
       run(std::string(TILELAYOUT_PATH) + " --wall " + quote(kSource / "walls/kd-2x2.toml") +
-          " --parity 1 --scanout " + quote(inputs));
+          " --parity 1 --canvas-pattern --scanout " + quote(inputs));
   ASSERT_EQ(scanout.code, 0) << scanout.output;
   const std::string check =
       "check " + common() + " --entry " + kPattern + " --inputs " + quote(inputs);
@@ -160,6 +163,33 @@ TEST_F(GoldenCli, AMissingGoldenImageNamesTheCommandThatMakesIt) {
                           " is missing (make it with `l2wall golden update --goldens " +
                           goldens().string() + " --root " + kSource.string() + " --entry " +
                           kPattern + "`)"),
+            std::string::npos)
+      << r.output;
+}
+
+// Wider mullions move displays on the canvas but route every display pixel as before: the
+// routing-only entry sees it, as its pattern encodes canvas positions, and its hint names the
+// flag the update then needs.
+TEST_F(GoldenCli, AWallWithWiderMullionsFailsTheRoutingEntry) {
+  const fs::path root = dir_ / "root";
+  fs::create_directories(root / "walls");
+  std::ostringstream text;
+  text << std::ifstream(kSource / "walls/kd-2x2.toml").rdbuf();
+  std::string wall = text.str();
+  const std::string was = "mullion_x = 20 ";
+  ASSERT_NE(wall.find(was), std::string::npos);
+  wall.replace(wall.find(was), was.size(), "mullion_x = 24 ");
+  std::ofstream(root / "walls/kd-2x2.toml") << wall;
+  const Result r = l2wall("check " + common() + " --root " + quote(root) + " --entry " + kPattern);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find(kPattern + " display 1: emulator vs golden image: "), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find(kPattern + " display 0: emulator vs golden image: "), std::string::npos)
+      << r.output;  // display 0 stays where it was
+  EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
+                          "`l2wall golden update --goldens " +
+                          goldens().string() + " --root " + root.string() + " --entry " + kPattern +
+                          " --allow-routing-change`\n"),
             std::string::npos)
       << r.output;
 }
