@@ -56,6 +56,16 @@ GoldenTools tools() {
           sibling_program("pipeserver").string()};
 }
 
+// Unasked, the default golden folder is the project's own (the source tree, or the installed
+// files): an update writes only into a folder it was told to.
+[[noreturn]] void refuse_default_goldens(const GoldenPaths& paths) {
+  std::fprintf(stderr,
+               "l2wall golden update: give --goldens DIR, the golden folder to write; the "
+               "default, %s, is the project's own (to regenerate it, name it)\n",
+               paths.goldens.string().c_str());
+  throw CLI::RuntimeError(2);
+}
+
 }  // namespace
 
 void add_golden_command(CLI::App& app) {
@@ -84,8 +94,8 @@ void add_golden_command(CLI::App& app) {
   c->add_option("--inputs", check->inputs,
                 "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
                 "`tilelayout --wall WALL --canvas-pattern --scanout DIR` names them) through the "
-                "emulator and compare "
-                "the displays with the golden images of the one routing-only --entry")
+                "emulator and compare the displays with the golden images of the one "
+                "routing-only --entry")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--write-actual", check->write_actual,
@@ -114,15 +124,7 @@ void add_golden_command(CLI::App& app) {
               "the test pattern was changed on purpose");
   u->callback([update, u] {
     update->tools = tools();
-    // Unasked, the default folder is the project's own (the source tree, or the installed
-    // files): an update writes only where it was told to.
-    if (u->get_option("--goldens")->count() == 0) {
-      std::fprintf(stderr,
-                   "l2wall golden update: give --goldens DIR, the golden folder to write; the "
-                   "default, %s, is the project's own (to regenerate it, name it)\n",
-                   update->paths.goldens.string().c_str());
-      throw CLI::RuntimeError(2);
-    }
+    if (u->get_option("--goldens")->count() == 0) refuse_default_goldens(update->paths);
     finish([&] { return run_golden_update(*update, std::cout); });
   });
 }
