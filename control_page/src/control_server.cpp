@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <httplib.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <condition_variable>
 #include <fstream>
@@ -36,7 +38,13 @@ void reply_json(httplib::Response& res, int status, const std::string& body) {
 }
 
 void refuse(httplib::Response& res, int status, const std::string& why) {
-  reply_json(res, status, fmt::format(R"({{"error":"{}"}})", why));
+  reply_json(res, status, nlohmann::json{{"error", why}}.dump());
+}
+
+// The run's decision as the answer: what it did, or why not with the refusal's status.
+void answer(httplib::Response& res, const ControlDecision& decision) {
+  if (decision.status >= 300) return refuse(res, decision.status, decision.text);
+  reply_json(res, decision.status, nlohmann::json{{"done", decision.text}}.dump());
 }
 
 std::string given_token(const httplib::Request& req) {
@@ -53,6 +61,7 @@ struct ControlServer::Impl {
   std::thread thread;
   int port = 0;
   ControlInbox inbox;
+  std::chrono::milliseconds decision_wait{};
 
   std::mutex mutex;
   std::condition_variable read_happened;
@@ -186,15 +195,17 @@ struct ControlServer::Impl {
                       "window: give ?action=move&id=ID&x=X&y=Y&w=W&h=H, or action=raise or "
                       "close with id");
     }
-    inbox.push(std::move(r));
-    reply_json(res, 202, R"({"taken":true})");
+    const std::uint64_t ticket = inbox.push(std::move(r));
+    answer(res, inbox.wait(ticket, decision_wait));
   }
 };
 
-ControlServer::ControlServer(const HttpAddress& address, std::string token)
+ControlServer::ControlServer(const HttpAddress& address, std::string token,
+                             std::chrono::milliseconds decision_wait)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.address = address;
+  s.decision_wait = decision_wait;
   s.token = std::move(token);
   s.server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   s.server.set_payload_max_length(kMaxBody);
@@ -225,6 +236,7 @@ ControlServer::ControlServer(const HttpAddress& address, std::string token)
 }
 
 ControlServer::~ControlServer() {
+  impl_->inbox.close("the run is over: nothing to steer");  // no request waits on a run gone
   impl_->server.stop();
   impl_->thread.join();
 }
@@ -262,6 +274,7 @@ ControlInbox& ControlServer::inbox() {
 }
 
 void ControlServer::refuse_steering(std::string why) {
+  impl_->inbox.close(why);
   const std::lock_guard lock(impl_->mutex);
   impl_->steering_refused = std::move(why);
 }

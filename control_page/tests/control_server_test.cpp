@@ -5,6 +5,7 @@
 #include <httplib.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -101,6 +102,39 @@ TEST(ControlServer, IsWatchedOnlyWhileAPageReadsItsState) {
   EXPECT_FALSE(server.watched(std::chrono::milliseconds(10)));  // the reader went away
 }
 
+// Stands for the run: takes the requests between its "frames" and decides each, pausing
+// always and refusing every balance mode but kd.
+class FakeRun {
+ public:
+  explicit FakeRun(ControlServer& server)
+      : thread_([this, &server] {
+          while (!done_) {
+            for (const ControlRequest& r : server.inbox().take()) {
+              taken_.push_back(r);
+              server.inbox().decide(r.ticket, decide(r));
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+        }) {}
+  // Every request it took, oldest first.
+  std::vector<ControlRequest> end() {
+    done_ = true;
+    thread_.join();
+    return taken_;
+  }
+
+ private:
+  static ControlDecision decide(const ControlRequest& r) {
+    if (r.action != ControlAction::Balance) return {200, "paused"};
+    if (r.argument == "kd") return {200, "balance mode: kd"};
+    return {400, "balance mode '" + r.argument + "': expected \"kd\""};
+  }
+
+  std::atomic<bool> done_ = false;
+  std::vector<ControlRequest> taken_;
+  std::thread thread_;
+};
+
 TEST(ControlServer, SteeringNeedsTheTokenAndARefusalChangesNothing) {
   ControlServer server(any_port(), kToken);
   httplib::Client client("127.0.0.1", server.port());
@@ -113,16 +147,59 @@ TEST(ControlServer, SteeringNeedsTheTokenAndARefusalChangesNothing) {
   EXPECT_EQ(wrong->status, 403);
   EXPECT_TRUE(server.inbox().take().empty());
 
-  EXPECT_EQ(client.Post(std::string("/api/pause?token=") + kToken)->status, 202);
+  FakeRun run(server);
+  const auto paused = client.Post(std::string("/api/pause?token=") + kToken);
+  EXPECT_EQ(paused->status, 200);
+  EXPECT_EQ(paused->body, R"({"done":"paused"})");
   const httplib::Headers header{{"X-L2-Token", kToken}};
-  EXPECT_EQ(client.Post("/api/balance?mode=kd", header, "", "text/plain")->status, 202);
+  EXPECT_EQ(client.Post("/api/balance?mode=kd", header, "", "text/plain")->status, 200);
   EXPECT_EQ(client.Post("/api/balance", header, "", "text/plain")->status, 400);
-  const std::vector<ControlRequest> got = server.inbox().take();
+  const std::vector<ControlRequest> got = run.end();
   ASSERT_EQ(got.size(), 2u);
   EXPECT_EQ(got[0].action, ControlAction::Pause);
   EXPECT_EQ(got[1].action, ControlAction::Balance);
   EXPECT_EQ(got[1].argument, "kd");
+}
+
+// The answer is the run's decision: a refusal with its status and reason, JSON-quoted.
+TEST(ControlServer, ARequestIsAnsweredWithTheRunsDecision) {
+  ControlServer server(any_port(), kToken);
+  httplib::Client client("127.0.0.1", server.port());
+  FakeRun run(server);
+  const auto refused = client.Post(std::string("/api/balance?mode=sideways&token=") + kToken);
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 400);
+  EXPECT_EQ(refused->body, R"({"error":"balance mode 'sideways': expected \"kd\""})");
+  EXPECT_EQ(run.end().size(), 1u);
+}
+
+// A run that takes no request (starting, or held up) gets none: the request is withdrawn.
+TEST(ControlServer, ARequestNotTakenIsWithdrawnWith503) {
+  ControlServer server(any_port(), kToken, std::chrono::milliseconds(50));
+  httplib::Client client("127.0.0.1", server.port());
+  const auto r = client.Post(std::string("/api/pause?token=") + kToken);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 503);
+  EXPECT_EQ(r->body,
+            R"({"error":"the run took no request within 0.05 s (it is starting, or held up); )"
+            R"(nothing changed, ask again"})");
   EXPECT_TRUE(server.inbox().take().empty());
+}
+
+// A run that ends with a request taken but not decided answers it as over, not never.
+TEST(ControlServer, ARunThatEndsAnswersWhatItTook) {
+  ControlServer server(any_port(), kToken, std::chrono::hours(1));
+  std::thread run([&server] {
+    while (server.inbox().take().empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    server.refuse_steering("the run is over: stopped");
+  });
+  httplib::Client client("127.0.0.1", server.port());
+  const auto r = client.Post(std::string("/api/save?token=") + kToken);
+  run.join();
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 409);
+  EXPECT_EQ(r->body, R"({"error":"the run is over: stopped"})");
+  EXPECT_EQ(client.Post(std::string("/api/save?token=") + kToken)->status, 409);
 }
 
 // Bound beyond this machine, the run's state is read with the token only.

@@ -56,6 +56,16 @@ GoldenTools tools() {
           sibling_program("pipeserver").string()};
 }
 
+// Unasked, the default golden folder is the project's own (the source tree, or the installed
+// files): an update writes only into a folder it was told to.
+[[noreturn]] void refuse_default_goldens(const GoldenPaths& paths) {
+  std::fprintf(stderr,
+               "l2wall golden update: give --goldens DIR, the golden folder to write; the "
+               "default, %s, is the project's own (to regenerate it, name it)\n",
+               paths.goldens.string().c_str());
+  throw CLI::RuntimeError(2);
+}
+
 }  // namespace
 
 void add_golden_command(CLI::App& app) {
@@ -81,11 +91,11 @@ void add_golden_command(CLI::App& app) {
       ->check(non_empty_path())
       ->type_name("DIR")
       ->capture_default_str();
-  c->add_option(
-       "--inputs", check->inputs,
-       "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
-       "`tilelayout --wall WALL --scanout DIR` names them) through the emulator and compare "
-       "the displays with the golden images of the one routing-only --entry")
+  c->add_option("--inputs", check->inputs,
+                "route captured frames instead: DIR/scanout-<i>.png for every pipeserver i (as "
+                "`tilelayout --wall WALL --canvas-pattern --scanout DIR` names them) through the "
+                "emulator and compare the displays with the golden images of the one "
+                "routing-only --entry")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
   c->add_flag("--write-actual", check->write_actual,
@@ -102,7 +112,8 @@ void add_golden_command(CLI::App& app) {
       "regenerate the golden images of every entry (or --entry) and record the Mesa version of "
       "rendered ones in the manifest. Writes nothing unless every entry is sound (both paths "
       "identical, reference within tolerance); refuses to change a routing-only (test-pattern) "
-      "image unless --allow-routing-change");
+      "image unless --allow-routing-change. Needs --goldens: it never writes into the project's "
+      "own golden folder unasked");
   add_path_options(*u, update->paths, update->entries);
   u->add_option("--out", update->out, "where the runs and pictures of refused changes go")
       ->check(non_empty_path())
@@ -111,8 +122,9 @@ void add_golden_command(CLI::App& app) {
   u->add_flag("--allow-routing-change", update->allow_routing_change,
               "write changed routing-only (test-pattern) images too: only when the routing or "
               "the test pattern was changed on purpose");
-  u->callback([update] {
+  u->callback([update, u] {
     update->tools = tools();
+    if (u->get_option("--goldens")->count() == 0) refuse_default_goldens(update->paths);
     finish([&] { return run_golden_update(*update, std::cout); });
   });
 }

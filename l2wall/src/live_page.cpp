@@ -166,7 +166,13 @@ std::vector<ControlRequest> LivePage::requests() {
   return r;
 }
 
+void LivePage::decide(int frame, const ControlRequest& request, ControlDecision decision) {
+  event(frame, decision.text);
+  server_->inbox().decide(request.ticket, std::move(decision));
+}
+
 void LivePage::end(const std::string& how, const std::string& summary) {
+  server_->refuse_steering("the run is over: " + how);
   read_logs();
   state_.ended = how;
   state_.summary = summary;

@@ -60,6 +60,9 @@ class LivePage {
   void event(int frame, std::string text);
 
   std::vector<ControlRequest> requests();
+  // The run's decision on a request taken: the page lists it as an event, and the HTTP request
+  // that asked for it is answered with it.
+  void decide(int frame, const ControlRequest& request, ControlDecision decision);
 
   // The run is over (`how`: the summary's first line, or the fault): the page says so and gets a
   // moment to read it before the server ends with the run.

@@ -41,13 +41,18 @@ class PageRun : public WallRun {
     return nlohmann::json::parse(r->body);
   }
 
-  // POST /api/WHAT (WHAT may carry its own query) with the token.
-  void post(const std::string& what) {
+  // POST /api/WHAT (WHAT may carry its own query) with the token: the run's answer, expected
+  // with `status`; its body as JSON (null when there was no answer).
+  nlohmann::json post(const std::string& what, int status = 200) {
     const std::string path =
         "/api/" + what + (what.find('?') == std::string::npos ? "?" : "&") + "token=" + token_;
     const auto r = client_->Post(path, "", "text/plain");
-    ASSERT_TRUE(r) << "POST " << what;
-    EXPECT_EQ(r->status, 202) << "POST " << what << ": " << r->body;
+    if (!r) {
+      ADD_FAILURE() << "POST " << what << ": no answer";
+      return nullptr;
+    }
+    EXPECT_EQ(r->status, status) << "POST " << what << ": " << r->body;
+    return nlohmann::json::parse(r->body, nullptr, false);
   }
 
   // The state once `done` says so.

@@ -25,7 +25,9 @@ TEST(ControlPageRun, SteeredOverHttp) {
   run.wait_for_frame(before + 3);  // still running: the refusal changed nothing
   EXPECT_FALSE(run.state()["paused"].get<bool>());
 
-  run.post("pause");
+  // The answer is the run's decision, taken at its next frame boundary.
+  EXPECT_EQ(run.post("pause"),
+            nlohmann::json({{"done", "paused: READY held back, the pipeservers wait"}}));
   const nlohmann::json paused = run.wait_for([](const nlohmann::json& s) { return s["paused"]; });
   const int held = paused["frame"];
   std::this_thread::sleep_for(500ms);
@@ -33,26 +35,32 @@ TEST(ControlPageRun, SteeredOverHttp) {
 
   // What the page shows of display 1 is what the run saves of it: byte for byte.
   const RgbImage shown = run.display(1);
-  run.post("save");
+  // A paused run still takes requests and answers them.
   const fs::path saved = run.out() / fmt::format("frame-{}", held) / "display-1.png";
-  run.wait_for([&](const nlohmann::json& s) {
-    return s["events"].dump().find("saved the displays") != std::string::npos;
-  });
+  EXPECT_EQ(run.post("save"),
+            nlohmann::json({{"done", "saved the displays to " + saved.parent_path().string()}}));
   ASSERT_TRUE(fs::exists(saved));
   EXPECT_TRUE(read_png(saved) == shown);
   const RgbImage small = run.display(1, 8);
   EXPECT_EQ(small.width(), (shown.width() + 7) / 8);
   EXPECT_EQ(small.at(5, 3), shown.at(40, 24));
 
-  run.post("balance?mode=kd");  // a static run: said, not done
-  run.wait_for([](const nlohmann::json& s) {
-    return s["events"].dump().find("balance not switched: this run does not balance") !=
-           std::string::npos;
+  // What the run cannot do is refused in the answer, with the reason its events list too.
+  const std::string no_balance =
+      "balance not switched: this run does not balance (start it with --balance or [balance])";
+  EXPECT_EQ(run.post("balance?mode=kd", 409), nlohmann::json({{"error", no_balance}}));
+  const std::string no_session =
+      "window not changed: this run shows no session (start it with --scene session)";
+  EXPECT_EQ(run.post("window?action=raise&id=1", 409), nlohmann::json({{"error", no_session}}));
+  run.wait_for([&](const nlohmann::json& s) {
+    const std::string events = s["events"].dump();
+    return events.find(no_balance) != std::string::npos &&
+           events.find(no_session) != std::string::npos;
   });
 
-  run.post("resume");
+  EXPECT_EQ(run.post("resume"), nlohmann::json({{"done", "resumed"}}));
   run.wait_for_frame(held + 3);
-  run.post("stop");
+  EXPECT_EQ(run.post("stop"), nlohmann::json({{"done", "stopped from the control page"}}));
   EXPECT_EQ(run.wait(60s).code, 0) << run.output();
   const std::string summary = slurp(run.out() / "summary.txt");
   EXPECT_TRUE(std::regex_search(
@@ -66,13 +74,14 @@ TEST(ControlPageRun, SwitchesTheBalanceMode) {
   PageRun run("balance", {"--frames", "100000", "--keep", "none", "--balance", "strips"});
   run.wait_for_frame(3);
   EXPECT_EQ(run.state()["balance"]["mode"], "strips");
-  run.post("balance?mode=kd");
+  EXPECT_EQ(run.post("balance?mode=kd"),
+            nlohmann::json({{"done", "balance mode: kd from the next layout"}}));
   run.wait_for([](const nlohmann::json& s) { return s["balance"]["mode"] == "kd"; });
-  run.post("balance?mode=sideways");
-  run.wait_for([](const nlohmann::json& s) {
-    return s["events"].dump().find("balance mode 'sideways': expected static, strips or kd") !=
-           std::string::npos;
-  });
+  EXPECT_EQ(
+      run.post("balance?mode=sideways", 400),
+      nlohmann::json(
+          {{"error",
+            "balance not switched: balance mode 'sideways': expected static, strips or kd"}}));
   run.post("stop");
   EXPECT_EQ(run.wait(60s).code, 0) << run.output();
   const std::string summary = slurp(run.out() / "summary.txt");

@@ -2,8 +2,11 @@
 // golden folder: a changed golden pixel and a changed header field in a captured frame each
 // fail with a summary line and a diff picture that shows them, OpenImageIO's idiff agrees with
 // every verdict, and update refuses to change a routing-only golden without being told to.
-#include "golden_cli.hpp"
+#include <fstream>
+#include <sstream>
+
 #include "display_compare.hpp"
+#include "golden_cli.hpp"
 #include "image/png_io.hpp"
 #include "strip_headers/strip_header.hpp"
 #include "tilelayout/planner.hpp"
@@ -47,7 +50,7 @@ TEST_F(GoldenCli, OnePixelChangedInAGoldenImageFailsWithADiffPicture) {
   EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
                           "`l2wall golden update --goldens " +
                           goldens().string() + " --root " + kSource.string() + " --entry " +
-                          kPattern + "`\n"),
+                          kPattern + " --allow-routing-change`\n"),
             std::string::npos)
       << r.output;
   // Only that display, only against the golden: both paths and the test pattern agree.
@@ -72,7 +75,7 @@ TEST_F(GoldenCli, OneHeaderFieldChangedInAnInputFrameFailsWithADiffPicture) {
   const fs::path inputs = dir_ / "captured";
   const Result scanout =
       run(std::string(TILELAYOUT_PATH) + " --wall " + quote(kSource / "walls/kd-2x2.toml") +
-          " --parity 1 --scanout " + quote(inputs));
+          " --parity 1 --canvas-pattern --scanout " + quote(inputs));
   ASSERT_EQ(scanout.code, 0) << scanout.output;
   const std::string check =
       "check " + common() + " --entry " + kPattern + " --inputs " + quote(inputs);
@@ -162,6 +165,52 @@ TEST_F(GoldenCli, AMissingGoldenImageNamesTheCommandThatMakesIt) {
                           kPattern + "`)"),
             std::string::npos)
       << r.output;
+}
+
+// Wider mullions move displays on the canvas but route every display pixel as before: the
+// routing-only entry sees it, as its pattern encodes canvas positions, and its hint names the
+// flag the update then needs.
+TEST_F(GoldenCli, AWallWithWiderMullionsFailsTheRoutingEntry) {
+  const fs::path root = dir_ / "root";
+  fs::create_directories(root / "walls");
+  std::ostringstream text;
+  text << std::ifstream(kSource / "walls/kd-2x2.toml").rdbuf();
+  std::string wall = text.str();
+  const std::string was = "mullion_x = 20 ";
+  ASSERT_NE(wall.find(was), std::string::npos);
+  wall.replace(wall.find(was), was.size(), "mullion_x = 24 ");
+  std::ofstream(root / "walls/kd-2x2.toml") << wall;
+  const Result r = l2wall("check " + common() + " --root " + quote(root) + " --entry " + kPattern);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find(kPattern + " display 1: emulator vs golden image: "), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find(kPattern + " display 0: emulator vs golden image: "), std::string::npos)
+      << r.output;  // display 0 stays where it was
+  EXPECT_NE(r.output.find("golden check: if the change is intended, make them the golden images: "
+                          "`l2wall golden update --goldens " +
+                          goldens().string() + " --root " + root.string() + " --entry " + kPattern +
+                          " --allow-routing-change`\n"),
+            std::string::npos)
+      << r.output;
+}
+
+// Without --goldens an update would write into the project's own golden folder: it refuses,
+// before running anything, and says which folder that was.
+TEST_F(GoldenCli, UpdateWritesOnlyIntoAFolderItIsGiven) {
+  const fs::path manifest = kSource / "tests/golden_images/manifest.toml";
+  const auto before = fs::last_write_time(manifest);
+  const Result r = l2wall("update --out " + quote(out()) + " --entry " + kPattern);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("l2wall golden update: give --goldens DIR, the golden folder to write; "
+                          "the default, "),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("tests/golden_images, is the project's own (to regenerate it, name "
+                          "it)\n"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("[1/1]"), std::string::npos) << r.output;  // nothing was run
+  EXPECT_EQ(fs::last_write_time(manifest), before);
 }
 
 TEST_F(GoldenCli, UsageErrorsAreOneLine) {

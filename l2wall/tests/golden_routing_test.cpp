@@ -20,16 +20,18 @@ TileLayout example(const char* wall) {
   return plan_layout(load_wall(std::filesystem::path(L2_SOURCE_DIR) / "walls" / wall));
 }
 
-// Every pixel decodes (test_pattern_position) to where it is: routed to the right place.
-void expect_every_pixel_in_place(const RgbImage& display, int id) {
+// Every pixel decodes (test_pattern_position) to where it is on the canvas: routed to the right
+// place, and the display where the wall file puts it.
+void expect_every_pixel_in_place(const RgbImage& display, const Display& d) {
   int misplaced = 0;
   for (int y = 0; y < display.height(); ++y) {
     for (int x = 0; x < display.width(); ++x) {
-      const auto at = test_pattern_position(id, display.at(x, y));
-      if (!at || at->first != x || at->second != y) ++misplaced;
+      const auto at = test_pattern_position(d.id, display.at(x, y));
+      if (!at || at->first != (d.canvas_x + x) % 4096 || at->second != (d.canvas_y + y) % 4096)
+        ++misplaced;
     }
   }
-  EXPECT_EQ(misplaced, 0) << "display " << id;
+  EXPECT_EQ(misplaced, 0) << "display " << d.id;
 }
 
 TEST(GoldenRouting, TestPatternArrivesInPlaceOnBothPaths) {
@@ -41,7 +43,7 @@ TEST(GoldenRouting, TestPatternArrivesInPlaceOnBothPaths) {
   EXPECT_EQ(shown.input_errors.total(), 0u);
   for (std::size_t i = 0; i < shown.ids.size(); ++i) {
     EXPECT_EQ(shown.emulator[i].width(), 1024);
-    expect_every_pixel_in_place(shown.emulator[i], shown.ids[i]);
+    expect_every_pixel_in_place(shown.emulator[i], layout.wall.displays[i]);
     EXPECT_TRUE(shown.vizserver[i] == shown.emulator[i]) << "display " << i;
     EXPECT_TRUE(shown.reference[i] == shown.emulator[i]) << "display " << i;
   }
@@ -69,6 +71,19 @@ TEST(GoldenRouting, AWrongHeaderFieldMovesItsStrip) {
     EXPECT_EQ(display.at(x, d.y + r - 1), test_pattern(t.tile.display, x, d.y + r));
   }
   EXPECT_EQ(display.at(d.x, d.y + r + 1), test_pattern(t.tile.display, d.x, d.y + r + 1));
+}
+
+// The pattern encodes canvas positions: wider mullions, which move displays 1 and 3 on the
+// canvas but route every display pixel as before, change what those displays show.
+TEST(GoldenRouting, AChangeOfGeometryChangesTheDisplays) {
+  Wall wall = load_wall(std::filesystem::path(L2_SOURCE_DIR) / "walls/kd-2x2.toml");
+  const EntryDisplays before = produce_test_pattern(plan_layout(wall), 1, false);
+  for (Display& d : wall.displays) d.canvas_x += d.canvas_x > 0 ? 4 : 0;
+  wall.canvas_width += 4;
+  const EntryDisplays after = produce_test_pattern(plan_layout(wall), 1, false);
+  EXPECT_TRUE(after.emulator[0] == before.emulator[0]);
+  EXPECT_FALSE(after.emulator[1] == before.emulator[1]);
+  EXPECT_TRUE(after.reference[1] == after.emulator[1]);
 }
 
 TEST(GoldenRouting, CapturedFramesNeedOneFilePerPipeserver) {

@@ -161,7 +161,15 @@ TEST(SessionOnTheWall, AWindowMovedFromThePageMovesOnEveryDisplayInOneFrame) {
   const MovingSession session("session-page");
   PageRun run("session-move", session.args());
   run.wait_for_frame(5);
-  run.post("window?action=move&id=1&x=600&y=420&w=200&h=150");
+  // Refusals are answered as such and change nothing: the window still moves once.
+  EXPECT_EQ(run.post("window?action=move&id=9&x=600&y=420&w=200&h=150", 404),
+            nlohmann::json({{"error", "window not changed: window 9 is not in the session"}}));
+  EXPECT_EQ(run.post("window?action=move&id=1&x=600&y=420&w=0&h=150", 400),
+            nlohmann::json({{"error",
+                             "window not changed: command 'move 1 600 420 0 150': W must be an "
+                             "integer 1..16384, got '0'"}}));
+  EXPECT_EQ(run.post("window?action=move&id=1&x=600&y=420&w=200&h=150"),
+            nlohmann::json({{"done", "window: move 1 600 420 200 150 from the next frame"}}));
   const ExitStatus status = run.wait(120s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   session.expect_moved_once(run);

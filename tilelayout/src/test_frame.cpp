@@ -19,16 +19,17 @@ Rgb depth_pixel(std::uint32_t depth) {
 
 // What tile `p` of a pipeserver rendering `layer` of `layers` sends for its pixel (x, y): its
 // colour, and for DEPTH its depth pixel (test_pattern.hpp).
-void fill_tile(const PackedTile& p, int layer, int layers, RgbImage& fb) {
+void fill_tile(const PackedTile& p, int layer, int layers, PatternPlace place, RgbImage& fb) {
   const DisplayTile& t = p.tile;
   const Rect& d = t.on_display;
+  const Rect& at = place == PatternPlace::Canvas ? t.on_canvas : t.on_display;
   const Rgb key{static_cast<std::uint8_t>(t.key >> 16), static_cast<std::uint8_t>(t.key >> 8),
                 static_cast<std::uint8_t>(t.key)};
   for (int j = 0; j < d.h; ++j) {
     std::uint8_t* px = fb.row(p.fb_y + j).data() + static_cast<std::size_t>(p.fb_x) * 3;
     std::uint8_t* depth = px + static_cast<std::size_t>(d.w) * 3;
     for (int i = 0; i < d.w; ++i, px += 3, depth += 3) {
-      const int x = d.x + i, y = d.y + j;
+      const int x = at.x + i, y = at.y + j;
       if (t.compositing == Compositing::Depth) {
         const LayerPixel l = depth_test_pixel(t.display, x, y, layer, layers);
         put(px, l.colour);
@@ -44,13 +45,13 @@ void fill_tile(const PackedTile& p, int layer, int layers, RgbImage& fb) {
 
 }  // namespace
 
-void fill_test_pattern(const PipeserverPlan& plan, RgbImage& fb) {
-  for (const PackedTile& p : plan.tiles) fill_tile(p, plan.layer, plan.layers, fb);
+void fill_test_pattern(const PipeserverPlan& plan, RgbImage& fb, PatternPlace place) {
+  for (const PackedTile& p : plan.tiles) fill_tile(p, plan.layer, plan.layers, place, fb);
 }
 
-RgbImage test_frame(const PipeserverPlan& plan, bool frame_parity) {
+RgbImage test_frame(const PipeserverPlan& plan, bool frame_parity, PatternPlace place) {
   RgbImage fb(plan.fb_width, plan.fb_height);
-  fill_test_pattern(plan, fb);
+  fill_test_pattern(plan, fb, place);
   draw_headers(plan, frame_parity, fb);
   return fb;
 }

@@ -7,6 +7,7 @@
 #include "routing_check.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_frame.hpp"
+#include "tilelayout/test_pattern.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -63,6 +64,20 @@ TEST(Scanout, TheCheckCatchesAMisroutedStrip) {
   EXPECT_EQ(c.wrong_colour, d.w);
   EXPECT_EQ(c.covered_twice, d.w);
   EXPECT_EQ(c.uncovered, d.w);
+}
+
+// The canvas pattern carries each pixel's canvas position: a tile's first pixel decodes to the
+// tile's canvas corner, which differs from its display corner on every display but one at the
+// canvas origin.
+TEST(Scanout, TheCanvasPatternEncodesCanvasPositions) {
+  const TileLayout layout = plan_layout(default_wall());
+  for (const PipeserverPlan& s : layout.pipeservers) {
+    const RgbImage frame = test_frame(s, false, PatternPlace::Canvas);
+    for (const PackedTile& p : s.tiles) {
+      const Rgb first = frame.at(p.fb_x, p.fb_y);
+      EXPECT_EQ(first, test_pattern(p.tile.display, p.tile.on_canvas.x, p.tile.on_canvas.y));
+    }
+  }
 }
 
 }  // namespace

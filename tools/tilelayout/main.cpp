@@ -38,11 +38,12 @@ void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& d
   }
 }
 
-void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity) {
+void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity,
+                   l2::PatternPlace place) {
   l2::make_folders(dir, "--scanout");
   for (const l2::PipeserverPlan& s : layout.pipeservers) {
     const auto path = dir / fmt::format("scanout-{}.png", s.pipeserver);
-    l2::write_png(path, l2::test_frame(s, parity));
+    l2::write_png(path, l2::test_frame(s, parity, place));
     std::cout << "wrote " << path.string() << "\n";
   }
 }
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
   std::string wall_path;
   std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
-  bool print_default = false, suggest = false;
+  bool print_default = false, suggest = false, canvas_pattern = false;
   CLI::Option* const wall_option =
       l2::add_wall_option(app, wall_path, "default: the built-in default wall (walls/kd-2x2.toml)");
   CLI::Option* const png_option =
@@ -105,6 +106,10 @@ int main(int argc, char** argv) {
   // or a wall or picture folder with --print-default.
   app.add_option("--parity", parity, "frame parity for --scanout and --verify headers")
       ->check(CLI::Range(0, 1));
+  app.add_flag("--canvas-pattern", canvas_pattern,
+               "--scanout tiles encode each pixel's canvas position, not its display position: "
+               "the frames of the routing-only golden images (l2wall golden check --inputs)")
+      ->needs(scanout_option);
   app.add_flag("--suggest", suggest,
                "print values that make the wall fit, each changed alone: the smallest "
                "framebuffer_height at its framebuffer_width and framebuffer_width at its height "
@@ -145,7 +150,9 @@ int main(int argc, char** argv) {
             << l2::survival_line(layout.wall, l2::survival(layout.wall)) << "\n";
   try {
     if (!png_dir.empty()) write_pictures(layout, png_dir);
-    if (!scanout_dir.empty()) write_scanout(layout, scanout_dir, parity == 1);
+    if (!scanout_dir.empty())
+      write_scanout(layout, scanout_dir, parity == 1,
+                    canvas_pattern ? l2::PatternPlace::Canvas : l2::PatternPlace::Display);
     if (!verify_dir.empty()) return l2::verify_plan(layout, verify_dir, parity == 1);
   } catch (const std::exception& e) {
     std::cerr << "tilelayout: " << e.what() << "\n";

@@ -5,7 +5,11 @@
 //   GET  /api/display/ID.png?scale=N  display ID as last published, every Nth pixel (1: all)
 //   GET  /api/picture/NAME            another picture of the run (`l2wall view`: its saved frames,
 //                                     the golden check's and the verifier's pictures)
-//   POST /api/pause, /api/resume, /api/save, /api/stop, /api/balance?mode=M
+//   POST /api/pause, /api/resume, /api/save, /api/stop, /api/balance?mode=M, /api/window?...
+//
+// A POST waits for the run's decision on it and answers with it: 200 {"done":"..."}, or the
+// refusal's status (400, 404, 409) with {"error":"..."}, the same text the page's events show;
+// 503 when the run takes no request within the wait (nothing changed).
 //
 // Every POST needs the run's token (`?token=` or the X-L2-Token header), so nobody else on the
 // network steers the wall; bound beyond loopback, the GETs of /api/ need it too. A refusal is
@@ -35,8 +39,10 @@ class ControlServer {
  public:
   // Listens on `address` and starts serving. Throws std::runtime_error in one line when it
   // cannot ("--http 127.0.0.1:8080: cannot listen (the port is taken, or the address is not
-  // this machine's)").
-  ControlServer(const HttpAddress& address, std::string token);
+  // this machine's)"). A POST waits at most `decision_wait` for the run to take it: a run takes
+  // requests between frames and while paused, so only a run starting or held up makes it wait.
+  ControlServer(const HttpAddress& address, std::string token,
+                std::chrono::milliseconds decision_wait = std::chrono::seconds(5));
   ~ControlServer();  // stops serving; requests in flight are answered first
   ControlServer(const ControlServer&) = delete;
   ControlServer& operator=(const ControlServer&) = delete;
@@ -55,8 +61,8 @@ class ControlServer {
   void publish_pictures(std::vector<NamedPicture> pictures);
 
   ControlInbox& inbox();
-  // From now on every POST is refused with 409 and `why` ("the run is over: ..."): a finished
-  // run served by `l2wall view` has nothing to steer.
+  // From now on every POST, waiting ones too, is refused with 409 and `why` ("the run is over:
+  // ..."): a finished run has nothing to steer.
   void refuse_steering(std::string why);
 
   // Whether a page read /api/state within `recently`: a run with nobody watching need not

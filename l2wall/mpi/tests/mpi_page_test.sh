@@ -40,7 +40,11 @@ wait_state '.paused'
 held=$(frame)
 sleep 6  # longer than a pipeserver's default patience: 3 SYNC? retries of 1000 ms
 [[ $(frame) == "$held" ]] || fail "frames went on while paused: $held, then $(frame)"
-curl -s -m 10 -d '' "$base/api/stop?token=$token" >/dev/null
+# The answer is the run's refusal, with the reason its events list too.
+code=$(curl -s -m 10 -o "$out/stop.json" -w '%{http_code}' -d '' "$base/api/stop?token=$token")
+[[ $code == 409 ]] || fail "stop under --mpi answered $code: $(cat "$out/stop.json")"
+jq -e '.error | startswith("not stopped: the pipeserver ranks cannot be ended early under --mpi")' \
+  "$out/stop.json" >/dev/null || fail "stop under --mpi: $(cat "$out/stop.json")"
 wait_state '[.events[].text] | any(startswith("not stopped: the pipeserver ranks cannot be ended early under --mpi"))'
 [[ $(state | jq .stoppable) == false ]] || fail "the page offers Stop under --mpi"
 curl -s -m 10 -d '' "$base/api/resume?token=$token" >/dev/null

@@ -23,11 +23,11 @@ LiveWindows::LiveWindows(const Session& session) {
   lines_.push_back(encode(WindowsMessage{0, now_}));
 }
 
-std::string LiveWindows::command(std::string_view line) {
+LiveWindows::Refusal LiveWindows::command(std::string_view line) {
   Words w(line, "command");
   const std::string_view verb = w.word();
   if (verb != "move" && verb != "raise" && verb != "close")
-    return "expected 'move ID X Y W H', 'raise ID' or 'close ID'";
+    return {"expected 'move ID X Y W H', 'raise ID' or 'close ID'"};
   try {
     const int id = static_cast<int>(w.integer("ID", 0, kMaxWindowId));
     Rect r;
@@ -38,11 +38,11 @@ std::string LiveWindows::command(std::string_view line) {
       r.h = static_cast<int>(w.integer("H", 1, kMaxWindowSide));
     }
     w.end();
-    if (std::string why = apply(verb, id, r); !why.empty()) return why;
+    if (std::string why = apply(verb, id, r); !why.empty()) return {why, true};
     pending_.push_back(verb == "move" ? fmt::format("move {} {} {} {} {}", id, r.x, r.y, r.w, r.h)
                                       : fmt::format("{} {}", verb, id));
   } catch (const ControlError& e) {
-    return e.what();
+    return {e.what()};
   }
   return {};
 }

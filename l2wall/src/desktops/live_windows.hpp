@@ -22,10 +22,14 @@ class LiveWindows {
  public:
   explicit LiveWindows(const Session& session);
 
+  // Why a command was not taken; `why` empty when it was.
+  struct Refusal {
+    std::string why;              // one line
+    bool no_such_window = false;  // its ID names no window shown (closed, or never there)
+  };
   // "move ID X Y W H" (its top-left and size on the canvas), "raise ID" (in front of the
-  // others), "close ID": taken from the next frame decided. Empty when taken, else why not in
-  // one line.
-  std::string command(std::string_view line);
+  // others), "close ID": taken from the next frame decided.
+  Refusal command(std::string_view line);
   // Frame `frame`'s WINDOWS line, deciding every frame up to it (each with the commands taken
   // since the one before).
   const std::string& line_for(int frame);

@@ -222,6 +222,7 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
   }
   int failed = 0, not_run = 0;
   std::string failed_entries;  // " --entry NAME" for each, for the update command
+  bool routing_failed = false;
   std::optional<GlInfo> gl;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const GoldenEntry& e = *entries[i];
@@ -239,6 +240,9 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
     out << fmt::format("{} ({:.1f} s)\n", said, s) << details.str() << std::flush;
     failed += result == EntryResult::Failed;
     if (result == EntryResult::Failed) failed_entries += " --entry " + shell_word(e.name);
+    // The update refuses to change a routing-only image without it: the hint must work as given.
+    routing_failed =
+        routing_failed || (result == EntryResult::Failed && e.kind == GoldenKind::RoutingOnly);
     not_run += result == EntryResult::NotRun;
   }
   if (failed == 0 && not_run == 0) {
@@ -252,7 +256,8 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
         failed, entries.size(), o.out.string());
     out << fmt::format(
         "golden check: if the change is intended, make them the golden images: `{}`\n",
-        o.paths.command("update", failed_entries));
+        o.paths.command("update",
+                        failed_entries + (routing_failed ? " --allow-routing-change" : "")));
   }
   if (not_run > 0) {
     // Exit 2 even beside mismatches: a check that was not made is not a pass or a fail.

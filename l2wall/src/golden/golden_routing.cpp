@@ -77,8 +77,10 @@ std::vector<RgbImage> test_pattern_displays(const TileLayout& layout) {
   for (const DisplayTile& t : layout.tiles) {
     RgbImage& image = out.at(t.display);
     const Rect& r = t.on_display;
+    const int to_canvas_x = t.on_canvas.x - r.x, to_canvas_y = t.on_canvas.y - r.y;
     for (int y = r.y; y < r.bottom(); ++y) {
-      for (int x = r.x; x < r.right(); ++x) image.set(x, y, test_pattern(t.display, x, y));
+      for (int x = r.x; x < r.right(); ++x)
+        image.set(x, y, test_pattern(t.display, x + to_canvas_x, y + to_canvas_y));
     }
   }
   return out;
@@ -89,7 +91,7 @@ EntryDisplays produce_test_pattern(const TileLayout& layout, int frame, bool viz
   out.ids = display_ids(layout.wall);
   std::vector<RgbImage> frames;
   for (const PipeserverPlan& plan : layout.pipeservers)
-    frames.push_back(test_frame(plan, frame % 2 == 1));
+    frames.push_back(test_frame(plan, frame % 2 == 1, PatternPlace::Canvas));
   out.emulator = emulate_displays(layout, frames, out.input_errors);
   if (vizserver) out.vizserver = compose_on_vizserver(layout, frames, frame);
   out.reference = test_pattern_displays(layout);

@@ -36,11 +36,14 @@ std::vector<RgbImage> emulate_displays(const TileLayout& layout,
 std::vector<RgbImage> compose_on_vizserver(const TileLayout& layout,
                                            const std::vector<RgbImage>& frames, int frame);
 
-// Every display pixel a tile covers showing test_pattern(display, x, y); the rest black.
+// Every display pixel a tile covers showing test_pattern(display, x, y), (x, y) its canvas
+// position; the rest black.
 std::vector<RgbImage> test_pattern_displays(const TileLayout& layout);
 
-// Routing-only entries: the test-pattern frames of `tilelayout --scanout` (no rendering)
-// through the emulator and, if asked, the compositing server; the reference is the pattern.
+// Routing-only entries: the test-pattern frames of `tilelayout --scanout --canvas-pattern` (no
+// rendering) through the emulator and, if asked, the compositing server; the reference is the
+// pattern. The pattern encodes canvas positions, so a change of the wall's geometry (a
+// mullion, a display's position) changes the images, not only a change of routing.
 EntryDisplays produce_test_pattern(const TileLayout& layout, int frame, bool vizserver);
 
 // Frames a user captured, from `dir`: scanout-<i>.png for every pipeserver i (the names

@@ -140,7 +140,7 @@ bool FrameLoop::keep_showing() {
 void FrameLoop::take_stdin_windows() {
   const int frame = core_.frames.shown - 1;
   for (const std::string& line : parts_.windows.stdin_commands()) {
-    const std::string said = parts_.windows.command(line, core_.pipeservers);
+    const std::string said = parts_.windows.command(line, core_.pipeservers).text;
     if (core_.page) {
       core_.page->event(frame, said);
     } else {

@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "tilelayout/wall.hpp"
+
 namespace l2 {
 
 void PageSteering::watch_pipeservers() {
@@ -50,60 +52,64 @@ void PageSteering::after_swap() {
 
 void PageSteering::take_requests() {
   const int frame = core_.frames.shown - 1;
-  for (const ControlRequest& r : core_.page->requests()) take_request(r, frame);
+  for (const ControlRequest& r : core_.page->requests())
+    core_.page->decide(frame, r, take_request(r, frame));
 }
 
-void PageSteering::take_request(const ControlRequest& r, int frame) {
-  LivePage& page = *core_.page;
+// What was done, or why not with the status a refusal answers: 400 for a request the run cannot
+// read, 404 for a window it does not have, 409 for one this run cannot do now.
+ControlDecision PageSteering::take_request(const ControlRequest& r, int frame) {
   switch (r.action) {
     case ControlAction::Pause:
       if (!paused_) ++pauses_;
       paused_ = true;
-      page.event(frame, "paused: READY held back, the pipeservers wait");
-      break;
+      return {200, "paused: READY held back, the pipeservers wait"};
     case ControlAction::Resume:
       paused_ = false;
-      page.event(frame, "resumed");
-      break;
+      return {200, "resumed"};
     case ControlAction::Save:
-      save(frame);
-      break;
+      return save(frame);
     case ControlAction::Stop:
-      stop(frame);
-      break;
+      return stop(frame);
     case ControlAction::Balance:
-      switch_balance(r.argument, frame);
-      break;
+      return switch_balance(r.argument, frame);
     case ControlAction::Window:
-      page.event(frame, windows_.command(r.argument, core_.pipeservers));
-      break;
+      return windows_.command(r.argument, core_.pipeservers);
   }
+  return {400, "unknown request"};
 }
 
-void PageSteering::stop(int frame) {
+ControlDecision PageSteering::stop(int frame) {
   if (!stoppable_) {
-    return core_.page->event(frame,
-                             "not stopped: the pipeserver ranks cannot be ended early under "
-                             "--mpi; Ctrl-C on mpirun ends the run");
+    return {409,
+            "not stopped: the pipeserver ranks cannot be ended early under --mpi; Ctrl-C on "
+            "mpirun ends the run"};
   }
   stop_ = true;
   stopped_at_ = frame;
-  core_.page->event(frame, "stopped from the control page");
+  return {200, "stopped from the control page"};
 }
 
-void PageSteering::save(int frame) {
-  if (frame < 0) return core_.page->event(frame, "not saved: no frame on the displays yet");
+ControlDecision PageSteering::save(int frame) {
+  if (frame < 0) return {409, "not saved: no frame on the displays yet"};
   writer_.save_frame(frame);
   ++saves_;
   const auto dir = std::filesystem::path(core_.options.out) / fmt::format("frame-{}", frame);
-  core_.page->event(frame, fmt::format("saved the displays to {}", dir.string()));
+  return {200, fmt::format("saved the displays to {}", dir.string())};
 }
 
-void PageSteering::switch_balance(const std::string& mode, int frame) {
-  std::string why = "this run does not balance (start it with --balance or [balance])";
-  if (core_.balance && core_.balance->switch_mode(mode, frame, why))
-    return core_.page->event(frame, "balance mode: " + mode + " from the next layout");
-  core_.page->event(frame, "balance not switched: " + why);
+ControlDecision PageSteering::switch_balance(const std::string& mode, int frame) {
+  if (!core_.balance)
+    return {409,
+            "balance not switched: this run does not balance (start it with --balance or "
+            "[balance])"};
+  std::string why;
+  if (core_.balance->switch_mode(mode, frame, why))
+    return {200, "balance mode: " + mode + " from the next layout"};
+  // A mode it knows that this wall cannot be cut by is the run's refusal, not a misspelling.
+  const bool known = std::find(std::begin(kBalanceModeNames), std::end(kBalanceModeNames), mode) !=
+                     std::end(kBalanceModeNames);
+  return {known ? 409 : 400, "balance not switched: " + why};
 }
 
 void PageSteering::publish() {

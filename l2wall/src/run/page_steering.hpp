@@ -43,10 +43,10 @@ class PageSteering {
  private:
   void hold_while_paused();
   void take_requests();
-  void take_request(const ControlRequest& r, int frame);
-  void stop(int frame);
-  void save(int frame);
-  void switch_balance(const std::string& mode, int frame);
+  ControlDecision take_request(const ControlRequest& r, int frame);
+  ControlDecision stop(int frame);
+  ControlDecision save(int frame);
+  ControlDecision switch_balance(const std::string& mode, int frame);
   void publish();
   PageMoment moment() const;
 

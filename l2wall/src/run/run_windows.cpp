@@ -63,13 +63,17 @@ void RunWindows::serve(PipeserverSet& pipeservers) {
   if (desktop_) desktop_->serve(pipeservers);
 }
 
-std::string RunWindows::command(const std::string& command, const PipeserverSet& pipeservers) {
-  std::string why = "this run shows no session (start it with --scene session)";
-  if (windows_ && !moving_here(pipeservers))
-    why = "windows do not move under --mpi";
-  else if (windows_)
-    why = windows_->command(command);
-  return why.empty() ? "window: " + command + " from the next frame" : "window not changed: " + why;
+ControlDecision RunWindows::command(const std::string& command, const PipeserverSet& pipeservers) {
+  LiveWindows::Refusal no{"this run shows no session (start it with --scene session)"};
+  int status = 409;
+  if (windows_ && !moving_here(pipeservers)) {
+    no.why = "windows do not move under --mpi";
+  } else if (windows_) {
+    no = windows_->command(command);
+    status = no.no_such_window ? 404 : 400;
+  }
+  if (no.why.empty()) return {200, "window: " + command + " from the next frame"};
+  return {status, "window not changed: " + no.why};
 }
 
 bool RunWindows::moving_here(const PipeserverSet& pipeservers) {

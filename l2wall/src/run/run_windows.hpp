@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "control_page/control_inbox.hpp"
 #include "control_page/run_state.hpp"
 #include "desktops/live_desktop.hpp"
 #include "desktops/live_windows.hpp"
@@ -34,8 +35,10 @@ class RunWindows {
   // Answers what the pipeservers asked for (WANT comes before each READY wait).
   void serve(PipeserverSet& pipeservers);
   // A window command, taken from the next frame whose windows are decided: every pipeserver
-  // moves it then. Returns what was done or why not, as the page or stderr says it.
-  std::string command(const std::string& command, const PipeserverSet& pipeservers);
+  // moves it then. Returns what was done or why not, as the page or stderr says it, with the
+  // status the control page answers: 400 for words it cannot read, 404 for no such window, 409
+  // for a run whose windows do not move.
+  ControlDecision command(const std::string& command, const PipeserverSet& pipeservers);
   // --window-stdin: the whole lines waiting on stdin, without waiting for more.
   std::vector<std::string> stdin_commands() { return stdin_lines_.take(); }
   // Whether the pipeservers take WINDOWS lines (over MPI too, --mpi-windows): all of a session's.
