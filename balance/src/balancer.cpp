@@ -168,7 +168,18 @@ void Balancer::lose_pipeserver(int pipeserver) {
     throw std::invalid_argument(
         fmt::format("pipeserver {} was the last one rendering: no pipeserver is left", pipeserver));
   }
-  lost_.insert(std::upper_bound(lost_.begin(), lost_.end(), pipeserver), pipeserver);
+  std::vector<int> lost = lost_;
+  lost.insert(std::upper_bound(lost.begin(), lost.end(), pipeserver), pipeserver);
+  // The wall's own tiling without it is the last resort of every later step: when that does not
+  // fit, the run must not say it goes on and end a frame later.
+  try {
+    plan_without(wall_, lost);
+  } catch (const LayoutError& e) {
+    throw LayoutError(
+        fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
+                    pipeserver, e.what()));
+  }
+  lost_ = std::move(lost);
 }
 
 TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {

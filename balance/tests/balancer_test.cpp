@@ -149,17 +149,20 @@ TEST(Balancer, HeaviestFirstSharesALostPipeserversTilesAmongTheRest) {
   EXPECT_EQ(std::count(of.begin(), of.end(), 1), 2);
 }
 
-TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsAnError) {
+// Refused at the loss, not a frame later: the run ends on it instead of saying it goes on.
+TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsRefusedAtOnce) {
   Balancer b(strips_wall(104, 64), strips());  // two 50x50 tiles a framebuffer, one row
-  b.lose_pipeserver(1);
   try {
-    b.next({{1, 1}, {}});
+    b.lose_pipeserver(1);
     FAIL();
   } catch (const LayoutError& e) {
     EXPECT_THAT(e.what(),
                 testing::StartsWith("the other pipeservers' framebuffers cannot hold pipeserver "
                                     "1's tiles: pipeserver 0: tile 2"));
   }
+  EXPECT_TRUE(b.lost().empty());
+  EXPECT_EQ(b.next({{1, 1}, {1, 1}}).rejected, "");
+  EXPECT_FALSE(b.layout().pipeservers[1].tiles.empty());
 }
 
 // The re-cut strips do not fit the two left (a bottom strip taller than the 50-row

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "balance/control_messages.hpp"
+#include "frame_ranges.hpp"
 #include "l2wall/run_fault.hpp"
 #include "run_stats.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -70,6 +71,9 @@ bool LiveBalance::lose(int pipeserver, int delivered, const std::string& how, do
     balancer_.lose_pipeserver(pipeserver);
   } catch (const std::invalid_argument&) {
     return false;  // no one left to take its tiles
+  } catch (const LayoutError& e) {
+    // Said once, at the loss: the others' framebuffers cannot hold its tiles.
+    throw RunFault(fmt::format("{}, and the run cannot go on without it: {}", how, e.what()));
   }
   losses_.push_back({pipeserver, how, delivered, seconds, -1});
   return true;
@@ -204,7 +208,7 @@ std::string LiveBalance::pricing() const {
       most_batches_, price->p50 * 1e9);
 }
 
-std::string LiveBalance::summary() const {
+std::string LiveBalance::summary(int shown) const {
   std::string s =
       fmt::format("balance {}: {} layouts", to_string(balancer_.settings().mode), strips_.size());
   if (strips_uncounted_.empty()) {
@@ -236,22 +240,28 @@ std::string LiveBalance::summary() const {
   if (!rejected_.empty()) s += fmt::format("balance: not used, {}\n", rejected_.front());
   if (const std::size_t more = rejected_.size() > 1 ? rejected_.size() - 1 : 0; more > 0)
     s += fmt::format("balance: {} more layout{} refused, as above\n", more, more == 1 ? "" : "s");
-  for (const Loss& l : losses_) {
-    const int end = l.first_without < 0 ? frames_ : std::min(l.first_without, frames_);
-    const int from = std::min(l.first_missing, end);
-    std::string stale;
-    for (int f = from; f < end; ++f) {
-      const bool late = std::find(late_.begin(), late_.end(), f) != late_.end();
-      stale += fmt::format("{}{}{}", stale.empty() ? "" : ", ", f, late ? " (late)" : "");
-    }
-    s += fmt::format("balance: lost {}, {:.2f} s into the run; ", l.how, l.seconds);
-    s += l.first_without < 0
-             ? std::string("the run ended before a layout without it")
-             : fmt::format("its tiles went to the others from frame {}", l.first_without);
-    s += fmt::format("; {} frame{} stale (shown incomplete or late){}{}\n", end - from,
-                     end - from == 1 ? "" : "s", stale.empty() ? "" : ": ", stale);
-  }
+  for (const Loss& l : losses_) s += loss_line(l, shown);
   return s;
+}
+
+// Only frames that reached the displays are stale: a run that ended early never rendered the rest.
+std::string LiveBalance::loss_line(const Loss& l, int shown) const {
+  const int shown_end = std::min(shown, frames_);
+  const bool moved = l.first_without >= 0 && l.first_without < shown_end;
+  const int end = moved ? l.first_without : shown_end;
+  std::vector<int> stale, late;
+  for (int f = l.first_missing; f < end; ++f) {
+    stale.push_back(f);
+    if (std::find(late_.begin(), late_.end(), f) != late_.end()) late.push_back(f);
+  }
+  std::string s = fmt::format("balance: lost {}, {:.2f} s into the run; ", l.how, l.seconds);
+  s += moved ? fmt::format("its tiles went to the others from frame {}", l.first_without)
+             : std::string("the run ended before a layout without it");
+  s += fmt::format("; {} frame{} stale (shown incomplete or late)", stale.size(),
+                   stale.size() == 1 ? "" : "s");
+  if (!stale.empty()) s += ": " + frame_ranges(stale);
+  if (!late.empty()) s += fmt::format(" (late: {})", frame_ranges(late));
+  return s + "\n";
 }
 
 std::string LiveBalance::layouts() const {

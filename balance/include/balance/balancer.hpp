@@ -80,7 +80,9 @@ class Balancer {
 
   // Pipeserver `pipeserver` died: from the next step on it gets no tile, the others share them
   // (by the wall's assignment policy over them, or heaviest first). Throws
-  // std::invalid_argument for a pipeserver out of range or the last one left.
+  // std::invalid_argument for a pipeserver out of range or the last one left, and LayoutError,
+  // the loss not taken, when the wall's own tiling does not fit the others' framebuffers
+  // (tilelayout's survival: the wall survives fewer losses).
   void lose_pipeserver(int pipeserver);
   const std::vector<int>& lost() const { return lost_; }  // ascending
 

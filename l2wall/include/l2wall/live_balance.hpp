@@ -71,8 +71,9 @@ class LiveBalance {
   std::uint64_t mixed_swaps() const { return mixed_swaps_; }
   // Summary lines: the mode, the layouts used, strips per layout, mixed swaps, how tiles were
   // priced (pixels, and the batches they touch), the first rejected
-  // plan in full and how many more were rejected, the pipeservers lost and the frames stale.
-  std::string summary() const;
+  // plan in full and how many more were rejected, the pipeservers lost and the frames stale
+  // among those shown (frames 0..shown-1 reached the displays).
+  std::string summary(int shown) const;
   // OUT/layouts.txt's text: frame k's LAYOUT line on line k+1, as every pipeserver got it (frame
   // 0: the wall's plan, which the pipeservers start in).
   std::string layouts() const;
@@ -88,6 +89,8 @@ class LiveBalance {
     double seconds = 0;
     int first_without = -1;  // the first frame whose layout gives it no tile; -1: none yet
   };
+  // The summary's line of a loss, its stale frames among the `shown`.
+  std::string loss_line(const Loss& l, int shown) const;
 
   Balancer balancer_;
   bool survive_ = false;
