@@ -15,6 +15,12 @@
 #include "waiting_message.hpp"
 
 namespace l2 {
+namespace {
+
+// Strips per layout are listed up to this many layouts.
+constexpr std::size_t kStripsListed = 8;
+
+}  // namespace
 
 LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileLayout& start,
                          int frames)
@@ -211,15 +217,18 @@ std::string LiveBalance::pricing() const {
 std::string LiveBalance::summary(int shown) const {
   std::string s =
       fmt::format("balance {}: {} layouts", to_string(balancer_.settings().mode), strips_.size());
+  s += fmt::format(" (from frames {})", frame_ranges(first_frame_));
   if (strips_uncounted_.empty()) {
     s += ", strips routed per layout:";
-    for (std::size_t l = 0; l < strips_.size(); ++l)
-      s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
+    // A layout a frame would list hundreds: then only the fewest and the most.
+    if (strips_.size() <= kStripsListed) {
+      for (const std::uint64_t n : strips_) s += fmt::format(" {}", n);
+    } else {
+      const auto [fewest, most] = std::minmax_element(strips_.begin(), strips_.end());
+      s += fmt::format(" {} to {}", *fewest, *most);
+    }
   } else {
-    s += " (from frames";
-    for (std::size_t l = 0; l < strips_.size(); ++l)
-      s += fmt::format("{} {}", l == 0 ? "" : ",", first_frame_[l]);
-    s += fmt::format("); strips routed per layout not counted: {}", strips_uncounted_);
+    s += fmt::format("; strips routed per layout not counted: {}", strips_uncounted_);
   }
   if (swaps_unchecked_.empty()) {
     s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,

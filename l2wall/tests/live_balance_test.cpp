@@ -34,7 +34,7 @@ TEST(LiveBalance, OnlyFramesShownAreStale) {
   b.note_late(102);
   b.note_late(140);
   EXPECT_EQ(b.summary(150),
-            "balance strips: 1 layouts, strips routed per layout: 0 (from frame 0)\n"
+            "balance strips: 1 layouts (from frames 0), strips routed per layout: 0\n"
             "balance: 0 of 0 group swaps showed frames of two layouts\n"
             "balance: lost pipeserver 1 (pid 4242) killed by signal 9 (Killed) while rendering "
             "frame 101, 3.20 s into the run; the run ended before a layout without it; 49 frames "

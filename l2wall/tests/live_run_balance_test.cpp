@@ -40,6 +40,19 @@ void expect_displays_of_the_static_run(const WallRun& fixed, const WallRun& bala
   expect_displays_equal_stamps_aside(fixed, plan_layout(default_wall()), balanced, layouts, frames);
 }
 
+// How many frames "0-3, 7, 9-12" names.
+int frames_in_ranges(const std::string& ranges) {
+  int count = 0;
+  std::istringstream in(ranges);
+  for (std::string part; std::getline(in, part, ',');) {
+    const std::size_t dash = part.find('-');
+    count += dash == std::string::npos
+                 ? 1
+                 : std::stoi(part.substr(dash + 1)) - std::stoi(part.substr(0, dash)) + 1;
+  }
+  return count;
+}
+
 // No swap showed frames of two layouts, and there were swaps to check.
 void expect_no_mixed_swaps(const std::string& output) {
   std::smatch m;
@@ -68,9 +81,14 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
 
   expect_no_mixed_swaps(output);
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(output, m, std::regex("balance strips: (\\d+) layouts, strips")))
+  ASSERT_TRUE(std::regex_search(
+      output, m,
+      std::regex("balance strips: (\\d+) layouts \\(from frames ([0-9, -]+)\\), strips routed "
+                 "per layout: [0-9 to]+\n")))
       << output;
   const int layouts_counted = std::stoi(m[1].str());
+  // The frames each layout started at, as ranges: as many frames as layouts, far fewer words.
+  EXPECT_EQ(frames_in_ranges(m[2].str()), layouts_counted) << m[0];
   // The pipeservers' batch footprints reached the balancer: the strips scene's 100,000
   // triangles in strips of 16, 64 strips a batch, are 98 batches, all in view.
   EXPECT_NE(output.find("balance: tiles priced by their pixels and the batches they touch (98 "
@@ -207,7 +225,8 @@ TEST(LiveRunBalance, ResistanceKeepsTheLayoutWhenTheGainIsBelowItAndWithoutItThe
   fs::remove_all(dir);
 
   const std::string kept = resisting.output();
-  EXPECT_NE(kept.find("balance strips: 1 layouts, strips"), std::string::npos) << kept;
+  EXPECT_NE(kept.find("balance strips: 1 layouts (from frames 0), strips"), std::string::npos)
+      << kept;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(kept, m,
                                 std::regex("\nbalance: (\\d+) new layouts? not taken \\(resistance "
@@ -227,7 +246,7 @@ TEST(LiveRunBalance, ResistanceKeepsTheLayoutWhenTheGainIsBelowItAndWithoutItThe
   EXPECT_EQ(tiles.size(), 1u);
 
   const std::string moved = free_run.output();
-  ASSERT_TRUE(std::regex_search(moved, m, std::regex("balance strips: (\\d+) layouts, strips")))
+  ASSERT_TRUE(std::regex_search(moved, m, std::regex("balance strips: (\\d+) layouts \\(from")))
       << moved;
   EXPECT_GE(std::stoi(m[1].str()), 2);
   EXPECT_EQ(moved.find("not taken"), std::string::npos) << moved;
