@@ -259,13 +259,18 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
   return step;
 }
 
-double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
-                                 const Footprints& footprints) const {
+double Balancer::predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
+                                   const Footprints& footprints) const {
   const TileSeconds measured = with_stand_ins(seconds);
   const double overhead = tile_overhead(measured, settings_.tile_cost);
-  const CostEstimate pixels = pixel_estimate(layout_, measured, overhead, footprints);
-  const double now = predicted_frame_seconds(layout_, pixels, overhead);
-  return now > 0 ? predicted_frame_seconds(candidate, pixels, overhead) / now : 1;
+  return predicted_frame_seconds(candidate, pixel_estimate(layout_, measured, overhead, footprints),
+                                 overhead);
+}
+
+double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
+                                 const Footprints& footprints) const {
+  const double now = predicted_seconds(layout_, seconds, footprints);
+  return now > 0 ? predicted_seconds(candidate, seconds, footprints) / now : 1;
 }
 
 }  // namespace l2

@@ -322,6 +322,19 @@ TEST(Balancer, ALostPipeserverMovesTilesWhateverTheResistance) {
   EXPECT_TRUE(b.layout().pipeservers[1].tiles.empty());
 }
 
+// What the wall's own layout would have taken on a frame measured on the balanced one: the
+// summary's answer to whether balancing paid.
+TEST(Balancer, PredictsAnotherLayoutAtTheCostsMeasured) {
+  Balancer b(strips_wall(), strips());
+  const TileLayout own = plan_layout(strips_wall());
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), kHeavyTopLeft), 10);  // 7.5 + 2.5 measured
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(own, kHeavyTopLeft), 10);         // the same tiles
+  b.next(kHeavyTopLeft);  // the strips moved toward the heavy tile
+  // Even times measured on the moved strips: on them the prediction is what was measured.
+  const TileSeconds even = {{2.5, 2.5}, {2.5, 2.5}};
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), even), 5);
+}
+
 TEST(Balancer, ResistanceAndTileCostAreFractions) {
   BalanceSettings s = strips();
   s.resistance = 1;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "balance/control_messages.hpp"
@@ -33,7 +35,8 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       strips_(1, 0),
       first_frame_(1, 0),
       last_(layout_message(0, start)),
-      lines_{encode(last_)} {
+      lines_{encode(last_)},
+      own_(start) {
   if (!balancer_.first_refused().empty())
     rejected_.push_back(fmt::format("frame 1: {}", balancer_.first_refused()));
 }
@@ -124,6 +127,7 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
 // that layout, and from then on each frame's times move it.
 void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   if (frame > 1) {
+    if (balancer_.lost().empty()) note_costs();
     try {
       const BalanceStep step = balancer_.next(pending_, batches_);
       most_batches_ = std::max(most_batches_, batches_.size());
@@ -172,6 +176,30 @@ void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   }
   frame_layout_.resize(static_cast<std::size_t>(frame), frame_layout_.back());
   frame_layout_.push_back(id);
+}
+
+// The last frame's times were measured on the balancer's layout: what it took against what the
+// wall's own layout would have.
+void LiveBalance::note_costs() {
+  double slowest = 0;
+  for (const std::vector<double>& tiles : pending_)
+    slowest = std::max(slowest, std::accumulate(tiles.begin(), tiles.end(), 0.0));
+  slowest_ms_.push_back(slowest * 1e3);
+  own_ms_.push_back(balancer_.predicted_seconds(own_, pending_, batches_) * 1e3);
+}
+
+std::string balance_paid_line(const std::vector<double>& slowest_ms,
+                              const std::vector<double>& own_ms) {
+  const std::optional<Spread> slowest = spread_of(slowest_ms), own = spread_of(own_ms);
+  if (!slowest || !own || slowest->p50 <= 0) return {};
+  const double gain = own->p50 / slowest->p50;
+  // A few percent either way is within what one frame's render times move by.
+  const char* verdict = gain >= 1.05 ? "paid" : gain <= 0.95 ? "lost" : "no gain";
+  // Render time only: the summary's "limited by" line says whether it limits the frame rate.
+  return fmt::format(
+      "balance: {} in render time: the slowest pipeserver took {:.1f} ms a frame (median); the "
+      "wall's own layout, {:.1f} ms at the same costs ({:.2f}x)\n",
+      verdict, slowest->p50, own->p50, gain);
 }
 
 void LiveBalance::count_strips(const PipeserverSet& pipeservers,
@@ -237,6 +265,7 @@ std::string LiveBalance::summary(int shown) const {
     s += fmt::format("\nbalance: group swaps not checked: {}\n", swaps_unchecked_);
   }
   for (const std::string& line : switches_) s += line;
+  s += balance_paid_line(slowest_ms_, own_ms_);
   s += pricing();
   if (resisted_ > 0) {
     s += fmt::format(

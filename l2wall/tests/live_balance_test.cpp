@@ -63,5 +63,18 @@ TEST(LiveBalance, ALossTheOthersCannotHoldEndsTheRun) {
   EXPECT_EQ(b.summary(150).find("lost"), std::string::npos);
 }
 
+// Whether balancing paid, in the medians: the balanced layout's slowest render against the
+// wall's own layout's predicted at the same tile costs.
+TEST(LiveBalance, SaysWhetherBalancingPaid) {
+  EXPECT_EQ(balance_paid_line({}, {}), "");
+  EXPECT_EQ(balance_paid_line({10, 12, 11}, {18, 19.5, 17}),
+            "balance: paid in render time: the slowest pipeserver took 11.0 ms a frame (median); "
+            "the wall's own layout, 18.0 ms at the same costs (1.64x)\n");
+  EXPECT_EQ(balance_paid_line({20, 20}, {18, 18}),
+            "balance: lost in render time: the slowest pipeserver took 20.0 ms a frame (median); "
+            "the wall's own layout, 18.0 ms at the same costs (0.90x)\n");
+  EXPECT_EQ(balance_paid_line({20}, {20.5}).rfind("balance: no gain in render time: ", 0), 0u);
+}
+
 }  // namespace
 }  // namespace l2

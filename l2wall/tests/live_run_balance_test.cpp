@@ -89,6 +89,22 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
   const int layouts_counted = std::stoi(m[1].str());
   // The frames each layout started at, as ranges: as many frames as layouts, far fewer words.
   EXPECT_EQ(frames_in_ranges(m[2].str()), layouts_counted) << m[0];
+  // Whether balancing paid, from frames 1 to 8 (measured on balanced layouts, planned from):
+  // the figures and their ratio agree, and the verdict follows the ratio.
+  ASSERT_TRUE(std::regex_search(
+      output, m,
+      std::regex("\nbalance: (paid|lost|no gain) in render time: the slowest pipeserver took "
+                 "([0-9.]+) ms a frame \\(median\\); the wall's own layout, ([0-9.]+) ms at the "
+                 "same costs \\(([0-9.]+)x\\)\n")))
+      << output;
+  const double gain = std::stod(m[4].str());
+  EXPECT_NEAR(gain, std::stod(m[3].str()) / std::stod(m[2].str()),
+              0.01 + 0.1 / std::stod(m[2].str()));
+  // The verdict follows the ratio (printed rounded: away from the 5 % edges).
+  if (gain > 1.06 || gain < 0.94 || (gain > 0.96 && gain < 1.04)) {
+    EXPECT_EQ(m[1].str(), gain > 1.06 ? "paid" : gain < 0.94 ? "lost" : "no gain") << m[0];
+  }
+  EXPECT_NE(output.find("\nlimited by "), std::string::npos) << output;
   // The pipeservers' batch footprints reached the balancer: the strips scene's 100,000
   // triangles in strips of 16, 64 strips a batch, are 98 batches, all in view.
   EXPECT_NE(output.find("balance: tiles priced by their pixels and the batches they touch (98 "
