@@ -168,7 +168,18 @@ void Balancer::lose_pipeserver(int pipeserver) {
     throw std::invalid_argument(
         fmt::format("pipeserver {} was the last one rendering: no pipeserver is left", pipeserver));
   }
-  lost_.insert(std::upper_bound(lost_.begin(), lost_.end(), pipeserver), pipeserver);
+  std::vector<int> lost = lost_;
+  lost.insert(std::upper_bound(lost.begin(), lost.end(), pipeserver), pipeserver);
+  // The wall's own tiling without it is the last resort of every later step: when that does not
+  // fit, the run must not say it goes on and end a frame later.
+  try {
+    plan_without(wall_, lost);
+  } catch (const LayoutError& e) {
+    throw LayoutError(
+        fmt::format("the other pipeservers' framebuffers cannot hold pipeserver {}'s tiles: {}",
+                    pipeserver, e.what()));
+  }
+  lost_ = std::move(lost);
 }
 
 TileSeconds Balancer::with_stand_ins(const TileSeconds& seconds) const {
@@ -248,13 +259,18 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
   return step;
 }
 
-double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
-                                 const Footprints& footprints) const {
+double Balancer::predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
+                                   const Footprints& footprints) const {
   const TileSeconds measured = with_stand_ins(seconds);
   const double overhead = tile_overhead(measured, settings_.tile_cost);
-  const CostEstimate pixels = pixel_estimate(layout_, measured, overhead, footprints);
-  const double now = predicted_frame_seconds(layout_, pixels, overhead);
-  return now > 0 ? predicted_frame_seconds(candidate, pixels, overhead) / now : 1;
+  return predicted_frame_seconds(candidate, pixel_estimate(layout_, measured, overhead, footprints),
+                                 overhead);
+}
+
+double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
+                                 const Footprints& footprints) const {
+  const double now = predicted_seconds(layout_, seconds, footprints);
+  return now > 0 ? predicted_seconds(candidate, seconds, footprints) / now : 1;
 }
 
 }  // namespace l2

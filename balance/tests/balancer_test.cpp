@@ -149,17 +149,20 @@ TEST(Balancer, HeaviestFirstSharesALostPipeserversTilesAmongTheRest) {
   EXPECT_EQ(std::count(of.begin(), of.end(), 1), 2);
 }
 
-TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsAnError) {
+// Refused at the loss, not a frame later: the run ends on it instead of saying it goes on.
+TEST(Balancer, ALostPipeserverWhoseTilesDoNotFitTheOthersIsRefusedAtOnce) {
   Balancer b(strips_wall(104, 64), strips());  // two 50x50 tiles a framebuffer, one row
-  b.lose_pipeserver(1);
   try {
-    b.next({{1, 1}, {}});
+    b.lose_pipeserver(1);
     FAIL();
   } catch (const LayoutError& e) {
     EXPECT_THAT(e.what(),
                 testing::StartsWith("the other pipeservers' framebuffers cannot hold pipeserver "
                                     "1's tiles: pipeserver 0: tile 2"));
   }
+  EXPECT_TRUE(b.lost().empty());
+  EXPECT_EQ(b.next({{1, 1}, {1, 1}}).rejected, "");
+  EXPECT_FALSE(b.layout().pipeservers[1].tiles.empty());
 }
 
 // The re-cut strips do not fit the two left (a bottom strip taller than the 50-row
@@ -317,6 +320,19 @@ TEST(Balancer, ALostPipeserverMovesTilesWhateverTheResistance) {
   b.lose_pipeserver(1);
   EXPECT_TRUE(b.next({{1, 1}, {}}).changed);
   EXPECT_TRUE(b.layout().pipeservers[1].tiles.empty());
+}
+
+// What the wall's own layout would have taken on a frame measured on the balanced one: the
+// summary's answer to whether balancing paid.
+TEST(Balancer, PredictsAnotherLayoutAtTheCostsMeasured) {
+  Balancer b(strips_wall(), strips());
+  const TileLayout own = plan_layout(strips_wall());
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), kHeavyTopLeft), 10);  // 7.5 + 2.5 measured
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(own, kHeavyTopLeft), 10);         // the same tiles
+  b.next(kHeavyTopLeft);  // the strips moved toward the heavy tile
+  // Even times measured on the moved strips: on them the prediction is what was measured.
+  const TileSeconds even = {{2.5, 2.5}, {2.5, 2.5}};
+  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), even), 5);
 }
 
 TEST(Balancer, ResistanceAndTileCostAreFractions) {

@@ -5,15 +5,24 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "balance/control_messages.hpp"
+#include "frame_ranges.hpp"
 #include "l2wall/run_fault.hpp"
 #include "run_stats.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "waiting_message.hpp"
 
 namespace l2 {
+namespace {
+
+// Strips per layout are listed up to this many layouts.
+constexpr std::size_t kStripsListed = 8;
+
+}  // namespace
 
 LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileLayout& start,
                          int frames)
@@ -26,7 +35,8 @@ LiveBalance::LiveBalance(const Wall& wall, BalanceSettings settings, const TileL
       strips_(1, 0),
       first_frame_(1, 0),
       last_(layout_message(0, start)),
-      lines_{encode(last_)} {
+      lines_{encode(last_)},
+      own_(start) {
   if (!balancer_.first_refused().empty())
     rejected_.push_back(fmt::format("frame 1: {}", balancer_.first_refused()));
 }
@@ -70,6 +80,9 @@ bool LiveBalance::lose(int pipeserver, int delivered, const std::string& how, do
     balancer_.lose_pipeserver(pipeserver);
   } catch (const std::invalid_argument&) {
     return false;  // no one left to take its tiles
+  } catch (const LayoutError& e) {
+    // Said once, at the loss: the others' framebuffers cannot hold its tiles.
+    throw RunFault(fmt::format("{}, and the run cannot go on without it: {}", how, e.what()));
   }
   losses_.push_back({pipeserver, how, delivered, seconds, -1});
   return true;
@@ -114,6 +127,7 @@ void LiveBalance::serve(PipeserverSet& pipeservers) {
 // that layout, and from then on each frame's times move it.
 void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   if (frame > 1) {
+    if (balancer_.lost().empty()) note_costs();
     try {
       const BalanceStep step = balancer_.next(pending_, batches_);
       most_batches_ = std::max(most_batches_, batches_.size());
@@ -164,6 +178,30 @@ void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
   frame_layout_.push_back(id);
 }
 
+// The last frame's times were measured on the balancer's layout: what it took against what the
+// wall's own layout would have.
+void LiveBalance::note_costs() {
+  double slowest = 0;
+  for (const std::vector<double>& tiles : pending_)
+    slowest = std::max(slowest, std::accumulate(tiles.begin(), tiles.end(), 0.0));
+  slowest_ms_.push_back(slowest * 1e3);
+  own_ms_.push_back(balancer_.predicted_seconds(own_, pending_, batches_) * 1e3);
+}
+
+std::string balance_paid_line(const std::vector<double>& slowest_ms,
+                              const std::vector<double>& own_ms) {
+  const std::optional<Spread> slowest = spread_of(slowest_ms), own = spread_of(own_ms);
+  if (!slowest || !own || slowest->p50 <= 0) return {};
+  const double gain = own->p50 / slowest->p50;
+  // A few percent either way is within what one frame's render times move by.
+  const char* verdict = gain >= 1.05 ? "paid" : gain <= 0.95 ? "lost" : "no gain";
+  // Render time only: the summary's "limited by" line says whether it limits the frame rate.
+  return fmt::format(
+      "balance: {} in render time: the slowest pipeserver took {:.1f} ms a frame (median); the "
+      "wall's own layout, {:.1f} ms at the same costs ({:.2f}x)\n",
+      verdict, slowest->p50, own->p50, gain);
+}
+
 void LiveBalance::count_strips(const PipeserverSet& pipeservers,
                                const std::vector<std::uint64_t>& routed_by_pipeserver) {
   for (std::size_t i = 0; i < routed_by_pipeserver.size() && i < pipeservers.all().size(); ++i)
@@ -204,18 +242,21 @@ std::string LiveBalance::pricing() const {
       most_batches_, price->p50 * 1e9);
 }
 
-std::string LiveBalance::summary() const {
+std::string LiveBalance::summary(int shown) const {
   std::string s =
       fmt::format("balance {}: {} layouts", to_string(balancer_.settings().mode), strips_.size());
+  s += fmt::format(" (from frames {})", frame_ranges(first_frame_));
   if (strips_uncounted_.empty()) {
     s += ", strips routed per layout:";
-    for (std::size_t l = 0; l < strips_.size(); ++l)
-      s += fmt::format(" {} (from frame {})", strips_[l], first_frame_[l]);
+    // A layout a frame would list hundreds: then only the fewest and the most.
+    if (strips_.size() <= kStripsListed) {
+      for (const std::uint64_t n : strips_) s += fmt::format(" {}", n);
+    } else {
+      const auto [fewest, most] = std::minmax_element(strips_.begin(), strips_.end());
+      s += fmt::format(" {} to {}", *fewest, *most);
+    }
   } else {
-    s += " (from frames";
-    for (std::size_t l = 0; l < strips_.size(); ++l)
-      s += fmt::format("{} {}", l == 0 ? "" : ",", first_frame_[l]);
-    s += fmt::format("); strips routed per layout not counted: {}", strips_uncounted_);
+    s += fmt::format("; strips routed per layout not counted: {}", strips_uncounted_);
   }
   if (swaps_unchecked_.empty()) {
     s += fmt::format("\nbalance: {} of {} group swaps showed frames of two layouts\n", mixed_swaps_,
@@ -224,6 +265,7 @@ std::string LiveBalance::summary() const {
     s += fmt::format("\nbalance: group swaps not checked: {}\n", swaps_unchecked_);
   }
   for (const std::string& line : switches_) s += line;
+  s += balance_paid_line(slowest_ms_, own_ms_);
   s += pricing();
   if (resisted_ > 0) {
     s += fmt::format(
@@ -236,22 +278,28 @@ std::string LiveBalance::summary() const {
   if (!rejected_.empty()) s += fmt::format("balance: not used, {}\n", rejected_.front());
   if (const std::size_t more = rejected_.size() > 1 ? rejected_.size() - 1 : 0; more > 0)
     s += fmt::format("balance: {} more layout{} refused, as above\n", more, more == 1 ? "" : "s");
-  for (const Loss& l : losses_) {
-    const int end = l.first_without < 0 ? frames_ : std::min(l.first_without, frames_);
-    const int from = std::min(l.first_missing, end);
-    std::string stale;
-    for (int f = from; f < end; ++f) {
-      const bool late = std::find(late_.begin(), late_.end(), f) != late_.end();
-      stale += fmt::format("{}{}{}", stale.empty() ? "" : ", ", f, late ? " (late)" : "");
-    }
-    s += fmt::format("balance: lost {}, {:.2f} s into the run; ", l.how, l.seconds);
-    s += l.first_without < 0
-             ? std::string("the run ended before a layout without it")
-             : fmt::format("its tiles went to the others from frame {}", l.first_without);
-    s += fmt::format("; {} frame{} stale (shown incomplete or late){}{}\n", end - from,
-                     end - from == 1 ? "" : "s", stale.empty() ? "" : ": ", stale);
-  }
+  for (const Loss& l : losses_) s += loss_line(l, shown);
   return s;
+}
+
+// Only frames that reached the displays are stale: a run that ended early never rendered the rest.
+std::string LiveBalance::loss_line(const Loss& l, int shown) const {
+  const int shown_end = std::min(shown, frames_);
+  const bool moved = l.first_without >= 0 && l.first_without < shown_end;
+  const int end = moved ? l.first_without : shown_end;
+  std::vector<int> stale, late;
+  for (int f = l.first_missing; f < end; ++f) {
+    stale.push_back(f);
+    if (std::find(late_.begin(), late_.end(), f) != late_.end()) late.push_back(f);
+  }
+  std::string s = fmt::format("balance: lost {}, {:.2f} s into the run; ", l.how, l.seconds);
+  s += moved ? fmt::format("its tiles went to the others from frame {}", l.first_without)
+             : std::string("the run ended before a layout without it");
+  s += fmt::format("; {} frame{} stale (shown incomplete or late)", stale.size(),
+                   stale.size() == 1 ? "" : "s");
+  if (!stale.empty()) s += ": " + frame_ranges(stale);
+  if (!late.empty()) s += fmt::format(" (late: {})", frame_ranges(late));
+  return s + "\n";
 }
 
 std::string LiveBalance::layouts() const {

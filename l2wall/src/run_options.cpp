@@ -10,6 +10,7 @@
 #include "balance/balancer.hpp"
 #include "l2wall/run_backends.hpp"
 #include "l2wall/run_options.hpp"
+#include "tilelayout/survival.hpp"
 
 namespace l2 {
 
@@ -79,6 +80,24 @@ BalanceSpec run_balance(const RunOptions& o, const Wall& wall) {
   return spec;
 }
 
+namespace {
+
+// The option or the wall file's line that asked for survival, as messages name it.
+std::string survive_asked_by(const RunOptions& o, const Wall& wall) {
+  if (o.survive_host_loss) return "--survive-host-loss";
+  return fmt::format("{}:{}: balance.survive_host_loss", wall.source.string(), wall.balance.line);
+}
+
+}  // namespace
+
+std::string survival_note(const RunOptions& o, const Wall& wall) {
+  if (!run_balance(o, wall).survive_host_loss) return {};
+  const Survival s = survival(wall);
+  // Asked for and not offered: the user would otherwise learn it only from a loss.
+  const std::string ends = s.survives == 0 ? "; a pipeserver that dies ends the run" : "";
+  return fmt::format("{}: the wall {}{}", survive_asked_by(o, wall), survival_line(wall, s), ends);
+}
+
 Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
   const BalanceSpec spec = run_balance(o, wall);
   if (!spec.balancing()) {
@@ -100,9 +119,7 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
     }
     return {};
   }
-  const std::string survive = o.survive_host_loss ? std::string("--survive-host-loss")
-                                                  : fmt::format("{}:{}: balance.survive_host_loss",
-                                                                wall.source.string(), spec.line);
+  const std::string survive = survive_asked_by(o, wall);
   // By default a rank that dies ends the whole mpirun job: there would be no run left to go on.
   if (spec.survive_host_loss && place == RunPlace::MpiEndingOnLoss)
     return Failure{fmt::format(

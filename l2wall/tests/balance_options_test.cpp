@@ -88,6 +88,24 @@ TEST(BalanceOptions, SurvivingAHostLossNeedsBalancing) {
             "turns off");
 }
 
+// The run says as it starts what it survives, in tilelayout's words: the default wall survives
+// no loss, and a run there must not look as if it would.
+TEST(BalanceOptions, SurvivalSaysWhatTheWallSurvives) {
+  RunOptions o;
+  EXPECT_EQ(survival_note(o, strips_wall()), "");
+  o.survive_host_loss = true;
+  EXPECT_EQ(survival_note(o, strips_wall()),
+            "--survive-host-loss: the wall survives the loss of no pipeserver (framebuffers "
+            "800x600); 1: needs framebuffer_height >= 910; a pipeserver that dies ends the run");
+  Wall roomy = strips_wall();
+  roomy.framebuffer_height = 2400;
+  roomy.balance.survive_host_loss = true;
+  EXPECT_EQ(survival_note(RunOptions{}, roomy),
+            "walls/x.toml:14: balance.survive_host_loss: the wall survives the loss of 2 "
+            "pipeservers (framebuffers 800x2400); 3: needs framebuffer_height >= 2443 with [mesh] "
+            "board_max_height = 2443");
+}
+
 // --resistance and --tile-cost set the wall's [balance] values over its own, and ask for a
 // balancing run (only it plans layouts to resist).
 TEST(BalanceOptions, ResistanceFromTheWallOrTheCommandLine) {

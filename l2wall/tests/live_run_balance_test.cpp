@@ -40,6 +40,19 @@ void expect_displays_of_the_static_run(const WallRun& fixed, const WallRun& bala
   expect_displays_equal_stamps_aside(fixed, plan_layout(default_wall()), balanced, layouts, frames);
 }
 
+// How many frames "0-3, 7, 9-12" names.
+int frames_in_ranges(const std::string& ranges) {
+  int count = 0;
+  std::istringstream in(ranges);
+  for (std::string part; std::getline(in, part, ',');) {
+    const std::size_t dash = part.find('-');
+    count += dash == std::string::npos
+                 ? 1
+                 : std::stoi(part.substr(dash + 1)) - std::stoi(part.substr(0, dash)) + 1;
+  }
+  return count;
+}
+
 // No swap showed frames of two layouts, and there were swaps to check.
 void expect_no_mixed_swaps(const std::string& output) {
   std::smatch m;
@@ -68,9 +81,30 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
 
   expect_no_mixed_swaps(output);
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(output, m, std::regex("balance strips: (\\d+) layouts, strips")))
+  ASSERT_TRUE(std::regex_search(
+      output, m,
+      std::regex("balance strips: (\\d+) layouts \\(from frames ([0-9, -]+)\\), strips routed "
+                 "per layout: [0-9 to]+\n")))
       << output;
   const int layouts_counted = std::stoi(m[1].str());
+  // The frames each layout started at, as ranges: as many frames as layouts, far fewer words.
+  EXPECT_EQ(frames_in_ranges(m[2].str()), layouts_counted) << m[0];
+  // Whether balancing paid, from frames 1 to 8 (measured on balanced layouts, planned from):
+  // the figures and their ratio agree, and the verdict follows the ratio.
+  ASSERT_TRUE(std::regex_search(
+      output, m,
+      std::regex("\nbalance: (paid|lost|no gain) in render time: the slowest pipeserver took "
+                 "([0-9.]+) ms a frame \\(median\\); the wall's own layout, ([0-9.]+) ms at the "
+                 "same costs \\(([0-9.]+)x\\)\n")))
+      << output;
+  const double gain = std::stod(m[4].str());
+  EXPECT_NEAR(gain, std::stod(m[3].str()) / std::stod(m[2].str()),
+              0.01 + 0.1 / std::stod(m[2].str()));
+  // The verdict follows the ratio (printed rounded: away from the 5 % edges).
+  if (gain > 1.06 || gain < 0.94 || (gain > 0.96 && gain < 1.04)) {
+    EXPECT_EQ(m[1].str(), gain > 1.06 ? "paid" : gain < 0.94 ? "lost" : "no gain") << m[0];
+  }
+  EXPECT_NE(output.find("\nlimited by "), std::string::npos) << output;
   // The pipeservers' batch footprints reached the balancer: the strips scene's 100,000
   // triangles in strips of 16, 64 strips a batch, are 98 batches, all in view.
   EXPECT_NE(output.find("balance: tiles priced by their pixels and the batches they touch (98 "
@@ -207,7 +241,8 @@ TEST(LiveRunBalance, ResistanceKeepsTheLayoutWhenTheGainIsBelowItAndWithoutItThe
   fs::remove_all(dir);
 
   const std::string kept = resisting.output();
-  EXPECT_NE(kept.find("balance strips: 1 layouts, strips"), std::string::npos) << kept;
+  EXPECT_NE(kept.find("balance strips: 1 layouts (from frames 0), strips"), std::string::npos)
+      << kept;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(kept, m,
                                 std::regex("\nbalance: (\\d+) new layouts? not taken \\(resistance "
@@ -227,7 +262,7 @@ TEST(LiveRunBalance, ResistanceKeepsTheLayoutWhenTheGainIsBelowItAndWithoutItThe
   EXPECT_EQ(tiles.size(), 1u);
 
   const std::string moved = free_run.output();
-  ASSERT_TRUE(std::regex_search(moved, m, std::regex("balance strips: (\\d+) layouts, strips")))
+  ASSERT_TRUE(std::regex_search(moved, m, std::regex("balance strips: (\\d+) layouts \\(from")))
       << moved;
   EXPECT_GE(std::stoi(m[1].str()), 2);
   EXPECT_EQ(moved.find("not taken"), std::string::npos) << moved;

@@ -170,7 +170,8 @@ TEST(LiveRunSurvive, WithoutTheOptionAKilledPipeserverEndsTheBalancedRun) {
 }
 
 // Two pipeservers on one display, each framebuffer one tile wide: the survivor has no room for
-// the other's tile, whatever the strips' edges. The run ends, saying so in one line.
+// the other's tile, whatever the strips' edges. The run says so as it starts, and at the kill
+// ends saying why in one line (not that it goes on first); no frame it never rendered is stale.
 TEST(LiveRunSurvive, AFullWallEndsTheRunSayingTheOthersCannotHoldTheTiles) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-full-{}", getpid());
   fs::create_directories(dir);
@@ -188,6 +189,16 @@ TEST(LiveRunSurvive, AFullWallEndsTheRunSayingTheOthersCannotHoldTheTiles) {
   const ExitStatus status = run.wait(kRunBound);
   const std::string output = run.output();
   EXPECT_EQ(status.code, 1) << status.describe() << "\n" << output;
+  EXPECT_NE(output.find(fmt::format("l2wall: {}:14: balance.survive_host_loss: the wall survives "
+                                    "the loss of no pipeserver (framebuffers 160x100); 1: needs "
+                                    "framebuffer_height >= 200; a pipeserver that dies ends the "
+                                    "run\n",
+                                    wall.string())),
+            std::string::npos)
+      << output;
+  EXPECT_EQ(output.find("goes on without it"), std::string::npos) << output;
+  EXPECT_EQ(output.find("stale"), std::string::npos) << output;
+  EXPECT_EQ(slurp(run.out() / "summary.txt").find("stale"), std::string::npos);
   std::smatch m;
   EXPECT_TRUE(std::regex_search(
       output, m,

@@ -80,9 +80,17 @@ class Balancer {
 
   // Pipeserver `pipeserver` died: from the next step on it gets no tile, the others share them
   // (by the wall's assignment policy over them, or heaviest first). Throws
-  // std::invalid_argument for a pipeserver out of range or the last one left.
+  // std::invalid_argument for a pipeserver out of range or the last one left, and LayoutError,
+  // the loss not taken, when the wall's own tiling does not fit the others' framebuffers
+  // (tilelayout's survival: the wall survives fewer losses).
   void lose_pipeserver(int pipeserver);
   const std::vector<int>& lost() const { return lost_; }  // ascending
+
+  // The slowest pipeserver's predicted time on `candidate` at the costs `seconds` measured on
+  // layout() (a frame's times, as next() takes them): what another layout, the wall's own, would
+  // have taken on the same frame. On layout() itself it is the slowest measured.
+  double predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
+                           const Footprints& footprints = {}) const;
 
   // From the next step on, cut by `mode` (a live run's control page switches it): strips start
   // from even strips, kd from the costs the next step measures, static plans the wall's own

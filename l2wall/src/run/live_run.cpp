@@ -163,6 +163,8 @@ void LiveRun::start_balance() {
   wall.balance = spec;
   core_.balance = std::make_unique<LiveBalance>(wall, balance_settings(wall), core_.layout,
                                                 core_.options.frames);
+  if (const std::string note = survival_note(core_.options, core_.wall); !note.empty())
+    std::fprintf(stderr, "l2wall: %s\n", note.c_str());
   core_.lead().follow_layouts(*core_.balance, core_.pipeservers);
 }
 
@@ -219,9 +221,10 @@ int LiveRun::exit_status() const {
 
 // `fault`: the fault that ended the run at the frames shown, or empty. Returns the summary.
 std::string LiveRun::write_report(const std::string& fault) {
-  const std::string extra = loop_.show_summary() + steering_.summary() +
-                            (core_.balance ? core_.balance->summary() : std::string()) +
-                            windows_.summary();
+  const std::string extra =
+      loop_.show_summary() + steering_.summary() +
+      (core_.balance ? core_.balance->summary(core_.frames.shown) : std::string()) +
+      windows_.summary();
   std::vector<std::pair<std::string, std::string>> files;
   if (core_.balance) files.emplace_back("layouts.txt", core_.balance->layouts());
   for (auto& file : windows_.files()) files.push_back(std::move(file));
