@@ -42,7 +42,7 @@ TEST(ColumnMessages, ObservationRoundTrips) {
   sent.refresh = 9;
   sent.inputs = {{0, true, false, true, 1, 0x8000000000000001ull, 12},
                  {3, false, true, false, 0, 0, -1}};
-  sent.stamps = {{1, 11, mpi_wire::kStampNotHere}, {3, mpi_wire::kStampNotHere, 10}};
+  sent.stamps = {{1, 11, kStampNotHere}, {3, kStampNotHere, 10}};
   sent.displays = {{8, 11, 0}, {9, -1, 0}};  // the rank is the receiver's to fill
   EXPECT_EQ(decode_observation(encode(sent)), sent);
 }
@@ -74,6 +74,23 @@ TEST(ColumnMessages, AHugeOrNegativeCountIsRefusedBeforeAnyAllocation) {
                 std::string::npos)
           << e.what();
     }
+  }
+}
+
+TEST(ColumnMessages, RouteRoundTripsAfterItsCommandWordAndACutOneIsRefused) {
+  const ColumnRoute sent{{1, 0, 1}, {0, 2}};
+  const mpi_wire::Record r = encode(sent);
+  // kRoute, 3 inputs, 2 completed groups.
+  EXPECT_EQ(r, (mpi_wire::Record{mpi_wire::kRoute, 3, 1, 0, 1, 2, 0, 2}));
+  mpi_wire::Reader in(r);
+  EXPECT_EQ(in.next(), mpi_wire::kRoute);
+  EXPECT_EQ(decode_route(in), sent);
+  EXPECT_TRUE(in.done());
+  for (std::size_t size = 2; size < r.size(); ++size) {
+    const mpi_wire::Record cut(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(size));
+    mpi_wire::Reader cut_in(cut);
+    cut_in.next();
+    EXPECT_THROW(decode_route(cut_in), std::runtime_error) << "cut to " << size << " words";
   }
 }
 

@@ -46,12 +46,6 @@ struct TileMessage {
 // after the header.
 inline constexpr std::int32_t kTileKind = 1, kFrameDoneKind = 2, kTileDeltaKind = 3;
 
-// In a column's answer: a host's stamp that lands on another column's display, not read there.
-inline constexpr int kStampNotHere = -1;
-// In the coordinator's tick, for a pipeserver lost (--survive-host-loss): its input carries no
-// signal from now on.
-inline constexpr std::uint64_t kNoSignal = ~std::uint64_t{0};
-
 // What the coordinator asks of a column (the first word of a record).
 enum Command : std::int64_t { kTick = 1, kRoute = 2, kFetch = 3, kEnd = 4, kFetchComposed = 5 };
 
