@@ -9,6 +9,7 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "image/turn.hpp"
 #include "pipeserver/depth_out.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "pipeserver/tile_renderer.hpp"
@@ -70,16 +71,19 @@ void Pipeserver::set_layout(const TileLayout& layout) {
 }
 
 void Pipeserver::make_windows(const Wall& wall) {
-  // One GL context per display size: tiles of displays of one size share it, one display at
-  // a time, each tile clearing its own rectangle. A new layout keeps the contexts it can.
+  // One GL context per size of a display's canvas rectangle: tiles of displays of one size share
+  // it, one display at a time, each tile clearing its own rectangle. A new layout keeps the
+  // contexts it can. A turned display is rendered upright, as the canvas is, and turned while its
+  // tiles are packed (depth_out.hpp).
   windows_.clear();
   for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
     const Display& d = wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
     const auto at = std::find_if(contexts_.begin(), contexts_.end(), [&](const auto& c) {
-      return c->width() == d.width && c->height() == d.height;
+      return c->width() == d.canvas_width() && c->height() == d.canvas_height();
     });
     const std::size_t context = static_cast<std::size_t>(at - contexts_.begin());
-    if (at == contexts_.end()) contexts_.push_back(std::make_unique<GlContext>(d.width, d.height));
+    if (at == contexts_.end())
+      contexts_.push_back(std::make_unique<GlContext>(d.canvas_width(), d.canvas_height()));
     auto w = std::find_if(windows_.begin(), windows_.end(),
                           [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
     if (w == windows_.end()) {
@@ -180,8 +184,9 @@ RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, i
     throw std::out_of_range(
         fmt::format("display {} does not exist: the wall has {}", display, displays.size()));
   }
-  return render_canvas_rect(canvas_of(layout.wall),
-                            displays[static_cast<std::size_t>(display)].on_canvas(), scene, frame);
+  const Display& d = displays[static_cast<std::size_t>(display)];
+  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, frame),
+                  d.orientation);
 }
 
 }  // namespace l2

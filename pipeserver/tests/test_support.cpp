@@ -16,7 +16,7 @@ TileLayout small_layout(int pipeservers, int tile_w, int tile_h, int fb_w, int f
   wall.name = "small";
   wall.canvas_width = 136;
   wall.canvas_height = 48;
-  wall.displays = {Display{0, 64, 48, 0, 0, 0, ""}, Display{1, 64, 48, 72, 0, 0, ""}};
+  wall.displays = {Display{0, 64, 48, 0, 0, 0, "", {}}, Display{1, 64, 48, 72, 0, 0, "", {}}};
   wall.pipeserver_count = pipeservers;
   wall.framebuffer_width = fb_w;
   wall.framebuffer_height = fb_h;
@@ -30,7 +30,8 @@ TileLayout small_layout(int pipeservers, int tile_w, int tile_h, int fb_w, int f
         const Rect part = intersect(logical, d.on_canvas());
         if (part.empty()) continue;
         const Rect on_display{part.x - d.canvas_x, part.y - d.canvas_y, part.w, part.h};
-        layout.tiles.push_back(DisplayTile{d.id, on_display, part, index});
+        layout.tiles.push_back(
+            DisplayTile{d.id, on_display, part, index, Compositing::Copy, 0, {}});
         layout.tile_pipeserver.push_back(static_cast<int>(layout.tile_pipeserver.size()) %
                                          pipeservers);
       }

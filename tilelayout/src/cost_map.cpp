@@ -30,8 +30,8 @@ CostMap::CostMap(const Wall& wall) {
   const std::size_t cols = grid.empty() ? 1 : grid[0].size();
   std::vector<int> dx, dy;
   for (const Display& d : wall.displays) {
-    dx.insert(dx.end(), {d.canvas_x, d.canvas_x + d.width});
-    dy.insert(dy.end(), {d.canvas_y, d.canvas_y + d.height});
+    dx.insert(dx.end(), {d.on_canvas().x, d.on_canvas().right()});
+    dy.insert(dy.end(), {d.on_canvas().y, d.on_canvas().bottom()});
   }
   xs_ = cut_edges(wall.canvas_width, cols, dx);
   ys_ = cut_edges(wall.canvas_height, rows, dy);

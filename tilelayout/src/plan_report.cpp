@@ -12,6 +12,19 @@
 namespace l2 {
 namespace {
 
+// How a display hangs, when not as it is: " turned 90, flipped horizontal (1080x1920 on the
+// canvas)".
+std::string mounted(const Display& d) {
+  const Orientation& o = d.orientation;
+  if (o.identity()) return "";
+  std::string out;
+  if (o.rotation != 0) out += fmt::format(" turned {}", o.rotation);
+  if (o.flip != Flip::None)
+    out +=
+        fmt::format("{} flipped {}", out.empty() ? "" : ",", kFlipNames[static_cast<int>(o.flip)]);
+  return out + fmt::format(" ({}x{} on the canvas)", d.canvas_width(), d.canvas_height());
+}
+
 const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
 
 const char* link_name(int links) {
@@ -95,9 +108,9 @@ void displays(const TileLayout& layout, std::string& out) {
       ++count;
     }
     out += fmt::format(
-        "display {}: {}x{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
+        "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
         "by {} tiles from pipeservers {}\n",
-        d.id, d.width, d.height, d.canvas_x, d.canvas_y, d.swap_group,
+        d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
         from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")));
   }

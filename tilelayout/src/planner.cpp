@@ -47,9 +47,8 @@ struct Distribution {
 DisplayTile overlay_tile(const Wall& wall, int logical_index) {
   const Overlay& o = *wall.overlay;
   const Display& d = wall.displays[static_cast<std::size_t>(o.display)];
-  const Rect on_canvas{d.canvas_x + o.on_display.x, d.canvas_y + o.on_display.y, o.on_display.w,
-                       o.on_display.h};
-  return {o.display, o.on_display, on_canvas, logical_index, Compositing::Key, o.key};
+  return {o.display, o.on_display, d.to_canvas(o.on_display), logical_index, Compositing::Key,
+          o.key,     d.orientation};
 }
 
 // `given`: the pipeserver of each logical tile, chosen by the caller instead of the policy.

@@ -22,14 +22,17 @@ Rgb depth_pixel(std::uint32_t depth) {
 void fill_tile(const PackedTile& p, int layer, int layers, PatternPlace place, RgbImage& fb) {
   const DisplayTile& t = p.tile;
   const Rect& d = t.on_display;
-  const Rect& at = place == PatternPlace::Canvas ? t.on_canvas : t.on_display;
+  // On the canvas, a turned display's tile pixel (i, j) is where its tile map says.
+  const bool canvas = place == PatternPlace::Canvas;
+  const PanelMap m = canvas ? tile_map(t) : PanelMap{};
+  const Rect& at = canvas ? t.on_canvas : t.on_display;
   const Rgb key{static_cast<std::uint8_t>(t.key >> 16), static_cast<std::uint8_t>(t.key >> 8),
                 static_cast<std::uint8_t>(t.key)};
   for (int j = 0; j < d.h; ++j) {
     std::uint8_t* px = fb.row(p.fb_y + j).data() + static_cast<std::size_t>(p.fb_x) * 3;
     std::uint8_t* depth = px + static_cast<std::size_t>(d.w) * 3;
     for (int i = 0; i < d.w; ++i, px += 3, depth += 3) {
-      const int x = at.x + i, y = at.y + j;
+      const int x = at.x + m.u(i, j), y = at.y + m.v(i, j);
       if (t.compositing == Compositing::Depth) {
         const LayerPixel l = depth_test_pixel(t.display, x, y, layer, layers);
         put(px, l.colour);

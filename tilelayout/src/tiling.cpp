@@ -115,7 +115,7 @@ std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<R
     for (const Display& d : wall.displays) {
       const Rect part = intersect(logical[i], d.on_canvas());
       if (part.empty()) continue;
-      out.push_back({d.id, {part.x - d.canvas_x, part.y - d.canvas_y, part.w, part.h}, part, i});
+      out.push_back({d.id, d.to_panel(part), part, i, Compositing::Copy, 0, d.orientation});
     }
   }
   return out;

@@ -12,6 +12,17 @@ namespace {
 constexpr int kMaxCanvas = 16384;         // canvas positions are not in headers; just sane
 constexpr int kMaxSize = kMaxCoordinate;  // display sizes are: x, y, width have 12 bits
 
+// `rotation` and `flip` of a display, or of every display of a grid: the panel as mounted.
+Orientation read_orientation(const TomlFields& f) {
+  Orientation o;
+  if (const auto r = f.integer("rotation", 0, 270)) {
+    if (*r % 90 != 0) f.fail("rotation", fmt::format("must be 0, 90, 180 or 270, got {}", *r));
+    o.rotation = *r;
+  }
+  o.flip = static_cast<Flip>(f.choice("flip", {std::begin(kFlipNames), std::end(kFlipNames)}, 0));
+  return o;
+}
+
 // Optional per-display values of a grid, one per display in id order.
 void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
   const int n = static_cast<int>(displays.size());
@@ -45,15 +56,18 @@ void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
 void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
   const TomlFields f(table, "display_grid", top.source(),
                      {"columns", "rows", "width", "height", "mullion_x", "mullion_y", "origin_x",
-                      "origin_y", "swap_groups", "monitors"});
+                      "origin_y", "swap_groups", "monitors", "rotation", "flip"});
   const int columns = f.required_integer("columns", 1, kMaxDisplays);
   const int rows = f.required_integer("rows", 1, kMaxDisplays);
   if (columns * rows > kMaxDisplays) {
     f.fail("rows", fmt::format("{}x{} displays need ids up to {}, beyond the last id 63", columns,
                                rows, columns * rows - 1));
   }
-  const int w = f.required_integer("width", 1, kMaxSize);
-  const int h = f.required_integer("height", 1, kMaxSize);
+  const int pw = f.required_integer("width", 1, kMaxSize);
+  const int ph = f.required_integer("height", 1, kMaxSize);
+  const Orientation orientation = read_orientation(f);
+  // Mullions and the grid's steps are on the canvas, where a turned panel is its size turned.
+  const int w = orientation.turned() ? ph : pw, h = orientation.turned() ? pw : ph;
   // A negative mullion is projector overlap; it must leave each display some pixels of its own.
   const int mx = f.integer("mullion_x", -(w - 1), kMaxSize, 0);
   const int my = f.integer("mullion_y", -(h - 1), kMaxSize, 0);
@@ -63,8 +77,9 @@ void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
     for (int c = 0; c < columns; ++c) {
       Display d;
       d.id = r * columns + c;
-      d.width = w;
-      d.height = h;
+      d.width = pw;
+      d.height = ph;
+      d.orientation = orientation;
       d.canvas_x = ox + c * (w + mx);
       d.canvas_y = oy + r * (h + my);
       wall.displays.push_back(d);
@@ -81,8 +96,9 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     if (!node.is_table()) {
       top.source().fail(node, name, fmt::format("must be a table, got {}", type_name(node)));
     }
-    const TomlFields f(*node.as_table(), name, top.source(),
-                       {"id", "width", "height", "x", "y", "swap_group", "monitor"});
+    const TomlFields f(
+        *node.as_table(), name, top.source(),
+        {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation", "flip"});
     Display d;
     d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
     d.width = f.required_integer("width", 1, kMaxSize);
@@ -91,6 +107,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     d.canvas_y = f.required_integer("y", 0, kMaxCanvas - 1);
     d.swap_group = f.integer("swap_group", 0, kMaxDisplays - 1, 0);
     d.monitor = f.string("monitor").value_or("");
+    d.orientation = read_orientation(f);
     for (std::size_t j = 0; j < wall.displays.size(); ++j) {
       if (wall.displays[j].id == d.id) {
         f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));
@@ -137,8 +154,8 @@ void read_displays(const TomlFields& top, Wall& wall) {
 void read_canvas(const TomlFields& top, Wall& wall) {
   int right = 0, bottom = 0;
   for (const Display& d : wall.displays) {
-    right = std::max(right, d.canvas_x + d.width);
-    bottom = std::max(bottom, d.canvas_y + d.height);
+    right = std::max(right, d.on_canvas().right());
+    bottom = std::max(bottom, d.on_canvas().bottom());
   }
   wall.canvas_width = right;
   wall.canvas_height = bottom;
@@ -156,10 +173,11 @@ void read_canvas(const TomlFields& top, Wall& wall) {
   wall.canvas_width = f.required_integer("width", 1, kMaxCanvas);
   wall.canvas_height = f.required_integer("height", 1, kMaxCanvas);
   for (const Display& d : wall.displays) {
-    if (d.canvas_x + d.width > wall.canvas_width || d.canvas_y + d.height > wall.canvas_height) {
-      f.fail(d.canvas_x + d.width > wall.canvas_width ? "width" : "height",
-             fmt::format("display {} ({}x{} at {},{}) extends past the {}x{} canvas", d.id, d.width,
-                         d.height, d.canvas_x, d.canvas_y, wall.canvas_width, wall.canvas_height));
+    const Rect r = d.on_canvas();
+    if (r.right() > wall.canvas_width || r.bottom() > wall.canvas_height) {
+      f.fail(r.right() > wall.canvas_width ? "width" : "height",
+             fmt::format("display {} ({}x{} at {},{}) extends past the {}x{} canvas", d.id, r.w,
+                         r.h, d.canvas_x, d.canvas_y, wall.canvas_width, wall.canvas_height));
     }
   }
 }

@@ -86,7 +86,8 @@ class Pipeserver {
 };
 
 // What display `display` should show for `frame`: the display's canvas rectangle rendered
-// whole, at display resolution, with the same camera (its own GL context).
+// whole, at display resolution, with the same camera (its own GL context), turned into the
+// panel's raster as it hangs (image/orientation.hpp).
 RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame);
 
 // Any canvas rectangle rendered alone into an image of its size (its own GL context): the

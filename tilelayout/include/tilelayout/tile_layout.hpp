@@ -27,8 +27,18 @@ struct DisplayTile {
   Rect on_canvas;        // the same pixels on the logical canvas (what the renderer draws)
   int logical_tile = 0;  // index into TileLayout::logical_tiles
   Compositing compositing = Compositing::Copy;
-  std::uint32_t key = 0;  // Key: the key colour, R<<16 | G<<8 | B
+  std::uint32_t key = 0;    // Key: the key colour, R<<16 | G<<8 | B
+  Orientation orientation;  // the display's: on_display is on_canvas turned so (tile_map)
 };
+
+// Tile pixel (i, j) of `t` (from the top-left of on_display) shows the pixel of on_canvas at
+// offset (u(i, j), v(i, j)): the display's PanelMap, anchored on the tile.
+inline PanelMap tile_map(const DisplayTile& t) {
+  PanelMap m = panel_map(t.orientation, 2, 2);  // only the signs and the swap matter
+  m.u0 = (m.ux < 0 ? t.on_display.w - 1 : 0) + (m.uy < 0 ? t.on_display.h - 1 : 0);
+  m.v0 = (m.vx < 0 ? t.on_display.w - 1 : 0) + (m.vy < 0 ? t.on_display.h - 1 : 0);
+  return m;
+}
 
 // Columns before a tile's pixels on each of its scanlines: its header, and for KEY and DEPTH
 // the extension word (§7).

@@ -2,25 +2,54 @@
 // where they sit on the logical canvas, the pipeservers, the mesh limits and swap-lock groups.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "image/orientation.hpp"
 #include "tilelayout/geometry.hpp"
 
 namespace l2 {
 
+// A display (panel or projector): its native raster, which strip headers address, and the canvas
+// rectangle it shows as it hangs. A panel turned by 90 or 270 covers its native size turned.
 struct Display {
-  int id = 0;  // output display number carried in strip headers, 0..63
-  int width = 0, height = 0;
-  int canvas_x = 0, canvas_y = 0;  // where the display's pixel (0,0) sits on the canvas
+  int id = 0;                      // output display number carried in strip headers, 0..63
+  int width = 0, height = 0;       // native, as the panel reports it: its frames' size
+  int canvas_x = 0, canvas_y = 0;  // top-left corner of its canvas rectangle
   int swap_group = 0;              // displays of one group swap together (spec §6)
   std::string monitor;             // optional monitor name or index for --show monitors
+  Orientation orientation;         // as mounted (image/orientation.hpp)
 
-  Rect on_canvas() const { return {canvas_x, canvas_y, width, height}; }
+  int canvas_width() const { return orientation.turned() ? height : width; }
+  int canvas_height() const { return orientation.turned() ? width : height; }
+  Rect on_canvas() const { return {canvas_x, canvas_y, canvas_width(), canvas_height()}; }
+  // Which canvas pixel each of its pixels shows.
+  PanelMap panel_map() const {
+    return l2::panel_map(orientation, width, height, canvas_x, canvas_y);
+  }
+  // The panel rectangle that shows canvas rectangle `r` (inside on_canvas()), and back.
+  Rect to_panel(const Rect& r) const {
+    const PanelMap m = panel_map();
+    return bounds(m.x_of(r.x, r.y), m.y_of(r.x, r.y), m.x_of(r.right() - 1, r.bottom() - 1),
+                  m.y_of(r.right() - 1, r.bottom() - 1));
+  }
+  Rect to_canvas(const Rect& r) const {
+    const PanelMap m = panel_map();
+    return bounds(m.u(r.x, r.y), m.v(r.x, r.y), m.u(r.right() - 1, r.bottom() - 1),
+                  m.v(r.right() - 1, r.bottom() - 1));
+  }
+
+ private:
+  // The rectangle with corner pixels (ax, ay) and (bx, by), in any order.
+  static Rect bounds(int ax, int ay, int bx, int by) {
+    return {std::min(ax, bx), std::min(ay, by), std::abs(bx - ax) + 1, std::abs(by - ay) + 1};
+  }
 };
 
 // Every pipeserver is a mesh input: 64 board rows of 4 inputs (spec §5; lightning2_emu's
