@@ -49,7 +49,10 @@ function buildWall(s) {
     box.style.width = `${(100 * d.width) / canvas.width}%`;
     box.style.height = `${(100 * d.height) / canvas.height}%`;
     box.style.setProperty('--group', colour(d.swap_group));
-    box.title = `display ${d.id}: ${d.width}x${d.height} at (${d.x}, ${d.y}), swap group ${d.swap_group}`;
+    const hung = [d.rotation ? `turned ${d.rotation}` : '', d.flip && d.flip !== 'none' ? `flipped ${d.flip}` : '']
+      .filter(Boolean)
+      .join(', ');
+    box.title = `display ${d.id}: ${d.width}x${d.height} at (${d.x}, ${d.y})${hung ? ` (${hung})` : ''}, swap group ${d.swap_group}`;
     const img = document.createElement('img');
     img.dataset.id = d.id;
     img.alt = `display ${d.id}`;

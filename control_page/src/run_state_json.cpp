@@ -17,6 +17,8 @@ json displays(const std::vector<PageDisplay>& all) {
     json j = rect(d.x, d.y, d.width, d.height);
     j["id"] = d.id;
     j["swap_group"] = d.swap_group;
+    j["rotation"] = d.orientation.rotation;
+    j["flip"] = kFlipNames[static_cast<int>(d.orientation.flip)];
     out.push_back(j);
   }
   return out;

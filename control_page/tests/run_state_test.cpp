@@ -12,7 +12,7 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   s.wall_name = "two";
   s.canvas_width = 2048;
   s.canvas_height = 768;
-  s.displays = {{0, 0, 0, 1024, 768, 0}, {1, 1024, 0, 1024, 768, 1}};
+  s.displays = {{0, 0, 0, 1024, 768, 0, {}}, {1, 1024, 0, 768, 1024, 1, {90, Flip::Vertical}}};
   s.frame = 41;
   s.paused = true;
   s.tiles = {{0, 0, 512, 384, 3}};
@@ -28,6 +28,10 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   ASSERT_EQ(j["displays"].size(), 2u);
   EXPECT_EQ(j["displays"][1]["x"], 1024);
   EXPECT_EQ(j["displays"][1]["swap_group"], 1);
+  EXPECT_EQ(j["displays"][0]["rotation"], 0);
+  EXPECT_EQ(j["displays"][0]["flip"], "none");
+  EXPECT_EQ(j["displays"][1]["rotation"], 90);
+  EXPECT_EQ(j["displays"][1]["flip"], "vertical");
   EXPECT_EQ(j["frame"], 41);
   EXPECT_EQ(j["paused"], true);
   EXPECT_EQ(j["tiles"][0]["pipeserver"], 3);

@@ -22,8 +22,8 @@ Rect wall_extent(const Wall& wall) {
   for (const Display& d : wall.displays) {
     x0 = std::min(x0, d.canvas_x);
     y0 = std::min(y0, d.canvas_y);
-    x1 = std::max(x1, d.canvas_x + d.width);
-    y1 = std::max(y1, d.canvas_y + d.height);
+    x1 = std::max(x1, d.on_canvas().right());
+    y1 = std::max(y1, d.on_canvas().bottom());
   }
   return {x0, y0, x1 - x0, y1 - y0};
 }
@@ -41,8 +41,8 @@ WallView fit_wall(const Wall& wall, int max_width, int max_height, int overlay_h
   for (const Display& d : wall.displays) {
     const int x0 = scaled(d.canvas_x - extent.x, view.scale);
     const int y0 = scaled(d.canvas_y - extent.y, view.scale);
-    const int x1 = scaled(d.canvas_x - extent.x + d.width, view.scale);
-    const int y1 = scaled(d.canvas_y - extent.y + d.height, view.scale);
+    const int x1 = scaled(d.on_canvas().right() - extent.x, view.scale);
+    const int y1 = scaled(d.on_canvas().bottom() - extent.y, view.scale);
     view.display_rects.push_back({x0, y0, std::max(1, x1 - x0), std::max(1, y1 - y0)});
   }
   const int wall_height = std::max(1, scaled(extent.h, view.scale));

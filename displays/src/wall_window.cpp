@@ -7,6 +7,7 @@
 #include "displays/colours.hpp"
 #include "gl_window.hpp"
 #include "glfw_session.hpp"
+#include "image/turn.hpp"
 
 namespace l2 {
 
@@ -50,7 +51,9 @@ void WallWindow::present(const FrameInfo& info, const std::vector<RgbImage>& dis
   if (w > 0 && h > kOverlayHeight) view_ = fit_wall(wall_, w, h, kOverlayHeight);
   window_->begin_frame(kMullionColour);
   for (std::size_t i = 0; i < displays.size(); ++i) {
-    window_->draw_image(i, displays[i], view_.display_rects[i]);
+    const Orientation o = wall_.displays[i].orientation;
+    window_->draw_image(i, o.identity() ? displays[i] : to_canvas(displays[i], o),
+                        view_.display_rects[i]);
   }
   window_->draw_image(displays.size(),
                       render_overlay(overlay_line(info), view_.overlay.w, view_.overlay.h),
@@ -66,7 +69,10 @@ UserAction WallWindow::poll_events() {
 
 std::vector<RgbImage> WallWindow::read_back() {
   std::vector<RgbImage> shown;
-  for (const Rect& r : view_.display_rects) shown.push_back(window_->read_shown(r));
+  for (std::size_t i = 0; i < view_.display_rects.size(); ++i) {
+    shown.push_back(
+        to_panel(window_->read_shown(view_.display_rects[i]), wall_.displays[i].orientation));
+  }
   return shown;
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "control_page/access_token.hpp"
+#include "image/turn.hpp"
 #include "l2wall/path_choice.hpp"
 #include "run_stats.hpp"
 
@@ -40,8 +41,10 @@ RunState wall_state(const Wall& wall) {
   s.wall_name = wall.name;
   s.canvas_width = wall.canvas_width;
   s.canvas_height = wall.canvas_height;
-  for (const Display& d : wall.displays)
-    s.displays.push_back({d.id, d.canvas_x, d.canvas_y, d.width, d.height, d.swap_group});
+  for (const Display& d : wall.displays) {
+    const Rect r = d.on_canvas();
+    s.displays.push_back({d.id, r.x, r.y, r.w, r.h, d.swap_group, d.orientation});
+  }
   return s;
 }
 
@@ -145,7 +148,9 @@ void LivePage::publish(const PageMoment& m, const DisplayPictures* pictures) {
   if (!m.balance_mode.empty()) state_.balance_modes = {"static", "strips", "kd"};
   if (pictures) {
     auto shown = std::make_shared<std::vector<RgbImage>>();
-    for (const PageDisplay& d : state_.displays) shown->push_back((*pictures)(d.id));
+    // As they hang, so the page draws a portrait panel upright (image/turn.hpp).
+    for (const PageDisplay& d : state_.displays)
+      shown->push_back(to_canvas((*pictures)(d.id), d.orientation));
     server_->publish_displays(std::move(shown));
     ++state_.pictures_version;
   }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <iostream>
 #include <stdexcept>
 #include <thread>
 
@@ -38,6 +39,7 @@ LiveShow::LiveShow(const RunOptions& o, const Wall& wall)
   }
   // Vsync paces a refresh-rate run like a real display; --refresh 0 asks for full speed.
   presenter_ = open_presenter(*mode, wall, {.vsync = o.refresh_hz > 0, .title = title(wall)});
+  for (const std::string& note : presenter_->notes()) std::cout << "--show: " << note << "\n";
   images_.resize(wall.displays.size());
 }
 

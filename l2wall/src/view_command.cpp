@@ -18,6 +18,7 @@
 #include "control_page/access_token.hpp"
 #include "control_page/control_server.hpp"
 #include "image/png_io.hpp"
+#include "image/turn.hpp"
 #include "live_page.hpp"
 #include "pipeserver_log.hpp"
 #include "stop_signal.hpp"
@@ -139,7 +140,7 @@ std::shared_ptr<std::vector<RgbImage>> displays_of(const fs::path& dir, const Wa
   auto shown = std::make_shared<std::vector<RgbImage>>();
   for (const Display& d : wall.displays) {
     const fs::path file = dir / fmt::format("display-{}.png", d.id);
-    shown->push_back(fs::exists(file) ? read_png(file) : RgbImage());
+    shown->push_back(fs::exists(file) ? to_canvas(read_png(file), d.orientation) : RgbImage());
   }
   return shown;
 }

@@ -3,18 +3,24 @@
 #include <algorithm>
 #include <cstring>
 
+#include "image/turn.hpp"
+
 namespace l2 {
 
 RgbImage compose_wall_picture(const Wall& wall,
                               const std::function<const RgbImage&(int display)>& shown) {
   int w = std::max(wall.canvas_width, 1), h = std::max(wall.canvas_height, 1);
   for (const Display& d : wall.displays) {
-    w = std::max(w, d.canvas_x + d.width);
-    h = std::max(h, d.canvas_y + d.height);
+    w = std::max(w, d.on_canvas().right());
+    h = std::max(h, d.on_canvas().bottom());
   }
   RgbImage picture(w, h, Rgb{40, 40, 40});
   for (const Display& d : wall.displays) {
-    const RgbImage& img = shown(d.id);
+    // As the display hangs: a turned panel's frame turned back onto its canvas rectangle.
+    RgbImage turned;
+    const RgbImage& frame = shown(d.id);
+    if (!d.orientation.identity()) turned = to_canvas(frame, d.orientation);
+    const RgbImage& img = d.orientation.identity() ? frame : turned;
     // Clip to the picture: a display may start left of or above the canvas origin.
     const int x0 = std::max(0, -d.canvas_x), y0 = std::max(0, -d.canvas_y);
     const int cols = std::min(img.width(), w - d.canvas_x) - x0;

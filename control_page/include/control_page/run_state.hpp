@@ -8,12 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "image/orientation.hpp"
+
 namespace l2 {
 
 struct PageDisplay {
   int id = 0;
-  int x = 0, y = 0, width = 0, height = 0;  // on the canvas
+  int x = 0, y = 0, width = 0, height = 0;  // on the canvas, as it hangs
   int swap_group = 0;
+  Orientation orientation;  // how it hangs: its pictures are published turned so
 };
 
 struct PageTile {

@@ -24,13 +24,19 @@ class MonitorWall final : public WallPresenter {
   UserAction poll_events() override;
   std::vector<RgbImage> read_back() override;
   std::vector<RgbImage> read_back_windows() override;
+  std::vector<std::string> notes() const override { return notes_; }
 
  private:
+  // A display that its monitor shows scaled down, said once.
+  void note_scaled(const Display& d, int width, int height, const std::string& monitor);
+
   Wall wall_;
   std::unique_ptr<GlfwSession> session_;
   std::vector<std::unique_ptr<GlWindow>> windows_;  // windows_[i] shows display i
   std::vector<std::vector<int>> groups_;
   std::vector<Rect> shown_;  // where each display's image is in its window
+  RgbImage turned_;          // a turned display's frame as it hangs, drawn right away
+  std::vector<std::string> notes_;
 };
 
 }  // namespace l2

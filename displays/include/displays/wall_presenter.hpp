@@ -28,8 +28,9 @@ class WallPresenter {
  public:
   virtual ~WallPresenter() = default;
 
-  // Shows one frame. displays[i] is display i of the wall; an image of the display's own size is
-  // shown pixel for pixel wherever the window has room for it. Throws std::invalid_argument when
+  // Shows one frame. displays[i] is display i of the wall, in its native raster; it is shown as
+  // the panel hangs (turned and mirrored back, image/turn.hpp), pixel for pixel wherever the
+  // window has room for it. Throws std::invalid_argument when
   // the number of images differs from the wall's displays.
   virtual void present(const FrameInfo& info, const std::vector<RgbImage>& displays) = 0;
 
@@ -38,11 +39,16 @@ class WallPresenter {
   virtual UserAction poll_events() = 0;
 
   // What the screens show now, read back from the windows' front buffers: one image per display,
-  // cropped from its window (the display's own size when shown at scale 1).
+  // cropped from its window and turned back into the display's raster (its own size when shown
+  // at scale 1).
   virtual std::vector<RgbImage> read_back() = 0;
 
   // Whole windows as shown (the wall window: displays, mullions and the overlay bar).
   virtual std::vector<RgbImage> read_back_windows() = 0;
+
+  // What the windows cannot show as the wall asks, one line each, for the caller to say once
+  // (a panel larger than its monitor is shown scaled down).
+  virtual std::vector<std::string> notes() const { return {}; }
 };
 
 struct PresenterOptions {

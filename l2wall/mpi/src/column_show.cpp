@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iostream>
 #include <utility>
 
 #include "image/folders.hpp"
@@ -30,6 +31,7 @@ ColumnShow::ColumnShow(const Wall& wall, const std::vector<int>& ids, bool vsync
     : wall_(own_displays(wall, ids)), readback_(std::move(readback)) {
   presenter_ =
       open_presenter(ShowMode::Monitors, wall_, {.vsync = vsync, .title = LiveShow::title(wall)});
+  for (const std::string& note : presenter_->notes()) std::cout << "--show: " << note << "\n";
   images_.resize(wall_.displays.size());
 }
 

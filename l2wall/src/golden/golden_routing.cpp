@@ -77,10 +77,11 @@ std::vector<RgbImage> test_pattern_displays(const TileLayout& layout) {
   for (const DisplayTile& t : layout.tiles) {
     RgbImage& image = out.at(t.display);
     const Rect& r = t.on_display;
-    const int to_canvas_x = t.on_canvas.x - r.x, to_canvas_y = t.on_canvas.y - r.y;
+    // The display's own map, not the tile's: a turned display's pixels show the canvas turned.
+    const PanelMap m = layout.wall.displays.at(t.display).panel_map();
     for (int y = r.y; y < r.bottom(); ++y) {
       for (int x = r.x; x < r.right(); ++x)
-        image.set(x, y, test_pattern(t.display, x + to_canvas_x, y + to_canvas_y));
+        image.set(x, y, test_pattern(t.display, m.u(x, y), m.v(x, y)));
     }
   }
   return out;
