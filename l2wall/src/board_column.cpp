@@ -18,7 +18,10 @@ BoardColumn::BoardColumn(const Wall& wall, std::span<const int> display_ids,
       sequences_(stamps_.size(), 0),
       back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
       done_frame_(back_frame_),
-      shown_frame_(back_frame_) {
+      shown_frame_(back_frame_),
+      back_from_(back_frame_.size(), std::vector<int>(stamps_.size(), kStampNotHere)),
+      done_from_(back_from_),
+      shown_from_(back_from_) {
   router_.predict_layouts(predict);
   for (const SwapGroup& g : make_swap_groups(display_specs(wall))) {
     std::vector<int>& own = group_indices_.emplace_back();
@@ -35,7 +38,9 @@ bool BoardColumn::swap(std::span<const int> groups) {
       throw std::runtime_error(fmt::format("the DVI path swapped group {}", group));
     for (const int index : group_indices_[static_cast<std::size_t>(group)]) {
       router_.display(index).swap();
-      shown_frame_[static_cast<std::size_t>(index)] = done_frame_[static_cast<std::size_t>(index)];
+      const auto i = static_cast<std::size_t>(index);
+      shown_frame_[i] = done_frame_[i];
+      shown_from_[i] = done_from_[i];
       swapped = true;
     }
   }
@@ -66,17 +71,17 @@ Observation BoardColumn::observe(std::int64_t refresh) const {
     o.inputs.push_back({input, st.present, st.idle(), st.torn(), st.parity(), st.displays_fed,
                         stamps_[static_cast<std::size_t>(input)]});
   }
-  // A spot on another column's display (or off this one) is not read here.
-  const auto read = [&](const StampSpot& s) -> int {
+  // The frame of pipeserver `p` on the display of its spot: a spot on another column's display
+  // is not read here.
+  const auto read = [&](std::size_t p, const StampSpot& s) -> int {
     const int index = router_.index_of_display(s.display);
     if (index < 0) return kStampNotHere;
-    const RgbImage& front = router_.display(index).front();
-    if (s.dx < 0 || s.dy < 0 || s.dx >= front.width() || s.dy >= front.height())
-      return kStampNotHere;
-    return decode_stamp(front.row(s.dy).data() + s.dx * 3);
+    const std::vector<int>& from = shown_from_[static_cast<std::size_t>(index)];
+    return p < from.size() ? from[p] : kStampNotHere;
   };
   for (std::size_t p = 0; p < spots_.size(); ++p) {
-    const StampsShown shown{static_cast<int>(p), read(spots_[p].last), read(spots_[p].before)};
+    const StampsShown shown{static_cast<int>(p), read(p, spots_[p].last),
+                            read(p, spots_[p].before)};
     if (shown.last != kStampNotHere || shown.before != kStampNotHere) o.stamps.push_back(shown);
   }
   for (int d = 0; d < router_.display_count(); ++d)
@@ -96,6 +101,7 @@ void BoardColumn::write(const Router::RouteChoice& choose) {
       if (fed >> router_.display(d).id() & 1) {
         int& f = back_frame_[static_cast<std::size_t>(d)];
         f = std::max(f, stamps_[p]);
+        back_from_[static_cast<std::size_t>(d)][p] = stamps_[p];
       }
     }
   }
@@ -108,8 +114,11 @@ void BoardColumn::complete(std::span<const int> groups) {
     const std::vector<int>& own = group_indices_[static_cast<std::size_t>(group)];
     router_.finish(own, finished_);
     for (const int index : own) {
-      done_frame_[static_cast<std::size_t>(index)] = back_frame_[static_cast<std::size_t>(index)];
-      back_frame_[static_cast<std::size_t>(index)] = -1;
+      const auto i = static_cast<std::size_t>(index);
+      done_frame_[i] = back_frame_[i];
+      back_frame_[i] = -1;
+      done_from_[i] = back_from_[i];
+      std::fill(back_from_[i].begin(), back_from_[i].end(), kStampNotHere);
     }
   }
 }

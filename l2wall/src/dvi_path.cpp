@@ -176,7 +176,8 @@ void DviPath::take(std::span<const Observation> seen, const PipeserverSet& pipes
   observations_.assign(static_cast<std::size_t>(sequencer_.input_count()), FrameObservation{});
   stamps_.assign(observations_.size(), -1);
   displays_shown_.clear();
-  // By pipeserver: its stamps on the displays, of its last frame and of the one before.
+  // By pipeserver: the stamps of its frames the displays show, at its last frame's and the one
+  // before's.
   std::vector<int> seen_last(count, kStampNotHere), seen_before(count, kStampNotHere);
   const auto pipeserver_of = [](int pipeserver, std::size_t size) {
     if (pipeserver < 0 || static_cast<std::size_t>(pipeserver) >= size)

@@ -57,10 +57,18 @@ std::vector<std::string> pipeserver_argv(const PipeserverLaunch& l, const LivePi
 
 namespace {
 
+// The frame's stamp is read in its stamp strip (or, where the framebuffer has no room for one,
+// its first tile's first pixel); the display named is where its first tile goes, which the board
+// columns' bookkeeping asks for the frame shown.
 StampSpot stamp_spot(const PipeserverPlan& plan) {
   if (plan.tiles.empty()) return {};
   const PackedTile& t = plan.tiles.front();
-  return {t.fb_x, t.fb_y, t.tile.display, t.tile.on_display.x, t.tile.on_display.y};
+  StampSpot s{t.fb_x, t.fb_y, t.tile.display, t.tile.on_display.x, t.tile.on_display.y};
+  if (plan.has_stamp_strip()) {
+    s.fb_x = plan.stamp_x;
+    s.fb_y = plan.rows[static_cast<std::size_t>(plan.stamp_row)].y;
+  }
+  return s;
 }
 
 // The pipeserver's end gets a descriptor number on its command line; ours must not leak into

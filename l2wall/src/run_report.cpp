@@ -117,7 +117,7 @@ std::string latency_line(const std::vector<FrameRecord>& records, const RunTotal
   }
   return fmt::format(
       "latency: {} frame{} (display refresh j shows the input frame taken in at refresh j-1), "
-      "measured from the frame stamps on the displays: min {}, max {}\n",
+      "measured from the frame stamps routed to the displays: min {}, max {}\n",
       max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
 }
 

@@ -38,12 +38,17 @@ struct FramePixels {
   }
 };
 
-// The frame number goes into the first pixel of the first tile, where the strip header's COPY
-// sends it to a known display pixel: the run decodes it there (latency proof).
+// The frame number goes into the stamp strip, a pixel the mesh reads and routes to no display
+// (tile_layout.hpp): the run decodes it from the input (latency proof) and the displays show
+// the picture unmarked. A framebuffer with no room for the strip marks its first tile's first
+// pixel instead.
 void stamp_frame(FramePixels fb, const PipeserverPlan& plan, int frame) {
   if (plan.tiles.empty()) return;
   const PackedTile& t = plan.tiles.front();
-  std::uint8_t* p = fb.at(t.fb_x, t.fb_y);
+  std::uint8_t* p =
+      plan.has_stamp_strip()
+          ? fb.at(plan.stamp_x, plan.rows[static_cast<std::size_t>(plan.stamp_row)].y)
+          : fb.at(t.fb_x, t.fb_y);
   p[0] = static_cast<std::uint8_t>(frame & 0xFF);
   p[1] = static_cast<std::uint8_t>((frame >> 8) & 0xFF);
   p[2] = static_cast<std::uint8_t>((frame >> 16) & 0xFF);

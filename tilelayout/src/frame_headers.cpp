@@ -1,6 +1,7 @@
 // Spec §4 rule 3: while a packed row lasts, each tile's gap holds COPY (or EXT and its
-// extension word, §7) for the tile's scanlines and SKIP below a shorter tile; an END follows the
-// row's last tile when two pixels are left.
+// extension word, §7) for the tile's scanlines and SKIP below a shorter tile; the stamp strip's
+// SKIP follows in its row (tile_layout.hpp); an END follows the row's last tile when two pixels
+// are left.
 #include "tilelayout/frame_headers.hpp"
 
 #include <fmt/format.h>
@@ -46,14 +47,19 @@ FrameHeaders::FrameHeaders(const PipeserverPlan& plan, bool frame_parity)
     write_header_pixels(value, p.pixels.data(), 3);
     headers_.push_back(p);
   };
-  for (const PackedRow& row : plan.rows) {
+  for (int i = 0; i < static_cast<int>(plan.rows.size()); ++i) {
+    const PackedRow& row = plan.rows[static_cast<std::size_t>(i)];
     while (static_cast<int>(row_begin_.size()) < row.y) next_scanline();
     const PackedTile* first = plan.tiles.data() + row.first_tile;
     const PackedTile* last = first + row.tile_count - 1;
-    const int end_x = last->fb_x + payload_columns(last->tile);
+    int end_x = last->fb_x + payload_columns(last->tile);
+    // The stamp strip: a tile of height zero, so a SKIP over its one pixel on every scanline.
+    const bool stamp = i == plan.stamp_row;
+    if (stamp) end_x += kStampStripColumns;
     for (int r = 0; r < row.height; ++r) {
       next_scanline();
       for (const PackedTile* p = first; p <= last; ++p) put_tile(*p, r, frame_parity, put);
+      if (stamp) put(plan.stamp_x - kHeaderPixels, encode(StripHeader::skip(frame_parity, 1)));
       if (plan.fb_width - end_x >= kHeaderPixels) put(end_x, encode(StripHeader::end()));
     }
   }

@@ -68,6 +68,21 @@ std::string compositing_summary(const TileLayout& layout) {
   return out;
 }
 
+// Where a live run's frame stamp goes (tile_layout.hpp): a mark on a display only without room.
+std::string stamp_line(const PipeserverPlan& s) {
+  if (s.has_stamp_strip()) {
+    return fmt::format("  frame stamp: stamp strip at {},{} (routed to no display)\n", s.stamp_x,
+                       s.rows[static_cast<std::size_t>(s.stamp_row)].y);
+  }
+  if (s.tiles.empty()) return "";
+  const DisplayTile& t = s.tiles.front().tile;
+  return fmt::format(
+      "  frame stamp: no row has {} columns left for a stamp strip, so a live run marks display "
+      "{} pixel {},{} (framebuffer_width {} gives it one)\n",
+      kStampStripColumns, t.display, t.on_display.x, t.on_display.y,
+      s.fb_width + kStampStripColumns);
+}
+
 void pipeservers(const TileLayout& layout, std::string& out) {
   const int hz = layout.wall.refresh_hz;
   for (const PipeserverPlan& s : layout.pipeservers) {
@@ -84,6 +99,7 @@ void pipeservers(const TileLayout& layout, std::string& out) {
         "with blanking): {}\n",
         s.fb_width, s.fb_height, hz, link.pixel_clock_mhz, link.h_total, link.v_total,
         link_name(link.links()));
+    out += stamp_line(s);
     // Tiles are numbered in packing order, as packing errors number them.
     for (std::size_t i = 0; i < s.tiles.size(); ++i) {
       const PackedTile& p = s.tiles[i];

@@ -1,5 +1,9 @@
 // One board column of a live run's Lightning-2 (spec §4): the router over its displays, their
-// swap-lock groups, and the frame each display holds, read from the stamps routed into it. At
+// swap-lock groups, and the frame each display holds, from the stamps of the input frames routed
+// into it. A stamp is read from its input's pixels, in the stamp strip no display shows
+// (tile_layout.hpp); which input frame each display holds is this column's bookkeeping of what
+// it routed, kept in step with the display buffers (back, completed, shown), so the displays
+// carry no mark. At
 // every refresh it does what the DVI path's tick and route say, in the spec's order: swap,
 // scan, say what it saw, write the inputs chosen, complete the groups decided.
 //
@@ -58,6 +62,9 @@ class BoardColumn {
   std::vector<int> stamps_;                      // by mesh input: the stamp of the frame taken in
   std::vector<std::uint64_t> sequences_;         // by mesh input: the frame taken in
   std::vector<int> back_frame_, done_frame_, shown_frame_;  // by display index
+  // By display index, by mesh input: the stamp of that input's frame routed into the display's
+  // back buffer, its completed picture and the picture it shows (kStampNotHere: none).
+  std::vector<std::vector<int>> back_from_, done_from_, shown_from_;
   std::vector<DisplayFrameStats> finished_;
 };
 

@@ -3,7 +3,7 @@
 // (board_columns.hpp: in this process, or column ranks over MPI) which groups swap and which
 // frame each input carries, decides from what they saw which inputs are routed and which groups
 // complete (the §6 frame sequencer), sends READY in the refresh a frame completed (spec §6.4),
-// and reads from the stamps on the displays which frame they show.
+// and knows from the stamps the columns followed into the displays which frame they show.
 //
 // Owns: the frame sequencer, the refresh clock, READY, the balance hooks (the control channels
 // served while stepping, every swap checked against the layouts), the frame-shown rule and the
@@ -25,11 +25,12 @@
 
 namespace l2 {
 
-// The frame pipeserver's stamps on the displays say it shows, its last frame being `last`:
-// `last` if its stamp says so, else the one before if its stamp says so, else whatever the last
-// frame's spot shows (a balanced run may have moved the stamp between them). `seen_last`,
-// `seen_before`: the stamps read at the spots of `last` and `last` - 1, kStampNotHere where no
-// column holds them. Nullopt when neither spot was read.
+// The frame a pipeserver's part of the displays shows, its last frame being `last`: `last` if
+// the display of its last frame's first tile shows that frame's stamp, else the one before if
+// the display of that frame's first tile shows its stamp, else whatever the first shows (a
+// balanced run may have moved its tiles between them). `seen_last`, `seen_before`: the stamps of
+// its input frames those displays show (board_column.hpp), kStampNotHere where no column holds
+// them or they show nothing of it. Nullopt when neither was read.
 std::optional<int> shown_by_stamps(int last, int seen_last, int seen_before);
 
 class DviPath final : public DisplayPath {

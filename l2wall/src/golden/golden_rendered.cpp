@@ -97,7 +97,8 @@ int set_aside_moved_stamps(int frame, int pipeservers, const std::vector<RgbImag
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references) {
   const Rgb stamp = stamp_colour(frame);
   for (const PipeserverPlan& plan : layout.pipeservers) {
-    if (plan.tiles.empty()) continue;
+    // A stamp strip keeps the stamp off the displays: only a framebuffer without one marks them.
+    if (plan.tiles.empty() || plan.has_stamp_strip()) continue;
     const DisplayTile& t = plan.tiles.front().tile;
     references.at(t.display).set(t.on_display.x, t.on_display.y, stamp);
   }

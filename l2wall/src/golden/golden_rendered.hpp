@@ -30,8 +30,9 @@ struct RenderedRun {
 EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::path& wall_file,
                                const GoldenEntry& entry, const RenderedRun& run);
 
-// A live pipeserver writes the frame number into the first pixel of its first tile
-// (pipeserver/src/live_mode.hpp); the reference render has no such pixel, so it is added.
+// A live pipeserver whose framebuffer has no room for a stamp strip writes the frame number into
+// the first pixel of its first tile (pipeserver/src/live_mode.cpp); the reference render has no
+// such pixel, so it is added there.
 void stamp_references(const TileLayout& layout, int frame, std::vector<RgbImage>& references);
 
 // A re-tiled wall moves the frame stamps (each pipeserver's first tile's first pixel), so a

@@ -72,8 +72,19 @@ struct PipeserverPlan {
   int fb_width = 0, fb_height = 0;
   std::vector<PackedTile> tiles;  // in packing order
   std::vector<PackedRow> rows;
+  // The stamp strip: one pixel that no display shows, for the frame number a live pipeserver
+  // writes (l2wall/frame_stamp.hpp), at (stamp_x, rows[stamp_row].y). It is a tile of height
+  // zero after the last tile of the first row with three columns left: by spec §4 rule 3 it
+  // takes a SKIP header of width 1 on every scanline of that row, and the mesh routes nothing of
+  // it. -1: no row has room; the stamp then marks the first tile's first pixel.
+  int stamp_row = -1;
+  int stamp_x = 0;
   int used_height() const { return rows.empty() ? 0 : rows.back().y + rows.back().height; }
+  bool has_stamp_strip() const { return stamp_row >= 0; }
 };
+
+// Columns the stamp strip takes after its row's last tile: its SKIP header and its pixel.
+inline constexpr int kStampStripColumns = 3;
 
 struct TileLayout {
   Wall wall;
