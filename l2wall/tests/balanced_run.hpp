@@ -1,6 +1,7 @@
 // What the balancing tests compare: a run whose layout changes from frame to frame against a
-// run of one layout, display by display, byte for byte, the frame stamps aside (each pipeserver
-// stamps the frame into its first tile, so they move with the layout).
+// run of one layout, display by display, byte for byte. A pipeserver stamps its frame into its
+// stamp strip, which no display shows; one whose framebuffer has no room for a strip marks its
+// first tile's first pixel instead, and those marks (which move with the layout) are set aside.
 #pragma once
 
 #include <fmt/format.h>
@@ -24,11 +25,23 @@ namespace l2::testing_support {
 
 using Spot = std::pair<int, int>;
 
-// Where each pipeserver that has tiles in `layout` puts its stamp on display `d`.
-inline std::vector<Spot> stamps_on(const TileLayout& layout, int d) {
+// Where the first tile of each pipeserver that has tiles in `layout` starts on display `d`: what
+// moves when a layout changes.
+inline std::vector<Spot> first_tiles_on(const TileLayout& layout, int d) {
   std::vector<Spot> spots;
   for (const PipeserverPlan& plan : layout.pipeservers) {
     if (plan.tiles.empty()) continue;
+    const DisplayTile& t = plan.tiles.front().tile;
+    if (t.display == d) spots.emplace_back(t.on_display.x, t.on_display.y);
+  }
+  return spots;
+}
+
+// Where a pipeserver without a stamp strip in `layout` marks display `d` with its stamp.
+inline std::vector<Spot> stamps_on(const TileLayout& layout, int d) {
+  std::vector<Spot> spots;
+  for (const PipeserverPlan& plan : layout.pipeservers) {
+    if (plan.tiles.empty() || plan.has_stamp_strip()) continue;
     const DisplayTile& t = plan.tiles.front().tile;
     if (t.display == d) spots.emplace_back(t.on_display.x, t.on_display.y);
   }
@@ -55,8 +68,8 @@ inline std::vector<TileLayout> layouts_of(const WallRun& run, const Wall& wall) 
 }
 
 // Every display of the kept frames `frames` of `other` (rendered in `layouts[k]`) equals the
-// one of `fixed` (rendered in `fixed_layout`) byte for byte, the stamps aside, and each stamp
-// says its frame.
+// one of `fixed` (rendered in `fixed_layout`) byte for byte, the marks of pipeservers without a
+// stamp strip aside, and each such mark says its frame.
 inline void expect_displays_equal_stamps_aside(const WallRun& fixed, const TileLayout& fixed_layout,
                                                const WallRun& other,
                                                const std::vector<TileLayout>& layouts,

@@ -117,7 +117,7 @@ TEST(LiveRunBalance, StripsRetileLiveWithTheDisplaysOfAStaticRun) {
   ASSERT_EQ(layouts.size(), static_cast<std::size_t>(kFrames));
   // The run did re-tile: the strips' first layout and later ones moved by the load.
   std::set<std::vector<Spot>> distinct;
-  for (const TileLayout& l : layouts) distinct.insert(stamps_on(l, 0));
+  for (const TileLayout& l : layouts) distinct.insert(first_tiles_on(l, 0));
   EXPECT_GE(distinct.size(), 3u);
   EXPECT_GE(layouts_counted, static_cast<int>(distinct.size()));
 
@@ -195,7 +195,7 @@ TEST(LiveRunBalance, StripsRetileLiveOnTheVizserverPathToo) {
   const std::vector<TileLayout> layouts = layouts_of(alone, wall);
   ASSERT_EQ(layouts.size(), static_cast<std::size_t>(kFrames));
   std::set<std::vector<Spot>> distinct;
-  for (const TileLayout& l : layouts) distinct.insert(stamps_on(l, 0));
+  for (const TileLayout& l : layouts) distinct.insert(first_tiles_on(l, 0));
   EXPECT_GE(distinct.size(), 3u);  // it did re-tile
   expect_displays_of_the_static_run(fixed, alone, layouts, kCompared);
   // No strip is routed there, so none is counted as if it were.

@@ -38,11 +38,13 @@ void check_encodable(int pipeserver, int index, const DisplayTile& t) {
   if (problem) throw LayoutError(fmt::format("{}: {}", describe(pipeserver, index, t), problem));
 }
 
-// The stamp strip after the last tile of the first row with room for it (tile_layout.hpp).
+}  // namespace
+
 void place_stamp_strip(PipeserverPlan& plan) {
   for (int i = 0; i < static_cast<int>(plan.rows.size()); ++i) {
     const PackedRow& row = plan.rows[static_cast<std::size_t>(i)];
-    const PackedTile& last = plan.tiles[static_cast<std::size_t>(row.first_tile + row.tile_count - 1)];
+    const PackedTile& last =
+        plan.tiles[static_cast<std::size_t>(row.first_tile + row.tile_count - 1)];
     const int end_x = last.fb_x + payload_columns(last.tile);
     if (plan.fb_width - end_x < kStampStripColumns) continue;
     plan.stamp_row = i;
@@ -50,8 +52,6 @@ void place_stamp_strip(PipeserverPlan& plan) {
     return;
   }
 }
-
-}  // namespace
 
 PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
                           const std::vector<DisplayTile>& tiles) {
@@ -88,7 +88,6 @@ PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
     gap_x += columns;
   }
 
-  place_stamp_strip(plan);
   // Rule 5, height: name the first tile that crosses the bottom and what all tiles need.
   const int needed = plan.used_height();
   for (const PackedRow& row : plan.rows) {

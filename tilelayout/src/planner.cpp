@@ -167,6 +167,7 @@ TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical,
     try {
       layout.pipeservers.push_back(
           pack_tiles(s, wall.framebuffer_width, wall.framebuffer_height, lists[s]));
+      place_stamp_strip(layout.pipeservers.back());
     } catch (const LayoutError& e) {
       throw not_fitting(wall, wall.framebuffer_line, e.what());
     }

@@ -109,6 +109,11 @@ class LayoutError : public std::runtime_error {
 PipeserverPlan pack_tiles(int pipeserver, int fb_width, int fb_height,
                           const std::vector<DisplayTile>& tiles);
 
+// Gives a packed plan its stamp strip, after the last tile of the first row with
+// kStampStripColumns left (PipeserverPlan::stamp_row): what a live run's plans have. The tiles
+// stay where they are; a plan whose rows are all full gets none.
+void place_stamp_strip(PipeserverPlan& plan);
+
 // Draws every header of spec §4 rule 3 (COPY / SKIP / END, and EXT with its extension word,
 // §7) into `fb` for the given parity; touches only header pixels. `fb` must be fb_width x
 // fb_height.
