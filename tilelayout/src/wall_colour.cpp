@@ -32,6 +32,12 @@ ColourTable read_lut(const TomlFields& f, const std::string& lut) {
   const std::filesystem::path path = std::filesystem::path(f.source().file).parent_path() / lut;
   std::string text;
   try {
+    // Only a file: a device or a pipe named here (/dev/stdin) would hold every program that
+    // reads the wall until someone writes to it.
+    std::error_code error;
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+      throw LayoutError(
+          fmt::format("{}: not a regular file: a colour table is a text file", path.string()));
     text = read_toml_file(path, "a colour table");
   } catch (const LayoutError& e) {
     f.fail("lut", e.what());

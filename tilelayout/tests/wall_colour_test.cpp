@@ -182,6 +182,9 @@ TEST_F(WallColour, BadValuesAreOneLineNamingFileLineAndField) {
   EXPECT_EQ(error_of(with("lut = \"none.txt\"")),
             f + ":11: display[1].lut: " + (dir_ / "none.txt").string() +
                 ": cannot read: No such file or directory");
+  EXPECT_EQ(
+      error_of(with("lut = \"/dev/null\"")),
+      f + ":11: display[1].lut: /dev/null: not a regular file: a colour table is a text file");
   EXPECT_EQ(error_of(with("colour = [{}]")),
             f + ":11: display[1].colour: unknown key (valid here: id, width, height, x, y, "
                 "swap_group, monitor, rotation, flip, gain, offset, lut)");
