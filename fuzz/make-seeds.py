@@ -63,7 +63,8 @@ put("ready", "noise-sync-ready",
 put("ready", "bad-checksum", b"\x01" + message("READY", 42)[:-4] + b"00\r\n")
 
 # --- wall_file: the example walls --------------------------------------------------------------
-for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml"):
+for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml",
+             "colour-matched-2x2.toml"):
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
 
 # --- session_file: the example sessions, and a window of each fit -------------------------------
@@ -73,6 +74,14 @@ put("session_file", "fits.toml", b"background = 0x000000\n" + b"".join(
     b'[[window]]\nid = %d\nsource = "picture"\ncontent = "p.png"\nfit = "%s"\n'
     b"x = %d\ny = 0\nwidth = 10\nheight = 10\nz = %d\n" % (i, fit, 10 * i, -i)
     for i, fit in enumerate((b"fit", b"fill", b"stretch", b"1:1"))))
+
+
+# --- colour_lut: colour-table files (docs/wall-file.md, "Colour table files") --------------------
+put("colour_lut", "panel-2.txt", (HERE.parent / "walls" / "calibration" / "panel-2.txt").read_bytes())
+put("colour_lut", "identity-crlf.txt", b"# identity\r\n" + b"".join(
+    b"%d %d %d\r\n" % (i, i, i) for i in range(256)))
+put("colour_lut", "short.txt", b"".join(b"%d\t0 255 # entry\n" % i for i in range(255)))
+put("colour_lut", "bad-entry.txt", b"0 0 0\n12 300 4\n")
 
 
 # --- vizserver_wire: a byte stream of messages (docs/vizserver-protocol.md) --------------------

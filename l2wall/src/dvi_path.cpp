@@ -69,6 +69,7 @@ std::optional<int> shown_by_stamps(int last, int seen_last, int seen_before) {
 DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
                  std::unique_ptr<BoardColumns> columns)
     : columns_(std::move(columns)),
+      colour_(layout.wall),
       clock_(o.refresh_hz),
       refresh_hz_(o.refresh_hz),
       frames_(o.frames),

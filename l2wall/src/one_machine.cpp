@@ -21,8 +21,10 @@ class OneMachine final : public RunBackends {
         layout, o,
         std::make_unique<LocalColumns>(layout.wall, o.threads, layout.pipeservers.size()));
   }
-  std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const override {
-    return std::make_unique<VizPath>(std::make_unique<ServerCompositor>(launch));
+  std::unique_ptr<DisplayPath> viz_path(const TileLayout& layout,
+                                        const VizLaunch& launch) const override {
+    return std::make_unique<VizPath>(std::make_unique<ServerCompositor>(launch),
+                                     ColourStage(layout.wall));
   }
   void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                          const TileLayout& layout) const override {

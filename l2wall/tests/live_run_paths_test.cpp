@@ -80,8 +80,9 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
 }
 
 // The DVI path (shared memory, emulated Lightning-2) and the vizserver path (tiles over TCP to
-// a compositing server) give the same displays, byte for byte, on four example walls: two
-// sort-first, the sort-last and the hybrid one (DEPTH and KEY tiles composited on both).
+// a compositing server) give the same displays, byte for byte, on five example walls: two
+// sort-first, the sort-last and the hybrid one (DEPTH and KEY tiles composited on both), and the
+// colour-matched one (its tables applied on both).
 struct WallCase {
   const char* file;
   int displays, pipeservers;
@@ -172,7 +173,8 @@ INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                          ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
                                            WallCase{"projectors-2x1.toml", 2, 3},
                                            WallCase{"sort-last-512x384.toml", 1, 3},
-                                           WallCase{"hybrid-2x1.toml", 2, 5}));
+                                           WallCase{"hybrid-2x1.toml", 2, 5},
+                                           WallCase{"colour-matched-2x2.toml", 4, 4}));
 
 // Asked for more refreshes than a DVI link carries, the emulator refreshes as fast as the link
 // could (dvi_timing_test.cpp works the default wall's 800x600 framebuffers out by hand).

@@ -25,6 +25,22 @@ std::string mounted(const Display& d) {
   return out + fmt::format(" ({}x{} on the canvas)", d.canvas_width(), d.canvas_height());
 }
 
+// What a display applies to its pixels where they leave the wall, when anything: "; colour gain
+// 1,0.96,0.92 offset 0,0,4" or "; colour lut calibration/panel-3.txt" (as the wall file says).
+std::string colour(const Display& d) {
+  const ColourMatch& c = d.colour;
+  switch (c.kind) {
+    case ColourMatch::Kind::Gain:
+      return fmt::format("; colour gain {} offset {}", fmt::join(c.gain, ","),
+                         fmt::join(c.offset, ","));
+    case ColourMatch::Kind::Lut:
+      return fmt::format("; colour lut {}", printable(c.lut));
+    case ColourMatch::Kind::None:
+      break;
+  }
+  return "";
+}
+
 const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
 
 const char* link_name(int links) {
@@ -125,10 +141,10 @@ void displays(const TileLayout& layout, std::string& out) {
     }
     out += fmt::format(
         "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
-        "by {} tiles from pipeservers {}\n",
+        "by {} tiles from pipeservers {}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
-        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")));
+        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), colour(d));
   }
 }
 

@@ -56,7 +56,7 @@ void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
 void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
   const TomlFields f(table, "display_grid", top.source(),
                      {"columns", "rows", "width", "height", "mullion_x", "mullion_y", "origin_x",
-                      "origin_y", "swap_groups", "monitors", "rotation", "flip"});
+                      "origin_y", "swap_groups", "monitors", "rotation", "flip", "colour"});
   const int columns = f.required_integer("columns", 1, kMaxDisplays);
   const int rows = f.required_integer("rows", 1, kMaxDisplays);
   if (columns * rows > kMaxDisplays) {
@@ -86,6 +86,7 @@ void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
     }
   }
   read_grid_lists(f, wall.displays);
+  read_grid_colour(f, wall.displays);
 }
 
 void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
@@ -96,9 +97,9 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     if (!node.is_table()) {
       top.source().fail(node, name, fmt::format("must be a table, got {}", type_name(node)));
     }
-    const TomlFields f(
-        *node.as_table(), name, top.source(),
-        {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation", "flip"});
+    const TomlFields f(*node.as_table(), name, top.source(),
+                       {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation",
+                        "flip", "gain", "offset", "lut"});
     Display d;
     d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
     d.width = f.required_integer("width", 1, kMaxSize);
@@ -108,6 +109,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     d.swap_group = f.integer("swap_group", 0, kMaxDisplays - 1, 0);
     d.monitor = f.string("monitor").value_or("");
     d.orientation = read_orientation(f);
+    d.colour = read_colour(f);
     for (std::size_t j = 0; j < wall.displays.size(); ++j) {
       if (wall.displays[j].id == d.id) {
         f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));

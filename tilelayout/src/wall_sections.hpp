@@ -8,6 +8,10 @@ namespace l2 {
 
 // [display_grid] or [[display]]: fills wall.displays.
 void read_displays(const TomlFields& top, Wall& wall);
+// `gain`, `offset` and `lut` of one display (a [[display]] entry, one of a grid's `colour`).
+ColourMatch read_colour(const TomlFields& f);
+// [display_grid] `colour` (optional): one table of those keys per display, in id order.
+void read_grid_colour(const TomlFields& grid, std::vector<Display>& displays);
 // [canvas] (optional): fills the canvas size and checks every display lies on it.
 void read_canvas(const TomlFields& top, Wall& wall);
 // [tiling]: needs the canvas.

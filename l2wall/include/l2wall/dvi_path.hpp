@@ -17,6 +17,7 @@
 
 #include "dvi_link/refresh_clock.hpp"
 #include "l2wall/board_columns.hpp"
+#include "l2wall/colour_stage.hpp"
 #include "l2wall/display_path.hpp"
 #include "l2wall/live_run.hpp"
 #include "l2wall/swap_lock_check.hpp"
@@ -52,8 +53,15 @@ class DviPath final : public DisplayPath {
     return pipeservers.inject_noise();
   }
 
-  DisplayPictures frame_pictures(int, const RunWatch&) override { return columns_->pictures(); }
-  std::optional<DisplayPictures> shown() const override { return columns_->shown(); }
+  // The columns' front buffers, colour matched as they leave (colour_stage.hpp).
+  DisplayPictures frame_pictures(int, const RunWatch&) override {
+    return colour_.apply(columns_->pictures());
+  }
+  std::optional<DisplayPictures> shown() const override {
+    auto pictures = columns_->shown();
+    if (!pictures) return std::nullopt;
+    return colour_.apply(std::move(*pictures));
+  }
   int frame_shown() const override { return shown_; }
 
   bool down() override { return columns_->gone().has_value(); }
@@ -91,6 +99,7 @@ class DviPath final : public DisplayPath {
   void check_groups_for_balance(const PipeserverSet& pipeservers);
 
   std::unique_ptr<BoardColumns> columns_;
+  ColourStage colour_;
   RefreshClock clock_;
   double refresh_hz_;
   int frames_;

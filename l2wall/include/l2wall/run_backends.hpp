@@ -20,7 +20,8 @@ class RunBackends {
   virtual ~RunBackends() = default;
   virtual std::unique_ptr<DisplayPath> dvi_path(const TileLayout& layout,
                                                 const RunOptions& options) const = 0;
-  virtual std::unique_ptr<DisplayPath> viz_path(const VizLaunch& launch) const = 0;
+  virtual std::unique_ptr<DisplayPath> viz_path(const TileLayout& layout,
+                                                const VizLaunch& launch) const = 0;
   virtual void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                                  const TileLayout& layout) const = 0;
   // Whether the run can end its pipeservers before their last frame, as a stop from the control

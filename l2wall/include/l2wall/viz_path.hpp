@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include "l2wall/colour_stage.hpp"
 #include "l2wall/compositors.hpp"
 #include "l2wall/display_path.hpp"
 
@@ -16,8 +17,9 @@ namespace l2 {
 
 class VizPath final : public DisplayPath {
  public:
-  explicit VizPath(std::unique_ptr<Compositors> compositors)
-      : compositors_(std::move(compositors)) {}
+  // `colour`: the wall's colour matching (colour_stage.hpp), the same the DVI path applies.
+  explicit VizPath(std::unique_ptr<Compositors> compositors, ColourStage colour = {})
+      : compositors_(std::move(compositors)), colour_(std::move(colour)) {}
 
   std::string label() const override { return "vizserver"; }
   std::string name() const override { return "vizserver path"; }
@@ -34,11 +36,15 @@ class VizPath final : public DisplayPath {
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override {
     wait_for(frame, watch);
-    return compositors_->pictures(frame);
+    return colour_.apply(compositors_->pictures(frame));
   }
   // Far displays stay where they are: composed is enough.
   void take_frame(int frame, const RunWatch& watch) override { wait_for(frame, watch); }
-  std::optional<DisplayPictures> shown() const override { return compositors_->shown(); }
+  std::optional<DisplayPictures> shown() const override {
+    auto pictures = compositors_->shown();
+    if (!pictures) return std::nullopt;
+    return colour_.apply(std::move(*pictures));
+  }
   int frame_shown() const override { return compositors_->frame_shown(); }
 
   bool down() override { return compositors_->down(); }
@@ -71,6 +77,7 @@ class VizPath final : public DisplayPath {
   void wait_for(int frame, const RunWatch& watch);
 
   std::unique_ptr<Compositors> compositors_;
+  ColourStage colour_;
   LiveBalance* balance_ = nullptr;  // a balanced run's coordinator, and its pipeservers
   PipeserverSet* pipeservers_ = nullptr;
 };

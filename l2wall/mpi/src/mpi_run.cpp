@@ -49,9 +49,10 @@ class MpiBackends final : public RunBackends {
                                      std::make_unique<MpiColumns>(layout, map_, session_, o));
   }
   bool stops_pipeservers_early() const override { return false; }
-  std::unique_ptr<DisplayPath> viz_path(const VizLaunch&) const override {
+  std::unique_ptr<DisplayPath> viz_path(const TileLayout& layout, const VizLaunch&) const override {
     return std::make_unique<VizPath>(
-        std::make_unique<MpiCompositors>(layout_, map_, stall_timeout_ms_));
+        std::make_unique<MpiCompositors>(layout_, map_, stall_timeout_ms_),
+        ColourStage(layout.wall));
   }
   void start_pipeservers(PipeserverSet& pipeservers, const PipeserverLaunch& launch,
                          const TileLayout& layout) const override {

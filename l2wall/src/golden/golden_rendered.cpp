@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "base/child_process.hpp"
+#include "image/colour_table.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
 
@@ -154,6 +155,12 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
     out.reference.push_back(read_png(reference / (name + ".png")));
   }
   stamp_references(layout, entry.frame, out.reference);
+  // The live run's saved displays are colour matched (l2wall/colour_stage.hpp), stamp and all:
+  // the reference goes through each display's same table, after its stamps.
+  for (std::size_t i = 0; i < layout.wall.displays.size(); ++i) {
+    const ColourMatch& colour = layout.wall.displays[i].colour;
+    if (colour.applies()) apply_colour(colour.table, out.reference[i], out.reference[i]);
+  }
   out.reference_name = "reference render";
   return out;
 }

@@ -152,7 +152,8 @@ void LiveRun::cap_refresh_at_the_link() {
 void LiveRun::make_paths() {
   if (runs_dvi(core_.options.path))
     core_.paths.push_back(backends_.dvi_path(core_.layout, core_.options));
-  if (runs_viz(core_.options.path)) core_.paths.push_back(backends_.viz_path(viz_launch()));
+  if (runs_viz(core_.options.path))
+    core_.paths.push_back(backends_.viz_path(core_.layout, viz_launch()));
 }
 
 // A balanced run: the coordinator, and the lead path following its layouts.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "image/orientation.hpp"
+#include "tilelayout/colour_match.hpp"
 #include "tilelayout/geometry.hpp"
 
 namespace l2 {
@@ -25,6 +26,7 @@ struct Display {
   int swap_group = 0;              // displays of one group swap together (spec §6)
   std::string monitor;             // optional monitor name or index for --show monitors
   Orientation orientation;         // as mounted (image/orientation.hpp)
+  ColourMatch colour;              // applied where its pixels leave the wall (colour_match.hpp)
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }

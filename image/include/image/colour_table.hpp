@@ -1,0 +1,43 @@
+// A display's colour correction as one table per channel (docs/wall-file.md, "Colour matching"):
+// every output byte is table[channel][input byte]. Gain and offset become such a table once, so
+// a display has one per-pixel path whatever its correction was written as.
+//
+// Example:
+//   const ColourTable t = colour_table_from_gain({1.0, 0.96, 0.92}, {0, 0, 4});
+//   apply_colour(t, raw, shown);   // shown: raw's size, every byte looked up
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "image/rgb_image.hpp"
+
+namespace l2 {
+
+struct ColourTable {
+  using Channel = std::array<std::uint8_t, 256>;
+  std::array<Channel, RgbImage::kChannels> channel;  // R, G, B
+
+  // Every channel maps each byte to itself.
+  static ColourTable identity();
+  bool is_identity() const;
+  friend bool operator==(const ColourTable&, const ColourTable&) = default;
+};
+
+// Fixed point of a gain: the gain is taken to 1/kGainOne, so the table is exact integer
+// arithmetic, the same on every machine and compiler.
+inline constexpr int kGainOne = 65536;
+inline constexpr double kMaxGain = 4.0;
+inline constexpr int kMaxOffset = 255;
+
+// out = clamp(floor((in * G + kGainOne / 2) / kGainOne) + offset, 0, 255), G = round(gain *
+// kGainOne) (halves away from zero): in * gain rounded to the nearest integer, halves up, then
+// the offset. Gains 0..kMaxGain, offsets -kMaxOffset..kMaxOffset (callers check).
+ColourTable colour_table_from_gain(const std::array<double, 3>& gain,
+                                   const std::array<int, 3>& offset);
+
+// `out` becomes `in` with every byte looked up in its channel's table (resized to `in`'s size
+// when it differs). `in` and `out` may be the same picture.
+void apply_colour(const ColourTable& table, const RgbImage& in, RgbImage& out);
+
+}  // namespace l2

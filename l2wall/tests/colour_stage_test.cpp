@@ -1,0 +1,48 @@
+// The colour stage both display paths hand their pictures through: each display's own table,
+// the expected bytes worked out here from the gain/offset rule; a display without one, or one
+// lost (an empty picture), handed out as it is.
+#include "l2wall/colour_stage.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace l2 {
+namespace {
+
+TEST(ColourStage, AppliesEachDisplaysOwnTable) {
+  Wall wall;
+  wall.displays.resize(3);
+  for (int i = 0; i < 3; ++i) wall.displays[static_cast<std::size_t>(i)].id = i;
+  ColourMatch& half = wall.displays[0].colour;
+  half.kind = ColourMatch::Kind::Gain;
+  half.gain = {0.5, 1.0, 1.0};
+  half.offset = {0, 10, 0};
+  half.table = colour_table_from_gain(half.gain, half.offset);
+  // Written as a correction, working out to none: nothing to apply.
+  wall.displays[2].colour.kind = ColourMatch::Kind::Gain;
+
+  std::vector<RgbImage> raw(3, RgbImage(2, 1));
+  raw[0].set(0, 0, {9, 250, 7});
+  raw[0].set(1, 0, {200, 0, 255});
+  raw[1].set(0, 0, {9, 250, 7});
+  raw[2].set(0, 0, {1, 2, 3});
+  const ColourStage stage(wall);
+  EXPECT_TRUE(stage.applies());
+  const DisplayPictures shown =
+      stage.apply([&](int d) -> const RgbImage& { return raw[static_cast<std::size_t>(d)]; });
+  const RgbImage& zero = shown(0);
+  EXPECT_EQ(zero.at(0, 0), (Rgb{5, 255, 7}));     // 4.5 -> 5, 260 -> 255, 7
+  EXPECT_EQ(zero.at(1, 0), (Rgb{100, 10, 255}));  // 100, 0 + 10, 255
+  EXPECT_EQ(raw[0].at(0, 0), (Rgb{9, 250, 7}));   // the path's own picture is left as it was
+  EXPECT_EQ(&shown(1), &raw[1]);
+  EXPECT_EQ(&shown(2), &raw[2]);
+  raw[0] = RgbImage();
+  EXPECT_TRUE(shown(0).empty());
+
+  const ColourStage none(Wall{});
+  EXPECT_FALSE(none.applies());
+}
+
+}  // namespace
+}  // namespace l2
