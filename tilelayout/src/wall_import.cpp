@@ -60,22 +60,30 @@ ImportedWall import_wall(std::string_view text, const std::filesystem::path& pat
   ImportedWall out;
   out.format = *format;
   out.notes = draft.notes;
+  out.display_count = static_cast<int>(draft.displays.size());
   out.toml = emit_wall(draft, file, out.hosts);
   return out;
 }
 
-std::string mpi_hostfile(const std::vector<std::string>& hosts) {
+std::string mpi_hostfile(const std::vector<std::string>& hosts, int display_count) {
+  if (hosts.empty()) return "";
   std::vector<std::pair<std::string, int>> slots;
   for (const std::string& h : hosts) {
-    const auto it =
-        std::find_if(slots.begin(), slots.end(), [&](const auto& s) { return s.first == h; });
-    if (it == slots.end()) {
+    if (slots.empty() || slots.back().first != h) {
       slots.emplace_back(h, 1);
     } else {
-      ++it->second;
+      ++slots.back().second;
     }
   }
-  std::string out;
+  // A board column drives 8 displays (spec §5); l2wall runs one rank per column.
+  const int columns = (display_count + 7) / 8;
+  ++slots.front().second;
+  slots.back().second += columns;
+  std::string out = fmt::format(
+      "# l2wall run --mpi: mpirun -np {} --hostfile THIS --map-by slot (docs/mpi-design.md).\n"
+      "# Rank 0 (the coordinator) on the first host, the {} pipeservers on the hosts the "
+      "configuration names, the {} board column rank(s) on the last host.\n",
+      1 + hosts.size() + columns, hosts.size(), columns);
   for (const auto& [host, n] : slots) out += fmt::format("{} slots={}\n", host, n);
   return out;
 }

@@ -69,7 +69,13 @@ TEST(WallImport, TideGridOfTwoDisplayScreensWithBezels) {
   EXPECT_EQ(imported.hosts,
             (std::vector<std::string>{"bbplxviz03i", "bbplxviz03i", "bbplxviz03i", "bbplxviz04i",
                                       "bbplxviz04i", "bbplxviz04i"}));
-  EXPECT_EQ(mpi_hostfile(imported.hosts), "bbplxviz03i slots=3\nbbplxviz04i slots=3\n");
+  // 1 coordinator + 6 pipeservers + 2 board columns (12 displays, 8 a column).
+  EXPECT_EQ(mpi_hostfile(imported.hosts, imported.display_count),
+            "# l2wall run --mpi: mpirun -np 9 --hostfile THIS --map-by slot "
+            "(docs/mpi-design.md).\n"
+            "# Rank 0 (the coordinator) on the first host, the 6 pipeservers on the hosts the "
+            "configuration names, the 2 board column rank(s) on the last host.\n"
+            "bbplxviz03i slots=4\nbbplxviz04i slots=5\n");
   EXPECT_TRUE(imported.notes.empty());
   // What came from where is in the file for a person to read.
   EXPECT_NE(imported.toml.find("#   display 5: screen i=0 j=1 of processes[1] on bbplxviz03i, "
@@ -85,7 +91,13 @@ TEST(WallImport, TideStereoProjectorsOverlapAndAreImportedOnce) {
   // numScreensX 2 of 960x540, bezel -60: the second starts 60 pixels before the first ends.
   expect_displays(wall, {{960, 540, 0, 0}, {960, 540, 900, 0}});
   EXPECT_EQ(wall.pipeserver_count, 4);
-  EXPECT_EQ(mpi_hostfile(imported.hosts), "localhost slots=4\n");
+  EXPECT_EQ(imported.display_count, 2);
+  // 1 coordinator + 4 pipeservers + 1 board column, all on the one host.
+  const std::string hostfile = mpi_hostfile(imported.hosts, imported.display_count);
+  EXPECT_EQ(
+      hostfile.substr(hostfile.rfind('#')),
+      "# Rank 0 (the coordinator) on the first host, the 4 pipeservers on the hosts the "
+      "configuration names, the 1 board column rank(s) on the last host.\nlocalhost slots=6\n");
   ASSERT_EQ(imported.notes.size(), 2u);
   EXPECT_EQ(imported.notes[0],
             "stereo: processes[0].screens[0].stereo = \"left\" and 3 more screens: not "
@@ -208,9 +220,16 @@ TEST(WallImport, FormatIsToldFromContentOrGiven) {
   }
 }
 
-TEST(WallImport, HostfileHasEachHostOnceInTheOrderItFirstAppears) {
-  EXPECT_EQ(mpi_hostfile({"b", "a", "b"}), "b slots=2\na slots=1\n");
-  EXPECT_EQ(mpi_hostfile({}), "");
+TEST(WallImport, HostfilePlacesCoordinatorPipeserversAndColumnsInRankOrder) {
+  // Rank 0 and pipeservers 0, 1 on b; pipeserver 2 and the one column (3 displays) on a.
+  const std::string text = mpi_hostfile({"b", "b", "a"}, 3);
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "# l2wall run --mpi: mpirun -np 5 --hostfile THIS --map-by slot (docs/mpi-design.md).");
+  EXPECT_EQ(text.substr(text.rfind(".\n") + 2), "b slots=3\na slots=2\n");
+  // 17 displays: three columns.
+  EXPECT_EQ(mpi_hostfile({"a"}, 17).substr(mpi_hostfile({"a"}, 17).rfind(".\n") + 2),
+            "a slots=5\n");
+  EXPECT_EQ(mpi_hostfile({}, 4), "");
 }
 
 }  // namespace

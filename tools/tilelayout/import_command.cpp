@@ -47,7 +47,7 @@ int run_import(const ImportOptions& options) {
       said << "wrote " << options.out << "\n";
     }
     if (!options.hostfile.empty()) {
-      write_text(options.hostfile, mpi_hostfile(wall.hosts));
+      write_text(options.hostfile, mpi_hostfile(wall.hosts, wall.display_count));
       said << "wrote " << options.hostfile << " (mpirun --hostfile)\n";
     }
   } catch (const std::exception& e) {

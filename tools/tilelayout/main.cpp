@@ -161,11 +161,14 @@ int main(int argc, char** argv) {
                    "FILE and l2wall run --wall FILE take it)")
       ->type_name("FILE");
   import_command
-      ->add_option("--hostfile", import_options.hostfile,
-                   "also write an mpirun hostfile to OUT, one \"HOST slots=N\" line per host the "
-                   "file names (N: the pipeservers it runs, pipeservers in the wall file's order), "
-                   "for l2wall's MPI runs (mpirun --hostfile OUT); exit 1 when the file names no "
-                   "host (SAGE2 files seldom do)")
+      ->add_option(
+          "--hostfile", import_options.hostfile,
+          "also write the mpirun hostfile of l2wall run --mpi to OUT: one \"HOST slots=N\" line "
+          "per host the file names, rank 0 (the coordinator) on the first, the "
+          "pipeservers in the wall file's order, one rank per board column (8 displays) "
+          "on the last; its first lines give the mpirun -np it is for "
+          "(docs/mpi-design.md). Exit 1 when the file names no host (SAGE2 files seldom "
+          "do)")
       ->type_name("OUT");
   app.callback([&] {
     if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {

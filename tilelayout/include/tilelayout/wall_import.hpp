@@ -27,6 +27,7 @@ struct ImportedWall {
   std::vector<std::string> notes;
   // The host of every pipeserver, in pipeserver order (empty when the file names no hosts).
   std::vector<std::string> hosts;
+  int display_count = 0;
 };
 
 // Reads `text` (the file's contents) in `format`, or in the format its content shows when none
@@ -37,8 +38,11 @@ struct ImportedWall {
 ImportedWall import_wall(std::string_view text, const std::filesystem::path& path,
                          std::optional<ImportFormat> format = std::nullopt);
 
-// An mpirun hostfile: one "HOST slots=N" line per host, in the order hosts first appear, N the
-// pipeservers it runs.
-std::string mpi_hostfile(const std::vector<std::string>& hosts);
+// The mpirun hostfile of `l2wall run --mpi` for a wall of `display_count` displays whose
+// pipeservers run on `hosts` (each host's together, as ImportedWall::hosts has them): one
+// "HOST slots=N" line per host, rank 0 (the coordinator) on the first host, then the
+// pipeservers in order, then one rank per board column (8 displays each) on the last host,
+// after comment lines saying so and the -np it is for (docs/mpi-design.md). Empty without hosts.
+std::string mpi_hostfile(const std::vector<std::string>& hosts, int display_count);
 
 }  // namespace l2
