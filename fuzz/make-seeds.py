@@ -66,6 +66,10 @@ put("ready", "bad-checksum", b"\x01" + message("READY", 42)[:-4] + b"00\r\n")
 for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml"):
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
 
+# --- wall_import: the example configurations, first byte 0 (format told from the content) -----
+for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):
+    put("wall_import", config.name, b"\x00" + config.read_bytes())
+
 # --- session_file: the example sessions, and a window of each fit -------------------------------
 for session in ("windows.toml", "desktop.toml"):
     put("session_file", session, (HERE.parent / "examples" / "sessions" / session).read_bytes())
