@@ -28,9 +28,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const l2::Wall wall = l2::parse_wall(imported.toml, "fuzz.toml");
     require(!wall.displays.empty() && wall.displays.size() <= 64,
             "an imported wall has 1..64 displays");
-    require(imported.hosts.empty() ||
-                static_cast<int>(imported.hosts.size()) == wall.pipeserver_count,
-            "every pipeserver of an imported wall that names hosts has one");
+    require(
+        imported.hosts.empty() || static_cast<int>(imported.hosts.size()) == wall.pipeserver_count,
+        "every pipeserver of an imported wall that names hosts has one");
   } catch (const l2::LayoutError& e) {
     const std::string_view message = e.what();
     l2::fuzz::require_one_line(message, "an import error is one line");
