@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "import_formats.hpp"
 #include "tilelayout/tile_layout.hpp"
