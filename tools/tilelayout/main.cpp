@@ -167,8 +167,8 @@ int main(int argc, char** argv) {
           "per host the file names, rank 0 (the coordinator) on the first, the "
           "pipeservers in the wall file's order, one rank per board column (8 displays) "
           "on the last; its first lines give the mpirun -np it is for "
-          "(docs/mpi-design.md). Exit 1 when the file names no host (SAGE2 files seldom "
-          "do)")
+          "(docs/mpi-design.md). Exit 1 when the file names no host (SAGE2 configurations "
+          "as published name none)")
       ->type_name("OUT");
   app.callback([&] {
     if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {
