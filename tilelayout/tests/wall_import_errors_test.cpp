@@ -62,6 +62,9 @@ TEST(WallImportErrors, MalformedJsonSaysWhere) {
   EXPECT_EQ(error_of("{\n  \"surfaces\": [1,,2]\n}"),
             "config.json: not valid JSON: parse error at line 2, column 18: syntax error while "
             "parsing value - unexpected ','; expected '[', '{', or a literal");
+  // A number no double holds is not JSON a wall can use (found by fuzz_wall_import).
+  EXPECT_EQ(error_of(R"({"surfaces": [{"displayWidth": 1e999}]})"),
+            "config.json: not valid JSON: number overflow parsing '1e999'");
   EXPECT_EQ(error_of("[1, 2]"), "config.json: expected a JSON object at the top, got an array");
   EXPECT_EQ(error_of(R"({"name": "x"})"),
             "config.json: not a configuration tilelayout import knows: no \"surfaces\" (Tide), "
