@@ -511,6 +511,12 @@ TEST_F(Cli, ImportRefusals) {
   r = run("--png '" + dir_.string() + "' import '" + sage2 + "'");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("import does not take --png"), std::string::npos) << r.err;
+  // An output that cannot be written: exit 3, the path and the system's reason.
+  const fs::path plain = write("plain", "x");
+  r = run("import '" + sage2 + "' --out '" + (plain / "w.toml").string() + "'");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(r.err, "tilelayout import: cannot write " + (plain / "w.toml").string() +
+                       ": Not a directory\n");
   r = run("import --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("--hostfile"), std::string::npos) << r.out;

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -13,11 +15,17 @@
 namespace l2 {
 namespace {
 
+// The reason is the system's (open(2) sets errno for the stream): "Not a directory" and so on.
 void write_text(const std::string& path, const std::string& text) {
+  errno = 0;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    throw std::runtime_error(
+        fmt::format("cannot write {}: {}", path, errno ? std::strerror(errno) : "cannot open it"));
+  }
   out << text;
   out.close();
-  if (!out) throw std::runtime_error(fmt::format("cannot write {}", path));
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}: writing failed", path));
 }
 
 }  // namespace
