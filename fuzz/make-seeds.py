@@ -67,6 +67,12 @@ for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml",
              "colour-matched-2x2.toml"):
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
 
+# --- wall_import: the example configurations, first byte 0 (format told from the content) -----
+for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):
+    put("wall_import", config.name, b"\x00" + config.read_bytes())
+# A number past a double's range: nlohmann refuses it with another kind of exception.
+put("wall_import", "number-overflow", b"\x00" + b'{"surfaces": [{"displayWidth": 1e999}]}')
+
 # --- session_file: the example sessions, and a window of each fit -------------------------------
 for session in ("windows.toml", "desktop.toml"):
     put("session_file", session, (HERE.parent / "examples" / "sessions" / session).read_bytes())

@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut vizserver_wire png_frame frame_delta control_line)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame frame_delta control_line)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
@@ -36,6 +36,8 @@ for h in "${harnesses[@]}"; do
   # Wall and session files as large as the 100 KB one whose nesting overflowed toml++'s stack:
   # the shape check that refuses it must itself hold at that size.
   [[ $h == wall_file || $h == session_file ]] && limits=(-max_len=131072)
+  # Wall configurations are a few kilobytes; the example nDisplay file is under 8 KB.
+  [[ $h == wall_import ]] && limits=(-max_len=16384)
   status=0
   build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \

@@ -63,7 +63,9 @@ while IFS='|' read -r label name rest; do
     --host | --port) spelling "$label" "$name: the compositing server's address is --viz-host/--viz-port" ;;
     --timeout | --retries) spelling "$label" "$name: READY waits are --ready-timeout/--ready-retries" ;;
     --refresh) [[ $rest == " HZ:"* ]] || spelling "$label" "--refresh$rest: not in HZ" ;;
-    --out) [[ $rest == " DIR"* ]] || spelling "$label" "--out$rest: not a folder (DIR)" ;;
+    # tilelayout import writes one wall file, which it names as --wall names one: --out FILE.
+    --out) [[ $rest == " DIR"* || ($label == "tilelayout import" && $rest == " FILE"*) ]] ||
+      spelling "$label" "--out$rest: not a folder (DIR)" ;;
     --wall) [[ $rest == " FILE"* ]] || spelling "$label" "--wall$rest: not a FILE" ;;
     --*-timeout | --duration) [[ $rest == " MS:"* ]] || spelling "$label" "$name$rest: not in MS" ;;
     --threads) [[ $rest == " N:INT in [0 - 64]=1"* ]] ||

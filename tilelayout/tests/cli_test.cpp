@@ -460,3 +460,67 @@ TEST_F(Cli, SuggestOnAWallThatFitsPrintsTheSmallestFramebuffer) {
 
 }  // namespace
 }  // namespace l2
+
+namespace l2 {
+namespace {
+
+// tilelayout import: the wall file it writes is one tilelayout --wall plans, the hostfile has the
+// hosts the configuration names, a bad configuration is one line and exit 1.
+TEST_F(Cli, ImportWritesAWallFileThatPlansAndAHostfile) {
+  const std::string input = std::string(L2_IMPORTED_DIR) + "/tide-bbp-4x3.json";
+  const fs::path wall = dir_ / "imported.toml", hosts = dir_ / "hosts";
+  ChildRun r = run("import '" + input + "' --out '" + wall.string() + "' --hostfile '" +
+                   hosts.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "wrote " + wall.string() + "\nwrote " + hosts.string() + " (mpirun --hostfile)\n");
+  const std::string hostfile = slurp(hosts);
+  EXPECT_EQ(hostfile.substr(hostfile.rfind(".\n") + 2),
+            "bbplxviz03i slots=4\nbbplxviz04i slots=5\n");
+  r = run("--wall '" + wall.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("wall \"TestWall\"", 0), 0u) << r.out;
+}
+
+TEST_F(Cli, ImportPrintsTheWallAndItsNotesApart) {
+  const std::string input = std::string(L2_IMPORTED_DIR) + "/ndisplay-3-nodes.ndisplay";
+  const ChildRun r = run("import '" + input + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(parse_wall(r.out, "stdout.toml").displays.size(), 3u);
+  // Four notes (remap, rotation, projection policy, camera) on stderr, one line each.
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 4) << r.err;
+  EXPECT_EQ(r.err.rfind("note: node node_center: output remap from file", 0), 0u) << r.err;
+}
+
+TEST_F(Cli, ImportRefusals) {
+  const fs::path bad = write("config.json", R"({"surfaces": [{"screenCountX": "two"}]})");
+  ChildRun r = run("import '" + bad.string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "tilelayout import: " + bad.string() +
+                       ": surfaces[0].screenCountX: expected a positive integer, got \"two\"\n");
+  EXPECT_EQ(r.out, "");
+  // SAGE2 files name no render hosts: no hostfile to write.
+  const std::string sage2 = std::string(L2_IMPORTED_DIR) + "/sage2-3x2-cfg.json";
+  r = run("import '" + sage2 + "' --hostfile '" + (dir_ / "h").string() + "'");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err,
+            "tilelayout import: " + sage2 + ": names no hosts, so there is no hostfile to write\n");
+  EXPECT_FALSE(fs::exists(dir_ / "h"));
+  // Usage errors: a format it does not know, tilelayout's own options with import.
+  EXPECT_EQ(run("import '" + sage2 + "' --format xml").status, 2);
+  r = run("--png '" + dir_.string() + "' import '" + sage2 + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("import does not take --png"), std::string::npos) << r.err;
+  // An output that cannot be written: exit 3, the path and the system's reason.
+  const fs::path plain = write("plain", "x");
+  r = run("import '" + sage2 + "' --out '" + (plain / "w.toml").string() + "'");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(r.err, "tilelayout import: cannot write " + (plain / "w.toml").string() +
+                       ": Not a directory\n");
+  r = run("import --help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("--hostfile"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace l2

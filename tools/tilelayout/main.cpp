@@ -2,12 +2,14 @@
 // and the test-pattern frames every pipeserver would scan out.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "import_command.hpp"
 #include "network_needs.hpp"
 #include "tilelayout/fit.hpp"
 #include "tilelayout/pictures.hpp"
@@ -74,7 +76,9 @@ int main(int argc, char** argv) {
       "others' framebuffers) and the framebuffer_height the next one needs.\n"
       "Without --wall it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
-      "3 output files could not be written, 4 --verify found pixels out of place."};
+      "3 output files could not be written, 4 --verify found pixels out of place.\n"
+      "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2 or "
+      "nDisplay (tilelayout import --help)."};
   std::string wall_path;
   std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
@@ -126,13 +130,69 @@ int main(int argc, char** argv) {
       ->excludes(scanout_option)
       ->excludes(verify_option)
       ->excludes("--suggest");
+  l2::ImportOptions import_options;
+  std::string import_format;
+  CLI::App* const import_command = app.add_subcommand(
+      "import",
+      "Print the wall file of a wall already described in another system's configuration: "
+      "Tide's JSON configuration (surfaces, processes), SAGE2's wall configuration (layout, "
+      "resolution, dimensions, displays) or an Unreal Engine nDisplay .ndisplay file (version "
+      "5: nodes, windows, viewports). The displays land where the file puts them, with rotation "
+      "and flip; one pipeserver per process or node the file names (else per display), the "
+      "framebuffers the smallest that hold the tiles. Comments in it say where each value came "
+      "from and what the wall file cannot carry (projection policies, cameras, stereo, warp "
+      "meshes), which are also printed as notes: on stderr, or on stdout with --out. What maps "
+      "to what: docs/wall-import.md.\n"
+      "Exit status: 0 written, 1 the file cannot be imported (one line naming the file and the "
+      "field, e.g. config.json: surfaces[0].screenCountX: expected a positive integer, got "
+      "\"two\"), 2 usage error, 3 an output file could not be written.");
+  import_command->add_option("FILE", import_options.file, "the configuration (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--format", import_format,
+                   "the file's format: tide, sage2 or ndisplay (default: told from its content: "
+                   "\"nDisplay\" at the top is nDisplay, \"surfaces\" or \"processes\" Tide, "
+                   "\"layout\" or \"resolution\" SAGE2)")
+      ->check(CLI::IsMember({"tide", "sage2", "ndisplay"}));
+  import_command
+      ->add_option("--out", import_options.out,
+                   "write the wall file to FILE instead of printing it (then tilelayout --wall "
+                   "FILE and l2wall run --wall FILE take it)")
+      ->type_name("FILE");
+  import_command
+      ->add_option(
+          "--hostfile", import_options.hostfile,
+          "also write the mpirun hostfile of l2wall run --mpi to OUT: one \"HOST slots=N\" line "
+          "per host the file names, rank 0 (the coordinator) on the first, the "
+          "pipeservers in the wall file's order, one rank per board column (8 displays) "
+          "on the last; its first lines give the mpirun -np it is for "
+          "(docs/mpi-design.md). Exit 1 when the file names no host (SAGE2 configurations "
+          "as published name none)")
+      ->type_name("OUT");
   app.callback([&] {
     if (app.count("--parity") > 0 && scanout_dir.empty() && verify_dir.empty()) {
       throw CLI::ValidationError("--parity requires --scanout or --verify");
     }
+    if (import_command->parsed()) {
+      for (const char* option : {"--wall", "--png", "--scanout", "--verify", "--parity",
+                                 "--canvas-pattern", "--suggest", "--print-default"}) {
+        if (app.count(option) > 0)
+          throw CLI::ValidationError(fmt::format("import does not take {}", option));
+      }
+    }
   });
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
 
+  if (import_command->parsed()) {
+    if (!import_format.empty()) {
+      const auto* const name = std::find(std::begin(l2::kImportFormatNames),
+                                         std::end(l2::kImportFormatNames), import_format);
+      import_options.format =
+          static_cast<l2::ImportFormat>(name - std::begin(l2::kImportFormatNames));
+    }
+    return l2::run_import(import_options);
+  }
   if (print_default) {
     std::cout << l2::default_wall_toml();
     return 0;
