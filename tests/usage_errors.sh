@@ -63,8 +63,7 @@ while IFS='|' read -r label name rest; do
     --host | --port) spelling "$label" "$name: the compositing server's address is --viz-host/--viz-port" ;;
     --timeout | --retries) spelling "$label" "$name: READY waits are --ready-timeout/--ready-retries" ;;
     --refresh) [[ $rest == " HZ:"* ]] || spelling "$label" "--refresh$rest: not in HZ" ;;
-    # tilelayout import writes one wall file, which it names as --wall names one: --out FILE.
-    --out) [[ $rest == " DIR"* || ($label == "tilelayout import" && $rest == " FILE"*) ]] ||
+    --out) [[ $rest == " DIR"* ]] ||
       spelling "$label" "--out$rest: not a folder (DIR)" ;;
     --wall) [[ $rest == " FILE"* ]] || spelling "$label" "--wall$rest: not a FILE" ;;
     --*-timeout | --duration) [[ $rest == " MS:"* ]] || spelling "$label" "$name$rest: not in MS" ;;

@@ -469,7 +469,7 @@ namespace {
 TEST_F(Cli, ImportWritesAWallFileThatPlansAndAHostfile) {
   const std::string input = std::string(L2_IMPORTED_DIR) + "/tide-bbp-4x3.json";
   const fs::path wall = dir_ / "imported.toml", hosts = dir_ / "hosts";
-  ChildRun r = run("import '" + input + "' --out '" + wall.string() + "' --hostfile '" +
+  ChildRun r = run("import '" + input + "' --write '" + wall.string() + "' --hostfile '" +
                    hosts.string() + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out,
@@ -513,7 +513,7 @@ TEST_F(Cli, ImportRefusals) {
   EXPECT_NE(r.err.find("import does not take --png"), std::string::npos) << r.err;
   // An output that cannot be written: exit 3, the path and the system's reason.
   const fs::path plain = write("plain", "x");
-  r = run("import '" + sage2 + "' --out '" + (plain / "w.toml").string() + "'");
+  r = run("import '" + sage2 + "' --write '" + (plain / "w.toml").string() + "'");
   EXPECT_EQ(r.status, 3);
   EXPECT_EQ(r.err, "tilelayout import: cannot write " + (plain / "w.toml").string() +
                        ": Not a directory\n");

@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
                    "\"layout\" or \"resolution\" SAGE2)")
       ->check(CLI::IsMember({"tide", "sage2", "ndisplay"}));
   import_command
-      ->add_option("--out", import_options.out,
+      ->add_option("--write", import_options.out,
                    "write the wall file to FILE instead of printing it (then tilelayout --wall "
                    "FILE and l2wall run --wall FILE take it)")
       ->type_name("FILE");
