@@ -111,6 +111,79 @@ framebuffer_height = 600
   expect_clean(run);
 }
 
+// A panel hung in portrait (rotation 90: 600x400 native, 400x600 on the canvas) on a landscape
+// monitor stands upright in the middle of it; read back and turned into its raster again, it is
+// the display's frame. A portrait panel taller than its monitor is shown scaled down, said once.
+std::string portrait_wall(const fs::path& dir, int width, int height) {
+  const fs::path file = dir / fmt::format("portrait-{}x{}.toml", width, height);
+  std::ofstream(file) << fmt::format(R"(name = "one portrait panel"
+[[display]]
+width = {}
+height = {}
+x = 0
+y = 0
+rotation = 90
+monitor = "screen"
+[tiling]
+kind = "grid"
+tile_width = 200
+tile_height = 200
+[pipeservers]
+count = 2
+framebuffer_width = 1024
+framebuffer_height = 1024
+[mesh]
+board_max_width = 1024
+board_max_height = 1024
+)",
+                                     width, height);
+  return file.string();
+}
+
+TEST(Show, MonitorsShowAPortraitPanelUpright) {
+  L2_START_XVFB(xvfb, 800, 600);
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-portrait-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  WallRun run("show-portrait",
+              {"--wall", portrait_wall(dir, 600, 400), "--show", "monitors", "--frames", "2",
+               "--refresh", "0", "--keep", "every", "--show-readback", (dir / "screen").string()});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  EXPECT_EQ(output.find("--show: display 0"), std::string::npos) << output;  // it fits
+  const RgbImage frame = display_png(run.out(), 1, 0);
+  EXPECT_TRUE(display_png(dir / "screen", 1, 0) == frame);
+  // Upright and centred: window pixel (200 + u, v) shows canvas offset (u, v), which at 90 is
+  // panel pixel (v, 399 - u) (docs/wall-file.md: panel (x, y) shows (cw - 1 - y, x)).
+  const RgbImage window = read_png(dir / "screen" / "frame-1" / "window-0.png");
+  for (const auto& [u, v] :
+       {std::pair{10, 20}, std::pair{399, 0}, std::pair{0, 599}, std::pair{250, 300}})
+    EXPECT_EQ(window.at(200 + u, v), frame.at(v, 399 - u)) << u << "," << v;
+  EXPECT_EQ(window.at(100, 300), Rgb{});  // beside it, black
+  fs::remove_all(dir);
+  expect_clean(run);
+}
+
+TEST(Show, APanelLargerThanItsMonitorIsSaidOnce) {
+  L2_START_XVFB(xvfb, 800, 600);
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-tall-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  WallRun run("show-tall", {"--wall", portrait_wall(dir, 1000, 700), "--show", "monitors",
+                            "--frames", "2", "--refresh", "0"});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  const std::string said =
+      "--show: display 0 (700x1000 as it hangs) is shown at 60% on monitor screen (800x600): the "
+      "monitor is smaller than the panel\n";
+  ASSERT_NE(output.find(said), std::string::npos) << output;
+  EXPECT_EQ(output.find(said), output.rfind(said)) << output;
+  fs::remove_all(dir);
+  expect_clean(run);
+}
+
 TEST(Show, WithoutAScreenTheErrorIsOneLine) {
   const char* saved = std::getenv("DISPLAY");
   const std::string keep = saved ? saved : "";

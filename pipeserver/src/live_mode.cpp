@@ -45,10 +45,9 @@ struct FramePixels {
 void stamp_frame(FramePixels fb, const PipeserverPlan& plan, int frame) {
   if (plan.tiles.empty()) return;
   const PackedTile& t = plan.tiles.front();
-  std::uint8_t* p =
-      plan.has_stamp_strip()
-          ? fb.at(plan.stamp_x, plan.rows[static_cast<std::size_t>(plan.stamp_row)].y)
-          : fb.at(t.fb_x, t.fb_y);
+  std::uint8_t* p = plan.has_stamp_strip()
+                        ? fb.at(plan.stamp_x, plan.rows[static_cast<std::size_t>(plan.stamp_row)].y)
+                        : fb.at(t.fb_x, t.fb_y);
   p[0] = static_cast<std::uint8_t>(frame & 0xFF);
   p[1] = static_cast<std::uint8_t>((frame >> 8) & 0xFF);
   p[2] = static_cast<std::uint8_t>((frame >> 16) & 0xFF);
