@@ -100,6 +100,12 @@ std::string quoted_policies(const std::vector<AssignmentPolicy>& policies) {
   return out;
 }
 
+// The framebuffer pixels a wall has in all: the same tiles fill fewer of them better, so a change
+// that adds fewer fits better (a policy or a smaller tile at the written size adds none).
+double framebuffer_pixels(const Wall& wall) {
+  return double(wall.pipeserver_count) * wall.framebuffer_width * wall.framebuffer_height;
+}
+
 }  // namespace
 
 FitSuggestions suggest_fit(const Wall& wall) {
@@ -141,35 +147,64 @@ FitSuggestions suggest_fit(const Wall& wall) {
 
 std::string fit_hint(const Wall& wall, const FitSuggestions& fit) {
   if (fit.fits) return "";
-  std::vector<std::string> parts;
+  // Each change with the wall it makes, to order them by how well they fit.
+  std::vector<std::pair<std::string, Wall>> parts;
+  const auto changed = [&](auto change) {
+    Wall w = wall;
+    change(w);
+    return w;
+  };
   if (fit.height_at_width) {
-    parts.push_back(
+    parts.emplace_back(
         fmt::format("framebuffer_height = {}{}", *fit.height_at_width,
-                    board_clause(*fit.height_at_width, wall.board_max_height, "board_max_height")));
+                    board_clause(*fit.height_at_width, wall.board_max_height, "board_max_height")),
+        changed([&](Wall& w) { w.framebuffer_height = *fit.height_at_width; }));
   }
   if (fit.width_at_height) {
-    parts.push_back(
+    parts.emplace_back(
         fmt::format("framebuffer_width = {}{}", *fit.width_at_height,
-                    board_clause(*fit.width_at_height, wall.board_max_width, "board_max_width")));
+                    board_clause(*fit.width_at_height, wall.board_max_width, "board_max_width")),
+        changed([&](Wall& w) { w.framebuffer_width = *fit.width_at_height; }));
   }
   if (!fit.height_at_width && !fit.width_at_height && fit.smallest) {
     const auto [w, h] = *fit.smallest;
     std::string boards = board_clause(w, wall.board_max_width, "board_max_width");
     const std::string high = board_clause(h, wall.board_max_height, "board_max_height");
     boards += boards.empty() || high.empty() ? high : " and" + high.substr(5);
-    parts.push_back(
-        fmt::format("framebuffer_width = {} with framebuffer_height = {}{}", w, h, boards));
+    parts.emplace_back(
+        fmt::format("framebuffer_width = {} with framebuffer_height = {}{}", w, h, boards),
+        changed([&](Wall& x) {
+          x.framebuffer_width = w;
+          x.framebuffer_height = h;
+        }));
   }
   if (fit.grid_tile) {
-    parts.push_back(fmt::format("[tiling] tile_width = {} with tile_height = {}",
-                                fit.grid_tile->first, fit.grid_tile->second));
+    parts.emplace_back(fmt::format("[tiling] tile_width = {} with tile_height = {}",
+                                   fit.grid_tile->first, fit.grid_tile->second),
+                       changed([&](Wall& w) {
+                         w.tiling.tile_width = fit.grid_tile->first;
+                         w.tiling.tile_height = fit.grid_tile->second;
+                       }));
   }
-  if (!fit.policies.empty()) parts.push_back("assignment = " + quoted_policies(fit.policies));
-  if (fit.pipeserver_count)
-    parts.push_back(fmt::format("pipeservers.count = {}", *fit.pipeserver_count));
+  if (!fit.policies.empty()) {
+    parts.emplace_back("assignment = " + quoted_policies(fit.policies),
+                       changed([&](Wall& w) { w.assignment = fit.policies.front(); }));
+  }
+  if (fit.pipeserver_count) {
+    parts.emplace_back(fmt::format("pipeservers.count = {}", *fit.pipeserver_count),
+                       changed([&](Wall& w) { w.pipeserver_count = *fit.pipeserver_count; }));
+  }
   if (parts.empty()) return "";
+  // Best fit first: the change whose framebuffers the tiles fill most (more pipeservers or
+  // larger framebuffers than needed leave them emptier); ties as listed above.
+  std::vector<std::size_t> order(parts.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return framebuffer_pixels(parts[a].second) < framebuffer_pixels(parts[b].second);
+  });
   std::string out = "what would fit, each alone: ";
-  for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : "; ") + parts[i];
+  for (std::size_t i = 0; i < order.size(); ++i)
+    out += (i == 0 ? "" : "; ") + parts[order[i]].first;
   return out;
 }
 

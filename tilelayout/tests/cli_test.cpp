@@ -427,8 +427,8 @@ TEST_F(Cli, SuggestPrintsWhatFits) {
   EXPECT_EQ(r.err, "tilelayout: " + wall.string() +
                        ":12: pipeserver 0: tile 1 (display 0, 200x100 at 300,0) does not fit the "
                        "310x100 framebuffer: needs 200 rows, 100 too many; what would fit, each "
-                       "alone: framebuffer_height = 200; framebuffer_width = 404; assignment = "
-                       "\"blocks\" or \"area-balanced\"; pipeservers.count = 3\n");
+                       "alone: assignment = \"blocks\" or \"area-balanced\"; framebuffer_width = "
+                       "404; pipeservers.count = 3; framebuffer_height = 200\n");
   // A suggested value, written into the wall, plans.
   const fs::path fixed =
       write("fixed.toml", std::string(kTightWallFile) + "assignment = \"blocks\"\n");

@@ -108,7 +108,7 @@ TEST(DepthWall, DepthTilesThatDoNotFitNameTheirPayload) {
   EXPECT_EQ(error_of(narrow + "[depth]\nlayers = 2\n"),
             "walls/t.toml:14: pipeserver 0: tile 0 (display 0, 50x40 at 0,0, DEPTH) does not fit "
             "the 100x200 framebuffer: needs 104 columns, 4 too many; what would fit, each alone: "
-            "framebuffer_width = 104; [tiling] tile_width = 43 with tile_height = 40");
+            "[tiling] tile_width = 43 with tile_height = 40; framebuffer_width = 104");
 }
 
 const std::string kOverlay =

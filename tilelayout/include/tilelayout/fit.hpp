@@ -37,8 +37,9 @@ struct FitSuggestions {
 
 FitSuggestions suggest_fit(const Wall& wall);
 
-// One clause for an error line: "what would fit, each alone: framebuffer_height = 200;
-// framebuffer_width = 404; assignment = "blocks" or "area-balanced"; pipeservers.count = 3".
+// One clause for an error line: "what would fit, each alone: assignment = "blocks" or
+// "area-balanced"; framebuffer_height = 200; framebuffer_width = 404; pipeservers.count = 3",
+// best fit first: the change that leaves the wall the fewest framebuffer pixels in all.
 // A framebuffer side past the wall's board limit comes with the [mesh] limit it needs too
 // ("framebuffer_height = 1080 with [mesh] board_max_height = 1080"). Empty when the wall fits
 // or nothing found fits.
