@@ -1,9 +1,13 @@
 // What a person in front of the wall sees, in a user's run through `l2wall run`, on both paths:
 // no frame stamp marks a picture (issue 56: the stamps ride in the stamp strips, which no display
-// shows), and panels that hang turned or mirrored show the canvas as the wall file's mapping
-// says (docs/wall-file.md), every pixel, the expected pixels worked out here from the wall
-// file's numbers.
+// shows); panels that hang turned or mirrored show the canvas as the wall file's mapping says
+// (docs/wall-file.md); colour-matched panels show it through their tables. Every pixel, the
+// expected ones worked out here from the wall files' numbers.
 #include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <sstream>
 
 #include "image/png_io.hpp"
 #include "wall_run.hpp"
@@ -72,6 +76,59 @@ TEST(LiveRunHanging, TurnedAndMirroredPanelsShowTheCanvasAsDocumented) {
     return position(x, y);
   };
   EXPECT_EQ(wrong_pixels(run, 1, 3, expected), 0);
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// The position picture at 1:1 on the colour-matched wall (walls/colour-matched-2x2.toml: 320x240
+// panels, 10-pixel mullions): each display pixel is its canvas pixel through the display's
+// tables, worked out here from the wall file's numbers and the table file's lines: display 0 by
+// gain [1.0, 0.96, 0.92] and offset [0, 0, 4] (docs/wall-file.md: G = round(gain x 65536), out =
+// clamp(floor((in G + 32768) / 65536) + offset, 0, 255)), display 2 by calibration/panel-2.txt,
+// displays 1 and 3 as they are.
+TEST(LiveRunHanging, ColourMatchedPanelsShowTheCanvasThroughTheirTables) {
+  const fs::path walls = fs::path(L2_SOURCE_DIR) / "walls";
+  std::array<std::array<std::uint8_t, 256>, 3> gained{}, measured{};
+  const long gains[3] = {65536, 62915, 60293};  // 1.0, 0.96 and 0.92 of 65536, rounded
+  const int offsets[3] = {0, 0, 4};
+  for (int c = 0; c < 3; ++c)
+    for (int v = 0; v < 256; ++v)
+      gained[c][v] = static_cast<std::uint8_t>(
+          std::clamp<long>((v * gains[c] + 32768) / 65536 + offsets[c], 0, 255));
+  std::ifstream table(walls / "calibration/panel-2.txt");
+  int entry = 0;
+  for (std::string line; std::getline(table, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    int r = 0, g = 0, b = 0;
+    words >> r >> g >> b;
+    ASSERT_LT(entry, 256);
+    measured[0][entry] = static_cast<std::uint8_t>(r);
+    measured[1][entry] = static_cast<std::uint8_t>(g);
+    measured[2][entry] = static_cast<std::uint8_t>(b);
+    ++entry;
+  }
+  ASSERT_EQ(entry, 256);
+
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-matched-{}", getpid());
+  fs::create_directories(dir);
+  RgbImage canvas(650, 490);
+  for (int y = 0; y < canvas.height(); ++y)
+    for (int x = 0; x < canvas.width(); ++x) canvas.set(x, y, position(x, y));
+  write_png(dir / "positions.png", canvas);
+  WallRun run("matched",
+              {"--wall", (walls / "colour-matched-2x2.toml").string(), "--scene", "picture",
+               "--content", (dir / "positions.png").string(), "--fit", "stretch", "--frames", "2",
+               "--refresh", "0", "--path", "both", "--compare"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  const auto expected = [&](int d, int x, int y) {
+    const Rgb p = position(330 * (d % 2) + x, 250 * (d / 2) + y);
+    if (d == 1 || d == 3) return p;
+    const auto& t = d == 0 ? gained : measured;
+    return Rgb{t[0][p.r], t[1][p.g], t[2][p.b]};
+  };
+  EXPECT_EQ(wrong_pixels(run, 1, 4, expected), 0);
   expect_clean(run);
   fs::remove_all(dir);
 }
