@@ -111,6 +111,55 @@ framebuffer_height = 600
   expect_clean(run);
 }
 
+// The wall window on a wall of one landscape panel and one hung at 90 (300x200 native, 200x300 on
+// the canvas, 10 pixels right of the first): the turned panel stands upright where the wall file
+// puts it, and read back it is its frame again, byte for byte.
+TEST(Show, WallWindowDrawsATurnedPanelAsItHangs) {
+  L2_START_XVFB(xvfb, 800, 600);
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-turned-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "turned.toml") << R"(name = "turned"
+[[display]]
+width = 300
+height = 200
+x = 0
+y = 0
+[[display]]
+width = 300
+height = 200
+x = 310
+y = 0
+rotation = 90
+[tiling]
+kind = "grid"
+tile_width = 128
+tile_height = 128
+[pipeservers]
+count = 2
+framebuffer_width = 700
+framebuffer_height = 500
+)";
+  WallRun run("show-turned",
+              {"--wall", (dir / "turned.toml").string(), "--show", "window", "--frames", "2",
+               "--refresh", "0", "--keep", "every", "--show-readback", (dir / "screen").string()});
+  const ExitStatus status = run.wait(30s);
+  const std::string output = run.output();
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << output;
+  for (int d = 0; d < 2; ++d)
+    EXPECT_TRUE(display_png(dir / "screen", 1, d) == display_png(run.out(), 1, d)) << d;
+  // Window pixel (310 + u, v) shows canvas offset (u, v) of display 1: its panel pixel
+  // (v, 199 - u) at 90 (docs/wall-file.md).
+  const RgbImage window = read_png(dir / "screen" / "frame-1" / "window-0.png");
+  const RgbImage turned = display_png(run.out(), 1, 1);
+  for (const auto& [u, v] :
+       {std::pair{0, 0}, std::pair{199, 0}, std::pair{37, 250}, std::pair{199, 299}})
+    EXPECT_EQ(window.at(310 + u, v), turned.at(v, 199 - u)) << u << "," << v;
+  EXPECT_EQ(window.at(305, 100), kMullion);
+  fs::remove_all(dir);
+  expect_clean(run);
+}
+
 // A panel hung in portrait (rotation 90: 600x400 native, 400x600 on the canvas) on a landscape
 // monitor stands upright in the middle of it; read back and turned into its raster again, it is
 // the display's frame. A portrait panel taller than its monitor is shown scaled down, said once.
