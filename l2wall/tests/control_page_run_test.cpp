@@ -161,6 +161,47 @@ TEST(ControlPageView, ServesAFinishedRun) {
   EXPECT_EQ(ended->code, 0);
 }
 
+// The page draws each panel as it hangs: on walls/mixed-hang.toml display 1 hangs at 270, so its
+// state is its canvas rectangle (720x1280) and its picture is its frame turned upright: canvas
+// offset (u, v) shows panel pixel (1279 - v, u) (docs/wall-file.md: (x, y) shows (y, ch - 1 - x)).
+TEST(ControlPageView, ShowsATurnedPanelAsItHangs) {
+  const std::string wall = std::string(L2_SOURCE_DIR) + "/walls/mixed-hang.toml";
+  WallRun run("view-turned", {"--wall", wall, "--frames", "2", "--keep", "1"});
+  ASSERT_EQ(run.wait(60s).code, 0) << run.output();
+  const fs::path log = run.out().parent_path() / "view-turned.txt";
+  ChildProcess view = start_view(run, fmt::format("--wall '{}' --http 127.0.0.1:0", wall), log);
+  const std::regex printed("l2wall view: http://127\\.0\\.0\\.1:(\\d+)/");
+  std::smatch m;
+  std::string text;
+  for (int i = 0; i < 3000 && !std::regex_search(text = slurp(log), m, printed); ++i)
+    std::this_thread::sleep_for(20ms);
+  ASSERT_FALSE(m.empty()) << text;
+  httplib::Client http("127.0.0.1", std::stoi(m[1]));
+  const auto state = http.Get("/api/state");
+  ASSERT_TRUE(state);
+  const auto s = nlohmann::json::parse(state->body);
+  EXPECT_EQ(s["displays"][1]["x"], 1320);
+  EXPECT_EQ(s["displays"][1]["width"], 720);
+  EXPECT_EQ(s["displays"][1]["height"], 1280);
+  EXPECT_EQ(s["displays"][1]["rotation"], 270);
+  EXPECT_EQ(s["displays"][2]["flip"], "horizontal");
+  const auto display = http.Get("/api/display/1.png");
+  ASSERT_TRUE(display);
+  const fs::path got = run.out().parent_path() / "view-turned-display-1.png";
+  std::ofstream(got, std::ios::binary) << display->body;
+  const RgbImage page = read_png(got);
+  const RgbImage frame = read_png(run.out() / "frame-1/display-1.png");
+  ASSERT_EQ(page.width(), 720);
+  ASSERT_EQ(page.height(), 1280);
+  for (const auto& [u, v] :
+       {std::pair{0, 0}, std::pair{719, 0}, std::pair{300, 700}, std::pair{719, 1279}})
+    EXPECT_EQ(page.at(u, v), frame.at(1279 - v, u)) << u << "," << v;
+  kill(view.pid(), SIGINT);
+  const auto ended = view.wait_for(60s);
+  ASSERT_TRUE(ended);
+  EXPECT_EQ(ended->code, 0);
+}
+
 TEST(ControlPageView, AFrameNotKeptIsNamed) {
   WallRun run("view-frame", {"--frames", "3", "--keep", "0,2"});
   ASSERT_EQ(run.wait(60s).code, 0) << run.output();
