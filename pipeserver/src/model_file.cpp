@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "gltf_check.hpp"
+#include "nesting_check.hpp"
 #include "model_textures.hpp"
 #include "off_counts.hpp"
 #include "pipeserver/model_file.hpp"
@@ -253,6 +254,7 @@ std::string read_checked(Assimp::Importer& importer, const std::filesystem::path
   // What Assimp would take on trust (sizes a header declares, nesting it walks recursively) is
   // checked against the file first: one line naming the file, not a crash, a hang or gigabytes.
   detail::check_gltf(path);
+  detail::check_nesting(path);
   detail::check_off_counts(path);
   const bool ascii_ply = detail::check_ply_counts(path) == detail::PlyFormat::ascii;
   const aiScene* scene = importer.ReadFile(path.string(), kRead);

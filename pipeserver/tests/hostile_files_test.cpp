@@ -82,6 +82,23 @@ TEST_F(Hostile, GltfNodeWithTwoParentsIsRefused) {
       two.string() + ": node 2 is a child of node 0 and of node 1 (a glTF node has one parent)");
 }
 
+// Assimp walks a Collada file's nodes recursively too: 17,400 nested crashed the renderer
+// (SIGSEGV, issue 54). The limit is passed at element level 1001, the node opened on line 1001
+// (hostile::collada_chain); a chain that stays below loads. A DirectX text file's frames: the
+// first opens on line 2, so level 1001 is on line 1002.
+TEST_F(Hostile, ColladaNestedDeeperThanTheLimitIsRefused) {
+  const auto deep = file("deep.dae", hostile::collada_chain(17400));
+  EXPECT_EQ(model_error(deep),
+            deep.string() + ": XML nested deeper than 1000 levels (at line 1001)");
+  EXPECT_EQ(model_error(file("shallow.dae", hostile::collada_chain(900))), "loaded");
+}
+
+TEST_F(Hostile, DirectXTextNestedDeeperThanTheLimitIsRefused) {
+  const auto deep = file("deep.x", hostile::x_frame_chain(20000));
+  EXPECT_EQ(model_error(deep),
+            deep.string() + ": braces nested deeper than 1000 levels (at line 1002)");
+}
+
 // Assimp's JSON parser is recursive too: a million nested arrays overflowed the stack. The
 // file's own levels (the document and "extras") count.
 TEST_F(Hostile, GltfJsonNestedPastTheLimitIsRefusedUpToItLoads) {

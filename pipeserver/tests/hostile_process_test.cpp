@@ -119,6 +119,8 @@ TEST_F(HostileProcess, ModelsAreRefusedInOneLine) {
                   {"json.gltf", hostile::gltf(hostile::node_chain(1),
                                               ", \"extras\": " + hostile::nested_arrays(1000000))},
                   {"big.glb", hostile::glb(0xFFFFFFF0u)},
+                  {"deep.dae", hostile::collada_chain(17400)},
+                  {"deep.x", hostile::x_frame_chain(20000)},
                   {"cut21.ply", ply.substr(0, 21)},
                   {"cut60.ply", ply.substr(0, 60)},
                   {"cut-end.ply", ply.substr(0, ply.find("end_header") + 4)},

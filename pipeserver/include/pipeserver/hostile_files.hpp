@@ -52,6 +52,37 @@ inline std::string node_diamonds(int levels) {
   return nodes + R"({"mesh": 0}])";
 }
 
+// A Collada file of one triangle in `n` nodes nested one in another, the last holding it, one a
+// line: COLLADA is element level 1 (line 2), the two scene elements 2 and 3 (line 3), so the node
+// opened on line k is level k.
+inline std::string collada_chain(int n) {
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+      "<library_visual_scenes><visual_scene id=\"s\">\n";
+  for (int i = 0; i < n; ++i) out += "<node id=\"n" + std::to_string(i) + "\">\n";
+  out += "<instance_geometry url=\"#g\"/>";
+  for (int i = 0; i < n; ++i) out += "</node>";
+  return out +
+         "\n</visual_scene></library_visual_scenes>\n"
+         "<library_geometries><geometry id=\"g\"><mesh>"
+         "<source id=\"p\"><float_array id=\"pa\" count=\"9\">0 0 0 1 0 0 0 1 0</float_array>"
+         "<technique_common><accessor source=\"#pa\" count=\"3\" stride=\"3\">"
+         "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
+         "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>"
+         "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/></vertices>"
+         "<triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/>"
+         "<p>0 1 2</p></triangles></mesh></geometry></library_geometries>\n"
+         "<scene><instance_visual_scene url=\"#s\"/></scene>\n</COLLADA>\n";
+}
+
+// A DirectX text file of `n` frames nested one in another, one a line.
+inline std::string x_frame_chain(int n) {
+  std::string out = "xof 0302txt 0064\n";
+  for (int i = 0; i < n; ++i) out += "Frame f" + std::to_string(i) + " {\n";
+  return out + std::string(static_cast<std::size_t>(n), '}') + "\n";
+}
+
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +
