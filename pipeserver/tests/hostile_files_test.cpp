@@ -239,6 +239,44 @@ TEST_F(Hostile, PngCutShortAnywhereIsOneLine) {
   }
 }
 
+// Headers of other formats that OpenImageIO believed (issue 54): a PPM or PFM declaring a width
+// of 2e9 aborted the process in the image cache, a JPEG saying 65500x65500 was decoded for ever,
+// a 35-byte GIF of 16384x16384 took 1.2 GB, a DDS declaring 2^32-1 mip levels hung its opening.
+// Each is refused in one line saying what it declares, and nothing is printed besides; the
+// same files, 8x8 as they are, open.
+TEST_F(Hostile, OtherFormatsDeclaringMoreThanTheyHoldAreOneLine) {
+  const auto expect = [&](const std::string& name, const std::string& bytes,
+                          const std::string& said) {
+    const auto f = file(name, bytes);
+    ::testing::internal::CaptureStderr();
+    const std::string error = picture_error(f);
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << name;
+    EXPECT_EQ(error, f.string() + ": cannot read: " + said);
+  };
+  expect("wide.ppm", hostile::pnm_wide(2000000000),
+         "declares 2000000000x1 pixels, more than any wall shows (up to 1048576 a side, 64 "
+         "gigapixels)");
+  expect("wide.pfm", hostile::pfm_wide(2000000000),
+         "declares 2000000000x1 pixels, more than any wall shows (up to 1048576 a side, 64 "
+         "gigapixels)");
+  // 1000000 x 1 x 3 bytes = 3 MB from 300 bytes of samples (317 with its 17-byte header).
+  expect("long.ppm", hostile::pnm_wide(1000000),
+         "declares 1000000x1 pixels of 3 channels (3 MiB decoded), more than a pnm file of 317 "
+         "bytes can hold");
+  expect("huge.jpg", hostile::jpeg_frame(65500, 65500),
+         "declares 65500x65500 pixels of 3 channels (12275 MiB decoded), more than a jpeg file "
+         "of 202 bytes can hold");
+  expect("huge.gif", hostile::gif_screen(16384, 16384),
+         "declares 16384x16384 pixels of 4 channels (1024 MiB decoded), more than a gif file of "
+         "35 bytes can hold");
+  expect("levels.dds", hostile::dds_levels(0xFFFFFFFFu),
+         "a DDS of 8x8 declaring 4294967295 mipmap levels, more than its sides (4) or its 512 "
+         "bytes allow");
+  EXPECT_EQ(picture_error(file("small.jpg", hostile::jpeg_frame(8, 8))), "opened");
+  EXPECT_EQ(picture_error(file("small.gif", hostile::gif_screen(1, 1))), "opened");
+  EXPECT_EQ(picture_error(file("small.dds", hostile::dds_levels(1))), "opened");
+}
+
 // Named as a picture, holding something else: OpenImageIO's reasons were several lines.
 TEST_F(Hostile, APictureThatIsNotOneIsOneLine) {
   const auto text_png = file("text.png", "not a picture\n");

@@ -138,7 +138,14 @@ TEST_F(HostileProcess, PicturesAreRefusedInOneLine) {
                   {"huge-interlaced.png", hostile::png(100000, 100000, true, std::string(8, '\0'))},
                   {"cut.png", small.substr(0, small.size() / 2)},
                   {"text.jpg", "not a picture\n"},
-                  {"bad.jpg", std::string("\xff\xd8\xff\xe0", 4) + std::string(60, 'x')}});
+                  {"bad.jpg", std::string("\xff\xd8\xff\xe0", 4) + std::string(60, 'x')},
+                  // Headers OpenImageIO believed (issue 54): aborts, a hang, gigabytes.
+                  {"wide.ppm", hostile::pnm_wide(2000000000)},
+                  {"wide.pfm", hostile::pfm_wide(2000000000)},
+                  {"tall.ppm", hostile::pnm_wide(1000000)},
+                  {"huge.jpg", hostile::jpeg_frame(65500, 65500)},
+                  {"huge.gif", hostile::gif_screen(16384, 16384)},
+                  {"levels.dds", hostile::dds_levels(0xFFFFFFFFu)}});
 }
 
 }  // namespace

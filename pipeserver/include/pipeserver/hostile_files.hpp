@@ -83,6 +83,79 @@ inline std::string x_frame_chain(int n) {
   return out + std::string(static_cast<std::size_t>(n), '}') + "\n";
 }
 
+// Pictures whose headers declare more than their bytes hold (issue 54). A binary PPM and a PFM of
+// `width` x 1 with 300 bytes of samples.
+inline std::string pnm_wide(long long width) {
+  return "P6\n" + std::to_string(width) + " 1\n255\n" + std::string(300, '\0');
+}
+inline std::string pfm_wide(long long width) {
+  return "PF\n" + std::to_string(width) + " 1\n-1.0\n" + std::string(300, '\0');
+}
+
+// The classic 35-byte GIF of one pixel, its logical screen declared `width` x `height`.
+inline std::string gif_screen(int width, int height) {
+  std::string g = "GIF89a";
+  g += static_cast<char>(width & 0xFF);
+  g += static_cast<char>(width >> 8);
+  g += static_cast<char>(height & 0xFF);
+  g += static_cast<char>(height >> 8);
+  g += std::string(
+      "\x80\x00\x00"
+      "\x00\x00\x00\xff\xff\xff",
+      9);                                                            // 2-colour table
+  g += std::string("\x2c\x00\x00\x00\x00\x01\x00\x01\x00\x00", 10);  // a 1x1 image
+  g += std::string("\x02\x02\x44\x01\x00\x3b", 6);                   // its LZW data, the trailer
+  return g;
+}
+
+// An 8x8 grey baseline JPEG (FFmpeg's, bit-exact) whose frame header says `width` x `height`.
+inline std::string jpeg_frame(int width, int height) {
+  std::string j(
+      "\xff\xd8\xff\xe0\x00\x10\x4a\x46\x49\x46\x00\x01\x02\x00\x00\x01\x00\x01\x00\x00\xff\xdb\x00"
+      "\x43"
+      "\x00\x08\x3e\x3e\x49\x3e\x49\x55\x55\x55\x55\x55\x55\x64\x5d\x64\x68\x68\x68\x64\x64\x64\x64"
+      "\x68"
+      "\x68\x68\x70\x70\x70\x83\x83\x83\x70\x70\x70\x68\x68\x70\x70\x7c\x7c\x83\x83\x8f\x93\x8f\x87"
+      "\x87"
+      "\x83\x87\x93\x93\x9b\x9b\x9b\xba\xba\xb2\xb2\xd9\xd9\xe0\xff\xff\xff\xff\xc4\x00\x4a\x00\x01"
+      "\x00"
+      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x01\x01\x00\x00\x00\x00\x00\x00"
+      "\x00"
+      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x10\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00"
+      "\x00"
+      "\x00\x00\x00\x11\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xff\xc0"
+      "\x00"
+      "\x11\x08\x00\x08\x00\x08\x03\x01\x22\x00\x02\x11\x00\x03\x11\x00\xff\xda\x00\x0c\x03\x01\x00"
+      "\x02"
+      "\x11\x03\x11\x00\x3f\x00\x00\x0f\xff\xd9",
+      202);
+  for (std::size_t at = 2; at + 9 < j.size();) {
+    const auto marker = static_cast<unsigned char>(j[at + 1]);
+    if (marker == 0xC0) {
+      j[at + 5] = static_cast<char>(height >> 8);
+      j[at + 6] = static_cast<char>(height & 0xFF);
+      j[at + 7] = static_cast<char>(width >> 8);
+      j[at + 8] = static_cast<char>(width & 0xFF);
+      break;
+    }
+    at += 2 + (static_cast<unsigned char>(j[at + 2]) << 8 | static_cast<unsigned char>(j[at + 3]));
+  }
+  return j;
+}
+
+// A DDS of 8x8 RGB pixels whose header declares `levels` mipmap levels.
+inline std::string dds_levels(std::uint32_t levels) {
+  const auto u32 = [](std::uint32_t v) {
+    return std::string{static_cast<char>(v), static_cast<char>(v >> 8), static_cast<char>(v >> 16),
+                       static_cast<char>(v >> 24)};
+  };
+  std::string d = "DDS " + u32(124) + u32(0x2100F) + u32(8) + u32(8) + u32(24) + u32(0) +
+                  u32(levels) + std::string(44, '\0');
+  d += u32(32) + u32(0x40) + u32(0) + u32(24) + u32(0xFF0000) + u32(0xFF00) + u32(0xFF) + u32(0);
+  d += u32(0x401008) + std::string(16, '\0');
+  return d + std::string(8 * 8 * 3 * 2, '\x80');
+}
+
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +

@@ -1,0 +1,138 @@
+#include "declared_size.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace l2::png_codec {
+
+namespace {
+
+std::uint32_t le32(std::string_view b, std::size_t at) {
+  return static_cast<std::uint32_t>(static_cast<unsigned char>(b[at])) |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 1])) << 8 |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 2])) << 16 |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 3])) << 24;
+}
+
+std::string mib(double bytes) {
+  return std::to_string(static_cast<long long>(std::ceil(bytes / (1 << 20)))) + " MiB";
+}
+
+// A DDS (Microsoft's header: "DDS ", then 124 bytes): levels beyond the halvings of its larger
+// side cannot exist, and every level holds at least one byte.
+Status check_dds(std::string_view b, std::uintmax_t file_size) {
+  if (b.size() < 128) return {};
+  const std::uint32_t height = le32(b, 12), width = le32(b, 16), levels = le32(b, 28);
+  const std::uint32_t largest = std::max(width, height);
+  int possible = 1;
+  for (std::uint32_t side = largest; side > 1; side /= 2) ++possible;
+  if (levels > static_cast<std::uint32_t>(possible) || levels > file_size) {
+    return Failure{"cannot read: a DDS of " + std::to_string(width) + "x" + std::to_string(height) +
+                   " declaring " + std::to_string(levels) +
+                   " mipmap levels, more than its sides (" + std::to_string(possible) +
+                   ") or its " + std::to_string(file_size) + " bytes allow"};
+  }
+  return {};
+}
+
+// Whether a JPEG's frame is progressive (SOF2, SOF6, SOF10, SOF14): its markers up to the first
+// frame header, each marker's length skipped.
+bool jpeg_progressive(std::string_view b) {
+  std::size_t at = 2;
+  while (at + 4 <= b.size() && static_cast<unsigned char>(b[at]) == 0xFF) {
+    const unsigned char m = static_cast<unsigned char>(b[at + 1]);
+    if (m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC)
+      return m == 0xC2 || m == 0xC6 || m == 0xCA || m == 0xCE;
+    const std::size_t length =
+        static_cast<unsigned char>(b[at + 2]) << 8 | static_cast<unsigned char>(b[at + 3]);
+    at += 2 + length;
+  }
+  return false;
+}
+
+// A GIF's logical screen (its reader allocates it on opening, before any check of ours): its
+// sides against what the file's LZW data can hold.
+Status check_gif(std::string_view b, std::uintmax_t file_size) {
+  if (b.size() < 10) return {};
+  const auto le16 = [&](std::size_t at) {
+    return static_cast<long long>(static_cast<unsigned char>(b[at]) |
+                                  static_cast<unsigned char>(b[at + 1]) << 8);
+  };
+  Declared d;
+  d.format = "gif";
+  d.width = le16(6);
+  d.height = le16(8);
+  d.channels = 4;
+  return check_declared(d, file_size);
+}
+
+bool is(std::string_view a, std::initializer_list<std::string_view> names) {
+  return std::find(names.begin(), names.end(), a) != names.end();
+}
+
+}  // namespace
+
+Result<HeaderFacts> check_header(std::string_view b, std::uintmax_t file_size) {
+  HeaderFacts facts;
+  if (b.substr(0, 4) == "DDS ") {
+    if (const Status s = check_dds(b, file_size); !s.ok()) return Failure{s.reason()};
+  }
+  if (b.substr(0, 6) == "GIF87a" || b.substr(0, 6) == "GIF89a") {
+    if (const Status s = check_gif(b, file_size); !s.ok()) return Failure{s.reason()};
+  }
+  if (b.size() >= 3 && b.substr(0, 3) == "\xFF\xD8\xFF") facts.decoded_whole = jpeg_progressive(b);
+  return facts;
+}
+
+double max_expansion(std::string_view format, std::string_view compression) {
+  // Raw samples: a bit a pixel (PBM, 1-bit BMP or TIFF) spread to a byte per channel is the most.
+  if (is(format, {"pnm", "fits", "pfm"})) return 8;
+  if (format == "bmp") return 400;    // RLE8: 255 pixels in 2 bytes, 3 bytes each decoded
+  if (format == "hdr") return 200;    // a run of 127 of one channel in 2 bytes, as 4-byte floats
+  if (format == "targa") return 512;  // a run of 128 pixels in 1 + 1 bytes, 4 bytes each
+  if (format == "dds") return 64;     // block-compressed: 4 bits a pixel at least, RGBA floats
+  if (format == "gif") return 12000;  // LZW: 4096 pixels for a 12-bit code, 4 bytes each
+  if (format == "tiff" && (compression.empty() || compression == "none")) return 64;
+  if (format == "tiff" && compression == "packbits") return 520;
+  // Deflate and LZW reach about 1000 to 1, JPEG's all-zero blocks a few thousand: what is left
+  // is bounded by a generous figure rather than trusted.
+  return 20000;
+}
+
+Status check_declared(const Declared& d, std::uintmax_t file_size) {
+  const std::string sides = std::to_string(d.width) + "x" + std::to_string(d.height) +
+                            (d.depth > 1 ? "x" + std::to_string(d.depth) : "");
+  if (d.width > kMaxDeclaredSide || d.height > kMaxDeclaredSide || d.depth > kMaxDeclaredSide ||
+      double(d.width) * double(d.height) * double(d.depth) > double(kMaxDeclaredPixels)) {
+    return Failure{"cannot read: declares " + sides + " pixels, more than any wall shows (up to " +
+                   std::to_string(kMaxDeclaredSide) + " a side, " +
+                   std::to_string(kMaxDeclaredPixels >> 30) + " gigapixels)"};
+  }
+  const double decoded = double(d.width) * double(d.height) * double(d.depth) * d.channels *
+                         std::max(d.bytes_per_channel, 1);
+  const double holds = double(file_size) * max_expansion(d.format, d.compression) + 65536;
+  if (decoded > holds) {
+    return Failure{"cannot read: declares " + sides + " pixels of " + std::to_string(d.channels) +
+                   " channels (" + mib(decoded) + " decoded), more than a " + d.format +
+                   " file of " + std::to_string(file_size) + " bytes can hold"};
+  }
+  const double tile = double(d.tile_width) * double(d.tile_height) * double(d.tile_depth) *
+                      d.channels * std::max(d.bytes_per_channel, 1);
+  if (tile > kMaxTileMegabytes * (1 << 20)) {
+    return Failure{"cannot read: tiles of " + std::to_string(d.tile_width) + "x" +
+                   std::to_string(d.tile_height) + " pixels (" + mib(tile) +
+                   " each), more than the " + std::to_string(int(kMaxTileMegabytes)) +
+                   " MiB a reader holds"};
+  }
+  if (d.decoded_whole && decoded > kMaxWholeMegabytes * (1 << 20)) {
+    return Failure{"cannot read: a progressive " + d.format + " of " + sides +
+                   " pixels is decoded whole, " + mib(decoded) + ", more than the " +
+                   std::to_string(int(kMaxWholeMegabytes)) +
+                   " MiB a picture read whole may take; save it as baseline"};
+  }
+  return {};
+}
+
+}  // namespace l2::png_codec

@@ -1,0 +1,74 @@
+// What a picture's header declares against what its file can hold (declared_size.hpp): the
+// figures worked out by hand here from the format's storage.
+#include <gtest/gtest.h>
+
+#include "declared_size.hpp"
+
+namespace l2::png_codec {
+namespace {
+
+Declared picture(const char* format, long long w, long long h, int channels = 3) {
+  Declared d;
+  d.format = format;
+  d.width = w;
+  d.height = h;
+  d.channels = channels;
+  return d;
+}
+
+TEST(DeclaredSize, RawSamplesMustBeInTheFile) {
+  // A 1000x1000 RGB TIFF stored uncompressed is 3,000,000 bytes: 64 to 1 (a bit a pixel spread
+  // to a byte a channel, with room) lets 46,000 bytes through, not 45,000.
+  Declared d = picture("tiff", 1000, 1000);
+  d.compression = "none";
+  EXPECT_TRUE(check_declared(d, 46000).ok());
+  EXPECT_EQ(check_declared(d, 45000).reason(),
+            "cannot read: declares 1000x1000 pixels of 3 channels (3 MiB decoded), more than a "
+            "tiff file of 45000 bytes can hold");
+  d.compression = "lzw";  // a dictionary coder may hold far more
+  EXPECT_TRUE(check_declared(d, 45000).ok());
+}
+
+TEST(DeclaredSize, TilesLargerThanTheCacheAreRefused) {
+  Declared d = picture("tiff", 65536, 65536);
+  d.compression = "zip";
+  d.tile_width = d.tile_height = 65536;
+  EXPECT_EQ(check_declared(d, 1 << 30).reason(),
+            "cannot read: tiles of 65536x65536 pixels (12288 MiB each), more than the 64 MiB a "
+            "reader holds");
+  d.tile_width = d.tile_height = 512;  // 768 KiB a tile
+  EXPECT_TRUE(check_declared(d, 1 << 30).ok());
+}
+
+TEST(DeclaredSize, AProgressiveJpegIsDecodedWhole) {
+  Declared d = picture("jpeg", 20000, 10000);  // 600,000,000 bytes as RGB: 573 MiB, rounded up
+  d.decoded_whole = true;
+  EXPECT_EQ(check_declared(d, 50000000).reason(),
+            "cannot read: a progressive jpeg of 20000x10000 pixels is decoded whole, 573 MiB, "
+            "more than the 512 MiB a picture read whole may take; save it as baseline");
+  d.decoded_whole = false;
+  EXPECT_TRUE(check_declared(d, 50000000).ok());
+}
+
+TEST(DeclaredSize, HeadersBeforeTheReader) {
+  // "DDS " and 124 bytes: height at 12, width at 16, levels at 28 (little-endian).
+  std::string dds(128, '\0');
+  dds.replace(0, 4, "DDS ");
+  dds[12] = 64;  // 64x64: levels 64, 32, ..., 1 are 7
+  dds[16] = 64;
+  dds[28] = 7;
+  EXPECT_TRUE(check_header(dds, 20000).ok());
+  dds[28] = 8;
+  EXPECT_EQ(check_header(dds, 20000).reason(),
+            "cannot read: a DDS of 64x64 declaring 8 mipmap levels, more than its sides (7) or "
+            "its 20000 bytes allow");
+  // A JPEG's first frame marker: SOF2 after an APP0 of 16 bytes is progressive.
+  std::string jpeg = std::string("\xFF\xD8\xFF\xE0\x00\x10", 6) + std::string(14, '\0') +
+                     std::string("\xFF\xC2\x00\x11", 4);
+  EXPECT_TRUE(check_header(jpeg, 1000)->decoded_whole);
+  jpeg[21] = '\xC0';
+  EXPECT_FALSE(check_header(jpeg, 1000)->decoded_whole);
+}
+
+}  // namespace
+}  // namespace l2::png_codec
