@@ -127,6 +127,21 @@ put("png_frame", "palette-2x1.png", png(2, 1, 3, 8, [b"\x00\x01"], palette))
 put("png_frame", "grey-2x1.png", png(2, 1, 0, 8, [b"\x10\x20"]))
 
 
+# --- picture_header: 8 bytes of file size, then a file's first bytes (and the rest read as the
+# numbers a reader declared: fuzz_picture_header.cpp) ---------------------------------------------
+def dds(width, height, levels):
+    head = struct.pack("<4sIIIIIII44s", b"DDS ", 124, 0x2100F, height, width, width * 3, 0, levels,
+                       bytes(44))
+    return head + struct.pack("<IIIIIIII", 32, 0x40, 0, 24, 0xFF0000, 0xFF00, 0xFF, 0) + bytes(20)
+
+
+put("picture_header", "dds-8x8-4-levels", struct.pack("<Q", 512) + dds(8, 8, 4))
+put("picture_header", "gif-1x1", struct.pack("<Q", 35) + b"GIF89a\x01\x00\x01\x00\x80\x00\x00")
+put("picture_header", "jpeg-progressive",
+    struct.pack("<Q", 1000) + b"\xff\xd8\xff\xe0\x00\x10" + bytes(14) + b"\xff\xc2\x00\x11")
+put("picture_header", "ppm", struct.pack("<Q", 317) + b"P6\n1000000 1\n255\n")
+
+
 # --- frame_delta: width-1 and height-1 bytes, then one message (dvi_link/frame_delta.hpp) -----
 def frame_delta(width, height, rows):
     """A stored (codec 0) message: rows maps a changed row to (mode, residual bytes)."""

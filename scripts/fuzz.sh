@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame frame_delta control_line)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame picture_header frame_delta control_line)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet

@@ -1,4 +1,6 @@
-#include "declared_size.hpp"
+#include "image/declared_size.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,8 +18,9 @@ std::uint32_t le32(std::string_view b, std::size_t at) {
          static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 3])) << 24;
 }
 
+// Megabytes rounded up, as text: any size a header can declare, never converted to an integer.
 std::string mib(double bytes) {
-  return std::to_string(static_cast<long long>(std::ceil(bytes / (1 << 20)))) + " MiB";
+  return fmt::format("{:.0f} MiB", std::ceil(bytes / (1 << 20)));
 }
 
 // A DDS (Microsoft's header: "DDS ", then 124 bytes): levels beyond the halvings of its larger
@@ -102,6 +105,15 @@ double max_expansion(std::string_view format, std::string_view compression) {
 }
 
 Status check_declared(const Declared& d, std::uintmax_t file_size) {
+  // A reader's numbers as it declared them: none below one, no more channels or bytes to one
+  // than any format has.
+  if (d.width < 1 || d.height < 1 || d.depth < 1 || d.channels < 1 || d.channels > 64 ||
+      d.bytes_per_channel < 1 || d.bytes_per_channel > 8) {
+    return Failure{"cannot read: declares " + std::to_string(d.width) + "x" +
+                   std::to_string(d.height) + "x" + std::to_string(d.depth) + " pixels of " +
+                   std::to_string(d.channels) + " channels of " +
+                   std::to_string(d.bytes_per_channel) + " bytes, not a picture"};
+  }
   const std::string sides = std::to_string(d.width) + "x" + std::to_string(d.height) +
                             (d.depth > 1 ? "x" + std::to_string(d.depth) : "");
   if (d.width > kMaxDeclaredSide || d.height > kMaxDeclaredSide || d.depth > kMaxDeclaredSide ||

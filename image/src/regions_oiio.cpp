@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "declared_size.hpp"
+#include "image/declared_size.hpp"
 #include "media_oiio.hpp"
 #include "png_chunks.hpp"
 

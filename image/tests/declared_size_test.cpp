@@ -2,7 +2,7 @@
 // figures worked out by hand here from the format's storage.
 #include <gtest/gtest.h>
 
-#include "declared_size.hpp"
+#include "image/declared_size.hpp"
 
 namespace l2::png_codec {
 namespace {

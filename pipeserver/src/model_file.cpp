@@ -18,8 +18,8 @@
 #include <utility>
 
 #include "gltf_check.hpp"
-#include "nesting_check.hpp"
 #include "model_textures.hpp"
+#include "nesting_check.hpp"
 #include "off_counts.hpp"
 #include "pipeserver/model_file.hpp"
 #include "ply_counts.hpp"

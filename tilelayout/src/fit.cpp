@@ -174,8 +174,8 @@ std::string fit_hint(const Wall& wall, const FitSuggestions& fit) {
     parts.emplace_back(
         fmt::format("framebuffer_width = {} with framebuffer_height = {}{}", w, h, boards),
         changed([&](Wall& x) {
-          x.framebuffer_width = w;
-          x.framebuffer_height = h;
+          x.framebuffer_width = fit.smallest->first;
+          x.framebuffer_height = fit.smallest->second;
         }));
   }
   if (fit.grid_tile) {

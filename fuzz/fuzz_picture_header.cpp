@@ -1,0 +1,65 @@
+// What a picture file's header declares, checked before any reader trusts it
+// (image/declared_size.hpp), on arbitrary bytes: the file's first bytes through check_header at a
+// size of the input's own choosing, and numbers taken from the input as what a reader declared
+// through check_declared. Never a crash or an overflow (UBSan), and every refusal one line
+// saying "cannot read: ".
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "fuzz_check.hpp"
+#include "image/declared_size.hpp"
+
+namespace {
+
+using l2::fuzz::require;
+
+// The next `n` bytes as a little-endian number (zero past the end).
+std::uint64_t take(const std::uint8_t*& data, std::size_t& size, int n) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t b = size > 0 ? *data : 0;
+    if (size > 0) ++data, --size;
+    v |= b << (8 * i);
+  }
+  return v;
+}
+
+void check_refusal(const l2::Status& s, const char* what) {
+  if (s.ok()) return;
+  l2::fuzz::require_one_line(s.reason(), what);
+  require(s.reason().rfind("cannot read: ", 0) == 0, "a refusal starts with \"cannot read: \"");
+}
+
+const char* const kFormats[] = {"pnm", "fits", "pfm",  "bmp", "hdr",     "targa", "dds",
+                                "gif", "tiff", "jpeg", "png", "openexr", "webp",  ""};
+const char* const kCompressions[] = {"", "none", "lzw", "zip", "packbits", "jpeg"};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::uint64_t file_size = take(data, size, 8);
+  const std::string_view header(reinterpret_cast<const char*>(data),
+                                std::min<std::size_t>(size, 4096));
+  const l2::Result<l2::png_codec::HeaderFacts> facts =
+      l2::png_codec::check_header(header, file_size);
+  if (!facts.ok()) check_refusal(l2::Failure{facts.reason()}, "a header refusal is one line");
+
+  l2::png_codec::Declared d;
+  d.format = kFormats[take(data, size, 1) % std::size(kFormats)];
+  d.compression = kCompressions[take(data, size, 1) % std::size(kCompressions)];
+  // Sides as a reader's int holds them: negative ones included.
+  d.width = static_cast<std::int32_t>(take(data, size, 4));
+  d.height = static_cast<std::int32_t>(take(data, size, 4));
+  d.depth = static_cast<std::int32_t>(take(data, size, 4));
+  d.channels = static_cast<std::int32_t>(take(data, size, 4));
+  d.bytes_per_channel = static_cast<int>(take(data, size, 1));
+  d.tile_width = static_cast<std::int32_t>(take(data, size, 4));
+  d.tile_height = static_cast<std::int32_t>(take(data, size, 4));
+  d.tile_depth = static_cast<std::int32_t>(take(data, size, 4));
+  d.decoded_whole = take(data, size, 1) & 1;
+  check_refusal(l2::png_codec::check_declared(d, file_size), "a declared-size refusal is one line");
+  return 0;
+}
