@@ -74,8 +74,9 @@ TEST(LiveRun, PipeserverWithoutTilesIsRefusedBeforeAnythingStarts) {
   const std::string refusal = wall.string() +
                               ": pipeserver 1 gets no tiles (1 display tiles for 2 pipeservers); "
                               "every pipeserver needs a tile (one without scans out idle frames, "
-                              "which never earn READY); what would fit, each alone: [tiling] "
-                              "tile_width = 320 with tile_height = 210; pipeservers.count = 1\n";
+                              "which never earn READY); what would fit, each alone: "
+                              "pipeservers.count = 1; [tiling] tile_width = 320 with "
+                              "tile_height = 210\n";
   EXPECT_EQ(status.code, 1);
   EXPECT_EQ(run.output(), "l2wall: " + refusal);
   EXPECT_EQ(tilelayout_status, 1);
