@@ -32,6 +32,13 @@ ColourTable colour_table_from_gain(const std::array<double, 3>& gain,
   return t;
 }
 
+ColourTable compose(const ColourTable& first, const ColourTable& then) {
+  ColourTable t;
+  for (std::size_t c = 0; c < t.channel.size(); ++c)
+    for (std::size_t i = 0; i < 256; ++i) t.channel[c][i] = then.channel[c][first.channel[c][i]];
+  return t;
+}
+
 void apply_colour(const ColourTable& table, const RgbImage& in, RgbImage& out) {
   if (&in != &out && (out.width() != in.width() || out.height() != in.height()))
     out = RgbImage::unfilled(in.width(), in.height());

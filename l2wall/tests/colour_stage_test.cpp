@@ -44,5 +44,41 @@ TEST(ColourStage, AppliesEachDisplaysOwnTable) {
   EXPECT_FALSE(none.applies());
 }
 
+// Two 4x1 projectors overlapping by 2 columns (display 1 at canvas column 2), blended linearly:
+// over the overlap display 0 weighs 1.5/2 and 0.5/2 of each byte, display 1 the rest (rounded,
+// halves up); display 1 also adds 1 to green, after its blend.
+TEST(ColourStage, BlendsOverlappingProjectorsThenMatchesColour) {
+  Wall wall;
+  wall.blend.on = true;
+  wall.displays.resize(2);
+  for (int i = 0; i < 2; ++i) {
+    Display& d = wall.displays[static_cast<std::size_t>(i)];
+    d.id = i;
+    d.width = 4;
+    d.height = 1;
+    d.canvas_x = 2 * i;
+  }
+  ColourMatch& green = wall.displays[1].colour;
+  green.kind = ColourMatch::Kind::Gain;
+  green.offset = {0, 1, 0};
+  green.table = colour_table_from_gain(green.gain, green.offset);
+
+  std::vector<RgbImage> raw(2, RgbImage(4, 1, Rgb{200, 200, 10}));
+  const ColourStage stage(wall);
+  EXPECT_TRUE(stage.applies());
+  const DisplayPictures shown =
+      stage.apply([&](int d) -> const RgbImage& { return raw[static_cast<std::size_t>(d)]; });
+  const RgbImage& zero = shown(0);
+  EXPECT_EQ(zero.at(0, 0), (Rgb{200, 200, 10}));
+  EXPECT_EQ(zero.at(1, 0), (Rgb{200, 200, 10}));
+  EXPECT_EQ(zero.at(2, 0), (Rgb{150, 150, 8}));  // 0.75: 150, 7.5 -> 8
+  EXPECT_EQ(zero.at(3, 0), (Rgb{50, 50, 3}));    // 0.25: 50, 2.5 -> 3
+  const RgbImage& one = shown(1);
+  EXPECT_EQ(one.at(0, 0), (Rgb{50, 51, 3}));
+  EXPECT_EQ(one.at(1, 0), (Rgb{150, 151, 8}));
+  EXPECT_EQ(one.at(2, 0), (Rgb{200, 201, 10}));
+  EXPECT_EQ(one.at(3, 0), (Rgb{200, 201, 10}));
+}
+
 }  // namespace
 }  // namespace l2

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "image/png_io.hpp"
 #include "wall_run.hpp"
@@ -45,6 +47,56 @@ TEST(LiveRunHanging, AGreyPictureOnTheProjectorsShowsNoStampDot) {
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   EXPECT_NE(run.output().find("latency: 1 frame "), std::string::npos) << run.output();
   EXPECT_EQ(wrong_pixels(run, 2, 2, [](int, int, int) { return Rgb{128, 128, 128}; }), 0);
+  expect_clean(run);
+  fs::remove_all(dir);
+}
+
+// The acceptance test of edge blending (walls/projectors-2x1-blended.toml: 1024x768
+// projectors, display 1 at canvas column 960, blend gamma 2.2): a uniform grey picture, and over
+// the 64 overlap columns the two projectors' light, (a/255)^2.2 + (b/255)^2.2, taken back to a
+// code value, is the picture's 128 within one; everywhere else each shows 128 as it is; both
+// paths the same bytes.
+TEST(LiveRunHanging, BlendedProjectorsAddUpToThePictureInLinearLight) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-blend-{}", getpid());
+  fs::create_directories(dir);
+  write_png(dir / "grey.png", RgbImage(64, 48, Rgb{128, 128, 128}));
+  WallRun run("blend",
+              {"--wall", (fs::path(L2_SOURCE_DIR) / "walls/projectors-2x1-blended.toml").string(),
+               "--scene", "picture", "--content", (dir / "grey.png").string(), "--fit", "stretch",
+               "--frames", "3", "--refresh", "0", "--path", "both", "--compare"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  const double gamma = 2.2;
+  const fs::path frame = run.out() / "frame-2";
+  const RgbImage zero = read_png(frame / "display-0.png"), one = read_png(frame / "display-1.png");
+  ASSERT_EQ(zero.width(), 1024);
+  ASSERT_EQ(one.width(), 1024);
+  EXPECT_TRUE(read_png(frame / "display-0-vizserver.png") == zero);
+  EXPECT_TRUE(read_png(frame / "display-1-vizserver.png") == one);
+  long outside_wrong = 0, overlap_wrong = 0;
+  double worst = 0;
+  for (int y = 0; y < 768; ++y) {
+    for (int x = 0; x < 960; ++x) {
+      outside_wrong += !(zero.at(x, y) == Rgb{128, 128, 128});
+      outside_wrong += !(one.at(x + 64, y) == Rgb{128, 128, 128});
+    }
+    for (int u = 960; u < 1024; ++u) {
+      const Rgb a = zero.at(u, y), b = one.at(u - 960, y);
+      for (const auto& [ca, cb] : {std::pair{a.r, b.r}, std::pair{a.g, b.g}, std::pair{a.b, b.b}}) {
+        const double light = std::pow(ca / 255.0, gamma) + std::pow(cb / 255.0, gamma);
+        const double miss = std::abs(255 * std::pow(light, 1 / gamma) - 128);
+        worst = std::max(worst, miss);
+        overlap_wrong += miss > 1;
+      }
+    }
+  }
+  EXPECT_EQ(outside_wrong, 0);
+  EXPECT_EQ(overlap_wrong, 0) << "worst " << worst;
+  // Each ramps down toward its own edge: at its last column a weight of 0.5/64, so 128 *
+  // (1/128)^(1/2.2) = 14.1; at the overlap's far side 63.5/64, 128 * 0.9965 = 127.5.
+  EXPECT_LT(zero.at(1023, 0).r, 20);
+  EXPECT_GE(zero.at(960, 0).r, 127);
+  EXPECT_LT(one.at(0, 0).r, 20);
   expect_clean(run);
   fs::remove_all(dir);
 }

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <set>
+#include <vector>
 
 #include "command_line/printable.hpp"
+#include "tilelayout/blend_map.hpp"
 #include "tilelayout/coverage.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/planner.hpp"
@@ -39,6 +41,25 @@ std::string colour(const Display& d) {
       break;
   }
   return "";
+}
+
+// How a display's pixels are blended with the displays it overlaps, when they are: "; blend gamma
+// 2.2 over 64 columns at the right edge" (edges of its canvas rectangle, as it hangs).
+std::string blend(const Wall& wall, const Display& d) {
+  if (!wall.blend.on) return "";
+  const BlendRamps r = blend_ramps(wall, d.id);
+  std::vector<std::string> edges;
+  const auto edge = [&](int width, const char* unit, const char* side) {
+    if (width > 0) edges.push_back(fmt::format("{} {} at the {} edge", width, unit, side));
+  };
+  edge(r.left, "columns", "left");
+  edge(r.right, "columns", "right");
+  edge(r.top, "rows", "top");
+  edge(r.bottom, "rows", "bottom");
+  if (edges.empty()) return "";
+  const std::string how =
+      wall.blend.gamma == 1.0 ? std::string("linear") : fmt::format("gamma {}", wall.blend.gamma);
+  return fmt::format("; blend {} over {}", how, fmt::join(edges, ", "));
 }
 
 const char* const kTilingNames[] = {"grid", "list", "kd", "strips"};
@@ -141,10 +162,11 @@ void displays(const TileLayout& layout, std::string& out) {
     }
     out += fmt::format(
         "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
-        "by {} tiles from pipeservers {}{}\n",
+        "by {} tiles from pipeservers {}{}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
-        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), colour(d));
+        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")),
+        blend(layout.wall, d), colour(d));
   }
 }
 

@@ -14,7 +14,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   const toml::table doc = parse_toml(toml_text, source);
   const TomlFields top(doc, "", source,
                        {"name", "canvas", "display_grid", "display", "tiling", "pipeservers",
-                        "mesh", "depth", "overlay", "balance"});
+                        "mesh", "depth", "overlay", "balance", "blend"});
   Wall wall;
   wall.source = path_for_messages;
   wall.name = top.string("name").value_or(path_for_messages.stem().string());
@@ -24,6 +24,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_pipeservers_and_mesh(top, wall);
   read_compositing(top, wall);
   read_balance(top, wall);
+  read_blend(top, wall);
   return wall;
 }
 

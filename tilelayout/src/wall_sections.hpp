@@ -22,5 +22,8 @@ void read_pipeservers_and_mesh(const TomlFields& top, Wall& wall);
 void read_compositing(const TomlFields& top, Wall& wall);
 // [balance] (optional): needs [depth] and [overlay] read, which it cannot be combined with.
 void read_balance(const TomlFields& top, Wall& wall);
+// `blend` (optional, top level or a [blend] section): needs the displays, whose overlaps it
+// blends.
+void read_blend(const TomlFields& top, Wall& wall);
 
 }  // namespace l2

@@ -191,7 +191,7 @@ TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "tilelayout: " + keyed.string() +
                        ":1: \\x1b[31mred: unknown key (valid here: name, canvas, display_grid, "
-                       "display, tiling, pipeservers, mesh, depth, overlay, balance)\n");
+                       "display, tiling, pipeservers, mesh, depth, overlay, balance, blend)\n");
 }
 
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {

@@ -36,6 +36,10 @@ inline constexpr int kMaxOffset = 255;
 ColourTable colour_table_from_gain(const std::array<double, 3>& gain,
                                    const std::array<int, 3>& offset);
 
+// The table that looks a byte up in `first`, then the result in `then`: two corrections applied
+// in one lookup.
+ColourTable compose(const ColourTable& first, const ColourTable& then);
+
 // `out` becomes `in` with every byte looked up in its channel's table (resized to `in`'s size
 // when it differs). `in` and `out` may be the same picture.
 void apply_colour(const ColourTable& table, const RgbImage& in, RgbImage& out);

@@ -1,23 +1,33 @@
-// Colour matching where a display's pixels leave the wall (docs/wall-file.md, "Colour
-// matching"): each display's table (Display::colour) applied to the pictures a display path
-// hands out, so what is shown (--show), saved (frame-<k>/, fault/), compared (--path both
-// --compare) and published (--http) is the matched picture.
+// The display stage: what a display does to its pixels where they leave the wall — edge blending
+// of overlapping projectors (docs/wall-file.md, "Blending overlapping projectors") and colour
+// matching ("Colour matching") — applied to the pictures a display path hands out, so what is
+// shown (--show), saved (frame-<k>/, fault/), compared (--path both --compare) and published
+// (--http) is the picture the display shows.
 //
 // Both display paths call this one class on their pictures (DviPath, VizPath), and nothing
-// before it sees the colour: the emulator's front buffers and the compositing server's frames
-// stay as routed, because the DVI path reads the frame stamps back from the front buffers
+// before it sees blend or colour: the emulator's front buffers and the compositing server's
+// frames stay as routed, because the DVI path reads the frame stamps back from the front buffers
 // (board_column.hpp) and the verifier judges routing on reassembled pixels, neither of which a
 // table may change. Applying it where the pictures leave both paths also makes --compare check
-// the matched bytes on both sides with the same code.
+// the shown bytes on both sides with the same code.
 //
-// Owns: each display's table and the matched picture it last handed out. A display whose table
-// changes nothing hands out the path's own picture, at no cost.
+// Blending is this class's, not a stage of its own beside it, because both are byte tables
+// applied to the same pictures at the same place: a blended display's tables are its blend table
+// for each weight composed with its colour table, so each pixel is looked up once. Blend comes
+// first: the weights share out the picture's light as the content means it, and colour matching
+// then corrects what each projector makes of the code values it is sent.
+//
+// Owns: each display's tables (one, or one per blend weight with the weight of every pixel) and
+// the picture it last handed out. A display whose tables change nothing hands out the path's own
+// picture, at no cost.
 #pragma once
 
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "image/colour_table.hpp"
+#include "image/table_map.hpp"
 #include "l2wall/run_pictures.hpp"
 #include "tilelayout/wall.hpp"
 
@@ -25,7 +35,7 @@ namespace l2 {
 
 class ColourStage {
  public:
-  ColourStage() = default;  // a wall without colour matching
+  ColourStage() = default;  // a wall without colour matching or blending
   explicit ColourStage(const Wall& wall);
 
   // Whether any display changes its pixels.
@@ -37,10 +47,11 @@ class ColourStage {
 
  private:
   struct Matched {
-    ColourTable table;
+    ColourTable table;            // a display that does not blend: its colour table
+    std::optional<TableMap> map;  // one that does: blend and colour, per pixel
     RgbImage picture;
   };
-  // By display id, only the displays whose table changes something. Shared, so the pictures
+  // By display id, only the displays whose tables change something. Shared, so the pictures
   // handed out by a const path can be written, and outlive a moved stage.
   std::shared_ptr<std::map<int, Matched>> tables_;
 };

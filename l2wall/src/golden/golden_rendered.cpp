@@ -5,9 +5,9 @@
 #include <fstream>
 
 #include "base/child_process.hpp"
-#include "image/colour_table.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
+#include "l2wall/colour_stage.hpp"
 
 namespace l2 {
 
@@ -155,11 +155,13 @@ EntryDisplays produce_rendered(const TileLayout& layout, const std::filesystem::
     out.reference.push_back(read_png(reference / (name + ".png")));
   }
   stamp_references(layout, entry.frame, out.reference);
-  // The live run's saved displays are colour matched (l2wall/colour_stage.hpp), stamp and all:
-  // the reference goes through each display's same table, after its stamps.
-  for (std::size_t i = 0; i < layout.wall.displays.size(); ++i) {
-    const ColourMatch& colour = layout.wall.displays[i].colour;
-    if (colour.applies()) apply_colour(colour.table, out.reference[i], out.reference[i]);
+  // The live run's saved displays are blended and colour matched (l2wall/colour_stage.hpp),
+  // stamp and all: the reference goes through the same stage, after its stamps.
+  const ColourStage stage(layout.wall);
+  if (stage.applies()) {
+    const DisplayPictures shown = stage.apply(
+        [&](int d) -> const RgbImage& { return out.reference[static_cast<std::size_t>(d)]; });
+    for (std::size_t i = 0; i < out.reference.size(); ++i) out.reference[i] = shown(out.ids[i]);
   }
   out.reference_name = "reference render";
   return out;

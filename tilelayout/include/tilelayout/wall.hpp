@@ -107,6 +107,18 @@ struct BalanceSpec {
   bool balancing() const { return mode != BalanceMode::Static || heaviest_first; }
 };
 
+// `blend` (docs/wall-file.md, "Blending overlapping projectors"): where displays' canvas
+// rectangles overlap (projectors, negative mullions), each display's pixels are weighted so that
+// their light adds up to the picture in linear light at `gamma` (`"linear"`: 1). The maps are
+// generated from the displays' rectangles (tilelayout/blend_map.hpp).
+inline constexpr double kMaxBlendGamma = 4.0;
+
+struct BlendSpec {
+  bool on = false;
+  double gamma = 1.0;  // 1..kMaxBlendGamma
+  int line = 0;        // of `blend` in the wall file, for errors found later
+};
+
 struct Wall {
   std::filesystem::path source;  // the wall file, for error messages; empty when built in code
   std::string name;
@@ -124,6 +136,7 @@ struct Wall {
   int depth_layers = 0;
   std::optional<Overlay> overlay;
   BalanceSpec balance;
+  BlendSpec blend;
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
   int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };
