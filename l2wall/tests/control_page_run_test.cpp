@@ -114,6 +114,24 @@ ChildProcess start_view(const WallRun& run, const std::string& args, const fs::p
                                    run.out().string(), args, log.string())});
 }
 
+// The port and token `l2wall view` prints to `log` once it serves (waited for up to a minute);
+// empty when it printed none.
+struct ViewAddress {
+  int port = 0;
+  std::string token, said;
+};
+ViewAddress view_address(const fs::path& log) {
+  const std::regex printed("l2wall view: http://127\\.0\\.0\\.1:(\\d+)/\\?token=([0-9a-f]+)");
+  std::smatch m;
+  ViewAddress a;
+  for (int i = 0; i < 3000 && !std::regex_search(a.said = slurp(log), m, printed); ++i)
+    std::this_thread::sleep_for(20ms);
+  if (m.empty()) return a;
+  a.port = std::stoi(m[1]);
+  a.token = m[2];
+  return a;
+}
+
 // `l2wall view OUT`: a finished run's folder served as the page serves a live one, nothing to
 // steer.
 TEST(ControlPageView, ServesAFinishedRun) {
@@ -121,13 +139,9 @@ TEST(ControlPageView, ServesAFinishedRun) {
   ASSERT_EQ(run.wait(60s).code, 0) << run.output();
   const fs::path log = run.out().parent_path() / "view.txt";
   ChildProcess view = start_view(run, "--http 127.0.0.1:0", log);
-  const std::regex printed("l2wall view: http://127\\.0\\.0\\.1:(\\d+)/\\?token=([0-9a-f]+)");
-  std::smatch m;
-  std::string text;
-  for (int i = 0; i < 3000 && !std::regex_search(text = slurp(log), m, printed); ++i)
-    std::this_thread::sleep_for(20ms);
-  ASSERT_FALSE(m.empty()) << text;
-  httplib::Client http("127.0.0.1", std::stoi(m[1]));
+  const ViewAddress at = view_address(log);
+  ASSERT_GT(at.port, 0) << at.said;
+  httplib::Client http("127.0.0.1", at.port);
   const auto state = http.Get("/api/state");
   ASSERT_TRUE(state);
   const auto s = nlohmann::json::parse(state->body);
@@ -150,7 +164,7 @@ TEST(ControlPageView, ServesAFinishedRun) {
   EXPECT_EQ(picture->body, slurp(run.out() / "frame-2/display-1.png"));
   EXPECT_EQ(http.Get("/api/picture/..~summary.txt")->status, 404);
 
-  const auto steer = http.Post(fmt::format("/api/pause?token={}", m[2].str()), "", "text/plain");
+  const auto steer = http.Post(fmt::format("/api/pause?token={}", at.token), "", "text/plain");
   ASSERT_TRUE(steer);
   EXPECT_EQ(steer->status, 409);
   EXPECT_EQ(steer->body, R"({"error":"the run is over: nothing to steer"})");
@@ -170,13 +184,9 @@ TEST(ControlPageView, ShowsATurnedPanelAsItHangs) {
   ASSERT_EQ(run.wait(60s).code, 0) << run.output();
   const fs::path log = run.out().parent_path() / "view-turned.txt";
   ChildProcess view = start_view(run, fmt::format("--wall '{}' --http 127.0.0.1:0", wall), log);
-  const std::regex printed("l2wall view: http://127\\.0\\.0\\.1:(\\d+)/");
-  std::smatch m;
-  std::string text;
-  for (int i = 0; i < 3000 && !std::regex_search(text = slurp(log), m, printed); ++i)
-    std::this_thread::sleep_for(20ms);
-  ASSERT_FALSE(m.empty()) << text;
-  httplib::Client http("127.0.0.1", std::stoi(m[1]));
+  const ViewAddress at = view_address(log);
+  ASSERT_GT(at.port, 0) << at.said;
+  httplib::Client http("127.0.0.1", at.port);
   const auto state = http.Get("/api/state");
   ASSERT_TRUE(state);
   const auto s = nlohmann::json::parse(state->body);
