@@ -53,7 +53,4 @@ std::string emit_wall(const WallDraft& draft, const std::string& file,
 [[noreturn]] void too_many_displays(const std::string& file, const std::string& where,
                                     long long count);
 
-// A TOML basic string: quoted, with quotes, backslashes and control characters escaped.
-std::string toml_string(const std::string& s);
-
 }  // namespace l2

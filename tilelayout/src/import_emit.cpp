@@ -10,6 +10,7 @@
 #include "tilelayout/fit.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/tile_layout.hpp"
+#include "tilelayout/toml_text.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -57,7 +58,7 @@ std::string render(const WallDraft& d, const std::vector<DraftDisplay>& displays
     t += "#\n# What the wall file cannot carry, or had to guess:\n";
     for (const std::string& n : d.notes) t += "#   - " + comment_text(n) + "\n";
   }
-  t += fmt::format("\nname = {}\n", toml_string(d.name));
+  t += fmt::format("\nname = {}\n", toml_quoted(d.name));
   if (d.grid) {
     const DraftGrid& g = *d.grid;
     t += fmt::format(
@@ -121,22 +122,6 @@ void too_many_displays(const std::string& file, const std::string& where, long l
       fmt::format("{}: {}: {} displays, more than the {} a wall can address (ids "
                   "0..{})",
                   file, where, count, kMaxImportedDisplays, kMaxImportedDisplays - 1));
-}
-
-std::string toml_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20 || u == 0x7f) {
-      out += fmt::format("\\u{:04X}", u);
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 std::string emit_wall(const WallDraft& draft, const std::string& file,

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "pipeserver/scene.hpp"
+#include "tilelayout/toml_text.hpp"
 
 namespace l2 {
 
@@ -234,30 +235,6 @@ GoldenManifest load_manifest(const std::filesystem::path& file) {
   return parse_manifest(text.str(), file.string());
 }
 
-namespace {
-
-// A TOML basic string. TOML forbids control characters in one (tab aside), so they are escaped
-// too: a GL renderer name with a newline in it would otherwise make a manifest nobody can read.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (c == '\n' || c == '\t') {
-      out += c == '\n' ? "\\n" : "\\t";
-    } else if (u < 0x20 || u == 0x7f) {
-      out += fmt::format("\\u{:04X}", u);
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-}  // namespace
-
 std::string format_manifest(const GoldenManifest& manifest) {
   std::string out =
       "# Golden images of display reassembly: for each entry, the displays of one wall showing\n"
@@ -267,9 +244,9 @@ std::string format_manifest(const GoldenManifest& manifest) {
   for (const GoldenEntry& e : manifest.entries) {
     const bool rendered = e.kind == GoldenKind::Rendered;
     out += fmt::format("\n[[entry]]\nname = {}\nkind = {}\nwall = {}\nscene = {}\nframe = {}\n",
-                       quoted(e.name), rendered ? "\"rendered\"" : "\"routing-only\"",
-                       quoted(e.wall), quoted(e.scene), e.frame);
-    if (!e.session.empty()) out += fmt::format("session = {}\n", quoted(e.session));
+                       toml_quoted(e.name), rendered ? "\"rendered\"" : "\"routing-only\"",
+                       toml_quoted(e.wall), toml_quoted(e.scene), e.frame);
+    if (!e.session.empty()) out += fmt::format("session = {}\n", toml_quoted(e.session));
     out += e.vizserver ? "paths = [\"dvi\", \"vizserver\"]\n" : "paths = [\"dvi\"]\n";
     out += e.tolerance.exact ? "tolerance = \"exact\"\n"
                              : fmt::format(
@@ -277,8 +254,8 @@ std::string format_manifest(const GoldenManifest& manifest) {
                                    "beyond_one_percent = {} }}\n",
                                    e.tolerance.differing_percent, e.tolerance.beyond_one_percent);
     if (rendered) {
-      out += fmt::format("mesa = {}\ngl_version = {}\ngl_renderer = {}\n", quoted(e.mesa),
-                         quoted(e.gl_version), quoted(e.gl_renderer));
+      out += fmt::format("mesa = {}\ngl_version = {}\ngl_renderer = {}\n", toml_quoted(e.mesa),
+                         toml_quoted(e.gl_version), toml_quoted(e.gl_renderer));
     }
   }
   return out;
