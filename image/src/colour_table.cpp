@@ -21,10 +21,11 @@ ColourTable colour_table_from_gain(const std::array<double, 3>& gain,
                                    const std::array<int, 3>& offset) {
   ColourTable t;
   for (std::size_t c = 0; c < t.channel.size(); ++c) {
-    // Integers from here on: 255 * kMaxGain * kGainOne fits an int64 many times over.
-    const auto g = static_cast<std::int64_t>(std::llround(gain[c] * kGainOne));
+    // Integers from here on: 255 * kMaxGain * 2^32 fits an int64 many times over.
+    const auto g = static_cast<std::int64_t>(std::llround(std::ldexp(gain[c], kGainShift)));
+    constexpr std::int64_t kHalf = std::int64_t{1} << (kGainShift - 1);
     for (std::int64_t in = 0; in < 256; ++in) {
-      const std::int64_t scaled = (in * g + kGainOne / 2) / kGainOne;  // both >= 0: floor
+      const std::int64_t scaled = (in * g + kHalf) >> kGainShift;  // both >= 0: floor
       const std::int64_t out = std::clamp<std::int64_t>(scaled + offset[c], 0, 255);
       t.channel[c][static_cast<std::size_t>(in)] = static_cast<std::uint8_t>(out);
     }

@@ -127,19 +127,8 @@ std::vector<std::uint16_t> blend_weights(const Wall& wall, int display) {
 }
 
 ColourTable blend_table(int weight, double gamma) {
-  // The gain w^(1/gamma) in 1/2^32, not colour matching's 1/65536: a coarser gain rounds
-  // in * w^(1/gamma) the wrong way where it lies close to a half, and at gamma 1, where w is a
-  // whole number of 4096ths, this one is exact, so halves round up as documented.
-  constexpr int kShift = 32;
   const double gain = std::pow(static_cast<double>(weight) / kBlendOne, 1.0 / gamma);
-  const auto g = static_cast<std::uint64_t>(std::llround(std::ldexp(gain, kShift)));
-  ColourTable t;
-  for (std::uint64_t in = 0; in < 256; ++in) {
-    const auto out =
-        static_cast<std::uint8_t>((in * g + (std::uint64_t{1} << (kShift - 1))) >> kShift);
-    for (auto& c : t.channel) c[in] = out;
-  }
-  return t;
+  return colour_table_from_gain({gain, gain, gain}, {0, 0, 0});
 }
 
 std::optional<TableMap> display_tables(const Wall& wall, int display) {

@@ -24,15 +24,18 @@ struct ColourTable {
   friend bool operator==(const ColourTable&, const ColourTable&) = default;
 };
 
-// Fixed point of a gain: the gain is taken to 1/kGainOne, so the table is exact integer
-// arithmetic, the same on every machine and compiler.
-inline constexpr int kGainOne = 65536;
+// Fixed point of a gain: the gain is taken to 1/2^kGainShift, so the table is exact integer
+// arithmetic, the same on every machine and compiler. The step is that fine so that in * gain
+// rounds the right way even where it lies close to a half (an edge blend's gains are powers of
+// whole numbers of 4096ths, and at gamma 1 are then exact).
+inline constexpr int kGainShift = 32;
 inline constexpr double kMaxGain = 4.0;
 inline constexpr int kMaxOffset = 255;
 
-// out = clamp(floor((in * G + kGainOne / 2) / kGainOne) + offset, 0, 255), G = round(gain *
-// kGainOne) (halves away from zero): in * gain rounded to the nearest integer, halves up, then
-// the offset. Gains 0..kMaxGain, offsets -kMaxOffset..kMaxOffset (callers check).
+// out = clamp(floor((in * G + 2^31) / 2^32) + offset, 0, 255), G = round(gain * 2^32) (halves
+// away from zero): in * gain rounded to the nearest integer, halves up, then the offset.
+// Gains 0..kMaxGain, offsets -kMaxOffset..kMaxOffset (callers check). Colour matching and edge
+// blending both make their tables here.
 ColourTable colour_table_from_gain(const std::array<double, 3>& gain,
                                    const std::array<int, 3>& offset);
 
