@@ -15,17 +15,20 @@ ColourStage::ColourStage(const Wall& wall) {
   }
 }
 
-DisplayPictures ColourStage::apply(DisplayPictures raw) const {
+DisplayPictures ColourStage::apply(DisplayPictures raw, std::optional<int> frame) const {
   if (!tables_) return raw;
-  return [tables = tables_, raw = std::move(raw)](int display) -> const RgbImage& {
-    const RgbImage& picture = raw(display);
+  return [tables = tables_, raw = std::move(raw), frame](int display) -> const RgbImage& {
     const auto it = tables->find(display);
-    if (it == tables->end() || picture.empty()) return picture;
+    if (it == tables->end()) return raw(display);
     Matched& m = it->second;
+    if (frame && m.frame == frame) return m.picture;
+    const RgbImage& picture = raw(display);
+    if (picture.empty()) return picture;
     if (m.map)
       apply_table_map(*m.map, picture, m.picture);
     else
       apply_colour(m.table, picture, m.picture);
+    m.frame = frame;
     return m.picture;
   };
 }

@@ -44,6 +44,33 @@ TEST(ColourStage, AppliesEachDisplaysOwnTable) {
   EXPECT_FALSE(none.applies());
 }
 
+// A frame's pictures asked for again (saved, then compared, then published) are made once: the
+// path's picture is read only the first time for that frame, and again for a new frame or where
+// the caller did not say which frame it is.
+TEST(ColourStage, MakesEachDisplaysPictureOfAFrameOnce) {
+  Wall wall;
+  wall.displays.resize(1);
+  ColourMatch& c = wall.displays[0].colour;
+  c.kind = ColourMatch::Kind::Gain;
+  c.offset = {1, 0, 0};
+  c.table = colour_table_from_gain(c.gain, c.offset);
+  RgbImage raw(1, 1, Rgb{10, 20, 30});
+  int reads = 0;
+  const DisplayPictures path = [&](int) -> const RgbImage& {
+    ++reads;
+    return raw;
+  };
+  const ColourStage stage(wall);
+  EXPECT_EQ(stage.apply(path, 7)(0).at(0, 0), (Rgb{11, 20, 30}));
+  raw.set(0, 0, {50, 20, 30});
+  EXPECT_EQ(stage.apply(path, 7)(0).at(0, 0), (Rgb{11, 20, 30}));  // frame 7 as made
+  EXPECT_EQ(reads, 1);
+  EXPECT_EQ(stage.apply(path, 8)(0).at(0, 0), (Rgb{51, 20, 30}));
+  EXPECT_EQ(stage.apply(path)(0).at(0, 0), (Rgb{51, 20, 30}));
+  EXPECT_EQ(stage.apply(path, 8)(0).at(0, 0), (Rgb{51, 20, 30}));  // made again: unkeyed between
+  EXPECT_EQ(reads, 4);
+}
+
 // Two 4x1 projectors overlapping by 2 columns (display 1 at canvas column 2), blended linearly:
 // over the overlap display 0 weighs 1.5/2 and 0.5/2 of each byte, display 1 the rest (rounded,
 // halves up); display 1 also adds 1 to green, after its blend.

@@ -18,8 +18,10 @@
 // then corrects what each projector makes of the code values it is sent.
 //
 // Owns: each display's tables (one, or one per blend weight with the weight of every pixel) and
-// the picture it last handed out. A display whose tables change nothing hands out the path's own
-// picture, at no cost.
+// the picture it last handed out, with the frame it is of when the caller said: a frame's
+// pictures are asked for by several users (saved, compared, published to the page), and the
+// tables pass over every pixel, so each display's picture of a frame is made once. A display
+// whose tables change nothing hands out the path's own picture, at no cost.
 #pragma once
 
 #include <map>
@@ -42,14 +44,17 @@ class ColourStage {
   bool applies() const { return tables_ != nullptr; }
   // `raw`'s pictures as the displays show them. A picture handed out stays valid until the same
   // display is asked again through any pictures of this stage (and while `raw`'s is). An empty
-  // picture (a display lost with its rank) stays empty.
-  DisplayPictures apply(DisplayPictures raw) const;
+  // picture (a display lost with its rank) stays empty. `frame`: the application frame `raw`
+  // shows, where the caller knows it for every display; a display asked again for the same frame
+  // gets the picture made the first time, without `raw`'s being read.
+  DisplayPictures apply(DisplayPictures raw, std::optional<int> frame = std::nullopt) const;
 
  private:
   struct Matched {
     ColourTable table;            // a display that does not blend: its colour table
     std::optional<TableMap> map;  // one that does: blend and colour, per pixel
     RgbImage picture;
+    std::optional<int> frame;  // the frame `picture` is of, where its caller said
   };
   // By display id, only the displays whose tables change something. Shared, so the pictures
   // handed out by a const path can be written, and outlive a moved stage.

@@ -54,8 +54,8 @@ class DviPath final : public DisplayPath {
   }
 
   // The columns' front buffers, colour matched as they leave (colour_stage.hpp).
-  DisplayPictures frame_pictures(int, const RunWatch&) override {
-    return colour_.apply(columns_->pictures());
+  DisplayPictures frame_pictures(int frame, const RunWatch&) override {
+    return colour_.apply(columns_->pictures(), frame);
   }
   std::optional<DisplayPictures> shown() const override {
     auto pictures = columns_->shown();

@@ -36,7 +36,7 @@ class VizPath final : public DisplayPath {
 
   DisplayPictures frame_pictures(int frame, const RunWatch& watch) override {
     wait_for(frame, watch);
-    return colour_.apply(compositors_->pictures(frame));
+    return colour_.apply(compositors_->pictures(frame), frame);
   }
   // Far displays stay where they are: composed is enough.
   void take_frame(int frame, const RunWatch& watch) override { wait_for(frame, watch); }
