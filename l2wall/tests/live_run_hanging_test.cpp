@@ -36,8 +36,7 @@ long wrong_pixels(const WallRun& run, int frame, int displays, Expected expected
 }
 
 TEST(LiveRunHanging, AGreyPictureOnTheProjectorsShowsNoStampDot) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-grey-{}", getpid());
-  fs::create_directories(dir);
+  const ScratchDir dir("grey");
   write_png(dir / "grey.png", RgbImage(64, 48, Rgb{128, 128, 128}));
   WallRun run("grey",
               {"--wall", (fs::path(L2_SOURCE_DIR) / "walls/projectors-2x1.toml").string(),
@@ -48,7 +47,6 @@ TEST(LiveRunHanging, AGreyPictureOnTheProjectorsShowsNoStampDot) {
   EXPECT_NE(run.output().find("latency: 1 frame "), std::string::npos) << run.output();
   EXPECT_EQ(wrong_pixels(run, 2, 2, [](int, int, int) { return Rgb{128, 128, 128}; }), 0);
   expect_clean(run);
-  fs::remove_all(dir);
 }
 
 // The acceptance test of edge blending (walls/projectors-2x1-blended.toml: 1024x768
@@ -57,8 +55,7 @@ TEST(LiveRunHanging, AGreyPictureOnTheProjectorsShowsNoStampDot) {
 // code value, is the picture's 128 within one; everywhere else each shows 128 as it is; both
 // paths the same bytes.
 TEST(LiveRunHanging, BlendedProjectorsAddUpToThePictureInLinearLight) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-blend-{}", getpid());
-  fs::create_directories(dir);
+  const ScratchDir dir("blend");
   write_png(dir / "grey.png", RgbImage(64, 48, Rgb{128, 128, 128}));
   WallRun run("blend",
               {"--wall", (fs::path(L2_SOURCE_DIR) / "walls/projectors-2x1-blended.toml").string(),
@@ -98,7 +95,6 @@ TEST(LiveRunHanging, BlendedProjectorsAddUpToThePictureInLinearLight) {
   EXPECT_GE(zero.at(960, 0).r, 127);
   EXPECT_LT(one.at(0, 0).r, 20);
   expect_clean(run);
-  fs::remove_all(dir);
 }
 
 // Canvas pixel (x, y) as a colour that names it.
@@ -107,19 +103,23 @@ Rgb position(int x, int y) {
           static_cast<std::uint8_t>((x >> 8 & 15) | (y >> 8 & 15) << 4)};
 }
 
-TEST(LiveRunHanging, TurnedAndMirroredPanelsShowTheCanvasAsDocumented) {
-  // walls/mixed-hang.toml: 1280x720 panels; display 0 as it is at 0,0; display 1 at 270 at
-  // 1320,0 (720x1280 on the canvas); display 2 at 180 and flipped horizontally at 0,760.
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-hang-{}", getpid());
-  fs::create_directories(dir);
-  RgbImage canvas(2040, 1480);
+// A canvas-sized picture of positions, shown at 1:1 with --fit stretch.
+std::string write_positions(const ScratchDir& dir, int width, int height) {
+  RgbImage canvas(width, height);
   for (int y = 0; y < canvas.height(); ++y)
     for (int x = 0; x < canvas.width(); ++x) canvas.set(x, y, position(x, y));
   write_png(dir / "positions.png", canvas);
-  WallRun run("hang",
-              {"--wall", (fs::path(L2_SOURCE_DIR) / "walls/mixed-hang.toml").string(), "--scene",
-               "picture", "--content", (dir / "positions.png").string(), "--fit", "stretch",
-               "--frames", "2", "--refresh", "0", "--path", "both", "--compare"});
+  return (dir / "positions.png").string();
+}
+
+TEST(LiveRunHanging, TurnedAndMirroredPanelsShowTheCanvasAsDocumented) {
+  // walls/mixed-hang.toml: 1280x720 panels; display 0 as it is at 0,0; display 1 at 270 at
+  // 1320,0 (720x1280 on the canvas); display 2 at 180 and flipped horizontally at 0,760.
+  const ScratchDir dir("hang");
+  const std::string positions = write_positions(dir, 2040, 1480);
+  WallRun run("hang", {"--wall", (fs::path(L2_SOURCE_DIR) / "walls/mixed-hang.toml").string(),
+                       "--scene", "picture", "--content", positions, "--fit", "stretch", "--frames",
+                       "2", "--refresh", "0", "--path", "both", "--compare"});
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   const auto expected = [](int d, int x, int y) {
@@ -129,24 +129,24 @@ TEST(LiveRunHanging, TurnedAndMirroredPanelsShowTheCanvasAsDocumented) {
   };
   EXPECT_EQ(wrong_pixels(run, 1, 3, expected), 0);
   expect_clean(run);
-  fs::remove_all(dir);
 }
 
 // The position picture at 1:1 on the colour-matched wall (walls/colour-matched-2x2.toml: 320x240
 // panels, 10-pixel mullions): each display pixel is its canvas pixel through the display's
 // tables, worked out here from the wall file's numbers and the table file's lines: display 0 by
-// gain [1.0, 0.96, 0.92] and offset [0, 0, 4] (docs/wall-file.md: G = round(gain x 65536), out =
-// clamp(floor((in G + 32768) / 65536) + offset, 0, 255)), display 2 by calibration/panel-2.txt,
+// gain [1.0, 0.96, 0.92] and offset [0, 0, 4] (docs/wall-file.md: G = round(gain x 2^32), out =
+// clamp(floor((in G + 2^31) / 2^32) + offset, 0, 255)), display 2 by calibration/panel-2.txt,
 // displays 1 and 3 as they are.
 TEST(LiveRunHanging, ColourMatchedPanelsShowTheCanvasThroughTheirTables) {
   const fs::path walls = fs::path(L2_SOURCE_DIR) / "walls";
   std::array<std::array<std::uint8_t, 256>, 3> gained{}, measured{};
-  const long gains[3] = {65536, 62915, 60293};  // 1.0, 0.96 and 0.92 of 65536, rounded
+  // 1.0, 0.96 and 0.92 of 2^32, rounded.
+  const std::int64_t gains[3] = {4294967296, 4123168604, 3951369912};
   const int offsets[3] = {0, 0, 4};
   for (int c = 0; c < 3; ++c)
-    for (int v = 0; v < 256; ++v)
-      gained[c][v] = static_cast<std::uint8_t>(
-          std::clamp<long>((v * gains[c] + 32768) / 65536 + offsets[c], 0, 255));
+    for (std::int64_t v = 0; v < 256; ++v)
+      gained[c][v] = static_cast<std::uint8_t>(std::clamp<std::int64_t>(
+          ((v * gains[c] + (std::int64_t{1} << 31)) >> 32) + offsets[c], 0, 255));
   std::ifstream table(walls / "calibration/panel-2.txt");
   int entry = 0;
   for (std::string line; std::getline(table, line);) {
@@ -162,16 +162,11 @@ TEST(LiveRunHanging, ColourMatchedPanelsShowTheCanvasThroughTheirTables) {
   }
   ASSERT_EQ(entry, 256);
 
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-matched-{}", getpid());
-  fs::create_directories(dir);
-  RgbImage canvas(650, 490);
-  for (int y = 0; y < canvas.height(); ++y)
-    for (int x = 0; x < canvas.width(); ++x) canvas.set(x, y, position(x, y));
-  write_png(dir / "positions.png", canvas);
-  WallRun run("matched",
-              {"--wall", (walls / "colour-matched-2x2.toml").string(), "--scene", "picture",
-               "--content", (dir / "positions.png").string(), "--fit", "stretch", "--frames", "2",
-               "--refresh", "0", "--path", "both", "--compare"});
+  const ScratchDir dir("matched");
+  const std::string positions = write_positions(dir, 650, 490);
+  WallRun run("matched", {"--wall", (walls / "colour-matched-2x2.toml").string(), "--scene",
+                          "picture", "--content", positions, "--fit", "stretch", "--frames", "2",
+                          "--refresh", "0", "--path", "both", "--compare"});
   const ExitStatus status = run.wait(60s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   const auto expected = [&](int d, int x, int y) {
@@ -182,7 +177,6 @@ TEST(LiveRunHanging, ColourMatchedPanelsShowTheCanvasThroughTheirTables) {
   };
   EXPECT_EQ(wrong_pixels(run, 1, 4, expected), 0);
   expect_clean(run);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -72,9 +72,7 @@ TEST(Show, MonitorsWithFewerMonitorsThanDisplaysIsRefusedListingThem) {
 // fullscreen there, pixel for pixel.
 TEST(Show, MonitorsShowsADisplayFullscreenOnTheMonitorItsWallFileNames) {
   L2_START_XVFB(xvfb, 800, 600);
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-monitor-{}", getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir dir("monitor");
   std::ofstream(dir / "one.toml") << R"(name = "one monitor"
 [display_grid]
 columns = 1
@@ -107,7 +105,6 @@ framebuffer_height = 600
   EXPECT_EQ(window.height(), 600);
   EXPECT_EQ(window.at(0, 0), Rgb{});
   EXPECT_EQ(window.at(80 + 320, 60 + 240), display_png(run.out(), 2, 0).at(320, 240));
-  fs::remove_all(dir);
   expect_clean(run);
 }
 
@@ -116,9 +113,7 @@ framebuffer_height = 600
 // puts it, and read back it is its frame again, byte for byte.
 TEST(Show, WallWindowDrawsATurnedPanelAsItHangs) {
   L2_START_XVFB(xvfb, 800, 600);
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-turned-{}", getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir dir("turned");
   std::ofstream(dir / "turned.toml") << R"(name = "turned"
 [[display]]
 width = 300
@@ -156,7 +151,6 @@ framebuffer_height = 500
        {std::pair{0, 0}, std::pair{199, 0}, std::pair{37, 250}, std::pair{199, 299}})
     EXPECT_EQ(window.at(310 + u, v), turned.at(v, 199 - u)) << u << "," << v;
   EXPECT_EQ(window.at(305, 100), kMullion);
-  fs::remove_all(dir);
   expect_clean(run);
 }
 
@@ -191,11 +185,9 @@ board_max_height = 1024
 
 TEST(Show, MonitorsShowAPortraitPanelUpright) {
   L2_START_XVFB(xvfb, 800, 600);
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-portrait-{}", getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir dir("portrait");
   WallRun run("show-portrait",
-              {"--wall", portrait_wall(dir, 600, 400), "--show", "monitors", "--frames", "2",
+              {"--wall", portrait_wall(dir.path(), 600, 400), "--show", "monitors", "--frames", "2",
                "--refresh", "0", "--keep", "every", "--show-readback", (dir / "screen").string()});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
@@ -210,16 +202,13 @@ TEST(Show, MonitorsShowAPortraitPanelUpright) {
        {std::pair{10, 20}, std::pair{399, 0}, std::pair{0, 599}, std::pair{250, 300}})
     EXPECT_EQ(window.at(200 + u, v), frame.at(v, 399 - u)) << u << "," << v;
   EXPECT_EQ(window.at(100, 300), Rgb{});  // beside it, black
-  fs::remove_all(dir);
   expect_clean(run);
 }
 
 TEST(Show, APanelLargerThanItsMonitorIsSaidOnce) {
   L2_START_XVFB(xvfb, 800, 600);
-  const fs::path dir = fs::temp_directory_path() / fmt::format("l2wall-tall-{}", getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  WallRun run("show-tall", {"--wall", portrait_wall(dir, 1000, 700), "--show", "monitors",
+  const ScratchDir dir("tall");
+  WallRun run("show-tall", {"--wall", portrait_wall(dir.path(), 1000, 700), "--show", "monitors",
                             "--frames", "2", "--refresh", "0"});
   const ExitStatus status = run.wait(30s);
   const std::string output = run.output();
@@ -229,7 +218,6 @@ TEST(Show, APanelLargerThanItsMonitorIsSaidOnce) {
       "monitor is smaller than the panel\n";
   ASSERT_NE(output.find(said), std::string::npos) << output;
   EXPECT_EQ(output.find(said), output.rfind(said)) << output;
-  fs::remove_all(dir);
   expect_clean(run);
 }
 

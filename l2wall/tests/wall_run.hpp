@@ -38,6 +38,30 @@ inline std::string slurp(const fs::path& path) {
   return s.str();
 }
 
+// A test's own folder for what it writes before a run (pictures, wall files): empty when made,
+// named by the test and the process so parallel tests never share one, and removed when the
+// test ends, a failed ASSERT included.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& name)
+      : path_(fs::temp_directory_path() / fmt::format("l2wall-{}-{}", name, getpid())) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
 // One l2wall run in its own folder; its output goes to DIR/output.txt.
 class WallRun {
  public:
