@@ -20,11 +20,11 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using namespace testing_support;
 
-// The documented gain/offset rule (docs/wall-file.md, "Colour matching"): the gain to 1/65536,
+// The documented gain/offset rule (docs/wall-file.md, "Colour matching"): the gain to 1/2^32,
 // in * gain rounded half up, plus the offset, clamped to a byte.
 int by_gain(int in, double gain, int offset) {
-  const long long g = std::llround(gain * 65536);
-  return std::clamp(static_cast<int>((in * g + 32768) / 65536) + offset, 0, 255);
+  const long long g = std::llround(std::ldexp(gain, 32));
+  return std::clamp(static_cast<int>((in * g + (1LL << 31)) >> 32) + offset, 0, 255);
 }
 // The test's own table file: an inverted red, halved green, blue as it is.
 int by_table(int in, int channel) {
@@ -50,9 +50,7 @@ RgbImage frame_of(const WallRun& run, int display, const std::string& suffix = "
 }
 
 TEST(LiveRunColour, ShownDisplaysAreTheUncorrectedOnesThroughTheirTables) {
-  const fs::path dir = WallRun::folder_for("colour-walls");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir dir("colour-walls");
   std::string table = "# R G B for inputs 0..255\n";
   for (int i = 0; i < 256; ++i)
     table += fmt::format("{} {} {}\n", by_table(i, 0), by_table(i, 1), by_table(i, 2));
@@ -101,7 +99,6 @@ TEST(LiveRunColour, ShownDisplaysAreTheUncorrectedOnesThroughTheirTables) {
   }
   expect_clean(colour);
   expect_clean(plain);
-  fs::remove_all(dir);
 }
 
 }  // namespace
