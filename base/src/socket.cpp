@@ -36,10 +36,11 @@ struct AddrInfoDeleter {
 };
 using AddrInfoPtr = std::unique_ptr<addrinfo, AddrInfoDeleter>;
 
-AddrInfoPtr resolve(const std::string& host, std::uint16_t port, bool passive) {
+AddrInfoPtr resolve(const std::string& host, std::uint16_t port, bool passive,
+                    int socktype = SOCK_STREAM) {
   addrinfo hints{};
   hints.ai_family = AF_UNSPEC;
-  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_socktype = socktype;
   hints.ai_flags = passive ? AI_PASSIVE : 0;
   addrinfo* res = nullptr;
   const std::string service = std::to_string(port);
@@ -131,6 +132,17 @@ Fd listen_tcp(const std::string& host, std::uint16_t port) {
     last_errno = errno;
   }
   throw NetError(fmt::format("cannot listen on {}:{}: {}", host, port, err_text(last_errno)));
+}
+
+Fd bind_udp(const std::string& host, std::uint16_t port) {
+  const AddrInfoPtr addrs = resolve(host, port, true, SOCK_DGRAM);
+  int last_errno = 0;
+  for (const addrinfo* ai = addrs.get(); ai; ai = ai->ai_next) {
+    Fd fd(::socket(ai->ai_family, ai->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, ai->ai_protocol));
+    if (fd && ::bind(fd.get(), ai->ai_addr, ai->ai_addrlen) == 0) return fd;
+    last_errno = errno;
+  }
+  throw NetError(fmt::format("cannot bind udp {}:{}: {}", host, port, err_text(last_errno)));
 }
 
 std::uint16_t local_port(int fd) {

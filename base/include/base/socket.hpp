@@ -1,8 +1,8 @@
-// Plain POSIX TCP (descriptors owned by l2::Fd), for every part that talks over a network (the
-// compositing server's tile port and display stream, the MPI ranks' coordinator address):
-// listen and connect with bounded waits, and send/receive loops that survive partial transfers
-// and EINTR. Sockets are non-blocking throughout; "blocking" calls here wait in poll() up to a
-// deadline, so no call can hang on a dead or silent peer.
+// Plain POSIX TCP, and UDP for datagrams taken in (descriptors owned by l2::Fd), for every part
+// that talks over a network (the compositing server's tile port and display stream, the MPI ranks'
+// coordinator address): listen and connect with bounded waits, and send/receive loops that survive
+// partial transfers and EINTR. Sockets are non-blocking throughout; "blocking" calls here wait in
+// poll() up to a deadline, so no call can hang on a dead or silent peer.
 //
 //   const Fd listener = listen_tcp("127.0.0.1", 0);            // a free port
 //   const Fd fd = connect_tcp("127.0.0.1", local_port(listener.get()), 500ms, "the server");
@@ -49,6 +49,8 @@ Endpoint parse_endpoint(std::string_view text);
 
 // Listens on host:port (port 0: the kernel picks a free one; read it with local_port).
 Fd listen_tcp(const std::string& host, std::uint16_t port);
+// A non-blocking UDP socket bound to host:port (port 0: a free one), for datagrams taken in.
+Fd bind_udp(const std::string& host, std::uint16_t port);
 std::uint16_t local_port(int fd);
 // "127.0.0.1:43210" for a connected socket.
 std::string peer_name(int fd);
