@@ -11,6 +11,7 @@ PACKAGES=(
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev
   libcpp-httplib-dev  # the control page's HTTP server (control_page/)
+  liblo-dev  # OSC decoding of TUIO touch input (touch/)
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels  # real-world models (the Khronos glTF samples) a model test loads
   libopenmpi-dev openmpi-bin
