@@ -212,6 +212,14 @@ void add_watch_options(CLI::App& run, RunCommand& c) {
                "with --scene session: take window commands from stdin, one a line: 'move ID X Y "
                "W H', 'raise ID', 'close ID', each on every pipeserver from the same frame "
                "(docs/session-file.md); what was taken or why not goes to stderr");
+  run.add_option("--tuio", o.tuio,
+                 "with --scene session: take multi-touch over TUIO 1.1 (/tuio/2Dcur, OSC over "
+                 "UDP; trackers send to port 3333) at [ADDR:]PORT (ADDR: 127.0.0.1, this "
+                 "machine only, unless given; PORT 0: a free one, printed at start): a tap "
+                 "raises the window under the finger, one finger drags it, two pinch it about "
+                 "their centre, each as a window command said on stderr (docs/session-file.md). "
+                 "Without --tuio no socket is opened and touch steers nothing")
+      ->check([](const std::string& v) { return parse_http_address(v).reason(); }, "[ADDR:]PORT");
   run.add_option("--http", o.http,
                  "serve a control page for the run at [ADDR:]PORT (ADDR: 127.0.0.1, this "
                  "machine only, unless given; PORT 0: a free one): the wall with each display's "

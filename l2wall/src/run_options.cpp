@@ -32,6 +32,8 @@ Status run_options_error(const RunOptions& o) {
   if (o.compare && o.path != PathChoice::Both) return Failure{"--compare needs --path both"};
   if (o.window_stdin && o.scene != "session")
     return Failure{"--window-stdin moves a session's windows: it needs --scene session"};
+  if (!o.tuio.empty() && o.scene != "session")
+    return Failure{"--tuio moves a session's windows: it needs --scene session"};
   if (!o.vnc_password_file.empty() && o.scene != "vnc")
     return Failure{"--vnc-password-file is the password of --scene vnc's server"};
   if (runs_viz(o.path) && o.vizserver_program.empty())

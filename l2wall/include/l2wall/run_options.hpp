@@ -48,6 +48,7 @@ struct RunOptions {
   std::string show_readback;  // --show-readback DIR: what the screen shows, written per frame
   std::string http;           // --http [ADDR:]PORT: the control page (control_page/); empty: none
   bool window_stdin = false;  // --window-stdin: a session's window commands, a line each, on stdin
+  std::string tuio;           // --tuio [ADDR:]PORT: touch over TUIO (touch/); empty: no socket
   std::string vnc_password_file;  // --scene vnc: the server's password (`vncpasswd -f`'s file)
   // Fault injection, for tests and demonstrations.
   int noise_after = -1;      // after swapping this frame, write line noise to every pipeserver

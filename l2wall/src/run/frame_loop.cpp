@@ -35,6 +35,7 @@ void FrameLoop::run_frames() {
     if (show_ && !keep_showing()) break;
     if (!parts_.steering.follow()) break;
     if (core_.options.window_stdin) take_stdin_windows();
+    take_touch_windows();
     if (const auto swap = lead.step(f.shown, core_.pipeservers, f.records, watch_)) on_swap(*swap);
     parts_.watchdog.check_stall();
   }
@@ -135,17 +136,23 @@ bool FrameLoop::keep_showing() {
   return !(k.quit && core_.frames.shown > 0);
 }
 
-// --window-stdin: what was taken or why not goes to the page's events, or without a page to
-// stderr.
 void FrameLoop::take_stdin_windows() {
-  const int frame = core_.frames.shown - 1;
-  for (const std::string& line : parts_.windows.stdin_commands()) {
-    const std::string said = parts_.windows.command(line, core_.pipeservers).text;
-    if (core_.page) {
-      core_.page->event(frame, said);
-    } else {
-      std::fprintf(stderr, "l2wall: %s\n", said.c_str());
-    }
+  for (const std::string& line : parts_.windows.stdin_commands()) take_window_command(line, "");
+}
+
+// --tuio: the gestures' commands, said as --window-stdin's are, after "touch: ".
+void FrameLoop::take_touch_windows() {
+  for (const std::string& line : parts_.touch.commands(parts_.windows, core_.frames.shown - 1))
+    take_window_command(line, "touch: ");
+}
+
+// What was taken or why not goes to the page's events, or without a page to stderr.
+void FrameLoop::take_window_command(const std::string& line, const char* from) {
+  const std::string said = from + parts_.windows.command(line, core_.pipeservers).text;
+  if (core_.page) {
+    core_.page->event(core_.frames.shown - 1, said);
+  } else {
+    std::fprintf(stderr, "l2wall: %s\n", said.c_str());
   }
 }
 

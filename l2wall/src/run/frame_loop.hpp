@@ -8,6 +8,7 @@
 #include "run_core.hpp"
 #include "run_windows.hpp"
 #include "run_writer.hpp"
+#include "touch_steering.hpp"
 #include "watchdog.hpp"
 
 namespace l2 {
@@ -17,6 +18,7 @@ struct FrameLoopParts {
   Watchdog& watchdog;
   PageSteering& steering;
   RunWindows& windows;
+  TouchSteering& touch;
   RunWriter& writer;
   ProgressLine& progress;
 };
@@ -25,8 +27,8 @@ struct FrameLoopParts {
 // what each swap does: the frames it completed recorded, their latency checked, the other path's
 // frame taken (and compared), kept frames saved, fault injection, the displays on screen
 // (--show, whose keys it takes), the page told, the progress line. It alone advances the frame
-// ledger. It may not end processes or name a fault's cause: the watchdog names it, LiveRun ends
-// the processes.
+// ledger. It issues the window commands of --window-stdin and --tuio. It may not end processes or
+// name a fault's cause: the watchdog names it, LiveRun ends the processes.
 class FrameLoop {
  public:
   FrameLoop(RunCore& core, const RunWatch& watch, const FrameLoopParts& parts)
@@ -52,6 +54,8 @@ class FrameLoop {
   void show_last_frame();
   bool keep_showing();
   void take_stdin_windows();
+  void take_touch_windows();
+  void take_window_command(const std::string& line, const char* from);
 
   RunCore& core_;
   const RunWatch& watch_;

@@ -20,6 +20,7 @@
 #include "run_writer.hpp"
 #include "stop_signal.hpp"
 #include "tilelayout/dvi_timing.hpp"
+#include "touch_steering.hpp"
 #include "vizserver_process.hpp"
 #include "watchdog.hpp"
 
@@ -30,7 +31,8 @@ using std::chrono::milliseconds;
 
 // `l2wall run`'s live run, made of separately filed parts, each with its contract in its class
 // comment: the frame loop (frame_loop.hpp), the watchdog (watchdog.hpp), page steering
-// (page_steering.hpp), the windows and desktops (run_windows.hpp), the report writer
+// (page_steering.hpp), the windows and desktops (run_windows.hpp), touch steering
+// (touch_steering.hpp), the report writer
 // (run_writer.hpp) and the progress line (progress_line.hpp), all working on the run's core
 // (run_core.hpp). LiveRun owns them and the run's order: which display paths run for --path, the
 // pipeservers started, the frames, and the end, well or in a fault, with every process ended.
@@ -71,6 +73,7 @@ class LiveRun {
   const RunBackends& backends_;
   ProgressLine progress_{core_};
   RunWindows windows_;
+  TouchSteering touch_;
   Watchdog watchdog_{core_, progress_};
   // A session's windows and a vnc run's desktop are served with the processes: WANT comes
   // before each READY wait.
@@ -88,7 +91,7 @@ class LiveRun {
   RunWriter writer_{core_, watch_};
   PageSteering steering_{core_,    watch_,  watchdog_,
                          windows_, writer_, backends_.stops_pipeservers_early()};
-  FrameLoop loop_{core_, watch_, {watchdog_, steering_, windows_, writer_, progress_}};
+  FrameLoop loop_{core_, watch_, {watchdog_, steering_, windows_, touch_, writer_, progress_}};
 };
 
 int LiveRun::run() {
@@ -98,6 +101,7 @@ int LiveRun::run() {
     core_.page =
         std::make_unique<LivePage>(core_.options, core_.wall, backends_.stops_pipeservers_early());
   }
+  touch_.start(core_.options.tuio, core_.wall);  // a taken port too, before any process
   make_paths();
   start_balance();
   windows_.start(core_.options, core_.layout, core_.balance != nullptr);
@@ -225,7 +229,7 @@ std::string LiveRun::write_report(const std::string& fault) {
   const std::string extra =
       loop_.show_summary() + steering_.summary() +
       (core_.balance ? core_.balance->summary(core_.frames.shown) : std::string()) +
-      windows_.summary();
+      windows_.summary() + touch_.summary();
   std::vector<std::pair<std::string, std::string>> files;
   if (core_.balance) files.emplace_back("layouts.txt", core_.balance->layouts());
   for (auto& file : windows_.files()) files.push_back(std::move(file));

@@ -80,9 +80,13 @@ bool RunWindows::moving_here(const PipeserverSet& pipeservers) {
   return !pipeservers.all().empty() && pipeservers.all().front().windows;
 }
 
+std::vector<WindowPlace> RunWindows::shown_at(int frame) const {
+  return windows_ ? windows_->shown_at(frame) : std::vector<WindowPlace>();
+}
+
 std::vector<PageWindow> RunWindows::page_windows(int frame) const {
   std::vector<PageWindow> page;
-  for (const WindowPlace& w : windows_->shown_at(frame)) {
+  for (const WindowPlace& w : shown_at(frame)) {
     const Rect& r = w.on_canvas;
     page.push_back({w.id, windows_->source_of(w.id), r.x, r.y, r.w, r.h});
   }

@@ -45,6 +45,9 @@ class RunWindows {
   static bool moving_here(const PipeserverSet& pipeservers);
   // A session's windows at `frame`, as the control page draws them.
   std::vector<PageWindow> page_windows(int frame) const;
+  // A session's windows at `frame` as every pipeserver draws them (back to front); none without
+  // a session.
+  std::vector<WindowPlace> shown_at(int frame) const;
   bool session() const { return windows_ != nullptr; }
 
   // The summary's lines of the windows and desktops.
