@@ -86,18 +86,26 @@ std::optional<CursorFrame> TuioCursors::take_fseq(const OscMessage& m) {
     return std::nullopt;
   }
   if (fseq != -1) last_fseq_ = fseq;
-  // The fingers still down: this frame's alive list, or the last frame's when it said none.
+  std::vector<Cursor> now = next_cursors();
+  committed_ = now;
+  forget_pending();
+  return CursorFrame{static_cast<std::int32_t>(fseq), std::move(now)};
+}
+
+// The fingers down once this frame commits: those alive (this frame's list, or the last frame's
+// when it said none), each where its last set put it, by id.
+std::vector<Cursor> TuioCursors::next_cursors() const {
+  const auto alive = [this](std::int32_t id) {
+    if (next_alive_) return std::binary_search(next_alive_->begin(), next_alive_->end(), id);
+    return std::any_of(committed_.begin(), committed_.end(),
+                       [id](const Cursor& c) { return c.id == id; });
+  };
   std::vector<Cursor> now;
   for (const Cursor& c : committed_) {
-    if (!next_alive_ || std::binary_search(next_alive_->begin(), next_alive_->end(), c.id))
-      now.push_back(c);
+    if (alive(c.id)) now.push_back(c);
   }
   for (const Cursor& s : next_set_) {
-    const bool alive =
-        next_alive_
-            ? std::binary_search(next_alive_->begin(), next_alive_->end(), s.id)
-            : std::any_of(now.begin(), now.end(), [&s](const Cursor& c) { return c.id == s.id; });
-    if (!alive) continue;
+    if (!alive(s.id)) continue;
     const auto at =
         std::find_if(now.begin(), now.end(), [&s](const Cursor& c) { return c.id == s.id; });
     if (at != now.end()) {
@@ -107,9 +115,7 @@ std::optional<CursorFrame> TuioCursors::take_fseq(const OscMessage& m) {
     }
   }
   std::sort(now.begin(), now.end(), [](const Cursor& a, const Cursor& b) { return a.id < b.id; });
-  committed_ = now;
-  forget_pending();
-  return CursorFrame{static_cast<std::int32_t>(fseq), std::move(now)};
+  return now;
 }
 
 void TuioCursors::forget_pending() {

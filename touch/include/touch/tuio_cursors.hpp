@@ -50,6 +50,7 @@ class TuioCursors {
   bool take_alive(const OscMessage& m);
   bool take_set(const OscMessage& m);
   std::optional<CursorFrame> take_fseq(const OscMessage& m);
+  std::vector<Cursor> next_cursors() const;
   void forget_pending();
 
   std::vector<Cursor> committed_;                        // by id
