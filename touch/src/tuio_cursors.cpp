@@ -27,7 +27,8 @@ bool numeric(const OscArg& a) {
 
 std::optional<CursorFrame> TuioCursors::take(const OscMessage& m) {
   if (m.address != kCursorAddress) return std::nullopt;
-  const std::string_view command = !m.args.empty() && m.args[0].is_text() ? m.args[0].text : "";
+  std::string_view command;
+  if (!m.args.empty() && m.args[0].is_text()) command = m.args[0].text;
   bool kept = true;
   if (command == "alive") {
     kept = take_alive(m);
