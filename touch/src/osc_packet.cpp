@@ -49,25 +49,34 @@ const char* liblo_reason(int error) {
   }
 }
 
-OscArg argument(char type, const lo_arg* a) {
+// A number as liblo left it (host byte order), read by bytes: OSC aligns arguments to 4 bytes,
+// less than lo_arg's union of 8-byte members asks for.
+template <class T>
+T read_arg(const void* at) {
+  T v;
+  std::memcpy(&v, at, sizeof v);
+  return v;
+}
+
+OscArg argument(char type, const void* at) {
   OscArg out;
   out.type = type;
   switch (type) {
     case 'i':
-      out.integer = a->i;
+      out.integer = read_arg<std::int32_t>(at);
       break;
     case 'h':
-      out.integer = a->h;
+      out.integer = read_arg<std::int64_t>(at);
       break;
     case 'f':
-      out.real = a->f;
+      out.real = read_arg<float>(at);
       break;
     case 'd':
-      out.real = a->d;
+      out.real = read_arg<double>(at);
       break;
     case 's':
     case 'S':
-      out.text = &a->s;
+      out.text = static_cast<const char*>(at);
       break;
     default:
       break;
