@@ -167,3 +167,37 @@ put("control_line", "times-batches", b"TIMES 3 1 1 0.25 BATCHES 2 10 20 30 40 64
 put("control_line", "layout-gone", b"LAYOUT 1 2 0 0 50 50 0 50 0 50 50 1 GONE 1 2")
 put("control_line", "want", b"WANT 9 3")
 put("control_line", "windows", b"WINDOWS 4 2 2 -10 20 300 200 0 5 6 7 8")
+
+
+# --- tuio: TUIO 1.1 bundles (/tuio/2Dcur), datagrams joined by "|~|" (fuzz_tuio.cpp) -----------
+def osc_string(s):
+    b = s.encode() + b"\0"
+    return b + b"\0" * (-len(b) % 4)
+
+
+def osc_message(address, *args):
+    tags, data = ",", b""
+    for a in args:
+        if isinstance(a, str):
+            tags, data = tags + "s", data + osc_string(a)
+        elif isinstance(a, int):
+            tags, data = tags + "i", data + struct.pack(">i", a)
+        else:
+            tags, data = tags + "f", data + struct.pack(">f", a)
+    return osc_string(address) + osc_string(tags) + data
+
+
+def tuio_frame(fseq, fingers):
+    elements = [osc_message("/tuio/2Dcur", "source", "seed@127.0.0.1"),
+                osc_message("/tuio/2Dcur", "alive", *[f[0] for f in fingers])]
+    elements += [osc_message("/tuio/2Dcur", "set", i, x, y, 0.0, 0.0, 0.0) for i, x, y in fingers]
+    elements.append(osc_message("/tuio/2Dcur", "fseq", fseq))
+    return b"#bundle\0" + struct.pack(">II", 0, 1) + b"".join(
+        struct.pack(">I", len(e)) + e for e in elements)
+
+
+put("tuio", "drag", b"|~|".join(tuio_frame(n, [(3, 0.2 + 0.05 * n, 0.3)]) for n in range(4))
+    + b"|~|" + tuio_frame(4, []))
+put("tuio", "pinch", b"|~|".join(
+    tuio_frame(n, [(1, 0.3 - 0.02 * n, 0.4), (2, 0.35 + 0.02 * n, 0.4)]) for n in range(3)))
+put("tuio", "tap", tuio_frame(1, [(9, 0.25, 0.25)]) + b"|~|" + tuio_frame(2, []))

@@ -5,7 +5,7 @@
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
 # broke a promise; the input that did it is saved in build/fuzz/runs/<harness>/artifacts/
 # (under FUZZ_OUT instead of build/fuzz/runs when set).
-# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all nine)
+# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all twelve)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound).
 set -euo pipefail
@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame picture_header frame_delta control_line)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame picture_header frame_delta control_line tuio)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
