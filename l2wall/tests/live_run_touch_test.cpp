@@ -99,23 +99,8 @@ int kept_frames(const WallRun& run) {
   return k;
 }
 
-TEST(TouchOnTheWall, ADragAPinchAndATapSwitchInOneFrameOnEveryDisplay) {
-  constexpr int kFrames = 150;
-  const ScratchDir dir("touch");
-  RgbImage picture(320, 240);
-  for (int y = 0; y < picture.height(); ++y)
-    for (int x = 0; x < picture.width(); ++x)
-      picture.set(x, y,
-                  {static_cast<std::uint8_t>(x * 3), static_cast<std::uint8_t>(y * 5),
-                   static_cast<std::uint8_t>(x ^ y)});
-  write_png(dir / "pattern.png", picture);
-  const std::vector<Place> start{{0, {100, 100, 400, 300}}, {1, {300, 200, 200, 150}}};
-  std::ofstream(dir / "session.toml") << session_text(start);
-  WallRun run("touch",
-              {"--scene", "session", "--session", (dir / "session.toml").string(), "--frames",
-               std::to_string(kFrames), "--keep", "every", "--tuio", "127.0.0.1:0"});
-  const int port = tuio_port(run);
-  ASSERT_NE(port, 0) << run.output();
+// What a tracker sends once the run shows frame 5: hostile datagrams, a drag, a pinch, a tap.
+void send_touches(const WallRun& run, int port) {
   wait_for_frame(run, 5);
   UdpSender tracker(port);
   int fseq = 1;
@@ -138,21 +123,15 @@ TEST(TouchOnTheWall, ADragAPinchAndATapSwitchInOneFrameOnEveryDisplay) {
   // A tap on window 0 where window 1 does not cover it: raised in front.
   tracker.send(tuio_frame(fseq++, {at(30, 200, 150)}));
   tracker.send(tuio_frame(fseq++, {}));
-  const int sent_at = kept_frames(run);
-  const ExitStatus status = run.wait(120s);
-  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
-  ASSERT_LT(sent_at + 10, kFrames) << "the run ended before the touches were shown";
+}
 
-  // Window 1's places in the frames' order: each a step of the drag or the pinch, none after a
-  // later one, the drag's end and the pinch's end among them; then window 0 raised in front.
+// Window 1's places in the frames' order (`frames`: windows.txt's): each a step of the drag or
+// the pinch, none after a later one, the drag's end and the pinch's end among them; then
+// window 0 raised in front. `changed`: the frames whose windows differ from the frame before.
+void expect_touch_steps(const std::vector<std::vector<Place>>& frames, std::vector<int>& changed) {
   const std::vector<Rect> steps{{300, 200, 200, 150}, {400, 280, 200, 150}, {500, 350, 200, 150},
                                 {600, 420, 200, 150}, {550, 385, 300, 225}, {500, 350, 400, 300}};
-  std::ifstream lines(run.out() / "windows.txt");
-  std::vector<std::vector<Place>> frames;
-  for (std::string line; std::getline(lines, line);) frames.push_back(places(line));
-  ASSERT_GE(frames.size(), static_cast<std::size_t>(kFrames));
   std::size_t step = 0;
-  std::vector<int> changed;  // frames whose windows differ from the frame before
   bool dragged = false, raised_seen = false;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const std::vector<Place>& f = frames[k];
@@ -170,6 +149,37 @@ TEST(TouchOnTheWall, ADragAPinchAndATapSwitchInOneFrameOnEveryDisplay) {
   EXPECT_TRUE(dragged) << "the drag's end was never shown";
   EXPECT_EQ(step, 5u) << "the pinch's end was never shown";
   EXPECT_TRUE(raised_seen) << "window 0 was never raised";
+}
+
+TEST(TouchOnTheWall, ADragAPinchAndATapSwitchInOneFrameOnEveryDisplay) {
+  constexpr int kFrames = 150;
+  const ScratchDir dir("touch");
+  RgbImage picture(320, 240);
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x)
+      picture.set(x, y,
+                  {static_cast<std::uint8_t>(x * 3), static_cast<std::uint8_t>(y * 5),
+                   static_cast<std::uint8_t>(x ^ y)});
+  write_png(dir / "pattern.png", picture);
+  const std::vector<Place> start{{0, {100, 100, 400, 300}}, {1, {300, 200, 200, 150}}};
+  std::ofstream(dir / "session.toml") << session_text(start);
+  WallRun run("touch",
+              {"--scene", "session", "--session", (dir / "session.toml").string(), "--frames",
+               std::to_string(kFrames), "--keep", "every", "--tuio", "127.0.0.1:0"});
+  const int port = tuio_port(run);
+  ASSERT_NE(port, 0) << run.output();
+  send_touches(run, port);
+  const int sent_at = kept_frames(run);
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  ASSERT_LT(sent_at + 10, kFrames) << "the run ended before the touches were shown";
+
+  std::ifstream lines(run.out() / "windows.txt");
+  std::vector<std::vector<Place>> frames;
+  for (std::string line; std::getline(lines, line);) frames.push_back(places(line));
+  ASSERT_GE(frames.size(), static_cast<std::size_t>(kFrames));
+  std::vector<int> changed;  // frames whose windows differ from the frame before
+  ASSERT_NO_FATAL_FAILURE(expect_touch_steps(frames, changed));
 
   // Every display of the frames around each change is the reference of that frame's places.
   for (const int k : changed) {
