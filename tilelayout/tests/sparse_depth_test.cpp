@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "strip_headers/scanline_parser.hpp"
+#include "tilelayout/planner.hpp"
+#include "tilelayout/wall_file.hpp"
 
 namespace l2 {
 namespace {
@@ -98,6 +100,34 @@ TEST(SparseDepthSpans, LayerZeroLeavesOutItsClearWhereItIsTheBackground) {
   DepthSkip behind;
   behind.far_from = 0xFFFFFE;
   EXPECT_EQ(row.spans(behind), (std::vector<DepthSpan>{{20, 30}}));
+}
+
+TEST(SparseDepthSkip, NestedLayersLeaveOutMoreThanTheFarPlane) {
+  // walls/hybrid-2x1.toml: layer 0 is pipeservers 0 and 1, layer 1 pipeservers 2 and 3 over the
+  // same tiles, pipeserver 4 the overlay (KEY).
+  TileLayout layout = plan_layout(load_wall(std::string(L2_WALLS_DIR) + "/hybrid-2x1.toml"));
+  const std::array<std::uint8_t, 3> black{};
+  for (int s : {0, 1}) {
+    const DepthSkip k = depth_skip_of(layout, s, black);
+    EXPECT_TRUE(k.skip_background) << s;
+    EXPECT_EQ(k.far_from, 0xFFFFFFu) << s;
+  }
+  for (int s : {2, 3}) {
+    const DepthSkip k = depth_skip_of(layout, s, black);
+    EXPECT_FALSE(k.skip_background) << s;
+    EXPECT_EQ(k.far_from, 0xFFFFFEu) << s;
+  }
+  // A layer-1 tile moved one column past every layer-0 tile: nothing is known to lie in front
+  // of it, so every pipeserver leaves out the far plane only.
+  PipeserverPlan& behind = layout.pipeservers[2];
+  ASSERT_EQ(behind.layer, 1);
+  ASSERT_EQ(behind.tiles.front().tile.compositing, Compositing::Depth);
+  behind.tiles.front().tile.on_display.x += 1;
+  for (int s : {0, 1, 2, 3, 4}) {
+    const DepthSkip k = depth_skip_of(layout, s, black);
+    EXPECT_FALSE(k.skip_background) << s;
+    EXPECT_EQ(k.far_from, 0xFFFFFFu) << s;
+  }
 }
 
 // The scanline of one DEPTH tile of width w at column 0 (EXT header, word, colour, depth)
