@@ -75,7 +75,7 @@ std::size_t draw_tile(const l2::PackedTile& p, int input, double coverage, l2::R
     l2::find_depth_spans(colour, colour + static_cast<std::size_t>(r.w) * 3, r.w, {},
                          scratch.spans);
     row.y = static_cast<std::uint16_t>(r.y + y);
-    l2::pack_sparse_row(colour - 12, row, scratch.spans, scratch.row);
+    l2::pack_sparse_row(colour - 3 * l2::gap_columns(p.tile), row, scratch.spans, scratch.row);
     for (const l2::DepthSpan& s : scratch.spans) sent += static_cast<std::size_t>(s.x1 - s.x0) * 6;
   }
   return sent;

@@ -44,7 +44,8 @@ TEST(SparsePlan, SparseTestPatternFramesOfTheCompositingWallsVerifyClean) {
     const TileLayout layout = plan_layout(load_wall(std::filesystem::path(L2_WALLS_DIR) / name));
     std::vector<RgbImage> frames = verify_test::scanned_out(layout);
     const int sparser = make_sparse(layout, frames);
-    // The pattern sends losing layers at the far plane (test_pattern.hpp): some of their rows change.
+    // The pattern sends losing layers at the far plane (test_pattern.hpp): some of their rows
+    // change.
     EXPECT_GT(sparser, 10) << name;
     const RoutingCheck alone = check_routing(layout, frames);
     EXPECT_TRUE(alone.clean()) << name << ": " << check_report(alone).back();

@@ -28,8 +28,8 @@ struct DepthSpan {
 
 // Which pixels of a DEPTH row may be left out.
 struct DepthSkip {
-  // Depths at or beyond this are left out: kFarPlane alone is always safe; a pipeserver behind
-  // depth layer 0 may leave out one step nearer too (pipeserver/depth_out.hpp says why).
+  // Depths at or beyond this are left out: the far plane (FFFFFF) alone is always safe; a
+  // pipeserver behind depth layer 0 may leave out one step nearer too (depth_skip_of says why).
   std::uint32_t far_from = 0xFFFFFF;
   // Layer 0: pixels at depth `background_depth` whose colour is `background` are left out, the
   // mesh showing its background there anyway.
@@ -56,8 +56,8 @@ inline constexpr int kSparseMergeGap = 16;
 // The spans of a row of `w` colour pixels and `w` depth pixels (RGB, three bytes each) to send
 // as DEPTH strips, left to right, into `spans` (cleared first). Spans are at least
 // kSparseMergeGap apart, and their strips with one SKIP over the columns left always fill the
-// row's 4 + 2w columns exactly (a span is widened by one pixel where two columns would be left,
-// too few for a SKIP). w >= 1.
+// row's 4 + 2w columns exactly (where two columns would be left, too few for a SKIP, the one
+// span takes the row's one pixel it missed). w >= 1.
 void find_depth_spans(const std::uint8_t* colour, const std::uint8_t* depth, int w,
                       const DepthSkip& skip, std::vector<DepthSpan>& spans);
 
