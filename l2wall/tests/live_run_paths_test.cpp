@@ -86,6 +86,7 @@ TEST(LiveRun, EveryDisplayFrameShowsTheInputFrameOneRefreshEarlier) {
 struct WallCase {
   const char* file;
   int displays, pipeservers;
+  bool depth = false;  // DEPTH layers: their rows go out sparse and change as the bunny turns
 };
 class BothPaths : public ::testing::TestWithParam<WallCase> {};
 
@@ -108,6 +109,8 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
   EXPECT_NE(output.find("latency: 1 frame "), std::string::npos) << output;
   // The emulator predicted every pipeserver's frames after its first from the last layout (a
   // pipeserver's headers only change parity), and the comparison above covered those frames.
+  // A depth layer's sparse rows (tilelayout/sparse_depth.hpp) follow what it drew, so its
+  // frames may be found different and parsed; the comparison covers those too.
   std::smatch predicted;
   ASSERT_TRUE(std::regex_search(
       output, predicted,
@@ -115,7 +118,9 @@ TEST_P(BothPaths, GiveIdenticalDisplays) {
                  "([0-9]+) of them found different")))
       << output;
   EXPECT_GE(std::stoi(predicted[1]), 9 * c.pipeservers) << output;
-  EXPECT_EQ(predicted[2], "0") << output;
+  if (!c.depth) {
+    EXPECT_EQ(predicted[2], "0") << output;
+  }
   // The kept pictures of both paths are there and equal, read back from the files.
   for (int d = 0; d < c.displays; ++d) {
     const RgbImage dvi = read_png(run.out() / "frame-9" / fmt::format("display-{}.png", d));
@@ -172,8 +177,8 @@ TEST(LiveRun, TwoRunsAtOnceBothSucceed) {
 INSTANTIATE_TEST_SUITE_P(ExampleWalls, BothPaths,
                          ::testing::Values(WallCase{"kd-2x2.toml", 4, 4},
                                            WallCase{"projectors-2x1.toml", 2, 3},
-                                           WallCase{"sort-last-512x384.toml", 1, 3},
-                                           WallCase{"hybrid-2x1.toml", 2, 5},
+                                           WallCase{"sort-last-512x384.toml", 1, 3, true},
+                                           WallCase{"hybrid-2x1.toml", 2, 5, true},
                                            WallCase{"colour-matched-2x2.toml", 4, 4}));
 
 // Asked for more refreshes than a DVI link carries, the emulator refreshes as fast as the link

@@ -3,6 +3,7 @@
 // of 1280x1024; the hardware held 90 Hz). Prints peak memory.
 //
 //   lightning2_emu_bench [repetitions] [--sweep | --small-tiles | --compositing | --headline]
+//                        [--coverage PERCENT]
 //
 // The memcpy baseline copies the same number of bytes out of the same input frames into a
 // buffer the size of the displays, in one memcpy per input, on the same worker pool: what the
@@ -23,7 +24,8 @@
 // parsed first, which is what a frame of a new layout costs, and prints that ratio too.
 //
 // Then depth compositing (spec §7), sort-last and hybrid, frames packed by tilelayout: each
-// against memcpy of the payload bytes it reads (colour and depth pixels), in alternation.
+// against memcpy of the payload bytes it reads (colour and depth pixels), in alternation, at
+// full coverage and with geometry on a share of the display only (bench_depth.cpp).
 #include <fmt/format.h>
 #include <malloc.h>
 #include <sys/resource.h>
@@ -38,6 +40,7 @@
 #include <vector>
 
 #include "bench_args.hpp"
+#include "bench_common.hpp"
 
 #include "lightning2_emu/frame_builder.hpp"
 #include "lightning2_emu/router.hpp"
@@ -46,72 +49,13 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// One timed run: wall time, and CPU time of the whole process (every worker). On a shared
-// machine the CPU time leaves out the time other processes held the cores, so it compares
-// implementations more steadily than wall time does; it still counts memory stalls.
-struct Time {
-  double wall = 0, cpu = 0;
-};
-
-double process_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
-}
-
-template <class Fn>
-Time timed(Fn&& fn) {
-  const double cpu0 = process_cpu_seconds();
-  const auto t0 = Clock::now();
-  fn();
-  return {std::chrono::duration<double>(Clock::now() - t0).count(), process_cpu_seconds() - cpu0};
-}
-
-// Run times of one figure over the repetitions.
-struct Samples {
-  std::vector<Time> runs;
-  double best() const {
-    double b = runs.front().wall;
-    for (const Time& t : runs) b = std::min(b, t.wall);
-    return b;
-  }
-  double median_cpu() const;
-};
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double Samples::median_cpu() const {
-  std::vector<double> cpu;
-  for (const Time& t : runs) cpu.push_back(t.cpu);
-  return median(cpu);
-}
-
-// Median over the repetitions of baseline time / routing time, by wall or CPU time.
-double median_ratio(const Samples& baseline, const Samples& routing, double Time::*field) {
-  std::vector<double> ratios;
-  for (std::size_t r = 0; r < routing.runs.size(); ++r) {
-    ratios.push_back(baseline.runs[r].*field / (routing.runs[r].*field));
-  }
-  return median(ratios);
-}
+using namespace l2bench;
 
 struct Scenario {
   const char* name;
   std::vector<l2::DisplaySpec> displays;
   int inputs;
   int tile_w, tile_h;
-};
-
-struct Built {
-  std::vector<l2::RgbImage> frames;
-  std::vector<l2::InputFrame> views;
-  std::vector<std::size_t> input_bytes;  // strip bytes each input routes
-  std::size_t routed_bytes = 0;
 };
 
 // Tiles cover every display; round-robin over the inputs; packed per spec §4.
@@ -140,64 +84,6 @@ Built build(const Scenario& s) {
   }
   for (const auto& f : b.frames) b.views.push_back(l2::InputFrame::of(f));
   return b;
-}
-
-// One memcpy per input of the bytes it routes, from its frame into a display-sized buffer,
-// spread over the pool by bytes.
-class CopySameBytes {
- public:
-  // streaming: the router's own copy (pixel_copy.hpp) instead of memcpy.
-  CopySameBytes(const Built& b, l2::WorkerPool& pool, bool streaming)
-      : pool_(pool), streaming_(streaming), dst_(b.routed_bytes), shares_(pool.workers()) {
-    // Cut the per-input copies into equal shares, one per worker.
-    const std::size_t share = (b.routed_bytes + pool.workers() - 1) / pool.workers();
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < b.frames.size(); ++i) {
-      std::size_t done = 0;
-      while (done < b.input_bytes[i]) {
-        const std::size_t w = out / share;
-        const std::size_t n = std::min(b.input_bytes[i] - done, (w + 1) * share - out);
-        shares_[w].push_back({b.frames[i].data() + done, dst_.data() + out, n});
-        done += n;
-        out += n;
-      }
-    }
-  }
-  void operator()() {
-    pool_.run(pool_.workers(), [&](int task, int) {
-      for (const Chunk& c : shares_[task]) {
-        if (streaming_) {
-          l2::pixel_copy::stream_bytes(c.dst, c.src, c.bytes);
-        } else {
-          std::memcpy(c.dst, c.src, c.bytes);
-        }
-      }
-      l2::pixel_copy::finish_streaming();
-    });
-  }
-
- private:
-  struct Chunk {
-    const std::uint8_t* src;
-    std::uint8_t* dst;
-    std::size_t bytes;
-  };
-  l2::WorkerPool& pool_;
-  bool streaming_;
-  std::vector<std::uint8_t> dst_;
-  std::vector<std::vector<Chunk>> shares_;
-};
-
-// Heap bytes in use now (malloc's own count, mmapped blocks included). The router's memory is
-// the growth across its construction and first frames: resident size would not show it when it
-// reuses pages an earlier scenario freed.
-double heap_mib() {
-  const struct mallinfo2 m = mallinfo2();
-  return double(m.uordblks + m.hblkhd) / (1 << 20);
-}
-
-double gbps(std::size_t bytes, double seconds) {
-  return double(bytes) / seconds / 1e9;
 }
 
 struct Figures {
@@ -286,26 +172,6 @@ Figures run(const Scenario& s, int repetitions, int workers, bool print_header) 
   return f;
 }
 
-// The router's whole frame and a memcpy of the same bytes, timed in alternation (one warm-up
-// pair first): the machine's bandwidth changes from second to second, so a ratio only means
-// something between runs made in the same moments.
-struct RouteAndCopy {
-  Samples route, copy_same;
-};
-RouteAndCopy route_against_memcpy(l2::Router& router, const Built& b, l2::WorkerPool& pool,
-                                  int repetitions) {
-  CopySameBytes memcpy_same(b, pool, false);
-  RouteAndCopy t;
-  for (int r = -1; r < repetitions; ++r) {
-    const Time route_t = timed([&] { router.route(b.views); });
-    const Time memcpy_t = timed(memcpy_same);
-    if (r < 0) continue;
-    t.route.runs.push_back(route_t);
-    t.copy_same.runs.push_back(memcpy_t);
-  }
-  return t;
-}
-
 // The mesh-size sweep: from 4 inputs and 1 display (one board) to 64 inputs and 24 displays
 // (16 x 3 boards), every display 1280x1024 cut into 128x128 tiles, each input carrying the
 // same share. If routing cost grows linearly with the pixels routed, ns per routed byte and the
@@ -346,134 +212,6 @@ void mesh_sweep(int repetitions, int workers) {
   }
 }
 
-// Depth compositing (spec §7): every display tile rendered as `layers` DEPTH layers, each by a
-// different input, packed by tilelayout (pack_tiles, draw_headers) into input frames of
-// fb_width x fb_height. Layer colours are pattern(input, x, y), depths a function of the pixel
-// and the layer with ties, so the composite is known: least depth, of equal depths the lower
-// input (the earlier on the bus).
-struct DepthScenario {
-  const char* name;
-  std::vector<l2::DisplaySpec> displays;
-  int inputs, layers;  // tile of display d is layer k of input (d + k) % inputs
-  int fb_width, fb_height;
-};
-
-std::uint32_t layer_depth(int input, int x, int y) {
-  return static_cast<std::uint32_t>((x * 7 + y * 13 + input * 5) % 6) * 0x20000u;
-}
-
-struct DepthBuilt {
-  Built b;  // input_bytes, routed_bytes: the payload bytes read (colour and depth pixels)
-  std::vector<l2::RgbImage> expected;
-};
-
-DepthBuilt build(const DepthScenario& s) {
-  std::vector<std::vector<l2::DisplayTile>> tiles(s.inputs);
-  for (std::size_t d = 0; d < s.displays.size(); ++d) {
-    for (int k = 0; k < s.layers; ++k) {
-      l2::DisplayTile t;
-      t.display = s.displays[d].id;
-      t.on_display = {0, 0, s.displays[d].width, s.displays[d].height};
-      t.on_canvas = t.on_display;
-      t.compositing = l2::Compositing::Depth;
-      tiles[(static_cast<int>(d) + k) % s.inputs].push_back(t);
-    }
-  }
-  DepthBuilt out;
-  Built& b = out.b;
-  b.input_bytes.assign(s.inputs, 0);
-  for (int i = 0; i < s.inputs; ++i) {
-    const l2::PipeserverPlan plan = l2::pack_tiles(i, s.fb_width, s.fb_height, tiles[i]);
-    b.frames.emplace_back(s.fb_width, s.fb_height);
-    l2::RgbImage& fb = b.frames.back();
-    l2::draw_headers(plan, false, fb);
-    for (const l2::PackedTile& p : plan.tiles) {
-      const l2::Rect& r = p.tile.on_display;
-      for (int y = 0; y < r.h; ++y) {
-        for (int x = 0; x < r.w; ++x) {
-          fb.set(p.fb_x + x, p.fb_y + y, l2::testing::pattern(i, r.x + x, r.y + y));
-          const std::uint32_t dp = layer_depth(i, r.x + x, r.y + y);
-          fb.set(p.fb_x + r.w + x, p.fb_y + y,
-                 {static_cast<std::uint8_t>(dp >> 16), static_cast<std::uint8_t>(dp >> 8),
-                  static_cast<std::uint8_t>(dp)});
-        }
-      }
-      b.input_bytes[i] += static_cast<std::size_t>(r.w) * r.h * 6;
-    }
-    b.routed_bytes += b.input_bytes[i];
-  }
-  for (const auto& f : b.frames) b.views.push_back(l2::InputFrame::of(f));
-  for (std::size_t d = 0; d < s.displays.size(); ++d) {
-    l2::RgbImage e(s.displays[d].width, s.displays[d].height);
-    for (int y = 0; y < e.height(); ++y) {
-      for (int x = 0; x < e.width(); ++x) {
-        int best = -1;
-        for (int k = 0; k < s.layers; ++k) {
-          const int in = (static_cast<int>(d) + k) % s.inputs;
-          if (best < 0 || layer_depth(in, x, y) < layer_depth(best, x, y) ||
-              (layer_depth(in, x, y) == layer_depth(best, x, y) && in < best)) {
-            best = in;
-          }
-        }
-        e.set(x, y, l2::testing::pattern(best, x, y));
-      }
-    }
-    out.expected.push_back(std::move(e));
-  }
-  return out;
-}
-
-// Routing against memcpy of the payload bytes read (colour and depth pixels), in alternation.
-double run_depth(const DepthScenario& s, int repetitions, int workers) {
-  const DepthBuilt db = build(s);
-  const Built& b = db.b;
-  l2::WorkerPool pool(workers);
-  const double before_mib = heap_mib();
-  l2::Router router(
-      l2::Mesh::fit(s.inputs, static_cast<int>(s.displays.size()), {s.fb_width, s.fb_height}),
-      s.displays, pool);
-  for (int warm = 0; warm < 3; ++warm) router.route(b.views);
-  const double router_mib = heap_mib() - before_mib;
-  const auto [route, copy_same] = route_against_memcpy(router, b, pool, repetitions);
-  for (std::size_t d = 0; d < s.displays.size(); ++d) {
-    if (router.display(static_cast<int>(d)).back() != db.expected[d]) {
-      fmt::print(stderr, "{}: display {} composited wrong\n", s.name, s.displays[d].id);
-      std::exit(1);
-    }
-  }
-  const double ratio = median_ratio(copy_same, route, &Time::wall);
-  fmt::print(
-      "\n{}: {} inputs of {}x{} -> {} display(s), {} DEPTH layer(s) a display, {:.1f} MB of "
-      "payload read per frame (colour and depth), emulator memory {:.1f} MiB\n"
-      "  {} worker(s): compositing {:5.2f} GB/s = {:6.1f} frames/s | memcpy same bytes {:5.2f} "
-      "GB/s | compositing/memcpy: fastest runs {:.2f}, median of pairs {:.2f}, by CPU time "
-      "{:.2f}\n",
-      s.name, s.inputs, s.fb_width, s.fb_height, s.displays.size(), s.layers,
-      double(b.routed_bytes) / 1e6, router_mib, workers, gbps(b.routed_bytes, route.best()),
-      1.0 / route.best(), gbps(b.routed_bytes, copy_same.best()), copy_same.best() / route.best(),
-      ratio, median_ratio(copy_same, route, &Time::cpu));
-  return ratio;
-}
-
-// Sort-last: one 1280x1024 display from four DEPTH layers, one a pipeserver (a 1280-wide DEPTH
-// tile needs 4 + 2560 columns). Hybrid: 2x2 displays, each tile two DEPTH layers by two
-// pipeservers.
-void run_compositing(int repetitions, int cores) {
-  const DepthScenario sort_last{
-      "sort-last (4 DEPTH layers)", {{0, 1280, 1024, 0}}, 4, 4, 2564, 1024};
-  const DepthScenario hybrid{
-      "hybrid (2x2 displays, 2 DEPTH layers each)",
-      {{0, 640, 512, 0}, {1, 640, 512, 0}, {2, 640, 512, 0}, {3, 640, 512, 0}},
-      4,
-      2,
-      1284,
-      1024};
-  const double a = run_depth(sort_last, repetitions, cores);
-  const double b = run_depth(hybrid, repetitions, cores);
-  fmt::print("COMPOSITING/memcpy on {} cores (median of pairs): sort-last {:.2f}, hybrid {:.2f}\n",
-             cores, a, b);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -491,7 +229,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (args.compositing_only) {
-    run_compositing(repetitions, cores);
+    run_compositing(repetitions, cores, args.coverage_percent);
     return 0;
   }
   // Many small strips: the per-strip cost shows here.
@@ -531,7 +269,7 @@ int main(int argc, char** argv) {
       cores, 1.0 / h.route_s, 1.0 / h.route_s / 90.0);
   fmt::print("SMALL TILES routing/memcpy on {} cores (median of pairs): {:.2f}\n", cores,
              w.wall_ratio);
-  run_compositing(repetitions, cores);
+  run_compositing(repetitions, cores, args.coverage_percent);
   mesh_sweep(std::max(3, repetitions / 4), cores);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

@@ -26,5 +26,10 @@ std::optional<int> parse_bench_args(int argc, char** argv, BenchArgs& args) {
                "only the WireGL headline case (one 3200x2400 display from 12 inputs)");
   app.add_flag("--compositing", args.compositing_only,
                "only the DEPTH compositing cases (sort-last and hybrid)");
+  app.add_option("--coverage", args.coverage_percent,
+                 "the compositing cases' second coverage: each layer draws a disc of this share "
+                 "of the display, its rows sent sparse, timed against full coverage")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   return l2::parse_command_line(app, argc, argv);
 }

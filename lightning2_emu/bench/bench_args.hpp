@@ -10,6 +10,7 @@ struct BenchArgs {
   bool small_tiles_only = false;  // --small-tiles: only the wall of 64x48 tiles
   bool compositing_only = false;  // --compositing: only the DEPTH compositing cases
   bool headline_only = false;     // --headline: only the WireGL headline case
+  int coverage_percent = 10;      // --coverage: the compositing cases' sparse coverage
 };
 
 // Parses the command line into `args`. Returns the exit status to end with at once (0 after

@@ -138,6 +138,7 @@ void Router::finish(std::span<const int> display_indices, std::vector<DisplayFra
   for (const int d : display_indices) {
     for (int b = 0; b < display_state_[d].band_count; ++b) finish_tasks_.push_back({d, b});
   }
+  for (const int d : display_indices) choose_reached(d);
   band_stats_.resize(finish_tasks_.size());
   pool_.run(static_cast<int>(finish_tasks_.size()), [this](int task, int worker) {
     band_stats_[task] =
@@ -159,6 +160,24 @@ void Router::finish(std::span<const int> display_indices, std::vector<DisplayFra
   }
 }
 
+void Router::choose_reached(int display) {
+  DisplayBands& ds = display_state_[display];
+  if (ds.plane.empty()) return;
+  const RgbImage& back = displays_[display].back();
+  for (int k = 0; k < 2; ++k) {
+    if (ds.reached[static_cast<std::size_t>(k)].buffer == back.data()) {
+      ds.reached_now = k;
+      return;
+    }
+  }
+  // The slot that is not the front buffer's; everything may hold a pixel until finished once.
+  ds.reached_now = ds.reached[0].buffer == displays_[display].front().data() ? 1 : 0;
+  DisplayBands::Reached& r = ds.reached[static_cast<std::size_t>(ds.reached_now)];
+  r.buffer = back.data();
+  r.x0.assign(static_cast<std::size_t>(back.height()), 0);
+  r.x1.assign(static_cast<std::size_t>(back.height()), back.width());
+}
+
 DisplayFrameStats Router::finish_band(int display, int band,
                                       router_detail::WorkerScratch& scratch) {
   DisplayBands& ds = display_state_[display];
@@ -166,25 +185,52 @@ DisplayFrameStats Router::finish_band(int display, int band,
   RgbImage& back = displays_[display].back();
   const int y0 = band * ds.band_rows;
   const int y1 = std::min(back.height(), y0 + ds.band_rows);
-  const CoverageCounts counts =
-      sweep_coverage(bs.areas, y0, y1, back.width(), scratch.coverage,
-                     [&](int from, int to, const std::vector<CoverageScratch::Gap>& gaps) {
-                       for (int y = from; y < to; ++y) {
-                         std::uint8_t* row = back.data() + y * back.stride();
-                         for (const auto& g : gaps)
-                           pixel_copy::fill_pixels(row + g.x0 * 3, g.x1 - g.x0, background_);
-                       }
-                     });
+  // A display with a plane fills the background only where its buffer may hold something else.
+  DisplayBands::Reached* reached =
+      ds.plane.empty() ? nullptr : &ds.reached[static_cast<std::size_t>(ds.reached_now)];
+  const CoverageCounts counts = sweep_coverage(
+      bs.areas, y0, y1, back.width(), scratch.coverage,
+      [&](int from, int to, const std::vector<CoverageScratch::Gap>& gaps) {
+        for (int y = from; y < to; ++y) {
+          std::uint8_t* row = back.data() + y * back.stride();
+          const int lo = reached ? reached->x0[static_cast<std::size_t>(y)] : 0;
+          const int hi = reached ? reached->x1[static_cast<std::size_t>(y)] : back.width();
+          for (const auto& g : gaps) {
+            const int a = std::max(g.x0, lo), b = std::min(g.x1, hi);
+            if (a < b) pixel_copy::fill_pixels(row + a * 3, b - a, background_);
+          }
+        }
+      });
   DisplayFrameStats st;
   for (const Area& a : bs.areas) st.strips += a.y1 - a.y0;  // one area per run, a row per strip
   st.covered_pixels = counts.covered;
   if (!ds.plane.empty()) {  // strips inside which nothing was written show the background too
+    // Only pixels inside an area can hold a rank: the rest got the background from the sweep
+    // and keep kFar. So each row is settled from the first column an area reaches to the last
+    // one: the cost follows what the strips cover (sparse DEPTH rows), not the display.
+    std::vector<int>& x0 = scratch.row_x0;
+    std::vector<int>& x1 = scratch.row_x1;
+    x0.assign(static_cast<std::size_t>(y1 - y0), back.width());
+    x1.assign(static_cast<std::size_t>(y1 - y0), 0);
+    for (const Area& a : bs.areas) {
+      for (int y = std::max<int>(a.y0, y0); y < std::min<int>(a.y1, y1); ++y) {
+        x0[static_cast<std::size_t>(y - y0)] =
+            std::min<int>(x0[static_cast<std::size_t>(y - y0)], a.x0);
+        x1[static_cast<std::size_t>(y - y0)] =
+            std::max<int>(x1[static_cast<std::size_t>(y - y0)], a.x1);
+      }
+    }
     st.covered_pixels = 0;
     for (int y = y0; y < y1; ++y) {
+      const int from = x0[static_cast<std::size_t>(y - y0)],
+                to = x1[static_cast<std::size_t>(y - y0)];
+      reached->x0[static_cast<std::size_t>(y)] = from;
+      reached->x1[static_cast<std::size_t>(y)] = to;
+      if (from >= to) continue;
       st.covered_pixels += static_cast<std::uint64_t>(
-          composite::settle(back.data() + y * back.stride(),
-                            ds.plane.data() + static_cast<std::size_t>(y) * back.width(),
-                            back.width(), background_.r, background_.g, background_.b));
+          composite::settle(back.data() + y * back.stride() + from * 3,
+                            ds.plane.data() + static_cast<std::size_t>(y) * back.width() + from,
+                            to - from, background_.r, background_.g, background_.b));
     }
   }
   st.overdraw_pixels = counts.overdraw;

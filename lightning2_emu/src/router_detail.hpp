@@ -2,6 +2,7 @@
 // finds, and what each band of display rows wrote.
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -217,11 +218,23 @@ struct DisplayBands {
   std::vector<std::uint32_t> plane;
   int highest_input_written = -1;  // over earlier write() calls of this frame
   std::vector<BandState> bands;
+  // Displays with a plane: per row of each of the two buffers the router writes in turn (known
+  // by its pixels' address, as the display's swaps exchange them), the columns that may hold
+  // something other than the background: what the last frame routed into it reached. Outside
+  // them the buffer holds the background already, and finishing a frame need not fill it
+  // again. A buffer not seen yet is taken as reached everywhere.
+  struct Reached {
+    const std::uint8_t* buffer = nullptr;
+    std::vector<int> x0, x1;
+  };
+  std::array<Reached, 2> reached;
+  int reached_now = 0;  // the back buffer's, chosen by finish() before the bands run
 };
 
 // A worker's scratch, reused from frame to frame.
 struct alignas(64) WorkerScratch {
   CoverageScratch coverage;
+  std::vector<int> row_x0, row_x1;  // a band's rows: the columns its areas reach (finish_band)
 };
 
 }  // namespace l2::router_detail

@@ -107,33 +107,6 @@ TEST(Router, ExtDropsTheRestOfTheScanline) {
   EXPECT_EQ(row_of(f.display(0), 0), std::vector<Rgb>(16, kBackground));
 }
 
-// An EXT header and its extension word at column x of scanline y; returns the payload's column.
-int ext_header(FrameBuilder& in, int x, int y, int display, int dx, int dy, int width,
-               const Extension& e) {
-  StripHeader h = StripHeader::copy(false, display, dx, dy, width);
-  h.op = StripOp::Ext;
-  in.header(x, y, h);
-  in.raw_header(x + 2, y, encode(e));
-  return x + 4;
-}
-
-Rgb depth_pixel(std::uint32_t d) {
-  return {static_cast<std::uint8_t>(d >> 16), static_cast<std::uint8_t>(d >> 8),
-          static_cast<std::uint8_t>(d)};
-}
-
-// A DEPTH strip at column x of scanline y: colours, then their depths; returns the next column.
-int depth_strip(FrameBuilder& in, int x, int y, int display, int dx, int dy,
-                const std::vector<Rgb>& colours, const std::vector<std::uint32_t>& depths) {
-  const int w = static_cast<int>(colours.size());
-  const int at = ext_header(in, x, y, display, dx, dy, w, Extension::depth());
-  for (int k = 0; k < w; ++k) {
-    in.image().set(at + k, y, colours[k]);
-    in.image().set(at + w + k, y, depth_pixel(depths[k]));
-  }
-  return at + 2 * w;
-}
-
 // Spec §7, each rule once: COPY then KEY (transparent where the payload is the key colour);
 // DEPTH writes only a strictly nearer pixel (equal depth: the earlier strip stays, far: never);
 // no DEPTH covers a COPY pixel; a pixel reached only at the far plane shows the background.
@@ -141,12 +114,12 @@ TEST(Router, KeyAndDepthStripsCompositeAsSection7Says) {
   Fixture f;
   FrameBuilder in(64, 2);
   int x = in.copy_fill(0, 0, 0, 0, 0, 6, kRed);
-  const int key = ext_header(in, x, 0, 0, 2, 0, 4, Extension::key_colour(0x00FF00));
+  const int key = in.ext(x, 0, 0, 2, 0, 4, Extension::key_colour(0x00FF00));
   for (int k = 0; k < 4; ++k) in.image().set(key + k, 0, k % 2 ? kBlue : kGreen);
-  x = depth_strip(in, 0, 1, 0, 0, 1, {kRed, kRed, kRed, kRed}, {5, 0xFFFFFF, 5, 0});
-  x = depth_strip(in, x, 1, 0, 0, 1, {kBlue, kBlue, kBlue, kBlue}, {5, 3, 6, 0});
+  x = in.depth(0, 1, 0, 0, 1, {kRed, kRed, kRed, kRed}, {5, 0xFFFFFF, 5, 0});
+  x = in.depth(x, 1, 0, 0, 1, {kBlue, kBlue, kBlue, kBlue}, {5, 3, 6, 0});
   x = in.copy_fill(x, 1, 0, 4, 1, 2, kGreen);
-  depth_strip(in, x, 1, 0, 4, 1, {kBlue, kBlue, kBlue}, {0, 0, 0xFFFFFF});
+  in.depth(x, 1, 0, 4, 1, {kBlue, kBlue, kBlue}, {0, 0, 0xFFFFFF});
   const RouteReport r = f.route({&in.image()});
   EXPECT_EQ(r.inputs[0].errors, StripErrorCounts{});
   EXPECT_EQ(r.inputs[0].copy_strips, 2u);
@@ -172,8 +145,8 @@ TEST(Router, KeyAndDepthStripsCompositeAsSection7Says) {
 TEST(Router, CompositingStartsEveryFrameFromTheFarPlane) {
   Fixture f;
   FrameBuilder near(64, 1), far(64, 1);
-  depth_strip(near, 0, 0, 0, 0, 0, {kRed, kRed}, {1, 1});
-  depth_strip(far, 0, 0, 0, 0, 0, {kBlue, kGreen}, {0xFFFFFE, 0xFFFFFF});
+  near.depth(0, 0, 0, 0, 0, {kRed, kRed}, {1, 1});
+  far.depth(0, 0, 0, 0, 0, {kBlue, kGreen}, {0xFFFFFE, 0xFFFFFF});
   f.route({&near.image()});
   const RouteReport r = f.route({&far.image()});
   std::vector<Rgb> row(16, kBackground);
@@ -189,7 +162,7 @@ TEST(Router, DepthJustShortOfTheFarPlaneFromTheLastInputIsWritten) {
   Router router(Mesh(64, 1), {{0, 40, 1, 0}}, pool, kBackground);
   FrameBuilder in(128, 1);
   const std::vector<std::uint32_t> depths(40, 0xFFFFFE);
-  depth_strip(in, 0, 0, 0, 0, 0, std::vector<Rgb>(40, kGreen), depths);
+  in.depth(0, 0, 0, 0, 0, std::vector<Rgb>(40, kGreen), depths);
   std::vector<InputFrame> frames(256);
   frames[255] = InputFrame::of(in.image());
   const RouteReport r = router.route(frames);
@@ -202,9 +175,9 @@ TEST(Router, DepthJustShortOfTheFarPlaneFromTheLastInputIsWritten) {
 TEST(Router, KeyAndDepthCountMissingDisplaysAndClips) {
   Fixture f;
   FrameBuilder in(64, 1);
-  int x = ext_header(in, 0, 0, 5, 0, 0, 3, Extension::key_colour(0));
+  int x = in.ext(0, 0, 5, 0, 0, 3, Extension::key_colour(0));
   in.image().fill_rect(x, 0, 3, 1, kRed);
-  x = depth_strip(in, x + 3, 0, 1, 6, 0, {kRed, kGreen, kBlue, kBlue}, {1, 2, 3, 4});
+  x = in.depth(x + 3, 0, 1, 6, 0, {kRed, kGreen, kBlue, kBlue}, {1, 2, 3, 4});
   in.copy_fill(x, 0, 1, 0, 0, 2, kBlue);
   const RouteReport r = f.route({&in.image()});
   EXPECT_EQ(r.inputs[0].errors, errors(0, 0, 0, 0, 1, 1));
@@ -223,11 +196,11 @@ TEST(Router, KeyAndDepthCountMissingDisplaysAndClips) {
 TEST(Router, CompositingAcrossRefreshesIsInBusOrder) {
   Fixture f;
   FrameBuilder low(64, 2), high(64, 2);
-  depth_strip(low, 0, 0, 0, 0, 0, {kRed, kRed, kRed}, {7, 7, 7});
-  int x = depth_strip(high, 0, 0, 0, 0, 0, {kBlue, kBlue}, {7, 6});
+  low.depth(0, 0, 0, 0, 0, {kRed, kRed, kRed}, {7, 7, 7});
+  int x = high.depth(0, 0, 0, 0, 0, {kBlue, kBlue}, {7, 6});
   high.copy_fill(x, 0, 0, 2, 0, 1, kGreen);
   low.copy_fill(0, 1, 0, 0, 1, 4, kRed);
-  const int key = ext_header(high, 0, 1, 0, 0, 1, 4, Extension::key_colour(0x0000FF));
+  const int key = high.ext(0, 1, 0, 0, 1, 4, Extension::key_colour(0x0000FF));
   for (int k = 0; k < 4; ++k) high.image().set(key + k, 1, k < 2 ? kBlue : kGreen);
   const std::vector<InputFrame> frames{InputFrame::of(low.image()), InputFrame::of(high.image())};
   f.router.scan(frames);
@@ -251,8 +224,7 @@ TEST(Router, AScanlineRepeatsOnlyWithTheSameExtensionWords) {
   FrameBuilder in(64, 2);
   for (int y = 0; y < 2; ++y) {
     in.copy_fill(0, y, 0, 0, y, 4, kRed);
-    const int key =
-        ext_header(in, 6, y, 0, 0, y, 4, Extension::key_colour(y == 0 ? 0x00FF00 : 0x0000FF));
+    const int key = in.ext(6, y, 0, 0, y, 4, Extension::key_colour(y == 0 ? 0x00FF00 : 0x0000FF));
     for (int k = 0; k < 4; ++k) in.image().set(key + k, y, k % 2 ? kBlue : kGreen);
   }
   f.route({&in.image()});
@@ -270,7 +242,7 @@ TEST(Router, APredictionHoldsTheExtensionWordsToo) {
   for (FrameBuilder* in : {&a, &b}) {
     const int x = in->copy_fill(0, 0, 0, 0, 0, 4, kRed);
     const int key =
-        ext_header(*in, x, 0, 0, 0, 0, 4, Extension::key_colour(in == &a ? 0x00FF00 : 0x0000FF));
+        in->ext(x, 0, 0, 0, 0, 4, Extension::key_colour(in == &a ? 0x00FF00 : 0x0000FF));
     for (int k = 0; k < 4; ++k) in->image().set(key + k, 0, k % 2 ? kBlue : kGreen);
   }
   f.route({&a.image()});

@@ -88,4 +88,27 @@ void copy_tile_out(const PackedTile& p, const TileInWindow& from, std::uint32_t 
     copy_depth(p, from, far_as, frame.data(), row_bytes);
 }
 
+void sparse_depth_rows(const PipeserverPlan& plan, bool frame_parity, const DepthSkip& skip,
+                       std::span<std::uint8_t> frame, SparseScratch& scratch) {
+  const std::size_t row_bytes = static_cast<std::size_t>(plan.fb_width) * 3;
+  for (const PackedTile& p : plan.tiles) {
+    if (p.tile.compositing != Compositing::Depth) continue;
+    const Rect& d = p.tile.on_display;
+    StripHeader dense = StripHeader::copy(frame_parity, p.tile.display, d.x, d.y, d.w);
+    dense.op = StripOp::Ext;
+    // Without a stamp strip the frame number marks the first tile's first pixel, which the run
+    // reads back there (live_mode.cpp): that scanline stays dense.
+    const int first_row = &p == plan.tiles.data() && !plan.has_stamp_strip() ? 1 : 0;
+    for (int r = first_row; r < d.h; ++r) {
+      std::uint8_t* colour = frame.data() + static_cast<std::size_t>(p.fb_y + r) * row_bytes +
+                             static_cast<std::size_t>(p.fb_x) * 3;
+      find_depth_spans(colour, colour + static_cast<std::size_t>(d.w) * 3, d.w, skip,
+                       scratch.spans);
+      dense.y = static_cast<std::uint16_t>(d.y + r);
+      pack_sparse_row(colour - static_cast<std::size_t>(gap_columns(p.tile)) * 3, dense,
+                      scratch.spans, scratch.row);
+    }
+  }
+}
+
 }  // namespace l2

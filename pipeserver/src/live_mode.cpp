@@ -230,11 +230,18 @@ int run_live_mode(const LiveOptions& o) {
   for (int k = 0; k < o.frames; ++k) {
     const auto t0 = Clock::now();
     // With a link the frame is scanned out straight into its back frame: no copy to make.
-    const FramePixels fb{link ? ps.render_frame(k, *scene, link->back_frame()).data()
-                              : ps.render_frame(k, *scene).data(),
-                         static_cast<std::size_t>(plan.fb_width) * 3};
-    stamp_frame(fb, plan, k);
-    if (sender) send_tiles(*sender, fb, plan, k);
+    // Stamped and sent to the compositing server while every tile is whole at its packed place,
+    // before the DEPTH rows go sparse (pipeserver.hpp); the stamp's pixel stays where it is.
+    const auto dense = [&](std::span<std::uint8_t> frame) {
+      const FramePixels fb{frame.data(), static_cast<std::size_t>(plan.fb_width) * 3};
+      stamp_frame(fb, plan, k);
+      if (sender) send_tiles(*sender, fb, plan, k);
+    };
+    if (link) {
+      ps.render_frame(k, *scene, link->back_frame(), dense);
+    } else {
+      ps.render_frame(k, *scene, dense);
+    }
     const double render_ms = ms_since(t0);
     // Sent before the READY wait, so the coordinator plans the next frame meanwhile.
     if (o.control) send_times(*o.control, ps, k);

@@ -53,6 +53,7 @@ Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver)
     : plan_(plan_of(layout, pipeserver)),
       canvas_(canvas_of(layout.wall)),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
+      depth_skip_(depth_skip_of(layout, pipeserver, kMeshBackground)),
       frame_(plan_.fb_width, plan_.fb_height) {
   make_windows(layout.wall);
 }
@@ -67,6 +68,7 @@ void Pipeserver::set_layout(const TileLayout& layout) {
   plan_ = plan;
   canvas_ = canvas_of(layout.wall);
   headers_ = {FrameHeaders(plan_, false), FrameHeaders(plan_, true)};
+  depth_skip_ = depth_skip_of(layout, plan_.pipeserver, kMeshBackground);
   make_windows(layout.wall);
 }
 
@@ -96,13 +98,15 @@ void Pipeserver::make_windows(const Wall& wall) {
                    [](const Window& a, const Window& b) { return a.context < b.context; });
 }
 
-RgbImage& Pipeserver::render_frame(int frame, Scene& scene) {
-  render_frame(frame, scene, frame_.bytes());
+RgbImage& Pipeserver::render_frame(int frame, Scene& scene,
+                                   const std::function<void(std::span<std::uint8_t>)>& dense) {
+  render_frame(frame, scene, frame_.bytes(), dense);
   return frame_;
 }
 
-std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
-                                                 std::span<std::uint8_t> dst) {
+std::span<std::uint8_t> Pipeserver::render_frame(
+    int frame, Scene& scene, std::span<std::uint8_t> dst,
+    const std::function<void(std::span<std::uint8_t>)>& dense) {
   // A short buffer is refused before the render.
   const std::size_t bytes =
       static_cast<std::size_t>(plan_.fb_width) * static_cast<std::size_t>(plan_.fb_height) * 3;
@@ -124,6 +128,12 @@ std::span<std::uint8_t> Pipeserver::render_frame(int frame, Scene& scene,
     headers.draw_row(y, dst.subspan(static_cast<std::size_t>(y) * row_bytes, row_bytes));
   }
   times_.scanout_ms += ms_since(t0);
+  if (dense) dense(dst.first(bytes));
+  if (sparse_depth_) {
+    const auto t1 = Clock::now();
+    sparse_depth_rows(plan_, frame_parity(frame), depth_skip_, dst, sparse_);
+    times_.scanout_ms += ms_since(t1);
+  }
   return dst.first(bytes);
 }
 

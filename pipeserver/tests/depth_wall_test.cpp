@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "strip_headers/scanline_parser.hpp"
+
 #include "pipeserver/depth_out.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "test_support.hpp"
@@ -29,10 +31,12 @@ TileLayout depth_wall(int pipeservers, const std::string& extra = "") {
   return plan_layout(parse_wall(text, "depth.toml"));
 }
 
-std::vector<RgbImage> render_all(const TileLayout& layout, Scene& scene, int frame) {
+std::vector<RgbImage> render_all(const TileLayout& layout, Scene& scene, int frame,
+                                 bool sparse = true) {
   std::vector<RgbImage> frames;
   for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
     Pipeserver ps(layout, s);
+    ps.set_sparse_depth(sparse);
     frames.push_back(ps.render_frame(frame, scene));
   }
   return frames;
@@ -53,7 +57,7 @@ std::vector<std::uint32_t> depths(const RgbImage& frame) {
 TEST(DepthWall, LayersSendTheirDepthAndOnlyLayerZeroItsClear) {
   const TileLayout layout = depth_wall(2);
   auto scene = make_scene("mesh", test::small_options());
-  const std::vector<RgbImage> frames = render_all(layout, *scene, 3);
+  const std::vector<RgbImage> frames = render_all(layout, *scene, 3, false);
   long drawn[2] = {0, 0};
   for (int layer = 0; layer < 2; ++layer) {
     const std::vector<std::uint32_t> d = depths(frames[layer]);
@@ -98,6 +102,74 @@ TEST(DepthWall, TheCompositeOfTheLayersIsTheWholeSceneRendered) {
     const RgbImage want = render_reference(layout, 0, *scene, 2);
     EXPECT_EQ(test::compare(shown[0], want).pixels_differing, 0) << name;
   }
+}
+
+// DEPTH pixels and SKIP headers in a frame, as the mesh parses it.
+struct Parsed {
+  long depth_pixels = 0, skips = 0;
+  std::uint64_t errors = 0;
+};
+Parsed parse(const RgbImage& frame) {
+  Parsed p;
+  StripErrorCounts errors;
+  for (int y = 0; y < frame.height(); ++y) {
+    parse_scanline(frame.data() + y * frame.stride(), frame.width(), 3, errors,
+                   [&](const ParsedStrip& s) {
+                     if (s.is(ExtKind::Depth)) p.depth_pixels += s.length;
+                     if (s.header.op == StripOp::Skip) ++p.skips;
+                   });
+  }
+  p.errors = errors.total();
+  return p;
+}
+
+TEST(SparseDepth, FramesSendOnlyWhatWasDrawnAndDisplaysStayTheSame) {
+  // Sparse and dense frames of the same render: the sparse ones carry fewer DEPTH pixels (the
+  // bunny leaves most of the tile clear) and route to byte-identical displays, for layer 0's
+  // black clear (left out) and the swap scene's coloured one (sent), with an overlay too.
+  const TileLayout plain = depth_wall(3);
+  const TileLayout overlaid =
+      depth_wall(4, "[overlay]\nx = 8\ny = 4\nwidth = 40\nheight = 30\nkey = 0x00ff00\n");
+  for (const TileLayout* layout : {&plain, &overlaid}) {
+    for (const char* name : {"mesh", "isosurface", "swap"}) {
+      auto scene = make_scene(name, test::small_options());
+      for (int frame : {1, 2}) {
+        const std::vector<RgbImage> dense = render_all(*layout, *scene, frame, false);
+        const std::vector<RgbImage> sparse = render_all(*layout, *scene, frame, true);
+        long dense_pixels = 0, sparse_pixels = 0;
+        for (std::size_t s = 0; s < dense.size(); ++s) {
+          const Parsed d = parse(dense[s]), p = parse(sparse[s]);
+          EXPECT_EQ(p.errors, 0u) << name << " pipeserver " << s;
+          dense_pixels += d.depth_pixels;
+          sparse_pixels += p.depth_pixels;
+        }
+        if (std::string(name) == "mesh") {
+          EXPECT_LT(sparse_pixels * 2, dense_pixels) << name;
+        }
+        EXPECT_LE(sparse_pixels, dense_pixels) << name;
+        const std::vector<RgbImage> want = route_on_wall(layout->wall, dense);
+        const std::vector<RgbImage> got = route_on_wall(layout->wall, sparse);
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t d = 0; d < want.size(); ++d) {
+          EXPECT_TRUE(got[d] == want[d]) << name << " frame " << frame << " display " << d;
+        }
+      }
+    }
+  }
+}
+
+TEST(SparseDepth, LayerZeroSendsItsColouredClear) {
+  // The swap scene draws nothing: layers behind 0 send SKIPs, layer 0 every pixel
+  // (its clear is not the background), so the display shows the clear colour.
+  const TileLayout layout = depth_wall(3);
+  auto scene = make_scene("swap");
+  const std::vector<RgbImage> frames = render_all(layout, *scene, 1);
+  // The framebuffer has no room for a stamp strip, so the first tile's first scanline, where the
+  // frame number goes instead, stays dense: 64 pixels, and a SKIP on each of the other 47.
+  EXPECT_EQ(parse(frames[0]).depth_pixels, 64 * 48);
+  EXPECT_EQ(parse(frames[1]).depth_pixels, 64);
+  EXPECT_EQ(parse(frames[1]).skips, 47);
+  EXPECT_EQ(parse(frames[2]).depth_pixels, 64);
 }
 
 TEST(Overlay, IsTheSceneOverItsKeyColour) {

@@ -26,7 +26,8 @@ int parity_with(int parity, bool frame) {
 }  // namespace
 
 std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
-                                    std::vector<InputCheck>& inputs) {
+                                    std::vector<InputCheck>& inputs,
+                                    std::vector<FoundStrip>* skips) {
   std::vector<FoundStrip> strips;
   inputs.clear();
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -45,12 +46,18 @@ std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
             next_header = s.next_header_x();
             last_header = s.header_x();
             check.parity = parity_with(check.parity, s.header.frame);
-            if (s.header.op == StripOp::Skip) return;
+            const std::uint8_t* h = row + static_cast<std::ptrdiff_t>(s.header_x()) * 3;
+            if (s.header.op == StripOp::Skip) {
+              if (skips) {
+                skips->push_back({check.input, y, s.source_x, s.length, header_value(h, h + 3),
+                                  s.header, Compositing::Copy, 0, 0});
+              }
+              return;
+            }
             Compositing how = Compositing::Copy;
             if (s.is(ExtKind::Key)) how = Compositing::Key;
             if (s.is(ExtKind::Depth)) how = Compositing::Depth;
             ++(how == Compositing::Copy ? check.copy_strips : check.composited_strips);
-            const std::uint8_t* h = row + static_cast<std::ptrdiff_t>(s.header_x()) * 3;
             strips.push_back({check.input, y, s.source_x, s.length, header_value(h, h + 3),
                               s.header, how, s.extension.key, s.depth_x()});
           });

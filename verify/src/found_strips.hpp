@@ -25,7 +25,10 @@ struct FoundStrip {
 // COPY, KEY and DEPTH strips of every frame in priority order (inputs ascending, rows top to
 // bottom, left to right); fills `inputs` with one InputCheck per frame (strip and error counts,
 // where the first refusals were, the frame's size and parity).
+// `skips`, when given, gets every SKIP the same way (how Copy): what a sparse DEPTH row passes
+// over (tilelayout/sparse_depth.hpp), for the plan check.
 std::vector<FoundStrip> find_strips(std::span<const RgbImage> frames,
-                                    std::vector<InputCheck>& inputs);
+                                    std::vector<InputCheck>& inputs,
+                                    std::vector<FoundStrip>* skips = nullptr);
 
 }  // namespace l2::verify_detail

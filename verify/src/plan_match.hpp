@@ -15,8 +15,11 @@
 
 namespace l2::verify_detail {
 
-// Fills each input's planned size, not_as_planned, first_difference and carries.
+// Fills each input's planned size, not_as_planned, first_difference and carries. A scanline
+// of a DEPTH tile sent sparse (tilelayout/sparse_depth.hpp) — DEPTH strips of its display row
+// and SKIPs (`skips`), chained over exactly the tile's gap and payload columns — counts as the
+// planned strip.
 void match_plans(const TileLayout& layout, std::span<const FoundStrip> strips,
-                 std::vector<InputCheck>& inputs);
+                 std::span<const FoundStrip> skips, std::vector<InputCheck>& inputs);
 
 }  // namespace l2::verify_detail

@@ -208,8 +208,9 @@ RoutingCheck check_routing(const TileLayout& layout, std::span<const RgbImage> f
                            std::span<const RgbImage* const> routed) {
   RoutingCheck check;
   check.planned_inputs = static_cast<int>(layout.pipeservers.size());
-  const std::vector<FoundStrip> strips = verify_detail::find_strips(frames, check.inputs);
-  verify_detail::match_plans(layout, strips, check.inputs);
+  std::vector<FoundStrip> skips;
+  const std::vector<FoundStrip> strips = verify_detail::find_strips(frames, check.inputs, &skips);
+  verify_detail::match_plans(layout, strips, skips, check.inputs);
   // Spec §6: the frames routed together are one application frame, so one parity.
   int parity = kNoParity;
   for (const InputCheck& i : check.inputs) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "image/rgb_image.hpp"
+#include "strip_headers/extension_word.hpp"
 #include "strip_headers/strip_header.hpp"
 
 namespace l2::testing {
@@ -32,6 +33,12 @@ class FrameBuilder {
   int copy_fill(int x, int y, int display, int dx, int dy, int width, Rgb colour,
                 bool parity = false);
   int skip(int x, int y, int width, bool parity = false);
+  // An EXT header (frame 0) and its extension word at x; returns the payload's column.
+  int ext(int x, int y, int display, int dx, int dy, int width, const Extension& e);
+  // A DEPTH strip (frame 0) at x: the colours, then their depths as pixels D = R<<16 | G<<8 |
+  // B; returns the next header's column.
+  int depth(int x, int y, int display, int dx, int dy, const std::vector<Rgb>& colours,
+            const std::vector<std::uint32_t>& depths);
 
  private:
   RgbImage image_;

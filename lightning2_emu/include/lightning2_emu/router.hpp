@@ -115,6 +115,8 @@ class Router {
   // Whether no strip of a predicted input routed now overlaps an area an earlier write() call
   // of this frame wrote: then its headers can be checked in the copy (write()).
   bool predictions_clear_of_earlier(std::span<const std::uint8_t> route_input) const;
+  // Which of the display's two buffers finish() writes into, for its background (finish_band).
+  void choose_reached(int display);
   DisplayFrameStats finish_band(int display, int band, router_detail::WorkerScratch& scratch);
   // Gives every display the scan found KEY or DEPTH strips for its compositing plane, once.
   void add_planes();

@@ -39,6 +39,28 @@ int FrameBuilder::skip(int x, int y, int width, bool parity) {
   return x + 2 + width;
 }
 
+int FrameBuilder::ext(int x, int y, int display, int dx, int dy, int width, const Extension& e) {
+  StripHeader h = StripHeader::copy(false, display, dx, dy, width);
+  h.op = StripOp::Ext;
+  header(x, y, h);
+  raw_header(x + 2, y, encode(e));
+  return x + 4;
+}
+
+int FrameBuilder::depth(int x, int y, int display, int dx, int dy, const std::vector<Rgb>& colours,
+                        const std::vector<std::uint32_t>& depths) {
+  const int w = static_cast<int>(colours.size());
+  const int at = ext(x, y, display, dx, dy, w, Extension::depth());
+  for (int k = 0; k < w; ++k) {
+    const std::uint32_t d = depths[static_cast<std::size_t>(k)];
+    image_.set(at + k, y, colours[static_cast<std::size_t>(k)]);
+    image_.set(at + w + k, y,
+               {static_cast<std::uint8_t>(d >> 16), static_cast<std::uint8_t>(d >> 8),
+                static_cast<std::uint8_t>(d)});
+  }
+  return at + 2 * w;
+}
+
 bool pack_frame(std::span<const Tile> tiles, bool parity, RgbImage& frame) {
   frame.fill({});
   const int width = frame.width();

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "pipeserver/gl_context.hpp"
+#include "tilelayout/sparse_depth.hpp"
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
@@ -27,5 +28,11 @@ struct TileInWindow {
 // (the camera keeps the scene well inside the far plane). The caller checks the frame's size.
 void copy_tile_out(const PackedTile& p, const TileInWindow& from, std::uint32_t far_as,
                    std::span<std::uint8_t> frame, int fb_width);
+
+// The scanlines of every DEPTH tile of `plan` in `frame`, packed and with their headers drawn
+// for `frame_parity`, rewritten as sparse rows (tilelayout/sparse_depth.hpp): DEPTH strips over
+// what `skip` may not leave out, a SKIP over the rest. The mesh then composites only those.
+void sparse_depth_rows(const PipeserverPlan& plan, bool frame_parity, const DepthSkip& skip,
+                       std::span<std::uint8_t> frame, SparseScratch& scratch);
 
 }  // namespace l2

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "image/rgb_image.hpp"
 #include "pipeserver/bucketing.hpp"
 #include "pipeserver/camera.hpp"
+#include "pipeserver/depth_out.hpp"
 #include "pipeserver/gl_context.hpp"
 #include "pipeserver/scene.hpp"
 #include "tilelayout/batch_footprint.hpp"
@@ -42,6 +44,10 @@ inline bool frame_parity(int frame) {
   return (frame & 1) != 0;
 }
 
+// The mesh's background (spec §5: black unless configured), which `l2wall run` keeps: a layer-0
+// pipeserver leaves its clear out where it is this colour (tilelayout/sparse_depth.hpp).
+inline constexpr std::array<std::uint8_t, 3> kMeshBackground{0, 0, 0};
+
 class Pipeserver {
  public:
   // Throws std::out_of_range when `pipeserver` is not a pipeserver of the layout.
@@ -50,13 +56,21 @@ class Pipeserver {
   // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
   // stays valid until the next call, and the caller may mark it (a frame number stamped in)
   // instead of copying 1.4 MB a frame to do so.
-  RgbImage& render_frame(int frame, Scene& scene);
+  RgbImage& render_frame(int frame, Scene& scene,
+                         const std::function<void(std::span<std::uint8_t>)>& dense = {});
 
   // The same, scanned out into `dst`: fb_width x fb_height RGB, rows of fb_width * 3 bytes, row
   // 0 on top, every pixel written (the live pipeserver passes its DVI link's back frame, so the
   // frame is not copied there afterwards). Returns the frame's bytes at the start of `dst`. Throws
   // std::invalid_argument when `dst` is smaller than a frame.
-  std::span<std::uint8_t> render_frame(int frame, Scene& scene, std::span<std::uint8_t> dst);
+  // `dense`, when given, sees the frame before its DEPTH rows are made sparse: every tile whole
+  // at its packed place, as the vizserver path's tile sender reads them.
+  std::span<std::uint8_t> render_frame(
+      int frame, Scene& scene, std::span<std::uint8_t> dst,
+      const std::function<void(std::span<std::uint8_t>)>& dense = {});
+  // Whether DEPTH rows go out sparse (tilelayout/sparse_depth.hpp), as they do unless turned
+  // off: a dense frame routes to the same displays, which the tests compare.
+  void set_sparse_depth(bool on) { sparse_depth_ = on; }
 
   // The same pipeserver in another layout of its wall (the load balancer's next frame): its
   // plan, headers and windows anew, its GL contexts kept. Throws std::out_of_range as the
@@ -81,6 +95,9 @@ class Pipeserver {
   std::vector<std::unique_ptr<GlContext>> contexts_;  // one per display size
   std::vector<Window> windows_;                       // by context, then display
   std::array<FrameHeaders, 2> headers_;               // encoded once, by frame parity
+  DepthSkip depth_skip_;  // what this pipeserver's DEPTH rows may leave out, by the layout
+  bool sparse_depth_ = true;
+  SparseScratch sparse_;
   RgbImage frame_;
   FrameTimes times_;
 };
