@@ -43,6 +43,12 @@ std::string colour(const Display& d) {
   return "";
 }
 
+// The display's geometry warp, when it has one: "; warp calibration/warp-0.pfm" (as the wall
+// file says; said even when the file works out to no change, so the line matches the file).
+std::string warp(const Display& d) {
+  return d.warp.empty() ? "" : fmt::format("; warp {}", printable(d.warp));
+}
+
 // How a display's pixels are blended with the displays it overlaps, when they are: "; blend gamma
 // 2.2 over 64 columns at the right edge" (edges of its canvas rectangle, as it hangs).
 std::string blend(const Wall& wall, const Display& d) {
@@ -162,10 +168,10 @@ void displays(const TileLayout& layout, std::string& out) {
     }
     out += fmt::format(
         "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
-        "by {} tiles from pipeservers {}{}{}\n",
+        "by {} tiles from pipeservers {}{}{}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
-        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")),
+        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), warp(d),
         blend(layout.wall, d), colour(d));
   }
 }

@@ -6,12 +6,14 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "image/orientation.hpp"
+#include "image/warp_map.hpp"
 #include "tilelayout/colour_match.hpp"
 #include "tilelayout/geometry.hpp"
 
@@ -27,6 +29,11 @@ struct Display {
   std::string monitor;             // optional monitor name or index for --show monitors
   Orientation orientation;         // as mounted (image/orientation.hpp)
   ColourMatch colour;              // applied where its pixels leave the wall (colour_match.hpp)
+  // `warp`: the geometry warp file as written, relative to the wall file, and its map, applied
+  // before blend and colour where its pixels leave the wall; shared, so that copying a wall does
+  // not copy a map of every pixel. No map when there is no warp or it changes nothing.
+  std::string warp;
+  std::shared_ptr<const WarpMap> warp_map;
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }
