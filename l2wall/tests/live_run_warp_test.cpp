@@ -8,11 +8,13 @@
 
 #include <bit>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <limits>
 #include <string>
 
+#include "grey_png.hpp"
 #include "image/png_io.hpp"
 #include "wall_run.hpp"
 
@@ -137,6 +139,75 @@ TEST(LiveRunWarp, SavedDisplaysAreTheFrameWarpedAsDocumented) {
   const RgbImage zero = read_png(run.out() / "frame-2" / "display-0.png");
   EXPECT_EQ(zero.at(0, 20), (Rgb{63, 20, 1}));  // canvas (319, 20)
   EXPECT_EQ(zero.at(5, 5), (Rgb{0, 0, 0}));
+  expect_clean(run);
+}
+
+// Alpha and beta maps end to end (docs/wall-file.md, "Alpha and beta maps"): display 0 mirrored
+// by its warp and then weighted by an alpha map that falls from 255 at its left column to 0 at
+// its right, at alpha_gamma 2.2; display 1 with a beta map of 40 in its top half. Every saved
+// pixel of both paths against the documented rule, worked out here.
+TEST(LiveRunWarp, AlphaAndBetaMapsApplyAfterTheWarpAsDocumented) {
+  const ScratchDir dir("levels");
+  write_pfm(dir / "mirror.pfm", kWidth, kHeight, [&](int i, int j) {
+    return std::pair(centre(kWidth - 1 - i, kWidth), centre(j, kHeight));
+  });
+  std::vector<std::uint8_t> alpha, beta;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      alpha.push_back(static_cast<std::uint8_t>(255 - x * 255 / (kWidth - 1)));
+      beta.push_back(y < kHeight / 2 ? 40 : 0);
+    }
+  }
+  write_grey_png(dir / "alpha.png", kWidth, kHeight, alpha);
+  write_grey_png(dir / "beta.png", kWidth, kHeight, beta);
+  std::string wall = kWall;
+  wall.replace(wall.find("warp = \"shift.pfm\""), 18, "beta = \"beta.png\"");
+  wall.replace(wall.find("warp = \"mirror.pfm\""), 19,
+               "warp = \"mirror.pfm\"\nalpha = \"alpha.png\"\nalpha_gamma = 2.2");
+  std::ofstream(dir / "wall.toml") << wall;
+  RgbImage canvas(2 * kWidth, kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < 2 * kWidth; ++x) canvas.set(x, y, position(x, y));
+  write_png(dir / "positions.png", canvas);
+
+  WallRun run("levels", {"--wall", (dir / "wall.toml").string(), "--scene", "picture", "--content",
+                         (dir / "positions.png").string(), "--fit", "stretch", "--frames", "3",
+                         "--refresh", "0", "--path", "both", "--compare", "--keep", "every"});
+  const ExitStatus status = run.wait(60s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  // The rule: gain = round(a^(1/gamma) * (1 - b) * 65536), offset = round(b * 255 * 65536),
+  // out = (in * gain + offset + 32768) / 65536 rounded down, a and b the maps' bytes / 255.
+  const auto level = [](Rgb in, int a, double gamma, int b) {
+    const double fa = a / 255.0, fb = b / 255.0;
+    const auto gain =
+        static_cast<long long>(std::floor(std::pow(fa, 1 / gamma) * (1 - fb) * 65536 + 0.5));
+    const auto offset = static_cast<long long>(std::floor(fb * 255 * 65536 + 0.5));
+    const auto one = [&](int v) {
+      return static_cast<std::uint8_t>((v * gain + offset + 32768) >> 16);
+    };
+    return Rgb{one(in.r), one(in.g), one(in.b)};
+  };
+  long wrong = 0;
+  for (const char* path : {"", "-vizserver"}) {
+    const fs::path frame = run.out() / "frame-2";
+    const RgbImage zero = read_png(frame / fmt::format("display-0{}.png", path));
+    const RgbImage one = read_png(frame / fmt::format("display-1{}.png", path));
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+        wrong += !(zero.at(x, y) == level(position(kWidth - 1 - x, y), alpha[i], 2.2, 0));
+        wrong += !(one.at(x, y) == level(position(kWidth + x, y), 255, 1.0, beta[i]));
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  // In numbers: display 0's right column has alpha 0 (black); display 1's pixel (0, 0) shows
+  // canvas (320, 0) = (64, 0, 1) raised by beta 40: 40 + 64 * 215/255 = 93.96 -> 94, 40, 40.8.
+  const RgbImage zero = read_png(run.out() / "frame-2" / "display-0.png");
+  EXPECT_EQ(zero.at(kWidth - 1, 100), (Rgb{0, 0, 0}));
+  const RgbImage one = read_png(run.out() / "frame-2" / "display-1.png");
+  EXPECT_EQ(one.at(0, 0), (Rgb{94, 40, 41}));
+  EXPECT_EQ(one.at(0, kHeight - 1), position(kWidth, kHeight - 1));
   expect_clean(run);
 }
 

@@ -43,10 +43,18 @@ std::string colour(const Display& d) {
   return "";
 }
 
-// The display's geometry warp, when it has one: "; warp calibration/warp-0.pfm" (as the wall
-// file says; said even when the file works out to no change, so the line matches the file).
+// The display's geometry warp and alpha and beta maps, when it has them: "; warp
+// calibration/warp-0.pfm; alpha calibration/alpha-0.png at gamma 2.2; beta ..." (as the wall
+// file says; said even when a file works out to no change, so the line matches the file).
 std::string warp(const Display& d) {
-  return d.warp.empty() ? "" : fmt::format("; warp {}", printable(d.warp));
+  std::string out;
+  if (!d.warp.empty()) out += fmt::format("; warp {}", printable(d.warp));
+  if (!d.alpha.empty()) {
+    out += fmt::format("; alpha {}", printable(d.alpha));
+    if (d.alpha_gamma != 1.0) out += fmt::format(" at gamma {}", d.alpha_gamma);
+  }
+  if (!d.beta.empty()) out += fmt::format("; beta {}", printable(d.beta));
+  return out;
 }
 
 // How a display's pixels are blended with the displays it overlaps, when they are: "; blend gamma

@@ -99,7 +99,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     }
     const TomlFields f(*node.as_table(), name, top.source(),
                        {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation",
-                        "flip", "gain", "offset", "lut", "warp"});
+                        "flip", "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma"});
     Display d;
     d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
     d.width = f.required_integer("width", 1, kMaxSize);
@@ -111,6 +111,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     d.orientation = read_orientation(f);
     d.colour = read_colour(f);
     read_warp(f, d);
+    read_levels(f, d);
     for (std::size_t j = 0; j < wall.displays.size(); ++j) {
       if (wall.displays[j].id == d.id) {
         f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));

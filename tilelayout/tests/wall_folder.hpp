@@ -16,6 +16,14 @@
 
 namespace l2 {
 
+// A wall of one 4x2 display whose [[display]] entry gets `keys` at line 6 (errors name it).
+inline std::string one_display_wall(const std::string& keys) {
+  const std::string display = "[[display]]\nwidth = 4\nheight = 2\nx = 0\ny = 0\n";
+  return display + keys +
+         "\n[tiling]\nkind = \"grid\"\ntile_width = 4\ntile_height = 2\n"
+         "[pipeservers]\ncount = 1\nframebuffer_width = 20\nframebuffer_height = 10\n";
+}
+
 class WallFolder : public ::testing::Test {
  protected:
   // `kind` names the folder: l2-wall-<kind>-<pid>.

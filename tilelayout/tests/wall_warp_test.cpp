@@ -19,29 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Line numbers matter: errors below name them. One 4x2 display.
-const std::string kWarpWall =
-    "[[display]]\n"               // 1
-    "width = 4\n"                 // 2
-    "height = 2\n"                // 3
-    "x = 0\n"                     // 4
-    "y = 0\n"                     // 5
-    "WARP\n"                      // 6
-    "[tiling]\n"                  // 7
-    "kind = \"grid\"\n"           // 8
-    "tile_width = 4\n"            // 9
-    "tile_height = 2\n"           // 10
-    "[pipeservers]\n"             // 11
-    "count = 1\n"                 // 12
-    "framebuffer_width = 20\n"    // 13
-    "framebuffer_height = 10\n";  // 14
-
-std::string with_warp(const std::string& warp) {
-  std::string text = kWarpWall;
-  text.replace(text.find("WARP"), 4, warp);
-  return text;
-}
-
 // A PFM of `header` then the floats, rows as given (the file's order: bottom row first),
 // little-endian.
 std::string pfm_bytes(const std::string& header, const std::vector<float>& values) {
@@ -79,7 +56,7 @@ class WallWarp : public WallFolder {
 
 TEST_F(WallWarp, APfmBecomesTheDisplaysMapWithRowsBottomToTop) {
   write("calibration/w.pfm", pfm_bytes("PF\n4 2\n-1.0\n", mirrored_top()));
-  const Wall wall = parse(with_warp("warp = \"calibration/w.pfm\""));
+  const Wall wall = parse(one_display_wall("warp = \"calibration/w.pfm\""));
   const Display& d = wall.displays[0];
   EXPECT_EQ(d.warp, "calibration/w.pfm");
   ASSERT_TRUE(d.warp_map);
@@ -97,7 +74,7 @@ TEST_F(WallWarp, ACoarseMeshIsInterpolatedOverTheDisplay) {
   for (const int row : {1, 0})
     for (const int x : {3, 0}) v.insert(v.end(), {centre(x, 4), centre(row, 2), 0.0f});
   write("mesh.pfm", pfm_bytes("PF\n2 2\n-1\n", v));
-  const Wall wall = parse(with_warp("warp = \"mesh.pfm\""));
+  const Wall wall = parse(one_display_wall("warp = \"mesh.pfm\""));
   ASSERT_TRUE(wall.displays[0].warp_map);
   const std::vector<std::int32_t> expected{3 * 256, 0,   2 * 256, 0,   256, 0,   0, 0,
                                            3 * 256, 256, 2 * 256, 256, 256, 256, 0, 256};
@@ -112,7 +89,7 @@ TEST_F(WallWarp, BigEndianFloatsToo) {
     std::swap(bytes[at + 1], bytes[at + 2]);
   }
   write("w.pfm", bytes);
-  const Wall wall = parse(with_warp("warp = \"w.pfm\""));
+  const Wall wall = parse(one_display_wall("warp = \"w.pfm\""));
   ASSERT_TRUE(wall.displays[0].warp_map);
   EXPECT_EQ(wall.displays[0].warp_map->source[0], 3 * 256);
 }
@@ -122,25 +99,25 @@ TEST_F(WallWarp, AnIdentityWarpCostsNothing) {
   for (const int row : {1, 0})
     for (int x = 0; x < 4; ++x) v.insert(v.end(), {centre(x, 4), centre(row, 2), 0.0f});
   write("id.pfm", pfm_bytes("PF\n4 2\n-1\n", v));
-  const Wall wall = parse(with_warp("warp = \"id.pfm\""));
+  const Wall wall = parse(one_display_wall("warp = \"id.pfm\""));
   EXPECT_EQ(wall.displays[0].warp, "id.pfm");
   EXPECT_FALSE(wall.displays[0].warp_map);
 }
 
 TEST_F(WallWarp, WallFileErrorsNameTheLineAndField) {
   const std::string f = wall_file();
-  EXPECT_EQ(error_of(with_warp("warp = \"\"")),
+  EXPECT_EQ(error_of(one_display_wall("warp = \"\"")),
             f + ":6: display[0].warp: must name a PFM warp file, got \"\"");
-  EXPECT_EQ(error_of(with_warp("warp = 1")),
+  EXPECT_EQ(error_of(one_display_wall("warp = 1")),
             f + ":6: display[0].warp: must be a string, got an integer");
   EXPECT_EQ(
-      error_of(with_warp("warp = \"none.pfm\"")),
+      error_of(one_display_wall("warp = \"none.pfm\"")),
       f + ":6: display[0].warp: " + file("none.pfm") + ": cannot read: No such file or directory");
-  EXPECT_EQ(error_of(with_warp("warp = \"/dev/zero\"")),
+  EXPECT_EQ(error_of(one_display_wall("warp = \"/dev/zero\"")),
             f + ":6: display[0].warp: /dev/zero: not a regular file: a warp is a PFM file");
   // Larger than any 4x2 warp can be: refused before it is read to the end.
   write("big.pfm", std::string(max_warp_pfm_bytes(4, 2) + 1, ' '));
-  EXPECT_EQ(error_of(with_warp("warp = \"big.pfm\"")),
+  EXPECT_EQ(error_of(one_display_wall("warp = \"big.pfm\"")),
             f + ":6: display[0].warp: " + file("big.pfm") + ": more than " +
                 std::to_string(max_warp_pfm_bytes(4, 2)) +
                 " bytes: not a PFM warp for this display");
@@ -149,7 +126,7 @@ TEST_F(WallWarp, WallFileErrorsNameTheLineAndField) {
 TEST_F(WallWarp, PfmErrorsNameTheFileAndHeaderField) {
   const auto refused = [&](const std::string& bytes) {
     write("bad.pfm", bytes);
-    return error_of(with_warp("warp = \"bad.pfm\""));
+    return error_of(one_display_wall("warp = \"bad.pfm\""));
   };
   const std::string p = file("bad.pfm");
   const std::vector<float> v = mirrored_top();

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "image/level_map.hpp"
 #include "image/orientation.hpp"
 #include "image/warp_map.hpp"
 #include "tilelayout/colour_match.hpp"
@@ -34,6 +35,11 @@ struct Display {
   // not copy a map of every pixel. No map when there is no warp or it changes nothing.
   std::string warp;
   std::shared_ptr<const WarpMap> warp_map;
+  // `alpha`, `beta` (grey PNG files, as written) and `alpha_gamma`, and the one map of gains and
+  // offsets they make, applied after the warp; none when there are none or it changes nothing.
+  std::string alpha, beta;
+  double alpha_gamma = 1.0;
+  std::shared_ptr<const LevelMap> level_map;
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }
