@@ -90,6 +90,20 @@ put("colour_lut", "short.txt", b"".join(b"%d\t0 255 # entry\n" % i for i in rang
 put("colour_lut", "bad-entry.txt", b"0 0 0\n12 300 4\n")
 
 
+# --- warp_pfm: two bytes picking the display's size (width - 1, height - 1), then a PFM warp ----
+def warp(w, h, scale, at):
+    rows = [b"".join(struct.pack("<fff" if scale < 0 else ">fff", *at(x, y), 0.0) for x in range(w))
+            for y in reversed(range(h))]  # PFM rows run bottom to top
+    return bytes([w - 1, h - 1]) + b"PF\n%d %d\n%g\n" % (w, h, scale) + b"".join(rows)
+
+
+put("warp_pfm", "identity-4x3.pfm", warp(4, 3, -1.0, lambda x, y: ((x + .5) / 4, (y + .5) / 3)))
+put("warp_pfm", "mirror-big-endian-3x2.pfm",
+    warp(3, 2, 1.0, lambda x, y: ((2 - x + .5) / 3, (y + .5) / 2)))
+put("warp_pfm", "off-frame-2x2.pfm", warp(2, 2, -1.0, lambda x, y: (x * 1.5 - .25, float("nan"))))
+put("warp_pfm", "short-2x1.pfm", warp(2, 1, -1.0, lambda x, y: (.5, .5))[:-5])
+
+
 # --- vizserver_wire: a byte stream of messages (docs/vizserver-protocol.md) --------------------
 def viz(kind, payload):
     return struct.pack("<IHHI", 0x5A56324C, 2, kind, len(payload)) + payload

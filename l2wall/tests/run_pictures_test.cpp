@@ -45,7 +45,8 @@ TEST(WriteDisplayPictures, AnEmptyPictureIsNotWrittenNorTheWall) {
   Wall wall;
   wall.canvas_width = 8;
   wall.canvas_height = 2;
-  wall.displays = {{0, 4, 2, 0, 0, 0, "", {}, {}}, {1, 4, 2, 4, 0, 0, "", {}, {}}};
+  wall.displays = {{0, 4, 2, 0, 0, 0, "", {}, {}, {}, {}, {}, {}, 1.0, {}},
+                   {1, 4, 2, 4, 0, 0, "", {}, {}, {}, {}, {}, {}, 1.0, {}}};
   RgbImage shown(4, 2);
   shown.set(1, 1, Rgb{200, 10, 20});
   const RgbImage lost;

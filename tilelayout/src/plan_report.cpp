@@ -43,6 +43,20 @@ std::string colour(const Display& d) {
   return "";
 }
 
+// The display's geometry warp and alpha and beta maps, when it has them: "; warp
+// calibration/warp-0.pfm; alpha calibration/alpha-0.png at gamma 2.2; beta ..." (as the wall
+// file says; said even when a file works out to no change, so the line matches the file).
+std::string warp(const Display& d) {
+  std::string out;
+  if (!d.warp.empty()) out += fmt::format("; warp {}", printable(d.warp));
+  if (!d.alpha.empty()) {
+    out += fmt::format("; alpha {}", printable(d.alpha));
+    if (d.alpha_gamma != 1.0) out += fmt::format(" at gamma {}", d.alpha_gamma);
+  }
+  if (!d.beta.empty()) out += fmt::format("; beta {}", printable(d.beta));
+  return out;
+}
+
 // How a display's pixels are blended with the displays it overlaps, when they are: "; blend gamma
 // 2.2 over 64 columns at the right edge" (edges of its canvas rectangle, as it hangs).
 std::string blend(const Wall& wall, const Display& d) {
@@ -162,10 +176,10 @@ void displays(const TileLayout& layout, std::string& out) {
     }
     out += fmt::format(
         "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
-        "by {} tiles from pipeservers {}{}{}\n",
+        "by {} tiles from pipeservers {}{}{}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
-        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")),
+        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), warp(d),
         blend(layout.wall, d), colour(d));
   }
 }

@@ -27,7 +27,8 @@ void TomlSource::fail(const toml::node& at, std::string_view field,
   fail(line_of(at), field, message);
 }
 
-std::string read_toml_file(const std::filesystem::path& path, std::string_view kind) {
+std::string read_toml_file(const std::filesystem::path& path, std::string_view kind,
+                           std::size_t max_bytes) {
   // A directory opens as a stream here and reads as nothing, which would be reported as a file
   // without content. (Not "anything but a regular file": a pipe such as <(...) is fine.)
   std::error_code error;
@@ -38,13 +39,18 @@ std::string read_toml_file(const std::filesystem::path& path, std::string_view k
   if (!in) {
     throw LayoutError(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));
   }
-  constexpr std::size_t kMaxBytes = 16u << 20;
-  std::string text(kMaxBytes + 1, '\0');
+  // Room for the file as its size says, one byte over the limit at most: a large limit (a
+  // warp's) is not allocated for a small file. A pipe has no size and gets the whole limit.
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  const std::size_t room =
+      error ? max_bytes : static_cast<std::size_t>(std::min<std::uintmax_t>(size, max_bytes));
+  std::string text(room + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > kMaxBytes) {
-    throw LayoutError(
-        fmt::format("{}: more than {} MiB: not {}", path.string(), kMaxBytes >> 20, kind));
+  if (text.size() > max_bytes) {
+    const std::string limit = max_bytes % (1u << 20) == 0 ? fmt::format("{} MiB", max_bytes >> 20)
+                                                          : fmt::format("{} bytes", max_bytes);
+    throw LayoutError(fmt::format("{}: more than {}: not {}", path.string(), limit, kind));
   }
   return text;
 }

@@ -24,8 +24,11 @@ struct TomlSource {
 
 // A file's text, read with a limit: a wall or session file is a few kilobytes, and /dev/zero or
 // a wrong file (a frame dump, a log) would otherwise be read to the end of memory before TOML
-// refuses it. `kind` names what it should be ("a wall file"). Throws LayoutError.
-std::string read_toml_file(const std::filesystem::path& path, std::string_view kind);
+// refuses it. `kind` names what it should be ("a wall file"). Throws LayoutError. A file read
+// for another kind of data (a warp, tilelayout/warp_file.hpp) passes its own limit.
+inline constexpr std::size_t kMaxTomlBytes = 16u << 20;
+std::string read_toml_file(const std::filesystem::path& path, std::string_view kind,
+                           std::size_t max_bytes = kMaxTomlBytes);
 // The text parsed, its shape checked first (toml_shape.hpp). Throws LayoutError
 // ("x.toml:3: malformed TOML: ...").
 toml::table parse_toml(std::string_view text, const TomlSource& source);

@@ -99,7 +99,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     }
     const TomlFields f(*node.as_table(), name, top.source(),
                        {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation",
-                        "flip", "gain", "offset", "lut"});
+                        "flip", "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma"});
     Display d;
     d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
     d.width = f.required_integer("width", 1, kMaxSize);
@@ -110,6 +110,8 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     d.monitor = f.string("monitor").value_or("");
     d.orientation = read_orientation(f);
     d.colour = read_colour(f);
+    read_warp(f, d);
+    read_levels(f, d);
     for (std::size_t j = 0; j < wall.displays.size(); ++j) {
       if (wall.displays[j].id == d.id) {
         f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));

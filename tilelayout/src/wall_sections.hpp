@@ -10,6 +10,10 @@ namespace l2 {
 void read_displays(const TomlFields& top, Wall& wall);
 // `gain`, `offset` and `lut` of one display (a [[display]] entry, one of a grid's `colour`).
 ColourMatch read_colour(const TomlFields& f);
+// `warp` of one [[display]] entry (optional): needs the display's size.
+void read_warp(const TomlFields& f, Display& d);
+// `alpha`, `beta` and `alpha_gamma` of one [[display]] entry (optional): needs the display's size.
+void read_levels(const TomlFields& f, Display& d);
 // [display_grid] `colour` (optional): one table of those keys per display, in id order.
 void read_grid_colour(const TomlFields& grid, std::vector<Display>& displays);
 // [canvas] (optional): fills the canvas size and checks every display lies on it.

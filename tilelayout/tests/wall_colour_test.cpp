@@ -1,15 +1,14 @@
 // Colour matching in the wall file and colour table files: the tables a display gets (entries
 // worked out by hand from the documented formula), and every refusal's exact line.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "tilelayout/colour_lut.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "wall_folder.hpp"
 
 namespace l2 {
 namespace {
@@ -44,28 +43,9 @@ std::string with(const std::string& colour) {
   return text;
 }
 
-// A folder of its own for a wall file and its tables, removed after the test.
-class WallColour : public ::testing::Test {
+class WallColour : public WallFolder {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("l2-wall-colour-" + std::to_string(::getpid()));
-    fs::create_directories(dir_ / "calibration");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  void write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-  }
-  Wall parse(const std::string& text) { return parse_wall(text, dir_ / "w.toml"); }
-  std::string error_of(const std::string& text) {
-    try {
-      parse(text);
-    } catch (const LayoutError& e) {
-      return e.what();
-    }
-    return "no error";
-  }
-  std::string wall_file() const { return (dir_ / "w.toml").string(); }
-  fs::path dir_;
+  WallColour() : WallFolder("colour") {}
 };
 
 // 256 lines "R G B": R = i, G = 255 - i, B = i / 2, with comments and blank lines between.
@@ -187,7 +167,8 @@ TEST_F(WallColour, BadValuesAreOneLineNamingFileLineAndField) {
       f + ":11: display[1].lut: /dev/null: not a regular file: a colour table is a text file");
   EXPECT_EQ(error_of(with("colour = [{}]")),
             f + ":11: display[1].colour: unknown key (valid here: id, width, height, x, y, "
-                "swap_group, monitor, rotation, flip, gain, offset, lut)");
+                "swap_group, monitor, rotation, flip, gain, offset, lut, warp, alpha, beta, "
+                "alpha_gamma)");
 }
 
 TEST_F(WallColour, ABadTableNamesItsOwnFileAndLine) {

@@ -6,12 +6,15 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "image/level_map.hpp"
 #include "image/orientation.hpp"
+#include "image/warp_map.hpp"
 #include "tilelayout/colour_match.hpp"
 #include "tilelayout/geometry.hpp"
 
@@ -27,6 +30,16 @@ struct Display {
   std::string monitor;             // optional monitor name or index for --show monitors
   Orientation orientation;         // as mounted (image/orientation.hpp)
   ColourMatch colour;              // applied where its pixels leave the wall (colour_match.hpp)
+  // `warp`: the geometry warp file as written, relative to the wall file, and its map, applied
+  // before blend and colour where its pixels leave the wall; shared, so that copying a wall does
+  // not copy a map of every pixel. No map when there is no warp or it changes nothing.
+  std::string warp;
+  std::shared_ptr<const WarpMap> warp_map;
+  // `alpha`, `beta` (grey PNG files, as written) and `alpha_gamma`, and the one map of gains and
+  // offsets they make, applied after the warp; none when there are none or it changes nothing.
+  std::string alpha, beta;
+  double alpha_gamma = 1.0;
+  std::shared_ptr<const LevelMap> level_map;
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }
