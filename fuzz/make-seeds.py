@@ -142,6 +142,28 @@ put("picture_header", "jpeg-progressive",
 put("picture_header", "ppm", struct.pack("<Q", 317) + b"P6\n1000000 1\n255\n")
 
 
+def tiff(width, height, tile=0, pages=1, data=bytes(192)):
+    """A little-endian TIFF of 8-bit RGB, uncompressed: one strip, or tiles of tile x tile; each of
+    `pages` directories holds `data` after its entries."""
+    out = b"II*\0" + struct.pack("<I", 8)
+    for page in range(pages):
+        tags = [(256, 4, width), (257, 4, height), (258, 3, 8), (259, 3, 1), (262, 3, 2)]
+        tags += [(273, 4, None), (277, 3, 3), (278, 4, height), (279, 4, len(data))] if not tile \
+            else [(277, 3, 3), (322, 4, tile), (323, 4, tile), (324, 4, None), (325, 4, len(data))]
+        data_at = len(out) + 2 + 12 * len(tags) + 4
+        out += struct.pack("<H", len(tags))
+        for tag, kind, value in tags:
+            value = data_at if value is None else value
+            out += struct.pack("<HHIHH" if kind == 3 else "<HHII", tag, kind, 1,
+                               *((value, 0) if kind == 3 else (value,)))
+        out += struct.pack("<I", data_at + len(data) if page + 1 < pages else 0) + data
+    return out
+
+
+put("picture_header", "tiff-8x8-2-pages", struct.pack("<Q", 1000) + tiff(8, 8, pages=2))
+put("picture_header", "tiff-16x16-tiled", struct.pack("<Q", 1000) + tiff(16, 16, tile=16, data=bytes(768)))
+
+
 # --- frame_delta: width-1 and height-1 bytes, then one message (dvi_link/frame_delta.hpp) -----
 def frame_delta(width, height, rows):
     """A stored (codec 0) message: rows maps a changed row to (mode, residual bytes)."""

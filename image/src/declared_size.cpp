@@ -89,6 +89,10 @@ Result<HeaderFacts> check_header(std::string_view b, std::uintmax_t file_size) {
   return facts;
 }
 
+bool decoded_whole_by(std::string_view format) {
+  return is(format, {"ico", "gif", "targa", "iff", "webp", "heif", "jpeg2000"});
+}
+
 double max_expansion(std::string_view format, std::string_view compression) {
   // Raw samples: a bit a pixel (PBM, 1-bit BMP or TIFF) spread to a byte per channel is the most.
   if (is(format, {"pnm", "fits", "pfm"})) return 8;
@@ -139,10 +143,12 @@ Status check_declared(const Declared& d, std::uintmax_t file_size) {
                    " MiB a reader holds"};
   }
   if (d.decoded_whole && decoded > kMaxWholeMegabytes * (1 << 20)) {
-    return Failure{"cannot read: a progressive " + d.format + " of " + sides +
-                   " pixels is decoded whole, " + mib(decoded) + ", more than the " +
+    const bool jpeg = d.format == "jpeg";
+    return Failure{"cannot read: a " + std::string(jpeg ? "progressive " : "") + d.format + " of " +
+                   sides + " pixels is decoded whole, " + mib(decoded) + ", more than the " +
                    std::to_string(int(kMaxWholeMegabytes)) +
-                   " MiB a picture read whole may take; save it as baseline"};
+                   " MiB a picture read whole may take; save it as " +
+                   (jpeg ? "baseline" : "a tiled TIFF")};
   }
   return {};
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "media_oiio.hpp"
+#include "picture_checks.hpp"
 #include "png_codec.hpp"
 
 namespace {
@@ -302,8 +303,9 @@ l2::Result<Opened> open_oiio(const Input& input, const OIIO::ImageSpec& config) 
   return opened;
 }
 
-// An opened picture that is not a PNG, through OpenImageIO, as read_rgb() says.
-Status read_oiio(OIIO::ImageInput& in, RgbSink sink, Source& source) {
+// An opened picture that is not a PNG, through OpenImageIO, as read_rgb() says; `file_size`
+// bytes hold it.
+Status read_oiio(OIIO::ImageInput& in, std::uintmax_t file_size, RgbSink sink, Source& source) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::string compression = spec.get_string_attribute("compression");
   source = {in.format_name(), spec.nchannels >= 3 ? 3 : 1,
@@ -320,6 +322,8 @@ Status read_oiio(OIIO::ImageInput& in, RgbSink sink, Source& source) {
   }
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
   if (const auto why = refusal(sink, spec.width, spec.height)) return refused(*why);
+  // What the reader declares beyond the size (tiles, samples) against the file's bytes.
+  if (const Status s = l2::png_codec::check_opened(in, file_size, false, false); !s.ok()) return s;
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
   if (!dst) return Failure{"cannot read: out of memory"};
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
@@ -359,11 +363,18 @@ Status read_input(const Input& input, RgbSink sink, Source* source_or_null) try 
       if (const auto why = refusal(sink, screen->first, screen->second)) return refused(*why);
     }
   }
+  // What the header declares, before a reader trusts it (picture_checks.hpp).
+  const l2::png_codec::PictureBytes bytes =
+      input.in_memory() ? l2::png_codec::memory_bytes(input.bytes, input.size)
+                        : l2::png_codec::file_bytes(input.path);
+  if (const auto facts = l2::png_codec::check_before_open(bytes); !facts.ok()) {
+    return Failure{facts.reason()};
+  }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto opened = open_oiio(input, config);
   if (!opened.ok()) return Failure{opened.reason()};
-  return read_oiio(*opened->in, sink, source);
+  return read_oiio(*opened->in, bytes.size, sink, source);
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
 }

@@ -50,6 +50,20 @@ TEST(DeclaredSize, AProgressiveJpegIsDecodedWhole) {
   EXPECT_TRUE(check_declared(d, 50000000).ok());
 }
 
+// Readers that decode a picture whole whatever part is asked for (an icon's PNG, a GIF's
+// screen) are bounded as a progressive JPEG is; a TIFF, PNG or BMP is read a part at a time.
+TEST(DeclaredSize, FormatsDecodedWholeAreBoundedToo) {
+  EXPECT_TRUE(decoded_whole_by("ico"));
+  EXPECT_TRUE(decoded_whole_by("gif"));
+  EXPECT_FALSE(decoded_whole_by("tiff"));
+  EXPECT_FALSE(decoded_whole_by("bmp"));
+  Declared d = picture("ico", 16384, 16384);  // 805,306,368 bytes: 768 MiB
+  d.decoded_whole = true;
+  EXPECT_EQ(check_declared(d, 1 << 20).reason(),
+            "cannot read: a ico of 16384x16384 pixels is decoded whole, 768 MiB, more than the "
+            "512 MiB a picture read whole may take; save it as a tiled TIFF");
+}
+
 TEST(DeclaredSize, HeadersBeforeTheReader) {
   // "DDS " and 124 bytes: height at 12, width at 16, levels at 28 (little-endian).
   std::string dds(128, '\0');
