@@ -15,6 +15,11 @@ std::string one_line(const std::string& text);
 // the file's content ("cannot read: a TIFF file: ...").
 std::string open_failed(const char* path);
 
+// A PNG's pixels decoded with libpng, a row at a time and dropped, before the image cache reads
+// it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),
+// nothing printed (png_codec_oiio.cpp).
+Status check_png_data(const char* path);
+
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
 Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp
 Result<TextMask> render_text(const char* text, int cap_height);        // text_oiio.cpp

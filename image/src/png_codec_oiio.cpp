@@ -81,6 +81,7 @@ struct PngRead {
   png_infop info = nullptr;
   bool ended_early = false;  // the file ended before libpng had all it needed
   int colour_type = -1;      // as the file stores its pixels (PNG_COLOR_TYPE_...), once known
+  bool one_row = false;      // the pixels' buffer holds one row, each read over the last
   char error[256] = {};      // libpng's message (a plain buffer: it crosses a longjmp)
   ~PngRead() {
     if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
@@ -125,9 +126,11 @@ bool png_steps(PngRead& read, png_bytep (*size)(void*, png_uint_32, png_uint_32)
   }
   png_bytep pixels = size(context, width, height);
   if (!pixels) return true;  // refused or out of memory: sizing says which
+  // One row's buffer (read.one_row) takes every row in turn: the data is checked, not kept.
+  const std::size_t row_bytes = read.one_row ? 0 : std::size_t{width} * 3;
   for (int pass = 0; pass < passes; ++pass) {
     for (png_uint_32 y = 0; y < height; ++y) {
-      png_read_row(read.png, pixels + std::size_t{y} * width * 3, nullptr);
+      png_read_row(read.png, pixels + std::size_t{y} * row_bytes, nullptr);
     }
   }
   png_read_end(read.png, nullptr);
@@ -196,6 +199,35 @@ Status read_png_file(PngRead& read, RgbSink sink, Source& source) {
   }
   return refused(sizing.refused);
 }
+
+}  // namespace
+
+namespace l2::png_codec {
+
+// Every row decoded and dropped, with libpng's reason kept: the image cache reads a PNG with
+// OpenImageIO's reader, whose error handler returns, so libpng printed its own line
+// ("libpng error: IDAT: incorrect data check") before ours, and only once the cache reached the
+// damage, a frame into the run.
+Status check_png_data(const char* path) {
+  PngRead read;
+  read.file = std::fopen(path, "rb");
+  if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
+  read.one_row = true;
+  std::vector<std::uint8_t> row;
+  const RgbSink sink{&row, [](void*, int, int) { return true; },
+                     [](void* context, int width, int) {
+                       auto& r = *static_cast<std::vector<std::uint8_t>*>(context);
+                       r.resize(std::size_t(width) * 3);
+                       return r.data();
+                     },
+                     INT_MAX};
+  Source ignored;
+  return read_png_file(read, sink, ignored);
+}
+
+}  // namespace l2::png_codec
+
+namespace {
 
 // --- other formats, through OpenImageIO ---------------------------------------------------
 

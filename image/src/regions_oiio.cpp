@@ -78,8 +78,9 @@ class CacheRegions final : public RegionReader {
 
 }  // namespace
 
-// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp): nothing for
-// another format; else the megabytes it decodes to as stored, or why it cannot be read.
+// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then its rows
+// decoded (check_png_data): nothing for another format; else the megabytes it decodes to as
+// stored, or why it cannot be read.
 Result<double> png_megabytes(const char* path) {
   unsigned char signature[8] = {};
   if (std::FILE* file = std::fopen(path, "rb")) {
@@ -99,6 +100,7 @@ Result<double> png_megabytes(const char* path) {
                    std::to_string(static_cast<int>(kWholeScanlinePictureMegabytes)) +
                    " MiB of cache); save it without interlacing"};
   }
+  if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
   return megabytes;
 }
 

@@ -373,6 +373,16 @@ TEST_F(Hostile, AWholeReadChecksWhatTheFileDeclares) {
   EXPECT_EQ(small.at(7, 7), (Rgb{0x40, 0x40, 0x40}));
 }
 
+// A PNG whose image data fails zlib's check: the image cache's reader printed libpng's own line
+// ("libpng error: IDAT: incorrect data check") before ours, a frame into the run. Its rows are
+// decoded before the cache sees it: one line, with libpng's reason, nothing printed.
+TEST_F(Hostile, APngWithDamagedDataIsOneLineWithTheLibrarysReason) {
+  expect_refused(file("damaged.png", hostile::small_png(true)),
+                 "a damaged PNG (IDAT: incorrect data check)");
+  const auto whole = file("whole.png", hostile::small_png());
+  EXPECT_EQ(picture_error(whole), "opened");
+}
+
 // Named as a picture, holding something else: OpenImageIO's reasons were several lines.
 TEST_F(Hostile, APictureThatIsNotOneIsOneLine) {
   const auto text_png = file("text.png", "not a picture\n");

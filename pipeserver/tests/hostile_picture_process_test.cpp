@@ -60,5 +60,18 @@ TEST_F(HostileProcess, WholeReadsOfEveryFormatAreRefusedInOneLine) {
       baseline, files);
 }
 
+// A PNG whose image data fails zlib's check, in the picture scene: libpng's own line
+// ("libpng error: IDAT: incorrect data check") came before ours, a frame into the run. Now the
+// whole output is one line naming the file, with libpng's reason, and the run never starts.
+TEST_F(HostileProcess, APngWithDamagedDataIsOneLineWithTheLibrarysReason) {
+  const fs::path damaged = file("damaged.png", hostile::small_png(true));
+  const Ended e = run_on(
+      {PIPESERVER_EXE, {"--scene", "picture", "--content"}, {"--out", (dir_ / "out").string()}},
+      damaged);
+  EXPECT_EQ(e.code, 1);
+  EXPECT_EQ(e.output, "pipeserver: " + damaged.string() +
+                          ": cannot read: a damaged PNG (IDAT: incorrect data check)\n");
+}
+
 }  // namespace
 }  // namespace l2::hostile_run

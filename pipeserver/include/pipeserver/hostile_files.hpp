@@ -298,9 +298,10 @@ inline std::string png_chunk(const std::string& type, const std::string& data) {
 
 // A PNG of width x height 8-bit RGB pixels (interlaced or not) whose image data is a zlib
 // stream of `raw` (the filtered rows, which may hold far fewer bytes than the size claims) in
-// stored blocks.
+// stored blocks; `damaged`: its zlib check (Adler-32) one off, as a bit flipped in the data
+// leaves it.
 inline std::string png(std::uint32_t width, std::uint32_t height, bool interlaced,
-                       const std::string& raw) {
+                       const std::string& raw, bool damaged = false) {
   std::string idat = "\x78\x01";  // zlib, no compression
   for (std::size_t at = 0; at == 0 || at < raw.size(); at += 0xFFFF) {
     const auto n = static_cast<std::uint16_t>(std::min<std::size_t>(raw.size() - at, 0xFFFF));
@@ -312,7 +313,7 @@ inline std::string png(std::uint32_t width, std::uint32_t height, bool interlace
     a = (a + c) % 65521;
     b = (b + a) % 65521;
   }
-  idat += big_endian(b << 16 | a);
+  idat += big_endian((b << 16 | a) ^ (damaged ? 1u : 0u));
   const std::string ihdr = big_endian(width) + big_endian(height) +
                            std::string("\x08\x02\x00\x00", 4) +
                            std::string(1, interlaced ? '\x01' : '\x00');
@@ -320,14 +321,15 @@ inline std::string png(std::uint32_t width, std::uint32_t height, bool interlace
          png_chunk("IEND", "");
 }
 
-// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour.
-inline std::string small_png() {
+// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour;
+// `damaged` as for png().
+inline std::string small_png(bool damaged = false) {
   std::string raw;
   for (int y = 0; y < 2; ++y) {
     raw += '\0';
     for (int x = 0; x < 4; ++x) raw += std::string{char(40 * x), char(100 * y), '\x7f'};
   }
-  return png(4, 2, false, raw);
+  return png(4, 2, false, raw, damaged);
 }
 
 }  // namespace l2::hostile
