@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "png_codec.hpp"
 
@@ -19,6 +20,8 @@ std::string open_failed(const char* path);
 // it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),
 // nothing printed (png_codec_oiio.cpp).
 Status check_png_data(const char* path);
+// The same for a PNG in memory (an icon's), its rows decoded only with `rows`.
+Status check_png_bytes(std::string_view bytes, bool rows);
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
 Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp

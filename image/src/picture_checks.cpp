@@ -6,11 +6,19 @@
 
 #include <algorithm>
 #include <memory>
+#include <set>
 #include <string>
+
+#include "media_oiio.hpp"
 
 namespace l2::png_codec {
 
 namespace {
+
+// More images than any icon holds (each size and depth of one picture).
+constexpr std::uint32_t kMaxIcoImages = 256;
+// What an icon's PNG header is read from, for the images after the first.
+constexpr std::size_t kIcoHeaderBytes = 1 << 20;
 
 // A file descriptor closed with the last reader that holds it.
 struct Fd {
@@ -19,6 +27,51 @@ struct Fd {
     if (fd >= 0) ::close(fd);
   }
 };
+
+std::uint32_t le(const std::string& b, std::size_t at, int n) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < n && at + i < b.size(); ++i) {
+    v |= std::uint32_t{static_cast<unsigned char>(b[at + i])} << (8 * i);
+  }
+  return v;
+}
+
+std::uint32_t be32(const std::string& b, std::size_t at) {
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < 4 && at + i < b.size(); ++i) {
+    v = v << 8 | static_cast<unsigned char>(b[at + i]);
+  }
+  return v;
+}
+
+// An ICO's images that are PNGs, checked with libpng before OpenImageIO's ICO reader sees them:
+// its libpng error handler crashed the process on a PNG icon cut short. Every image's header;
+// the first's rows too (the one a picture shows), unless it is larger than any picture decoded
+// whole may be, which check_opened refuses once the header is read.
+Status check_ico(const PictureBytes& bytes) {
+  const std::string head = bytes.read(0, 6);
+  if (head.size() < 6 || le(head, 0, 2) != 0 || le(head, 2, 2) != 1) return {};
+  const std::uint32_t count = le(head, 4, 2);
+  if (count > kMaxIcoImages) {
+    return Failure{"cannot read: an ICO declaring " + std::to_string(count) +
+                   " images, more than the " + std::to_string(kMaxIcoImages) + " read here"};
+  }
+  const std::string entries = bytes.read(6, 16 * count);
+  std::set<std::uint32_t> seen;
+  for (std::uint32_t i = 0; i < count && 16 * i + 16 <= entries.size(); ++i) {
+    const std::uint32_t offset = le(entries, 16 * i + 12, 4);
+    if (!seen.insert(offset).second || bytes.read(offset, 8) != "\x89PNG\r\n\x1a\n") continue;
+    // As the reader reads it: from its offset on, as far as libpng asks.
+    const std::string png = bytes.read(offset, i == 0 ? bytes.size : kIcoHeaderBytes);
+    const double decoded = double(be32(png, 16)) * be32(png, 20) * 4;
+    const bool rows = i == 0 && decoded <= kMaxWholeMegabytes * (1 << 20);
+    if (const Status s = check_png_bytes(png, rows); !s.ok()) {
+      return Failure{"cannot read: an ICO's image " + std::to_string(i) + ": " +
+                     s.reason().substr(std::string("cannot read: ").size())};
+    }
+  }
+  return {};
+}
 
 }  // namespace
 
@@ -55,6 +108,7 @@ Result<HeaderFacts> check_before_open(const PictureBytes& bytes) {
   if (const Status tiff = check_tiff(bytes.read, bytes.size); !tiff.ok()) {
     return Failure{tiff.reason()};
   }
+  if (const Status ico = check_ico(bytes); !ico.ok()) return Failure{ico.reason()};
   return facts;
 }
 

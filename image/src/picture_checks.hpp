@@ -21,7 +21,8 @@ struct PictureBytes {
 PictureBytes file_bytes(const char* path);
 PictureBytes memory_bytes(const std::uint8_t* bytes, std::size_t size);
 
-// What the first bytes declare (check_header) and a TIFF's directories (check_tiff).
+// What the first bytes declare (check_header), a TIFF's directories (check_tiff) and an ICO's
+// PNG images (their headers, the first one's rows: libpng, not OpenImageIO's ICO reader).
 Result<HeaderFacts> check_before_open(const PictureBytes& bytes);
 
 // What the opened reader declares (check_declared). `cached`: the image cache will read it, so a

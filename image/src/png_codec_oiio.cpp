@@ -200,35 +200,6 @@ Status read_png_file(PngRead& read, RgbSink sink, Source& source) {
   return refused(sizing.refused);
 }
 
-}  // namespace
-
-namespace l2::png_codec {
-
-// Every row decoded and dropped, with libpng's reason kept: the image cache reads a PNG with
-// OpenImageIO's reader, whose error handler returns, so libpng printed its own line
-// ("libpng error: IDAT: incorrect data check") before ours, and only once the cache reached the
-// damage, a frame into the run.
-Status check_png_data(const char* path) {
-  PngRead read;
-  read.file = std::fopen(path, "rb");
-  if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
-  read.one_row = true;
-  std::vector<std::uint8_t> row;
-  const RgbSink sink{&row, [](void*, int, int) { return true; },
-                     [](void* context, int width, int) {
-                       auto& r = *static_cast<std::vector<std::uint8_t>*>(context);
-                       r.resize(std::size_t(width) * 3);
-                       return r.data();
-                     },
-                     INT_MAX};
-  Source ignored;
-  return read_png_file(read, sink, ignored);
-}
-
-}  // namespace l2::png_codec
-
-namespace {
-
 // --- other formats, through OpenImageIO ---------------------------------------------------
 
 // The logical screen a GIF file declares, or nothing when the file is not a GIF. OpenImageIO's
@@ -298,6 +269,30 @@ std::FILE* open_stream(const Input& input) {
   if (!input.in_memory()) return std::fopen(input.path, "rb");
   // Read in place: a stream opened "rb" never writes to its buffer.
   return ::fmemopen(const_cast<std::uint8_t*>(input.bytes), input.size, "rb");
+}
+
+// A PNG's header, and with `rows` its rows, decoded with libpng, each row dropped: ok, or why
+// not. The image cache reads a PNG with OpenImageIO's reader, whose error handler returns, so
+// libpng printed its own line ("libpng error: IDAT: incorrect data check") before ours, and only
+// once the cache reached the damage, a frame into the run; its ICO reader's handler crashed the
+// process (SIGFPE) on a PNG icon cut short.
+Status check_png(const Input& input, bool rows) {
+  PngRead read;
+  read.file = open_stream(input);
+  if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
+  read.one_row = true;
+  std::vector<std::uint8_t> row;
+  const RgbSink sink{&row, [](void* context, int, int) { return context != nullptr; },
+                     [](void* context, int width, int) {
+                       auto& r = *static_cast<std::vector<std::uint8_t>*>(context);
+                       r.resize(std::size_t(width) * 3);
+                       return r.data();
+                     },
+                     INT_MAX};
+  Source ignored;
+  // A sink whose context is null accepts no size: only the header is read.
+  return read_png_file(read, rows ? sink : RgbSink{nullptr, sink.accept, sink.allocate, INT_MAX},
+                       ignored);
 }
 
 // An OpenImageIO reader and, for a picture in memory, what it reads from (which must outlive it:
@@ -448,6 +443,15 @@ std::string open_failed(const char* path) {
   if (reader && !reader->open(path, spec)) why = one_line(reader->geterror());
   if (why.empty()) why = "damaged or ends early";
   return "cannot read: a " + upper(format) + " file: " + why;
+}
+
+Status check_png_data(const char* path) {
+  return check_png({path}, true);
+}
+
+Status check_png_bytes(std::string_view bytes, bool rows) {
+  return check_png({nullptr, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},
+                   rows);
 }
 
 }  // namespace l2::png_codec

@@ -334,6 +334,12 @@ TEST_F(Hostile, EveryFormatDeclaringMoreThanItHoldsIsOneLine) {
   expect("whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0'))),
          "a ico of 16384x16384 pixels is decoded whole, 768 MiB, more than the 512 MiB a picture "
          "read whole may take; save it as a tiled TIFF");
+  // OpenImageIO's ICO reader crashed the process (SIGFPE) on a PNG icon cut short, and let
+  // libpng print its own line on a damaged one: libpng reads them first.
+  expect("cut.ico", hostile::ico(hostile::small_png().substr(0, 40)),
+         "an ICO's image 0: the PNG file ends early (truncated)");
+  expect("damaged.ico", hostile::ico(hostile::small_png(true)),
+         "an ICO's image 0: a damaged PNG (IDAT: incorrect data check)");
   EXPECT_EQ(picture_error(file("small.tif", hostile::tiff({}))), "opened");
   EXPECT_EQ(picture_error(
                 file("small-tiled.tif", hostile::tiff({.tile = 16, .data = std::string(768, 0)}))),
