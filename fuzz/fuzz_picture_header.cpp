@@ -1,9 +1,9 @@
 // What a picture file's header declares, checked before any reader trusts it
-// (image/declared_size.hpp, image/tiff_header.hpp), on arbitrary bytes: the file's first bytes
-// through check_header and check_tiff (a TIFF's directories, read where they point) at a size of
-// the input's own choosing, and numbers taken from the input as what a reader declared through
-// check_declared. Never a crash or an overflow (UBSan), and every refusal one line
-// saying "cannot read: ".
+// (image/declared_size.hpp, image/tiff_header.hpp, image/exr_header.hpp), on arbitrary bytes:
+// the file's first bytes through check_header, check_tiff (a TIFF's directories, read where they
+// point) and check_exr (an OpenEXR file's attributes) at a size of the input's own choosing, and
+// numbers taken from the input as what a reader declared through check_declared. Never a crash
+// or an overflow (UBSan), and every refusal one line saying "cannot read: ".
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -12,6 +12,7 @@
 
 #include "fuzz_check.hpp"
 #include "image/declared_size.hpp"
+#include "image/exr_header.hpp"
 #include "image/tiff_header.hpp"
 
 namespace {
@@ -52,6 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return at >= header.size() ? std::string() : std::string(header.substr(at, n));
   };
   check_refusal(l2::png_codec::check_tiff(read, file_size), "a TIFF refusal is one line");
+  check_refusal(l2::png_codec::check_exr(read, file_size), "an OpenEXR refusal is one line");
 
   l2::png_codec::Declared d;
   d.format = kFormats[take(data, size, 1) % std::size(kFormats)];

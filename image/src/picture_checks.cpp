@@ -109,6 +109,9 @@ Result<HeaderFacts> check_before_open(const PictureBytes& bytes) {
     return Failure{tiff.reason()};
   }
   if (const Status ico = check_ico(bytes); !ico.ok()) return Failure{ico.reason()};
+  if (const Status exr = check_exr(bytes.read, bytes.size); !exr.ok()) {
+    return Failure{exr.reason()};
+  }
   return facts;
 }
 

@@ -340,6 +340,10 @@ TEST_F(Hostile, EveryFormatDeclaringMoreThanItHoldsIsOneLine) {
          "an ICO's image 0: the PNG file ends early (truncated)");
   expect("damaged.ico", hostile::ico(hostile::small_png(true)),
          "an ICO's image 0: a damaged PNG (IDAT: incorrect data check)");
+  // 1.6 GB asked of the allocator by a 27-byte file (fuzz_picture_file found it).
+  expect("attribute.exr", hostile::exr_attribute(1677721600),
+         "an OpenEXR attribute 'junk' of type 'opaque' declaring 1677721600 bytes, more than the "
+         "3 the file has left");
   EXPECT_EQ(picture_error(file("small.tif", hostile::tiff({}))), "opened");
   EXPECT_EQ(picture_error(
                 file("small-tiled.tif", hostile::tiff({.tile = 16, .data = std::string(768, 0)}))),

@@ -240,6 +240,13 @@ inline std::string ico(const std::string& png) {
          le32(static_cast<std::uint32_t>(png.size())) + le32(6 + 16) + png;
 }
 
+// An OpenEXR file (magic number, version 2) whose first header attribute declares `size` bytes
+// of value and holds 3; OpenEXR allocated the size declared before reading it.
+inline std::string exr_attribute(std::uint32_t size) {
+  return std::string("\x76\x2f\x31\x01", 4) + le32(2) + std::string("junk\0opaque\0", 12) +
+         le32(size) + "abc";
+}
+
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +
