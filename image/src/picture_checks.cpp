@@ -60,7 +60,9 @@ Status check_ico(const PictureBytes& bytes) {
   std::set<std::uint32_t> seen;
   for (std::uint32_t i = 0; i < count && 16 * i + 16 <= entries.size(); ++i) {
     const std::uint32_t offset = le(entries, 16 * i + 12, 4);
-    if (!seen.insert(offset).second || bytes.read(offset, 8) != "\x89PNG\r\n\x1a\n") continue;
+    // An image is a PNG to the reader when its bytes 1 to 3 say "PNG", whatever the rest of the
+    // signature (a damaged one crashed it likewise).
+    if (!seen.insert(offset).second || bytes.read(offset + 1, 3) != "PNG") continue;
     // As the reader reads it: from its offset on, as far as libpng asks.
     const std::string png = bytes.read(offset, i == 0 ? bytes.size : kIcoHeaderBytes);
     const double decoded = double(be32(png, 16)) * be32(png, 20) * 4;

@@ -340,6 +340,10 @@ TEST_F(Hostile, EveryFormatDeclaringMoreThanItHoldsIsOneLine) {
          "an ICO's image 0: the PNG file ends early (truncated)");
   expect("damaged.ico", hostile::ico(hostile::small_png(true)),
          "an ICO's image 0: a damaged PNG (IDAT: incorrect data check)");
+  // A PNG to the reader by its bytes 1 to 3 alone: one whose signature is damaged after them
+  // and its first chunk's length beyond 2^31 crashed it too.
+  expect("signature.ico", hostile::ico(hostile::damaged_signature_png()),
+         "an ICO's image 0: a damaged PNG (PNG file corrupted by ASCII conversion)");
   // 1.6 GB asked of the allocator by a 27-byte file (fuzz_picture_file found it).
   expect("attribute.exr", hostile::exr_attribute(1677721600),
          "an OpenEXR attribute 'junk' of type 'opaque' declaring 1677721600 bytes, more than the "

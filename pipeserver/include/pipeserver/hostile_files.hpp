@@ -339,4 +339,12 @@ inline std::string small_png(bool damaged = false) {
   return png(4, 2, false, raw, damaged);
 }
 
+// small_png() with its signature's last byte changed and a byte put after it: the first chunk's
+// length then reads as 0xD20A0000, beyond what PNG allows (as fuzz_picture_file found it).
+inline std::string damaged_signature_png() {
+  std::string p = small_png();
+  p[7] = '`';
+  return p.insert(8, 1, '\xD2');
+}
+
 }  // namespace l2::hostile
