@@ -6,12 +6,18 @@ namespace l2::png_codec {
 
 namespace {
 
-// A text field ended by a zero byte, at most 256 bytes: the text, and where the next field starts;
-// nothing when the field is longer or the bytes end first.
-bool text_at(const ReadAt& read, std::uint64_t& at, std::string& text) {
-  const std::string b = read(at, 257);
+// A name as OpenEXR reads it: up to a zero byte, or `longest` + 1 bytes when none comes first
+// (the next field then starts right after them: a longer name runs into what follows, as it
+// does for the reader). The text, and where the next field starts; false when the bytes end.
+bool text_at(const ReadAt& read, std::uint64_t& at, std::size_t longest, std::string& text) {
+  const std::string b = read(at, longest + 1);
   const std::size_t end = b.find('\0');
-  if (end == std::string::npos) return false;
+  if (end == std::string::npos) {
+    if (b.size() < longest + 1) return false;
+    text = b;
+    at += b.size();
+    return true;
+  }
   text = b.substr(0, end);
   at += end + 1;
   return true;
@@ -25,11 +31,13 @@ Status check_exr(const ReadAt& read, std::uintmax_t file_size) {
   // Version flags: bit 12, several parts, each header ended by an empty name, and the list of
   // headers by one more.
   const bool multipart = (static_cast<unsigned char>(start[5]) & 0x10) != 0;
+  // Bit 10: names of up to 255 characters; else 31.
+  const std::size_t longest = (static_cast<unsigned char>(start[5]) & 0x04) != 0 ? 255 : 31;
   std::uint64_t at = 8;
   int attributes = 0;
   for (;;) {
     std::string name, type;
-    if (!text_at(read, at, name)) return {};
+    if (!text_at(read, at, longest, name)) return {};
     if (name.empty()) {
       // A header ended: the file's one, or the list of parts' at an empty header.
       if (!multipart) return {};
@@ -37,7 +45,7 @@ Status check_exr(const ReadAt& read, std::uintmax_t file_size) {
       if (next.empty() || next[0] == '\0') return {};
       continue;
     }
-    if (!text_at(read, at, type)) return {};
+    if (!text_at(read, at, longest, type)) return {};
     const std::string size_bytes = read(at, 4);
     if (size_bytes.size() < 4) return {};
     std::uint32_t size = 0;

@@ -15,8 +15,9 @@ namespace l2::png_codec {
 inline constexpr int kMaxExrAttributes = 65536;
 
 // Nothing when the bytes are no OpenEXR file (its magic number first); otherwise each
-// attribute's size against the bytes the file has left, and their count. Names longer than
-// OpenEXR's 255 characters, or a header cut short, are left to the reader, which says so.
+// attribute's size against the bytes the file has left, and their count, each field read as
+// OpenEXR reads it (a name longer than it allows runs into the next field). A header cut short
+// is left to the reader, which says so.
 // Failure: one line saying what the file declares.
 Status check_exr(const ReadAt& read, std::uintmax_t file_size);
 
