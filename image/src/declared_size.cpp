@@ -68,6 +68,7 @@ Status check_gif(std::string_view b, std::uintmax_t file_size) {
   d.width = le16(6);
   d.height = le16(8);
   d.channels = 4;
+  d.decoded_whole = true;  // the screen is allocated as the file is opened, whoever reads it
   return check_declared(d, file_size);
 }
 
@@ -82,7 +83,9 @@ Result<HeaderFacts> check_header(std::string_view b, std::uintmax_t file_size) {
   if (b.substr(0, 4) == "DDS ") {
     if (const Status s = check_dds(b, file_size); !s.ok()) return Failure{s.reason()};
   }
-  if (b.substr(0, 6) == "GIF87a" || b.substr(0, 6) == "GIF89a") {
+  // giflib takes any file starting "GIF" (a version of "8JJ" too: the fuzzer's 57 bytes of
+  // 19018x19018 asked for 1.4 GB).
+  if (b.substr(0, 3) == "GIF") {
     if (const Status s = check_gif(b, file_size); !s.ok()) return Failure{s.reason()};
   }
   if (b.size() >= 3 && b.substr(0, 3) == "\xFF\xD8\xFF") facts.decoded_whole = jpeg_progressive(b);

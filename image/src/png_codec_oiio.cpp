@@ -209,7 +209,7 @@ std::optional<std::pair<long, long>> gif_screen(std::FILE* file) {
   unsigned char header[10];
   const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
   std::rewind(file);
-  if (!read || (std::memcmp(header, "GIF87a", 6) != 0 && std::memcmp(header, "GIF89a", 6) != 0)) {
+  if (!read || std::memcmp(header, "GIF", 3) != 0) {  // all giflib asks of a GIF's version
     return std::nullopt;
   }
   return std::pair<long, long>(header[6] | header[7] << 8, header[8] | header[9] << 8);
@@ -234,7 +234,7 @@ std::string format_by_signature(const unsigned char* head, std::size_t n) {
   const auto starts = [&](std::string_view magic) {
     return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
   };
-  if (starts("GIF87a") || starts("GIF89a")) return "gif";
+  if (starts("GIF")) return "gif";
   if (starts("BM")) return "bmp";
   if (n >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') return "pnm";
   if (starts("II*\0") || starts("MM\0*")) return "tiff";

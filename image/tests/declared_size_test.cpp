@@ -2,6 +2,8 @@
 // figures worked out by hand here from the format's storage.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "image/declared_size.hpp"
 
 namespace l2::png_codec {
@@ -62,6 +64,26 @@ TEST(DeclaredSize, FormatsDecodedWholeAreBoundedToo) {
   EXPECT_EQ(check_declared(d, 1 << 20).reason(),
             "cannot read: a ico of 16384x16384 pixels is decoded whole, 768 MiB, more than the "
             "512 MiB a picture read whole may take; save it as a tiled TIFF");
+}
+
+// giflib reads any file starting "GIF" and allocates its screen on opening, 4 bytes a pixel:
+// 57 bytes of "GIF8JJ" declaring 19018x19018 asked for 1.4 GB (fuzz_picture_file). The screen is
+// bounded as a picture decoded whole.
+TEST(DeclaredSize, AnyGifVersionHasItsScreenChecked) {
+  const auto gif = [](const char* version, int side) {
+    std::string g = std::string("GIF") + version;
+    g += {static_cast<char>(side & 0xFF), static_cast<char>(side >> 8),
+          static_cast<char>(side & 0xFF), static_cast<char>(side >> 8)};
+    return g;
+  };
+  // 19018^2 x 4 = 1,446,737,296 bytes: 1380 MiB rounded up.
+  EXPECT_EQ(check_header(gif("8JJ", 19018), 57).reason(),
+            "cannot read: declares 19018x19018 pixels of 4 channels (1380 MiB decoded), more than "
+            "a gif file of 57 bytes can hold");
+  EXPECT_EQ(check_header(gif("89a", 16384), 1000000).reason(),
+            "cannot read: a gif of 16384x16384 pixels is decoded whole, 1024 MiB, more than the "
+            "512 MiB a picture read whole may take; save it as a tiled TIFF");
+  EXPECT_TRUE(check_header(gif("89a", 8192), 1000000).ok());  // 256 MiB
 }
 
 TEST(DeclaredSize, HeadersBeforeTheReader) {
