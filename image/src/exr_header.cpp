@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "command_line/printable.hpp"
+
 namespace l2::png_codec {
 
 namespace {
@@ -53,9 +55,10 @@ Status check_exr(const ReadAt& read, std::uintmax_t file_size) {
     at += 4;
     const std::uint64_t left = at <= file_size ? file_size - at : 0;
     if (static_cast<std::int32_t>(size) < 0 || size > left) {
-      return Failure{"cannot read: an OpenEXR attribute '" + name + "' of type '" + type +
-                     "' declaring " + std::to_string(static_cast<std::int32_t>(size)) +
-                     " bytes, more than the " + std::to_string(left) + " the file has left"};
+      return Failure{"cannot read: an OpenEXR attribute '" + printable(name) + "' of type '" +
+                     printable(type) + "' declaring " +
+                     std::to_string(static_cast<std::int32_t>(size)) + " bytes, more than the " +
+                     std::to_string(left) + " the file has left"};
     }
     if (++attributes > kMaxExrAttributes) {
       return Failure{"cannot read: an OpenEXR file of more than " +

@@ -81,6 +81,14 @@ TEST(ExrHeader, ALongNameRunsIntoTheNextFieldAsForTheReader) {
             0u);
 }
 
+// Names are the file's bytes: printed as escapes, the refusal stays one line (the picture-file
+// fuzzer found a type holding a PNG signature's line breaks).
+TEST(ExrHeader, NamesArePrintedAsEscapes) {
+  EXPECT_EQ(check(exr(0, attribute("a\nb", "\x1b[2J", 1000, "abc"))).reason(),
+            "cannot read: an OpenEXR attribute 'a\\nb' of type '\\x1b[2J' declaring 1000 bytes, "
+            "more than the 3 the file has left");
+}
+
 TEST(ExrHeader, OtherBytesAreNoExr) {
   EXPECT_TRUE(check("P6\n8 8\n255\n").ok());
   EXPECT_TRUE(check("").ok());
