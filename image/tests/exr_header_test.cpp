@@ -89,6 +89,25 @@ TEST(ExrHeader, NamesArePrintedAsEscapes) {
             "more than the 3 the file has left");
 }
 
+// A type OpenEXR knows is read at its own size, not the one declared: a compression declaring
+// 129 bytes is one, and what follows it is the next attribute (the picture-file fuzzer found a
+// 1.7 GB one there). A preview's pixels are its width x height x 4 bytes.
+TEST(ExrHeader, KnownTypesAreReadAtTheirOwnSize) {
+  const std::string file =
+      exr(0, attribute("compression", "compression", 129, std::string(1, '\0')) +
+                 attribute("junk", "opaque", 1000, "abc"));
+  EXPECT_EQ(check(file).reason(),
+            "cannot read: an OpenEXR attribute 'junk' of type 'opaque' declaring 1000 bytes, more "
+            "than the 3 the file has left");
+  EXPECT_EQ(check(exr(0, attribute("preview", "preview", 8, le32(65536) + le32(65536)))).reason(),
+            "cannot read: an OpenEXR attribute 'preview' of type 'preview' declaring 17179869192 "
+            "bytes, more than the 8 the file has left");
+  // Two channels of 16 bytes each after their names, and the list's empty name: 39 bytes.
+  const std::string channels = std::string("R\0", 2) + std::string(16, '\0') +
+                               std::string("G\0", 2) + std::string(16, '\0') + '\0';
+  EXPECT_TRUE(check(exr(0, attribute("channels", "chlist", 7, channels) + '\0')).ok());
+}
+
 TEST(ExrHeader, OtherBytesAreNoExr) {
   EXPECT_TRUE(check("P6\n8 8\n255\n").ok());
   EXPECT_TRUE(check("").ok());
