@@ -77,8 +77,9 @@ Status check_exr(const ReadAt& read, std::uintmax_t file_size) {
   // Version flags: bit 12, several parts, each header ended by an empty name, and the list of
   // headers by one more.
   const bool multipart = (static_cast<unsigned char>(start[5]) & 0x10) != 0;
-  // Bit 10: names of up to 255 characters; else 31.
-  const std::size_t longest = (static_cast<unsigned char>(start[5]) & 0x04) != 0 ? 255 : 31;
+  // Names of up to 255 characters, whatever the long-names flag (bit 10) says: OpenEXR reads
+  // them so, and a walk that stopped at 31 missed its 1.6 GB attributes behind a longer one.
+  const std::size_t longest = 255;
   std::uint64_t at = 8;
   int attributes = 0;
   for (;;) {

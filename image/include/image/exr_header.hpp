@@ -16,9 +16,9 @@ inline constexpr int kMaxExrAttributes = 65536;
 
 // Nothing when the bytes are no OpenEXR file (its magic number first); otherwise each
 // attribute's size against the bytes the file has left, and their count, each field read as
-// OpenEXR reads it (a name longer than it allows runs into the next field). A header cut short
-// is left to the reader, which says so.
-// Failure: one line saying what the file declares.
+// OpenEXR reads it (a name of up to 255 characters; a longer one runs into the next field). A
+// header cut short is left to the reader, which says so. Failure: one line saying what the file
+// declares.
 Status check_exr(const ReadAt& read, std::uintmax_t file_size);
 
 }  // namespace l2::png_codec
