@@ -5,7 +5,7 @@
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
 # broke a promise; the input that did it is saved in build/fuzz/runs/<harness>/artifacts/
 # (under FUZZ_OUT instead of build/fuzz/runs when set).
-# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all nine)
+# Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all twelve)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound).
 set -euo pipefail
@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame picture_header frame_delta control_line)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut wall_import vizserver_wire png_frame picture_header picture_file frame_delta control_line)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
@@ -38,6 +38,9 @@ for h in "${harnesses[@]}"; do
   [[ $h == wall_file || $h == session_file ]] && limits=(-max_len=131072)
   # Wall configurations are a few kilobytes; the example nDisplay file is under 8 KB.
   [[ $h == wall_import ]] && limits=(-max_len=16384)
+  # Pictures: no one allocation past what the checks let a reader take (a picture decoded whole,
+  # 512 MiB, with room), nor the process past 2 GB; files of up to 64 kB.
+  [[ $h == picture_file ]] && limits=(-max_len=65536 -malloc_limit_mb=1024 -rss_limit_mb=2048)
   status=0
   build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
