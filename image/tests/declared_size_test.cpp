@@ -86,6 +86,28 @@ TEST(DeclaredSize, AnyGifVersionHasItsScreenChecked) {
   EXPECT_TRUE(check_header(gif("89a", 8192), 1000000).ok());  // 256 MiB
 }
 
+// An uncompressed DDS's channels are unpacked by bit masks: OpenImageIO's reader shifts a mask
+// of zero for ever (fuzz_picture_file's 194-byte 8x8 DDS).
+TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
+  std::string dds(128, '\0');
+  dds.replace(0, 4, "DDS ");
+  dds[12] = 8;  // 8x8, one level
+  dds[16] = 8;
+  dds[28] = 1;
+  dds[80] = 0x40;  // RGB: red, green and blue masks
+  dds[94] = '\xff';
+  dds[97] = '\xff';
+  dds[100] = '\xff';
+  EXPECT_TRUE(check_header(dds, 400).ok());
+  dds[97] = 0;  // green: none
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose green bit mask is zero, no channel its reader can unpack");
+  dds[97] = '\xff';
+  dds[80] = 0x41;  // and alpha, whose mask is zero
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose alpha bit mask is zero, no channel its reader can unpack");
+}
+
 TEST(DeclaredSize, HeadersBeforeTheReader) {
   // "DDS " and 124 bytes: height at 12, width at 16, levels at 28 (little-endian).
   std::string dds(128, '\0');

@@ -348,6 +348,8 @@ TEST_F(Hostile, EveryFormatDeclaringMoreThanItHoldsIsOneLine) {
   expect("attribute.exr", hostile::exr_attribute(1677721600),
          "an OpenEXR attribute 'junk' of type 'opaque' declaring 1677721600 bytes, more than the "
          "3 the file has left");
+  expect("no-green.dds", hostile::dds_no_green(),
+         "a DDS whose green bit mask is zero, no channel its reader can unpack");
   EXPECT_EQ(picture_error(file("small.tif", hostile::tiff({}))), "opened");
   EXPECT_EQ(picture_error(
                 file("small-tiled.tif", hostile::tiff({.tile = 16, .data = std::string(768, 0)}))),

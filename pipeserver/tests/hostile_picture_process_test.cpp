@@ -32,6 +32,7 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"e20.ppm", "P6\n100000000000000000000 1\n255\n" + std::string(300, '\0')},
       {"huge.ico", hostile::ico(huge_png)},
       {"cut.ico", hostile::ico(hostile::small_png().substr(0, 40))},
+      {"no-green.dds", hostile::dds_no_green()},
       {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
   };
@@ -49,7 +50,7 @@ TEST_F(HostileProcess, WholeReadsOfEveryFormatAreRefusedInOneLine) {
   std::vector<std::pair<std::string, std::string>> files;
   for (auto& [name, bytes] : every_format()) {
     if (name == "tiled.tif" || name == "tiles.tif" || name == "samples.tif" ||
-        name == "pages.tif" || name == "cut.ico")
+        name == "pages.tif" || name == "cut.ico" || name == "no-green.dds")
       files.emplace_back(name, bytes);
   }
   files.insert(files.end(),

@@ -247,6 +247,13 @@ inline std::string exr_attribute(std::uint32_t size) {
          le32(size) + "abc";
 }
 
+// dds_levels(1) with its green bit mask zero: OpenImageIO's reader shifted it for ever.
+inline std::string dds_no_green() {
+  std::string d = dds_levels(1);
+  d.replace(96, 4, std::string(4, '\0'));
+  return d;
+}
+
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +
