@@ -1,8 +1,9 @@
 // What a picture file's header declares, checked before any reader trusts it
-// (image/declared_size.hpp), on arbitrary bytes: the file's first bytes through check_header at a
-// size of the input's own choosing, and numbers taken from the input as what a reader declared
-// through check_declared. Never a crash or an overflow (UBSan), and every refusal one line
-// saying "cannot read: ".
+// (image/declared_size.hpp, image/tiff_header.hpp, image/exr_header.hpp), on arbitrary bytes:
+// the file's first bytes through check_header, check_tiff (a TIFF's directories, read where they
+// point) and check_exr (an OpenEXR file's attributes) at a size of the input's own choosing, and
+// numbers taken from the input as what a reader declared through check_declared. Never a crash
+// or an overflow (UBSan), and every refusal one line saying "cannot read: ".
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -11,6 +12,8 @@
 
 #include "fuzz_check.hpp"
 #include "image/declared_size.hpp"
+#include "image/exr_header.hpp"
+#include "image/tiff_header.hpp"
 
 namespace {
 
@@ -46,6 +49,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const l2::Result<l2::png_codec::HeaderFacts> facts =
       l2::png_codec::check_header(header, file_size);
   if (!facts.ok()) check_refusal(l2::Failure{facts.reason()}, "a header refusal is one line");
+  const l2::png_codec::ReadAt read = [&](std::uint64_t at, std::size_t n) {
+    return at >= header.size() ? std::string() : std::string(header.substr(at, n));
+  };
+  check_refusal(l2::png_codec::check_tiff(read, file_size), "a TIFF refusal is one line");
+  check_refusal(l2::png_codec::check_exr(read, file_size), "an OpenEXR refusal is one line");
 
   l2::png_codec::Declared d;
   d.format = kFormats[take(data, size, 1) % std::size(kFormats)];

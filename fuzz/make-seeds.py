@@ -156,6 +156,100 @@ put("picture_header", "jpeg-progressive",
 put("picture_header", "ppm", struct.pack("<Q", 317) + b"P6\n1000000 1\n255\n")
 
 
+def tiff(width, height, tile=0, pages=1, data=bytes(192)):
+    """A little-endian TIFF of 8-bit RGB, uncompressed: one strip, or tiles of tile x tile; each of
+    `pages` directories holds `data` after its entries."""
+    out = b"II*\0" + struct.pack("<I", 8)
+    for page in range(pages):
+        tags = [(256, 4, width), (257, 4, height), (258, 3, 8), (259, 3, 1), (262, 3, 2)]
+        tags += [(273, 4, None), (277, 3, 3), (278, 4, height), (279, 4, len(data))] if not tile \
+            else [(277, 3, 3), (322, 4, tile), (323, 4, tile), (324, 4, None), (325, 4, len(data))]
+        data_at = len(out) + 2 + 12 * len(tags) + 4
+        out += struct.pack("<H", len(tags))
+        for tag, kind, value in tags:
+            value = data_at if value is None else value
+            out += struct.pack("<HHIHH" if kind == 3 else "<HHII", tag, kind, 1,
+                               *((value, 0) if kind == 3 else (value,)))
+        out += struct.pack("<I", data_at + len(data) if page + 1 < pages else 0) + data
+    return out
+
+
+put("picture_header", "tiff-8x8-2-pages", struct.pack("<Q", 1000) + tiff(8, 8, pages=2))
+put("picture_header", "tiff-16x16-tiled", struct.pack("<Q", 1000) + tiff(16, 16, tile=16, data=bytes(768)))
+
+
+# --- picture_file: a byte choosing the extension (fuzz_picture_file.cpp's kExtensions), then a
+# small valid file of that format ----------------------------------------------------------------
+EXTENSIONS = ["png", "jpg", "tif", "bmp", "ppm", "pfm", "hdr", "fits", "ico", "gif", "tga", "dds",
+              "exr", "sgi", "psd", "rla"]
+
+
+def picture(name, data):
+    put("picture_file", name, bytes([EXTENSIONS.index(name.rsplit(".", 1)[1])]) + data)
+
+
+rgb_4x4 = bytes((x * 60, y * 60, 128) [c] for y in range(4) for x in range(4) for c in range(3))
+picture("rgb-4x4.png", png(4, 4, 2, 8, [rgb_4x4[12 * y:12 * y + 12] for y in range(4)]))
+# An 8x8 grey baseline JPEG (FFmpeg's, as pipeserver/hostile_files.hpp's jpeg_frame).
+picture("grey-8x8.jpg", bytes.fromhex(
+    "ffd8ffe000104a46494600010200000100010000ffdb004300083e3e493e49555555555555645d6468686864"
+    "646464686868707070838383707070686870707c7c83838f938f8787838793939b9b9bbabab2b2d9d9e0ffff"
+    "ffffc4004a000100000000000000000000000000000000010100000000000000000000000000000000100100"
+    "000000000000000000000000000000110100000000000000000000000000000000ffc0001108000800080301"
+    "2200021100031100ffda000c03010002110311003f00000fffd9"))
+picture("rgb-8x8.tif", tiff(8, 8, data=bytes(range(192))))
+picture("tiled-16x16.tif", tiff(16, 16, tile=16, data=bytes(768)))
+picture("pages-8x8.tif", tiff(8, 8, pages=3))
+bmp_rows = b"".join(rgb_4x4[12 * y:12 * y + 12] for y in range(4))  # 12 bytes: no padding
+picture("rgb-4x4.bmp", b"BM" + struct.pack("<IHHI", 54 + len(bmp_rows), 0, 0, 54) +
+        struct.pack("<IiiHHIIiiII", 40, 4, 4, 1, 24, 0, len(bmp_rows), 2835, 2835, 0, 0) + bmp_rows)
+picture("rgb-4x4.ppm", b"P6\n4 4\n255\n" + rgb_4x4)
+picture("grey-4x4.ppm", b"P5\n4 4\n255\n" + bytes(range(0, 160, 10)))
+picture("rgb-2x2.pfm", b"PF\n2 2\n-1.0\n" + struct.pack("<12f", *[i / 12 for i in range(12)]))
+# Radiance: flat RGBE scanlines (a side under 8 is never run-length encoded).
+picture("rgbe-4x4.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n" +
+        bytes([128, 64, 32, 129]) * 16)
+
+
+def fits_card(key, value):
+    return (key.ljust(8) + "= " + value.rjust(20)).ljust(80).encode()
+
+
+fits_header = (fits_card("SIMPLE", "T") + fits_card("BITPIX", "8") + fits_card("NAXIS", "2") +
+               fits_card("NAXIS1", "4") + fits_card("NAXIS2", "4") + b"END".ljust(80))
+picture("grey-4x4.fits", fits_header.ljust(2880, b" ") + bytes(range(16)).ljust(2880, b"\0"))
+icon_png = png(4, 4, 6, 8, [bytes(range(16 * y, 16 * y + 16)) for y in range(4)])
+picture("png-4x4.ico", struct.pack("<HHH", 0, 1, 1) +
+        struct.pack("<BBBBHHII", 4, 4, 0, 0, 1, 32, len(icon_png), 22) + icon_png)
+picture("1x1.gif", b"GIF89a\x01\x00\x01\x00\x80\x00\x00\x00\x00\x00\xff\xff\xff"
+        b"\x2c\x00\x00\x00\x00\x01\x00\x01\x00\x00\x02\x02\x44\x01\x00\x3b")
+picture("bgr-4x4.tga", struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, 4, 4, 24, 0x20) +
+        rgb_4x4)
+# The header as dds() writes it, its capabilities saying "a texture" (DDSCAPS_TEXTURE).
+picture("rgb-8x8.dds", dds(8, 8, 1)[:108] + struct.pack("<I", 0x1000) + bytes(16) +
+        bytes(range(192)))
+# OpenEXR: as `oiiotool --pattern constant:color=0.5,0.25,1 2x2 3 -d half --compression none`
+# writes it.
+picture("rgb-2x2.exr", bytes.fromhex(
+    "762f310102000000457869663a496d616765486973746f727900737472696e6700560000006f69696f746f6f6c202d2d"
+    "7061747465726e20636f6e7374616e743a636f6c6f723d302e352c302e32352c31203278322033202d642068616c6620"
+    "2d2d636f6d7072657373696f6e206e6f6e65202d6f20742e657872536f66747761726500737472696e67006c0000004f"
+    "70656e496d616765494f20322e342e372e31203a206f69696f746f6f6c202d2d7061747465726e20636f6e7374616e74"
+    "3a636f6c6f723d302e352c302e32352c31203278322033202d642068616c66202d2d636f6d7072657373696f6e206e6f"
+    "6e65202d6f20742e6578726361704461746500737472696e670013000000323032363a31323a30362030383a33363a34"
+    "386368616e6e656c730063686c6973740037000000420001000000000000000100000001000000470001000000000000"
+    "00010000000100000052000100000000000000010000000100000000636f6d7072657373696f6e00636f6d7072657373"
+    "696f6e0001000000006461746157696e646f7700626f7832690010000000000000000000000001000000010000006469"
+    "73706c617957696e646f7700626f7832690010000000000000000000000001000000010000006c696e654f7264657200"
+    "6c696e654f72646572000100000000706978656c417370656374526174696f00666c6f617400040000000000803f7363"
+    "7265656e57696e646f7743656e746572007632660008000000000000000000000073637265656e57696e646f77576964"
+    "746800666c6f617400040000000000803f0062020000000000007602000000000000000000000c000000003c003c0034"
+    "003400380038010000000c000000003c003c0034003400380038"))
+# SGI: a 512-byte header (magic 474, verbatim, a byte a channel, three channels), then planes.
+picture("rgb-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 0, 1, 3, 4, 4, 3, 0, 255, 0).ljust(512, b"\0")
+        + bytes(range(48)))
+
+
 # --- frame_delta: width-1 and height-1 bytes, then one message (dvi_link/frame_delta.hpp) -----
 def frame_delta(width, height, rows):
     """A stored (codec 0) message: rows maps a changed row to (mode, residual bytes)."""

@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import vizserver_wire png_frame picture_header frame_delta control_line tuio)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import vizserver_wire png_frame picture_header picture_file frame_delta control_line tuio)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
@@ -40,6 +40,9 @@ for h in "${harnesses[@]}"; do
   [[ $h == wall_import ]] && limits=(-max_len=16384)
   # A warp of the largest display the harness picks (16x16 points) is 3 KB with its header.
   [[ $h == warp_pfm ]] && limits=(-max_len=4096)
+  # Pictures: no one allocation past what the checks let a reader take (a picture decoded whole,
+  # 512 MiB, with room), nor the process past 2 GB; files of up to 64 kB.
+  [[ $h == picture_file ]] && limits=(-max_len=65536 -malloc_limit_mb=1024 -rss_limit_mb=2048)
   status=0
   build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \

@@ -98,8 +98,17 @@ struct ControlServer::Impl {
                  if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
                  serve_picture(req.matches[1].str(), res);
                });
+    // What to steer is in the path and the query; a body is read and dropped. A request with
+    // neither a length nor chunks has none (`curl -X POST URL`): cpp-httplib would read it to
+    // the connection's end, which the client, waiting for the answer, never closes, and answer
+    // 400 when its read timed out.
     server.Post(R"(/api/(pause|resume|save|stop|balance|window))",
-                [this](const httplib::Request& req, httplib::Response& res) {
+                [this](const httplib::Request& req, httplib::Response& res,
+                       const httplib::ContentReader& body) {
+                  if ((req.has_header("Content-Length") || req.has_header("Transfer-Encoding")) &&
+                      !body([](const char*, std::size_t) { return true; })) {
+                    return;  // too long or cut short: cpp-httplib's status (413, 400) stands
+                  }
                   if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
                   if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
                   steer(req, res);

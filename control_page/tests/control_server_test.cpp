@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <sys/socket.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -11,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "base/socket.hpp"
 #include "control_page/access_token.hpp"
 #include "image/png_io.hpp"
 #include "scaled_picture.hpp"
@@ -159,6 +162,37 @@ TEST(ControlServer, SteeringNeedsTheTokenAndARefusalChangesNothing) {
   EXPECT_EQ(got[0].action, ControlAction::Pause);
   EXPECT_EQ(got[1].action, ControlAction::Balance);
   EXPECT_EQ(got[1].argument, "kd");
+}
+
+// `curl -X POST URL` sends no body and says nothing of one (no Content-Length, no chunks):
+// cpp-httplib read on for a body until its read timed out and answered 400. Sent here as curl
+// sends it, on a socket of the test's own.
+TEST(ControlServer, APostWithoutALengthIsSteering) {
+  ControlServer server(any_port(), kToken);
+  FakeRun run(server);
+  const Fd peer =
+      connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port()), std::chrono::seconds(10));
+  const std::string request = std::string("POST /api/pause?token=") + kToken +
+                              " HTTP/1.1\r\nHost: 127.0.0.1\r\nUser-Agent: curl/7.88.1\r\n"
+                              "Accept: */*\r\n\r\n";
+  const iovec part{const_cast<char*>(request.data()), request.size()};
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  send_all(peer.get(), {&part, 1}, deadline, "the control page");
+  // The answer, read until its body has come (or the server closes, or the deadline passes).
+  std::string answer;
+  while (answer.find(R"({"done":"paused"})") == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    char buffer[4096];
+    const ssize_t n = ::recv(peer.get(), buffer, sizeof buffer, 0);
+    if (n == 0) break;
+    if (n > 0) answer.append(buffer, static_cast<std::size_t>(n));
+    if (n < 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(answer.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << answer;
+  EXPECT_NE(answer.find(R"({"done":"paused"})"), std::string::npos) << answer;
+  const std::vector<ControlRequest> got = run.end();
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].action, ControlAction::Pause);
 }
 
 // The answer is the run's decision: a refusal with its status and reason, JSON-quoted.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "png_codec.hpp"
 
@@ -14,6 +15,13 @@ std::string one_line(const std::string& text);
 // Why OpenImageIO could not open `path`, in one line, in the words of the reader that knows
 // the file's content ("cannot read: a TIFF file: ...").
 std::string open_failed(const char* path);
+
+// A PNG's pixels decoded with libpng, a row at a time and dropped, before the image cache reads
+// it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),
+// nothing printed (png_codec_oiio.cpp).
+Status check_png_data(const char* path);
+// The same for a PNG in memory (an icon's), its rows decoded only with `rows`.
+Status check_png_bytes(std::string_view bytes, bool rows);
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
 Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp

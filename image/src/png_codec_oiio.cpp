@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "media_oiio.hpp"
+#include "picture_checks.hpp"
 #include "png_codec.hpp"
 
 namespace {
@@ -80,6 +81,7 @@ struct PngRead {
   png_infop info = nullptr;
   bool ended_early = false;  // the file ended before libpng had all it needed
   int colour_type = -1;      // as the file stores its pixels (PNG_COLOR_TYPE_...), once known
+  bool one_row = false;      // the pixels' buffer holds one row, each read over the last
   char error[256] = {};      // libpng's message (a plain buffer: it crosses a longjmp)
   ~PngRead() {
     if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
@@ -124,9 +126,11 @@ bool png_steps(PngRead& read, png_bytep (*size)(void*, png_uint_32, png_uint_32)
   }
   png_bytep pixels = size(context, width, height);
   if (!pixels) return true;  // refused or out of memory: sizing says which
+  // One row's buffer (read.one_row) takes every row in turn: the data is checked, not kept.
+  const std::size_t row_bytes = read.one_row ? 0 : std::size_t{width} * 3;
   for (int pass = 0; pass < passes; ++pass) {
     for (png_uint_32 y = 0; y < height; ++y) {
-      png_read_row(read.png, pixels + std::size_t{y} * width * 3, nullptr);
+      png_read_row(read.png, pixels + std::size_t{y} * row_bytes, nullptr);
     }
   }
   png_read_end(read.png, nullptr);
@@ -205,7 +209,7 @@ std::optional<std::pair<long, long>> gif_screen(std::FILE* file) {
   unsigned char header[10];
   const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
   std::rewind(file);
-  if (!read || (std::memcmp(header, "GIF87a", 6) != 0 && std::memcmp(header, "GIF89a", 6) != 0)) {
+  if (!read || std::memcmp(header, "GIF", 3) != 0) {  // all giflib asks of a GIF's version
     return std::nullopt;
   }
   return std::pair<long, long>(header[6] | header[7] << 8, header[8] | header[9] << 8);
@@ -230,7 +234,7 @@ std::string format_by_signature(const unsigned char* head, std::size_t n) {
   const auto starts = [&](std::string_view magic) {
     return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
   };
-  if (starts("GIF87a") || starts("GIF89a")) return "gif";
+  if (starts("GIF")) return "gif";
   if (starts("BM")) return "bmp";
   if (n >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') return "pnm";
   if (starts("II*\0") || starts("MM\0*")) return "tiff";
@@ -265,6 +269,30 @@ std::FILE* open_stream(const Input& input) {
   if (!input.in_memory()) return std::fopen(input.path, "rb");
   // Read in place: a stream opened "rb" never writes to its buffer.
   return ::fmemopen(const_cast<std::uint8_t*>(input.bytes), input.size, "rb");
+}
+
+// A PNG's header, and with `rows` its rows, decoded with libpng, each row dropped: ok, or why
+// not. The image cache reads a PNG with OpenImageIO's reader, whose error handler returns, so
+// libpng printed its own line ("libpng error: IDAT: incorrect data check") before ours, and only
+// once the cache reached the damage, a frame into the run; its ICO reader's handler crashed the
+// process (SIGFPE) on a PNG icon cut short.
+Status check_png(const Input& input, bool rows) {
+  PngRead read;
+  read.file = open_stream(input);
+  if (!read.file) return Failure{std::string("cannot read: ") + std::strerror(errno)};
+  read.one_row = true;
+  std::vector<std::uint8_t> row;
+  const RgbSink sink{&row, [](void* context, int, int) { return context != nullptr; },
+                     [](void* context, int width, int) {
+                       auto& r = *static_cast<std::vector<std::uint8_t>*>(context);
+                       r.resize(std::size_t(width) * 3);
+                       return r.data();
+                     },
+                     INT_MAX};
+  Source ignored;
+  // A sink whose context is null accepts no size: only the header is read.
+  return read_png_file(read, rows ? sink : RgbSink{nullptr, sink.accept, sink.allocate, INT_MAX},
+                       ignored);
 }
 
 // An OpenImageIO reader and, for a picture in memory, what it reads from (which must outlive it:
@@ -302,8 +330,9 @@ l2::Result<Opened> open_oiio(const Input& input, const OIIO::ImageSpec& config) 
   return opened;
 }
 
-// An opened picture that is not a PNG, through OpenImageIO, as read_rgb() says.
-Status read_oiio(OIIO::ImageInput& in, RgbSink sink, Source& source) {
+// An opened picture that is not a PNG, through OpenImageIO, as read_rgb() says; `file_size`
+// bytes hold it.
+Status read_oiio(OIIO::ImageInput& in, std::uintmax_t file_size, RgbSink sink, Source& source) {
   const OIIO::ImageSpec& spec = in.spec();
   const std::string compression = spec.get_string_attribute("compression");
   source = {in.format_name(), spec.nchannels >= 3 ? 3 : 1,
@@ -320,6 +349,8 @@ Status read_oiio(OIIO::ImageInput& in, RgbSink sink, Source& source) {
   }
   // Checked before the buffer is asked for: a 74-byte file can claim 20000x20000 pixels.
   if (const auto why = refusal(sink, spec.width, spec.height)) return refused(*why);
+  // What the reader declares beyond the size (tiles, samples) against the file's bytes.
+  if (const Status s = l2::png_codec::check_opened(in, file_size, false, false); !s.ok()) return s;
   std::uint8_t* dst = sink.allocate(sink.context, spec.width, spec.height);
   if (!dst) return Failure{"cannot read: out of memory"};
   if (spec.nchannels >= 3) {  // the first three channels, straight into the picture
@@ -359,11 +390,18 @@ Status read_input(const Input& input, RgbSink sink, Source* source_or_null) try 
       if (const auto why = refusal(sink, screen->first, screen->second)) return refused(*why);
     }
   }
+  // What the header declares, before a reader trusts it (picture_checks.hpp).
+  const l2::png_codec::PictureBytes bytes =
+      input.in_memory() ? l2::png_codec::memory_bytes(input.bytes, input.size)
+                        : l2::png_codec::file_bytes(input.path);
+  if (const auto facts = l2::png_codec::check_before_open(bytes); !facts.ok()) {
+    return Failure{facts.reason()};
+  }
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto opened = open_oiio(input, config);
   if (!opened.ok()) return Failure{opened.reason()};
-  return read_oiio(*opened->in, sink, source);
+  return read_oiio(*opened->in, bytes.size, sink, source);
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
 }
@@ -405,6 +443,15 @@ std::string open_failed(const char* path) {
   if (reader && !reader->open(path, spec)) why = one_line(reader->geterror());
   if (why.empty()) why = "damaged or ends early";
   return "cannot read: a " + upper(format) + " file: " + why;
+}
+
+Status check_png_data(const char* path) {
+  return check_png({path}, true);
+}
+
+Status check_png_bytes(std::string_view bytes, bool rows) {
+  return check_png({nullptr, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},
+                   rows);
 }
 
 }  // namespace l2::png_codec

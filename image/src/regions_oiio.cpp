@@ -8,13 +8,11 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
-#include "image/declared_size.hpp"
 #include "media_oiio.hpp"
+#include "picture_checks.hpp"
 #include "png_chunks.hpp"
 
 namespace l2::png_codec {
@@ -78,37 +76,11 @@ class CacheRegions final : public RegionReader {
   int width_, height_, channels_;
 };
 
-// The file's first bytes and its size, for check_header.
-std::pair<std::string, std::uintmax_t> file_start(const char* path) {
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  std::string bytes(4096, '\0');
-  std::ifstream in(path, std::ios::binary);
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
-  return {bytes, error ? 0 : size};
-}
-
-Declared declared(const OIIO::ImageInput& in, const OIIO::ImageSpec& spec, bool whole) {
-  Declared d;
-  d.format = in.format_name();
-  d.compression = spec.get_string_attribute("compression");
-  d.width = spec.width;
-  d.height = spec.height;
-  d.depth = std::max(spec.depth, 1);
-  d.channels = spec.nchannels;
-  d.bytes_per_channel = static_cast<int>(spec.format.size());
-  d.tile_width = spec.tile_width;
-  d.tile_height = spec.tile_height;
-  d.tile_depth = std::max(spec.tile_depth, 1);
-  d.decoded_whole = whole;
-  return d;
-}
-
 }  // namespace
 
-// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp): nothing for
-// another format; else the megabytes it decodes to as stored, or why it cannot be read.
+// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then its rows
+// decoded (check_png_data): nothing for another format; else the megabytes it decodes to as
+// stored, or why it cannot be read.
 Result<double> png_megabytes(const char* path) {
   unsigned char signature[8] = {};
   if (std::FILE* file = std::fopen(path, "rb")) {
@@ -128,15 +100,16 @@ Result<double> png_megabytes(const char* path) {
                    std::to_string(static_cast<int>(kWholeScanlinePictureMegabytes)) +
                    " MiB of cache); save it without interlacing"};
   }
+  if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
   return megabytes;
 }
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   const Result<double> png = png_megabytes(path);
   if (!png.ok()) return Failure{png.reason()};
-  // What a reader would trust of the header, checked first (declared_size.hpp).
-  const auto [start, file_size] = file_start(path);
-  const Result<HeaderFacts> facts = check_header(start, file_size);
+  // What a reader would trust of the header, checked first (picture_checks.hpp).
+  const PictureBytes bytes = file_bytes(path);
+  const Result<HeaderFacts> facts = check_before_open(bytes);
   if (!facts.ok()) return Failure{facts.reason()};
   // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
   float cache_megabytes = kCacheMegabytes;
@@ -152,8 +125,7 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
     if (spec.width <= 0 || spec.height <= 0) {
       return Failure{"cannot read: the picture has no pixels"};
     }
-    if (const Status s = check_declared(declared(*in, spec, facts->decoded_whole), file_size);
-        !s.ok())
+    if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
       return Failure{s.reason()};
     const double decoded_mb =
         std::max(*png, double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20));

@@ -2,6 +2,8 @@
 // figures worked out by hand here from the format's storage.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "image/declared_size.hpp"
 
 namespace l2::png_codec {
@@ -48,6 +50,62 @@ TEST(DeclaredSize, AProgressiveJpegIsDecodedWhole) {
             "more than the 512 MiB a picture read whole may take; save it as baseline");
   d.decoded_whole = false;
   EXPECT_TRUE(check_declared(d, 50000000).ok());
+}
+
+// Readers that decode a picture whole whatever part is asked for (an icon's PNG, a GIF's
+// screen) are bounded as a progressive JPEG is; a TIFF, PNG or BMP is read a part at a time.
+TEST(DeclaredSize, FormatsDecodedWholeAreBoundedToo) {
+  EXPECT_TRUE(decoded_whole_by("ico"));
+  EXPECT_TRUE(decoded_whole_by("gif"));
+  EXPECT_FALSE(decoded_whole_by("tiff"));
+  EXPECT_FALSE(decoded_whole_by("bmp"));
+  Declared d = picture("ico", 16384, 16384);  // 805,306,368 bytes: 768 MiB
+  d.decoded_whole = true;
+  EXPECT_EQ(check_declared(d, 1 << 20).reason(),
+            "cannot read: a ico of 16384x16384 pixels is decoded whole, 768 MiB, more than the "
+            "512 MiB a picture read whole may take; save it as a tiled TIFF");
+}
+
+// giflib reads any file starting "GIF" and allocates its screen on opening, 4 bytes a pixel:
+// 57 bytes of "GIF8JJ" declaring 19018x19018 asked for 1.4 GB (fuzz_picture_file). The screen is
+// bounded as a picture decoded whole.
+TEST(DeclaredSize, AnyGifVersionHasItsScreenChecked) {
+  const auto gif = [](const char* version, int side) {
+    std::string g = std::string("GIF") + version;
+    g += {static_cast<char>(side & 0xFF), static_cast<char>(side >> 8),
+          static_cast<char>(side & 0xFF), static_cast<char>(side >> 8)};
+    return g;
+  };
+  // 19018^2 x 4 = 1,446,737,296 bytes: 1380 MiB rounded up.
+  EXPECT_EQ(check_header(gif("8JJ", 19018), 57).reason(),
+            "cannot read: declares 19018x19018 pixels of 4 channels (1380 MiB decoded), more than "
+            "a gif file of 57 bytes can hold");
+  EXPECT_EQ(check_header(gif("89a", 16384), 1000000).reason(),
+            "cannot read: a gif of 16384x16384 pixels is decoded whole, 1024 MiB, more than the "
+            "512 MiB a picture read whole may take; save it as a tiled TIFF");
+  EXPECT_TRUE(check_header(gif("89a", 8192), 1000000).ok());  // 256 MiB
+}
+
+// An uncompressed DDS's channels are unpacked by bit masks: OpenImageIO's reader shifts a mask
+// of zero for ever (fuzz_picture_file's 194-byte 8x8 DDS).
+TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
+  std::string dds(128, '\0');
+  dds.replace(0, 4, "DDS ");
+  dds[12] = 8;  // 8x8, one level
+  dds[16] = 8;
+  dds[28] = 1;
+  dds[80] = 0x40;  // RGB: red, green and blue masks
+  dds[94] = '\xff';
+  dds[97] = '\xff';
+  dds[100] = '\xff';
+  EXPECT_TRUE(check_header(dds, 400).ok());
+  dds[97] = 0;  // green: none
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose green bit mask is zero, no channel its reader can unpack");
+  dds[97] = '\xff';
+  dds[80] = 0x41;  // and alpha, whose mask is zero
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose alpha bit mask is zero, no channel its reader can unpack");
 }
 
 TEST(DeclaredSize, HeadersBeforeTheReader) {

@@ -43,6 +43,11 @@ struct Declared {
   bool decoded_whole = false;
 };
 
+// Whether OpenImageIO's reader of `format` decodes a picture whole on its first read, whatever
+// part the cache asks for: an icon's PNG, a GIF's screen, a Targa, IFF, WebP, HEIF or JPEG 2000
+// picture. Such a picture is bounded as a progressive JPEG is (Declared::decoded_whole).
+bool decoded_whole_by(std::string_view format);
+
 // At most how many bytes of decoded picture one byte of a file of this format (and compression)
 // can hold: 1 for raw samples, a run-length or dictionary coder's longest run otherwise, with
 // room for headers and palettes. Generous: a file that passes may still be damaged.

@@ -156,6 +156,104 @@ inline std::string dds_levels(std::uint32_t levels) {
   return d + std::string(8 * 8 * 3 * 2, '\x80');
 }
 
+// --- More formats whose headers OpenImageIO believes (issue 54) -------------------------------
+
+inline std::string le16(std::uint16_t v) {
+  return bytes_of(v);
+}
+inline std::string le32(std::uint32_t v) {
+  return bytes_of(v);
+}
+
+// A little-endian TIFF of RGB bytes: each directory declares `width` x `height` pixels of
+// `samples` samples of `bits` bits, uncompressed, as one strip (or, with `tile` > 0, tiles of
+// `tile` x `tile`) whose `data` follows; `directories` such directories, chained.
+struct Tiff {
+  std::uint32_t width = 8, height = 8, samples = 3, bits = 8, tile = 0;
+  int directories = 1;
+  std::string data = std::string(300, '\0');
+};
+inline std::string tiff(const Tiff& t) {
+  std::string out = "II*" + std::string(1, '\0') + le32(8);
+  for (int d = 0; d < t.directories; ++d) {
+    // Tags in ascending order: (tag, type, value), SHORT = 3, LONG = 4; a SHORT sits in the
+    // first two bytes of its value field.
+    std::vector<std::pair<std::uint16_t, std::uint32_t>> tags = {
+        {256, t.width}, {257, t.height}, {258, t.bits}, {259, 1}, {262, t.samples >= 3 ? 2u : 1u}};
+    const bool tiled = t.tile > 0;
+    if (!tiled) tags.push_back({273, 0});
+    tags.push_back({277, t.samples});
+    if (!tiled) tags.insert(tags.end(), {{278, t.height}, {279, 0}});
+    if (tiled) tags.insert(tags.end(), {{322, t.tile}, {323, t.tile}, {324, 0}, {325, 0}});
+    const auto at = static_cast<std::uint32_t>(out.size());
+    const auto data_at = static_cast<std::uint32_t>(at + 2 + 12 * tags.size() + 4);
+    const auto next = static_cast<std::uint32_t>(data_at + t.data.size());
+    out += le16(static_cast<std::uint16_t>(tags.size()));
+    for (auto [tag, value] : tags) {
+      const bool is_short = tag == 258 || tag == 259 || tag == 262 || tag == 277;
+      if (tag == 273 || tag == 324) value = data_at;
+      if (tag == 279 || tag == 325) value = static_cast<std::uint32_t>(t.data.size());
+      out += le16(tag) + le16(is_short ? 3 : 4) + le32(1) +
+             (is_short ? le16(static_cast<std::uint16_t>(value)) + le16(0) : le32(value));
+    }
+    out += le32(d + 1 < t.directories ? next : 0) + t.data;
+  }
+  return out;
+}
+
+// A 24-bit BMP declaring `width` x `height` (negative: top-down) with 300 bytes of pixels.
+inline std::string bmp(std::int32_t width, std::int32_t height) {
+  const std::string pixels(300, '\0');
+  const std::string info = le32(40) + bytes_of(width) + bytes_of(height) + le16(1) + le16(24) +
+                           le32(0) + le32(0) + le32(2835) + le32(2835) + le32(0) + le32(0);
+  return "BM" + le32(static_cast<std::uint32_t>(14 + info.size() + pixels.size())) + le32(0) +
+         le32(14 + 40) + info + pixels;
+}
+
+// A Radiance HDR declaring `width` x `height` with 300 bytes of pixels.
+inline std::string hdr(long long width, long long height) {
+  return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " +
+         std::to_string(width) + "\n" + std::string(300, '\0');
+}
+
+// A FITS file of 8-bit samples declaring `width` x `height`, with one 2880-byte block of them.
+inline std::string fits(long long width, long long height) {
+  const auto card = [](const std::string& key, const std::string& value) {
+    std::string c = key;
+    c.resize(8, ' ');
+    c += "= ";
+    c += std::string(20 - std::min<std::size_t>(20, value.size()), ' ') + value;
+    c.resize(80, ' ');
+    return c;
+  };
+  std::string h = card("SIMPLE", "T") + card("BITPIX", "8") + card("NAXIS", "2") +
+                  card("NAXIS1", std::to_string(width)) + card("NAXIS2", std::to_string(height));
+  h += "END";
+  h.resize(2880, ' ');
+  return h + std::string(2880, '\0');
+}
+
+// An ICO of one icon, the PNG `png` (its directory entry says 256x256, as icons larger than 255
+// do).
+inline std::string ico(const std::string& png) {
+  return le16(0) + le16(1) + le16(1) + std::string(4, '\0') + le16(1) + le16(32) +
+         le32(static_cast<std::uint32_t>(png.size())) + le32(6 + 16) + png;
+}
+
+// An OpenEXR file (magic number, version 2) whose first header attribute declares `size` bytes
+// of value and holds 3; OpenEXR allocated the size declared before reading it.
+inline std::string exr_attribute(std::uint32_t size) {
+  return std::string("\x76\x2f\x31\x01", 4) + le32(2) + std::string("junk\0opaque\0", 12) +
+         le32(size) + "abc";
+}
+
+// dds_levels(1) with its green bit mask zero: OpenImageIO's reader shifted it for ever.
+inline std::string dds_no_green() {
+  std::string d = dds_levels(1);
+  d.replace(96, 4, std::string(4, '\0'));
+  return d;
+}
+
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +
@@ -214,9 +312,10 @@ inline std::string png_chunk(const std::string& type, const std::string& data) {
 
 // A PNG of width x height 8-bit RGB pixels (interlaced or not) whose image data is a zlib
 // stream of `raw` (the filtered rows, which may hold far fewer bytes than the size claims) in
-// stored blocks.
+// stored blocks; `damaged`: its zlib check (Adler-32) one off, as a bit flipped in the data
+// leaves it.
 inline std::string png(std::uint32_t width, std::uint32_t height, bool interlaced,
-                       const std::string& raw) {
+                       const std::string& raw, bool damaged = false) {
   std::string idat = "\x78\x01";  // zlib, no compression
   for (std::size_t at = 0; at == 0 || at < raw.size(); at += 0xFFFF) {
     const auto n = static_cast<std::uint16_t>(std::min<std::size_t>(raw.size() - at, 0xFFFF));
@@ -228,7 +327,7 @@ inline std::string png(std::uint32_t width, std::uint32_t height, bool interlace
     a = (a + c) % 65521;
     b = (b + a) % 65521;
   }
-  idat += big_endian(b << 16 | a);
+  idat += big_endian((b << 16 | a) ^ (damaged ? 1u : 0u));
   const std::string ihdr = big_endian(width) + big_endian(height) +
                            std::string("\x08\x02\x00\x00", 4) +
                            std::string(1, interlaced ? '\x01' : '\x00');
@@ -236,14 +335,23 @@ inline std::string png(std::uint32_t width, std::uint32_t height, bool interlace
          png_chunk("IEND", "");
 }
 
-// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour.
-inline std::string small_png() {
+// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour;
+// `damaged` as for png().
+inline std::string small_png(bool damaged = false) {
   std::string raw;
   for (int y = 0; y < 2; ++y) {
     raw += '\0';
     for (int x = 0; x < 4; ++x) raw += std::string{char(40 * x), char(100 * y), '\x7f'};
   }
-  return png(4, 2, false, raw);
+  return png(4, 2, false, raw, damaged);
+}
+
+// small_png() with its signature's last byte changed and a byte put after it: the first chunk's
+// length then reads as 0xD20A0000, beyond what PNG allows (as fuzz_picture_file found it).
+inline std::string damaged_signature_png() {
+  std::string p = small_png();
+  p[7] = '`';
+  return p.insert(8, 1, '\xD2');
 }
 
 }  // namespace l2::hostile

@@ -1,0 +1,167 @@
+#include "image/tiff_header.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <set>
+#include <string>
+#include <string_view>
+
+namespace l2::png_codec {
+
+namespace {
+
+// Numbers as the file's byte order stores them.
+struct Order {
+  bool big_endian = false;
+  std::uint64_t at(std::string_view b, std::size_t offset, int n) const {
+    if (offset + n > b.size()) return 0;
+    std::uint64_t v = 0;
+    for (int i = 0; i < n; ++i) {
+      const std::uint64_t byte = static_cast<unsigned char>(b[offset + i]);
+      v |= big_endian ? byte << (8 * (n - 1 - i)) : byte << (8 * i);
+    }
+    return v;
+  }
+};
+
+// Classic TIFF: 2-byte entry counts, 12-byte entries, 4-byte offsets; BigTIFF: 8, 20 and 8.
+struct Layout {
+  Order order;
+  bool big = false;
+  int count_bytes() const { return big ? 8 : 2; }
+  int entry_bytes() const { return big ? 20 : 12; }
+  int offset_bytes() const { return big ? 8 : 4; }
+};
+
+enum Tag : std::uint16_t {
+  kWidth = 256,
+  kLength = 257,
+  kBitsPerSample = 258,
+  kCompression = 259,
+  kSamplesPerPixel = 277,
+  kTileWidth = 322,
+  kTileLength = 323,
+};
+
+// What libtiff's reader and OpenImageIO call the compression scheme; the number itself for one
+// neither names here, which max_expansion bounds by its most generous figure.
+std::string compression_name(std::uint64_t scheme) {
+  switch (scheme) {
+    case 1:
+      return "none";
+    case 5:
+      return "lzw";
+    case 7:
+      return "jpeg";
+    case 8:
+    case 32946:
+      return "zip";
+    case 32773:
+      return "packbits";
+    default:
+      return "compression " + std::to_string(scheme);
+  }
+}
+
+long long side(std::uint64_t v) {
+  return static_cast<long long>(std::min<std::uint64_t>(v, LLONG_MAX));
+}
+
+// One entry's first value: inline when its values fit the entry, else read where it points.
+std::uint64_t first_value(const Layout& l, std::string_view entry, const ReadAt& read) {
+  const std::uint64_t type = l.order.at(entry, 2, 2);
+  const std::uint64_t count = l.order.at(entry, 4, l.big ? 8 : 4);
+  const std::size_t value_at = l.big ? 12 : 8;
+  const int size = type == 3 ? 2 : type == 16 ? 8 : type == 1 ? 1 : 4;  // SHORT, LONG8, BYTE
+  if (count == 0) return 0;
+  if (count * size <= static_cast<std::uint64_t>(l.offset_bytes()))
+    return l.order.at(entry, value_at, size);
+  return l.order.at(read(l.order.at(entry, value_at, l.offset_bytes()), size), 0, size);
+}
+
+// The first directory's entries as Declared (at most the 65535 entries libtiff reads).
+Declared first_directory(const Layout& l, std::uint64_t at, std::uint64_t entries,
+                         const ReadAt& read) {
+  Declared d;
+  d.format = "tiff";
+  d.compression = "none";
+  d.channels = 1;
+  std::uint64_t bits = 1;
+  const std::string b = read(at + l.count_bytes(), entries * l.entry_bytes());
+  for (std::size_t e = 0; e + l.entry_bytes() <= b.size(); e += l.entry_bytes()) {
+    const std::string_view entry(b.data() + e, l.entry_bytes());
+    const std::uint64_t value = first_value(l, entry, read);
+    switch (l.order.at(entry, 0, 2)) {
+      case kWidth:
+        d.width = side(value);
+        break;
+      case kLength:
+        d.height = side(value);
+        break;
+      case kBitsPerSample:
+        bits = value;
+        break;
+      case kCompression:
+        d.compression = compression_name(value);
+        break;
+      case kSamplesPerPixel:
+        d.channels = static_cast<int>(std::min<std::uint64_t>(value, INT_MAX));
+        break;
+      case kTileWidth:
+        d.tile_width = side(value);
+        break;
+      case kTileLength:
+        d.tile_height = side(value);
+        break;
+      default:
+        break;
+    }
+  }
+  // Samples below a byte are read as bytes; wider ones as whole bytes (more than 8 is no format).
+  d.bytes_per_channel = static_cast<int>(std::min<std::uint64_t>((bits + 7) / 8, 9));
+  if (d.bytes_per_channel < 1) d.bytes_per_channel = 1;
+  return d;
+}
+
+}  // namespace
+
+TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size) {
+  TiffFacts facts;
+  const std::string header = read(0, 16);
+  Layout l;
+  if (header.substr(0, 2) == "MM") {
+    l.order.big_endian = true;
+  } else if (header.substr(0, 2) != "II") {
+    return facts;
+  }
+  const std::uint64_t magic = l.order.at(header, 2, 2);
+  if (magic != 42 && magic != 43) return facts;
+  l.big = magic == 43;
+  facts.tiff = true;
+  std::uint64_t at = l.big ? l.order.at(header, 8, 8) : l.order.at(header, 4, 4);
+  std::set<std::uint64_t> seen;
+  while (at != 0 && at < file_size && seen.insert(at).second &&
+         facts.directories <= kMaxTiffDirectories) {
+    const std::uint64_t entries = l.order.at(read(at, l.count_bytes()), 0, l.count_bytes());
+    const std::uint64_t end = at + l.count_bytes() + entries * l.entry_bytes();
+    if (entries == 0 || entries > 65535 || end + l.offset_bytes() > file_size) break;
+    if (facts.directories == 0) facts.first = first_directory(l, at, entries, read);
+    ++facts.directories;
+    at = l.order.at(read(end, l.offset_bytes()), 0, l.offset_bytes());
+  }
+  return facts;
+}
+
+Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
+  const TiffFacts facts = tiff_facts(read, file_size);
+  if (!facts.tiff) return {};
+  if (facts.directories > kMaxTiffDirectories) {
+    return Failure{"cannot read: a TIFF of more than " + std::to_string(kMaxTiffDirectories) +
+                   " directories (pages or levels), more than its reader opens in time; the "
+                   "first is shown: save it alone"};
+  }
+  if (facts.directories == 0 || facts.first.width == 0 || facts.first.height == 0) return {};
+  return check_declared(facts.first, file_size);
+}
+
+}  // namespace l2::png_codec

@@ -1,0 +1,120 @@
+// A TIFF's directories as tiff_header.hpp walks them, on bytes laid out here by hand: both byte
+// orders, BigTIFF, values stored beside their entry, a chain that loops, one past the limit.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "image/tiff_header.hpp"
+
+namespace l2::png_codec {
+namespace {
+
+// Numbers of `n` bytes in the file's byte order.
+std::string num(std::uint64_t v, int n, bool big_endian) {
+  std::string out(static_cast<std::size_t>(n), '\0');
+  for (int i = 0; i < n; ++i) out[big_endian ? n - 1 - i : i] = static_cast<char>(v >> (8 * i));
+  return out;
+}
+
+struct Entry {
+  std::uint16_t tag, type;
+  std::uint64_t count, value;
+};
+
+// A directory of `entries` at the end of `file`, linked to `next`.
+void directory(std::string& file, const std::vector<Entry>& entries, std::uint64_t next,
+               bool big_endian, bool bigtiff) {
+  const int offset = bigtiff ? 8 : 4;
+  file += num(entries.size(), bigtiff ? 8 : 2, big_endian);
+  for (const Entry& e : entries) {
+    file +=
+        num(e.tag, 2, big_endian) + num(e.type, 2, big_endian) + num(e.count, offset, big_endian);
+    // A value that fits sits in the field's first bytes (left-justified), an offset fills it.
+    const int size = e.type == 3 ? 2 : e.type == 4 ? 4 : 8;
+    const bool inline_value = e.count * size <= static_cast<std::uint64_t>(offset);
+    file += inline_value ? num(e.value, size, big_endian) + std::string(offset - size, '\0')
+                         : num(e.value, offset, big_endian);
+  }
+  file += num(next, offset, big_endian);
+}
+
+ReadAt reader(const std::string& file) {
+  return [file](std::uint64_t at, std::size_t n) {
+    return at >= file.size() ? std::string() : file.substr(at, n);
+  };
+}
+
+TEST(TiffHeader, BothByteOrdersAndBigTiffDeclareTheirFirstDirectory) {
+  for (const bool big_endian : {false, true}) {
+    for (const bool bigtiff : {false, true}) {
+      std::string f = big_endian ? "MM" : "II";
+      f += bigtiff ? num(43, 2, big_endian) + num(8, 2, big_endian) + num(0, 2, big_endian) +
+                         num(16, 8, big_endian)
+                   : num(42, 2, big_endian) + num(8, 4, big_endian);
+      directory(f,
+                {{256, 4, 1, 3000},
+                 {257, 3, 1, 2000},
+                 {258, 3, 1, 16},
+                 {259, 3, 1, 5},
+                 {277, 3, 1, 4},
+                 {322, 3, 1, 512},
+                 {323, 3, 1, 256}},
+                0, big_endian, bigtiff);
+      const TiffFacts facts = tiff_facts(reader(f), f.size());
+      ASSERT_TRUE(facts.tiff);
+      EXPECT_EQ(facts.directories, 1);
+      EXPECT_EQ(facts.first.width, 3000);
+      EXPECT_EQ(facts.first.height, 2000);
+      EXPECT_EQ(facts.first.channels, 4);
+      EXPECT_EQ(facts.first.bytes_per_channel, 2);
+      EXPECT_EQ(facts.first.compression, "lzw");
+      EXPECT_EQ(facts.first.tile_width, 512);
+      EXPECT_EQ(facts.first.tile_height, 256);
+    }
+  }
+}
+
+TEST(TiffHeader, BitsPerSampleStoredBesideTheEntry) {
+  // Three SHORTs (6 bytes) do not fit a classic entry's 4: they sit at offset 100.
+  std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+  directory(f, {{256, 3, 1, 8}, {257, 3, 1, 8}, {258, 3, 3, 100}, {277, 3, 1, 3}}, 0, false, false);
+  f.resize(100, '\0');
+  f += num(32, 2, false) + num(32, 2, false) + num(32, 2, false);
+  const TiffFacts facts = tiff_facts(reader(f), f.size());
+  EXPECT_EQ(facts.first.bytes_per_channel, 4);
+  EXPECT_EQ(facts.first.compression, "none");  // no Compression tag: stored as it is
+}
+
+TEST(TiffHeader, ChainsAreCountedToTheLimitAndLoopsEnd) {
+  // Directories of one entry (18 bytes each) one after another from offset 8.
+  const auto chain = [](int n, std::uint64_t last_next) {
+    std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+    for (int i = 0; i < n; ++i) {
+      directory(f, {{256, 3, 1, 1}}, i + 1 < n ? f.size() + 18 : last_next, false, false);
+    }
+    return f;
+  };
+  const std::string pages = chain(kMaxTiffDirectories, 0);
+  EXPECT_EQ(tiff_facts(reader(pages), pages.size()).directories, kMaxTiffDirectories);
+  const std::string more = chain(kMaxTiffDirectories + 1, 0);
+  EXPECT_EQ(check_tiff(reader(more), more.size()).reason(),
+            "cannot read: a TIFF of more than 256 directories (pages or levels), more than its "
+            "reader opens in time; the first is shown: save it alone");
+  // The third directory names the first again: three, as libtiff reads them.
+  const std::string loop = chain(3, 8);
+  EXPECT_EQ(tiff_facts(reader(loop), loop.size()).directories, 3);
+  // One pointing past the file's end is the reader's to refuse.
+  const std::string past = chain(2, 1 << 30);
+  EXPECT_EQ(tiff_facts(reader(past), past.size()).directories, 2);
+}
+
+TEST(TiffHeader, OtherBytesAreNoTiff) {
+  for (const std::string& f : {std::string("P6\n8 8\n255\n"), std::string("II*"), std::string()}) {
+    EXPECT_FALSE(tiff_facts(reader(f), f.size()).tiff) << f;
+    EXPECT_TRUE(check_tiff(reader(f), f.size()).ok()) << f;
+  }
+}
+
+}  // namespace
+}  // namespace l2::png_codec

@@ -1,0 +1,82 @@
+// Pictures of every format OpenImageIO reads for the wall, declaring more than their bytes hold
+// (issue 54), through the programs that read pictures: the picture scene of a pipeserver (a
+// part at a time, through the image cache) and the whole reads of strip_headers dump and
+// lightning2_emu route. Before, a 434-byte TIFF of 1024x1024 pixels in one tile of 65536x65536
+// took 13 GB and a minute in dump and route, and a 2.3 MB TIFF of 20,000 one-pixel directories
+// held the picture scene for minutes, and an ICO holding a PNG cut short crashed every one of
+// them (SIGFPE in OpenImageIO's ICO reader). hostile_process.hpp says what each run must do.
+#include "hostile_process.hpp"
+
+namespace l2::hostile_run {
+namespace {
+
+// One of each: what the header declares against the file's bytes, a wall, a tile a reader
+// holds, a picture decoded whole, the channels any picture has, the directories a reader opens.
+std::vector<std::pair<std::string, std::string>> every_format() {
+  const std::string huge_png = hostile::png(100000, 100000, false, std::string(8, '\0'));
+  return {
+      {"wide.tif", hostile::tiff({.width = 2000000000, .height = 1})},
+      {"tall.tif", hostile::tiff({.width = 1, .height = 4294967295u})},
+      {"tiled.tif", hostile::tiff({.width = 1024, .height = 1024, .tile = 65536})},
+      {"tiles.tif",
+       hostile::tiff({.width = 256, .height = 256, .tile = 65536, .data = std::string(4000, 0)})},
+      {"samples.tif", hostile::tiff({.samples = 60000})},
+      {"pages.tif", hostile::tiff({.width = 1, .height = 1, .directories = 20000, .data = "abc"})},
+      {"wide.bmp", hostile::bmp(2000000000, 1)},
+      {"tall.bmp", hostile::bmp(1, -2000000000)},
+      {"big.bmp", hostile::bmp(30000, 30000)},
+      {"wide.hdr", hostile::hdr(2000000000, 1)},
+      {"big.hdr", hostile::hdr(100000, 100000)},
+      {"wide.fits", hostile::fits(2000000000, 1)},
+      {"big.fits", hostile::fits(100000, 100000)},
+      {"e20.ppm", "P6\n100000000000000000000 1\n255\n" + std::string(300, '\0')},
+      {"huge.ico", hostile::ico(huge_png)},
+      {"cut.ico", hostile::ico(hostile::small_png().substr(0, 40))},
+      {"no-green.dds", hostile::dds_no_green()},
+      {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
+      {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
+  };
+}
+
+TEST_F(HostileProcess, PicturesOfEveryFormatAreRefusedInOneLine) {
+  expect_refused(
+      {PIPESERVER_EXE, {"--scene", "picture", "--content"}, {"--out", (dir_ / "out").string()}},
+      file("baseline.tif", "not a picture\n"), every_format());
+}
+
+// The whole reads: each caller bounds the sides (4096 for dump, the board's for route); within
+// them, what the file declares is checked as the picture scene checks it.
+TEST_F(HostileProcess, WholeReadsOfEveryFormatAreRefusedInOneLine) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (auto& [name, bytes] : every_format()) {
+    if (name == "tiled.tif" || name == "tiles.tif" || name == "samples.tif" ||
+        name == "pages.tif" || name == "cut.ico" || name == "no-green.dds")
+      files.emplace_back(name, bytes);
+  }
+  files.insert(files.end(),
+               {{"big.bmp", hostile::bmp(1024, 1024)},
+                {"big.hdr", hostile::hdr(1024, 1024)},
+                {"big.fits", hostile::fits(1024, 1024)},
+                {"big.ico", hostile::ico(hostile::png(1024, 1024, false, std::string(8, '\0')))}});
+  const fs::path baseline = file("baseline.tif", "not a picture\n");
+  expect_refused({STRIP_HEADERS_EXE, {"dump"}, {}}, baseline, files);
+  expect_refused(
+      {L2_EMU_EXE, {"route", "--displays", "1280x1024", "--out", (dir_ / "out").string()}, {}},
+      baseline, files);
+}
+
+// A PNG whose image data fails zlib's check, in the picture scene: libpng's own line
+// ("libpng error: IDAT: incorrect data check") came before ours, a frame into the run. Now the
+// whole output is one line naming the file, with libpng's reason, and the run never starts.
+TEST_F(HostileProcess, APngWithDamagedDataIsOneLineWithTheLibrarysReason) {
+  const fs::path damaged = file("damaged.png", hostile::small_png(true));
+  const Ended e = run_on(
+      {PIPESERVER_EXE, {"--scene", "picture", "--content"}, {"--out", (dir_ / "out").string()}},
+      damaged);
+  EXPECT_EQ(e.code, 1);
+  EXPECT_EQ(e.output, "pipeserver: " + damaged.string() +
+                          ": cannot read: a damaged PNG (IDAT: incorrect data check)\n");
+}
+
+}  // namespace
+}  // namespace l2::hostile_run
