@@ -102,7 +102,7 @@ set(l2_package_finds
     Threads::Threads "find_dependency(Threads)"
     nlohmann_json::nlohmann_json "find_dependency(nlohmann_json)"
     MPI::MPI_CXX "find_dependency(MPI COMPONENTS CXX)"
-    PkgConfig::OSMESA "l2_pkg_target(OSMESA osmesa)"
+    PkgConfig::EGL "l2_pkg_target(EGL egl)"
     PkgConfig::ASSIMP "l2_pkg_target(ASSIMP assimp)"
     PkgConfig::TOMLPP "l2_pkg_target(TOMLPP tomlplusplus)"
     PkgConfig::LZ4 "l2_pkg_target(LZ4 liblz4)"

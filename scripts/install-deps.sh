@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config clang-format
   clang libclang-rt-14-dev
   libosmesa6-dev libopenimageio-dev openimageio-tools libpng-dev libglfw3-dev libglm-dev libassimp-dev
+  libegl-dev libegl-mesa0  # --renderer egl: glvnd's libEGL and Mesa's EGL driver (llvmpipe without a GPU)
   fonts-dejavu-core
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev

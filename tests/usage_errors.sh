@@ -69,13 +69,15 @@ while IFS='|' read -r label name rest; do
     --*-timeout | --duration) [[ $rest == " MS:"* ]] || spelling "$label" "$name$rest: not in MS" ;;
     --threads) [[ $rest == " N:INT in [0 - 64]=1"* ]] ||
       spelling "$label" "--threads$rest: not 0..64 with the default 1" ;;
+    --renderer) [[ $rest == " TEXT:egl|osmesa|auto=auto"* ]] ||
+      spelling "$label" "--renderer$rest: not egl|osmesa|auto with the default auto" ;;
   esac
 done <"$tmp/options"
 # The wall is --wall FILE, never a positional argument.
 if grep -E '^[^:]+:  (wall|walls|WALL)( |$)' "$helps"; then
   spelling "positional" "a wall given as a positional argument, not --wall"
 fi
-for option in --wall --refresh --out --threads --stall-timeout --ready-timeout; do
+for option in --wall --refresh --out --threads --stall-timeout --ready-timeout --renderer; do
   users=$(awk -F'|' -v o="$option" '$2 == o {print $1}' "$tmp/options" | sort -u | paste -sd, -)
   echo "     $option is in: ${users:-(none)}"
 done
@@ -177,6 +179,12 @@ bad_value "--scene movie needs --content FILE" l2wall run --scene movie
 bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x
 bad_value "nan is not a number in -360..360" l2wall run --camera-orbit nan
 bad_value "--link requires --live" pipeserver --link /l2-x --out /tmp/x
+# --renderer means one thing everywhere: l2wall run checks it as every pipeserver does.
+bad_value "--renderer: expected egl, osmesa or auto, got bogus" pipeserver --renderer bogus \
+  --out /tmp/x
+bad_value "--renderer: expected egl, osmesa or auto, got bogus" l2wall run --renderer bogus
+bad_value "--renderer: expected egl, osmesa or auto, got EGL" spinning_cubes --renderer EGL \
+  --out /tmp/x
 bad_value "--viz-host and --viz-port need --path vizserver or both" l2wall run --viz-port 5000 \
   --out /tmp
 # EXT headers: fields used to be narrowed to their types (display 300 became 44, x 65541 5).

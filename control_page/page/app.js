@@ -222,6 +222,7 @@ function drawPipeservers(s) {
       const cell = row.insertCell();
       cell.textContent = text;
       if (i === 1) cell.className = 'place';
+      if (i === 1 && p.renderer) cell.title = `renderer: ${p.renderer}`;
     });
     const c = row.insertCell();
     c.append(chart(p));

@@ -59,6 +59,7 @@ json pipeservers(const std::vector<PagePipeserver>& all) {
                    {"place", p.place},
                    {"recent", recent},
                    {"back_channel", p.back_channel},
+                   {"renderer", p.renderer},
                    {"lost", p.lost}});
   }
   return out;

@@ -16,7 +16,8 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   s.frame = 41;
   s.paused = true;
   s.tiles = {{0, 0, 512, 384, 3}};
-  s.pipeservers = {{2, "pid 99", {{40, 1.5, 2.25, 1}}, "", true}};
+  s.pipeservers = {
+      {2, "pid 99", {{40, 1.5, 2.25, 1}}, "", true, "osmesa (llvmpipe; --renderer osmesa)"}};
   s.events = {{40, "saved"}};
   s.balance_mode = "kd";
   s.balance_modes = {"static", "kd"};
@@ -38,6 +39,7 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   EXPECT_EQ(j["tiles"][0]["width"], 512);
   EXPECT_EQ(j["pipeservers"][0]["index"], 2);
   EXPECT_EQ(j["pipeservers"][0]["lost"], true);
+  EXPECT_EQ(j["pipeservers"][0]["renderer"], "osmesa (llvmpipe; --renderer osmesa)");
   EXPECT_EQ(j["pipeservers"][0]["recent"][0]["ready_wait_ms"], 2.25);
   EXPECT_EQ(j["pipeservers"][0]["recent"][0]["sync_retries"], 1);
   EXPECT_EQ(j["events"][0]["text"], "saved");

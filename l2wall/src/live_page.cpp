@@ -54,6 +54,7 @@ void take_log_line(PagePipeserver& p, const PipeserverLogLine& line) {
     keep_last(p.recent, kRecentFrames);
   }
   if (line.kind == PipeserverLogLine::Kind::Done) p.back_channel = line.done;
+  if (line.kind == PipeserverLogLine::Kind::Renderer) p.renderer = line.renderer;
 }
 
 std::vector<PageTile> page_tiles(const TileLayout& layout) {

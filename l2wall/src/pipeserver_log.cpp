@@ -12,6 +12,9 @@ PipeserverLogLine parse_pipeserver_log_line(const std::string& line) {
   } else if (line.rfind("done ", 0) == 0) {
     l.kind = PipeserverLogLine::Kind::Done;
     l.done = line.substr(5);
+  } else if (line.rfind("renderer ", 0) == 0) {
+    l.kind = PipeserverLogLine::Kind::Renderer;
+    l.renderer = line.substr(9);
   }
   return l;
 }

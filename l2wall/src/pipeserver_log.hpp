@@ -1,6 +1,7 @@
-// A pipeserver's log (OUT/pipeserver-<i>.log, pipeserver --report): a line per frame ("frame K
-// render_ms R wait_ms W retries N ...") and, once it ends well, its back-channel totals ("done
-// ..."). Read whole for the report at the end, and as it grows for the control page.
+// A pipeserver's log (OUT/pipeserver-<i>.log, pipeserver --report): first the renderer it decided
+// on ("renderer egl (llvmpipe ...; --renderer egl)"), then a line per frame ("frame K render_ms R
+// wait_ms W retries N ...") and, once it ends well, its back-channel totals ("done ..."). Read
+// whole for the report at the end, and as it grows for the control page.
 #pragma once
 
 #include <cstdio>
@@ -10,12 +11,13 @@
 namespace l2 {
 
 struct PipeserverLogLine {
-  enum class Kind { Frame, Done, Other };
+  enum class Kind { Renderer, Frame, Done, Other };
   Kind kind = Kind::Other;
   int frame = 0;
   double render_ms = 0, wait_ms = 0;
   int retries = 0;
-  std::string done;  // Done: the totals after "done "
+  std::string done;      // Done: the totals after "done "
+  std::string renderer;  // Renderer: what follows "renderer "
 };
 
 PipeserverLogLine parse_pipeserver_log_line(const std::string& line);

@@ -51,6 +51,10 @@ std::vector<std::string> pipeserver_argv(const PipeserverLaunch& l, const LivePi
     argv.push_back("--link-codec");
     argv.push_back(l.link_codec);
   }
+  if (!l.renderer.empty()) {
+    argv.push_back("--renderer");
+    argv.push_back(l.renderer);
+  }
   argv.insert(argv.end(), l.extra_args.begin(), l.extra_args.end());
   return argv;
 }

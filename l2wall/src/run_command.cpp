@@ -20,6 +20,7 @@
 #include "image/picture_regions.hpp"
 #include "l2wall/live_run.hpp"
 #include "pipeserver/model_file.hpp"
+#include "pipeserver/renderer_choice.hpp"
 #include "pipeserver/scene_cli.hpp"
 #include "report_plot.hpp"
 #include "stop_signal.hpp"
@@ -165,6 +166,11 @@ void add_process_options(CLI::App& run, RunCommand& c) {
   RunOptions& o = c.o;
   run.add_option("--pipeserver-program", o.pipeserver_program, "the pipeserver executable")
       ->capture_default_str();
+  // Checked here as every pipeserver checks it, and passed on to each (on every machine of an
+  // MPI run).
+  run.add_option("--renderer", o.renderer, kRendererHelp)
+      ->check(renderer_choice_check, kRendererChoiceNames)
+      ->capture_default_str();
   run.add_option("--vizserver-program", o.vizserver_program,
                  "the compositing server executable of --path vizserver|both; l2wall starts "
                  "it as its own process, and a compositing server that dies ends the run like "
@@ -258,7 +264,6 @@ void add_fault_options(CLI::App& run, RunCommand& c) {
   run.add_option("--link-codec", o.link_codec, std::string(link_choice_help()))
       ->check([](const std::string& v) { return parse_link_choice(v).reason(); }, "CODEC")
       ->capture_default_str();
-  // The scene and camera options of pipeserver, passed on to every pipeserver as typed.
 }
 
 // Options that make no run together are usage errors too (exit 2), not a failed run.

@@ -25,6 +25,7 @@ PipeserverLaunch pipeserver_launch(const RunOptions& o) {
   l.ready_timeout_ms = o.ready_timeout_ms;
   l.dvi = false;  // unless a path links the pipeservers
   l.link_codec = o.link_codec;
+  l.renderer = o.renderer;
   return l;
 }
 

@@ -21,7 +21,8 @@ struct PipeserverFrame {
 };
 struct PipeserverLog {
   std::vector<PipeserverFrame> frames;
-  std::string done;  // the pipeserver's back-channel counts
+  std::string done;      // the pipeserver's back-channel counts
+  std::string renderer;  // what it renders with, and why
 };
 
 PipeserverLog read_pipeserver_log(const std::string& path, int frames) {
@@ -36,6 +37,8 @@ PipeserverLog read_pipeserver_log(const std::string& path, int frames) {
                                                           line.retries, true};
     } else if (line.kind == PipeserverLogLine::Kind::Done) {
       log.done = line.done;
+    } else if (line.kind == PipeserverLogLine::Kind::Renderer) {
+      log.renderer = line.renderer;
     }
   }
   return log;
@@ -121,6 +124,28 @@ std::string latency_line(const std::vector<FrameRecord>& records, const RunTotal
       max_latency, max_latency == 1 ? "" : "s", min_latency, max_latency);
 }
 
+// What the pipeservers render with: one line when they all decided alike, else a line each.
+std::string renderer_lines(const std::vector<PipeserverLog>& logs) {
+  if (logs.empty()) return {};
+  const auto said = [](const PipeserverLog& log) {
+    return log.renderer.empty() ? std::string("not said (it stopped before rendering)")
+                                : log.renderer;
+  };
+  const bool alike = std::all_of(logs.begin(), logs.end(), [&](const PipeserverLog& log) {
+    return log.renderer == logs.front().renderer;
+  });
+  if (alike && logs.front().renderer.empty())
+    return "renderer: not said (no pipeserver got as far as rendering)\n";
+  if (alike) {
+    return fmt::format("renderer: {}{}\n", logs.front().renderer,
+                       logs.size() > 1 ? ", on every pipeserver" : "");
+  }
+  std::string lines;
+  for (std::size_t i = 0; i < logs.size(); ++i)
+    lines += fmt::format("renderer pipeserver {}: {}\n", i, said(logs[i]));
+  return lines;
+}
+
 }  // namespace
 
 RunReportTexts run_report(const RunOptions& o, const Wall& wall,
@@ -158,6 +183,7 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
         writing_s);
   }
   summary += latency_line(records, totals);
+  summary += renderer_lines(logs);
   summary += totals.path_lines;
   RunTimes times = run_times(o, totals, logs, records);
   times.lost = totals.lost;

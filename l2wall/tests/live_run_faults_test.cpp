@@ -239,7 +239,7 @@ pid_t reporting_pipeserver(const WallRun& run, int pipeserver) {
   const std::string report = fmt::format("pipeserver-{}.log", pipeserver);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.processes_naming(report);
-    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= 3) return pids.front();
+    if (pids.size() == 1 && run.pipeserver_frames_logged(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(20ms);
   }
   return -1;

@@ -40,8 +40,7 @@ std::vector<LayoutMessage> layout_lines(const WallRun& run) {
 }
 
 int frames_logged(const WallRun& run, int pipeserver) {
-  return run.pipeserver_log_lines(
-      pipeserver);  // one line per frame published, nothing else once killed
+  return run.pipeserver_frames_logged(pipeserver);  // one a frame published, none once killed
 }
 
 // --balance strips and kd alike.

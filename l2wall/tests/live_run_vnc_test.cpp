@@ -194,9 +194,9 @@ TEST_F(VncRun, AServerGoneMidRunEndsTheRunNamingIt) {
   WallRun run("vnc-gone", {"--scene", "vnc", "--content", address, "--frames", "100000"});
   // Once frames reach the displays, the server goes.
   const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (run.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+  while (run.pipeserver_frames_logged(0) < 3 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(50ms);
-  ASSERT_GE(run.pipeserver_log_lines(0), 3) << run.output();
+  ASSERT_GE(run.pipeserver_frames_logged(0), 3) << run.output();
   vnc.reset();
   EXPECT_EQ(run.wait(60s).code, 1);
   EXPECT_NE(run.output().find("l2wall: vnc " + address + ": the server closed the connection"),
@@ -210,9 +210,9 @@ TEST_F(VncRun, ADesktopResizedMidRunEndsTheRunSayingSo) {
   Xvnc vnc;
   WallRun run("vnc-resized", {"--scene", "vnc", "--content", vnc.address, "--frames", "100000"});
   const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (run.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+  while (run.pipeserver_frames_logged(0) < 3 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(50ms);
-  ASSERT_GE(run.pipeserver_log_lines(0), 3) << run.output();
+  ASSERT_GE(run.pipeserver_frames_logged(0), 3) << run.output();
   ASSERT_TRUE(run_shell(fmt::format("DISPLAY={} xrandr -s 1024x768", vnc.server->display()), 30s)
                   .status.ok());
   EXPECT_EQ(run.wait(60s).code, 1);
@@ -341,9 +341,9 @@ TEST_F(VncRun, ADesktopWindowsErrorsNameTheWindow) {
   const std::string address = vnc->address;
   WallRun gone("vnc-window-gone", session("c.toml", address, ""));
   const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (gone.pipeserver_log_lines(0) < 3 && std::chrono::steady_clock::now() < deadline)
+  while (gone.pipeserver_frames_logged(0) < 3 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(50ms);
-  ASSERT_GE(gone.pipeserver_log_lines(0), 3) << gone.output();
+  ASSERT_GE(gone.pipeserver_frames_logged(0), 3) << gone.output();
   vnc.reset();
   EXPECT_EQ(gone.wait(60s).code, 1);
   EXPECT_NE(

@@ -63,7 +63,7 @@ inline RgbImage display_png(const fs::path& dir, int frame, int display,
 // Lines the pipeservers logged so far: one per frame they published.
 inline std::vector<int> pipeserver_lines(const WallRun& run, int pipeservers) {
   std::vector<int> lines;
-  for (int s = 0; s < pipeservers; ++s) lines.push_back(run.pipeserver_log_lines(s));
+  for (int s = 0; s < pipeservers; ++s) lines.push_back(run.pipeserver_frames_logged(s));
   return lines;
 }
 

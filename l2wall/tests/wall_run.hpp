@@ -148,11 +148,13 @@ class WallRun {
     return pids;
   }
   std::vector<pid_t> vizservers() const { return processes_naming("vizserver.log"); }
-  int pipeserver_log_lines(int pipeserver) const {
+  // The frames pipeserver `pipeserver` has logged ("frame K ..." lines: its log opens with the
+  // renderer it decided on).
+  int pipeserver_frames_logged(int pipeserver) const {
     std::ifstream in(out() / fmt::format("pipeserver-{}.log", pipeserver));
-    int lines = 0;
-    for (std::string l; std::getline(in, l);) ++lines;
-    return lines;
+    int frames = 0;
+    for (std::string l; std::getline(in, l);) frames += l.rfind("frame ", 0) == 0;
+    return frames;
   }
 
  private:
@@ -250,7 +252,7 @@ inline pid_t pipeserver_at(const WallRun& run, int pipeserver, int frames) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.processes_naming(fmt::format("pipeserver-{}.log", pipeserver));
-    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= frames) return pids.front();
+    if (pids.size() == 1 && run.pipeserver_frames_logged(pipeserver) >= frames) return pids.front();
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   return -1;
@@ -261,7 +263,7 @@ inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.pipeservers(pipeserver);
-    if (pids.size() == 1 && run.pipeserver_log_lines(pipeserver) >= 3) return pids.front();
+    if (pids.size() == 1 && run.pipeserver_frames_logged(pipeserver) >= 3) return pids.front();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return -1;

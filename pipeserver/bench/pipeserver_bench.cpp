@@ -16,6 +16,7 @@
 
 #include "command_line/parse.hpp"
 #include "dvi_link/frame_delta.hpp"
+#include "pipeserver/gl_context.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "tilelayout/planner.hpp"
@@ -83,6 +84,49 @@ void frame_delta_figures(const l2::TileLayout& layout, l2::Scene& scene, int fra
   }
 }
 
+// Render time per renderer, side by side (--renderer, gl_context.hpp): every pipeserver of the
+// wall renders the same frames with OSMesa and with EGL, a frame of one then the same frame of
+// the other (which goes first alternates), so that a machine busy with other work slows both
+// alike. Medians per pipeserver and the ratio EGL / OSMesa, OSMesa timed in the same run: about
+// 1 where EGL is llvmpipe too (Mesa's software device), below 1 by what a GPU gains.
+void renderer_figures(const l2::TileLayout& layout, l2::Scene& scene, int frames) {
+  const l2::RendererDecision osmesa = l2::use_renderer(l2::RendererChoice::OsMesa);
+  l2::RendererDecision egl;
+  try {
+    egl = l2::use_renderer(l2::RendererChoice::Egl);
+  } catch (const l2::RendererError& e) {
+    std::printf("render time per renderer: EGL cannot render here (%s); OSMesa alone\n", e.what());
+    return;
+  }
+  std::printf(
+      "render time per renderer (every pipeserver, the same frames alternately, medians of %d "
+      "frames after the first):\n  osmesa: %s\n  egl:    %s\n",
+      frames, osmesa.line().c_str(), egl.line().c_str());
+  double sum_osmesa = 0, sum_egl = 0;
+  for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
+    l2::Pipeserver by_osmesa(layout, s, l2::Renderer::OsMesa);
+    l2::Pipeserver by_egl(layout, s, l2::Renderer::Egl);
+    std::vector<double> o, e;
+    for (int k = 0; k <= frames; ++k) {
+      l2::Pipeserver& first = k % 2 == 0 ? by_osmesa : by_egl;
+      l2::Pipeserver& second = k % 2 == 0 ? by_egl : by_osmesa;
+      first.render_frame(k, scene);
+      second.render_frame(k, scene);
+      if (k == 0) continue;  // contexts made and llvmpipe's shaders compiled: not a frame's cost
+      o.push_back(by_osmesa.last_times().render_ms);
+      e.push_back(by_egl.last_times().render_ms);
+    }
+    std::printf("  pipeserver %d: osmesa %.2f ms, egl %.2f ms: egl / osmesa %.2f\n", s, median(o),
+                median(e), median(e) / median(o));
+    sum_osmesa += median(o);
+    sum_egl += median(e);
+  }
+  std::printf(
+      "  all pipeservers (sum of medians): osmesa %.2f ms, egl %.2f ms: egl / osmesa %.2f\n",
+      sum_osmesa, sum_egl, sum_egl / sum_osmesa);
+  l2::use_renderer(l2::RendererChoice::OsMesa);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -91,8 +135,9 @@ int main(int argc, char** argv) {
       "prints, per pipeserver, the render time, the scan-out time (strip headers drawn in) "
       "against\n"
       "a memcpy of the framebuffer measured in the same run, and the share of the frame time the\n"
-      "headers and scan-out take (target < 2%). Exit status 0 when the worst share is under 2%,\n"
-      "1 when not, 2 on a usage error."};
+      "headers and scan-out take (target < 2%); then the render time per renderer, OSMesa and\n"
+      "EGL side by side (--renderers: that alone). Exit status 0 when the worst share is under\n"
+      "2% (or with --renderers), 1 when not, 2 on a usage error."};
   std::string scene_name = "mesh";
   int frames = 20;
   app.add_option("scene", scene_name, "scene to render")
@@ -101,6 +146,10 @@ int main(int argc, char** argv) {
   app.add_option("frames", frames, "frames per pipeserver; figures are medians")
       ->check(CLI::Range(3, 100000))
       ->capture_default_str();
+  bool renderers_only = false;
+  app.add_flag("--renderers", renderers_only,
+               "only the render time per renderer: OSMesa and EGL side by side, the ratio EGL / "
+               "OSMesa (scripts/renderer-bench.sh runs it three times)");
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
   const l2::TileLayout layout = l2::plan_layout(l2::default_wall());
   auto scene = l2::make_scene(scene_name);
@@ -110,6 +159,10 @@ int main(int argc, char** argv) {
               layout.wall.framebuffer_height);
   std::printf("scene %s (%zu triangles), %d frames per pipeserver, medians:\n", scene_name.c_str(),
               scene->triangle_count(), frames);
+  if (renderers_only) {
+    renderer_figures(layout, *scene, frames);
+    return 0;
+  }
   const double period_ms = 1000.0 / layout.wall.refresh_hz;
   double worst_share = 0, worst_bare = 0;
   for (int s = 0; s < static_cast<int>(layout.pipeservers.size()); ++s) {
@@ -143,5 +196,6 @@ int main(int argc, char** argv) {
       period_ms, layout.wall.refresh_hz, worst_share, worst_share < 2.0 ? "PASS" : "FAIL",
       worst_bare);
   frame_delta_figures(layout, *scene, frames);
+  renderer_figures(layout, *scene, frames);
   return worst_share < 2.0 ? 0 : 1;
 }

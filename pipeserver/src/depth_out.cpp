@@ -1,10 +1,9 @@
 #include "pipeserver/depth_out.hpp"
 
-#include <GL/gl.h>
-
 #include <cstring>
 #include <vector>
 
+#include "pipeserver/gl_api.hpp"
 #include "pipeserver/scan_out.hpp"
 
 namespace l2 {
@@ -34,11 +33,11 @@ void copy_depth(const PackedTile& p, const TileInWindow& from, std::uint32_t far
   const Rect& c = p.tile.on_canvas;  // read upright, as rendered
   const int w = p.tile.on_display.w, h = p.tile.on_display.h;
   std::vector<std::uint32_t> depth(static_cast<std::size_t>(c.w) * static_cast<std::size_t>(c.h));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  gl().PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl().PixelStorei(GL_PACK_ROW_LENGTH, 0);
   // As 32-bit integers a 24-bit depth buffer reads back as its value in the top 24 bits.
-  glReadPixels(from.x, from.window.height() - from.y - c.h, c.w, c.h, GL_DEPTH_COMPONENT,
-               GL_UNSIGNED_INT, depth.data());
+  gl().ReadPixels(from.x, from.window.height() - from.y - c.h, c.w, c.h, GL_DEPTH_COMPONENT,
+                  GL_UNSIGNED_INT, depth.data());
   const PanelMap m = tile_map(p.tile);
   for (int r = 0; r < h; ++r) {
     // GL rows go bottom to top; the tile's top canvas row is its last GL row.

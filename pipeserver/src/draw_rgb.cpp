@@ -1,9 +1,9 @@
 #include "draw_rgb.hpp"
 
-#include <GL/gl.h>
-
 #include <cstring>
 #include <vector>
+
+#include "pipeserver/gl_api.hpp"
 
 namespace l2::detail {
 
@@ -15,9 +15,9 @@ void draw_rgb(const RgbImage& rgb, int gl_x, int gl_y) {
     std::memcpy(bottom_up.data() + static_cast<std::size_t>(rgb.height() - 1 - y) * rgb.stride(),
                 rgb.row(y).data(), rgb.stride());
   }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glWindowPos2i(gl_x, gl_y);
-  glDrawPixels(rgb.width(), rgb.height(), GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
+  gl().PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl().WindowPos2i(gl_x, gl_y);
+  gl().DrawPixels(rgb.width(), rgb.height(), GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
 }
 
 }  // namespace l2::detail

@@ -11,6 +11,7 @@
 
 #include "balance/desktop_messages.hpp"
 #include "dvi_link/dvi_link.hpp"
+#include "pipeserver/gl_context.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/viz_target.hpp"
 #include "scene_vnc.hpp"
@@ -205,6 +206,9 @@ int run_live_mode(const LiveOptions& o) {
   const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
   const TileLayout layout = plan_layout(wall);
   auto scene = make_scene(o.scene, o.scene_options);
+  Report report(o.report);
+  // Before the first context: the run's summary says what each pipeserver renders with.
+  report.line(fmt::format("renderer {}\n", use_renderer(o.renderer).line()));
   Pipeserver ps(layout, o.pipeserver);
   const PipeserverPlan& plan = ps.plan();
   LiveLinks links = o.links ? o.links(layout, plan) : LiveLinks{};
@@ -214,7 +218,6 @@ int run_live_mode(const LiveOptions& o) {
       links.tiles
           ? std::move(links.tiles)
           : connect_viz(o.viz, o.pipeserver, static_cast<int>(wall.displays.size()), o.link_codec);
-  Report report(o.report);
   const std::chrono::milliseconds timeout(o.ready_timeout_ms);
   // A vnc scene, or a session's vnc windows, show the desktop the coordinator sends on the
   // windows channel.

@@ -14,6 +14,7 @@
 #include "dvi_link/dvi_link.hpp"
 #include "dvi_link/frame_delta.hpp"
 #include "pipeserver/live_exit.hpp"
+#include "pipeserver/renderer_choice.hpp"
 #include "pipeserver/scene.hpp"
 #include "sync_backchannel/ready_channel.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -73,6 +74,9 @@ struct LiveOptions {
   int pipeserver = 0;
   std::string scene = "mesh";
   SceneOptions scene_options;
+  // What renders the OpenGL (--renderer): decided as the pipeserver starts, and said in the
+  // report's first line ("renderer egl (...)").
+  RendererChoice renderer = RendererChoice::Auto;
   int frames = 10;
   std::string link;         // shared-memory name this pipeserver creates ("/l2-..."); empty: none
   std::string backchannel;  // serial device (a pty slave) the READYs arrive on (with link)
@@ -81,7 +85,8 @@ struct LiveOptions {
   // Frames over MPI and tiles to the compositing server (frame_delta.hpp); none: auto (tiles
   // to --viz whole, as TILE messages).
   std::optional<LinkCodec> link_codec;
-  std::string report;  // file: one line per frame (render and wait times)
+  std::string
+      report;  // file: the renderer decided on, then one line per frame (render and wait times)
   int ready_timeout_ms = 200;
   int ready_retries = 3;
   // Load balancing (balance/): after each frame the tiles' render times go out as TIMES, and

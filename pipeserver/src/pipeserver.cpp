@@ -1,6 +1,5 @@
 #include "pipeserver/pipeserver.hpp"
 
-#include <GL/gl.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 
 #include "image/turn.hpp"
 #include "pipeserver/depth_out.hpp"
+#include "pipeserver/gl_api.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "pipeserver/tile_renderer.hpp"
 
@@ -49,9 +49,10 @@ glm::vec3 key_colour(std::uint32_t key) {
 
 }  // namespace
 
-Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver)
+Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver, Renderer renderer)
     : plan_(plan_of(layout, pipeserver)),
       canvas_(canvas_of(layout.wall)),
+      renderer_(renderer),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       depth_skip_(depth_skip_of(layout, pipeserver, kMeshBackground)),
       frame_(plan_.fb_width, plan_.fb_height) {
@@ -85,7 +86,8 @@ void Pipeserver::make_windows(const Wall& wall) {
     });
     const std::size_t context = static_cast<std::size_t>(at - contexts_.begin());
     if (at == contexts_.end())
-      contexts_.push_back(std::make_unique<GlContext>(d.canvas_width(), d.canvas_height()));
+      contexts_.push_back(
+          std::make_unique<GlContext>(d.canvas_width(), d.canvas_height(), renderer_));
     auto w = std::find_if(windows_.begin(), windows_.end(),
                           [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
     if (w == windows_.end()) {
@@ -142,6 +144,7 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
   const std::uint32_t far_as = plan_.layer == 0 ? kFarDepth - 1 : kFarDepth;
   std::unique_ptr<TileRenderer> renderer;
   std::size_t context = contexts_.size();
+  std::vector<Rect> regions;
   for (const Window& w : windows_) {
     auto t0 = Clock::now();
     if (w.context != context) {
@@ -158,9 +161,16 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
           t.on_canvas, w.on_canvas,
           t.compositing == Compositing::Key ? key_colour(t.key) : scene.clear_colour());
       // OSMesa has no timer queries: the tile's time is the CPU's until its pixels are done.
-      glFinish();
+      gl().Finish();
       times_.tile_ms[static_cast<std::size_t>(i)] = cpu_ms() - tile_start;
     }
+    // The window's tiles into its buffer: EGL's read back, OSMesa's there already.
+    regions.clear();
+    for (int i : w.tiles) {
+      const Rect& c = plan_.tiles[static_cast<std::size_t>(i)].tile.on_canvas;
+      regions.push_back({c.x - w.on_canvas.x, w.on_canvas.bottom() - c.bottom(), c.w, c.h});
+    }
+    contexts_[context]->finish(regions);
     times_.render_ms += ms_since(t0);
     t0 = Clock::now();
     for (int i : w.tiles) {
@@ -178,13 +188,13 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
 }
 
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {
-  GlContext gl(rect.w, rect.h);
+  GlContext context(rect.w, rect.h);
   scene.set_frame(frame);
   TileRenderer renderer(scene, canvas);
   renderer.draw_tile(rect, rect);
-  glFinish();
+  context.finish();
   RgbImage image(rect.w, rect.h);
-  scan_out(gl.rgba(), rect.w, rect.h, image.bytes());
+  scan_out(context.rgba(), rect.w, rect.h, image.bytes());
   return image;
 }
 

@@ -19,7 +19,9 @@
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "live_mode.hpp"
+#include "pipeserver/gl_context.hpp"
 #include "pipeserver/pipeserver.hpp"
+#include "pipeserver/renderer_choice.hpp"
 #include "pipeserver/scene_cli.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -43,6 +45,7 @@ struct Options {
   std::string out;
   std::string reference;
   l2::SceneOptions scene_options;
+  l2::RendererChoice renderer = l2::RendererChoice::Auto;
 };
 
 void print_times(int pipeserver, int frame, const l2::FrameTimes& t) {
@@ -65,12 +68,21 @@ int run(const Options& o) {
   // The folders before rendering: a folder that could not be made failed after the work.
   if (!o.out.empty()) l2::make_folders(o.out, "--out");
   if (!o.reference.empty()) l2::make_folders(o.reference, "--reference");
+  // Decided before rendering (an EGL that cannot render is one line), said once something has
+  // rendered (a file refused while rendering is one line too).
+  const std::string renderer = l2::use_renderer(o.renderer).line();
+  bool said = false;
+  const auto say_renderer = [&] {
+    if (!said) std::printf("pipeserver %d: renderer %s\n", o.pipeserver, renderer.c_str());
+    said = true;
+  };
 
   if (!o.out.empty()) {
     l2::Pipeserver ps(layout, o.pipeserver);
     const l2::RgbImage* frame = nullptr;
     for (int k = o.frame; k < o.frame + o.count; ++k) {
       frame = &ps.render_frame(k, *scene);
+      say_renderer();
       print_times(o.pipeserver, k, ps.last_times());
     }
     // Named as `tilelayout --scanout` names its frames, so that both route the same way.
@@ -84,6 +96,7 @@ int run(const Options& o) {
     for (const auto& d : wall.displays) {
       const auto path = std::filesystem::path(o.reference) / fmt::format("display-{}.png", d.id);
       l2::write_png(path, l2::render_reference(layout, d.id, *scene, last));
+      say_renderer();
       std::printf("wrote %s (reference, display %d, frame %d)\n", path.c_str(), d.id, last);
     }
   }
@@ -154,10 +167,10 @@ namespace l2 {
 int run_pipeserver(int argc, char** argv) {
   CLI::App app{
       "pipeserver: one render node of a Lightning-2 wall. Renders the tiles the wall assigns to\n"
-      "the pipeserver numbered --pipeserver with OSMesa (sort-first: whole-wall camera,\n"
-      "per-tile projection), draws the strip headers of spec §4 with the parity of --frame, and\n"
-      "writes the scanned-out 24-bit RGB frame to --out DIR. --reference writes what each\n"
-      "display should show for that frame."};
+      "the pipeserver numbered --pipeserver with OpenGL, through EGL or OSMesa (--renderer;\n"
+      "sort-first: whole-wall camera, per-tile projection), draws the strip headers of spec §4\n"
+      "with the parity of --frame, and writes the scanned-out 24-bit RGB frame to --out DIR.\n"
+      "--reference writes what each display should show for that frame."};
   Options o;
   l2::add_wall_option(app, o.wall, "default: the built-in default wall (walls/kd-2x2.toml)");
   app.add_option("--pipeserver", o.pipeserver, "pipeserver number, from 0")
@@ -177,6 +190,10 @@ int run_pipeserver(int argc, char** argv) {
                  "folder for the reference render of each display (display-<id>.png)")
       ->type_name("DIR");
   const std::vector<l2::SceneOption> scene_options = l2::add_scene_options(app, o.scene_options);
+  std::string renderer = "auto";
+  app.add_option("--renderer", renderer, l2::kRendererHelp)
+      ->check(l2::renderer_choice_check, l2::kRendererChoiceNames)
+      ->capture_default_str();
   // Live mode: the run (l2wall run) starts one of these per pipeserver.
   bool live = false;
   l2::LiveOptions live_options;
@@ -255,14 +272,21 @@ int run_pipeserver(int argc, char** argv) {
   app.callback([&] { l2::check_scene_options(scene_options, o.scene); });
   bool print_gl_info = false;
   app.add_flag("--gl-info", print_gl_info,
-               "print the OpenGL version and renderer OSMesa renders with (rendered pixels depend "
-               "on them: golden images record them) and exit");
+               "print the OpenGL version and renderer --renderer decides on here (rendered "
+               "pixels depend on them: golden images record them), and why, and exit");
   if (const std::optional<int> status = l2::parse_command_line(app, argc, argv)) return *status;
+  o.renderer = l2::parse_renderer_choice(renderer).value();
   if (print_gl_info) {
-    const l2::GlInfo gl = l2::gl_info();
-    std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\n", gl.version.c_str(),
-                gl.renderer.c_str(), gl.mesa_version().c_str());
-    return 0;
+    try {
+      const l2::RendererDecision d = l2::use_renderer(o.renderer);
+      const l2::GlInfo gl{d.gl_version, d.gl_renderer};
+      std::printf("gl_version: %s\ngl_renderer: %s\nmesa: %s\nrenderer: %s\n", gl.version.c_str(),
+                  gl.renderer.c_str(), gl.mesa_version().c_str(), d.line().c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pipeserver: %s\n", e.what());
+      return 1;
+    }
   }
   if (live) {
     const bool dvi = !live_options.link.empty() && !live_options.backchannel.empty();
@@ -276,6 +300,7 @@ int run_pipeserver(int argc, char** argv) {
     live_options.pipeserver = o.pipeserver;
     live_options.scene = o.scene;
     live_options.scene_options = o.scene_options;
+    live_options.renderer = o.renderer;
     if (dvi)
       live_options.links = l2::shared_memory_links(live_options.link, live_options.backchannel);
     if (control_fd >= 0) {

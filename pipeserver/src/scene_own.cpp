@@ -1,6 +1,4 @@
 // A program's own scene (renderer.hpp): no geometry of ours; each tile is the program's drawing.
-#include <GL/gl.h>
-
 #include "pipeserver/renderer.hpp"
 
 namespace l2 {
@@ -13,17 +11,17 @@ class OwnScene : public Scene {
   const char* name() const override { return "own"; }
   // The drawing may change matrices and state as it likes: the next tile starts as this one did.
   void draw_tile(const TileView& view) const override {
-    glPushAttrib(GL_ALL_ATTRIB_BITS);
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
+    gl().PushAttrib(GL_ALL_ATTRIB_BITS);
+    gl().MatrixMode(GL_PROJECTION);
+    gl().PushMatrix();
+    gl().MatrixMode(GL_MODELVIEW);
+    gl().PushMatrix();
     draw_(view);
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPopMatrix();
-    glPopAttrib();
+    gl().MatrixMode(GL_PROJECTION);
+    gl().PopMatrix();
+    gl().MatrixMode(GL_MODELVIEW);
+    gl().PopMatrix();
+    gl().PopAttrib();
   }
 
  protected:

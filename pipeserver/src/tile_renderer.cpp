@@ -1,63 +1,62 @@
 #include "pipeserver/tile_renderer.hpp"
 
-#include <GL/gl.h>
-
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 
 #include "draw_rgb.hpp"
+#include "pipeserver/gl_api.hpp"
 
 namespace l2 {
 
 namespace {
 
 void clear_framebuffer() {
-  glDisable(GL_SCISSOR_TEST);
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl().Disable(GL_SCISSOR_TEST);
+  gl().ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  gl().ClearDepth(1.0);
+  gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 // Set for every tile, not once a frame: a session's windows draw scenes lit and unlit into one
 // framebuffer, each tile of each window in its own scene's state.
 void setup_state(bool lit) {
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_DITHER);  // dithering depends on window position, so it would differ per tile
-  glShadeModel(GL_SMOOTH);
+  gl().Enable(GL_DEPTH_TEST);
+  gl().DepthFunc(GL_LESS);
+  gl().Disable(GL_CULL_FACE);
+  gl().Disable(GL_DITHER);  // dithering depends on window position, so it would differ per tile
+  gl().ShadeModel(GL_SMOOTH);
   // Textures only while a textured batch draws (draw_batch): a picture tile's glDrawPixels
   // would be textured too.
-  glDisable(GL_TEXTURE_2D);
-  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);  // texel x lit colour
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
+  gl().Disable(GL_TEXTURE_2D);
+  gl().DisableClientState(GL_TEXTURE_COORD_ARRAY);
+  gl().TexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);  // texel x lit colour
+  gl().EnableClientState(GL_VERTEX_ARRAY);
+  gl().EnableClientState(GL_COLOR_ARRAY);
   if (!lit) {
-    glDisable(GL_LIGHTING);
-    glDisableClientState(GL_NORMAL_ARRAY);
+    gl().Disable(GL_LIGHTING);
+    gl().DisableClientState(GL_NORMAL_ARRAY);
     return;
   }
-  glEnableClientState(GL_NORMAL_ARRAY);
-  glEnable(GL_LIGHTING);
-  glEnable(GL_LIGHT0);
-  glEnable(GL_NORMALIZE);
-  glEnable(GL_COLOR_MATERIAL);
-  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  gl().EnableClientState(GL_NORMAL_ARRAY);
+  gl().Enable(GL_LIGHTING);
+  gl().Enable(GL_LIGHT0);
+  gl().Enable(GL_NORMALIZE);
+  gl().Enable(GL_COLOR_MATERIAL);
+  gl().ColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
   // A directional key light from upper left, fixed in eye space (so set with identity modelview).
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
+  gl().MatrixMode(GL_MODELVIEW);
+  gl().LoadIdentity();
   const GLfloat direction[] = {-0.4f, 0.6f, 1.0f, 0.0f};
   const GLfloat ambient[] = {0.25f, 0.25f, 0.25f, 1.0f};
   const GLfloat diffuse[] = {0.85f, 0.85f, 0.85f, 1.0f};
   const GLfloat none[] = {0.0f, 0.0f, 0.0f, 1.0f};
-  glLightfv(GL_LIGHT0, GL_POSITION, direction);
-  glLightfv(GL_LIGHT0, GL_AMBIENT, ambient);
-  glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
-  glLightfv(GL_LIGHT0, GL_SPECULAR, none);
-  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
-  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+  gl().Lightfv(GL_LIGHT0, GL_POSITION, direction);
+  gl().Lightfv(GL_LIGHT0, GL_AMBIENT, ambient);
+  gl().Lightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
+  gl().Lightfv(GL_LIGHT0, GL_SPECULAR, none);
+  gl().LightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
+  gl().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
 }
 
 // Binds a model's texture, giving it to the current context first if it has not got it: its id
@@ -65,17 +64,17 @@ void setup_state(bool lit) {
 // picture scene samples its picture: every pixel is one texel times the lit colour. A tile,
 // drawn as its display's window draws it, takes the same texel as the display's reference.
 void bind(const ModelTexture& texture) {
-  const bool given = glIsTexture(texture.id) == GL_TRUE;
-  glBindTexture(GL_TEXTURE_2D, texture.id);
+  const bool given = gl().IsTexture(texture.id) == GL_TRUE;
+  gl().BindTexture(GL_TEXTURE_2D, texture.id);
   if (given) return;
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl().TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl().TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl().TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  gl().TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  gl().PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // Row 0 of the picture, its top, is GL's t = 0: TriangleMesh::uvs count v from the top.
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, texture.image.width(), texture.image.height(), 0, GL_RGB,
-               GL_UNSIGNED_BYTE, texture.image.data());
+  gl().TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, texture.image.width(), texture.image.height(), 0,
+                  GL_RGB, GL_UNSIGNED_BYTE, texture.image.data());
 }
 
 // Triangles of a triangle batch, strips of a strip batch: the units a share is cut in.
@@ -160,21 +159,21 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
 
 void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear) {
   setup_state(scene_.lit());
-  glViewport(0, 0, window.w, window.h);
+  gl().Viewport(0, 0, window.w, window.h);
   // GL rows count from the bottom of the window.
   const int gl_x = on_canvas.x - window.x, gl_y = window.bottom() - on_canvas.bottom();
-  glScissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
-  glEnable(GL_SCISSOR_TEST);
+  gl().Scissor(gl_x, gl_y, on_canvas.w, on_canvas.h);
+  gl().Enable(GL_SCISSOR_TEST);
   // Only the tile is cleared: the window may hold tiles of another display from before, and
   // in a framebuffer the rest must stay black (the mesh would read colour there as headers).
-  glClearColor(clear.r, clear.g, clear.b, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl().ClearColor(clear.r, clear.g, clear.b, 1.0f);
+  gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (scene_.fill_tile(canvas_, on_canvas, pixels_)) detail::draw_rgb(pixels_, gl_x, gl_y);
-  glMatrixMode(GL_PROJECTION);
+  gl().MatrixMode(GL_PROJECTION);
   const glm::dmat4 to_window = tile_matrix(canvas_, window);
-  glLoadMatrixd(glm::value_ptr(to_window * glm::dmat4(camera_.projection)));
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(glm::value_ptr(camera_.view * scene_.model()));
+  gl().LoadMatrixd(glm::value_ptr(to_window * glm::dmat4(camera_.projection)));
+  gl().MatrixMode(GL_MODELVIEW);
+  gl().LoadMatrixf(glm::value_ptr(camera_.view * scene_.model()));
   scene_.draw_tile({canvas_, on_canvas, scene_.frame(), to_window, camera_});
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
@@ -205,29 +204,29 @@ void TileRenderer::draw_windows(const Rect& on_canvas, const Rect& window) {
 void TileRenderer::draw_batch(const Batch& b, std::size_t first, std::size_t count) const {
   if (b.texture) {
     bind(*b.texture);
-    glEnable(GL_TEXTURE_2D);
-    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-    glTexCoordPointer(2, GL_FLOAT, 0, b.uvs.data());
+    gl().Enable(GL_TEXTURE_2D);
+    gl().EnableClientState(GL_TEXTURE_COORD_ARRAY);
+    gl().TexCoordPointer(2, GL_FLOAT, 0, b.uvs.data());
   }
   draw_primitives(b, first, count);
   if (b.texture) {
-    glDisable(GL_TEXTURE_2D);
-    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    gl().Disable(GL_TEXTURE_2D);
+    gl().DisableClientState(GL_TEXTURE_COORD_ARRAY);
   }
 }
 
 void TileRenderer::draw_primitives(const Batch& b, std::size_t first, std::size_t count) const {
-  glVertexPointer(3, GL_FLOAT, 0, b.positions.data());
-  glColorPointer(3, GL_FLOAT, 0, b.colours.data());
-  if (scene_.lit()) glNormalPointer(GL_FLOAT, 0, b.normals.data());
+  gl().VertexPointer(3, GL_FLOAT, 0, b.positions.data());
+  gl().ColorPointer(3, GL_FLOAT, 0, b.colours.data());
+  if (scene_.lit()) gl().NormalPointer(GL_FLOAT, 0, b.normals.data());
   if (b.primitive == Primitive::TriangleStrips) {
-    glMultiDrawArrays(GL_TRIANGLE_STRIP, b.strip_first.data() + first, b.strip_count.data() + first,
-                      static_cast<GLsizei>(count));
+    gl().MultiDrawArrays(GL_TRIANGLE_STRIP, b.strip_first.data() + first,
+                         b.strip_count.data() + first, static_cast<GLsizei>(count));
   } else if (b.indices.empty()) {
-    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first * 3), static_cast<GLsizei>(count * 3));
+    gl().DrawArrays(GL_TRIANGLES, static_cast<GLint>(first * 3), static_cast<GLsizei>(count * 3));
   } else {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
-                   b.indices.data() + first * 3);
+    gl().DrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
+                      b.indices.data() + first * 3);
   }
 }
 

@@ -1,6 +1,5 @@
 // Sort-first bucketing: footprints, and on real renders, a batch outside a tile is not drawn
 // into it.
-#include <GL/gl.h>
 #include <gtest/gtest.h>
 
 #include "image/rgb_image.hpp"
@@ -57,12 +56,12 @@ struct TileResult {
 TileResult render_centre_tile(const Scene& scene) {
   const Canvas canvas{120, 80};
   const Rect tile{40, 20, 40, 40};  // the middle of the canvas, where the triangle is
-  GlContext gl(tile.w, tile.h);
+  GlContext context(tile.w, tile.h);
   TileRenderer r(scene, canvas);
   r.draw_tile(tile, tile);
-  glFinish();
+  context.finish();
   RgbImage img(tile.w, tile.h);
-  scan_out(gl.rgba(), tile.w, tile.h, img.bytes());
+  scan_out(context.rgba(), tile.w, tile.h, img.bytes());
   TileResult out;
   out.stats = r.stats();
   for (int y = 0; y < img.height(); ++y)

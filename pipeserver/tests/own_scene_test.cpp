@@ -1,7 +1,6 @@
 // A program's own drawing (renderer.hpp) on a small wall: every display reassembles to its
 // reference render, also when the drawing leaves the matrices changed (each tile starts as the
 // first did), and the drawing is given the frame and each tile's rectangle.
-#include <GL/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,13 +15,13 @@ namespace {
 
 // A large orange triangle turned by the frame number, the modelview left turned on return.
 void careless_triangle(const TileView& view) {
-  glRotatef(20.0f * static_cast<float>(view.frame) + 10.0f, 0, 0, 1);
-  glBegin(GL_TRIANGLES);
-  glColor3f(1.0f, 0.5f, 0.0f);
-  glVertex3f(-0.9f, -0.7f, 0.0f);
-  glVertex3f(0.9f, -0.7f, 0.0f);
-  glVertex3f(0.0f, 0.9f, 0.0f);
-  glEnd();
+  gl().Rotatef(20.0f * static_cast<float>(view.frame) + 10.0f, 0, 0, 1);
+  gl().Begin(GL_TRIANGLES);
+  gl().Color3f(1.0f, 0.5f, 0.0f);
+  gl().Vertex3f(-0.9f, -0.7f, 0.0f);
+  gl().Vertex3f(0.9f, -0.7f, 0.0f);
+  gl().Vertex3f(0.0f, 0.9f, 0.0f);
+  gl().End();
 }
 
 TEST(OwnScene, ReassemblesToTheReferenceWhateverTheDrawingLeavesBehind) {

@@ -3,8 +3,7 @@
 // for tiles at awkward offsets and sizes; drawn at another place (its own window), it need not.
 #include <gtest/gtest.h>
 
-#include <GL/gl.h>
-
+#include "pipeserver/gl_context.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/scan_out.hpp"
 #include "pipeserver/tile_renderer.hpp"
@@ -23,13 +22,13 @@ RgbImage crop(const RgbImage& img, const Rect& r) {
 // Canvas rectangle `r` drawn as the window of the whole canvas draws it, the rest black.
 RgbImage tile_in_window(const Canvas& canvas, const Rect& r, Scene& scene, int frame) {
   const Rect window{0, 0, canvas.width, canvas.height};
-  GlContext gl(window.w, window.h);
+  GlContext context(window.w, window.h);
   scene.set_frame(frame);
   TileRenderer renderer(scene, canvas);
   renderer.draw_tile(r, window);
-  glFinish();
+  context.finish();
   RgbImage image(window.w, window.h);
-  scan_out(gl.rgba(), window.w, window.h, image.bytes());
+  scan_out(context.rgba(), window.w, window.h, image.bytes());
   return crop(image, r);
 }
 

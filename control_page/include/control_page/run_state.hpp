@@ -45,6 +45,7 @@ struct PagePipeserver {
   std::vector<PageFrameTimes> recent;  // oldest first, the last few dozen frames
   std::string back_channel;            // its totals once it ended (the log's "done" line)
   bool lost = false;                   // ended and survived (--survive-host-loss)
+  std::string renderer;                // what it renders with, and why (the log's first line)
 };
 
 struct PageEvent {

@@ -73,6 +73,7 @@ struct PipeserverLaunch {
   bool dvi = true;          // DVI link and back-channel
   std::string viz_address;  // HOST:PORT of the compositing server; empty: none
   std::string link_codec;   // --link-codec of every pipeserver; empty: the pipeserver's own
+  std::string renderer;     // --renderer of every pipeserver; empty: the pipeserver's own (auto)
   std::vector<std::string> extra_args;  // appended to every pipeserver's arguments
   std::vector<std::string> env;         // "NAME=value" added to every pipeserver's environment
   bool control = false;  // a control channel per pipeserver (--control-fd): balancing

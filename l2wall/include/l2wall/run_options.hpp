@@ -40,6 +40,7 @@ struct RunOptions {
   bool compare = false;                // both: every display identical byte for byte on both paths
   int threads = 1;                     // emulator routing threads
   std::string link_codec = "auto";     // frames to the columns, tiles to the server (frame_delta)
+  std::string renderer = "auto";       // every pipeserver's --renderer (renderer_choice.hpp)
   int start_timeout_ms = 60000;        // until every link carries its first frame
   int stall_timeout_ms = 5000;         // no display swap for this long: a pipeserver hangs
   int ready_timeout_ms = 1000;         // passed to the pipeservers (first frames can be slow)

@@ -104,7 +104,7 @@ fault() {
   local run=$!
   # Until the displays have swapped a few frames (the reports grow a line per frame).
   for _ in $(seq 600); do
-    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | grep -c '^frame ') -ge 10 ]] && break
     sleep 0.05
   done
   local pid pids
@@ -180,7 +180,7 @@ coordinator_killed() {
     --ready-timeout 3000 --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
   local run=$!
   for _ in $(seq 600); do
-    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | grep -c '^frame ') -ge 10 ]] && break
     sleep 0.05
   done
   local pid pids

@@ -59,7 +59,7 @@ pid_t joined_pipeserver(const WallRun& run, int pipeserver, int frames) {
   const auto deadline = std::chrono::steady_clock::now() + 60s;
   while (std::chrono::steady_clock::now() < deadline) {
     const auto pids = run.processes_naming(log.filename().string());
-    if (pids.size() == 1 && fs::exists(log) && run.pipeserver_log_lines(pipeserver) >= frames)
+    if (pids.size() == 1 && fs::exists(log) && run.pipeserver_frames_logged(pipeserver) >= frames)
       return pids.front();
     std::this_thread::sleep_for(2ms);
   }

@@ -73,7 +73,7 @@ start_run() {
     --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
   run=$!
   for _ in $(seq 1200); do
-    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | wc -l) -ge 10 ]] && break
+    [[ $(cat "$dir"/pipeserver-*.log 2>/dev/null | grep -c '^frame ') -ge 10 ]] && break
     sleep 0.05
   done
 }
@@ -138,7 +138,7 @@ survived() {
     --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
   run=$!
   for _ in $(seq 1200); do
-    [[ $(cat "$dir"/pipeserver-2.log 2>/dev/null | wc -l) -ge 5 ]] && break
+    [[ $(grep -c '^frame ' "$dir"/pipeserver-2.log 2>/dev/null) -ge 5 ]] && break
     sleep 0.05
   done
   pids=$(pgrep -f -- "$dir" || true)

@@ -22,7 +22,9 @@
 namespace l2 {
 
 struct FrameTimes {
-  double render_ms = 0;   // clear, draw every tile, glFinish (OSMesa's copy to our buffer)
+  // Clear, draw every tile, glFinish, and the pixels into the context's buffer (OSMesa copies
+  // them there as it finishes, EGL's are read back).
+  double render_ms = 0;
   double scanout_ms = 0;  // tiles RGBA bottom-up -> RGB top-down (and depth), headers, black
   BucketStats buckets;
   // Each tile's draw, glFinish included, by plan().tiles index, in CPU time of the process:
@@ -50,8 +52,9 @@ inline constexpr std::array<std::uint8_t, 3> kMeshBackground{0, 0, 0};
 
 class Pipeserver {
  public:
-  // Throws std::out_of_range when `pipeserver` is not a pipeserver of the layout.
-  Pipeserver(const TileLayout& layout, int pipeserver);
+  // Throws std::out_of_range when `pipeserver` is not a pipeserver of the layout. Its GL
+  // contexts render with `renderer` (gl_context.hpp; by default the process's, --renderer's).
+  Pipeserver(const TileLayout& layout, int pipeserver, Renderer renderer = process_renderer());
 
   // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
   // stays valid until the next call, and the caller may mark it (a frame number stamped in)
@@ -79,6 +82,7 @@ class Pipeserver {
 
   const PipeserverPlan& plan() const { return plan_; }
   const FrameTimes& last_times() const { return times_; }
+  Renderer renderer() const { return renderer_; }
 
  private:
   // The tiles of one display, rendered in a window of the display's size.
@@ -92,6 +96,7 @@ class Pipeserver {
 
   PipeserverPlan plan_;
   Canvas canvas_;
+  Renderer renderer_;
   std::vector<std::unique_ptr<GlContext>> contexts_;  // one per display size
   std::vector<Window> windows_;                       // by context, then display
   std::array<FrameHeaders, 2> headers_;               // encoded once, by frame parity

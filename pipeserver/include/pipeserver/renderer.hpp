@@ -1,5 +1,8 @@
 // Your own pipeserver: a program whose main() calls run_renderer() with a function that draws
-// one tile with OpenGL (TileView in scene.hpp says what it is given). The library does the rest,
+// one tile with OpenGL (TileView in scene.hpp says what it is given), through l2::gl() — the
+// GL functions of the renderer the pipeserver decided on (--renderer: OSMesa or EGL, on a GPU
+// where there is one; gl_api.hpp). Plain gl* symbols are no renderer's: the library loads
+// libOSMesa by name, and EGL's functions are each context's own. The library does the rest,
 // as for `pipeserver` itself: the wall file, the packing of tiles into the framebuffer, the strip
 // headers with the frame's parity, the scan-out into the DVI link or to the compositing server,
 // READY on the back-channel, and pipeserver's whole command line, so that
@@ -10,6 +13,7 @@
 #include <functional>
 #include <memory>
 
+#include "pipeserver/gl_api.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2 {
