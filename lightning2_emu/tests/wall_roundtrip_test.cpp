@@ -56,8 +56,9 @@ TEST(WallRoundTrip, ExampleWallScanoutsRebuildTheTestPattern) {
   int walls = 0;
   for (const auto& entry : std::filesystem::directory_iterator(L2_WALLS_DIR)) {
     if (entry.path().extension() != ".toml") continue;
-    ++walls;
     const Wall wall = load_wall(entry.path());
+    if (wall.mesh_count > 1) continue;  // one mesh's routing here; tilelayout's tests do several
+    ++walls;
     const TileLayout layout = plan_layout(wall);
     std::vector<RgbImage> frames;
     const bool parity = walls % 2 == 1;  // both parities over the set of walls

@@ -16,8 +16,7 @@
 namespace l2 {
 namespace {
 
-constexpr int kMaxCanvasSide = 16384;  // as the wall file takes it
-constexpr int kMaxTiles = 4096;        // [tiling] tile_count
+constexpr int kMaxTiles = 4096;  // [tiling] tile_count
 
 // Comment text on one line and in plain ASCII, whatever the file's strings hold.
 std::string comment_text(const std::string& s) {

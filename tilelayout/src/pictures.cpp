@@ -10,6 +10,7 @@
 
 #include "image/label_text.hpp"
 #include "image/legend.hpp"
+#include "tilelayout/several_meshes.hpp"
 
 namespace l2 {
 namespace {
@@ -52,6 +53,12 @@ Rgb darker(Rgb c) {
 
 int wall_scale(const Wall& wall) {
   return std::max(1, (std::max(wall.canvas_width, wall.canvas_height) + 4095) / 4096);
+}
+
+// `r` on a canvas drawn at 1/`scale`.
+Rect shrunk(const Rect& r, int scale) {
+  const int x0 = r.x / scale, y0 = r.y / scale;
+  return Rect{x0, y0, (r.right() + scale - 1) / scale - x0, (r.bottom() + scale - 1) / scale - y0};
 }
 
 }  // namespace
@@ -139,11 +146,7 @@ RgbImage wall_picture(const TileLayout& layout, int layer) {
   // Large canvases are drawn smaller, by a whole factor, so the picture stays at most 4096
   // pixels on its longer side.
   const int scale = wall_scale(wall);
-  const auto shrink = [scale](const Rect& r) {
-    const int x0 = r.x / scale, y0 = r.y / scale;
-    return Rect{x0, y0, (r.right() + scale - 1) / scale - x0,
-                (r.bottom() + scale - 1) / scale - y0};
-  };
+  const auto shrink = [scale](const Rect& r) { return shrunk(r, scale); };
   RgbImage img((wall.canvas_width + scale - 1) / scale, (wall.canvas_height + scale - 1) / scale,
                kUnused);
   // A layer's tiles, and the overlay over every layer.
@@ -165,6 +168,30 @@ RgbImage wall_picture(const TileLayout& layout, int layer) {
   }
   for (const Display& d : wall.displays) outline(img, shrink(d.on_canvas()), {255, 255, 255}, 2);
   return img;
+}
+
+RgbImage meshes_page(const Wall& wall) {
+  const int scale = wall_scale(wall);
+  RgbImage img((wall.canvas_width + scale - 1) / scale, (wall.canvas_height + scale - 1) / scale,
+               kUnused);
+  for (const Display& d : wall.displays) {
+    const Rect r = shrunk(d.on_canvas(), scale);
+    img.fill_rect(r.x, r.y, r.w, r.h, palette_colour(d.mesh));
+    if (r.w > 8 && r.h > 8) outline(img, r, kOutline, 1);
+    label(img, r, fmt::format("M{} D{}", d.mesh, d.id), fmt::format("M{}", d.mesh));
+  }
+  std::vector<LegendEntry> legend;
+  for (const MeshPart& m : mesh_parts(wall)) {
+    legend.push_back({fmt::format("displays mesh {} drives ({} displays; pipeservers {}-{} feed "
+                                  "it)",
+                                  m.mesh, m.displays.size(), m.first_pipeserver,
+                                  m.first_pipeserver + m.pipeserver_count - 1),
+                      palette_colour(m.mesh)});
+  }
+  legend.push_back({"mullions: canvas no display shows", kUnused});
+  legend.push_back({"labels: M mesh, D display (its number in the wall)", {}, false});
+  if (scale > 1) legend.push_back({fmt::format("drawn at 1/{} size", scale), {}, false});
+  return with_legend(img, legend);
 }
 
 int wall_layers(const TileLayout& layout) {

@@ -115,6 +115,13 @@ std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int pipe
 
 TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical,
                 const std::vector<int>& gone = {}) {
+  if (wall.mesh_count > 1) {
+    throw LayoutError(where(wall, wall.meshes_line) +
+                      fmt::format("the wall's {} displays need {} meshes (a strip header "
+                                  "addresses {}); this drives one mesh: tilelayout --wall plans "
+                                  "every mesh and --verify checks them",
+                                  wall.displays.size(), wall.mesh_count, kMaxDisplays));
+  }
   TileLayout layout;
   layout.wall = wall;
   layout.logical_tiles = make_logical_tiles(wall);

@@ -9,7 +9,7 @@
 namespace l2 {
 namespace {
 
-constexpr int kMaxCanvas = 16384;         // canvas positions are not in headers; just sane
+constexpr int kMaxCanvas = kMaxCanvasSide;
 constexpr int kMaxSize = kMaxCoordinate;  // display sizes are: x, y, width have 12 bits
 
 // `rotation` and `flip` of a display, or of every display of a grid: the panel as mounted.
@@ -23,9 +23,51 @@ Orientation read_orientation(const TomlFields& f) {
   return o;
 }
 
+// Meshes given per display (`meshes` of a grid, `mesh` of a [[display]]) must be given for
+// every display or none, numbered 0.. without gaps, each of at most 64 displays: a strip
+// header addresses no more. `fail(i, why)` reports display i's.
+template <typename Fail>
+void check_given_meshes(const std::vector<Display>& displays, const Fail& fail) {
+  const auto given = [](const Display& d) { return d.mesh >= 0; };
+  const auto first_given = std::find_if(displays.begin(), displays.end(), given);
+  if (first_given == displays.end()) return;
+  const auto first_missing = std::find_if_not(displays.begin(), displays.end(), given);
+  if (first_missing != displays.end()) {
+    fail(static_cast<int>(first_missing - displays.begin()),
+         fmt::format("missing, but display {} has one: give every display a mesh or none (then "
+                     "the planner chooses)",
+                     first_given->id));
+  }
+  std::vector<int> count(kMaxMeshes, 0);
+  for (const Display& d : displays) ++count[static_cast<std::size_t>(d.mesh)];
+  for (std::size_t i = 0; i < displays.size(); ++i) {
+    const int m = displays[i].mesh;
+    if (m > 0 && count[static_cast<std::size_t>(m - 1)] == 0) {
+      fail(static_cast<int>(i), fmt::format("{}, but no display has mesh {}: meshes are "
+                                            "numbered 0.. without gaps",
+                                            m, m - 1));
+    }
+    if (count[static_cast<std::size_t>(m)] > kMaxDisplays) {
+      fail(static_cast<int>(i),
+           fmt::format("mesh {} has {} displays, more than the {} a strip header addresses", m,
+                       count[static_cast<std::size_t>(m)], kMaxDisplays));
+    }
+  }
+}
+
 // Optional per-display values of a grid, one per display in id order.
 void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
   const int n = static_cast<int>(displays.size());
+  if (const toml::array* meshes = f.array("meshes")) {
+    if (static_cast<int>(meshes->size()) != n) {
+      f.fail("meshes",
+             fmt::format("needs {} entries (one per display), got {}", n, meshes->size()));
+    }
+    for (int i = 0; i < n; ++i) {
+      displays[i].mesh = array_integer(*meshes->get(i), fmt::format("{}[{}]", f.field("meshes"), i),
+                                       f.source(), 0, kMaxMeshes - 1);
+    }
+  }
   if (const toml::array* groups = f.array("swap_groups")) {
     if (static_cast<int>(groups->size()) != n) {
       f.fail("swap_groups",
@@ -54,14 +96,15 @@ void read_grid_lists(const TomlFields& f, std::vector<Display>& displays) {
 }
 
 void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
-  const TomlFields f(table, "display_grid", top.source(),
-                     {"columns", "rows", "width", "height", "mullion_x", "mullion_y", "origin_x",
-                      "origin_y", "swap_groups", "monitors", "rotation", "flip", "colour"});
-  const int columns = f.required_integer("columns", 1, kMaxDisplays);
-  const int rows = f.required_integer("rows", 1, kMaxDisplays);
-  if (columns * rows > kMaxDisplays) {
-    f.fail("rows", fmt::format("{}x{} displays need ids up to {}, beyond the last id 63", columns,
-                               rows, columns * rows - 1));
+  const TomlFields f(
+      table, "display_grid", top.source(),
+      {"columns", "rows", "width", "height", "mullion_x", "mullion_y", "origin_x", "origin_y",
+       "swap_groups", "monitors", "meshes", "rotation", "flip", "colour"});
+  const int columns = f.required_integer("columns", 1, kMaxWallDisplays);
+  const int rows = f.required_integer("rows", 1, kMaxWallDisplays);
+  if (columns * rows > kMaxWallDisplays) {
+    f.fail("rows", fmt::format("{}x{} displays are more than the {} of {} meshes", columns, rows,
+                               kMaxWallDisplays, kMaxMeshes));
   }
   const int pw = f.required_integer("width", 1, kMaxSize);
   const int ph = f.required_integer("height", 1, kMaxSize);
@@ -80,6 +123,7 @@ void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
       d.width = pw;
       d.height = ph;
       d.orientation = orientation;
+      d.mesh = -1;  // the planner's choice unless `meshes` gives it
       d.canvas_x = ox + c * (w + mx);
       d.canvas_y = oy + r * (h + my);
       wall.displays.push_back(d);
@@ -87,6 +131,9 @@ void read_grid(const TomlFields& top, const toml::table& table, Wall& wall) {
   }
   read_grid_lists(f, wall.displays);
   read_grid_colour(f, wall.displays);
+  check_given_meshes(wall.displays, [&](int i, const std::string& why) {
+    f.fail("meshes", fmt::format("display {}: {}", i, why));
+  });
 }
 
 void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
@@ -97,11 +144,13 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     if (!node.is_table()) {
       top.source().fail(node, name, fmt::format("must be a table, got {}", type_name(node)));
     }
-    const TomlFields f(*node.as_table(), name, top.source(),
-                       {"id", "width", "height", "x", "y", "swap_group", "monitor", "rotation",
-                        "flip", "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma"});
+    const TomlFields f(
+        *node.as_table(), name, top.source(),
+        {"id", "mesh", "width", "height", "x", "y", "swap_group", "monitor", "rotation", "flip",
+         "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma"});
     Display d;
-    d.id = f.integer("id", 0, kMaxDisplays - 1, static_cast<int>(i));
+    d.id = f.integer("id", 0, kMaxWallDisplays - 1, static_cast<int>(i));
+    d.mesh = f.integer("mesh", 0, kMaxMeshes - 1, -1);
     d.width = f.required_integer("width", 1, kMaxSize);
     d.height = f.required_integer("height", 1, kMaxSize);
     d.canvas_x = f.required_integer("x", 0, kMaxCanvas - 1);
@@ -120,6 +169,9 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     wall.displays.push_back(d);
     lines.push_back(f.line());
   }
+  check_given_meshes(wall.displays, [&](int i, const std::string& why) {
+    top.source().fail(lines[static_cast<std::size_t>(i)], fmt::format("display[{}].mesh", i), why);
+  });
   // Display ids are array indices everywhere downstream (Wall::displays[i].id == i).
   std::sort(wall.displays.begin(), wall.displays.end(),
             [](const Display& a, const Display& b) { return a.id < b.id; });
@@ -165,17 +217,21 @@ void read_canvas(const TomlFields& top, Wall& wall) {
   wall.canvas_height = bottom;
   const toml::table* table = top.table("canvas");
   if (!table) {
-    if (right > kMaxCanvas || bottom > kMaxCanvas) {
+    if (right > kMaxCanvas || bottom > kMaxCanvas || 1LL * right * bottom > kMaxCanvasArea) {
       top.source().fail(0, "display",
-                        fmt::format("the displays span {}x{} pixels, more than the "
-                                    "{}x{} a canvas may have",
-                                    right, bottom, kMaxCanvas, kMaxCanvas));
+                        fmt::format("the displays span {}x{} pixels, more than a canvas may have "
+                                    "({} a side, {} in all)",
+                                    right, bottom, kMaxCanvas, kMaxCanvasArea));
     }
     return;
   }
   const TomlFields f(*table, "canvas", top.source(), {"width", "height"});
   wall.canvas_width = f.required_integer("width", 1, kMaxCanvas);
   wall.canvas_height = f.required_integer("height", 1, kMaxCanvas);
+  if (1LL * wall.canvas_width * wall.canvas_height > kMaxCanvasArea) {
+    f.fail("height", fmt::format("a {}x{} canvas is more than the {} pixels a canvas may have",
+                                 wall.canvas_width, wall.canvas_height, kMaxCanvasArea));
+  }
   for (const Display& d : wall.displays) {
     const Rect r = d.on_canvas();
     if (r.right() > wall.canvas_width || r.bottom() > wall.canvas_height) {

@@ -25,6 +25,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_compositing(top, wall);
   read_balance(top, wall);
   read_blend(top, wall);
+  read_meshes(top, wall);
   return wall;
 }
 

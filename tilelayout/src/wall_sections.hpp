@@ -26,6 +26,10 @@ void read_pipeservers_and_mesh(const TomlFields& top, Wall& wall);
 void read_compositing(const TomlFields& top, Wall& wall);
 // [balance] (optional): needs [depth] and [overlay] read, which it cannot be combined with.
 void read_balance(const TomlFields& top, Wall& wall);
+// The meshes (several_meshes.hpp): as the displays give them, else the planner's choice, and
+// each mesh's share of the pipeservers. Needs everything else read: a wall of several meshes
+// refuses what only a wall of one mesh can do yet.
+void read_meshes(const TomlFields& top, Wall& wall);
 // `blend` (optional, top level or a [blend] section): needs the displays, whose overlaps it
 // blends.
 void read_blend(const TomlFields& top, Wall& wall);

@@ -157,7 +157,8 @@ void read_pipeservers_and_mesh(const TomlFields& top, Wall& wall) {
   if (!table) top.source().fail(0, "pipeservers", "missing (required)");
   const TomlFields f(*table, "pipeservers", top.source(),
                      {"count", "framebuffer_width", "framebuffer_height", "assignment"});
-  wall.pipeserver_count = f.required_integer("count", 1, kMaxPipeservers);
+  // Up to a mesh's inputs for each mesh; read_meshes checks each mesh's share.
+  wall.pipeserver_count = f.required_integer("count", 1, kMaxWallPipeservers);
   // A framebuffer is one board input (spec §5): it may not exceed what a board accepts.
   const auto limit = [&](std::string_view key, int board_max, std::string_view mesh_key,
                          int fallback) {

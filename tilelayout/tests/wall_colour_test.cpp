@@ -166,8 +166,8 @@ TEST_F(WallColour, BadValuesAreOneLineNamingFileLineAndField) {
       error_of(with("lut = \"/dev/null\"")),
       f + ":11: display[1].lut: /dev/null: not a regular file: a colour table is a text file");
   EXPECT_EQ(error_of(with("colour = [{}]")),
-            f + ":11: display[1].colour: unknown key (valid here: id, width, height, x, y, "
-                "swap_group, monitor, rotation, flip, gain, offset, lut, warp, alpha, beta, "
+            f + ":11: display[1].colour: unknown key (valid here: id, mesh, width, height, x, "
+                "y, swap_group, monitor, rotation, flip, gain, offset, lut, warp, alpha, beta, "
                 "alpha_gamma)");
 }
 

@@ -200,7 +200,7 @@ TEST(WallFile, FieldRangesAndTypes) {
             "walls/t.toml:10: tiling.tile_width: must be 1..4095, got 0");
   // 300 pipeservers planned here, and every run refused them: the mesh has 256 inputs at most.
   EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 300\n")),
-            "walls/t.toml:13: pipeservers.count: must be 1..256, got 300");
+            "walls/t.toml:13: pipeservers.count: 300 is more than the 256 inputs of a mesh");
   EXPECT_EQ(error_of(replace(kBase, "width = 100", "width = 4096")),
             "walls/t.toml:5: display_grid.width: must be 1..4095, got 4096");
   EXPECT_EQ(error_of(replace(kBase, "tile_width = 50", "tile_width = \"50\"")),
@@ -216,15 +216,18 @@ TEST(WallFile, FieldRangesAndTypes) {
             "spiral, blocks, area-balanced, got \"random\"");
 }
 
-TEST(WallFile, DisplayIdsBeyond63) {
-  EXPECT_EQ(error_of(replace(replace(kBase, "columns = 2", "columns = 9"), "rows = 1", "rows = 8")),
-            "walls/t.toml:4: display_grid.rows: 9x8 displays need ids up to 71, beyond the last "
-            "id 63");
+// Ids beyond 63 are the displays of further meshes (several_meshes_test.cpp), up to the wall's
+// limit.
+TEST(WallFile, DisplayIdsBeyondTheWallsLimit) {
+  EXPECT_EQ(
+      error_of(replace(replace(kBase, "columns = 2", "columns = 33"), "rows = 1", "rows = 32")),
+      "walls/t.toml:4: display_grid.rows: 33x32 displays are more than the 1024 of 16 "
+      "meshes");
   const std::string list =
-      "[[display]]\nid = 64\nwidth = 50\nheight = 40\nx = 0\ny = 0\n"
+      "[[display]]\nid = 1024\nwidth = 50\nheight = 40\nx = 0\ny = 0\n"
       "[tiling]\nkind = \"grid\"\ntile_width = 10\ntile_height = 10\n[pipeservers]\ncount = 1\n";
-  EXPECT_EQ(error_of(list), "walls/t.toml:2: display[0].id: must be 0..63, got 64");
-  EXPECT_EQ(error_of(replace(list, "id = 64", "id = 1")),
+  EXPECT_EQ(error_of(list), "walls/t.toml:2: display[0].id: must be 0..1023, got 1024");
+  EXPECT_EQ(error_of(replace(list, "id = 1024", "id = 1")),
             "walls/t.toml:1: display: ids must run 0..0 without gaps; id 0 is missing");
 }
 

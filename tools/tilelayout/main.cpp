@@ -7,12 +7,11 @@
 
 #include "command_line/options.hpp"
 #include "command_line/parse.hpp"
-#include "image/folders.hpp"
-#include "image/png_io.hpp"
 #include "import_command.hpp"
+#include "mesh_commands.hpp"
 #include "network_needs.hpp"
+#include "plan_outputs.hpp"
 #include "tilelayout/fit.hpp"
-#include "tilelayout/pictures.hpp"
 #include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/survival.hpp"
@@ -21,34 +20,6 @@
 #include "verify_plan.hpp"
 
 namespace {
-
-void write_pictures(const l2::TileLayout& layout, const std::filesystem::path& dir) {
-  l2::make_folders(dir, "--png");
-  for (const l2::PipeserverPlan& s : layout.pipeservers) {
-    const auto path = dir / fmt::format("pipeserver-{}.png", s.pipeserver);
-    l2::write_png(path, l2::framebuffer_page(s));
-    std::cout << "wrote " << path.string() << "\n";
-  }
-  l2::write_png(dir / "wall.png", l2::wall_page(layout));
-  std::cout << "wrote " << (dir / "wall.png").string() << "\n";
-  // A depth wall's layers cover the same canvas: one picture each (wall.png is layer 0).
-  if (l2::wall_layers(layout) == 1) return;
-  for (int layer = 0; layer < l2::wall_layers(layout); ++layer) {
-    const auto path = dir / fmt::format("wall-layer-{}.png", layer);
-    l2::write_png(path, l2::wall_page(layout, layer));
-    std::cout << "wrote " << path.string() << "\n";
-  }
-}
-
-void write_scanout(const l2::TileLayout& layout, const std::filesystem::path& dir, bool parity,
-                   l2::PatternPlace place) {
-  l2::make_folders(dir, "--scanout");
-  for (const l2::PipeserverPlan& s : layout.pipeservers) {
-    const auto path = dir / fmt::format("scanout-{}.png", s.pipeserver);
-    l2::write_png(path, l2::test_frame(s, parity, place));
-    std::cout << "wrote " << path.string() << "\n";
-  }
-}
 
 int print_suggestions(const std::string& wall_path) {
   try {
@@ -75,6 +46,11 @@ int main(int argc, char** argv) {
       "pipeservers the wall survives (l2wall run --survive-host-loss: their tiles go to the "
       "others' framebuffers) and the framebuffer_height the next one needs.\n"
       "Without --wall it uses the built-in default wall (walls/kd-2x2.toml).\n"
+      "A wall of more than 64 displays is served by several meshes (a strip header addresses "
+      "64): each mesh is planned and printed under a line naming its displays and pipeservers, "
+      "and --png, --scanout and --verify write each mesh's files into DIR/mesh-<m>/ in the "
+      "mesh's own numbers (--png also DIR/meshes.png: which mesh drives which display); "
+      "--verify checks one mesh at a time, each report line after \"mesh <m>: \".\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
       "3 output files could not be written, 4 --verify found pixels out of place.\n"
       "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2 or "
@@ -201,6 +177,11 @@ int main(int argc, char** argv) {
   l2::TileLayout layout;
   try {
     const l2::Wall wall = wall_path.empty() ? l2::default_wall() : l2::load_wall(wall_path);
+    if (wall.mesh_count > 1) {
+      return l2::run_several_meshes(
+          wall, {png_dir, scanout_dir, verify_dir, parity == 1,
+                 canvas_pattern ? l2::PatternPlace::Canvas : l2::PatternPlace::Display});
+    }
     layout = l2::plan_layout(wall);
   } catch (const l2::LayoutError& e) {
     std::cerr << "tilelayout: " << e.what() << "\n";

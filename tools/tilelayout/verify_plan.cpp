@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <sstream>
+#include <string>
 
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
@@ -11,7 +13,8 @@
 
 namespace l2 {
 
-int verify_plan(const TileLayout& layout, const std::filesystem::path& dir, bool parity) {
+int verify_plan(const TileLayout& layout, const std::filesystem::path& dir, bool parity,
+                std::string_view prefix) {
   make_folders(dir, "--verify");
   std::vector<RgbImage> frames;
   for (const PipeserverPlan& s : layout.pipeservers) {
@@ -24,9 +27,13 @@ int verify_plan(const TileLayout& layout, const std::filesystem::path& dir, bool
     write_png(dir / fmt::format("display-{}.png", layout.wall.displays[i].id), shown[i]);
     routed.push_back(&shown[i]);
   }
-  std::cout << fmt::format("wrote {}/scanout-<n>.png and display-<d>.png: scanned out, routed\n",
-                           dir.string());
-  return verify_and_report(layout, frames, routed, dir, std::cout) ? 0 : kExitRoutingWrong;
+  std::ostringstream report;
+  report << fmt::format("wrote {}/scanout-<n>.png and display-<d>.png: scanned out, routed\n",
+                        dir.string());
+  const bool right = verify_and_report(layout, frames, routed, dir, report);
+  std::istringstream lines(report.str());
+  for (std::string line; std::getline(lines, line);) std::cout << prefix << line << "\n";
+  return right ? 0 : kExitRoutingWrong;
 }
 
 }  // namespace l2

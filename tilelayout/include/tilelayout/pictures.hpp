@@ -25,6 +25,10 @@ RgbImage framebuffer_page(const PipeserverPlan& plan);
 RgbImage wall_picture(const TileLayout& layout, int layer = 0);
 // The same with a legend below (tilelayout --png).
 RgbImage wall_page(const TileLayout& layout, int layer = 0);
+// A wall of several meshes (several_meshes.hpp): the canvas drawn as wall_picture draws it,
+// each display in its mesh's colour, labelled "M<mesh> D<wall display>", with a legend of the
+// pipeservers that feed each mesh.
+RgbImage meshes_page(const Wall& wall);
 // Depth layers of the plan: 1 for a wall without [depth].
 int wall_layers(const TileLayout& layout);
 

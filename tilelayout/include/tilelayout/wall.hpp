@@ -15,6 +15,7 @@
 #include "image/level_map.hpp"
 #include "image/orientation.hpp"
 #include "image/warp_map.hpp"
+#include "strip_headers/strip_header.hpp"
 #include "tilelayout/colour_match.hpp"
 #include "tilelayout/geometry.hpp"
 
@@ -23,7 +24,10 @@ namespace l2 {
 // A display (panel or projector): its native raster, which strip headers address, and the canvas
 // rectangle it shows as it hangs. A panel turned by 90 or 270 covers its native size turned.
 struct Display {
-  int id = 0;                      // output display number carried in strip headers, 0..63
+  // Its number in the wall, 0..kMaxWallDisplays-1; in the wall of one mesh (mesh_wall) the
+  // number strip headers carry, 0..63.
+  int id = 0;
+  int mesh = 0;                    // the mesh that drives it (several_meshes.hpp)
   int width = 0, height = 0;       // native, as the panel reports it: its frames' size
   int canvas_x = 0, canvas_y = 0;  // top-left corner of its canvas rectangle
   int swap_group = 0;              // displays of one group swap together (spec §6)
@@ -70,6 +74,19 @@ struct Display {
 // Every pipeserver is a mesh input: 64 board rows of 4 inputs (spec §5; lightning2_emu's
 // Mesh::kMaxRows x Board::kInputs). More would plan and then be refused by every run.
 inline constexpr int kMaxPipeservers = 256;
+
+// A strip header addresses 64 displays (6 bits), so a larger wall is served by several meshes,
+// each with its own display ids 0..63 and its own pipeservers (several_meshes.hpp), as an
+// installation chains several Lightning-2 meshes. The limit is a sanity bound, not the spec's.
+inline constexpr int kMaxMeshes = 16;
+inline constexpr int kMaxWallDisplays = kMaxMeshes * kMaxDisplays;
+inline constexpr int kMaxWallPipeservers = kMaxMeshes * kMaxPipeservers;
+
+// Canvas positions are not in strip headers, so the canvas may be far larger than a display: a
+// room of four walls unrolled is over 130000 pixels wide. Sides bounded so that a canvas's area
+// fits an int.
+inline constexpr int kMaxCanvasSide = 1 << 18;
+inline constexpr long long kMaxCanvasArea = (1LL << 31) - 1;
 
 enum class TilingKind { Grid, List, KdSplit, Strips };
 enum class AssignmentPolicy { RoundRobin, ZigZag, Spiral, Blocks, AreaBalanced };
@@ -137,6 +154,11 @@ struct Wall {
   std::string name;
   int canvas_width = 0, canvas_height = 0;
   std::vector<Display> displays;  // displays[i].id == i
+  // The meshes (several_meshes.hpp): how many, and how many of the pipeservers feed each, in
+  // mesh order (mesh 0 takes the first ones). One mesh: {pipeserver_count}.
+  int mesh_count = 1;
+  std::vector<int> mesh_pipeservers;
+  int meshes_line = 0;  // where the file gives or implies them, for errors found later
   TilingSpec tiling;
   int pipeserver_count = 1;
   int framebuffer_width = 1280, framebuffer_height = 1024;
