@@ -1,0 +1,49 @@
+// The example walls in walls/ with the built-in scenes, as the parameters of the tests that
+// sweep them (ExampleWall in example_walls_test.cpp, RenderersOnExampleWall in
+// renderers_test.cpp): one test per wall and scene, so that ctest spreads them over the cores,
+// each named "<wall>_<scene>".
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "pipeserver/scene.hpp"
+
+namespace l2::test {
+
+using WallScene = std::tuple<std::filesystem::path, std::string>;
+
+// The wall files of walls/, sorted.
+inline std::vector<std::filesystem::path> example_walls() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls")) {
+    if (e.path().extension() == ".toml") out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Every example wall with every built-in scene, wall by wall.
+inline std::vector<WallScene> all_wall_scenes() {
+  std::vector<WallScene> out;
+  for (const auto& wall : example_walls())
+    for (const std::string& scene : built_in_scene_names()) out.emplace_back(wall, scene);
+  return out;
+}
+
+// The test's name: "<wall>_<scene>", with what gtest does not take in a name as '_'.
+inline std::string wall_scene_name(const ::testing::TestParamInfo<WallScene>& info) {
+  std::string n = std::get<0>(info.param).stem().string() + "_" + std::get<1>(info.param);
+  for (char& c : n)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+}
+
+}  // namespace l2::test
