@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <tuple>
@@ -35,6 +36,18 @@ inline std::vector<WallScene> all_wall_scenes() {
   std::vector<WallScene> out;
   for (const auto& wall : example_walls())
     for (const std::string& scene : built_in_scene_names()) out.emplace_back(wall, scene);
+  return out;
+}
+
+// Each example wall with one scene and each scene on some wall: wall i with scene i % scenes,
+// and when there are more scenes than walls, the scenes left over on the first walls again.
+inline std::vector<WallScene> diagonal_wall_scenes() {
+  const std::vector<std::filesystem::path> walls = example_walls();
+  const std::vector<std::string>& scenes = built_in_scene_names();
+  std::vector<WallScene> out;
+  if (walls.empty() || scenes.empty()) return out;
+  for (std::size_t i = 0; i < std::max(walls.size(), scenes.size()); ++i)
+    out.emplace_back(walls[i % walls.size()], scenes[i % scenes.size()]);
   return out;
 }
 
