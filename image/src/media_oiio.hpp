@@ -18,7 +18,7 @@ std::string open_failed(const char* path);
 
 // A PNG's pixels decoded with libpng, a row at a time and dropped, before the image cache reads
 // it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),
-// nothing printed (png_codec_oiio.cpp).
+// nothing printed (png_read_libpng.cpp).
 Status check_png_data(const char* path);
 // The same for a PNG in memory (an icon's), its rows decoded only with `rows`.
 Status check_png_bytes(std::string_view bytes, bool rows);

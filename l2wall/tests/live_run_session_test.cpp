@@ -186,9 +186,7 @@ TEST(SessionOnTheWall, AWindowMovedFromStdinMovesOnEveryDisplayInOneFrame) {
   args.push_back("--window-stdin");
   WallRun run("session-stdin", args, {}, false, "", false, fifo.string());
   std::ofstream commands(fifo);  // opens once the shell opened its end for l2wall
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (!fs::exists(run.out() / "frame-5") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(20ms);
+  wait_for_file(run.out() / "frame-5", 60s);
   commands << "move 1 600 420 200 150\nraise 7\n" << std::flush;
   commands.close();
   const ExitStatus status = run.wait(120s);

@@ -87,10 +87,7 @@ int tuio_port(const WallRun& run) {
 
 // Waits until frame `k` is kept (a ceiling far above what it takes).
 void wait_for_frame(const WallRun& run, int k) {
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (!fs::exists(run.out() / fmt::format("frame-{}", k)) &&
-         std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(10ms);
+  wait_for_file(run.out() / fmt::format("frame-{}", k), 60s);
 }
 
 int kept_frames(const WallRun& run) {

@@ -270,9 +270,7 @@ TEST_F(VncRun, AWallOfFourWindowsWithADesktopEqualsItsReference) {
                std::to_string(kFrames), "--keep", "every", "--refresh", "0", "--window-stdin"},
               {}, false, "", false, fifo.string());
   std::ofstream commands(fifo);  // opens once the shell opened its end for l2wall
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (!fs::exists(run.out() / "frame-3") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(20ms);
+  wait_for_file(run.out() / "frame-3", 60s);
   commands << "move 9 300 80 620 400\n" << std::flush;
   commands.close();
   const ExitStatus status = run.wait(180s);

@@ -1,5 +1,5 @@
 // Shared by the --show tests: a private Xvfb big enough for the default wall at native size,
-// the wall window's title, and waiting on what a live run writes.
+// the wall window's title, and waiting on what a live run prints (its files: wall_run.hpp).
 #pragma once
 
 #include <fmt/format.h>
@@ -79,13 +79,6 @@ inline int wait_for_output(const WallRun& run, const std::string& pattern,
     if (std::chrono::steady_clock::now() >= deadline) return -1;
     std::this_thread::sleep_for(20ms);
   }
-}
-
-inline bool wait_for_file(const fs::path& path, std::chrono::seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!fs::exists(path) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(20ms);
-  return fs::exists(path);
 }
 
 }  // namespace l2::testing_support

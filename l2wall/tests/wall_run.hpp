@@ -245,6 +245,14 @@ inline fs::path grid_wall_surviving(const fs::path& dir, const std::string& name
   return file;
 }
 
+// Waits until `path` exists (a frame's folder the run keeps, a file it writes); whether it does.
+inline bool wait_for_file(const fs::path& path, std::chrono::seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!fs::exists(path) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(20ms);
+  return fs::exists(path);
+}
+
 // Pipeserver `pipeserver`'s pid once it runs and has logged `frames` frames (0: as soon as it
 // runs, before its first frame reaches anyone); -1 if that never happens. Found by its log
 // (--report OUT/pipeserver-<i>.log), which it has on every path.

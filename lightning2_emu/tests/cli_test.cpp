@@ -1,9 +1,5 @@
 // The lightning2_emu executable on real files: PNG frames in, PNG displays and JSON out.
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <fstream>
@@ -15,11 +11,10 @@
 #include "base/child_process.hpp"
 #include "image/png_io.hpp"
 #include "lightning2_emu/frame_builder.hpp"
+#include "measured_run.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "tilelayout/wall_file.hpp"
-
-extern char** environ;
 
 namespace l2 {
 namespace {
@@ -114,37 +109,6 @@ TEST_F(Cli, RouteRefusesInputsLargerThanTheBoardLimit) {
       << r.output;
 }
 
-// A child's exit code, output and peak memory (its largest resident set, from wait4).
-struct Measured {
-  int status = -1;
-  std::string output;
-  long peak_kb = 0;
-};
-
-Measured run_measured(std::vector<std::string> args, const fs::path& output) {
-  args.insert(args.begin(), L2_EMU_EXE);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  Measured m;
-  pid_t pid = -1;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) {
-    int status = 0;
-    rusage usage{};
-    wait4(pid, &status, 0, &usage);
-    m.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    m.peak_kb = usage.ru_maxrss;
-  }
-  posix_spawn_file_actions_destroy(&actions);
-  std::ifstream in(output);
-  m.output.assign(std::istreambuf_iterator<char>(in), {});
-  return m;
-}
-
 // Tiny pictures whose headers claim 16384x16384 pixels (805 MB as RGB): route allocated the
 // whole picture (a GIF 1 GB more inside OpenImageIO) before it found the frame larger than a
 // board takes. Refused on the header now: the peak stays that of routing a small frame.
@@ -178,20 +142,20 @@ TEST_F(Cli, RouteRefusesAHugeFrameBeforeAllocatingIt) {
   small.copy(0, 0, 0, 0, 0, 20);
   write_png(dir / "small.png", small.image());
   const auto route = [&](const std::string& picture) {
-    return run_measured(
-        {"route", "--displays", "20x3", "--out", (dir / "out").string(), (dir / picture).string()},
-        dir / "output.txt");
+    return process_run::run({L2_EMU_EXE, "route", "--displays", "20x3", "--out",
+                             (dir / "out").string(), (dir / picture).string()},
+                            dir / "output.txt");
   };
-  const Measured baseline = route("small.png");
-  ASSERT_EQ(baseline.status, 0) << baseline.output;
+  const process_run::Ended baseline = route("small.png");
+  ASSERT_EQ(baseline.code, 0) << baseline.output;
   for (const auto& [name, content] : pictures) {
     std::ofstream(dir / name, std::ios::binary) << content;
-    const Measured m = route(name);
-    EXPECT_EQ(m.status, 1) << name;
+    const process_run::Ended m = route(name);
+    EXPECT_EQ(m.code, 1) << name;
     EXPECT_EQ(m.output, "lightning2_emu: " + (dir / name).string() + ": input 0 is 16384x16384, " +
                             "larger than the board limit 1280x1024\n");
     // Allowance for what reading a file's header takes; the picture would be 786432 KB.
-    EXPECT_LT(m.peak_kb, baseline.peak_kb + 100 * 1024) << name;
+    EXPECT_LT(m.peak_kib, baseline.peak_kib + 100 * 1024) << name;
   }
 }
 

@@ -1,7 +1,8 @@
 // The renderers behind GlContext (gl_context.hpp): each makes a context with a surface of its
 // own, binds it to a thread, loads the GL function table from its own library and brings what
 // was drawn into the context's RGBA buffer. OSMesa: osmesa_surface.cpp, libOSMesa loaded by name
-// so that its gl* symbols stay its own. EGL: egl_surface.cpp, through glvnd's libEGL.
+// so that its gl* symbols stay its own. EGL: egl_surface.cpp on the display egl_display.cpp
+// finds, through glvnd's libEGL.
 #pragma once
 
 #include <cstdint>
@@ -41,8 +42,8 @@ class GlSurface {
 // Throws RendererError when libOSMesa cannot be loaded or the context not made.
 std::unique_ptr<GlSurface> osmesa_surface(std::uint8_t* rgba, int width, int height);
 
-// A context drawing into a width x height pbuffer of EGL's display (egl_display()), read back
-// with glReadPixels. Throws RendererError.
+// A context drawing into a width x height pbuffer of EGL's display (chosen_display(),
+// egl_display.hpp), read back with glReadPixels. Throws RendererError.
 std::unique_ptr<GlSurface> egl_surface(int width, int height);
 
 // Where EGL renders in this process: the display every EGL context is made on.

@@ -109,6 +109,10 @@ Wall wall_file(const char* name) {
   return load_wall(fs::path(L2_SOURCE_DIR) / "walls" / name);
 }
 
+// Whole under ASan too, though it takes some 8 s there: most of it is the six pipeservers
+// rendering at the panels' native size (about 1.2 s each), the code under test, and a smaller
+// wall would no longer be this file's, whose 980x560 tiles turned into 1968-wide framebuffers
+// are the point (EveryRotationAndFlip checks the mapping itself on small panels).
 TEST_F(Hanging, PortraitWall) {
   // walls/portrait-3x2.toml: 1920x1080 panels at 90, 40-pixel bezels, so a pitch of 1120 across
   // and 1960 down.

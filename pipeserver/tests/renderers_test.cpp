@@ -12,15 +12,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "pipeserver/gl_context.hpp"
@@ -29,6 +26,7 @@
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
+#include "wall_scenes.hpp"
 
 namespace l2 {
 namespace {
@@ -89,17 +87,8 @@ void expect_renderers_alike(const TileLayout& layout, const std::string& name,
   use_renderer(RendererChoice::OsMesa);
 }
 
-std::vector<fs::path> example_walls() {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(fs::path(L2_SOURCE_DIR) / "walls"))
-    if (e.path().extension() == ".toml") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 // One test per wall and scene, as ExampleWall (example_walls_test.cpp) checks the reassembly.
-class RenderersOnExampleWall : public ::testing::TestWithParam<std::tuple<fs::path, std::string>> {
-};
+class RenderersOnExampleWall : public ::testing::TestWithParam<test::WallScene> {};
 
 TEST_P(RenderersOnExampleWall, GiveTheSamePixels) {
   const auto& [path, name] = GetParam();
@@ -108,15 +97,7 @@ TEST_P(RenderersOnExampleWall, GiveTheSamePixels) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Walls, RenderersOnExampleWall,
-                         ::testing::Combine(::testing::ValuesIn(example_walls()),
-                                            ::testing::ValuesIn(built_in_scene_names())),
-                         [](const auto& param_info) {
-                           std::string n = std::get<0>(param_info.param).stem().string() + "_" +
-                                           std::get<1>(param_info.param);
-                           for (char& c : n)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
-                         });
+                         ::testing::ValuesIn(test::all_wall_scenes()), test::wall_scene_name);
 
 // Pictures (glDrawPixels), a session of windows over a background, a model's texture.
 TEST(Renderers, GiveTheSamePixelsOnPicturesSessionsAndTextures) {

@@ -1,5 +1,6 @@
 // Fixtures for the pipeserver tests: a small wall built in code, routing of scanned-out frames
-// back into displays with the spec §3 parser, and image comparison.
+// back into displays with the spec §3 parser, and image comparison; and whether AddressSanitizer
+// instruments the build, for the tests that do less under it.
 #pragma once
 
 #include <vector>
@@ -52,5 +53,19 @@ WallCheck check_wall(const TileLayout& layout, Scene& scene, int frame, bool loc
 
 // Small, quick versions of every scene.
 SceneOptions small_options();
+
+// Whether AddressSanitizer instruments this build: GCC says so with __SANITIZE_ADDRESS__, Clang
+// through __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
 
 }  // namespace l2::test
