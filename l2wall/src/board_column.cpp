@@ -7,14 +7,41 @@
 
 #include "lightning2_emu/swap_group.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
+#include "tilelayout/several_meshes.hpp"
 
 namespace l2 {
 
+BoardColumn::MeshView::MeshView(const Wall& w, std::span<const int> display_ids)
+    : wall(w), mesh_id_of(w.displays.size(), -1) {
+  const std::vector<MeshPart> parts = mesh_parts(w);
+  const int m =
+      display_ids.empty() ? 0 : w.displays.at(static_cast<std::size_t>(display_ids[0])).mesh;
+  part = parts.at(static_cast<std::size_t>(w.mesh_count == 1 ? 0 : m));
+  for (std::size_t i = 0; i < part.displays.size(); ++i) {
+    mesh_id_of[static_cast<std::size_t>(part.displays[i])] = static_cast<int>(i);
+  }
+  for (const int id : display_ids) {
+    const int own = mesh_id(id);
+    if (own < 0) {
+      throw std::invalid_argument(fmt::format("display {} is not on mesh {}", id, part.mesh));
+    }
+    ids.push_back(own);
+  }
+  if (w.mesh_count > 1) wall = mesh_wall(w, part);
+}
+
+int BoardColumn::MeshView::mesh_id(int wall_id) const {
+  if (wall_id < 0 || static_cast<std::size_t>(wall_id) >= mesh_id_of.size()) return -1;
+  return mesh_id_of[static_cast<std::size_t>(wall_id)];
+}
+
 BoardColumn::BoardColumn(const Wall& wall, std::span<const int> display_ids,
                          std::vector<int> pipeservers, WorkerPool& pool, bool predict)
-    : router_(wall_mesh(wall), display_specs(wall, display_ids), pool),
+    : mesh_(wall, display_ids),
+      router_(wall_mesh(mesh_.wall), display_specs(mesh_.wall, mesh_.ids), pool),
       pipeservers_(std::move(pipeservers)),
-      stamps_(static_cast<std::size_t>(router_.mesh().input_count()), -1),
+      stamps_(static_cast<std::size_t>(mesh_.part.first_pipeserver + router_.mesh().input_count()),
+              -1),
       sequences_(stamps_.size(), 0),
       back_frame_(static_cast<std::size_t>(router_.display_count()), -1),
       done_frame_(back_frame_),
@@ -23,10 +50,12 @@ BoardColumn::BoardColumn(const Wall& wall, std::span<const int> display_ids,
       done_from_(back_from_),
       shown_from_(back_from_) {
   router_.predict_layouts(predict);
+  // The wall's groups, in its numbering of them: a group may span meshes.
   for (const SwapGroup& g : make_swap_groups(display_specs(wall))) {
     std::vector<int>& own = group_indices_.emplace_back();
     for (const int id : g.displays) {
-      if (const int index = router_.index_of_display(id); index >= 0) own.push_back(index);
+      if (const int index = router_.index_of_display(mesh_.mesh_id(id)); index >= 0)
+        own.push_back(index);
     }
   }
 }
@@ -60,21 +89,27 @@ void BoardColumn::scan(std::span<const InputFrame> frames, const Tick& tick) {
     if (next.fb_x >= 0 && next.fb_y >= 0 && next.fb_x < f.width && next.fb_y < f.height)
       stamps_[p] = decode_stamp(f.row(next.fb_y) + next.fb_x * f.bytes_per_pixel);
   }
-  router_.scan(frames);
+  // The router's inputs are the mesh's: its pipeservers, from the first.
+  const auto first = static_cast<std::size_t>(mesh_.part.first_pipeserver);
+  const std::size_t count = std::min(static_cast<std::size_t>(mesh_.part.pipeserver_count),
+                                     frames.size() > first ? frames.size() - first : 0);
+  router_.scan(frames.subspan(std::min(first, frames.size()), count));
 }
 
 Observation BoardColumn::observe(std::int64_t refresh) const {
   Observation o;
   o.refresh = refresh;
+  o.mesh = mesh_.part.mesh;
   for (const int input : pipeservers_) {
-    const InputFrameStats& st = router_.scanned(input);
+    const InputFrameStats& st = router_.scanned(router_input(input));
     o.inputs.push_back({input, st.present, st.idle(), st.torn(), st.parity(), st.displays_fed,
                         stamps_[static_cast<std::size_t>(input)]});
   }
   // The frame of pipeserver `p` on the display of its spot: a spot on another column's display
   // is not read here.
   const auto read = [&](std::size_t p, const StampSpot& s) -> int {
-    const int index = router_.index_of_display(s.display);
+    const int own = mesh_.mesh_id(s.display);
+    const int index = own < 0 ? -1 : router_.index_of_display(own);
     if (index < 0) return kStampNotHere;
     const std::vector<int>& from = shown_from_[static_cast<std::size_t>(index)];
     return p < from.size() ? from[p] : kStampNotHere;
@@ -85,18 +120,26 @@ Observation BoardColumn::observe(std::int64_t refresh) const {
     if (shown.last != kStampNotHere || shown.before != kStampNotHere) o.stamps.push_back(shown);
   }
   for (int d = 0; d < router_.display_count(); ++d)
-    o.displays.push_back({router_.display(d).id(), shown_frame_[static_cast<std::size_t>(d)], 0});
+    o.displays.push_back(
+        {mesh_.wall_id(router_.display(d).id()), shown_frame_[static_cast<std::size_t>(d)], 0});
   return o;
 }
 
 void BoardColumn::write(const Router::RouteChoice& choose) {
+  // The path chooses by wall pipeserver; the router takes its mesh's part of that.
   std::span<const std::uint8_t> chosen;
-  router_.write([&] { return chosen = choose(); });
+  router_.write([&] {
+    chosen = choose();
+    const auto first = static_cast<std::size_t>(mesh_.part.first_pipeserver);
+    if (first >= chosen.size()) return std::span<const std::uint8_t>();
+    return chosen.subspan(first, std::min(chosen.size() - first,
+                                          static_cast<std::size_t>(mesh_.part.pipeserver_count)));
+  });
   // The frame a display's next picture holds: the newest stamp routed into it.
   for (const int input : pipeservers_) {
     const auto p = static_cast<std::size_t>(input);
     if (p >= chosen.size() || !chosen[p]) continue;
-    const std::uint64_t fed = router_.scanned(input).displays_fed;
+    const std::uint64_t fed = router_.scanned(router_input(input)).displays_fed;
     for (int d = 0; d < router_.display_count(); ++d) {
       if (fed >> router_.display(d).id() & 1) {
         int& f = back_frame_[static_cast<std::size_t>(d)];
@@ -124,7 +167,8 @@ void BoardColumn::complete(std::span<const int> groups) {
 }
 
 const RgbImage& BoardColumn::shown(int id) const {
-  const int index = router_.index_of_display(id);
+  const int own = mesh_.mesh_id(id);
+  const int index = own < 0 ? -1 : router_.index_of_display(own);
   if (index < 0) throw std::out_of_range(fmt::format("display {} is not this column's", id));
   return router_.display(index).front();
 }

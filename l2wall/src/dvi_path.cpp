@@ -10,6 +10,7 @@
 #include "l2wall/live_balance.hpp"
 #include "l2wall/run_fault.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
+#include "tilelayout/several_meshes.hpp"
 
 namespace l2 {
 namespace {
@@ -75,10 +76,22 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
       frames_(o.frames),
       drop_ready_(o.drop_ready),
       groups_(make_swap_groups(display_specs(layout.wall))),
-      sequencer_(wall_mesh(layout.wall).input_count(), static_cast<int>(groups_.size())),
+      sequencer_(layout.meshes.size() > 1 ? layout.wall.pipeserver_count
+                                          : wall_mesh(layout.wall).input_count(),
+                 static_cast<int>(groups_.size())),
       lock_check_(groups_) {
+  // A column's displays_fed are bits of its mesh's display ids.
+  const std::vector<MeshPart> meshes =
+      layout.meshes.empty() ? mesh_parts(layout.wall) : layout.meshes;
+  group_of_display_.resize(meshes.size());
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    for (const int id : groups_[g].displays) group_of_display_[id] = static_cast<int>(g);
+    for (const int id : groups_[g].displays) {
+      const Display& d = layout.wall.displays.at(static_cast<std::size_t>(id));
+      const std::vector<int>& own = meshes.at(static_cast<std::size_t>(d.mesh)).displays;
+      const auto mesh_id = std::find(own.begin(), own.end(), id) - own.begin();
+      group_of_display_[static_cast<std::size_t>(d.mesh)][static_cast<int>(mesh_id)] =
+          static_cast<int>(g);
+    }
   }
 }
 
@@ -189,7 +202,8 @@ void DviPath::take(std::span<const Observation> seen, const PipeserverSet& pipes
     for (const InputSeen& i : o.inputs) {
       const std::size_t p = pipeserver_of(i.pipeserver, observations_.size());
       // Each column sees the strips for its own displays: together, every display fed.
-      const std::uint64_t fed = observations_[p].groups_fed | groups_of_displays(i.displays_fed);
+      const std::uint64_t fed =
+          observations_[p].groups_fed | groups_of_displays(o.mesh, i.displays_fed);
       observations_[p] = {i.present, i.idle, i.torn, i.parity, fed};
       stamps_[p] = i.stamp;
     }
@@ -217,9 +231,10 @@ void DviPath::note_swap() {
   columns_->showing(shown_);
 }
 
-std::uint64_t DviPath::groups_of_displays(std::uint64_t displays) const {
+std::uint64_t DviPath::groups_of_displays(int mesh, std::uint64_t displays) const {
   std::uint64_t groups = 0;
-  for (const auto& [id, group] : group_of_display_) {
+  if (mesh < 0 || static_cast<std::size_t>(mesh) >= group_of_display_.size()) return groups;
+  for (const auto& [id, group] : group_of_display_[static_cast<std::size_t>(mesh)]) {
     if (displays >> id & 1) groups |= std::uint64_t{1} << group;
   }
   return groups;

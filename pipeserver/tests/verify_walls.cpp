@@ -39,12 +39,14 @@ int write_picture(const std::filesystem::path& out, const std::filesystem::path&
   return 0;
 }
 
-// Every wall file in the repository's walls/.
+// Every wall file of one mesh in the repository's walls/ (those of several meshes are
+// hundreds of full-size panels).
 std::vector<std::filesystem::path> example_walls() {
   std::vector<std::filesystem::path> walls;
   for (const auto& e :
        std::filesystem::directory_iterator(std::filesystem::path(L2_SOURCE_DIR) / "walls"))
-    if (e.path().extension() == ".toml") walls.push_back(e.path());
+    if (e.path().extension() == ".toml" && l2::load_wall(e.path()).mesh_count == 1)
+      walls.push_back(e.path());
   return walls;
 }
 

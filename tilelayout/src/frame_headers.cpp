@@ -28,7 +28,7 @@ void put_tile(const PackedTile& p, int r, bool frame_parity, Put& put) {
                                         gap_columns(t) - kHeaderPixels + payload_columns(t))));
     return;
   }
-  StripHeader h = StripHeader::copy(frame_parity, t.display, d.x, d.y + r, d.w);
+  StripHeader h = StripHeader::copy(frame_parity, header_id(t), d.x, d.y + r, d.w);
   if (t.compositing == Compositing::Copy) return put(gap_x, encode(h));
   h.op = StripOp::Ext;
   put(gap_x, encode(h));

@@ -9,6 +9,7 @@
 #include "tilelayout/coverage.hpp"
 #include "tilelayout/dvi_timing.hpp"
 #include "tilelayout/fit.hpp"
+#include "tilelayout/several_meshes.hpp"
 
 namespace l2 {
 namespace {
@@ -116,14 +117,18 @@ std::vector<std::vector<DisplayTile>> tile_lists(const Distribution& d, int pipe
 TileLayout plan(const Wall& wall, const std::vector<int>* pipeserver_of_logical,
                 const std::vector<int>& gone = {}) {
   if (wall.mesh_count > 1) {
-    throw LayoutError(where(wall, wall.meshes_line) +
-                      fmt::format("the wall's {} displays need {} meshes (a strip header "
-                                  "addresses {}); this drives one mesh: tilelayout --wall plans "
-                                  "every mesh and --verify checks them",
-                                  wall.displays.size(), wall.mesh_count, kMaxDisplays));
+    // A wall of several meshes is planned mesh by mesh; none balances or survives a loss.
+    if (pipeserver_of_logical || !gone.empty()) {
+      throw LayoutError(where(wall, wall.meshes_line) +
+                        fmt::format("a given assignment is for a wall of one mesh; this wall's "
+                                    "{} displays need {} meshes",
+                                    wall.displays.size(), wall.mesh_count));
+    }
+    return plan_several_meshes(wall);
   }
   TileLayout layout;
   layout.wall = wall;
+  layout.meshes = mesh_parts(wall);
   layout.logical_tiles = make_logical_tiles(wall);
   layout.tiles = split_at_displays(wall, layout.logical_tiles);
   if (pipeserver_of_logical && (wall.depth_layers != 0 || wall.overlay ||

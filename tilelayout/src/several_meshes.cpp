@@ -171,6 +171,52 @@ MeshPlan plan_mesh(const Wall& wall, const MeshPart& part) {
   }
 }
 
+TileLayout plan_several_meshes(const Wall& wall) {
+  TileLayout layout;
+  layout.wall = wall;
+  layout.meshes = mesh_parts(wall);
+  for (const MeshPart& part : layout.meshes) {
+    MeshPlan m = plan_mesh(wall, part);
+    const int logical_base = static_cast<int>(layout.logical_tiles.size());
+    // Its tiles in the wall's numbers, keeping the mesh's display id for the headers.
+    const auto to_wall = [&](DisplayTile& t) {
+      t.header_display = t.display;
+      t.display = part.displays[static_cast<std::size_t>(t.display)];
+      t.logical_tile += logical_base;
+    };
+    layout.logical_tiles.insert(layout.logical_tiles.end(), m.layout.logical_tiles.begin(),
+                                m.layout.logical_tiles.end());
+    for (std::size_t i = 0; i < m.layout.tiles.size(); ++i) {
+      to_wall(m.layout.tiles[i]);
+      layout.tiles.push_back(m.layout.tiles[i]);
+      layout.tile_pipeserver.push_back(part.first_pipeserver + m.layout.tile_pipeserver[i]);
+    }
+    for (PipeserverPlan& s : m.layout.pipeservers) {
+      s.pipeserver += part.first_pipeserver;
+      s.mesh = part.mesh;
+      for (PackedTile& p : s.tiles) to_wall(p.tile);
+      layout.pipeservers.push_back(std::move(s));
+    }
+    for (std::string& w : m.layout.warnings) {
+      layout.warnings.push_back(fmt::format("mesh {}: {}", part.mesh, w));
+    }
+  }
+  return layout;
+}
+
+void require_one_mesh(const Wall& wall, std::string_view what) {
+  if (wall.mesh_count <= 1) return;
+  const std::string file = wall.source.empty() ? std::string()
+                           : wall.meshes_line > 0
+                               ? fmt::format("{}:{}: ", wall.source.string(), wall.meshes_line)
+                               : wall.source.string() + ": ";
+  throw LayoutError(fmt::format(
+      "{}the wall's {} displays need {} meshes (a strip header addresses {}); {} drives one "
+      "mesh: l2wall run without --mpi runs every mesh, tilelayout --wall plans and --verify "
+      "checks them",
+      file, wall.displays.size(), wall.mesh_count, kMaxDisplays, what));
+}
+
 std::string number_runs(const std::vector<int>& ascending) {
   std::string out;
   for (std::size_t i = 0; i < ascending.size();) {

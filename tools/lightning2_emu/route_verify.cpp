@@ -4,13 +4,16 @@
 
 #include "commands.hpp"
 #include "tilelayout/planner.hpp"
+#include "tilelayout/several_meshes.hpp"
 #include "tilelayout/wall_file.hpp"
 #include "verify/verify_run.hpp"
 
 namespace l2 {
 
 int verify_route(const CommonOptions& o, std::span<const RgbImage> frames, const Router& router) {
-  const TileLayout layout = plan_layout(load_wall(o.wall));
+  const Wall wall = load_wall(o.wall);
+  require_one_mesh(wall, "lightning2_emu");
+  const TileLayout layout = plan_layout(wall);
   for (const std::string& w : layout.warnings) std::cerr << "lightning2_emu: " << w << "\n";
   std::vector<const RgbImage*> routed;
   for (const Display& d : layout.wall.displays) {

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "lightning2_emu/frame_files.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
+#include "tilelayout/several_meshes.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -24,6 +25,7 @@ Setup make_setup(const CommonOptions& o) {
     // The wall decides displays, swap groups, board limit and, through its pipeserver count,
     // how many board rows the mesh has.
     const Wall wall = load_wall(o.wall);
+    require_one_mesh(wall, "lightning2_emu");
     if (!o.groups.empty()) {
       throw std::invalid_argument("--groups: with --wall the swap groups come from the wall");
     }

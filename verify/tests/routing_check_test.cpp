@@ -344,8 +344,11 @@ TEST(RoutingCheck, ExampleWallsVerifyClean) {
   int walls = 0;
   for (const auto& entry : std::filesystem::directory_iterator(L2_WALLS_DIR)) {
     if (entry.path().extension() != ".toml") continue;
+    const Wall wall = load_wall(entry.path());
+    // Walls of several meshes are checked mesh by mesh (tilelayout's several-mesh tests).
+    if (wall.mesh_count > 1) continue;
     ++walls;
-    const TileLayout layout = plan_layout(load_wall(entry.path()));
+    const TileLayout layout = plan_layout(wall);
     const std::vector<RgbImage> frames = scanned_out(layout);
     const std::vector<RgbImage> shown = route_on_wall(layout.wall, frames, 2);
     std::vector<const RgbImage*> routed;

@@ -7,6 +7,10 @@
 // every refresh it does what the DVI path's tick and route say, in the spec's order: swap,
 // scan, say what it saw, write the inputs chosen, complete the groups decided.
 //
+// In a wall of several meshes (tilelayout/several_meshes.hpp) a column is one mesh's: its router
+// reads the ids the mesh's headers carry, and it answers in the wall's numbers (display ids,
+// pipeservers), so the path above it is the same for one mesh or several.
+//
 // Owns: the router and its display buffers, the frame stamp of each of its inputs' frames, and
 // the frame each of its displays holds in its back buffer, has completed, and shows. It does not
 // decide anything (the frame sequencer is the DVI path's) and does no I/O: where its input frames
@@ -21,6 +25,7 @@
 #include "l2wall/column_records.hpp"
 #include "lightning2_emu/router.hpp"
 #include "lightning2_emu/worker_pool.hpp"
+#include "tilelayout/tile_layout.hpp"
 #include "tilelayout/wall.hpp"
 
 namespace l2 {
@@ -29,7 +34,8 @@ class BoardColumn {
  public:
   // The displays of `wall` with ids in `display_ids`, fed by the mesh inputs (pipeservers)
   // `pipeservers`, routed by `pool`'s workers. `predict`: Router::predict_layouts (a column
-  // whose choice is a round trip away cannot be asked twice, so it parses every frame).
+  // whose choice is a round trip away cannot be asked twice, so it parses every frame). In a
+  // wall of several meshes the displays must be of one mesh, and the pipeservers its own.
   BoardColumn(const Wall& wall, std::span<const int> display_ids, std::vector<int> pipeservers,
               WorkerPool& pool, bool predict);
 
@@ -49,12 +55,28 @@ class BoardColumn {
 
   Router& router() { return router_; }
   const Router& router() const { return router_; }
+  // What the router calls input `pipeserver` (a wall pipeserver of this column's mesh).
+  int router_input(int pipeserver) const { return pipeserver - mesh_.part.first_pipeserver; }
+  int mesh() const { return mesh_.part.mesh; }
   // The front buffer of display `id`, one of this column's.
   const RgbImage& shown(int id) const;
   // The lowest frame its displays show; -1 before the first.
   int lowest_frame_shown() const;
 
  private:
+  // The mesh the column's displays are on: the wall it sees (wall.hpp's displays renumbered as
+  // its headers number them) and the numbers both ways.
+  struct MeshView {
+    MeshPart part;
+    Wall wall;                    // mesh_wall: ids as the mesh's headers carry them
+    std::vector<int> ids;         // the column's displays, as `wall` numbers them
+    std::vector<int> mesh_id_of;  // by wall display id: the mesh's id, -1 for another mesh's
+    MeshView(const Wall& w, std::span<const int> display_ids);
+    int wall_id(int mesh_id) const { return part.displays[static_cast<std::size_t>(mesh_id)]; }
+    int mesh_id(int wall_id) const;  // -1: not this mesh's display
+  };
+
+  MeshView mesh_;
   Router router_;
   std::vector<int> pipeservers_;                 // its inputs
   std::vector<std::vector<int>> group_indices_;  // by group index: this column's display indices

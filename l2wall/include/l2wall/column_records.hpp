@@ -69,6 +69,9 @@ struct DisplayShown {
 
 struct Observation {
   std::int64_t refresh = 0;
+  // The mesh of the column (tilelayout/several_meshes.hpp): its inputs' displays_fed are bits of
+  // that mesh's display ids. Not sent over MPI, which runs walls of one mesh.
+  int mesh = 0;
   std::vector<InputSeen> inputs;
   std::vector<StampsShown> stamps;
   std::vector<DisplayShown> displays;  // rank: not sent, the receiver knows who answered

@@ -94,7 +94,8 @@ class DviPath final : public DisplayPath {
   const ColumnRoute& decide(std::span<const Observation> seen, const PipeserverSet& pipeservers);
   // After a refresh that swapped: the frame the displays keep.
   void note_swap();
-  std::uint64_t groups_of_displays(std::uint64_t displays) const;
+  // The groups (bits) of the displays (bits of mesh `mesh`'s display ids).
+  std::uint64_t groups_of_displays(int mesh, std::uint64_t displays) const;
   void count_for_balance(PipeserverSet& pipeservers);
   void check_groups_for_balance(const PipeserverSet& pipeservers);
 
@@ -105,7 +106,8 @@ class DviPath final : public DisplayPath {
   int frames_;
   int drop_ready_;
   std::vector<SwapGroup> groups_;
-  std::map<int, int> group_of_display_;  // display id -> group index
+  // By mesh: the mesh's display id -> group index.
+  std::vector<std::map<int, int>> group_of_display_;
   FrameSequencer sequencer_;
   SwapLockCheck lock_check_;
   // This refresh: what the sequencer decided, and what the columns saw.

@@ -9,6 +9,7 @@
 #include "lightning2_emu/emulator.hpp"
 #include "lightning2_emu/wall_emulator.hpp"
 #include "pipeserver/viz_target.hpp"
+#include "tilelayout/several_meshes.hpp"
 #include "tilelayout/test_frame.hpp"
 #include "tilelayout/test_pattern.hpp"
 #include "viz_link/tile_sender.hpp"
@@ -20,20 +21,36 @@ std::vector<RgbImage> emulate_displays(const TileLayout& layout,
                                        const std::vector<RgbImage>& frames,
                                        StripErrorCounts& errors,
                                        const std::vector<std::string>& names) {
-  // One routing thread: the result does not depend on it, and one keeps the check light.
-  const EmulatorConfig config = emulator_config(layout.wall, 1);
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    config.mesh.check_input(static_cast<int>(i), frames[i].width(), frames[i].height(),
-                            i < names.size() ? names[i] : fmt::format("pipeserver {}", i));
+  // Each mesh its own emulator, fed by its own pipeservers (tilelayout/several_meshes.hpp).
+  const std::vector<MeshPart> meshes =
+      layout.meshes.empty() ? mesh_parts(layout.wall) : layout.meshes;
+  std::vector<RgbImage> shown(layout.wall.displays.size());
+  for (const MeshPart& part : meshes) {
+    const bool one = meshes.size() == 1;
+    // One routing thread: the result does not depend on it, and one keeps the check light.
+    const EmulatorConfig config =
+        emulator_config(one ? layout.wall : mesh_wall(layout.wall, part), 1);
+    const std::size_t first = one ? 0 : static_cast<std::size_t>(part.first_pipeserver);
+    const std::size_t count = one ? frames.size()
+                                  : std::min(frames.size() - std::min(first, frames.size()),
+                                             static_cast<std::size_t>(part.pipeserver_count));
+    std::vector<InputFrame> inputs;
+    for (std::size_t i = 0; i < count; ++i) {
+      const RgbImage& f = frames[first + i];
+      config.mesh.check_input(
+          static_cast<int>(i), f.width(), f.height(),
+          first + i < names.size() ? names[first + i] : fmt::format("pipeserver {}", first + i));
+      inputs.push_back(InputFrame::of(f));
+    }
+    Emulator emulator(config);
+    // Spec §6: frames taken in at one refresh are swapped onto the displays at the next.
+    for (const InputFrameStats& input : emulator.tick(inputs).inputs) errors += input.errors;
+    emulator.tick({});
+    for (std::size_t k = 0; k < part.displays.size(); ++k) {
+      shown[static_cast<std::size_t>(part.displays[k])] =
+          emulator.shown(one ? part.displays[k] : static_cast<int>(k));
+    }
   }
-  Emulator emulator(config);
-  std::vector<InputFrame> inputs;
-  for (const RgbImage& f : frames) inputs.push_back(InputFrame::of(f));
-  // Spec §6: frames taken in at one refresh are swapped onto the displays at the next.
-  for (const InputFrameStats& input : emulator.tick(inputs).inputs) errors += input.errors;
-  emulator.tick({});
-  std::vector<RgbImage> shown;
-  for (const int id : display_ids(layout.wall)) shown.push_back(emulator.shown(id));
   return shown;
 }
 

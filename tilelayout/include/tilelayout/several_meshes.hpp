@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tilelayout/tile_layout.hpp"
@@ -26,14 +27,6 @@ std::vector<int> choose_meshes(const std::vector<Display>& displays);
 // each mesh's display pixels; needs pipeservers >= mesh_pixels.size().
 std::vector<int> share_pipeservers(int pipeservers, const std::vector<long long>& mesh_pixels);
 
-// One mesh of a wall: its displays (wall ids, in mesh id order: displays[k] is the display
-// its headers call k) and the wall pipeservers that feed its inputs 0.. .
-struct MeshPart {
-  int mesh = 0;
-  std::vector<int> displays;
-  int first_pipeserver = 0, pipeserver_count = 0;
-};
-
 // Every mesh of `wall`, in mesh order (one for a wall of one mesh).
 std::vector<MeshPart> mesh_parts(const Wall& wall);
 
@@ -51,9 +44,21 @@ struct MeshPlan {
 // Plans one mesh; a LayoutError says which mesh before the planner's words.
 MeshPlan plan_mesh(const Wall& wall, const MeshPart& part);
 
+// The plan of every mesh put together in the wall's numbers: what plan_layout gives for a wall
+// of several meshes, and what a live run drives. Its pipeservers are the wall's (each plan's
+// `mesh` says which it feeds), its tiles' `display` the wall's display and `header_display`
+// the mesh's, logical tiles mesh after mesh.
+TileLayout plan_several_meshes(const Wall& wall);
+
 // "mesh 1: 40 displays (wall displays 8-15, 24-31, ...), 40 pipeservers (40-79 as its inputs
 // 0-39), 10 x 5 boards": one line for people, the wall's numbers beside the mesh's.
 std::string mesh_heading(const MeshPart& part, int board_rows, int board_columns);
+
+// Throws LayoutError when `wall` has several meshes, naming the file and saying what `what`
+// ("lightning2_emu", "l2wall run --mpi") cannot do: "walls/s.toml:7: the wall's 80 displays
+// need 2 meshes (a strip header addresses 64); l2wall run --mpi drives one mesh: l2wall run
+// without --mpi runs every mesh, tilelayout --wall plans and --verify checks them".
+void require_one_mesh(const Wall& wall, std::string_view what);
 
 // "8-15, 24-31, 40": ascending numbers as runs.
 std::string number_runs(const std::vector<int>& ascending);

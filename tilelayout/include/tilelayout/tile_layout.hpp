@@ -29,7 +29,15 @@ struct DisplayTile {
   Compositing compositing = Compositing::Copy;
   std::uint32_t key = 0;    // Key: the key colour, R<<16 | G<<8 | B
   Orientation orientation;  // the display's: on_display is on_canvas turned so (tile_map)
+  // In a wall of several meshes, `display` is the wall's number and this the mesh's, which its
+  // strip headers carry (several_meshes.hpp); -1: the same as `display`.
+  int header_display = -1;
 };
+
+// The display id a tile's strip headers carry.
+inline int header_id(const DisplayTile& t) {
+  return t.header_display < 0 ? t.display : t.header_display;
+}
 
 // Tile pixel (i, j) of `t` (from the top-left of on_display) shows the pixel of on_canvas at
 // offset (u(i, j), v(i, j)): the display's PanelMap, anchored on the tile.
@@ -66,6 +74,7 @@ struct PackedRow {
 
 struct PipeserverPlan {
   int pipeserver = 0;
+  int mesh = 0;  // the mesh it feeds (several_meshes.hpp)
   // Depth walls: the pipeserver renders share `layer` (0..layers-1) of the scene's geometry, in
   // draw order. Sort-first pipeservers, and the overlay's, render all of it: layer 0 of 1.
   int layer = 0, layers = 1;
@@ -86,8 +95,20 @@ struct PipeserverPlan {
 // Columns the stamp strip takes after its row's last tile: its SKIP header and its pixel.
 inline constexpr int kStampStripColumns = 3;
 
+// One mesh of a wall: its displays (wall ids, in mesh id order: displays[k] is the display
+// its headers call k) and the wall pipeservers that feed its inputs 0.. (several_meshes.hpp).
+struct MeshPart {
+  int mesh = 0;
+  std::vector<int> displays;
+  int first_pipeserver = 0, pipeserver_count = 0;
+};
+
 struct TileLayout {
   Wall wall;
+  // Every mesh, in mesh order: one for a wall of one mesh. A wall of several is planned mesh by
+  // mesh and put together: tiles, pipeservers and logical tiles in the wall's numbers, each
+  // tile's header_display its mesh's.
+  std::vector<MeshPart> meshes;
   std::vector<Rect> logical_tiles;   // canvas rectangles, in tiling order; the overlay last
   std::vector<DisplayTile> tiles;    // split at display edges; pixels behind mullions dropped
   std::vector<int> tile_pipeserver;  // tiles[i] is rendered by pipeserver tile_pipeserver[i]

@@ -27,7 +27,6 @@ struct Display {
   // Its number in the wall, 0..kMaxWallDisplays-1; in the wall of one mesh (mesh_wall) the
   // number strip headers carry, 0..63.
   int id = 0;
-  int mesh = 0;                    // the mesh that drives it (several_meshes.hpp)
   int width = 0, height = 0;       // native, as the panel reports it: its frames' size
   int canvas_x = 0, canvas_y = 0;  // top-left corner of its canvas rectangle
   int swap_group = 0;              // displays of one group swap together (spec §6)
@@ -44,6 +43,7 @@ struct Display {
   std::string alpha, beta;
   double alpha_gamma = 1.0;
   std::shared_ptr<const LevelMap> level_map;
+  int mesh = 0;  // the mesh that drives it (several_meshes.hpp)
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }
