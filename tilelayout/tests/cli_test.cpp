@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_run.hpp"
 #include "image/png_io.hpp"
 #include "routing_check.hpp"
 #include "tilelayout/pictures.hpp"
@@ -20,50 +21,9 @@ namespace l2 {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct ChildRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    // Parameterised test names hold '/'; one folder per test and process.
-    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::replace(name.begin(), name.end(), '/', '_');
-    dir_ =
-        fs::temp_directory_path() / ("tilelayout_cli_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return dir_ / name;
-  }
-
-  ChildRun run(const std::string& args) {
-    const std::string cmd = std::string("'") + TILELAYOUT_EXE + "' " + args + " >'" +
-                            (dir_ / "out").string() + "' 2>'" + (dir_ / "err").string() + "'";
-    const int raw = std::system(cmd.c_str());
-    ChildRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir_ / "out");
-    r.err = slurp(dir_ / "err");
-    return r;
-  }
-
-  fs::path dir_;
-};
+using cli_testing::ChildRun;
+using cli_testing::Cli;
+using cli_testing::slurp;
 
 const std::string kGood =
     "[display_grid]\ncolumns = 2\nrows = 1\nwidth = 100\nheight = 80\nmullion_x = 10\n"
