@@ -77,8 +77,8 @@ int main(int argc, char** argv) {
       "Without --wall it uses the built-in default wall (walls/kd-2x2.toml).\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
       "3 output files could not be written, 4 --verify found pixels out of place.\n"
-      "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2 or "
-      "nDisplay (tilelayout import --help)."};
+      "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2, "
+      "nDisplay or in an MPCDI calibration (tilelayout import --help)."};
   std::string wall_path;
   std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
@@ -150,8 +150,8 @@ int main(int argc, char** argv) {
       "maps to what: docs/wall-import.md.\n"
       "Exit status: 0 written, 1 the file cannot be imported (one line naming the file and the "
       "field, e.g. config.json: surfaces[0].screenCountX: expected a positive integer, got "
-      "\"two\"; cal.mpcdi: mpcdi.xml:3: MPCDI.profile: \"3d\" is the 3D media profile: ...), "
-      "\"two\"), 2 usage error, 3 an output file could not be written.");
+      "\"two\"; cal.mpcdi: mpcdi.xml:2: MPCDI.profile: \"3d\" is the 3D media profile: ...), "
+      "2 usage error, 3 an output file could not be written.");
   import_command
       ->add_option("FILE", import_options.file, "the configuration (JSON) or MPCDI calibration")
       ->required()
