@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "cli_run.hpp"
+#include "image/level_map.hpp"
 #include "image/png_io.hpp"
+#include "tilelayout/blend_map.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -50,13 +54,13 @@ TEST_F(Cli, MpcdiImportGivesTheWarpedProjectorsWithTheirMaps) {
   const Wall imported = load_wall(wall);
   const Wall original = load_wall(std::string(L2_WALLS_DIR) + "/projectors-2x1-warped.toml");
   ASSERT_EQ(imported.displays.size(), 2u);
-  const int x[] = {0, 960};
+  const int left_of[] = {0, 960};
   const char* names[] = {"d0-left", "d1-right"};
   for (int i = 0; i < 2; ++i) {
     const Display& d = imported.displays[i];
     EXPECT_EQ(d.width, 1024);
     EXPECT_EQ(d.height, 768);
-    EXPECT_EQ(d.canvas_x, x[i]);
+    EXPECT_EQ(d.canvas_x, left_of[i]);
     EXPECT_EQ(d.canvas_y, 0);
     EXPECT_EQ(d.warp, std::string("imported.calibration/") + names[i] + "-warp.pfm");
     EXPECT_EQ(d.alpha, std::string("imported.calibration/") + names[i] + "-alpha.png");
@@ -78,6 +82,30 @@ TEST_F(Cli, MpcdiImportGivesTheWarpedProjectorsWithTheirMaps) {
   EXPECT_EQ(right.at(0, 0).r, 2);
   EXPECT_EQ(right.at(63, 0).r, 253);
   EXPECT_EQ(right.at(64, 0).r, 255);
+  // The light the two walls send: the imported alpha maps (8 bits, alpha_gamma 2.2) against the
+  // original's generated blend (weights in 1/4096 at gamma 2.2), every code value of every
+  // column: the same outside the overlap, within one code value across it (an alpha byte is a
+  // coarser step than a blend weight).
+  for (int i = 0; i < 2; ++i) {
+    const std::vector<std::uint16_t> weights = blend_weights(original, i);
+    const LevelMap& level = *imported.displays[i].level_map;
+    int worst = 0;
+    for (int x = 0; x < 1024; ++x) {
+      const ColourTable blend = blend_table(weights[static_cast<std::size_t>(x)], 2.2);
+      for (int in = 0; in < 256; ++in) {
+        const auto shown = static_cast<int>(
+            (static_cast<std::uint64_t>(in) * level.gain[static_cast<std::size_t>(x)] +
+             level.offset[static_cast<std::size_t>(x)] + kLevelOne / 2) /
+            kLevelOne);
+        const int diff = std::abs(shown - blend.channel[0][static_cast<std::size_t>(in)]);
+        if (weights[static_cast<std::size_t>(x)] == kBlendOne) {
+          EXPECT_EQ(diff, 0) << x << " " << in;
+        }
+        worst = std::max(worst, diff);
+      }
+    }
+    EXPECT_LE(worst, 1) << "display " << i;
+  }
   // tilelayout --wall plans it, and says what each display carries.
   const ChildRun planned = run("--wall '" + wall.string() + "'");
   EXPECT_EQ(planned.status, 0) << planned.err;
