@@ -223,5 +223,15 @@ TEST(WallImportMpcdi, AbsurdValues) {
             "(--display-gamma sets the projectors' gamma)");
 }
 
+TEST(WallImportMpcdi, AZipGivenToTheJsonImporterSaysWhatItIs) {
+  try {
+    import_wall(std::string("PK\x03\x04\x14\x00", 6), "cal.mpcdi");
+    ADD_FAILURE() << "imported a zip as JSON";
+  } catch (const LayoutError& e) {
+    EXPECT_STREQ(e.what(),
+                 "cal.mpcdi: an MPCDI archive (a zip file): its mpcdi.xml is read by import_mpcdi");
+  }
+}
+
 }  // namespace
 }  // namespace l2::mpcdi_tests
