@@ -88,15 +88,17 @@ void note_unused(const XmlAt& at, const std::vector<std::string>& used, WallDraf
 
 // The path a fileset's element names, which the archive must hold; the name it is given.
 // The key line that names it: `key = "FOLDER/dN-ID-KIND.EXT"  # ENTRY: PATH`.
+// `map`: an alpha or beta map, which must be the display's size.
 std::string archive_file(const XmlAt& element, const Context& c, int display, const std::string& id,
-                         std::string_view kind, std::string_view ext) {
+                         std::string_view kind, std::string_view ext,
+                         const DraftDisplay* map = nullptr) {
   std::string path = element.child_text("path");
   const std::string entry = path.rfind("./", 0) == 0 ? path.substr(2) : path;
   if (std::find(c.entries.begin(), c.entries.end(), entry) == c.entries.end())
     element.child("path").fail("", fmt::format("{} is not in the archive", quoted_value(path)));
   const std::string out =
       fmt::format("{}/d{}-{}-{}.{}", c.options.maps_folder, display, name_part(id), kind, ext);
-  c.files.push_back({entry, out});
+  c.files.push_back({entry, out, map ? map->width : 0, map ? map->height : 0});
   return fmt::format("{} = {}  # {} of the archive: {}", kind, toml_quoted(out),
                      quoted_value(entry), element.path());
 }
@@ -122,7 +124,7 @@ void check_depths(const XmlAt& map, WallDraft& draft) {
 void read_alpha(const XmlAt& alpha, const Context& c, int display, const std::string& id,
                 DraftDisplay& d) {
   check_depths(alpha, c.draft);
-  d.keys.push_back(archive_file(alpha, c, display, id, "alpha", "png"));
+  d.keys.push_back(archive_file(alpha, c, display, id, "alpha", "png", &d));
   const double gamma = c.options.display_gamma;
   const double embedded = alpha.child_number_or("gammaEmbedded", 0.1, 10, gamma);
   if (!alpha.child("gammaEmbedded").present()) {
@@ -162,7 +164,7 @@ void read_fileset(const XmlAt& fileset, const Context& c, int display, const std
   const XmlAt beta = fileset.child("betaMap");
   if (beta.present()) {
     check_depths(beta, c.draft);
-    d.keys.push_back(archive_file(beta, c, display, id, "beta", "png"));
+    d.keys.push_back(archive_file(beta, c, display, id, "beta", "png", &d));
   }
   note_unused(fileset, {"geometryWarpFile", "alphaMap", "betaMap"}, c.draft);
 }

@@ -128,6 +128,32 @@ TEST_F(Cli, MpcdiImportWithoutWritePrintsTheWallAndExtractsNothing) {
   EXPECT_FALSE(fs::exists("projectors-2x1-warped.calibration"));
 }
 
+TEST_F(Cli, MpcdiImportResamplesACoarserMap) {
+  // A 2x1 alpha map, 0 and 255, for a 64x48 projector: column x samples the map at
+  // (x + 0.5) * 2 / 64 - 0.5, so 31 at 0.484375 (123.5 of 255, to 124) and 32 at 0.515625
+  // (131.48, to 131); the edges keep the map's edge values.
+  const fs::path cal = dir_ / "coarse.mpcdi";
+  const std::vector<std::uint8_t> map = {0, 255};
+  write_zip(cal, {{"mpcdi.xml", kOneRegion}, {"a.png", encode_grey_png(2, 1, map)}});
+  const ChildRun r =
+      run("import '" + cal.string() + "' --write '" + (dir_ / "w.toml").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: a.png: 2x1, resampled (bilinear) to its display's 64x48 as "
+                       "w.calibration/d0-r-alpha.png\n"),
+            std::string::npos)
+      << r.out;
+  PictureSource source;
+  const RgbImage alpha = read_png(dir_ / "w.calibration/d0-r-alpha.png", &source);
+  EXPECT_EQ(source.colour_channels, 1);
+  ASSERT_EQ(alpha.width(), 64);
+  ASSERT_EQ(alpha.height(), 48);
+  EXPECT_EQ(alpha.at(0, 0).r, 0);
+  EXPECT_EQ(alpha.at(31, 0).r, 124);
+  EXPECT_EQ(alpha.at(32, 47).r, 131);
+  EXPECT_EQ(alpha.at(63, 47).r, 255);
+  EXPECT_EQ(load_wall(dir_ / "w.toml").displays[0].alpha, "w.calibration/d0-r-alpha.png");
+}
+
 TEST_F(Cli, MpcdiImportRefusals) {
   const fs::path no_xml = dir_ / "no-xml.mpcdi";
   write_zip(no_xml, {{"a.png", "x"}});
@@ -143,19 +169,18 @@ TEST_F(Cli, MpcdiImportRefusals) {
   EXPECT_EQ(r.err, "tilelayout import: " + not_zip.string() +
                        ": not a zip archive (an MPCDI file is one): Not a zip archive\n");
 
-  // A map the wall cannot take (not its display's size): refused as the wall reads it back,
-  // and nothing left behind.
-  const fs::path small = dir_ / "small.mpcdi";
-  write_zip(small, {{"mpcdi.xml", kOneRegion},
-                    {"a.png", slurp(std::string(L2_WALLS_DIR) + "/calibration/keystone-0.pfm")}});
-  r = run("import '" + small.string() + "' --write '" + (dir_ / "w.toml").string() + "'");
+  // A map the wall cannot take (a colour PNG): refused as the wall reads it back, and nothing
+  // left behind.
+  RgbImage colour(64, 48);
+  const fs::path coloured = dir_ / "colour.mpcdi";
+  write_zip(coloured, {{"mpcdi.xml", kOneRegion}, {"a.png", encode_png(colour)}});
+  r = run("import '" + coloured.string() + "' --write '" + (dir_ / "w.toml").string() + "'");
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err.rfind("tilelayout import: " + small.string() +
-                            ": the imported wall does not load with its maps: " +
-                            (dir_ / "w.toml").string() + ":",
-                        0),
-            0u)
-      << r.err;
+  EXPECT_EQ(r.err,
+            "tilelayout import: " + coloured.string() +
+                ": the imported wall does not load with its maps: " + (dir_ / "w.toml").string() +
+                ":17: display[0].alpha: " + (dir_ / "w.calibration/d0-r-alpha.png").string() +
+                ": must be a grey PNG, got colour png\n");
   EXPECT_FALSE(fs::exists(dir_ / "w.toml"));
   EXPECT_FALSE(fs::exists(dir_ / "w.calibration"));
 

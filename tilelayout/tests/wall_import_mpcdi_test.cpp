@@ -93,6 +93,10 @@ TEST(WallImportMpcdi, RegionsBecomeDisplaysNamingTheirMaps) {
   EXPECT_EQ(wall.files[0].path, "wall.calibration/d0-l-alpha.png");
   EXPECT_EQ(wall.files[1].entry, "r/warp.pfm");
   EXPECT_EQ(wall.files[1].path, "wall.calibration/d1-r-warp.pfm");
+  // Maps carry their display's size (to be resampled to it when they differ); a warp none.
+  EXPECT_EQ(wall.files[0].width, 64);
+  EXPECT_EQ(wall.files[0].height, 48);
+  EXPECT_EQ(wall.files[1].width, 0);
   EXPECT_EQ(wall.files[2].path, "wall.calibration/d1-r-alpha.png");
   EXPECT_EQ(wall.files[3].path, "wall.calibration/d1-r-beta.png");
   EXPECT_NE(wall.toml.find("alpha_gamma = 2.2  # display gamma 2.2 / gammaEmbedded 1\n"),

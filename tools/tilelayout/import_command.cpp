@@ -14,6 +14,8 @@
 #include <memory>
 #include <sstream>
 
+#include "image/grey_resample.hpp"
+#include "image/png_io.hpp"
 #include "mpcdi_archive.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -24,6 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uint64_t kMaxMpcdiXmlBytes = 16 << 20;  // as import_mpcdi takes it
+constexpr int kMaxImportedMapSide = 4096;              // a display is at most 4095 a side
 
 // The reason is the system's (open(2) sets errno for the stream): "Not a directory" and so on.
 void write_text(const std::string& path, const std::string& text) {
@@ -55,10 +58,40 @@ ImportedWall import_archive(std::string bytes, const ImportOptions& o,
                       {maps_folder(o), o.display_gamma.value_or(2.2)});
 }
 
-// Extracts the maps beside the wall file `o.out`, then reads the wall with them as every
-// program will: a map the wall cannot take (another size than its display's) is refused here,
-// and what was extracted removed again.
-void extract_maps(const ImportedWall& wall, const MpcdiArchive& archive, const ImportOptions& o) {
+// An extracted alpha or beta map of another size than its display's, grey as the wall takes its
+// maps, resampled to the display's size in its place (a calibration's maps may be coarser than
+// its projectors' rasters); a note says so. A colour map is left for the wall to refuse.
+void fit_map(const fs::path& path, const ExtractedFile& f, const std::string& file,
+             std::vector<std::string>& notes) {
+  PictureSource source;
+  RgbImage map;
+  try {
+    map = read_png(path, &source, [&](int width, int height) {
+      if (width > kMaxImportedMapSide || height > kMaxImportedMapSide) {
+        throw LayoutError(fmt::format("{}x{}, larger than any projector's map (at most {} a side)",
+                                      width, height, kMaxImportedMapSide));
+      }
+    });
+  } catch (const std::runtime_error& e) {
+    throw LayoutError(fmt::format("{}: {}: {}", file, f.entry, e.what()));
+  }
+  if (source.format != "png" || source.colour_channels != 1) return;
+  if (map.width() == f.width && map.height() == f.height) return;
+  std::vector<std::uint8_t> grey(static_cast<std::size_t>(map.width()) * map.height());
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x)
+      grey[static_cast<std::size_t>(y) * map.width() + x] = map.at(x, y).r;
+  write_text(path.string(),
+             encode_grey_png(f.width, f.height,
+                             resample_grey(grey, map.width(), map.height(), f.width, f.height)));
+  notes.push_back(fmt::format("{}: {}x{}, resampled (bilinear) to its display's {}x{} as {}",
+                              f.entry, map.width(), map.height(), f.width, f.height, f.path));
+}
+
+// Extracts the maps beside the wall file `o.out` (resampling those of another size than their
+// display's), then reads the wall with them as every program will: a map the wall cannot take
+// is refused here, and what was extracted removed again.
+void extract_maps(ImportedWall& wall, const MpcdiArchive& archive, const ImportOptions& o) {
   const fs::path base = fs::path(o.out).parent_path();
   std::vector<fs::path> written;
   try {
@@ -67,6 +100,7 @@ void extract_maps(const ImportedWall& wall, const MpcdiArchive& archive, const I
       const std::string bytes = archive.read(f.entry);
       written.push_back(base / f.path);
       write_text(written.back().string(), bytes);
+      if (f.width > 0) fit_map(written.back(), f, o.file, wall.notes);
     }
     try {
       parse_wall(wall.toml, o.out);

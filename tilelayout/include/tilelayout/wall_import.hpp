@@ -23,6 +23,9 @@ inline constexpr std::string_view kImportFormatNames[] = {"tide", "sage2", "ndis
 struct ExtractedFile {
   std::string entry;
   std::string path;
+  // An alpha or beta map: the display's size, which the wall needs it at (a map of another size
+  // is resampled as it is extracted); 0 for a warp.
+  int width = 0, height = 0;
 };
 
 struct ImportedWall {
