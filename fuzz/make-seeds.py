@@ -4,6 +4,7 @@ of each format, from which libFuzzer mutates. Run from anywhere; the files are c
 import pathlib
 import shutil
 import struct
+import zipfile
 import zlib
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -69,9 +70,25 @@ for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml",
 
 # --- wall_import: the example configurations, first byte 0 (format told from the content) -----
 for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):
-    put("wall_import", config.name, b"\x00" + config.read_bytes())
+    if config.suffix in (".json", ".ndisplay"):
+        put("wall_import", config.name, b"\x00" + config.read_bytes())
 # A number past a double's range: nlohmann refuses it with another kind of exception.
 put("wall_import", "number-overflow", b"\x00" + b'{"surfaces": [{"displayWidth": 1e999}]}')
+
+# --- mpcdi_import: the example calibration's mpcdi.xml, and one of version 1.0 with notes ------
+with zipfile.ZipFile(HERE.parent / "examples" / "walls" / "imported" /
+                     "projectors-2x1-warped.mpcdi") as archive:
+    put("mpcdi_import", "projectors-2x1-warped.xml", archive.read("mpcdi.xml"))
+put("mpcdi_import", "version-1-notes.xml", b"""<?xml version="1.0"?>
+<MPCDI profile="2d" geometry="1" version="1.0"><display>
+<buffer id="a" xResolution="100" yResolution="50">
+<region id="r" x="0" y="0" xsize="0.6" ysize="1" xResolution="64" yResolution="48"><frame/></region>
+</buffer><buffer id="b" xResolution="64" yResolution="48">
+<region id="s" x="0" y="0" xsize="1" ysize="1" Xresolution="64" Yresolution="48"/></buffer></display>
+<files><fileset region="r"><geometryWarpFile><path>w.pfm</path><interpolation>cubic</interpolation>
+</geometryWarpFile><alphaMap><path>./a.png</path><bitDepth>16</bitDepth></alphaMap></fileset>
+<fileset region="s"><betaMap><path>right/beta.png</path></betaMap><distortionMap/></fileset></files>
+</MPCDI>""")
 
 # --- session_file: the example sessions, and a window of each fit -------------------------------
 for session in ("windows.toml", "desktop.toml"):

@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import vizserver_wire png_frame picture_header picture_file frame_delta control_line tuio)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import mpcdi_import vizserver_wire png_frame picture_header picture_file frame_delta control_line tuio)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
@@ -38,6 +38,8 @@ for h in "${harnesses[@]}"; do
   [[ $h == wall_file || $h == session_file ]] && limits=(-max_len=131072)
   # Wall configurations are a few kilobytes; the example nDisplay file is under 8 KB.
   [[ $h == wall_import ]] && limits=(-max_len=16384)
+  # An mpcdi.xml of a few projectors is 2 to 4 KB; 16 KB hold dozens of regions.
+  [[ $h == mpcdi_import ]] && limits=(-max_len=16384)
   # A warp of the largest display the harness picks (16x16 points) is 3 KB with its header.
   [[ $h == warp_pfm ]] && limits=(-max_len=4096)
   # Pictures: no one allocation past what the checks let a reader take (a picture decoded whole,

@@ -11,6 +11,7 @@ PACKAGES=(
   fonts-dejavu-core
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev libzstd-dev liblz4-dev
+  libtinyxml2-dev libzip-dev  # tilelayout import of MPCDI calibrations: mpcdi.xml, the zip archive
   libcpp-httplib-dev  # the control page's HTTP server (control_page/)
   liblo-dev  # OSC decoding of TUIO touch input (touch/)
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -26,7 +26,7 @@ Status check_png_bytes(std::string_view bytes, bool rows);
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
 Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp
 Result<TextMask> render_text(const char* text, int cap_height);        // text_oiio.cpp
-Status encode_rgb(int width, int height, const std::uint8_t* rgb,
-                  std::string* out);  // png_encode.cpp
+Status encode_pixels(int width, int height, int channels, const std::uint8_t* pixels,
+                     std::string* out);  // png_encode.cpp
 
 }  // namespace l2::png_codec

@@ -78,15 +78,17 @@ struct Codec {
   Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
-  // A PNG file's bytes, appended to *out.
-  Status (*encode_rgb)(int width, int height, const std::uint8_t* rgb, std::string* out);
+  // A PNG file's bytes, appended to *out: 8-bit RGB (`channels` 3) or grey (1), `pixels` row by
+  // row.
+  Status (*encode_pixels)(int width, int height, int channels, const std::uint8_t* pixels,
+                          std::string* out);
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v10";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v11";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -284,11 +284,11 @@ constexpr l2::png_codec::Codec kCodec{encode_file,
                                       l2::png_codec::open_regions,
                                       l2::png_codec::open_movie,
                                       l2::png_codec::render_text,
-                                      l2::png_codec::encode_rgb};
+                                      l2::png_codec::encode_pixels};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v10() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v11() {
   return &kCodec;
 }

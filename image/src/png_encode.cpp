@@ -1,5 +1,6 @@
 // PNG into memory, with libpng (the codec module, png_codec.hpp): pictures a program sends
-// rather than writes (the control page's displays). The same filter and compression as the
+// rather than writes (the control page's displays), and grey maps (an import's alpha and beta
+// maps). The same filter and compression as the
 // files write_rgb() writes, for the same reason: rendered pictures, encoded often.
 #include <png.h>
 
@@ -34,19 +35,19 @@ void no_flush(png_structp) {}
 
 // Only libpng's C frames lie between the setjmp here and a longjmp, and nothing in this frame
 // is changed after setjmp and read after the jump.
-bool png_write_steps(PngWrite& w, int width, int height, const std::uint8_t* rgb) {
+bool png_write_steps(PngWrite& w, int width, int height, int channels, const std::uint8_t* pixels) {
   if (setjmp(png_jmpbuf(w.png))) return false;  // NOLINT(cert-err52-cpp)
   png_set_write_fn(w.png, &w, append_bytes, no_flush);
   png_set_IHDR(w.png, w.info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+               channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
   png_set_compression_level(w.png, 1);
   png_write_info(w.png, w.info);
-  const std::size_t stride = static_cast<std::size_t>(width) * 3;
+  const std::size_t stride = static_cast<std::size_t>(width) * channels;
   for (int y = 0; y < height; ++y) {
     // libpng's row type is not const; it only reads the row.
-    png_write_row(w.png, const_cast<png_bytep>(rgb + stride * static_cast<std::size_t>(y)));
+    png_write_row(w.png, const_cast<png_bytep>(pixels + stride * static_cast<std::size_t>(y)));
   }
   png_write_end(w.png, nullptr);
   return true;
@@ -54,13 +55,15 @@ bool png_write_steps(PngWrite& w, int width, int height, const std::uint8_t* rgb
 
 }  // namespace
 
-Status encode_rgb(int width, int height, const std::uint8_t* rgb, std::string* out) {
+Status encode_pixels(int width, int height, int channels, const std::uint8_t* pixels,
+                     std::string* out) {
   PngWrite w;
   w.out = out;
   w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, write_failed, write_warned);
   if (w.png) w.info = png_create_info_struct(w.png);
   if (!w.png || !w.info) return Failure{"cannot encode: out of memory"};
-  if (!png_write_steps(w, width, height, rgb)) return Failure{"cannot encode: " + w.error};
+  if (!png_write_steps(w, width, height, channels, pixels))
+    return Failure{"cannot encode: " + w.error};
   return {};
 }
 

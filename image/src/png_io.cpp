@@ -105,8 +105,17 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
 std::string encode_png(const RgbImage& image) {
   const std::filesystem::path what("a PNG in memory");
   std::string bytes;
-  check(what,
-        png_codec::codec(what).encode_rgb(image.width(), image.height(), image.data(), &bytes));
+  check(what, png_codec::codec(what).encode_pixels(image.width(), image.height(), 3, image.data(),
+                                                   &bytes));
+  return bytes;
+}
+
+std::string encode_grey_png(int width, int height, std::span<const std::uint8_t> grey) {
+  if (width < 1 || height < 1 || grey.size() != static_cast<std::size_t>(width) * height)
+    throw std::invalid_argument("encode_grey_png: the bytes are not width x height");
+  const std::filesystem::path what("a grey PNG in memory");
+  std::string bytes;
+  check(what, png_codec::codec(what).encode_pixels(width, height, 1, grey.data(), &bytes));
   return bytes;
 }
 

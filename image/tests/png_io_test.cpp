@@ -95,6 +95,26 @@ std::string read_error(const std::filesystem::path& path) {
 
 // A scanned-out frame saved as grey or as JPEG was read (grey spread over RGB, JPEG decoded) and
 // its headers reported as damaged. Other pictures may still be grey or JPEG.
+TEST(PngIo, GreyPngsAreWrittenGrey) {
+  const std::vector<std::uint8_t> grey = {0, 1, 2, 127, 128, 255};
+  const std::string bytes = encode_grey_png(3, 2, grey);
+  const std::vector<std::uint8_t> file(bytes.begin(), bytes.end());
+  PictureSource source;
+  const auto path = temp_dir() / "grey-map.png";
+  std::ofstream(path, std::ios::binary) << bytes;
+  const RgbImage read = read_png(path, &source);
+  EXPECT_EQ(source.format, "png");
+  EXPECT_EQ(source.colour_channels, 1);
+  ASSERT_EQ(read.width(), 3);
+  ASSERT_EQ(read.height(), 2);
+  EXPECT_EQ(read.at(0, 0), (Rgb{0, 0, 0}));
+  EXPECT_EQ(read.at(2, 0), (Rgb{2, 2, 2}));
+  EXPECT_EQ(read.at(0, 1), (Rgb{127, 127, 127}));
+  EXPECT_EQ(read.at(2, 1), (Rgb{255, 255, 255}));
+  EXPECT_EQ(read_picture_bytes(file, "map"), read);
+  EXPECT_THROW(encode_grey_png(3, 3, grey), std::invalid_argument);
+}
+
 TEST(PngIo, ScannedFrameRefusesGreyAndJpeg) {
   const auto grey = write_bytes("grey-frame.png", kGreyPng);
   EXPECT_EQ(read_png(grey).width(), 2);

@@ -22,6 +22,9 @@ struct DraftDisplay {
   int x = 0, y = 0;           // top-left of its canvas rectangle, before the canvas is shifted
   Orientation orientation;
   std::string origin;  // where in the file it came from, for the comment beside it
+  // Further lines of its [[display]] entry, as written ("warp = \"w.pfm\"  # ..."): the files
+  // it names, which need not exist yet when the wall is planned.
+  std::vector<std::string> keys;
 };
 
 // Displays that are a grid of identical ones, in id order (row by row).

@@ -49,8 +49,10 @@ std::vector<std::string> pipeserver_hosts(const std::vector<std::string>& hosts,
   return out;
 }
 
+// `with_keys`: each display's further keys too. Planning reads the wall without them: the files
+// they name are written beside the wall file later, and the plan does not depend on them.
 std::string render(const WallDraft& d, const std::vector<DraftDisplay>& displays, const Choice& c,
-                   const std::vector<std::string>& hosts) {
+                   const std::vector<std::string>& hosts, bool with_keys) {
   std::string t;
   for (const std::string& line : d.header) t += "# " + comment_text(line) + "\n";
   if (!d.notes.empty()) {
@@ -75,6 +77,9 @@ std::string render(const WallDraft& d, const std::vector<DraftDisplay>& displays
       if (p.orientation.rotation != 0) t += fmt::format("rotation = {}\n", p.orientation.rotation);
       if (p.orientation.flip != Flip::None)
         t += fmt::format("flip = \"{}\"\n", kFlipNames[static_cast<int>(p.orientation.flip)]);
+      if (with_keys) {
+        for (const std::string& key : p.keys) t += key + "\n";
+      }
     }
   }
   t += fmt::format(
@@ -155,19 +160,19 @@ std::string emit_wall(const WallDraft& draft, const std::string& file,
         named > 0 ? pipeserver_hosts(draft.hosts, per) : std::vector<std::string>{};
     for (int tiles = 1; tiles <= 4 && base * per * tiles <= kMaxTiles; tiles *= 2) {
       Choice c{base * per, base * per * tiles};
-      const FitSuggestions fit = suggest_fit(parse_draft(render(draft, displays, c, hosts), file));
+      const FitSuggestions fit =
+          suggest_fit(parse_draft(render(draft, displays, c, hosts, false), file));
       if (fit.idle_pipeserver || !fit.smallest) continue;
       c.fb_width = fit.smallest->first;
       c.fb_height = fit.smallest->second;
-      std::string text = render(draft, displays, c, hosts);
-      const Wall wall = parse_draft(text, file);
+      const Wall wall = parse_draft(render(draft, displays, c, hosts, false), file);
       try {
         plan_layout(wall);  // what the user will run: it must plan
       } catch (const LayoutError& e) {
         throw LayoutError(fmt::format("{}: the imported wall does not plan: {}", file, e.what()));
       }
       hosts_out = hosts;
-      return text;
+      return render(draft, displays, c, hosts, true);
     }
   }
   throw LayoutError(fmt::format(

@@ -16,6 +16,8 @@ namespace {
 
 // Far more than any wall's configuration; a bound on what one import reads.
 constexpr std::size_t kMaxFileBytes = 16 << 20;
+// The first bytes of a zip file's first entry: an MPCDI archive.
+constexpr std::string_view kZipMagic = "PK\x03\x04";
 
 std::optional<ImportFormat> detect(const Json& doc) {
   if (doc.contains("nDisplay")) return ImportFormat::NDisplay;
@@ -29,6 +31,10 @@ std::optional<ImportFormat> detect(const Json& doc) {
 ImportedWall import_wall(std::string_view text, const std::filesystem::path& path,
                          std::optional<ImportFormat> format) {
   const std::string file = path.string();
+  if (format == ImportFormat::Mpcdi || text.starts_with(kZipMagic)) {
+    throw LayoutError(fmt::format(
+        "{}: an MPCDI archive (a zip file): its mpcdi.xml is read by import_mpcdi", file));
+  }
   if (text.size() > kMaxFileBytes) {
     throw LayoutError(fmt::format("{}: {} bytes, more than the {} a wall configuration may have",
                                   file, text.size(), kMaxFileBytes));
@@ -58,6 +64,8 @@ ImportedWall import_wall(std::string_view text, const std::filesystem::path& pat
     case ImportFormat::NDisplay:
       draft = import_ndisplay(root, stem);
       break;
+    case ImportFormat::Mpcdi:
+      break;  // refused above
   }
   ImportedWall out;
   out.format = *format;

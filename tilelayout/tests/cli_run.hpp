@@ -1,5 +1,5 @@
-// The tilelayout program run as a child process, for the tests of its words, files and exit
-// codes: each test in a folder of its own.
+// The real tilelayout executable run as a child process, for the tests of its command line:
+// its exit status and what it prints, in a folder of its own per test.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-namespace l2 {
+namespace l2::cli_testing {
 
 namespace fs = std::filesystem;
 
@@ -61,4 +61,4 @@ class Cli : public ::testing::Test {
   fs::path dir_;
 };
 
-}  // namespace l2
+}  // namespace l2::cli_testing

@@ -20,6 +20,11 @@
 namespace l2 {
 namespace {
 
+namespace fs = std::filesystem;
+using cli_testing::ChildRun;
+using cli_testing::Cli;
+using cli_testing::slurp;
+
 const std::string kGood =
     "[display_grid]\ncolumns = 2\nrows = 1\nwidth = 100\nheight = 80\nmullion_x = 10\n"
     "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 40\n"

@@ -10,6 +10,10 @@
 namespace l2 {
 namespace {
 
+using cli_testing::ChildRun;
+using cli_testing::Cli;
+namespace fs = std::filesystem;
+
 // 10 x 7 displays of 40x30 (70: two meshes, the left 5 columns and the right 5), one
 // pipeserver a display.
 const std::string kSeventy =

@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
       "--verify checks one mesh at a time, each report line after \"mesh <m>: \".\n"
       "Exit status: 0 plan printed, 1 invalid wall (one-line error on stderr), 2 usage error, "
       "3 output files could not be written, 4 --verify found pixels out of place.\n"
-      "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2 or "
-      "nDisplay (tilelayout import --help)."};
+      "tilelayout import FILE writes the wall file of a wall described for Tide, SAGE2, "
+      "nDisplay or in an MPCDI calibration (tilelayout import --help)."};
   std::string wall_path;
   std::string png_dir, scanout_dir, verify_dir;
   int parity = 0;
@@ -112,30 +112,46 @@ int main(int argc, char** argv) {
       "import",
       "Print the wall file of a wall already described in another system's configuration: "
       "Tide's JSON configuration (surfaces, processes), SAGE2's wall configuration (layout, "
-      "resolution, dimensions, displays) or an Unreal Engine nDisplay .ndisplay file (version "
-      "5: nodes, windows, viewports). The displays land where the file puts them, with rotation "
-      "and flip; one pipeserver per process or node the file names (else per display), the "
-      "framebuffers the smallest that hold the tiles. Comments in it say where each value came "
-      "from and what the wall file cannot carry (projection policies, cameras, stereo, warp "
-      "meshes), which are also printed as notes: on stderr, or on stdout with --out. What maps "
-      "to what: docs/wall-import.md.\n"
+      "resolution, dimensions, displays), an Unreal Engine nDisplay .ndisplay file (version "
+      "5: nodes, windows, viewports) or a VESA MPCDI calibration (.mpcdi: a zip of mpcdi.xml "
+      "and its maps; the 2D media profile, versions 1.0 and 2.0). The displays land where the "
+      "file puts them, with rotation and flip; one pipeserver per process or node the file "
+      "names (else per display), the framebuffers the smallest that hold the tiles. Comments in "
+      "it say where each value came from and what the wall file cannot carry (projection "
+      "policies, cameras, stereo, warp meshes), which are also printed as notes: on stderr, or "
+      "on stdout with --write. An MPCDI region becomes a display at its place in its buffer, "
+      "its geometry warp, alpha map and beta map extracted with --write into a folder beside "
+      "the wall file named after it (wall.toml: wall.calibration/) and named by warp, alpha, "
+      "alpha_gamma and beta; without --write the wall is printed and nothing extracted. What "
+      "maps to what: docs/wall-import.md.\n"
       "Exit status: 0 written, 1 the file cannot be imported (one line naming the file and the "
       "field, e.g. config.json: surfaces[0].screenCountX: expected a positive integer, got "
-      "\"two\"), 2 usage error, 3 an output file could not be written.");
-  import_command->add_option("FILE", import_options.file, "the configuration (JSON)")
+      "\"two\"; cal.mpcdi: mpcdi.xml:2: MPCDI.profile: \"3d\" is the 3D media profile: ...), "
+      "2 usage error, 3 an output file could not be written.");
+  import_command
+      ->add_option("FILE", import_options.file, "the configuration (JSON) or MPCDI calibration")
       ->required()
       ->check(CLI::ExistingFile);
   import_command
       ->add_option("--format", import_format,
-                   "the file's format: tide, sage2 or ndisplay (default: told from its content: "
-                   "\"nDisplay\" at the top is nDisplay, \"surfaces\" or \"processes\" Tide, "
-                   "\"layout\" or \"resolution\" SAGE2)")
-      ->check(CLI::IsMember({"tide", "sage2", "ndisplay"}));
+                   "the file's format: tide, sage2, ndisplay or mpcdi (default: told from its "
+                   "content: a zip file is MPCDI; in JSON \"nDisplay\" at the top is nDisplay, "
+                   "\"surfaces\" or \"processes\" Tide, \"layout\" or \"resolution\" SAGE2)")
+      ->check(CLI::IsMember({"tide", "sage2", "ndisplay", "mpcdi"}));
   import_command
       ->add_option("--write", import_options.out,
                    "write the wall file to FILE instead of printing it (then tilelayout --wall "
-                   "FILE and l2wall run --wall FILE take it)")
+                   "FILE and l2wall run --wall FILE take it); an MPCDI calibration's maps go "
+                   "into STEM.calibration/ beside it (FILE's name without its extension), and "
+                   "the wall is read back with them before it is written")
       ->type_name("FILE");
+  import_command
+      ->add_option("--display-gamma", import_options.display_gamma,
+                   "MPCDI only: the projectors' gamma, 1..4 (default 2.2): an alpha map with "
+                   "gamma G embedded (its gammaEmbedded) gets alpha_gamma = this / G, so that "
+                   "its weights land as light")
+      ->check(CLI::Range(1.0, 4.0))
+      ->type_name("G");
   import_command
       ->add_option(
           "--hostfile", import_options.hostfile,

@@ -23,6 +23,11 @@ void write_png(const std::filesystem::path& path, const RgbImage& image);
 // be loaded.
 std::string encode_png(const RgbImage& image);
 
+// The bytes of an 8-bit grey PNG of `grey` (width x height bytes, row by row): the maps a wall
+// reads as grey (alpha and beta maps), which RgbImage cannot hold. Throws std::invalid_argument
+// when `grey` is not width x height bytes, std::runtime_error as encode_png().
+std::string encode_grey_png(int width, int height, std::span<const std::uint8_t> grey);
+
 // The largest side read_png() accepts: every picture the project reads is an input frame
 // (8192 at most, the DVI link's limit) or one display (16384 at most, the vizserver's).
 inline constexpr int kMaxPictureSide = 16384;
