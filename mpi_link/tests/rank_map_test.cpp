@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 
@@ -22,6 +24,34 @@ TEST(RankMap, DefaultWallIsOneColumnOfFourInputs) {
   EXPECT_EQ(map.pipeservers_of_column[0], (std::vector<int>{0, 1, 2, 3}));
   EXPECT_EQ(map.displays_of_column[0], (std::vector<int>{0, 1, 2, 3}));
   for (const auto& columns : map.columns_of_pipeserver) EXPECT_EQ(columns, std::vector<int>{0});
+}
+
+// 65 displays (13 x 5): two meshes, each with its own columns. Mesh 0 is the left 7 columns of
+// displays (35: its columns 0-4) and pipeservers 0-1, mesh 1 the right 6 (30: columns 5-8)
+// and pipeservers 2-3.
+TEST(RankMap, EachMeshHasItsOwnColumns) {
+  const RankMap map =
+      make_rank_map(plan_layout(load_wall(L2_SOURCE_DIR "/l2wall/mpi/tests/two-meshes-13x5.toml")));
+  EXPECT_EQ(map.pipeservers, 4);
+  EXPECT_EQ(map.columns, 9);
+  EXPECT_EQ(map.size(), 14);
+  // Mesh 0 numbers its displays row by row over its 7 columns: wall display 15 (row 1, column
+  // 2) is its 9, in its column 1; wall display 7 is mesh 1's 0, in the wall's column 5, and
+  // wall display 64 (row 4, column 12) mesh 1's 29, in column 5 + 3.
+  EXPECT_EQ(map.column_of_display[15], 1);
+  EXPECT_EQ(map.column_of_display[7], 5);
+  EXPECT_EQ(map.column_of_display[64], 8);
+  EXPECT_EQ(map.displays_of_column[5], (std::vector<int>{7, 8, 9, 10, 11, 12, 20, 21}));
+  for (int c = 0; c < 9; ++c) {
+    const std::vector<int> mesh_pipeservers =
+        c < 5 ? std::vector<int>{0, 1} : std::vector<int>{2, 3};
+    for (const int s : map.pipeservers_of_column[static_cast<std::size_t>(c)]) {
+      EXPECT_NE(std::find(mesh_pipeservers.begin(), mesh_pipeservers.end(), s),
+                mesh_pipeservers.end())
+          << "column " << c << " pipeserver " << s;
+    }
+    EXPECT_FALSE(map.pipeservers_of_column[static_cast<std::size_t>(c)].empty()) << c;
+  }
 }
 
 TEST(RankMap, TwelveMonitorsAreTwoColumns) {

@@ -20,11 +20,12 @@ namespace {
 // The payload of every tile of `plan` on another column's displays: that column routes none of
 // it, so it travels black. What the column does read stays: every header (the router reads
 // each of a row) and the frame stamp, the first pixel of the first tile (pipeserver_set.hpp).
-std::vector<BlankRect> other_columns_strips(const PipeserverPlan& plan, int column) {
+std::vector<BlankRect> other_columns_strips(const RankMap& map, const PipeserverPlan& plan,
+                                            int column) {
   std::vector<BlankRect> out;
   for (std::size_t i = 0; i < plan.tiles.size(); ++i) {
     const PackedTile& t = plan.tiles[i];
-    if (Mesh::column_of_display(t.tile.display) == column) continue;
+    if (map.column_of_display[static_cast<std::size_t>(t.tile.display)] == column) continue;
     const int w = payload_columns(t.tile), h = t.tile.on_display.h;
     if (i == 0) {
       out.push_back({t.fb_x + 1, t.fb_y, w - 1, 1});
@@ -56,7 +57,7 @@ MpiRankLinks mpi_rank_links(const TileLayout& layout, int pipeserver, const Code
     // whole frame costs the same with black strips as without.
     const bool blank = !every_column && how != LinkCodec::Whole;
     columns.push_back(
-        {rank, how, blank ? other_columns_strips(plan, c) : std::vector<BlankRect>{}});
+        {rank, how, blank ? other_columns_strips(map, plan, c) : std::vector<BlankRect>{}});
   }
   MpiRankLinks links;
   links.link = std::make_unique<MpiDviSender>(std::move(columns), RankMap::kCoordinator,
@@ -70,6 +71,7 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, const CodecTo& codec,
                              std::shared_ptr<SentBytes> bytes_sent)
     : bytes_sent_(std::move(bytes_sent)) {
   const RankMap map = make_rank_map(layout);
+  column_of_display_ = map.column_of_display;
   for (int c = 0; c < map.columns; ++c) {
     column_ranks_.push_back(map.column_rank(c));
     whole_.push_back(codec(map.column_rank(c)) == LinkCodec::Whole);
@@ -80,7 +82,8 @@ MpiTileSender::MpiTileSender(const TileLayout& layout, const CodecTo& codec,
 
 void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
                               const std::uint8_t* rgb, std::size_t stride) {
-  const auto column = static_cast<std::size_t>(Mesh::column_of_display(t.display));
+  const auto column =
+      static_cast<std::size_t>(column_of_display_.at(static_cast<std::size_t>(t.display)));
   mpi_wire::TileMessage m{whole_[column] ? mpi_wire::kTileKind : mpi_wire::kTileDeltaKind,
                           frame,
                           static_cast<std::uint32_t>(t.display),

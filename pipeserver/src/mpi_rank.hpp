@@ -53,7 +53,8 @@ class MpiTileSender {
 
  private:
   std::vector<int> column_ranks_;
-  std::vector<std::uint32_t> sent_;  // by column: tiles of the open frame sent there
+  std::vector<int> column_of_display_;  // by display id (RankMap)
+  std::vector<std::uint32_t> sent_;     // by column: tiles of the open frame sent there
   std::vector<std::uint8_t> message_;
   std::vector<viz::TileDeltaEncoder> deltas_;  // by column
   std::vector<bool> whole_;  // by column: its tiles go whole, as kTileKind messages

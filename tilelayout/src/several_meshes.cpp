@@ -212,8 +212,7 @@ void require_one_mesh(const Wall& wall, std::string_view what) {
                                : wall.source.string() + ": ";
   throw LayoutError(fmt::format(
       "{}the wall's {} displays need {} meshes (a strip header addresses {}); {} drives one "
-      "mesh: l2wall run without --mpi runs every mesh, tilelayout --wall plans and --verify "
-      "checks them",
+      "mesh: l2wall run runs every mesh, tilelayout --wall plans and --verify checks them",
       file, wall.displays.size(), wall.mesh_count, kMaxDisplays, what));
 }
 

@@ -70,7 +70,7 @@ struct DisplayShown {
 struct Observation {
   std::int64_t refresh = 0;
   // The mesh of the column (tilelayout/several_meshes.hpp): its inputs' displays_fed are bits of
-  // that mesh's display ids. Not sent over MPI, which runs walls of one mesh.
+  // that mesh's display ids.
   int mesh = 0;
   std::vector<InputSeen> inputs;
   std::vector<StampsShown> stamps;

@@ -50,7 +50,7 @@ Tick decode_tick(Reader& in) {
 }
 
 Record encode(const Observation& o) {
-  Record r{o.refresh, static_cast<std::int64_t>(o.inputs.size())};
+  Record r{o.refresh, o.mesh, static_cast<std::int64_t>(o.inputs.size())};
   for (const InputSeen& i : o.inputs) {
     r.insert(r.end(), {i.pipeserver, i.present, i.idle, i.torn, i.parity,
                        static_cast<std::int64_t>(i.displays_fed), i.stamp});
@@ -66,6 +66,7 @@ Observation decode_observation(const Record& record) {
   Reader in(record);
   Observation o;
   o.refresh = in.next();
+  o.mesh = in.next_int();
   o.inputs.resize(in.count(kInputWords));
   for (InputSeen& i : o.inputs) {
     i.pipeserver = in.next_int();

@@ -36,6 +36,7 @@ class Column {
          ColumnShow* show)
       : layout_(layout),
         map_(map),
+        column_index_(column),
         pool_(o.threads),
         // Every refresh's layout is parsed: the prediction's second choice (router.hpp) would be
         // a second round trip to the coordinator.
@@ -193,12 +194,16 @@ class Column {
                      mpi_wire::kComposed);
       // Only this column's displays are kept (the assembler composes every display's image).
       for (std::size_t i = 0; i < f.displays.size(); ++i) {
-        if (column_.router().index_of_display(layout_.wall.displays[i].id) < 0)
-          f.displays[i] = RgbImage();
+        if (!own(layout_.wall.displays[i].id)) f.displays[i] = RgbImage();
       }
       composed_[f.frame] = std::move(f.displays);
       while (composed_.size() > 4) composed_.erase(composed_.begin());  // the run takes each
     }
+  }
+
+  // Whether display `id` (the wall's number) is one of this column's.
+  bool own(int id) const {
+    return map_.column_of_display.at(static_cast<std::size_t>(id)) == column_index_;
   }
 
   void send_composed(std::uint32_t frame) {
@@ -206,7 +211,7 @@ class Column {
     if (it == composed_.end()) throw std::runtime_error("asked for a frame not composed here");
     for (std::size_t i = 0; i < layout_.wall.displays.size(); ++i) {
       const int id = layout_.wall.displays[i].id;
-      if (column_.router().index_of_display(id) < 0) continue;  // another column's
+      if (!own(id)) continue;  // another column's
       const RgbImage& picture = it->second[i];
       MPI_Send(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
                RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
@@ -223,6 +228,7 @@ class Column {
 
   const TileLayout& layout_;
   const RankMap& map_;
+  int column_index_;
   WorkerPool pool_;
   BoardColumn column_;
   std::vector<ColumnInput> inputs_;

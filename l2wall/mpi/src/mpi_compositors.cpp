@@ -55,7 +55,7 @@ DisplayPictures MpiCompositors::pictures(int frame) {
       mpi_wire::send({mpi_wire::kFetchComposed, frame}, map_.column_rank(c), mpi_wire::kCommand);
     for (int c = 0; c < map_.columns; ++c) {
       for (const Display& d : layout_.wall.displays) {
-        if (Mesh::column_of_display(d.id) != c) continue;
+        if (map_.column_of_display[static_cast<std::size_t>(d.id)] != c) continue;
         RgbImage& picture = pictures_[d.id];
         if (picture.empty()) picture = RgbImage(d.width, d.height);
         MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,

@@ -23,7 +23,6 @@
 #include "mpi_link/mpi_wire.hpp"
 #include "mpi_link/rank_map.hpp"
 #include "tilelayout/planner.hpp"
-#include "tilelayout/several_meshes.hpp"
 #include "tilelayout/wall_file.hpp"
 
 namespace l2 {
@@ -158,9 +157,7 @@ int run_wall_mpi(const RunOptions& o) {
   std::optional<RankMap> map;
   bool balanced = false;
   try {
-    const Wall wall = o.wall.empty() ? default_wall() : load_wall(o.wall);
-    require_one_mesh(wall, "l2wall run --mpi");
-    layout = plan_layout(wall);
+    layout = plan_layout(o.wall.empty() ? default_wall() : load_wall(o.wall));
     balanced = run_balance(o, layout->wall).balancing();
     // Every rank builds the same map (the pipeservers too, from --mpi-control).
     map = make_rank_map(*layout, balanced);

@@ -21,6 +21,7 @@ Tick two_pipeserver_tick() {
 Observation five() {
   Observation o;
   o.refresh = 5;
+  o.mesh = 3;
   return o;
 }
 

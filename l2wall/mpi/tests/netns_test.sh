@@ -4,7 +4,8 @@
 # machines. Each display must be the one-machine run's bytes:
 #   1. the default wall over 3 hosts (render-a: coordinator + pipeservers 0-1, render-b:
 #      pipeservers 2-3, display-a: the column), both paths (--compare);
-#   2. a two-column wall with its columns on two hosts (display-a, display-b);
+#   2. a two-column wall with its columns on two hosts (display-a, display-b), and a wall of
+#      two meshes (65 displays) with each mesh's columns on a host of its own;
 #   3. pipeserver 2 killed, then stopped, on render-b: one line naming it with its host, exit
 #      non-zero, and nothing left running on any host;
 #   4. the coordinator (rank 0, on render-a) killed: every rank on the other hosts ends by
@@ -13,9 +14,9 @@
 #      pipeserver 2 killed on render-b, the run goes on over the other host's and says so, every
 #      frame rendered, nothing left running.
 # Exit 77 (skipped) where this machine cannot make network namespaces.
-# Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL
+# Usage: netns_test.sh L2WALL OUT CLUSTER_SH TWO_COLUMN_WALL TWO_MESH_WALL
 set -euo pipefail
-l2wall=$1 out=$2 cluster=$3 two_columns=$4
+l2wall=$1 out=$2 cluster=$3 two_columns=$4 two_meshes=$5
 frames=8
 rm -rf "$out" && mkdir -p "$out"
 source "$(dirname "$0")/rank_pid.sh"
@@ -61,6 +62,19 @@ grep -q "over 2 board column rank(s)" "$out/two-columns.txt" ||
   { echo "FAIL: not two column ranks"; cat "$out/two-columns.txt"; exit 1; }
 echo "two-column wall, its columns on display-a and display-b:"
 same_displays "$out/one-2col" "$out/two-columns"
+
+# Two meshes: ranks 0-4 (coordinator, pipeservers) on render-a, mesh 0's five columns on
+# display-a, mesh 1's four on display-b; both paths.
+"$l2wall" run --wall "$two_meshes" --frames $frames --refresh 0 --out "$out/one-2mesh" --no-progress >/dev/null
+bash "$cluster" --hosts render-a:5,display-a:5,display-b:4 -- "$l2wall" run --wall "$two_meshes" \
+  --mpi --path both --compare --frames $frames --refresh 0 --out "$out/two-meshes" --no-progress \
+  >"$out/two-meshes.txt" 2>&1 || { echo "FAIL: two meshes"; cat "$out/two-meshes.txt"; exit 1; }
+grep -q "over 9 board column rank(s)" "$out/two-meshes.txt" ||
+  { echo "FAIL: not nine column ranks"; cat "$out/two-meshes.txt"; exit 1; }
+grep -q "^compare: 520 display pictures identical byte for byte" "$out/two-meshes.txt" ||
+  { echo "FAIL: paths differ"; cat "$out/two-meshes.txt"; exit 1; }
+echo "wall of two meshes, mesh 0's columns on display-a, mesh 1's on display-b:"
+same_displays "$out/one-2mesh" "$out/two-meshes"
 
 # 3. Pipeserver 2 (rank 3, on render-b) killed, then stopped, mid-run: one line naming it with
 # its host, exit non-zero, nothing left on any host (cluster.sh names what it had to kill).

@@ -1,5 +1,6 @@
 // Who does what in an MPI run of a wall, from rank order (docs/mpi-design.md): rank 0 the
-// coordinator, ranks 1..S the pipeservers, ranks S+1..S+C the board columns of the wall's mesh.
+// coordinator, ranks 1..S the pipeservers, ranks S+1..S+C the board columns of the wall's mesh
+// (of each mesh in turn, for a wall of several: tilelayout/several_meshes.hpp).
 // Which columns each pipeserver's frames go to (the DVI repeaters: only the columns whose
 // displays its tiles land on). Pure logic: no MPI here.
 #pragma once
@@ -21,6 +22,7 @@ struct RankMap {
   std::vector<std::vector<int>> columns_of_pipeserver;  // ascending column numbers
   std::vector<std::vector<int>> pipeservers_of_column;  // ascending pipeserver numbers
   std::vector<std::vector<int>> displays_of_column;     // display ids, ascending
+  std::vector<int> column_of_display;                   // by display id
 
   int size() const { return 1 + pipeservers + columns; }
   int pipeserver_rank(int pipeserver) const { return 1 + pipeserver; }

@@ -55,9 +55,9 @@ TileLayout plan_several_meshes(const Wall& wall);
 std::string mesh_heading(const MeshPart& part, int board_rows, int board_columns);
 
 // Throws LayoutError when `wall` has several meshes, naming the file and saying what `what`
-// ("lightning2_emu", "l2wall run --mpi") cannot do: "walls/s.toml:7: the wall's 80 displays
-// need 2 meshes (a strip header addresses 64); l2wall run --mpi drives one mesh: l2wall run
-// without --mpi runs every mesh, tilelayout --wall plans and --verify checks them".
+// ("lightning2_emu") cannot do: "walls/s.toml:7: the wall's 80 displays need 2 meshes (a strip
+// header addresses 64); lightning2_emu drives one mesh: l2wall run runs every mesh, tilelayout
+// --wall plans and --verify checks them".
 void require_one_mesh(const Wall& wall, std::string_view what);
 
 // "8-15, 24-31, 40": ascending numbers as runs.
