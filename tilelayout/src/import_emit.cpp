@@ -123,9 +123,9 @@ Wall parse_draft(const std::string& text, const std::string& file) {
 
 void too_many_displays(const std::string& file, const std::string& where, long long count) {
   throw LayoutError(
-      fmt::format("{}: {}: {} displays, more than the {} a wall can address (ids "
-                  "0..{})",
-                  file, where, count, kMaxImportedDisplays, kMaxImportedDisplays - 1));
+      fmt::format("{}: {}: {} displays, more than the {} one mesh addresses, which is all an "
+                  "import makes (a wall of more is served by several meshes: docs/wall-file.md)",
+                  file, where, count, kMaxImportedDisplays));
 }
 
 std::string emit_wall(const WallDraft& draft, const std::string& file,

@@ -92,8 +92,8 @@ TEST(WallImportErrors, AbsurdSizesAreRefusedBeforeAnythingIsMade) {
 TEST(WallImportErrors, MoreThanSixtyFourDisplaysNamesTheCount) {
   EXPECT_EQ(error_of(tide(R"({"screenCountX": 9, "screenCountY": 8, "displayWidth": 100,
                               "displayHeight": 80})")),
-            "config.json: surfaces[0]: 72 displays, more than the 64 a wall can address (ids "
-            "0..63)");
+            "config.json: surfaces[0]: 72 displays, more than the 64 one mesh addresses, which is "
+            "all an import makes (a wall of more is served by several meshes: docs/wall-file.md)");
   std::string viewports;
   for (int i = 0; i < 65; ++i) {
     viewports += (i ? "," : "") + std::string("\"v") + std::to_string(i) +
@@ -103,8 +103,9 @@ TEST(WallImportErrors, MoreThanSixtyFourDisplaysNamesTheCount) {
                          "y": 0, "w": 10, "h": 10}, "viewports": {)" +
                          viewports + "}}}}}}",
                      "big.ndisplay"),
-            "big.ndisplay: nDisplay.cluster.nodes: 65 displays, more than the 64 a wall can "
-            "address (ids 0..63)");
+            "big.ndisplay: nDisplay.cluster.nodes: 65 displays, more than the 64 one mesh "
+            "addresses, which is all an import makes (a wall of more is served by several "
+            "meshes: docs/wall-file.md)");
 }
 
 TEST(WallImportErrors, NDisplayAngleOffTheQuarterTurns) {

@@ -1,6 +1,10 @@
 #include "column_messages.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "tilelayout/wall.hpp"
 
 namespace l2 {
 namespace {
@@ -67,6 +71,9 @@ Observation decode_observation(const Record& record) {
   Observation o;
   o.refresh = in.next();
   o.mesh = in.next_int();
+  if (o.mesh < 0 || o.mesh >= kMaxMeshes)
+    throw std::runtime_error(
+        fmt::format("an observation of mesh {}, not 0..{}", o.mesh, kMaxMeshes - 1));
   o.inputs.resize(in.count(kInputWords));
   for (InputSeen& i : o.inputs) {
     i.pipeserver = in.next_int();

@@ -48,10 +48,18 @@ TEST(ColumnMessages, ObservationRoundTrips) {
   EXPECT_EQ(decode_observation(encode(sent)), sent);
 }
 
-TEST(ColumnMessages, EmptyObservationIsFourWords) {
+// The refresh, the column's mesh and three counts of none.
+TEST(ColumnMessages, EmptyObservationIsFiveWords) {
   const mpi_wire::Record r = encode(five());
-  EXPECT_EQ(r, (mpi_wire::Record{5, 0, 0, 0}));
+  EXPECT_EQ(r, (mpi_wire::Record{5, 3, 0, 0, 0}));
   EXPECT_EQ(decode_observation(r), five());
+}
+
+TEST(ColumnMessages, AMeshOutOfRangeIsRefused) {
+  for (const std::int64_t mesh : {std::int64_t{-1}, std::int64_t{16}}) {
+    EXPECT_THROW(decode_observation(mpi_wire::Record{7, mesh, 0, 0, 0}), std::runtime_error)
+        << mesh;
+  }
 }
 
 TEST(ColumnMessages, CutRecordsAreRefused) {
@@ -66,7 +74,7 @@ TEST(ColumnMessages, CutRecordsAreRefused) {
 
 TEST(ColumnMessages, AHugeOrNegativeCountIsRefusedBeforeAnyAllocation) {
   for (const std::int64_t count : {std::int64_t{1} << 60, std::int64_t{-1}}) {
-    const mpi_wire::Record r{7, count, 0, 0};
+    const mpi_wire::Record r{7, 0, count, 0, 0};
     try {
       decode_observation(r);
       ADD_FAILURE() << "count " << count << " accepted";
