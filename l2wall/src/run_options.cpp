@@ -122,6 +122,13 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
     }
     return {};
   }
+  // A wall of several meshes is planned mesh by mesh, each with its own pipeservers: a
+  // re-tiling would have to move tiles within each mesh alone.
+  if (wall.mesh_count > 1) {
+    return Failure{fmt::format(
+        "--balance: balancing is for a wall of one mesh; this wall's {} displays need {} meshes",
+        wall.displays.size(), wall.mesh_count)};
+  }
   const std::string survive = survive_asked_by(o, wall);
   // By default a rank that dies ends the whole mpirun job: there would be no run left to go on.
   if (spec.survive_host_loss && place == RunPlace::MpiEndingOnLoss)

@@ -74,5 +74,20 @@ TEST(LiveRunMeshes, SixtyFiveDisplaysOnTwoMeshesShowThePictureOnBothPaths) {
   expect_clean(run);
 }
 
+// Balancing re-tiles the wall as a whole; a wall of several meshes is planned mesh by mesh.
+TEST(LiveRunMeshes, BalancingIsRefusedInOneLine) {
+  const ScratchDir dir("meshes-balance");
+  std::ofstream(dir / "wall.toml") << wall_text();
+  WallRun run("meshes-balance",
+              {"--wall", (dir / "wall.toml").string(), "--balance", "strips", "--frames", "3"});
+  const ExitStatus status = run.wait(60s);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(run.output().find("l2wall: --balance: balancing is for a wall of one mesh; this "
+                              "wall's 65 displays need 2 meshes\n"),
+            std::string::npos)
+      << run.output();
+  expect_clean(run);
+}
+
 }  // namespace
 }  // namespace l2
