@@ -44,10 +44,13 @@ struct Source {
 class RegionReader {
  public:
   virtual ~RegionReader() = default;
-  virtual int width() const = 0;
-  virtual int height() const = 0;
-  // Columns [x_begin, x_end) of row y (all within the picture) as 8-bit RGB into `rgb`.
-  virtual Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
+  // The picture's MIP levels (1: none), level 0 the picture itself, each level's sides half
+  // the level's before it (rounded either way, never under 1).
+  virtual int levels() const = 0;
+  virtual int width(int level) const = 0;
+  virtual int height(int level) const = 0;
+  // Columns [x_begin, x_end) of row y of `level` (all within it) as 8-bit RGB into `rgb`.
+  virtual Status read_row(int level, int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
 };
 
 // A movie's video stream decoded frame by frame into 8-bit RGB (image/movie_file.hpp).
@@ -86,7 +89,7 @@ struct Codec {
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v10";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v11";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -10,6 +10,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
@@ -41,25 +42,63 @@ struct CacheDeleter {
   void operator()(OIIO::ImageCache* cache) const { OIIO::ImageCache::destroy(cache); }
 };
 
+// Sides of more levels than this no picture has (a side of 2^31 halves to 1 in 31 steps).
+constexpr int kMaxLevels = 32;
+
+struct LevelSides {
+  int width, height;
+};
+
+// Whether `side` is half of `before`, rounded down or up, and never under 1: how every writer
+// of a pyramid (maketx, a TIFF's reduced-resolution directories, OpenEXR's levels) sizes a level.
+bool halves(int before, int side) {
+  return side == std::max(1, before / 2) || side == std::max(1, (before + 1) / 2);
+}
+
+// The sides of the picture's MIP levels as the cache reads them, level 0 first, or why one
+// level does not halve the one before it (a level of another size would be sampled at pixels
+// the picture scene's rule does not name).
+Result<std::vector<LevelSides>> level_sides(OIIO::ImageCache& cache, OIIO::ustring file,
+                                            const OIIO::ImageSpec& spec) {
+  std::vector<LevelSides> sides{{spec.width, spec.height}};
+  int levels = 1;
+  if (!cache.get_image_info(file, 0, 0, OIIO::ustring("miplevels"), OIIO::TypeInt, &levels))
+    levels = 1;
+  for (int level = 1; level < std::min(levels, kMaxLevels); ++level) {
+    OIIO::ImageSpec next;
+    if (!cache.get_imagespec(file, next, 0, level)) break;
+    const LevelSides& before = sides.back();
+    if (!halves(before.width, next.width) || !halves(before.height, next.height)) {
+      return Failure{"cannot read: MIP level " + std::to_string(level) + " is " +
+                     std::to_string(next.width) + "x" + std::to_string(next.height) +
+                     ", not half of level " + std::to_string(level - 1) + "'s " +
+                     std::to_string(before.width) + "x" + std::to_string(before.height)};
+    }
+    sides.push_back({next.width, next.height});
+  }
+  return sides;
+}
+
 class CacheRegions final : public RegionReader {
  public:
   CacheRegions(std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache, OIIO::ustring file,
-               const OIIO::ImageSpec& spec)
+               const OIIO::ImageSpec& spec, std::vector<LevelSides> sides)
       : cache_(std::move(cache)),
         file_(file),
-        width_(spec.width),
-        height_(spec.height),
+        sides_(std::move(sides)),
         channels_(spec.nchannels >= 3 ? 3 : 1) {}
 
-  int width() const override { return width_; }
-  int height() const override { return height_; }
+  int levels() const override { return static_cast<int>(sides_.size()); }
+  int width(int level) const override { return sides_[static_cast<std::size_t>(level)].width; }
+  int height(int level) const override { return sides_[static_cast<std::size_t>(level)].height; }
 
-  Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) override {
+  Status read_row(int level, int y, int x_begin, int x_end, std::uint8_t* rgb) override {
     // Grey is read into the start of the row and spread over R, G and B from the end back.
-    if (!cache_->get_pixels(file_, 0, 0, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
+    if (!cache_->get_pixels(file_, 0, level, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
                             OIIO::TypeDesc::UINT8, rgb)) {
       const std::string why = one_line(cache_->geterror());
-      return Failure{"cannot read row " + std::to_string(y) + ": " +
+      return Failure{"cannot read row " + std::to_string(y) +
+                     (level > 0 ? " of MIP level " + std::to_string(level) : std::string()) + ": " +
                      (why.empty() ? "damaged" : why)};
     }
     if (channels_ == 1) {
@@ -73,7 +112,8 @@ class CacheRegions final : public RegionReader {
  private:
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache_;
   OIIO::ustring file_;
-  int width_, height_, channels_;
+  std::vector<LevelSides> sides_;
+  int channels_;
 };
 
 }  // namespace
@@ -140,7 +180,10 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   if (!cache->get_imagespec(file, spec)) {
     return Failure{"cannot read: " + one_line(cache->geterror())};
   }
-  return std::unique_ptr<RegionReader>(new CacheRegions(std::move(cache), file, spec));
+  Result<std::vector<LevelSides>> sides = level_sides(*cache, file, spec);
+  if (!sides.ok()) return Failure{sides.reason()};
+  return std::unique_ptr<RegionReader>(
+      new CacheRegions(std::move(cache), file, spec, std::move(sides).value()));
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
 }

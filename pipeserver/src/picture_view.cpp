@@ -73,6 +73,19 @@ long source_index(double centre, double scale, int size, int x) {
   return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
 }
 
+int mip_level(const SourceView& view, int levels) {
+  const double finest = std::min(view.scale_x, view.scale_y);
+  int level = 0;
+  // Doubling, not log2: 2^L <= scale decided exactly, the same on every machine.
+  while (level + 1 < levels && std::ldexp(1.0, level + 1) <= finest) ++level;
+  return level;
+}
+
+long level_index(long index, int size, int level, int level_size) {
+  if (index < 0 || index >= size) return -1;
+  return std::min(index >> level, static_cast<long>(level_size) - 1);
+}
+
 namespace {
 
 // The source indices [first, last + 1) pixels [begin, end) of an axis show inside [0, size):

@@ -1,6 +1,7 @@
 // `picture`: a still picture, of any size and format OpenImageIO reads, panned and zoomed
 // across the canvas (picture_view.hpp). Each tile reads only the rows and columns it shows,
-// through an image cache of bounded size, so a pipeserver never holds the whole picture. In a
+// through an image cache of bounded size, so a pipeserver never holds the whole picture; zoomed
+// out, from the file's MIP level picture_view.hpp names, when it has levels. In a
 // session's window the picture stays still, laid on the window as its fit says.
 #include "image/picture_regions.hpp"
 #include "scene_common.hpp"
@@ -22,10 +23,12 @@ class PictureScene : public Scene {
     const SourceView view =
         still_ ? movie_view(picture_.width(), picture_.height(), canvas, fit_)
                : picture_view(frame_, picture_.width(), picture_.height(), canvas, fit_);
+    const int level = mip_level(view, picture_.levels());
     fill_from_source(
-        view, picture_.width(), picture_.height(), canvas, on_canvas,
-        [this](int y, int x_begin, int x_end, std::uint8_t* out) {
-          picture_.read_row(y, x_begin, x_end, out);
+        view, picture_.width(), picture_.height(),
+        {level, picture_.width(level), picture_.height(level)}, canvas, on_canvas,
+        [this, level](int y, int x_begin, int x_end, std::uint8_t* out) {
+          picture_.read_row(level, y, x_begin, x_end, out);
         },
         rgb);
     return true;
