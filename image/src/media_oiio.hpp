@@ -23,9 +23,10 @@ Status check_png_data(const char* path);
 // The same for a PNG in memory (an icon's), its rows decoded only with `rows`.
 Status check_png_bytes(std::string_view bytes, bool rows);
 
-Result<std::unique_ptr<RegionReader>> open_regions(const char* path);  // regions_oiio.cpp
-Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);    // movie_ffmpeg.cpp
-Result<TextMask> render_text(const char* text, int cap_height);        // text_oiio.cpp
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path,
+                                                   float cache_megabytes);  // regions_oiio.cpp
+Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);         // movie_ffmpeg.cpp
+Result<TextMask> render_text(const char* text, int cap_height);             // text_oiio.cpp
 Status encode_rgb(int width, int height, const std::uint8_t* rgb,
                   std::string* out);  // png_encode.cpp
 

@@ -7,8 +7,10 @@
 
 namespace l2 {
 
-PictureRegions::PictureRegions(const std::filesystem::path& path) : path_(path) {
-  auto opened = png_codec::codec(path).open_regions(path.c_str());
+PictureRegions::PictureRegions(const std::filesystem::path& path, double cache_megabytes)
+    : path_(path) {
+  auto opened =
+      png_codec::codec(path).open_regions(path.c_str(), static_cast<float>(cache_megabytes));
   if (!opened.ok()) throw std::runtime_error(path.string() + ": " + opened.reason());
   reader_ = std::move(opened).value();
   width_ = reader_->width(0);

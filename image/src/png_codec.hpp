@@ -78,7 +78,8 @@ struct Codec {
   // `format_hint` (an extension, "tga"). The bytes are only read.
   Status (*read_rgb_bytes)(const std::uint8_t* bytes, std::size_t size, const char* format_hint,
                            RgbSink sink, Source* source);
-  Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
+  // Through an image cache holding at most `cache_megabytes` of decoded tiles.
+  Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path, float cache_megabytes);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
   // A PNG file's bytes, appended to *out.
@@ -89,7 +90,7 @@ struct Codec {
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v11";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v12";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -469,6 +469,6 @@ constexpr l2::png_codec::Codec kCodec{encode_file,
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v11() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v12() {
   return &kCodec;
 }

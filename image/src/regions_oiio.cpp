@@ -22,11 +22,7 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 
-// Bounds what a reader holds in decoded tiles, whatever the picture's size.
-constexpr float kCacheMegabytes = 64;
-// A picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
-// evicted is decoded again from the first row. Up to this size the cache holds all of it, so
-// it is decoded once, not at every frame that samples it across.
+// An interlaced PNG is read whole whatever the cache's limit; past this size it is refused.
 constexpr float kWholeScanlinePictureMegabytes = 512;
 // Pictures stored as scanlines are read in tiles of this side as well.
 constexpr int kAutoTile = 64;
@@ -144,7 +140,10 @@ Result<double> png_megabytes(const char* path) {
   return megabytes;
 }
 
-Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
+// The cache holds at most `cache_megabytes` of decoded tiles, whatever the picture's size. A
+// picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
+// evicted is decoded again from the first row; one that fits in the limit is decoded once.
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
   const Result<double> png = png_megabytes(path);
   if (!png.ok()) return Failure{png.reason()};
   // What a reader would trust of the header, checked first (picture_checks.hpp).
@@ -152,7 +151,6 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   const Result<HeaderFacts> facts = check_before_open(bytes);
   if (!facts.ok()) return Failure{facts.reason()};
   // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
-  float cache_megabytes = kCacheMegabytes;
   {
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
@@ -167,10 +165,6 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
     }
     if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
       return Failure{s.reason()};
-    const double decoded_mb =
-        std::max(*png, double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20));
-    if (spec.tile_width == 0)
-      cache_megabytes = std::max(cache_megabytes, whole_picture_cache(decoded_mb));
   }
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);

@@ -101,7 +101,8 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
     if (!options.fit.empty() && !fit)
       throw std::invalid_argument("--fit: expected fit, fill or stretch, got " + options.fit);
     if (name == "picture")
-      return detail::make_picture_scene(options.content, fit.value_or(SourceFit::Fill));
+      return detail::make_picture_scene(options.content, fit.value_or(SourceFit::Fill),
+                                        options.picture_cache_mb);
     return detail::make_movie_scene(options.content, options.movie_rate,
                                     fit.value_or(SourceFit::Fit));
   }

@@ -4,6 +4,7 @@
 // out, from the file's MIP level picture_view.hpp names, when it has levels. In a
 // session's window the picture stays still, laid on the window as its fit says.
 #include "image/picture_regions.hpp"
+#include "pipeserver/picture_cache.hpp"
 #include "scene_common.hpp"
 #include "source_fill.hpp"
 
@@ -13,8 +14,10 @@ namespace {
 
 class PictureScene : public Scene {
  public:
-  PictureScene(const std::filesystem::path& file, SourceFit fit, bool still)
-      : picture_(file), fit_(fit), still_(still) {
+  PictureScene(const std::filesystem::path& file, SourceFit fit, double cache_mb, bool still)
+      : picture_(file, cache_mb > 0 ? cache_mb : default_picture_cache_mb(physical_memory_mb(), 1)),
+        fit_(fit),
+        still_(still) {
     lit_ = false;
   }
   const char* name() const override { return "picture"; }
@@ -47,8 +50,8 @@ class PictureScene : public Scene {
 }  // namespace
 
 std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit,
-                                          bool still) {
-  return std::make_unique<PictureScene>(file, fit, still);
+                                          double cache_mb, bool still) {
+  return std::make_unique<PictureScene>(file, fit, cache_mb, still);
 }
 
 }  // namespace l2::detail

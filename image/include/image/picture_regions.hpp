@@ -15,11 +15,19 @@ namespace png_codec {
 class RegionReader;
 }
 
+// The image cache's limit where no one says (--picture-cache-mb): what a picture stored as
+// scanlines took to be held whole before the limit could be set.
+inline constexpr double kDefaultPictureCacheMegabytes = 512;
+
 class PictureRegions {
  public:
-  // Throws std::runtime_error naming the file and why, in one line ("pic.tif: cannot read: a
-  // TIFF file: ..."), when it is missing, damaged, empty or not a picture.
-  explicit PictureRegions(const std::filesystem::path& path);
+  // Through an image cache holding at most `cache_megabytes` of decoded tiles: a picture stored
+  // as scanlines (PNG, JPEG) that fits in it is decoded once; a larger one is decoded again
+  // for the rows the cache let go. Throws std::runtime_error naming the file and why, in one
+  // line ("pic.tif: cannot read: a TIFF file: ..."), when it is missing, damaged, empty or not
+  // a picture.
+  explicit PictureRegions(const std::filesystem::path& path,
+                          double cache_megabytes = kDefaultPictureCacheMegabytes);
   ~PictureRegions();
   PictureRegions(const PictureRegions&) = delete;
   PictureRegions& operator=(const PictureRegions&) = delete;
