@@ -25,8 +25,11 @@ Status check_png_bytes(std::string_view bytes, bool rows);
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path,
                                                    float cache_megabytes);  // regions_oiio.cpp
-Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);         // movie_ffmpeg.cpp
-Result<TextMask> render_text(const char* text, int cap_height);             // text_oiio.cpp
+Result<PictureShape> picture_shape(const char* path);                       // regions_oiio.cpp
+Status make_tiled_copy(const char* source, const char* target,
+                       Progress progress);                           // tiled_copy_oiio.cpp
+Result<std::unique_ptr<MovieDecoder>> open_movie(const char* path);  // movie_ffmpeg.cpp
+Result<TextMask> render_text(const char* text, int cap_height);      // text_oiio.cpp
 Status encode_rgb(int width, int height, const std::uint8_t* rgb,
                   std::string* out);  // png_encode.cpp
 

@@ -66,6 +66,19 @@ class MovieDecoder {
   virtual Result<bool> next_frame(std::uint8_t* rgb) = 0;
 };
 
+// A picture's sides and how it is stored, after the checks open_regions makes (picture_shape).
+struct PictureShape {
+  int width = 0, height = 0;
+  bool tiled = false;     // stored in tiles (a tiled TIFF, OpenEXR): any part read alone
+  double decoded_mb = 0;  // its pixels decoded as 8-bit RGB, in MiB
+};
+
+// Told how far a long job has got, a fraction in [0, 1].
+struct Progress {
+  void* context;
+  void (*tell)(void* context, double done);
+};
+
 // A failure's reason does not name the file. read_rgb() is ok, reading nothing, when the sink's
 // `accept` refused the size (the caller knows why).
 struct Codec {
@@ -84,13 +97,17 @@ struct Codec {
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
   // A PNG file's bytes, appended to *out.
   Status (*encode_rgb)(int width, int height, const std::uint8_t* rgb, std::string* out);
+  Result<PictureShape> (*picture_shape)(const char* path);
+  // `source` (any picture, read in rows) copied into `target`, a tiled TIFF with MIP levels,
+  // holding a band of rows of each level at a time (tiled_copy_oiio.cpp).
+  Status (*make_tiled_copy)(const char* source, const char* target, Progress progress);
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v12";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v13";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

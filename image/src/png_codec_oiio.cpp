@@ -464,11 +464,13 @@ constexpr l2::png_codec::Codec kCodec{encode_file,
                                       l2::png_codec::open_regions,
                                       l2::png_codec::open_movie,
                                       l2::png_codec::render_text,
-                                      l2::png_codec::encode_rgb};
+                                      l2::png_codec::encode_rgb,
+                                      l2::png_codec::picture_shape,
+                                      l2::png_codec::make_tiled_copy};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v12() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v13() {
   return &kCodec;
 }

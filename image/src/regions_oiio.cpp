@@ -143,29 +143,43 @@ Result<double> png_megabytes(const char* path) {
 // The cache holds at most `cache_megabytes` of decoded tiles, whatever the picture's size. A
 // picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
 // evicted is decoded again from the first row; one that fits in the limit is decoded once.
-Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
+namespace {
+
+// The picture's header checked (picture_checks.hpp: what a reader would trust of it, first),
+// then opened once directly, so that a file that cannot be read gets the same one-line reason
+// as read_png: its sides and storage, or why not.
+Result<PictureShape> checked_shape(const char* path) {
   const Result<double> png = png_megabytes(path);
   if (!png.ok()) return Failure{png.reason()};
-  // What a reader would trust of the header, checked first (picture_checks.hpp).
   const PictureBytes bytes = file_bytes(path);
   const Result<HeaderFacts> facts = check_before_open(bytes);
   if (!facts.ok()) return Failure{facts.reason()};
-  // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
-  {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) {
-      return Failure{open_failed(path)};
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.deep || spec.depth > 1) {
-      return Failure{"cannot read: a deep or volume image, not a picture"};
-    }
-    if (spec.width <= 0 || spec.height <= 0) {
-      return Failure{"cannot read: the picture has no pixels"};
-    }
-    if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
-      return Failure{s.reason()};
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return Failure{open_failed(path)};
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.deep || spec.depth > 1) {
+    return Failure{"cannot read: a deep or volume image, not a picture"};
   }
+  if (spec.width <= 0 || spec.height <= 0) {
+    return Failure{"cannot read: the picture has no pixels"};
+  }
+  if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
+    return Failure{s.reason()};
+  return PictureShape{spec.width, spec.height, spec.tile_width > 0,
+                      double(spec.width) * spec.height * 3 / (1 << 20)};
+}
+
+}  // namespace
+
+Result<PictureShape> picture_shape(const char* path) try {
+  return checked_shape(path);
+} catch (const std::exception& e) {
+  return Failure{std::string("cannot read: ") + e.what()};
+}
+
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
+  if (const Result<PictureShape> shape = checked_shape(path); !shape.ok())
+    return Failure{shape.reason()};
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);
   cache->attribute("autotile", kAutoTile);

@@ -4,6 +4,7 @@
 // out, from the file's MIP level picture_view.hpp names, when it has levels. In a
 // session's window the picture stays still, laid on the window as its fit says.
 #include "image/picture_regions.hpp"
+#include "image/tiled_copy.hpp"
 #include "pipeserver/picture_cache.hpp"
 #include "scene_common.hpp"
 #include "source_fill.hpp"
@@ -12,10 +13,16 @@ namespace l2::detail {
 
 namespace {
 
+// The cache's limit: the one given, else the machine's default for a pipeserver alone. A
+// picture stored as scanlines past it is read from its tiled copy (image/tiled_copy.hpp).
+double cache_limit(double cache_mb) {
+  return cache_mb > 0 ? cache_mb : default_picture_cache_mb(physical_memory_mb(), 1);
+}
+
 class PictureScene : public Scene {
  public:
   PictureScene(const std::filesystem::path& file, SourceFit fit, double cache_mb, bool still)
-      : picture_(file, cache_mb > 0 ? cache_mb : default_picture_cache_mb(physical_memory_mb(), 1)),
+      : picture_(picture_to_read(file, cache_limit(cache_mb)), cache_limit(cache_mb)),
         fit_(fit),
         still_(still) {
     lit_ = false;
