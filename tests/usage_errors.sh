@@ -177,6 +177,9 @@ bad_value "--content is an option of --scene picture, movie or vnc, not swap" pi
 bad_value "--scene movie needs --content FILE" l2wall run --scene movie
 bad_value "--picture-cache-mb is an option of --scene picture or session, not swap" l2wall run \
   --scene swap --picture-cache-mb 16
+bad_value "expected X,Y, two numbers (picture pixels), got 10" l2wall run --scene picture \
+  --content /etc/hostname --pan 10
+bad_value "--zoom is an option of --scene picture, not mesh" pipeserver --zoom 2 --out /tmp/x
 bad_value "0 is not a number in 1..100000" pipeserver --scene picture --content /etc/hostname \
   --picture-cache-mb 0 --out /tmp/x
 # NaN passed CLI::Range and made every pixel of the view NaN (a black wall).

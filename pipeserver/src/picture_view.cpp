@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 #include <utility>
 
 namespace l2 {
@@ -58,6 +60,31 @@ SourceView picture_view(int frame, int source_width, int source_height, const Ca
   const double reach_y = std::max(0.0, (h - canvas.height * sy) / 2.0);
   return {w / 2.0 + reach_x * std::sin(phase(frame, kPanPeriodX)),
           h / 2.0 + reach_y * std::sin(phase(frame, kPanPeriodY)), sx, sy};
+}
+
+SourceView fixed_view(const FixedView& fixed, int source_width, int source_height,
+                      const Canvas& canvas, SourceFit fit) {
+  const double w = source_width, h = source_height;
+  const auto [fit_x, fit_y] = fitted_scale(w, h, canvas, fit);
+  const double sx = fixed.zoom > 0 ? 1.0 / fixed.zoom : fit_x;
+  const double sy = fixed.zoom > 0 ? 1.0 / fixed.zoom : fit_y;
+  return {fixed.x.value_or(w / 2.0), fixed.y.value_or(h / 2.0), sx, sy};
+}
+
+bool parse_pan(std::string_view text, FixedView& fixed) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos) return false;
+  const auto number = [](std::string_view part, double& out) {
+    const std::string s(part);
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return !s.empty() && end == s.c_str() + s.size() && std::isfinite(out);
+  };
+  double x = 0, y = 0;
+  if (!number(text.substr(0, comma), x) || !number(text.substr(comma + 1), y)) return false;
+  fixed.x = x;
+  fixed.y = y;
+  return true;
 }
 
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas, SourceFit fit) {

@@ -72,12 +72,17 @@ long sampled(double centre, double scale, int size, int x) {
   return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
 }
 
-// Counts the display pixels that are not the pixel the rule names: level L the largest with
-// 2^L <= the smaller scale, at most the file's last; that level's pixel under the picture's.
-long wrong_pixels(const fs::path& file, const std::vector<Side>& sides, int frame,
-                  int* level_seen) {
-  SceneOptions options;
-  options.content = file;
+// What a test expects a view to show: the picture pixel at the canvas's centre and picture
+// pixels per canvas pixel, worked out by the test.
+struct Expected {
+  double centre_x, centre_y, scale;
+};
+
+// Counts the display pixels of frame `frame` of `options`' picture scene that are not the
+// pixel the rule names: level L the largest with 2^L <= the scale, at most the file's last;
+// that level's pixel under the picture's, black outside the picture.
+long wrong_pixels(const SceneOptions& options, const std::vector<Side>& sides, int frame,
+                  const Expected& v, int* level_seen) {
   auto scene = make_scene("picture", options);
   const TileLayout layout = test::small_layout(3, 40, 20, 120, 120);
   const Canvas canvas = canvas_of(layout.wall);
@@ -85,10 +90,9 @@ long wrong_pixels(const fs::path& file, const std::vector<Side>& sides, int fram
   for (int s = 0; s < 3; ++s) frames.push_back(Pipeserver(layout, s).render_frame(frame, *scene));
   const auto r = test::reassemble(layout.wall, frames);
   EXPECT_EQ(r.errors.total(), 0u);
-  const SourceView v = picture_view(frame, kWidth, kHeight, canvas);
   int level = 0;
   const int last = static_cast<int>(sides.size()) - 1;
-  while (level < last && (2 << level) <= std::min(v.scale_x, v.scale_y)) ++level;
+  while (level < last && (2 << level) <= v.scale) ++level;
   *level_seen = level;
   const Side side = sides[static_cast<std::size_t>(level)];
   long wrong = 0;
@@ -96,16 +100,28 @@ long wrong_pixels(const fs::path& file, const std::vector<Side>& sides, int fram
     const RgbImage& shown = r.displays[static_cast<std::size_t>(d.id)];
     const Rect on = d.on_canvas();
     for (int y = 0; y < shown.height(); ++y) {
-      const long sy = sampled(v.centre_y, v.scale_y, canvas.height, on.y + y);
+      const long sy = sampled(v.centre_y, v.scale, canvas.height, on.y + y);
       const int ly = std::min(static_cast<int>(sy >> level), side.height - 1);
       for (int x = 0; x < shown.width(); ++x) {
-        const long sx = sampled(v.centre_x, v.scale_x, canvas.width, on.x + x);
+        const long sx = sampled(v.centre_x, v.scale, canvas.width, on.x + x);
         const int lx = std::min(static_cast<int>(sx >> level), side.width - 1);
-        wrong += !(shown.at(x, y) == level_pixel(level, lx, ly));
+        const bool inside = sx >= 0 && sx < kWidth && sy >= 0 && sy < kHeight;
+        wrong += !(shown.at(x, y) == (inside ? level_pixel(level, lx, ly) : Rgb{0, 0, 0}));
       }
     }
   }
   return wrong;
+}
+
+// The same for the animated path's frame `frame`, its view from picture_view.
+long wrong_pixels(const fs::path& file, const std::vector<Side>& sides, int frame,
+                  int* level_seen) {
+  SceneOptions options;
+  options.content = file;
+  const SourceView v =
+      picture_view(frame, kWidth, kHeight, canvas_of(test::small_layout(3, 40, 20, 120, 120).wall));
+  EXPECT_DOUBLE_EQ(v.scale_x, v.scale_y);
+  return wrong_pixels(options, sides, frame, {v.centre_x, v.centre_y, v.scale_x}, level_seen);
 }
 
 fs::path scratch(const char* name) {
@@ -126,6 +142,35 @@ TEST(PictureLevels, ZoomedOutTheDisplaysShowTheLevelTheRuleNames) {
     EXPECT_EQ(wrong_pixels(dir / "pyramid.tif", sides, frame, &level), 0) << "frame " << frame;
     EXPECT_EQ(level, want_level) << "frame " << frame;
   }
+  fs::remove_all(dir);
+}
+
+// --pan X,Y --zoom Z: picture pixel (X, Y) at the canvas's centre, 1 / Z picture pixels a
+// canvas pixel, the same at every frame; a quarter shows level 2; with the centre at the
+// picture's corner, three quarters of the canvas black.
+TEST(PictureLevels, AFixedViewShowsTheLevelRegionItNames) {
+  const fs::path dir = scratch("picture-fixed");
+  const std::vector<Side> sides = halvings(5);
+  write_pyramid(dir / "pyramid.tif", sides);
+  SceneOptions options;
+  options.content = dir / "pyramid.tif";
+  options.pan = "300,100";
+  options.zoom = 0.25;
+  for (const int frame : {0, 77}) {
+    int level = -1;
+    EXPECT_EQ(wrong_pixels(options, sides, frame, {300, 100, 4}, &level), 0) << frame;
+    EXPECT_EQ(level, 2);
+  }
+  options.pan = "0,0";
+  options.zoom = 1;
+  int level = -1;
+  EXPECT_EQ(wrong_pixels(options, sides, 5, {0, 0, 1}, &level), 0);
+  EXPECT_EQ(level, 0);
+  // --zoom alone: centred on the picture.
+  options.pan.clear();
+  options.zoom = 0.5;
+  EXPECT_EQ(wrong_pixels(options, sides, 0, {kWidth / 2.0, kHeight / 2.0, 2}, &level), 0);
+  EXPECT_EQ(level, 1);
   fs::remove_all(dir);
 }
 

@@ -47,6 +47,20 @@ inline constexpr int kPictureZoomPeriod = 600;
 SourceView picture_view(int frame, int source_width, int source_height, const Canvas& canvas,
                         SourceFit fit = SourceFit::Fill);
 
+// A fixed view of the picture instead of the animated path (--pan X,Y, --zoom Z on pipeserver
+// and l2wall run): picture pixel (X, Y) at the canvas's centre (the picture's centre when not
+// given), Z canvas pixels per picture pixel on both axes (scale 1 / Z: 1 is 1:1, 0.25 shows 4x4
+// picture pixels in a canvas pixel, 2 magnifies each to 2x2; when not given, the scale of
+// frame 0 as `fit` lays it), at every frame.
+struct FixedView {
+  std::optional<double> x, y;
+  double zoom = 0;  // 0: the fit's
+};
+SourceView fixed_view(const FixedView& fixed, int source_width, int source_height,
+                      const Canvas& canvas, SourceFit fit = SourceFit::Fill);
+// "X,Y" (two numbers: picture pixels, fractions allowed) into `fixed`; false when it is not.
+bool parse_pan(std::string_view text, FixedView& fixed);
+
 // The movie scene, and a still picture in a session's window: the whole frame laid on the canvas
 // as `fit` says (by default as large as it fits, centred, black bars on the other sides).
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas,

@@ -68,6 +68,11 @@ struct SceneOptions {
   // picture, session: the most MiB of decoded picture each picture's image cache holds
   // (picture_cache.hpp); 0: default_picture_cache_mb for this machine and one pipeserver.
   double picture_cache_mb = 0;
+  // picture: a fixed view instead of the animated path, "X,Y" (picture pixel at the canvas's
+  // centre) and canvas pixels per picture pixel (picture_view.hpp's FixedView); empty and 0:
+  // not given.
+  std::string pan;
+  double zoom = 0;
   CameraOptions camera;  // every scene
 };
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command_line/checks.hpp"
+#include "pipeserver/picture_view.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2 {
@@ -19,7 +20,8 @@ struct SceneOption {
   const char* scene;  // the scenes it belongs to, separated by spaces; nullptr: every scene
 };
 
-// Adds --mesh, --content, --fit, --session, --movie-rate, --picture-cache-mb, --triangles,
+// Adds --mesh, --content, --fit, --session, --movie-rate, --picture-cache-mb, --pan, --zoom,
+// --triangles,
 // --strip-length, --grid,
 // --tessellation, --patches and the camera's
 // --camera-distance, --camera-orbit, --camera-fov to `app`, writing into `o`.
@@ -65,6 +67,25 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "it (one for a pipeserver alone), at least 512")
            ->check(number_in(1, 100000)),
        "picture session"},
+      {app.add_option("--pan", o.pan,
+                      "picture scene: a fixed view instead of the animated path, picture pixel "
+                      "X,Y (fractions allowed) at the canvas's centre, at every frame; without "
+                      "--zoom, at the scale --fit gives")
+           ->check(
+               [](const std::string& v) {
+                 FixedView f;
+                 return parse_pan(v, f) ? std::string()
+                                        : "expected X,Y, two numbers (picture pixels), got " + v;
+               },
+               "X,Y"),
+       "picture"},
+      {app.add_option("--zoom", o.zoom,
+                      "picture scene: a fixed view instead of the animated path, Z canvas pixels "
+                      "per picture pixel (1: 1:1; 0.25: 4x4 picture pixels a canvas pixel, read "
+                      "from a MIP level when the file has them; 2: magnified); without --pan, "
+                      "centred on the picture")
+           ->check(number_in(1e-6, 1e6)),
+       "picture"},
       {app.add_option("--triangles", o.triangles, "strips and hotspot scenes: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
        "strips hotspot"},
