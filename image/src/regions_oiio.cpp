@@ -114,10 +114,10 @@ class CacheRegions final : public RegionReader {
 
 }  // namespace
 
-// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then its rows
-// decoded (check_png_data): nothing for another format; else the megabytes it decodes to as
-// stored, or why it cannot be read.
-Result<double> png_megabytes(const char* path) {
+// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then, with
+// `rows`, its rows decoded (check_png_data): nothing for another format; else the megabytes it
+// decodes to as stored, or why it cannot be read.
+Result<double> png_megabytes(const char* path, bool rows) {
   unsigned char signature[8] = {};
   if (std::FILE* file = std::fopen(path, "rb")) {
     std::fread(signature, 1, sizeof signature, file);
@@ -136,7 +136,9 @@ Result<double> png_megabytes(const char* path) {
                    std::to_string(static_cast<int>(kWholeScanlinePictureMegabytes)) +
                    " MiB of cache); save it without interlacing"};
   }
-  if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
+  if (rows) {
+    if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
+  }
   return megabytes;
 }
 
@@ -147,9 +149,10 @@ namespace {
 
 // The picture's header checked (picture_checks.hpp: what a reader would trust of it, first),
 // then opened once directly, so that a file that cannot be read gets the same one-line reason
-// as read_png: its sides and storage, or why not.
-Result<PictureShape> checked_shape(const char* path) {
-  const Result<double> png = png_megabytes(path);
+// as read_png: its sides and storage, or why not. `rows`: a PNG's rows decoded too, before a
+// reader decodes them (its own lines on stderr, a damaged row a frame into the run).
+Result<PictureShape> checked_shape(const char* path, bool rows) {
+  const Result<double> png = png_megabytes(path, rows);
   if (!png.ok()) return Failure{png.reason()};
   const PictureBytes bytes = file_bytes(path);
   const Result<HeaderFacts> facts = check_before_open(bytes);
@@ -171,14 +174,22 @@ Result<PictureShape> checked_shape(const char* path) {
 
 }  // namespace
 
+// Only the header: what picture_to_read asks of every picture, which open_regions or
+// make_tiled_copy then checks whole.
 Result<PictureShape> picture_shape(const char* path) try {
-  return checked_shape(path);
+  return checked_shape(path, false);
+} catch (const std::exception& e) {
+  return Failure{std::string("cannot read: ") + e.what()};
+}
+
+Result<PictureShape> checked_picture(const char* path) try {
+  return checked_shape(path, true);
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
 }
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
-  if (const Result<PictureShape> shape = checked_shape(path); !shape.ok())
+  if (const Result<PictureShape> shape = checked_shape(path, true); !shape.ok())
     return Failure{shape.reason()};
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);

@@ -190,7 +190,7 @@ Status copy_levels(const char* source, const char* target, Progress progress) {
 }  // namespace
 
 Status make_tiled_copy(const char* source, const char* target, Progress progress) try {
-  if (const Result<PictureShape> shape = picture_shape(source); !shape.ok())
+  if (const Result<PictureShape> shape = checked_picture(source); !shape.ok())
     return Failure{shape.reason()};
   const Status made = copy_levels(source, target, progress);
   if (!made.ok()) std::remove(target);
