@@ -59,6 +59,14 @@ void read_regions(const std::string& path) {
     for (const int y : {0, picture.height() / 2, picture.height() - 1}) {
       picture.read_row(y, 0, picture.width(), rgb.data());
     }
+    // Each MIP level a zoomed-out view reads: its sides halve the level's before it, so its
+    // rows fit the first's.
+    for (int level = 1; level < picture.levels(); ++level) {
+      require(picture.width(level) >= 1 && picture.width(level) <= picture.width(level - 1) &&
+                  picture.height(level) >= 1 && picture.height(level) <= picture.height(level - 1),
+              "a level's sides halve the level's before it");
+      picture.read_row(level, picture.height(level) / 2, 0, picture.width(level), rgb.data());
+    }
   } catch (const std::runtime_error& e) {
     require_error(e.what(), path, "a region read's error is one line");
   }

@@ -175,6 +175,13 @@ bad_value "--mesh is an option of --scene mesh, not strips" l2wall run --scene s
 bad_value "--content is an option of --scene picture, movie or vnc, not swap" pipeserver \
   --scene swap --content /etc/hostname --out /tmp/x.png
 bad_value "--scene movie needs --content FILE" l2wall run --scene movie
+bad_value "--picture-cache-mb is an option of --scene picture or session, not swap" l2wall run \
+  --scene swap --picture-cache-mb 16
+bad_value "expected X,Y, two numbers (picture pixels), got 10" l2wall run --scene picture \
+  --content /etc/hostname --pan 10
+bad_value "--zoom is an option of --scene picture, not mesh" pipeserver --zoom 2 --out /tmp/x
+bad_value "0 is not a number in 1..100000" pipeserver --scene picture --content /etc/hostname \
+  --picture-cache-mb 0 --out /tmp/x
 # NaN passed CLI::Range and made every pixel of the view NaN (a black wall).
 bad_value "nan is not a number in 1..170" pipeserver --camera-fov nan --out /tmp/x
 bad_value "nan is not a number in -360..360" l2wall run --camera-orbit nan

@@ -44,10 +44,13 @@ struct Source {
 class RegionReader {
  public:
   virtual ~RegionReader() = default;
-  virtual int width() const = 0;
-  virtual int height() const = 0;
-  // Columns [x_begin, x_end) of row y (all within the picture) as 8-bit RGB into `rgb`.
-  virtual Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
+  // The picture's MIP levels (1: none), level 0 the picture itself, each level's sides half
+  // the level's before it (rounded either way, never under 1).
+  virtual int levels() const = 0;
+  virtual int width(int level) const = 0;
+  virtual int height(int level) const = 0;
+  // Columns [x_begin, x_end) of row y of `level` (all within it) as 8-bit RGB into `rgb`.
+  virtual Status read_row(int level, int y, int x_begin, int x_end, std::uint8_t* rgb) = 0;
 };
 
 // A movie's video stream decoded frame by frame into 8-bit RGB (image/movie_file.hpp).
@@ -63,6 +66,19 @@ class MovieDecoder {
   virtual Result<bool> next_frame(std::uint8_t* rgb) = 0;
 };
 
+// A picture's sides and how it is stored, after the checks open_regions makes (picture_shape).
+struct PictureShape {
+  int width = 0, height = 0;
+  bool tiled = false;     // stored in tiles (a tiled TIFF, OpenEXR): any part read alone
+  double decoded_mb = 0;  // its pixels decoded as 8-bit RGB, in MiB
+};
+
+// Told how far a long job has got, a fraction in [0, 1].
+struct Progress {
+  void* context;
+  void (*tell)(void* context, double done);
+};
+
 // A failure's reason does not name the file. read_rgb() is ok, reading nothing, when the sink's
 // `accept` refused the size (the caller knows why).
 struct Codec {
@@ -75,20 +91,25 @@ struct Codec {
   // `format_hint` (an extension, "tga"). The bytes are only read.
   Status (*read_rgb_bytes)(const std::uint8_t* bytes, std::size_t size, const char* format_hint,
                            RgbSink sink, Source* source);
-  Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path);
+  // Through an image cache holding at most `cache_megabytes` of decoded tiles.
+  Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path, float cache_megabytes);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
   // A PNG file's bytes, appended to *out: 8-bit RGB (`channels` 3) or grey (1), `pixels` row by
   // row.
   Status (*encode_pixels)(int width, int height, int channels, const std::uint8_t* pixels,
                           std::string* out);
+  Result<PictureShape> (*picture_shape)(const char* path);
+  // `source` (any picture, read in rows) copied into `target`, a tiled TIFF with MIP levels,
+  // holding a band of rows of each level at a time (tiled_copy_oiio.cpp).
+  Status (*make_tiled_copy)(const char* source, const char* target, Progress progress);
 };
 
 // The module's one exported symbol: a function returning its Codec. The name carries the
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v11";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v14";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

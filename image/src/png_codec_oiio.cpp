@@ -284,11 +284,13 @@ constexpr l2::png_codec::Codec kCodec{encode_file,
                                       l2::png_codec::open_regions,
                                       l2::png_codec::open_movie,
                                       l2::png_codec::render_text,
-                                      l2::png_codec::encode_pixels};
+                                      l2::png_codec::encode_pixels,
+                                      l2::png_codec::picture_shape,
+                                      l2::png_codec::make_tiled_copy};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v11() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v14() {
   return &kCodec;
 }

@@ -10,6 +10,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
@@ -21,11 +22,7 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 
-// Bounds what a reader holds in decoded tiles, whatever the picture's size.
-constexpr float kCacheMegabytes = 64;
-// A picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
-// evicted is decoded again from the first row. Up to this size the cache holds all of it, so
-// it is decoded once, not at every frame that samples it across.
+// An interlaced PNG is read whole whatever the cache's limit; past this size it is refused.
 constexpr float kWholeScanlinePictureMegabytes = 512;
 // Pictures stored as scanlines are read in tiles of this side as well.
 constexpr int kAutoTile = 64;
@@ -41,25 +38,63 @@ struct CacheDeleter {
   void operator()(OIIO::ImageCache* cache) const { OIIO::ImageCache::destroy(cache); }
 };
 
+// Sides of more levels than this no picture has (a side of 2^31 halves to 1 in 31 steps).
+constexpr int kMaxLevels = 32;
+
+struct LevelSides {
+  int width, height;
+};
+
+// Whether `side` is half of `before`, rounded down or up, and never under 1: how every writer
+// of a pyramid (maketx, a TIFF's reduced-resolution directories, OpenEXR's levels) sizes a level.
+bool halves(int before, int side) {
+  return side == std::max(1, before / 2) || side == std::max(1, (before + 1) / 2);
+}
+
+// The sides of the picture's MIP levels as the cache reads them, level 0 first, or why one
+// level does not halve the one before it (a level of another size would be sampled at pixels
+// the picture scene's rule does not name).
+Result<std::vector<LevelSides>> level_sides(OIIO::ImageCache& cache, OIIO::ustring file,
+                                            const OIIO::ImageSpec& spec) {
+  std::vector<LevelSides> sides{{spec.width, spec.height}};
+  int levels = 1;
+  if (!cache.get_image_info(file, 0, 0, OIIO::ustring("miplevels"), OIIO::TypeInt, &levels))
+    levels = 1;
+  for (int level = 1; level < std::min(levels, kMaxLevels); ++level) {
+    OIIO::ImageSpec next;
+    if (!cache.get_imagespec(file, next, 0, level)) break;
+    const LevelSides& before = sides.back();
+    if (!halves(before.width, next.width) || !halves(before.height, next.height)) {
+      return Failure{"cannot read: MIP level " + std::to_string(level) + " is " +
+                     std::to_string(next.width) + "x" + std::to_string(next.height) +
+                     ", not half of level " + std::to_string(level - 1) + "'s " +
+                     std::to_string(before.width) + "x" + std::to_string(before.height)};
+    }
+    sides.push_back({next.width, next.height});
+  }
+  return sides;
+}
+
 class CacheRegions final : public RegionReader {
  public:
   CacheRegions(std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache, OIIO::ustring file,
-               const OIIO::ImageSpec& spec)
+               const OIIO::ImageSpec& spec, std::vector<LevelSides> sides)
       : cache_(std::move(cache)),
         file_(file),
-        width_(spec.width),
-        height_(spec.height),
+        sides_(std::move(sides)),
         channels_(spec.nchannels >= 3 ? 3 : 1) {}
 
-  int width() const override { return width_; }
-  int height() const override { return height_; }
+  int levels() const override { return static_cast<int>(sides_.size()); }
+  int width(int level) const override { return sides_[static_cast<std::size_t>(level)].width; }
+  int height(int level) const override { return sides_[static_cast<std::size_t>(level)].height; }
 
-  Status read_row(int y, int x_begin, int x_end, std::uint8_t* rgb) override {
+  Status read_row(int level, int y, int x_begin, int x_end, std::uint8_t* rgb) override {
     // Grey is read into the start of the row and spread over R, G and B from the end back.
-    if (!cache_->get_pixels(file_, 0, 0, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
+    if (!cache_->get_pixels(file_, 0, level, x_begin, x_end, y, y + 1, 0, 1, 0, channels_,
                             OIIO::TypeDesc::UINT8, rgb)) {
       const std::string why = one_line(cache_->geterror());
-      return Failure{"cannot read row " + std::to_string(y) + ": " +
+      return Failure{"cannot read row " + std::to_string(y) +
+                     (level > 0 ? " of MIP level " + std::to_string(level) : std::string()) + ": " +
                      (why.empty() ? "damaged" : why)};
     }
     if (channels_ == 1) {
@@ -73,15 +108,16 @@ class CacheRegions final : public RegionReader {
  private:
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache_;
   OIIO::ustring file_;
-  int width_, height_, channels_;
+  std::vector<LevelSides> sides_;
+  int channels_;
 };
 
 }  // namespace
 
-// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then its rows
-// decoded (check_png_data): nothing for another format; else the megabytes it decodes to as
-// stored, or why it cannot be read.
-Result<double> png_megabytes(const char* path) {
+// A PNG's chunks, checked before the cache trusts its header (png_chunks.hpp), then, with
+// `rows`, its rows decoded (check_png_data): nothing for another format; else the megabytes it
+// decodes to as stored, or why it cannot be read.
+Result<double> png_megabytes(const char* path, bool rows) {
   unsigned char signature[8] = {};
   if (std::FILE* file = std::fopen(path, "rb")) {
     std::fread(signature, 1, sizeof signature, file);
@@ -100,38 +136,61 @@ Result<double> png_megabytes(const char* path) {
                    std::to_string(static_cast<int>(kWholeScanlinePictureMegabytes)) +
                    " MiB of cache); save it without interlacing"};
   }
-  if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
+  if (rows) {
+    if (const Status data = check_png_data(path); !data.ok()) return Failure{data.reason()};
+  }
   return megabytes;
 }
 
-Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
-  const Result<double> png = png_megabytes(path);
+// The cache holds at most `cache_megabytes` of decoded tiles, whatever the picture's size. A
+// picture stored as scanlines (PNG, JPEG) cannot be read from its middle: a tile the cache
+// evicted is decoded again from the first row; one that fits in the limit is decoded once.
+namespace {
+
+// The picture's header checked (picture_checks.hpp: what a reader would trust of it, first),
+// then opened once directly, so that a file that cannot be read gets the same one-line reason
+// as read_png: its sides and storage, or why not. `rows`: a PNG's rows decoded too, before a
+// reader decodes them (its own lines on stderr, a damaged row a frame into the run).
+Result<PictureShape> checked_shape(const char* path, bool rows) {
+  const Result<double> png = png_megabytes(path, rows);
   if (!png.ok()) return Failure{png.reason()};
-  // What a reader would trust of the header, checked first (picture_checks.hpp).
   const PictureBytes bytes = file_bytes(path);
   const Result<HeaderFacts> facts = check_before_open(bytes);
   if (!facts.ok()) return Failure{facts.reason()};
-  // Opened once directly: a file that cannot be read gets the same one-line reason as read_png.
-  float cache_megabytes = kCacheMegabytes;
-  {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) {
-      return Failure{open_failed(path)};
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.deep || spec.depth > 1) {
-      return Failure{"cannot read: a deep or volume image, not a picture"};
-    }
-    if (spec.width <= 0 || spec.height <= 0) {
-      return Failure{"cannot read: the picture has no pixels"};
-    }
-    if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
-      return Failure{s.reason()};
-    const double decoded_mb =
-        std::max(*png, double(spec.width) * spec.height * std::min(spec.nchannels, 3) / (1 << 20));
-    if (spec.tile_width == 0)
-      cache_megabytes = std::max(cache_megabytes, whole_picture_cache(decoded_mb));
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return Failure{open_failed(path)};
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.deep || spec.depth > 1) {
+    return Failure{"cannot read: a deep or volume image, not a picture"};
   }
+  if (spec.width <= 0 || spec.height <= 0) {
+    return Failure{"cannot read: the picture has no pixels"};
+  }
+  if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
+    return Failure{s.reason()};
+  return PictureShape{spec.width, spec.height, spec.tile_width > 0,
+                      double(spec.width) * spec.height * 3 / (1 << 20)};
+}
+
+}  // namespace
+
+// Only the header: what picture_to_read asks of every picture, which open_regions or
+// make_tiled_copy then checks whole.
+Result<PictureShape> picture_shape(const char* path) try {
+  return checked_shape(path, false);
+} catch (const std::exception& e) {
+  return Failure{std::string("cannot read: ") + e.what()};
+}
+
+Result<PictureShape> checked_picture(const char* path) try {
+  return checked_shape(path, true);
+} catch (const std::exception& e) {
+  return Failure{std::string("cannot read: ") + e.what()};
+}
+
+Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
+  if (const Result<PictureShape> shape = checked_shape(path, true); !shape.ok())
+    return Failure{shape.reason()};
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);
   cache->attribute("autotile", kAutoTile);
@@ -140,7 +199,10 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path) try {
   if (!cache->get_imagespec(file, spec)) {
     return Failure{"cannot read: " + one_line(cache->geterror())};
   }
-  return std::unique_ptr<RegionReader>(new CacheRegions(std::move(cache), file, spec));
+  Result<std::vector<LevelSides>> sides = level_sides(*cache, file, spec);
+  if (!sides.ok()) return Failure{sides.reason()};
+  return std::unique_ptr<RegionReader>(
+      new CacheRegions(std::move(cache), file, spec, std::move(sides).value()));
 } catch (const std::exception& e) {
   return Failure{std::string("cannot read: ") + e.what()};
 }

@@ -79,8 +79,8 @@ std::uint64_t first_value(const Layout& l, std::string_view entry, const ReadAt&
   return l.order.at(read(l.order.at(entry, value_at, l.offset_bytes()), size), 0, size);
 }
 
-// The first directory's entries as Declared (at most the 65535 entries libtiff reads).
-Declared first_directory(const Layout& l, std::uint64_t at, std::uint64_t entries,
+// A directory's entries as Declared (at most the 65535 entries libtiff reads).
+Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entries,
                          const ReadAt& read) {
   Declared d;
   d.format = "tiff";
@@ -145,7 +145,8 @@ TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size) {
     const std::uint64_t entries = l.order.at(read(at, l.count_bytes()), 0, l.count_bytes());
     const std::uint64_t end = at + l.count_bytes() + entries * l.entry_bytes();
     if (entries == 0 || entries > 65535 || end + l.offset_bytes() > file_size) break;
-    if (facts.directories == 0) facts.first = first_directory(l, at, entries, read);
+    facts.each.push_back(directory_facts(l, at, entries, read));
+    if (facts.directories == 0) facts.first = facts.each.front();
     ++facts.directories;
     at = l.order.at(read(end, l.offset_bytes()), 0, l.offset_bytes());
   }
@@ -160,8 +161,23 @@ Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
                    " directories (pages or levels), more than its reader opens in time; the "
                    "first is shown: save it alone"};
   }
-  if (facts.directories == 0 || facts.first.width == 0 || facts.first.height == 0) return {};
-  return check_declared(facts.first, file_size);
+  for (std::size_t i = 0; i < facts.each.size(); ++i) {
+    const Declared& d = facts.each[i];
+    const std::string which =
+        i == 0 ? "" : "directory " + std::to_string(i + 1) + " (a level or page): ";
+    if ((d.tile_width == 0) != (d.tile_height == 0)) {
+      return Failure{"cannot read: " + which + "declares tiles of " + std::to_string(d.tile_width) +
+                     "x" + std::to_string(d.tile_height) + " pixels"};
+    }
+    if (d.width == 0 || d.height == 0) continue;
+    const Status s = check_declared(d, file_size);
+    if (!s.ok()) {
+      const std::string prefix = "cannot read: ";
+      return Failure{prefix + which +
+                     s.reason().substr(s.reason().rfind(prefix, 0) == 0 ? prefix.size() : 0)};
+    }
+  }
+  return {};
 }
 
 }  // namespace l2::png_codec

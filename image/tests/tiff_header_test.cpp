@@ -109,6 +109,56 @@ TEST(TiffHeader, ChainsAreCountedToTheLimitAndLoopsEnd) {
   EXPECT_EQ(tiff_facts(reader(past), past.size()).directories, 2);
 }
 
+// A pyramid of three directories, 4096x4096 in tiles of 64 and two levels after it, whose
+// second level declares `level`: each directory is checked as the first is.
+std::string pyramid(const std::vector<Entry>& level) {
+  std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+  const std::vector<Entry> first = {
+      {256, 4, 1, 4096}, {257, 4, 1, 4096}, {277, 3, 1, 3}, {322, 3, 1, 64}, {323, 3, 1, 64}};
+  const std::vector<Entry> half = {
+      {256, 4, 1, 2048}, {257, 4, 1, 2048}, {277, 3, 1, 3}, {322, 3, 1, 64}, {323, 3, 1, 64}};
+  directory(f, first, f.size() + 2 + 12 * first.size() + 4, false, false);
+  directory(f, half, f.size() + 2 + 12 * half.size() + 4, false, false);
+  directory(f, level, 0, false, false);
+  f.resize(4096 * 4096 * 3 / 2, '\0');  // zip holds its pixels in these bytes
+  return f;
+}
+
+TEST(TiffHeader, EveryLevelOfAPyramidIsChecked) {
+  const std::string fine = pyramid(
+      {{256, 4, 1, 1024}, {257, 4, 1, 1024}, {277, 3, 1, 3}, {322, 3, 1, 64}, {323, 3, 1, 64}});
+  const TiffFacts facts = tiff_facts(reader(fine), fine.size());
+  ASSERT_EQ(facts.each.size(), 3u);
+  EXPECT_EQ(facts.each[2].width, 1024);
+  EXPECT_TRUE(check_tiff(reader(fine), fine.size()).ok());
+
+  const std::string huge_tiles = pyramid({{256, 4, 1, 1024},
+                                          {257, 4, 1, 1024},
+                                          {277, 3, 1, 3},
+                                          {322, 4, 1, 65536},
+                                          {323, 4, 1, 65536}});
+  EXPECT_EQ(check_tiff(reader(huge_tiles), huge_tiles.size()).reason(),
+            "cannot read: directory 3 (a level or page): tiles of 65536x65536 pixels (12288 MiB "
+            "each), more than the 64 MiB a reader holds");
+
+  const std::string zero_tiles = pyramid(
+      {{256, 4, 1, 1024}, {257, 4, 1, 1024}, {277, 3, 1, 3}, {322, 3, 1, 64}, {323, 3, 1, 0}});
+  EXPECT_EQ(check_tiff(reader(zero_tiles), zero_tiles.size()).reason(),
+            "cannot read: directory 3 (a level or page): declares tiles of 64x0 pixels");
+
+  const std::string past = pyramid({{256, 4, 1, 1000000},
+                                    {257, 4, 1, 1000000},
+                                    {277, 3, 1, 3},
+                                    {322, 3, 1, 64},
+                                    {323, 3, 1, 64}});
+  const std::string why = check_tiff(reader(past), past.size()).reason();
+  EXPECT_EQ(why.rfind("cannot read: directory 3 (a level or page): declares 1000000x1000000 "
+                      "pixels",
+                      0),
+            0u)
+      << why;
+}
+
 TEST(TiffHeader, OtherBytesAreNoTiff) {
   for (const std::string& f : {std::string("P6\n8 8\n255\n"), std::string("II*"), std::string()}) {
     EXPECT_FALSE(tiff_facts(reader(f), f.size()).tiff) << f;

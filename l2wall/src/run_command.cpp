@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iterator>
 #include <memory>
 #include <string>
@@ -18,6 +20,7 @@
 #include "dvi_link/frame_delta.hpp"
 #include "image/movie_file.hpp"
 #include "image/picture_regions.hpp"
+#include "image/tiled_copy.hpp"
 #include "l2wall/live_run.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/renderer_choice.hpp"
@@ -286,17 +289,32 @@ void check_content(const RunCommand& c) {
   // What of a model is left out is said here once, not by every pipeserver.
   if (o.scene == "mesh" && !c.scene.mesh_file.empty())
     tell_once(c.mpi, check_model(c.scene.mesh_file));
-  if (o.scene == "picture") PictureRegions{c.scene.content};
   if (o.scene == "movie") MovieFile(c.scene.content).frame(0);
   // A session is read whole, every window's source with it: a wrong line or file is one line
   // here, not one from every pipeserver.
   if (o.scene == "session") tell_once(c.mpi, make_scene("session", c.scene)->note());
 }
 
+// The run's options with the picture every pipeserver reads: a picture stored as scanlines
+// too large to hold decoded (past the picture cache's limit) is copied tiled now, before the
+// run's clock starts (image/tiled_copy.hpp), and the pipeservers are given the copy.
+RunOptions with_picture_to_read(const RunCommand& c) {
+  RunOptions o = c.o;
+  if (o.scene != "picture") return o;
+  const double limit =
+      c.scene.picture_cache_mb > 0 ? c.scene.picture_cache_mb : kDefaultPictureCacheMegabytes;
+  const std::filesystem::path read = picture_to_read(c.scene.content, limit);
+  PictureRegions{read, limit};
+  const auto at = std::find(o.scene_args.begin(), o.scene_args.end(), "--content");
+  if (at != o.scene_args.end() && at + 1 != o.scene_args.end()) *(at + 1) = read.string();
+  return o;
+}
+
 int run_command(const RunCommand& c) {
   try {
     check_content(c);
-    const int status = c.mpi ? run_over_mpi(c.o) : run_wall(c.o);
+    const RunOptions o = with_picture_to_read(c);
+    const int status = c.mpi ? run_over_mpi(o) : run_wall(o);
     // A run stopped by a signal wrote its report too (stop_signal.hpp).
     const bool reported = status == 0 || status == stopped_exit_status(SIGINT);
     if (c.plot && reported) {

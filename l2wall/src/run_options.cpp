@@ -3,6 +3,7 @@
 // with. No I/O: the command line checks these while parsing, the run again before it starts.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -10,6 +11,7 @@
 #include "balance/balancer.hpp"
 #include "l2wall/run_backends.hpp"
 #include "l2wall/run_options.hpp"
+#include "pipeserver/picture_cache.hpp"
 #include "tilelayout/survival.hpp"
 
 namespace l2 {
@@ -27,6 +29,14 @@ PipeserverLaunch pipeserver_launch(const RunOptions& o) {
   l.link_codec = o.link_codec;
   l.renderer = o.renderer;
   return l;
+}
+
+void add_picture_cache_default(PipeserverLaunch& l, int pipeservers, double physical_mb) {
+  if (l.scene != "picture" && l.scene != "session") return;
+  const auto& a = l.scene_args;
+  if (std::find(a.begin(), a.end(), "--picture-cache-mb") != a.end()) return;
+  l.scene_args.push_back("--picture-cache-mb");
+  l.scene_args.push_back(fmt::format("{:.0f}", default_picture_cache_mb(physical_mb, pipeservers)));
 }
 
 Status run_options_error(const RunOptions& o) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 #include <utility>
 
 namespace l2 {
@@ -60,6 +62,31 @@ SourceView picture_view(int frame, int source_width, int source_height, const Ca
           h / 2.0 + reach_y * std::sin(phase(frame, kPanPeriodY)), sx, sy};
 }
 
+SourceView fixed_view(const FixedView& fixed, int source_width, int source_height,
+                      const Canvas& canvas, SourceFit fit) {
+  const double w = source_width, h = source_height;
+  const auto [fit_x, fit_y] = fitted_scale(w, h, canvas, fit);
+  const double sx = fixed.zoom > 0 ? 1.0 / fixed.zoom : fit_x;
+  const double sy = fixed.zoom > 0 ? 1.0 / fixed.zoom : fit_y;
+  return {fixed.x.value_or(w / 2.0), fixed.y.value_or(h / 2.0), sx, sy};
+}
+
+bool parse_pan(std::string_view text, FixedView& fixed) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos) return false;
+  const auto number = [](std::string_view part, double& out) {
+    const std::string s(part);
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return !s.empty() && end == s.c_str() + s.size() && std::isfinite(out);
+  };
+  double x = 0, y = 0;
+  if (!number(text.substr(0, comma), x) || !number(text.substr(comma + 1), y)) return false;
+  fixed.x = x;
+  fixed.y = y;
+  return true;
+}
+
 SourceView movie_view(int source_width, int source_height, const Canvas& canvas, SourceFit fit) {
   const double w = source_width, h = source_height;
   const auto [sx, sy] = fitted_scale(w, h, canvas, fit);
@@ -71,6 +98,19 @@ SourceView movie_view(int source_width, int source_height, const Canvas& canvas,
 
 long source_index(double centre, double scale, int size, int x) {
   return static_cast<long>(std::floor(centre + (x + 0.5 - size / 2.0) * scale));
+}
+
+int mip_level(const SourceView& view, int levels) {
+  const double finest = std::min(view.scale_x, view.scale_y);
+  int level = 0;
+  // Doubling, not log2: 2^L <= scale decided exactly, the same on every machine.
+  while (level + 1 < levels && std::ldexp(1.0, level + 1) <= finest) ++level;
+  return level;
+}
+
+long level_index(long index, int size, int level, int level_size) {
+  if (index < 0 || index >= size) return -1;
+  return std::min(index >> level, static_cast<long>(level_size) - 1);
 }
 
 namespace {

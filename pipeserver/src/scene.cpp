@@ -100,8 +100,14 @@ std::unique_ptr<Scene> make_named(const std::string& name, const SceneOptions& o
     const std::optional<SourceFit> fit = parse_source_fit(options.fit);
     if (!options.fit.empty() && !fit)
       throw std::invalid_argument("--fit: expected fit, fill or stretch, got " + options.fit);
-    if (name == "picture")
-      return detail::make_picture_scene(options.content, fit.value_or(SourceFit::Fill));
+    if (name == "picture") {
+      std::optional<FixedView> fixed;
+      if (!options.pan.empty() || options.zoom > 0) fixed = FixedView{{}, {}, options.zoom};
+      if (!options.pan.empty() && !parse_pan(options.pan, *fixed))
+        throw std::invalid_argument("--pan: expected X,Y, two numbers, got " + options.pan);
+      return detail::make_picture_scene(options.content, fit.value_or(SourceFit::Fill),
+                                        options.picture_cache_mb, false, fixed);
+    }
     return detail::make_movie_scene(options.content, options.movie_rate,
                                     fit.value_or(SourceFit::Fit));
   }

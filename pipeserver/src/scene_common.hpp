@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/picture_view.hpp"
@@ -36,8 +37,12 @@ std::unique_ptr<Scene> make_isosurface_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_patches_scene(const SceneOptions& options);
 std::unique_ptr<Scene> make_swap_scene();
 // `still`: laid as `fit` says at every frame (a session's window), not panned and zoomed.
+// `cache_mb`: the picture's image cache's limit (SceneOptions::picture_cache_mb, 0: the
+// machine's default).
+// `fixed`: a fixed view (picture_view.hpp) instead of the animated path.
 std::unique_ptr<Scene> make_picture_scene(const std::filesystem::path& file, SourceFit fit,
-                                          bool still = false);
+                                          double cache_mb, bool still = false,
+                                          std::optional<FixedView> fixed = {});
 // A session (session_file.hpp): every window's source drawn into its rectangle, over the
 // background; `options` are the run's, for the sources (camera, movie rate, ...).
 std::unique_ptr<Scene> make_session_scene(const std::filesystem::path& file,

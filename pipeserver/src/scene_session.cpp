@@ -30,8 +30,8 @@ std::unique_ptr<Scene> make_source(const SessionWindow& w, const SceneOptions& r
   if (desktop)
     return make_desktop_window(*desktop, parse_source_fit(w.fit).value_or(SourceFit::Fit));
   if (w.source == "picture") {
-    auto scene =
-        make_picture_scene(w.content, parse_source_fit(w.fit).value_or(SourceFit::Fit), true);
+    auto scene = make_picture_scene(w.content, parse_source_fit(w.fit).value_or(SourceFit::Fit),
+                                    o.picture_cache_mb, true);
     scene->set_camera(o.camera);
     scene->set_frame(0);
     return scene;

@@ -10,16 +10,25 @@ namespace l2::detail {
 void fill_from_source(const SourceView& view, int source_width, int source_height,
                       const Canvas& canvas, const Rect& on_canvas, const SourceRows& rows,
                       RgbImage& rgb) {
+  fill_from_source(view, source_width, source_height, {0, source_width, source_height}, canvas,
+                   on_canvas, rows, rgb);
+}
+
+void fill_from_source(const SourceView& view, int source_width, int source_height,
+                      const SourceLevel& level, const Canvas& canvas, const Rect& on_canvas,
+                      const SourceRows& rows, RgbImage& rgb) {
   if (rgb.width() != on_canvas.w || rgb.height() != on_canvas.h) {
     rgb = RgbImage(on_canvas.w, on_canvas.h);
   }
   // The tile's source columns, and the span of the source row that holds them all.
   std::vector<long> columns(static_cast<std::size_t>(on_canvas.w));
-  long first = source_width, last = -1;
+  long first = level.width, last = -1;
   for (int i = 0; i < on_canvas.w; ++i) {
-    const long sx = source_index(view.centre_x, view.scale_x, canvas.width, on_canvas.x + i);
+    const long sx =
+        level_index(source_index(view.centre_x, view.scale_x, canvas.width, on_canvas.x + i),
+                    source_width, level.level, level.width);
     columns[static_cast<std::size_t>(i)] = sx;
-    if (sx >= 0 && sx < source_width) {
+    if (sx >= 0) {
       first = std::min(first, sx);
       last = std::max(last, sx);
     }
@@ -29,8 +38,10 @@ void fill_from_source(const SourceView& view, int source_width, int source_heigh
   long span_row = -1;  // the source row in `span`
   for (int j = 0; j < on_canvas.h; ++j) {
     std::uint8_t* out = rgb.row(j).data();
-    const long sy = source_index(view.centre_y, view.scale_y, canvas.height, on_canvas.y + j);
-    if (span.empty() || sy < 0 || sy >= source_height) {
+    const long sy =
+        level_index(source_index(view.centre_y, view.scale_y, canvas.height, on_canvas.y + j),
+                    source_height, level.level, level.height);
+    if (span.empty() || sy < 0) {
       std::memset(out, 0, rgb.stride());
       continue;
     }

@@ -10,6 +10,13 @@
 namespace l2::hostile_run {
 namespace {
 
+// A 64x64 picture in tiles of 16, then `level`.
+std::string pyramid(const hostile::Tiff& level) {
+  hostile::Tiff first{.width = 64, .height = 64, .tile = 16, .data = std::string(64 * 64 * 3, 0)};
+  first.more = {level};
+  return hostile::tiff(first);
+}
+
 // One of each: what the header declares against the file's bytes, a wall, a tile a reader
 // holds, a picture decoded whole, the channels any picture has, the directories a reader opens.
 std::vector<std::pair<std::string, std::string>> every_format() {
@@ -22,6 +29,11 @@ std::vector<std::pair<std::string, std::string>> every_format() {
        hostile::tiff({.width = 256, .height = 256, .tile = 65536, .data = std::string(4000, 0)})},
       {"samples.tif", hostile::tiff({.samples = 60000})},
       {"pages.tif", hostile::tiff({.width = 1, .height = 1, .directories = 20000, .data = "abc"})},
+      // Pyramids: a level after a fine first directory declaring tiles of 65536, tiles of one
+      // side 0, or more pixels than the file holds.
+      {"level-tiles.tif", pyramid({.width = 32, .height = 32, .tile = 65536})},
+      {"level-tile-zero.tif", pyramid({.width = 32, .height = 32, .tile = 16, .tile_length = 0})},
+      {"level-past.tif", pyramid({.width = 100000, .height = 100000, .tile = 16})},
       {"wide.bmp", hostile::bmp(2000000000, 1)},
       {"tall.bmp", hostile::bmp(1, -2000000000)},
       {"big.bmp", hostile::bmp(30000, 30000)},

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "base/result.hpp"
 #include "image/declared_size.hpp"
@@ -31,11 +32,16 @@ struct TiffFacts {
   bool tiff = false;
   int directories = 0;  // counted up to kMaxTiffDirectories + 1
   Declared first;       // format "tiff"; sides 0 when the directory does not give them
+  // Every directory's declaration, the first included: a pyramid's levels (or a file's pages),
+  // each read by the image cache when the view asks for it.
+  std::vector<Declared> each;
 };
 TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size);
 
-// tiff_facts checked: the chain's length, then the first directory through check_declared.
-// Failure: one line saying what the file declares.
+// tiff_facts checked: the chain's length, then every directory through check_declared (a
+// level of a pyramid declaring tiles of 65536x65536, or more pixels than the file holds, is
+// refused as the first would be), and tiles of one side 0. Failure: one line saying what the
+// file declares, and which directory after the first.
 Status check_tiff(const ReadAt& read, std::uintmax_t file_size);
 
 }  // namespace l2::png_codec

@@ -36,6 +36,11 @@ const RunBackends& one_machine_backends();
 // What every pipeserver of a run of `options` is started with (before a path adds its part).
 PipeserverLaunch pipeserver_launch(const RunOptions& options);
 
+// The picture and session scenes' --picture-cache-mb, where not given, added to what every
+// pipeserver is started with: default_picture_cache_mb (pipeserver/picture_cache.hpp) of a
+// machine of `physical_mb` running `pipeservers`. Other scenes are left as they are.
+void add_picture_cache_default(PipeserverLaunch& launch, int pipeservers, double physical_mb);
+
 // run_wall() on the given backends.
 int run_wall(const RunOptions& options, const RunBackends& backends);
 

@@ -14,6 +14,7 @@
 #include "l2wall/run_backends.hpp"
 #include "l2wall/run_fault.hpp"
 #include "page_steering.hpp"
+#include "pipeserver/picture_cache.hpp"
 #include "progress_line.hpp"
 #include "run_core.hpp"
 #include "run_windows.hpp"
@@ -181,6 +182,8 @@ void LiveRun::start_pipeservers() {
 
 PipeserverLaunch LiveRun::launch_pipeservers() const {
   PipeserverLaunch l = pipeserver_launch(core_.options);
+  add_picture_cache_default(l, static_cast<int>(core_.layout.pipeservers.size()),
+                            physical_memory_mb());
   for (const auto& p : core_.paths) p->add_pipeserver_args(l);
   l.extra_args = pausable_pipeserver_args(core_.options);
   l.control = core_.balance != nullptr;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -167,37 +168,47 @@ inline std::string le32(std::uint32_t v) {
 
 // A little-endian TIFF of RGB bytes: each directory declares `width` x `height` pixels of
 // `samples` samples of `bits` bits, uncompressed, as one strip (or, with `tile` > 0, tiles of
-// `tile` x `tile`) whose `data` follows; `directories` such directories, chained.
+// `tile` x `tile`, or `tile` x `tile_length` when that is given) whose `data` follows;
+// `directories` such directories, chained, then those of `more` (a pyramid's levels).
 struct Tiff {
   std::uint32_t width = 8, height = 8, samples = 3, bits = 8, tile = 0;
   int directories = 1;
   std::string data = std::string(300, '\0');
+  std::optional<std::uint32_t> tile_length = std::nullopt;
+  std::vector<Tiff> more = {};
 };
+// One directory of `t` at the end of `out`, naming the next when `last` is false.
+inline void tiff_directory(std::string& out, const Tiff& t, bool last) {
+  // Tags in ascending order: (tag, type, value), SHORT = 3, LONG = 4; a SHORT sits in the
+  // first two bytes of its value field.
+  std::vector<std::pair<std::uint16_t, std::uint32_t>> tags = {
+      {256, t.width}, {257, t.height}, {258, t.bits}, {259, 1}, {262, t.samples >= 3 ? 2u : 1u}};
+  const bool tiled = t.tile > 0;
+  if (!tiled) tags.push_back({273, 0});
+  tags.push_back({277, t.samples});
+  if (!tiled) tags.insert(tags.end(), {{278, t.height}, {279, 0}});
+  if (tiled)
+    tags.insert(tags.end(),
+                {{322, t.tile}, {323, t.tile_length.value_or(t.tile)}, {324, 0}, {325, 0}});
+  const auto at = static_cast<std::uint32_t>(out.size());
+  const auto data_at = static_cast<std::uint32_t>(at + 2 + 12 * tags.size() + 4);
+  const auto next = static_cast<std::uint32_t>(data_at + t.data.size());
+  out += le16(static_cast<std::uint16_t>(tags.size()));
+  for (auto [tag, value] : tags) {
+    const bool is_short = tag == 258 || tag == 259 || tag == 262 || tag == 277;
+    if (tag == 273 || tag == 324) value = data_at;
+    if (tag == 279 || tag == 325) value = static_cast<std::uint32_t>(t.data.size());
+    out += le16(tag) + le16(is_short ? 3 : 4) + le32(1) +
+           (is_short ? le16(static_cast<std::uint16_t>(value)) + le16(0) : le32(value));
+  }
+  out += le32(last ? 0 : next) + t.data;
+}
 inline std::string tiff(const Tiff& t) {
   std::string out = "II*" + std::string(1, '\0') + le32(8);
-  for (int d = 0; d < t.directories; ++d) {
-    // Tags in ascending order: (tag, type, value), SHORT = 3, LONG = 4; a SHORT sits in the
-    // first two bytes of its value field.
-    std::vector<std::pair<std::uint16_t, std::uint32_t>> tags = {
-        {256, t.width}, {257, t.height}, {258, t.bits}, {259, 1}, {262, t.samples >= 3 ? 2u : 1u}};
-    const bool tiled = t.tile > 0;
-    if (!tiled) tags.push_back({273, 0});
-    tags.push_back({277, t.samples});
-    if (!tiled) tags.insert(tags.end(), {{278, t.height}, {279, 0}});
-    if (tiled) tags.insert(tags.end(), {{322, t.tile}, {323, t.tile}, {324, 0}, {325, 0}});
-    const auto at = static_cast<std::uint32_t>(out.size());
-    const auto data_at = static_cast<std::uint32_t>(at + 2 + 12 * tags.size() + 4);
-    const auto next = static_cast<std::uint32_t>(data_at + t.data.size());
-    out += le16(static_cast<std::uint16_t>(tags.size()));
-    for (auto [tag, value] : tags) {
-      const bool is_short = tag == 258 || tag == 259 || tag == 262 || tag == 277;
-      if (tag == 273 || tag == 324) value = data_at;
-      if (tag == 279 || tag == 325) value = static_cast<std::uint32_t>(t.data.size());
-      out += le16(tag) + le16(is_short ? 3 : 4) + le32(1) +
-             (is_short ? le16(static_cast<std::uint16_t>(value)) + le16(0) : le32(value));
-    }
-    out += le32(d + 1 < t.directories ? next : 0) + t.data;
-  }
+  for (int d = 0; d < t.directories; ++d)
+    tiff_directory(out, t, d + 1 == t.directories && t.more.empty());
+  for (std::size_t m = 0; m < t.more.size(); ++m)
+    tiff_directory(out, t.more[m], m + 1 == t.more.size());
   return out;
 }
 

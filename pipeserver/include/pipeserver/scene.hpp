@@ -65,7 +65,15 @@ struct SceneOptions {
   // the model cropped across it); empty: the scene's own (picture: fill, movie and mesh: fit).
   std::string fit;
   std::filesystem::path session;  // session: the session file (session_file.hpp)
-  CameraOptions camera;           // every scene
+  // picture, session: the most MiB of decoded picture each picture's image cache holds
+  // (picture_cache.hpp); 0: default_picture_cache_mb for this machine and one pipeserver.
+  double picture_cache_mb = 0;
+  // picture: a fixed view instead of the animated path, "X,Y" (picture pixel at the canvas's
+  // centre) and canvas pixels per picture pixel (picture_view.hpp's FixedView); empty and 0:
+  // not given.
+  std::string pan;
+  double zoom = 0;
+  CameraOptions camera;  // every scene
 };
 
 class Scene;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "command_line/checks.hpp"
+#include "pipeserver/picture_view.hpp"
 #include "pipeserver/scene.hpp"
 
 namespace l2 {
@@ -19,7 +20,9 @@ struct SceneOption {
   const char* scene;  // the scenes it belongs to, separated by spaces; nullptr: every scene
 };
 
-// Adds --mesh, --content, --fit, --session, --movie-rate, --triangles, --strip-length, --grid,
+// Adds --mesh, --content, --fit, --session, --movie-rate, --picture-cache-mb, --pan, --zoom,
+// --triangles,
+// --strip-length, --grid,
 // --tessellation, --patches and the camera's
 // --camera-distance, --camera-orbit, --camera-fov to `app`, writing into `o`.
 inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o) {
@@ -55,6 +58,34 @@ inline std::vector<SceneOption> add_scene_options(CLI::App& app, SceneOptions& o
                       "frame k (exact; l2wall run passes its --refresh, 0 at full speed)")
            ->check(number_in(0, 1000)),
        "movie session"},
+      {app.add_option("--picture-cache-mb", o.picture_cache_mb,
+                      "picture and session scenes: the most MiB of decoded picture each "
+                      "picture's image cache holds (OpenImageIO's max_memory_MB), whatever the "
+                      "picture's size; a picture stored as scanlines (PNG, JPEG) larger than it "
+                      "is decoded again for the rows the cache let go. Default: a sixteenth of "
+                      "the machine's memory, shared among the pipeservers l2wall run starts on "
+                      "it (one for a pipeserver alone), at least 512")
+           ->check(number_in(1, 100000)),
+       "picture session"},
+      {app.add_option("--pan", o.pan,
+                      "picture scene: a fixed view instead of the animated path, picture pixel "
+                      "X,Y (fractions allowed) at the canvas's centre, at every frame; without "
+                      "--zoom, at the scale --fit gives")
+           ->check(
+               [](const std::string& v) {
+                 FixedView f;
+                 return parse_pan(v, f) ? std::string()
+                                        : "expected X,Y, two numbers (picture pixels), got " + v;
+               },
+               "X,Y"),
+       "picture"},
+      {app.add_option("--zoom", o.zoom,
+                      "picture scene: a fixed view instead of the animated path, Z canvas pixels "
+                      "per picture pixel (1: 1:1; 0.25: 4x4 picture pixels a canvas pixel, read "
+                      "from a MIP level when the file has them; 2: magnified); without --pan, "
+                      "centred on the picture")
+           ->check(number_in(1e-6, 1e6)),
+       "picture"},
       {app.add_option("--triangles", o.triangles, "strips and hotspot scenes: triangle count")
            ->check(CLI::Range(1L, kMaxTriangles)),
        "strips hotspot"},
