@@ -266,6 +266,10 @@ async function poll() {
     const res = await fetch(api('/api/state'), { cache: 'no-store' });
     if (res.status === 403) {
       showError('This page needs the run\'s token: open the address l2wall printed.');
+    } else if (!res.ok) {
+      // Busy (too many connections, 503): said, and asked again; the state shown stays.
+      const why = (await res.json().catch(() => ({}))).error || res.statusText;
+      showError(`l2wall answered ${res.status} (${why}): asking again`);
     } else {
       state = await res.json();
       showError('');
