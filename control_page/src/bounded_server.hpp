@@ -68,7 +68,7 @@ class BoundedServer : public httplib::Server {
 
  private:
   struct Admitted {
-    socket_t sock;
+    socket_t sock = INVALID_SOCKET;
     std::string client;
   };
 
