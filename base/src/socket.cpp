@@ -68,22 +68,19 @@ bool wait_for(int fd, short events, Clock::time_point deadline) {
   }
 }
 
-std::string sockaddr_text(const sockaddr_storage& ss) {
+SocketAddress address_of(const sockaddr_storage& ss) {
   char host[INET6_ADDRSTRLEN] = "?";
-  std::uint16_t port = 0;
   if (ss.ss_family == AF_INET) {
     const auto* a = reinterpret_cast<const sockaddr_in*>(&ss);
     inet_ntop(AF_INET, &a->sin_addr, host, sizeof host);
-    port = ntohs(a->sin_port);
-    return fmt::format("{}:{}", host, port);
+    return {host, ntohs(a->sin_port)};
   }
   if (ss.ss_family == AF_INET6) {
     const auto* a = reinterpret_cast<const sockaddr_in6*>(&ss);
     inet_ntop(AF_INET6, &a->sin6_addr, host, sizeof host);
-    port = ntohs(a->sin6_port);
-    return fmt::format("[{}]:{}", host, port);
+    return {host, ntohs(a->sin6_port)};
   }
-  return "?";
+  return {"?", 0};
 }
 
 // One non-blocking connect attempt, completed within the deadline. Returns the errno.
@@ -146,14 +143,7 @@ Fd bind_udp(const std::string& host, std::uint16_t port) {
 }
 
 std::uint16_t local_port(int fd) {
-  sockaddr_storage ss{};
-  socklen_t len = sizeof ss;
-  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&ss), &len) != 0) return 0;
-  if (ss.ss_family == AF_INET) return ntohs(reinterpret_cast<const sockaddr_in*>(&ss)->sin_port);
-  if (ss.ss_family == AF_INET6) {
-    return ntohs(reinterpret_cast<const sockaddr_in6*>(&ss)->sin6_port);
-  }
-  return 0;
+  return local_address(fd).port;
 }
 
 namespace {
@@ -183,11 +173,25 @@ Endpoint parse_endpoint(std::string_view text) {
   return {std::string(text.substr(0, text.rfind(':'))), static_cast<std::uint16_t>(port)};
 }
 
-std::string peer_name(int fd) {
+SocketAddress peer_address(int fd) {
   sockaddr_storage ss{};
   socklen_t len = sizeof ss;
-  if (::getpeername(fd, reinterpret_cast<sockaddr*>(&ss), &len) != 0) return "?";
-  return sockaddr_text(ss);
+  if (::getpeername(fd, reinterpret_cast<sockaddr*>(&ss), &len) != 0) return {"?", 0};
+  return address_of(ss);
+}
+
+SocketAddress local_address(int fd) {
+  sockaddr_storage ss{};
+  socklen_t len = sizeof ss;
+  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&ss), &len) != 0) return {"?", 0};
+  return address_of(ss);
+}
+
+std::string peer_name(int fd) {
+  const SocketAddress a = peer_address(fd);
+  if (a.port == 0) return a.host;
+  return a.host.find(':') == std::string::npos ? fmt::format("{}:{}", a.host, a.port)
+                                               : fmt::format("[{}]:{}", a.host, a.port);
 }
 
 Fd connect_tcp(const std::string& host, std::uint16_t port, std::chrono::milliseconds timeout,

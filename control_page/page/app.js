@@ -88,8 +88,6 @@ function drawTiles(s) {
   }
 }
 
-let dragging = null;  // the window being dragged: its id, rectangle and where the drag began
-
 // A point of the page in canvas pixels.
 function canvasPoint(e) {
   const box = $('windows').getBoundingClientRect();
@@ -98,14 +96,14 @@ function canvasPoint(e) {
            y: ((e.clientY - box.top) * canvas.height) / box.height };
 }
 
-// A session's windows as the displays show them. Where the run can move them, a window is
-// dragged to a new place (POST /api/window, taken from the run's next frame) and raised by a
-// double click.
+// A session's windows as the displays show them. Where the run can move them, the gestures of
+// window_gestures.js move, resize and raise them (POST /api/window, taken from the run's next
+// frame).
 let windowsKey = '';  // what the window outlines show: redrawn only when that changes
 
 function drawWindows(s) {
   const svg = $('windows');
-  if (dragging) return;  // the dragged outline follows the pointer, not the state
+  if (windowGestureActive()) return;  // a held outline follows the gesture, not the state
   const key = JSON.stringify([s.windows, s.live && !s.ended, $('show-windows').checked, wallKey]);
   if (key === windowsKey) return;
   windowsKey = key;
@@ -124,42 +122,12 @@ function drawWindows(s) {
     label.textContent = `${w.id}: ${w.source}`;
     const title = document.createElementNS('http://www.w3.org/2000/svg', 'title');
     title.textContent = `window ${w.id} (${w.source}): ${w.width}x${w.height} at (${w.x}, ${w.y})` +
-                        (s.windows.movable ? '; drag to move, double-click to raise' : '');
+                        (s.windows.movable ? '; drag to move, wheel or pinch to resize, ' +
+                                             'double-click or tap to raise' : '');
     g.append(r, label, title);
-    if (g.classList.contains('movable')) {
-      g.addEventListener('pointerdown', (e) => startDrag(e, g, w));
-      g.addEventListener('pointermove', followDrag);
-      g.addEventListener('pointerup', endDrag);
-      g.addEventListener('dblclick', () => post('window', { action: 'raise', id: w.id }));
-    }
+    if (g.classList.contains('movable')) listenForGestures(g, w);
     svg.append(g);
   }
-}
-
-function startDrag(e, g, w) {
-  e.preventDefault();
-  g.setPointerCapture(e.pointerId);
-  dragging = { g, w, from: canvasPoint(e), dx: 0, dy: 0 };
-}
-
-function followDrag(e) {
-  if (!dragging) return;
-  const at = canvasPoint(e);
-  dragging.dx = Math.round(at.x - dragging.from.x);
-  dragging.dy = Math.round(at.y - dragging.from.y);
-  dragging.g.setAttribute('transform', `translate(${dragging.dx} ${dragging.dy})`);
-}
-
-// A click that moved nothing keeps the outline as it is, so a double click reaches it.
-async function endDrag() {
-  if (!dragging) return;
-  const { g, w, dx, dy } = dragging;
-  dragging = null;
-  if (!dx && !dy) return g.removeAttribute('transform');
-  windowsKey = '';  // the outline moved by hand: drawn again from the state
-  await post('window', { action: 'move', id: w.id, x: w.x + dx, y: w.y + dy, w: w.width,
-                         h: w.height });
-  if (state) drawWindows(state);
 }
 
 // A display's picture is replaced only once the new one has loaded: no flicker, and at most one
@@ -298,6 +266,10 @@ async function poll() {
     const res = await fetch(api('/api/state'), { cache: 'no-store' });
     if (res.status === 403) {
       showError('This page needs the run\'s token: open the address l2wall printed.');
+    } else if (!res.ok) {
+      // Busy (too many connections, 503): said, and asked again; the state shown stays.
+      const why = (await res.json().catch(() => ({}))).error || res.statusText;
+      showError(`l2wall answered ${res.status} (${why}): asking again`);
     } else {
       state = await res.json();
       showError('');

@@ -14,6 +14,7 @@
 #include <thread>
 #include <utility>
 
+#include "bounded_server.hpp"
 #include "control_page/access_token.hpp"
 #include "image/png_io.hpp"
 #include "page_assets.hpp"
@@ -25,8 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Enough for the page and a script or two polling it; a run's own threads come first.
-constexpr int kServerThreads = 4;
 // A request body is at most a mode name: anything larger is refused unread.
 constexpr std::size_t kMaxBody = 4096;
 constexpr int kMaxScale = 64;
@@ -57,7 +56,7 @@ std::string given_token(const httplib::Request& req) {
 struct ControlServer::Impl {
   HttpAddress address;
   std::string token;
-  httplib::Server server;
+  BoundedServer server{ConnectionLimits{}};
   std::thread thread;
   int port = 0;
   ControlInbox inbox;
@@ -216,10 +215,9 @@ ControlServer::ControlServer(const HttpAddress& address, std::string token,
   s.address = address;
   s.decision_wait = decision_wait;
   s.token = std::move(token);
-  s.server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   s.server.set_payload_max_length(kMaxBody);
   // A page asks at once and often: a connection that sends nothing for 2 s is closed, so idle
-  // peers do not hold the few threads long (cpp-httplib 0.11 queues connections unbounded).
+  // peers do not hold their threads long (bounded_server.hpp bounds them in number and time).
   s.server.set_read_timeout(std::chrono::seconds(2));
   s.server.set_keep_alive_timeout(2);
   s.server.set_keep_alive_max_count(100);
@@ -239,6 +237,7 @@ ControlServer::ControlServer(const HttpAddress& address, std::string token,
         "--http {}: cannot listen (the port is taken, or the address is not this machine's)",
         where));
   }
+  s.server.deepen_backlog();
   s.thread = std::thread([&s] { s.server.listen_after_bind(); });
   // stop() before the server runs would be lost and the thread never end.
   while (!s.server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -248,6 +247,7 @@ ControlServer::~ControlServer() {
   impl_->inbox.close("the run is over: nothing to steer");  // no request waits on a run gone
   impl_->server.stop();
   impl_->thread.join();
+  impl_->server.finish();  // no handler runs on once the state it reads is gone
 }
 
 int ControlServer::port() const {

@@ -3,24 +3,11 @@
 // Waits for the windows' outlines, drags window 0 right and down with the mouse, double-clicks
 // it to raise it, then presses Stop. Prints one JSON line of what it saw; the C++ test
 // (l2wall/tests/control_page_browser_test.cpp) checks it against the run's summary.
-import { chromium } from 'playwright-core';
+import { launch, state, stop, until } from './session_page.mjs';
 
 const [url] = process.argv.slice(2);
 const seen = {};
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--no-sandbox'],  // as root, Chromium's sandbox refuses to start
-});
-const state = (page) => page.evaluate(async () => (await fetch(`/api/state${location.search}`)).json());
-// The run's state once `done` says so (polled: the run takes a request at its next frame).
-async function until(page, done) {
-  for (const end = Date.now() + 60000; Date.now() < end;) {
-    const s = await state(page);
-    if (done(s)) return s;
-    await page.waitForTimeout(50);
-  }
-  throw new Error('the state never got there');
-}
+const browser = await launch();
 try {
   const page = await browser.newPage({ viewport: { width: 1300, height: 1100 } });
   page.setDefaultTimeout(60000);
@@ -54,9 +41,7 @@ try {
   const moved = await page.locator('#windows g.window[data-id="0"] rect').boundingBox();
   await page.mouse.dblclick(moved.x + 20, moved.y + 20);
   seen.front = (await until(page, (s) => s.windows.shown.at(-1).id === 0)).windows.shown.at(-1).id;
-  await page.click('#stop');
-  await page.waitForFunction(
-      () => /ended|not reachable/.test(document.getElementById('run-state').textContent));
+  await stop(page);
 } finally {
   await browser.close();
 }

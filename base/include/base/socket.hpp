@@ -52,7 +52,15 @@ Fd listen_tcp(const std::string& host, std::uint16_t port);
 // A non-blocking UDP socket bound to host:port (port 0: a free one), for datagrams taken in.
 Fd bind_udp(const std::string& host, std::uint16_t port);
 std::uint16_t local_port(int fd);
-// "127.0.0.1:43210" for a connected socket.
+// A socket's end: the host as inet_ntop writes it ("127.0.0.1", "::1") and the port; "?" and 0
+// when the socket has none.
+struct SocketAddress {
+  std::string host;
+  std::uint16_t port = 0;
+};
+SocketAddress peer_address(int fd);
+SocketAddress local_address(int fd);
+// "127.0.0.1:43210" ("[::1]:43210") for a connected socket.
 std::string peer_name(int fd);
 
 // Connects to host:port, retrying refused connections (the server may not be listening yet)

@@ -14,7 +14,8 @@
 // Every POST needs the run's token (`?token=` or the X-L2-Token header), so nobody else on the
 // network steers the wall; bound beyond loopback, the GETs of /api/ need it too. A refusal is
 // 403 with a one-line JSON reason and changes nothing. The requests reach the run through the
-// inbox; the run publishes what it shows. Served on threads of its own (cpp-httplib's pool).
+// inbox; the run publishes what it shows. Served on threads of its own, their connections
+// bounded in number, per client and in time (a flood is answered 503; src/bounded_server.hpp).
 #pragma once
 
 #include <chrono>
