@@ -16,8 +16,13 @@ TileLayout small_layout(int pipeservers, int tile_w, int tile_h, int fb_w, int f
   wall.name = "small";
   wall.canvas_width = 136;
   wall.canvas_height = 48;
-  wall.displays = {Display{0, 0, 64, 48, 0, 0, 0, "", {}, {}, {}, {}, {}, {}, 1.0, {}},
-                   Display{1, 0, 64, 48, 72, 0, 0, "", {}, {}, {}, {}, {}, {}, 1.0, {}}};
+  for (const int x : {0, 72}) {
+    Display& d = wall.displays.emplace_back();
+    d.id = x == 0 ? 0 : 1;
+    d.width = 64;
+    d.height = 48;
+    d.canvas_x = x;
+  }
   wall.pipeserver_count = pipeservers;
   wall.framebuffer_width = fb_w;
   wall.framebuffer_height = fb_h;
