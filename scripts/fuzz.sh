@@ -7,7 +7,7 @@
 # (under FUZZ_OUT instead of build/fuzz/runs when set).
 # Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all of them)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
-# SECONDS as the upper bound).
+# SECONDS as the upper bound). FUZZ_JOBS=N runs N harnesses at a time (default: one a core).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ || $1 -lt 1 ]]; then
@@ -23,15 +23,19 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet
 
 out=${FUZZ_OUT:-build/fuzz/runs}  # FUZZ_OUT: another folder, for a run beside this one
-failed=0
-for h in "${harnesses[@]}"; do
-  seeds=fuzz/corpus/$h
-  [[ -d $seeds ]] || { echo "fuzz: no harness '$h' (no $seeds)" >&2; exit 2; }
+# FUZZ_JOBS harnesses run side by side (default: one a core): each is one process, so the smoke
+# run takes SECONDS per FUZZ_JOBS harnesses. Their lines are printed in the list's order.
+jobs=${FUZZ_JOBS:-$(nproc)}
+
+# fuzz_one HARNESS: runs it, writes its summary line to $out/HARNESS/summary.txt, exits 1 when
+# it crashed, hung or broke a promise.
+fuzz_one() {
+  local h=$1 seeds=fuzz/corpus/$1
   # Inputs found worth keeping go to a scratch corpus, never into the committed seeds.
-  work=$out/$h/corpus artifacts=$out/$h/artifacts/ log=$out/$h/log.txt
+  local work=$out/$h/corpus artifacts=$out/$h/artifacts/ log=$out/$h/log.txt
   mkdir -p "$work" "$artifacts"
   # A READY message is 17 bytes: 512 hold thirty, and longer inputs only slow the search.
-  limits=()
+  local limits=()
   [[ $h == ready ]] && limits=(-max_len=512)
   # Wall and session files as large as the 100 KB one whose nesting overflowed toml++'s stack:
   # the shape check that refuses it must itself hold at that size.
@@ -45,10 +49,11 @@ for h in "${harnesses[@]}"; do
   # Pictures: no one allocation past what the checks let a reader take (a picture decoded whole,
   # 512 MiB, with room), nor the process past 2 GB; files of up to 64 kB.
   [[ $h == picture_file ]] && limits=(-max_len=65536 -malloc_limit_mb=1024 -rss_limit_mb=2048)
-  status=0
+  local status=0
   build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
     >"$log" 2>&1 || status=$?
+  local runs rate last cov ft corpus verdict took
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
@@ -59,11 +64,30 @@ for h in "${harnesses[@]}"; do
     verdict="no crash"
   else
     verdict="FAILED (exit $status, see $log)"
-    failed=1
-    grep -E '^(==[0-9]+==ERROR|fuzz: broken promise|SUMMARY)' "$log" | head -3 >&2 || true
+    grep -E '^(==[0-9]+==ERROR|fuzz: broken promise|SUMMARY)' "$log" | head -3 >"$out/$h/why.txt" || true
   fi
   took=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
   printf 'fuzz_%-15s %12s runs in %s s (%s/s)  cov %s  ft %s  corpus %s  %s\n' "$h" \
-    "${runs:-?}" "${took:-$seconds}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" "$verdict"
+    "${runs:-?}" "${took:-$seconds}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" \
+    "$verdict" >"$out/$h/summary.txt"
+  ((status == 0))
+}
+
+for h in "${harnesses[@]}"; do
+  [[ -d fuzz/corpus/$h ]] || { echo "fuzz: no harness '$h' (no fuzz/corpus/$h)" >&2; exit 2; }
+  rm -f "$out/$h/summary.txt" "$out/$h/why.txt"
+done
+pids=()
+for h in "${harnesses[@]}"; do
+  while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; done
+  fuzz_one "$h" &
+  pids+=($!)
+done
+failed=0
+for i in "${!harnesses[@]}"; do
+  h=${harnesses[$i]}
+  wait "${pids[$i]}" || failed=1
+  cat "$out/$h/summary.txt"
+  [[ -s $out/$h/why.txt ]] && cat "$out/$h/why.txt" >&2
 done
 exit $failed
