@@ -4,6 +4,7 @@
 #pragma once
 
 #include <EGL/egl.h>
+#include <EGL/eglext.h>
 
 #include <string>
 
@@ -26,6 +27,12 @@ EglDisplayState chosen_display();
 
 // What the EGL call that just failed reports: "EGL_NOT_INITIALIZED: DRI2: failed to load driver".
 std::string egl_failure();
+
+// EGL_KHR_debug's callback (egl_errors.cpp): keeps the driver's first message of an error for
+// egl_failure. forget_driver_message drops one left from a call whose failure was expected.
+void on_egl_message(EGLenum error, const char* command, EGLint type, EGLLabelKHR thread,
+                    EGLLabelKHR object, const char* message);
+void forget_driver_message();
 
 // A context of the display's config with a width x height pbuffer, current on return.
 struct EglBinding {
