@@ -101,28 +101,12 @@ long sampled(double centre, double scale, int size, int x) {
 long wrong_pixels(const WallRun& run, const fs::path& wall_file, int frame, const SourceView& view,
                   int source_w, int source_h, const Source& source) {
   const Wall wall = wall_file.empty() ? default_wall() : load_wall(wall_file);
-  const TileLayout layout = plan_layout(wall);
-  long wrong = 0;
-  for (const Display& display : wall.displays) {
-    const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
-                                    fmt::format("display-{}.png", display.id));
-    std::vector<std::pair<int, int>> stamps;
-    for (const PipeserverPlan& plan : layout.pipeservers) {
-      const DisplayTile& t = plan.tiles.front().tile;
-      if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
-    }
-    const Rect r = display.on_canvas();
-    for (int y = 0; y < shown.height(); ++y) {
-      const long sy = sampled(view.centre_y, view.scale_y, wall.canvas_height, r.y + y);
-      for (int x = 0; x < shown.width(); ++x) {
-        if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
-        const long sx = sampled(view.centre_x, view.scale_x, wall.canvas_width, r.x + x);
-        const bool inside = sx >= 0 && sx < source_w && sy >= 0 && sy < source_h;
-        wrong += !(shown.at(x, y) == (inside ? source(sx, sy) : Rgb{}));
-      }
-    }
-  }
-  return wrong;
+  return wrong_canvas_pixels(run, wall, frame, [&](int u, int v) {
+    const long sx = sampled(view.centre_x, view.scale_x, wall.canvas_width, u);
+    const long sy = sampled(view.centre_y, view.scale_y, wall.canvas_height, v);
+    const bool inside = sx >= 0 && sx < source_w && sy >= 0 && sy < source_h;
+    return inside ? source(sx, sy) : Rgb{};
+  });
 }
 
 Canvas canvas_of_file(const fs::path& wall_file) {

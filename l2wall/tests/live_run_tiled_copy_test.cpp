@@ -27,30 +27,12 @@ Rgb source(long x, long y) {
 // (cx, cy) at the canvas's centre, each pipeserver's frame stamp aside.
 long wrong_at_one_to_one(const WallRun& run, int frame, double cx, double cy) {
   const Wall wall = default_wall();
-  const TileLayout layout = plan_layout(wall);
-  long wrong = 0;
-  for (const Display& display : wall.displays) {
-    const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
-                                    fmt::format("display-{}.png", display.id));
-    std::vector<std::pair<int, int>> stamps;
-    for (const PipeserverPlan& plan : layout.pipeservers) {
-      const DisplayTile& t = plan.tiles.front().tile;
-      if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
-    }
-    const Rect r = display.on_canvas();
-    for (int y = 0; y < shown.height(); ++y) {
-      const auto sy =
-          static_cast<long>(std::floor(cy + (r.y + y + 0.5 - wall.canvas_height / 2.0)));
-      for (int x = 0; x < shown.width(); ++x) {
-        if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
-        const auto sx =
-            static_cast<long>(std::floor(cx + (r.x + x + 0.5 - wall.canvas_width / 2.0)));
-        const bool inside = sx >= 0 && sx < kWidth && sy >= 0 && sy < kHeight;
-        wrong += !(shown.at(x, y) == (inside ? source(sx, sy) : Rgb{}));
-      }
-    }
-  }
-  return wrong;
+  return wrong_canvas_pixels(run, wall, frame, [&](int u, int v) {
+    const auto sx = static_cast<long>(std::floor(cx + (u + 0.5 - wall.canvas_width / 2.0)));
+    const auto sy = static_cast<long>(std::floor(cy + (v + 0.5 - wall.canvas_height / 2.0)));
+    const bool inside = sx >= 0 && sx < kWidth && sy >= 0 && sy < kHeight;
+    return inside ? source(sx, sy) : Rgb{};
+  });
 }
 
 TEST(TiledCopyRun, ALargePngIsCopiedOnceBeforeThePipeserversAndShownAsItIs) {

@@ -31,32 +31,9 @@ class VncRun : public ::testing::Test {
 // Every display of frame `frame` against `desktop` at the display's canvas position (black
 // past the desktop's edge), each pipeserver's frame stamp aside; returns the wrong pixels.
 long wrong_pixels(const WallRun& run, const Wall& wall, int frame, const RgbImage& desktop) {
-  const TileLayout layout = plan_layout(wall);
-  long wrong = 0;
-  for (const Display& display : wall.displays) {
-    const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
-                                    fmt::format("display-{}.png", display.id));
-    std::vector<std::pair<int, int>> stamps;
-    for (const PipeserverPlan& plan : layout.pipeservers) {
-      const DisplayTile& t = plan.tiles.front().tile;
-      if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
-    }
-    const Rect r = display.on_canvas();
-    for (int y = 0; y < shown.height(); ++y) {
-      for (int x = 0; x < shown.width(); ++x) {
-        if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
-        const int dx = r.x + x, dy = r.y + y;
-        const bool inside = dx < desktop.width() && dy < desktop.height();
-        const Rgb want = inside ? desktop.at(dx, dy) : Rgb{};
-        if (shown.at(x, y) != want && ++wrong <= 3)
-          ADD_FAILURE() << fmt::format(
-              "display {} pixel {},{} (canvas {},{}): {},{},{} instead of {},{},{}", display.id, x,
-              y, dx, dy, shown.at(x, y).r, shown.at(x, y).g, shown.at(x, y).b, want.r, want.g,
-              want.b);
-      }
-    }
-  }
-  return wrong;
+  return wrong_canvas_pixels(run, wall, frame, [&](int u, int v) {
+    return u < desktop.width() && v < desktop.height() ? desktop.at(u, v) : Rgb{};
+  });
 }
 
 void expect_desktop_on(const std::string& name, const fs::path& wall_file, const Xvnc& vnc,

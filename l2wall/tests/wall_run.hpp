@@ -277,4 +277,35 @@ inline pid_t running_pipeserver(const WallRun& run, int pipeserver) {
   return -1;
 }
 
+// Pixels of the kept displays of frame `frame` of `wall` that are not `expected(u, v)`, the
+// canvas pixel each shows, every pipeserver's frame-stamp pixel aside (a framebuffer with no
+// room for a stamp strip marks its first tile's first pixel with the frame). The first three
+// are each a failure saying where and what.
+template <class Expected>
+long wrong_canvas_pixels(const WallRun& run, const Wall& wall, int frame, Expected expected) {
+  const TileLayout layout = plan_layout(wall);
+  long wrong = 0;
+  for (const Display& display : wall.displays) {
+    const RgbImage shown = read_png(run.out() / fmt::format("frame-{}", frame) /
+                                    fmt::format("display-{}.png", display.id));
+    std::vector<std::pair<int, int>> stamps;
+    for (const PipeserverPlan& plan : layout.pipeservers) {
+      const DisplayTile& t = plan.tiles.front().tile;
+      if (t.display == display.id) stamps.emplace_back(t.on_display.x, t.on_display.y);
+    }
+    const Rect r = display.on_canvas();
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        if (std::find(stamps.begin(), stamps.end(), std::pair{x, y}) != stamps.end()) continue;
+        const Rgb want = expected(r.x + x, r.y + y), got = shown.at(x, y);
+        if (got == want || ++wrong > 3) continue;
+        ADD_FAILURE() << fmt::format(
+            "display {} pixel {},{} (canvas {},{}): {},{},{} instead of {},{},{}", display.id, x, y,
+            r.x + x, r.y + y, got.r, got.g, got.b, want.r, want.g, want.b);
+      }
+    }
+  }
+  return wrong;
+}
+
 }  // namespace l2::testing_support
