@@ -81,8 +81,7 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
                  static_cast<int>(groups_.size())),
       lock_check_(groups_) {
   // A column's displays_fed are bits of its mesh's display ids.
-  const std::vector<MeshPart> meshes =
-      layout.meshes.empty() ? mesh_parts(layout.wall) : layout.meshes;
+  const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     for (const int id : groups_[g].displays) {

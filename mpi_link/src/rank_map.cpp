@@ -28,7 +28,7 @@ std::string RankMap::role(int rank) const {
 
 RankMap make_rank_map(const TileLayout& layout, bool every_column) {
   const Wall& wall = layout.wall;
-  const std::vector<MeshPart> meshes = layout.meshes.empty() ? mesh_parts(wall) : layout.meshes;
+  const std::vector<MeshPart> meshes = meshes_of(layout);
   RankMap map;
   map.pipeservers = static_cast<int>(layout.pipeservers.size());
   map.column_of_display.assign(wall.displays.size(), 0);

@@ -122,6 +122,10 @@ std::vector<MeshPart> mesh_parts(const Wall& wall) {
   return parts;
 }
 
+std::vector<MeshPart> meshes_of(const TileLayout& layout) {
+  return layout.meshes.empty() ? mesh_parts(layout.wall) : layout.meshes;
+}
+
 Wall mesh_wall(const Wall& wall, const MeshPart& part) {
   Wall w = wall;
   w.displays.clear();

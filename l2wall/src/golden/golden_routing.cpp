@@ -22,8 +22,7 @@ std::vector<RgbImage> emulate_displays(const TileLayout& layout,
                                        StripErrorCounts& errors,
                                        const std::vector<std::string>& names) {
   // Each mesh its own emulator, fed by its own pipeservers (tilelayout/several_meshes.hpp).
-  const std::vector<MeshPart> meshes =
-      layout.meshes.empty() ? mesh_parts(layout.wall) : layout.meshes;
+  const std::vector<MeshPart> meshes = meshes_of(layout);
   std::vector<RgbImage> shown(layout.wall.displays.size());
   for (const MeshPart& part : meshes) {
     const bool one = meshes.size() == 1;

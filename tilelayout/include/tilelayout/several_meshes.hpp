@@ -30,6 +30,10 @@ std::vector<int> share_pipeservers(int pipeservers, const std::vector<long long>
 // Every mesh of `wall`, in mesh order (one for a wall of one mesh).
 std::vector<MeshPart> mesh_parts(const Wall& wall);
 
+// The meshes of a plan: TileLayout::meshes, or the wall's when a plan made by hand left them
+// out.
+std::vector<MeshPart> meshes_of(const TileLayout& layout);
+
 // The wall one mesh sees: the whole canvas, its displays with ids 0.. in wall id order, its
 // share of the pipeservers; everything else as `wall` says. A wall of one mesh.
 Wall mesh_wall(const Wall& wall, const MeshPart& part);
