@@ -8,7 +8,10 @@
 #      names a pipeserver on render-b and what it lost within the liveness timeout (a ceiling of
 #      10x), the run exits non-zero, and once the link is back nothing is left on any host;
 #   c. render-b's link cut for 1 s, well under the liveness timeout, and restored: the run goes
-#      on and finishes with the one-machine run's bytes.
+#      on and finishes with the one-machine run's bytes;
+#   d. --survive-host-loss under an mpirun that keeps the job, pipeserver 2 alone on render-b
+#      (the wall has room for one loss): its link cut, the run goes on without it, says so and
+#      renders every frame; nothing left once the link is back.
 # Delay and jitter are not tested: this machine's kernel has no netem to make them.
 # Exit 77 (skipped) where this machine cannot make network namespaces or has no nft.
 # Usage: netfault_test.sh L2WALL OUT CLUSTER_SH
@@ -135,4 +138,32 @@ short_cut() {
   nothing_left "$dir" ""
 }
 short_cut
+
+survived() {
+  local dir=$out/survived run line
+  sed -e 's/framebuffer_width = 800/framebuffer_width = 1024/' \
+    -e 's/framebuffer_height = 600/framebuffer_height = 768/' "$(dirname "$0")/../../../walls/kd-2x2.toml" \
+    >"$out/roomy.toml"
+  bash "$cluster" --keep-job --id "$id" --hosts render-a:3,render-b:1,render-c:1,display-a:1 -- \
+    "$l2wall" run --mpi --wall "$out/roomy.toml" --balance strips --survive-host-loss --frames 100 \
+    --refresh 0 --stall-timeout 60000 --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+  run=$!
+  under_way "$dir" 20
+  bash "$cluster" --link "$id" render-b cut
+  for _ in $(seq 300); do
+    line=$(grep -E "^l2wall: pipeserver 2 \(rank 3 on render-b, pid [0-9]+\) is lost \(no word for 3 s: its host's network may be down\) .* the run goes on without it" "$dir.err") && break
+    kill -0 "$run" 2>/dev/null || break
+    sleep 0.1
+  done
+  bash "$cluster" --link "$id" render-b restore
+  [[ -n $line ]] || { echo "FAIL: no line of render-b's loss survived:"; cat "$dir.err"; kill "$run"; exit 1; }
+  ended_within "$run" 60
+  # mpirun keeping the job exits 1 once l2wall ended it after a loss (cluster.sh --help).
+  ((status == 1)) || { echo "FAIL: cluster.sh exited $status"; cat "$dir.err"; exit 1; }
+  grep -q "^l2wall run: 100 frames on 4 displays" "$dir.out" ||
+    { echo "FAIL: not every frame rendered"; cat "$dir.out" "$dir.err"; exit 1; }
+  echo "render-b cut off, survived: $line"
+  nothing_left "$dir" ""
+}
+survived
 echo "nothing left running on any host"
