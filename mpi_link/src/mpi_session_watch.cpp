@@ -96,8 +96,12 @@ void MpiSession::watch(std::stop_token stop) {
   std::vector<Silence> silences(liveness_.size(), Silence(liveness_timeout_, start));
   std::vector<bool> watched(liveness_.size());
   for (std::size_t r = 0; r < liveness_.size(); ++r) watched[r] = static_cast<bool>(liveness_[r]);
-  const std::string silent =
-      fmt::format("is lost ({}: its host's network may be down)", no_word_for(liveness_timeout_));
+  // A rank on the coordinator's own network stack has no network between them to go down.
+  const auto silent = [this](std::size_t r) {
+    return fmt::format("is lost ({}: {})", no_word_for(liveness_timeout_),
+                       beside(static_cast<int>(r)) ? "stopped, on the coordinator's own host"
+                                                   : "its host's network may be down");
+  };
   bool fatal = false;
   while (!stop.stop_requested() && !fatal) {
     std::vector<pollfd> fds;
@@ -120,7 +124,7 @@ void MpiSession::watch(std::stop_token stop) {
                           "is gone (its connection to the coordinator closed: killed or crashed)");
       else if (watched[r] && silences[r].too_long(now)) {
         watched[r] = false;
-        fatal = note_lost(static_cast<int>(r), silent);
+        fatal = note_lost(static_cast<int>(r), silent(r));
       }
     }
   }

@@ -69,7 +69,8 @@ class MpiSession {
   // Whether `rank` was found gone (the run reports it from here on, if so).
   bool gone(int rank);
   // How a rank found gone was lost, for its line: "is gone (its connection to the coordinator
-  // closed: killed or crashed)", "is lost (no word for 3 s: its host's network may be down)".
+  // closed: killed or crashed)", "is lost (no word for 3 s: its host's network may be down)"
+  // ("stopped, on the coordinator's own host" where no network joins them).
   std::string loss_cause(int rank);
 
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
