@@ -12,7 +12,8 @@
 #   d. --survive-host-loss under an mpirun that keeps the job, pipeserver 2 alone on render-b
 #      (the wall has room for one loss): its link cut, the run goes on without it, says so and
 #      renders every frame; nothing left once the link is back.
-# Delay and jitter are not tested: this machine's kernel has no netem to make them.
+# Before them, a bad --loss, --id or --link is refused in one line. Delay and jitter are not
+# tested: this machine's kernel has no netem to make them.
 # Exit 77 (skipped) where this machine cannot make network namespaces or has no nft.
 # Usage: netfault_test.sh L2WALL OUT CLUSTER_SH
 set -euo pipefail
@@ -20,6 +21,24 @@ l2wall=$1 out=$2 cluster=$3
 rm -rf "$out" && mkdir -p "$out"
 command -v nft >/dev/null || { echo "no nft (apt-get install nftables): skipped"; exit 77; }
 source "$(dirname "$0")/rank_pid.sh"
+
+# refused CODE LINE ARGS...: cluster.sh ARGS exits CODE with LINE on stderr, making nothing.
+refused() {
+  local code=$1 line=$2 status=0 err
+  shift 2
+  err=$(bash "$cluster" "$@" 2>&1 >/dev/null) || status=$?
+  [[ $status == "$code" && $err == "$line" ]] ||
+    { echo "FAIL: cluster.sh $*: exit $status, '$err'; wanted $code, '$line'"; exit 1; }
+}
+for p in 0 0.0 100 1.55 -1 abc; do
+  refused 2 "cluster.sh: --loss '$p' is not a percentage above 0 and below 100 (one decimal at most)" \
+    --loss "$p" -- true
+done
+refused 2 "cluster.sh: --id 'Render' is not a-z then a-z or 0-9, 8 at most" --id Render -- true
+refused 2 "cluster.sh --link: 'down' is not cut or restore" --link nfnone render-b down
+refused 1 "cluster.sh --link: no host render-b in cluster nfnone (no namespace nfnone-render-b)" \
+  --link nfnone render-b cut
+echo "cluster.sh refuses a bad --loss, --id and --link in one line"
 
 # same_displays ONE MPI FRAME: every display picture of FRAME of ONE is in MPI, byte for byte.
 same_displays() {
