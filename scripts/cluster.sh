@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
 # A cluster on one machine: each host a Linux network namespace with its own address and host
-# name, joined by a bridge, its link shaped to a rate if asked (tc tbf), and a command run across
+# name, joined by a bridge, its link shaped to a rate if asked (tc tbf) or made to lose packets
+# (nftables' random drop: this kernel may lack netem, so delay and jitter cannot be made), and a
+# command run across
 # the hosts with mpirun as on real machines (a hostfile, an rsh agent that enters the namespaces,
 # the MPI interfaces pinned to the cluster's subnet). mpirun itself runs on the first host, as a
 # user would on the head node. Everything made is removed when it ends, however it ends; names
 # are unique to the run, so two runs at once do not meet. Needs root (CI is).
 #
-# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--subnet A.B.C] [--keep-job]
-#                           -- PROGRAM ARGS...
+# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--loss PERCENT] [--subnet A.B.C]
+#                           [--keep-job] [--id ID] -- PROGRAM ARGS...
+#        scripts/cluster.sh --link ID HOST cut|restore
 #   --hosts    the hosts and how many ranks each takes, in rank order (default
 #              render-a:3,render-b:2,display-a:1: the default wall's coordinator and
 #              pipeservers 0-1, pipeservers 2-3, its board column)
 #   --rate     each host's link, both ways: e.g. 1gbit, 10gbit, 500mbit (default: unshaped)
+#   --loss     each host's link drops this share of its packets at random, both ways: 0 < PERCENT
+#              < 100, one decimal at most (e.g. 1, 0.5); a packet between two hosts crosses two
+#              links, so about twice PERCENT of them are lost end to end (nftables' numgen random)
 #   --subnet   the hosts' /24, host i at .(i+2) (default 10.213.7; only inside the namespaces)
 #   --keep-job mpirun keeps the job when a rank dies (--mca orte_enable_recovery 1 --mca
 #              orte_abort_on_non_zero_status 0), as `l2wall run --mpi --survive-host-loss` needs;
@@ -19,19 +25,30 @@
 #              l2wall ended it after a run that lost a rank (it says so: "ending the job"), a
 #              run that survived included. The run's outcome is l2wall's last line and the first
 #              line of its summary.txt.
+#   --id       the cluster's name, a-z then a-z/0-9, 8 at most (default: l2c + 5 random hex
+#              digits): host HOST is network namespace ID-HOST, so that another shell can act on
+#              it while the command runs; refused if a namespace of that name exists
+#   --link ID HOST cut|restore
+#              while cluster ID runs: cut HOST's link (every packet in or out, loopback aside,
+#              dropped in silence, as a pulled cable or a dead switch port: no connection is
+#              told) or restore it; exits 1 with a line if ID-HOST is not there
 # It runs: mpirun -np <the slots' sum> --hostfile ... PROGRAM ARGS..., prints that command on
-# one line ("cluster: ..."), and exits with its code; 77 when this machine cannot make network
+# one line ("cluster: ..."), with --loss a last line of what the links dropped ("cluster: --loss 1:
+# the hosts' links dropped 37 of 3815 packets"), and exits with its code; 77 when this machine cannot make network
 # namespaces (not root, no ip netns), said in one line. Open MPI's own lines that -q does not
 # reach and that say nothing wrong of the run here are left out of its stderr (noise() below).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-hosts_spec=render-a:3,render-b:2,display-a:1 rate= subnet=10.213.7 keep_job=()
+hosts_spec=render-a:3,render-b:2,display-a:1 rate= loss= subnet=10.213.7 keep_job=() id=
 usage() { sed -n '/^# Usage:/,/^set /p' "$0" | sed '$d; s/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --hosts) hosts_spec=${2:?--hosts needs NAME:SLOTS,...}; shift 2 ;;
     --rate) rate=${2:?--rate needs a rate such as 1gbit}; shift 2 ;;
+    --loss) loss=${2:?--loss needs a percentage such as 1}; shift 2 ;;
     --subnet) subnet=${2:?--subnet needs A.B.C}; shift 2 ;;
+    --id) id=${2:?--id needs a name}; shift 2 ;;
+    --link) shift; exec bash "$here/cluster-link.sh" "$@" ;;
     --keep-job) keep_job=(--mca orte_enable_recovery 1 --mca orte_abort_on_non_zero_status 0); shift ;;
     -h | --help) usage; exit 0 ;;
     --) shift; break ;;
@@ -45,6 +62,14 @@ if [[ -n $rate && ! $rate =~ ^[0-9]+[kmg]bit$ ]]; then
   echo "cluster.sh: --rate '$rate' is not N followed by kbit, mbit or gbit" >&2
   exit 2
 fi
+if [[ -n $loss ]] && ! [[ $loss =~ ^[0-9]{1,2}(\.[0-9])?$ && ${loss/./} =~ [1-9] ]]; then
+  echo "cluster.sh: --loss '$loss' is not a percentage above 0 and below 100 (one decimal at most)" >&2
+  exit 2
+fi
+if [[ -n $id && ! $id =~ ^[a-z][a-z0-9]{0,7}$ ]]; then
+  echo "cluster.sh: --id '$id' is not a-z then a-z or 0-9, 8 at most" >&2
+  exit 2
+fi
 names=() slots=()
 IFS=, read -ra entries <<<"$hosts_spec"
 for e in "${entries[@]}"; do
@@ -53,7 +78,11 @@ for e in "${entries[@]}"; do
   names+=("${BASH_REMATCH[1]}") slots+=("${BASH_REMATCH[2]}")
 done
 
-id=l2c$(printf '%05x' $((RANDOM * 32 + RANDOM % 32)))
+if [[ -n $id ]] && ip netns list 2>/dev/null | grep -q "^$id-"; then
+  echo "cluster.sh: --id '$id': a cluster of that name runs (ip netns list)" >&2
+  exit 2
+fi
+id=${id:-l2c$(printf '%05x' $((RANDOM * 32 + RANDOM % 32)))}
 if ! ip netns add "$id-probe" 2>/dev/null; then
   echo "cluster.sh: cannot make network namespaces here (root and iproute2's ip netns needed)" >&2
   exit 77
@@ -79,9 +108,20 @@ cleanup() {
     echo "cluster: left running on $h, killed: $(ps -o comm= -p "${pids//$'\n'/,}" | sort | uniq -c | xargs)" >&2
     kill -9 $pids 2>/dev/null || true
   done
+  [[ -z $loss ]] || say_losses
   for h in "${names[@]}"; do ip netns del "$id-$h" 2>/dev/null || true; done
   ip link del "${id}br" 2>/dev/null || true
   rm -rf "$work"
+}
+# --loss: what the links dropped of what they carried, from the rules' counters (both ways, every
+# host), so that a run can show its packets were lost.
+say_losses() {
+  local h counts
+  counts=$(for h in "${names[@]}"; do ip netns exec "$id-$h" nft list table inet l2loss 2>/dev/null; done |
+    awk '/counter packets/ { for (i = 1; i < NF; ++i) if ($i == "packets") n = $(i + 1);
+                             if (/drop/) dropped += n; else seen += n }
+         END { printf "%d %d", dropped, seen }')
+  echo "cluster: --loss $loss: the hosts' links dropped ${counts% *} of ${counts#* } packets"
 }
 interrupted=0
 trap cleanup EXIT
@@ -97,6 +137,23 @@ shape() {  # shape NETNS-OR-"" DEVICE
   tc ${1:+-n "$1"} qdisc add dev "$2" root tbf rate "$rate" burst "$burst" latency 100ms
 }
 
+# PERCENT of a link's packets dropped at random, each way: in thousandths, numgen's range.
+lossy() {  # lossy NETNS
+  local whole=${loss%.*} tenths=0
+  [[ $loss == *.* ]] && tenths=${loss#*.}
+  local per_mille=$((10#$whole * 10 + tenths))
+  ip netns exec "$1" nft -f - <<NFT
+table inet l2loss {
+  chain in { type filter hook input priority 0; iifname "lo" accept; counter; numgen random mod 1000 < $per_mille counter drop; }
+  chain out { type filter hook output priority 0; oifname "lo" accept; counter; numgen random mod 1000 < $per_mille counter drop; }
+}
+NFT
+}
+
+if [[ -n $loss ]] && ! command -v nft >/dev/null; then
+  echo "cluster.sh: --loss needs nftables' nft (apt-get install nftables)" >&2
+  exit 2
+fi
 ip link add "${id}br" type bridge
 ip link set "${id}br" up
 : >"$work/hostfile"
@@ -111,6 +168,7 @@ for i in "${!names[@]}"; do
   ip -n "$ns" addr add "$subnet.$((i + 2))/24" dev "${id}h$i"
   ip -n "$ns" link set "${id}h$i" up
   if [[ -n $rate ]]; then shape "$ns" "${id}h$i"; shape "" "${id}b$i"; fi
+  if [[ -n $loss ]]; then lossy "$ns"; fi
   echo "${names[$i]} slots=${slots[$i]}" >>"$work/hostfile"
   np=$((${np:-0} + slots[i]))
 done
@@ -124,7 +182,7 @@ mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca orte_tmpdir_base "$work" --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
   --mca mpi_yield_when_idle 1 "${keep_job[@]}")
-echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }) on $subnet.0/24${rate:+, links at $rate}: ${mpirun[*]} $*"
+echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }, namespaces $id-HOST) on $subnet.0/24${rate:+, links at $rate}${loss:+, $loss % loss each way}: ${mpirun[*]} $*"
 # Open MPI 4.1's lines that -q does not reach, each harmless here: the
 # rsh launcher cannot move a namespace's agent into its own process group (the agent is ended
 # with the job all the same); PMIx reports a bad parameter of its event notification when a job

@@ -17,7 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels  # real-world models (the Khronos glTF samples) a model test loads
   libopenmpi-dev openmpi-bin
-  socat iproute2 curl jq xvfb xauth libx11-dev libxrandr-dev libxtst-dev
+  socat iproute2 nftables curl jq xvfb xauth libx11-dev libxrandr-dev libxtst-dev
   gnuplot-nox
   libvncserver-dev  # --scene vnc: the coordinator's RFB client (libvncclient)
   tigervnc-standalone-server tigervnc-tools x11-xserver-utils  # its test: Xvnc, vncpasswd, xsetroot

@@ -73,6 +73,7 @@ void reap(pid_t pid, std::optional<ExitStatus>& status) {
 }  // namespace
 
 std::string ExitStatus::describe() const {
+  if (gone && !gone_how.empty()) return gone_how;
   if (gone) return "is gone (its connection to the coordinator closed: killed or crashed)";
   if (signal != 0) return fmt::format("killed by signal {} ({})", signal, strsignal(signal));
   return fmt::format("exited with code {}", code);

@@ -27,13 +27,14 @@ class ChildPipeserver final : public PipeserverProcess {
 // (mpi/), and mpirun reaps it.
 class RemotePipeserver final : public PipeserverProcess {
  public:
-  RemotePipeserver(std::string place, std::function<bool()> gone)
-      : place_(std::move(place)), gone_(std::move(gone)) {}
+  RemotePipeserver(std::string place, std::function<bool()> gone, std::function<std::string()> how)
+      : place_(std::move(place)), gone_(std::move(gone)), how_(std::move(how)) {}
   std::string place() const override { return place_; }
   std::optional<ExitStatus> poll() override {
     if (!gone_()) return std::nullopt;
     ExitStatus s;
     s.gone = true;
+    if (how_) s.gone_how = how_();
     return s;
   }
   bool stopped() const override { return false; }
@@ -44,6 +45,7 @@ class RemotePipeserver final : public PipeserverProcess {
  private:
   std::string place_;
   std::function<bool()> gone_;
+  std::function<std::string()> how_;
 };
 
 }  // namespace
@@ -54,8 +56,9 @@ std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<st
 }
 
 std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
-                                                             std::function<bool()> gone) {
-  return std::make_unique<RemotePipeserver>(std::move(place), std::move(gone));
+                                                             std::function<bool()> gone,
+                                                             std::function<std::string()> how) {
+  return std::make_unique<RemotePipeserver>(std::move(place), std::move(gone), std::move(how));
 }
 
 }  // namespace l2

@@ -195,6 +195,11 @@ void add_process_options(CLI::App& run, RunCommand& c) {
   add_timeout_option(run, "stall-timeout", o.stall_timeout_ms, false,
                      "without a display swap after which the run names the hung pipeserver "
                      "(or compositing server) and stops");
+  add_timeout_option(run, "liveness-timeout", o.liveness_timeout_ms, false,
+                     "with --mpi: a rank that sends no word for this long (each sends one every "
+                     "200 ms), its host's network down, is named and ends the run (or is "
+                     "survived, --survive-host-loss); a rank that hears nothing from the "
+                     "coordinator for this long ends, saying so");
   add_timeout_option(run, "ready-timeout", o.ready_timeout_ms, false,
                      "a pipeserver waits for READY before asking again with SYNC?");
   // A plain flag: CLI11 2.1 lists a negated one as "--no-progress{false}".

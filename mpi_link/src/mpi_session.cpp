@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -26,11 +27,14 @@
 #include "base/socket.hpp"
 #include "mpi_link/busy_polling.hpp"
 #include "mpi_link/coordinator_address.hpp"
+#include "mpi_link/liveness.hpp"
 
 namespace l2 {
 namespace {
 
 constexpr int kHostBytes = 64;
+// This process's session, for abort_all (one session a process).
+std::atomic<MpiSession*> live_session = nullptr;
 // Far above what MPI_Finalize takes on a loaded machine when every rank is there.
 constexpr std::chrono::seconds kFinalizeTimeout{10};
 
@@ -78,7 +82,9 @@ class Deadline {
 
 }  // namespace
 
-MpiSession::MpiSession(std::chrono::milliseconds start_timeout) {
+MpiSession::MpiSession(std::chrono::milliseconds start_timeout,
+                       std::chrono::milliseconds liveness_timeout)
+    : liveness_timeout_(liveness_timeout) {
   Deadline start(start_timeout, [start_timeout] {
     const auto launched = launched_rank();
     if (launched && launched->rank == 0)
@@ -106,12 +112,16 @@ MpiSession::MpiSession(std::chrono::milliseconds start_timeout) {
         {w.pid, std::string(w.host.data()), std::string(w.stack.data()), w.cores, w.yields != 0});
   connect_liveness();
   start.disarm();
-  if (const auto launched = launched_rank(); rank_ != 0 && launched && launched->keeps_job)
-    watcher_ = std::jthread([this](std::stop_token stop) { follow_coordinator(stop); });
+  live_session = this;
+  if (rank_ == 0)
+    pulse_ = std::jthread([this](std::stop_token stop) { pulse(stop); });
+  else
+    pulse_ = std::jthread([this](std::stop_token stop) { follow_coordinator(stop); });
 }
 
 MpiSession::~MpiSession() {
   say_ended();
+  live_session = nullptr;
   // MPI_Finalize waits for every rank, and now and then for ever for one lost under an mpirun
   // that keeps the job (Open MPI 4.1): this rank's part is done, it ends as it would have.
   std::optional<Deadline> end;
@@ -122,24 +132,14 @@ MpiSession::~MpiSession() {
 
 void MpiSession::say_ended() {
   stop_watching();
+  if (pulse_.joinable()) {
+    pulse_.request_stop();
+    pulse_.join();
+  }
   // An end, not a death: the other end no longer takes this connection's close as a fault.
   for (const Fd& fd : liveness_)
-    if (fd) send(fd.get(), "e", 1, MSG_NOSIGNAL);
+    if (fd) send_liveness(fd.get(), kLivenessEnded);
   liveness_.clear();
-}
-
-void MpiSession::follow_coordinator(std::stop_token stop) {
-  const int fd = liveness_.front().get();
-  while (!stop.stop_requested()) {
-    pollfd p{fd, POLLIN, 0};
-    if (poll(&p, 1, 20) <= 0) continue;
-    char byte = 0;
-    if (recv(fd, &byte, 1, MSG_DONTWAIT) > 0) return;  // the coordinator ended well
-    std::fprintf(stderr,
-                 "l2wall: rank %d: the coordinator (rank 0 on %s) is gone; this rank ends\n", rank_,
-                 identities_.front().host.c_str());
-    std::_Exit(1);
-  }
 }
 
 namespace {
@@ -283,82 +283,6 @@ void MpiSession::refuse_unreached(const std::vector<std::array<char, 240>>& erro
   abort_all(1);
 }
 
-void MpiSession::watch_ranks(std::function<std::string(int)> describe) {
-  describe_ = std::move(describe);
-  watcher_ = std::jthread([this](std::stop_token stop) { watch(stop); });
-}
-
-void MpiSession::stop_watching() {
-  if (!watcher_.joinable()) return;
-  watcher_.request_stop();
-  watcher_.join();
-  report_unclaimed();
-}
-
-void MpiSession::report_unclaimed() {
-  const std::lock_guard lock(mutex_);
-  if (lost_line_.empty() || claimed_) return;
-  claimed_ = true;
-  std::fprintf(stderr, "l2wall: %s\n", lost_line_.c_str());
-}
-
-bool MpiSession::note_lost(int rank) {
-  const std::string line = describe_(rank);
-  const std::lock_guard lock(mutex_);
-  lost_.push_back(rank);
-  if (line.empty()) return false;
-  lost_line_ = line;
-  claimed_ = false;  // this loss is still to be taken up
-  return true;
-}
-
-void MpiSession::watch(std::stop_token stop) {
-  bool fatal = false;
-  while (!stop.stop_requested() && !fatal) {
-    std::vector<pollfd> fds;
-    std::vector<std::size_t> ranks;  // by entry of fds
-    for (std::size_t r = 0; r < liveness_.size(); ++r) {
-      if (!liveness_[r]) continue;
-      fds.push_back({liveness_[r].get(), POLLIN, 0});
-      ranks.push_back(r);
-    }
-    if (fds.empty()) return;
-    if (poll(fds.data(), fds.size(), 5) <= 0) continue;
-    for (std::size_t i = 0; i < fds.size() && !fatal; ++i) {
-      if (!(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      const std::size_t r = ranks[i];
-      char byte = 0;
-      const bool ended_well = recv(fds[i].fd, &byte, 1, MSG_DONTWAIT) > 0;
-      liveness_[r].reset();
-      if (!ended_well) fatal = note_lost(static_cast<int>(r));
-    }
-  }
-  if (!fatal) return;
-  // The run takes the loss up within milliseconds when it can; if it does not, this process
-  // may be ending already (mpirun's SIGTERM): the line must be out first.
-  for (int i = 0; i < 30 && !stop.stop_requested(); ++i) {
-    {
-      const std::lock_guard lock(mutex_);
-      if (claimed_) break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  report_unclaimed();
-}
-
-std::vector<int> MpiSession::lost_ranks() {
-  const std::lock_guard lock(mutex_);
-  claimed_ = true;
-  return lost_;
-}
-
-bool MpiSession::gone(int rank) {
-  const std::lock_guard lock(mutex_);
-  if (std::find(lost_.begin(), lost_.end(), rank) == lost_.end()) return false;
-  claimed_ = true;
-  return true;
-}
-
 namespace {
 
 // Asks the process that started this rank to end the job (SIGTERM): mpirun, or its daemon on
@@ -396,6 +320,10 @@ void MpiSession::abort_all(int code) {
   // ends the job. Its own line must reach mpirun first, which ending its daemon could prevent.
   if (const auto launched = launched_rank(); launched && launched->rank == 0) {
     std::fflush(stderr);
+    // The other ranks end without a line of their own: the fault is named.
+    if (MpiSession* session = live_session)
+      for (const Fd& fd : session->liveness_)
+        if (fd) send_liveness(fd.get(), kLivenessAborting);
     end_job();
   }
   MPI_Abort(MPI_COMM_WORLD, code);

@@ -119,9 +119,10 @@ int run_live(const l2::LiveOptions& o) {
 // `control`: a balanced run's, its times and layouts over MPI with the coordinator.
 // `windows`: a vnc run's, its desktop over MPI from the coordinator.
 int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows,
-                 std::chrono::milliseconds start_timeout) {
+                 std::chrono::milliseconds start_timeout,
+                 std::chrono::milliseconds liveness_timeout) {
 #ifdef L2_HAVE_MPI
-  l2::MpiSession session(start_timeout);
+  l2::MpiSession session(start_timeout, liveness_timeout);
   const l2::CodecTo codec =
       l2::codec_to(o.link_codec, [&session](int rank) { return session.beside(rank); });
   const auto sent = std::make_shared<l2::SentBytes>();
@@ -155,6 +156,7 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows,
   (void)control;
   (void)windows;
   (void)start_timeout;
+  (void)liveness_timeout;
   std::fprintf(stderr, "pipeserver: --mpi: this pipeserver was built without MPI\n");
   return 2;
 #endif
@@ -247,6 +249,10 @@ int run_pipeserver(int argc, char** argv) {
   l2::add_timeout_option(*group, "start-timeout", mpi_start_timeout_ms, false,
                          "live, with --mpi: every rank of the run must have joined MPI within "
                          "this, or this rank ends (l2wall run passes its own)");
+  int mpi_liveness_timeout_ms = 3000;  // as l2wall run's --liveness-timeout
+  l2::add_timeout_option(*group, "liveness-timeout", mpi_liveness_timeout_ms, false,
+                         "live, with --mpi: no word from the coordinator for this long ends this "
+                         "rank, saying so (l2wall run passes its own)");
   bool mpi_viz = false;
   group->add_flag("--mpi-viz", mpi_viz,
                   "live, with --mpi: also send every tile to the board column rank owning its "
@@ -319,7 +325,8 @@ int run_pipeserver(int argc, char** argv) {
     live_options.link_codec = l2::parse_link_choice(link_codec).value();
     if (mpi)
       return run_mpi_rank(live_options, mpi_viz, mpi_control, mpi_windows,
-                          std::chrono::milliseconds(mpi_start_timeout_ms));
+                          std::chrono::milliseconds(mpi_start_timeout_ms),
+                          std::chrono::milliseconds(mpi_liveness_timeout_ms));
     return run_live(live_options);
   }
   // Its desktop comes from l2wall run's coordinator: alone it would only draw black.

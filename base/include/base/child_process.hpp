@@ -34,6 +34,7 @@ struct ExitStatus {
   int signal = 0;  // terminating signal, 0 if it exited
   // A process elsewhere (an MPI rank) seen to end without its status: its connection closed.
   bool gone = false;
+  std::string gone_how;  // how it was found gone, "is lost (...)"; empty: its connection closed
   bool ok() const { return !gone && signal == 0 && code == 0; }
   // What a shell's $? shows: the exit code, or 128 + the signal.
   int shell_code() const { return signal != 0 ? 128 + signal : code; }

@@ -41,8 +41,9 @@ class PipeserverProcess {
 std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<std::string>& argv,
                                                             const std::vector<std::string>& env);
 // A pipeserver another process started (an MPI rank), named by `place`; `gone` says whether
-// its process was seen to end.
+// its process was seen to end, `how` (if given) how it was found gone (ExitStatus::gone_how).
 std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
-                                                             std::function<bool()> gone);
+                                                             std::function<bool()> gone,
+                                                             std::function<std::string()> how = {});
 
 }  // namespace l2

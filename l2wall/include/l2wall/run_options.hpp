@@ -43,7 +43,10 @@ struct RunOptions {
   std::string renderer = "auto";       // every pipeserver's --renderer (renderer_choice.hpp)
   int start_timeout_ms = 60000;        // until every link carries its first frame
   int stall_timeout_ms = 5000;         // no display swap for this long: a pipeserver hangs
-  int ready_timeout_ms = 1000;         // passed to the pipeservers (first frames can be slow)
+  // --mpi: a rank silent this long is lost (its host cut off); below the stall timeout, so that
+  // a cut host is named as one, not as a pipeserver that hangs.
+  int liveness_timeout_ms = 3000;
+  int ready_timeout_ms = 1000;  // passed to the pipeservers (first frames can be slow)
   bool progress = true;
   std::string show;           // --show window | monitors: the displays on screen (live_show.hpp)
   std::string show_readback;  // --show-readback DIR: what the screen shows, written per frame

@@ -60,9 +60,10 @@ class MpiBackends final : public RunBackends {
       const int rank = map_.pipeserver_rank(pipeserver);
       const RankIdentity& who = session_.identities()[static_cast<std::size_t>(rank)];
       PipeserverSet::RemoteEnd end;
-      end.process =
-          remote_pipeserver_process(fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid),
-                                    [this, rank] { return session_.gone(rank); });
+      end.process = remote_pipeserver_process(
+          fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid),
+          [this, rank] { return session_.gone(rank); },
+          [this, rank] { return session_.loss_cause(rank); });
       end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
       if (launch.control)
@@ -90,7 +91,8 @@ int exec_pipeserver(const RunOptions& o, int pipeserver, bool balanced) {
   h.report_path =
       (std::filesystem::path(o.out) / fmt::format("pipeserver-{}.log", pipeserver)).string();
   PipeserverLaunch launch = pipeserver_launch(o);
-  launch.extra_args = {"--mpi", "--start-timeout", std::to_string(o.start_timeout_ms)};
+  launch.extra_args = {"--mpi", "--start-timeout", std::to_string(o.start_timeout_ms),
+                       "--liveness-timeout", std::to_string(o.liveness_timeout_ms)};
   if (o.path == PathChoice::Both) launch.extra_args.push_back("--mpi-viz");
   if (balanced) launch.extra_args.push_back("--mpi-control");
   if (takes_windows(o.scene)) launch.extra_args.push_back("--mpi-windows");
@@ -184,7 +186,8 @@ int run_wall_mpi(const RunOptions& o) {
     }
   }
 
-  MpiSession session(std::chrono::milliseconds(o.start_timeout_ms));
+  MpiSession session(std::chrono::milliseconds(o.start_timeout_ms),
+                     std::chrono::milliseconds(o.liveness_timeout_ms));
   if (column)
     return run_column_rank(*layout, *map, *column, o, session.rank(), show ? &*show : nullptr);
   // A machine with more ranks than cores whose MPI busy-polls: said once, before the frames.

@@ -19,10 +19,9 @@ bool RankLosses::survives(int rank) const {
 
 std::string RankLosses::message(int rank) const {
   const auto& who = session_.identities()[static_cast<std::size_t>(rank)];
-  return fmt::format(
-      "{} (rank {} on {}, pid {}) is gone (its connection to the coordinator closed: killed "
-      "or crashed) while the displays wait for frame {}; {}",
-      map_.role(rank), rank, who.host, who.pid, shown_ + 1, displays_showing());
+  return fmt::format("{} (rank {} on {}, pid {}) {} while the displays wait for frame {}; {}",
+                     map_.role(rank), rank, who.host, who.pid, session_.loss_cause(rank),
+                     shown_ + 1, displays_showing());
 }
 
 std::string RankLosses::displays_showing() const {

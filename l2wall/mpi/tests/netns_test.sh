@@ -8,8 +8,9 @@
 #      two meshes (65 displays) with each mesh's columns on a host of its own;
 #   3. pipeserver 2 killed, then stopped, on render-b: one line naming it with its host, exit
 #      non-zero, and nothing left running on any host;
-#   4. the coordinator (rank 0, on render-a) killed: every rank on the other hosts ends by
-#      itself (cluster.sh names any it had to kill), nothing left, no shared memory;
+#   4. the coordinator (rank 0, on render-a) killed: the ranks on the other hosts say so, each in
+#      one line naming render-a, through mpirun -q, and end by themselves (cluster.sh names any
+#      it had to kill), nothing left, no shared memory;
 #   5. --balance strips --survive-host-loss under an mpirun that keeps the job (--keep-job):
 #      pipeserver 2 killed on render-b, the run goes on over the other host's and says so, every
 #      frame rendered, nothing left running.
@@ -124,8 +125,8 @@ fault() {
 fault KILL
 fault STOP
 
-# 4. The coordinator killed on render-a: nobody is left to say it but Open MPI (mpirun -q is
-# quiet), so what is asserted is that the run ends, non-zero, with nothing left on any host.
+# 4. The coordinator killed on render-a: mpirun -q says nothing of it, the other ranks do, each
+# once, from its liveness connection's close; the run ends, non-zero, nothing left on any host.
 coordinator_killed() {
   local dir=$out/coordinator run pid pids status=0
   start_run "$dir"
@@ -135,7 +136,12 @@ coordinator_killed() {
   kill -s KILL "$pid"
   wait "$run" || status=$?
   ((status != 0)) || { echo "FAIL: exit 0 after the coordinator was killed"; exit 1; }
-  echo "coordinator (rank 0) killed on render-a: the run ended, exit $status"
+  local lost="^l2wall: rank ([0-9]+) on (render-b|display-a): lost the coordinator \(rank 0 on render-a\): its connection closed \(killed or crashed\); this rank ends$"
+  grep -qE "$lost" "$dir.err" ||
+    { echo "FAIL: no rank on another host named the coordinator's loss:"; cat "$dir.err"; exit 1; }
+  if grep -E "$lost" "$dir.err" | sort | uniq -d | grep .; then echo "FAIL: said twice"; exit 1; fi
+  echo "coordinator (rank 0) killed on render-a: the run ended, exit $status; $(grep -cE "$lost" "$dir.err") ranks said:"
+  grep -E "$lost" "$dir.err" | head -1
   nothing_left "$dir" "$pids"
 }
 coordinator_killed

@@ -35,7 +35,9 @@ class MpiSession {
   // A rank that dies while the run starts (before its liveness connection) leaves the others in
   // a collective for ever when mpirun keeps the job (orte_enable_recovery): each rank ends
   // after `start_timeout` without a session, rank 0 saying why in one line.
-  explicit MpiSession(std::chrono::milliseconds start_timeout);
+  // `liveness_timeout`: the silence on a liveness connection after which its other end is taken
+  // as lost (a host cut off the network closes no connection); the same on every rank.
+  MpiSession(std::chrono::milliseconds start_timeout, std::chrono::milliseconds liveness_timeout);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -53,18 +55,23 @@ class MpiSession {
 
   // On rank 0, every rank holds a TCP connection to it for its whole life, beside MPI: when a
   // rank's process is gone its connection closes (without the word a rank sends as it ends
-  // well), at once, and the coordinator can name the rank before mpirun ends the job. A thread
-  // watches them. `describe(rank)` is the line of a loss that ends the run, empty for one the
-  // run survives (a pipeserver under --survive-host-loss, whose mpirun keeps the job): after a
-  // loss that ends the run the thread waits briefly for the run to take it up (lost_ranks()),
-  // otherwise prints the line itself ("l2wall: ..."), since mpirun may be ending this process
-  // already, and watches no more.
+  // well), at once, and the coordinator can name the rank before mpirun ends the job. Both ends
+  // pulse on it (liveness.hpp): a rank silent for the liveness timeout, its host cut off, is
+  // lost too. A thread watches them. `describe(rank)` is the line of a loss that ends the run,
+  // empty for one the run survives (a pipeserver under --survive-host-loss, whose mpirun keeps the
+  // job): after a loss that ends the run the thread waits briefly for the run to take it up
+  // (lost_ranks()), otherwise prints the line itself ("l2wall: ..."), since mpirun may be ending
+  // this process already, and watches no more.
   void watch_ranks(std::function<std::string(int rank)> describe);
   void stop_watching();
   // The ranks found gone so far, in the order found; the run reports them from here on.
   std::vector<int> lost_ranks();
   // Whether `rank` was found gone (the run reports it from here on, if so).
   bool gone(int rank);
+  // How a rank found gone was lost, for its line: "is gone (its connection to the coordinator
+  // closed: killed or crashed)", "is lost (no word for 3 s: its host's network may be down)"
+  // ("stopped, on the coordinator's own host" where no network joins them).
+  std::string loss_cause(int rank);
 
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
   // an mpirun that keeps the job, where MPI_Abort ends only its caller, the coordinator asks
@@ -84,27 +91,38 @@ class MpiSession {
                        const std::vector<std::array<char, 240>>& errors);
   void refuse_unreached(const std::vector<std::array<char, 240>>& errors);
   void watch(std::stop_token stop);
-  // Any rank but 0, under an mpirun that keeps the job (LaunchedRank::keeps_job): there
-  // MPI_Abort ends only the rank that calls it, so a rank whose coordinator is gone without
-  // its word of a good end (ended by a fault, killed) ends itself, rather than wait for ever.
+  // Rank 0: pulses to every rank until the session ends.
+  void pulse(std::stop_token stop);
+  // Any rank but 0: pulses to the coordinator, and ends this rank, in one line naming the
+  // coordinator's host, when the coordinator is gone without its word of a good end (killed,
+  // crashed) or silent for the liveness timeout (its host cut off): MPI_Abort of an mpirun that
+  // keeps the job ends only its caller, and a cut-off host's ranks cannot be reached. A
+  // coordinator that ends the run on a fault says so first: the rank then ends without a line
+  // (its waits on the others would only add effects of the fault named).
   void follow_coordinator(std::stop_token stop);
+  [[noreturn]] void lose_coordinator(const std::string& how);
   // Stops watching and tells the other end(s) of the liveness connections of a good end.
   void say_ended();
-  // Takes in a rank found gone; true when its loss ends the run.
-  bool note_lost(int rank);
+  // Takes in a rank found gone, `cause` as loss_cause says it; true when its loss ends the run.
+  bool note_lost(int rank, std::string cause);
   // Prints the line of a loss that ends the run, unless the run reported it.
   void report_unclaimed();
 
   int rank_ = 0;
   int size_ = 0;
   std::vector<RankIdentity> identities_;
-  std::vector<Fd> liveness_;  // rank 0: by rank, the connection (none for itself); else one
+  std::chrono::milliseconds liveness_timeout_;
+  // Rank 0: by rank, the connection (none for itself); else one. Made before the threads, closed
+  // after them.
+  std::vector<Fd> liveness_;
   std::function<std::string(int)> describe_;
   std::mutex mutex_;  // guards the three below: the watcher writes them, the run reads them
   std::vector<int> lost_;
   bool claimed_ = false;  // the run took up the losses found so far
   std::string lost_line_;
-  std::jthread watcher_;  // rank 0: watch(); any other: follow_coordinator(), or none
+  std::vector<std::string> causes_;  // by rank: how it was lost, empty if not
+  std::jthread watcher_;             // rank 0: watch(), from watch_ranks()
+  std::jthread pulse_;               // rank 0: pulse(); any other: follow_coordinator()
 };
 
 // The rank and size mpirun gave this process, read from its environment before MPI_Init

@@ -1,0 +1,53 @@
+// What travels on a liveness connection (mpi_session.hpp) and what a reader makes of it: one
+// byte at a time, a pulse every kPulseEvery from each end while the rank lives, so that a rank
+// whose host's network is cut (its packets dropped, no connection closed) is found by the
+// silence; the word of a good end; the coordinator's word that it ends the run on a fault it
+// named (the other ranks then end without a line of their own).
+//
+// Owns: the bytes, the verdict on what came in, the clock of a peer's silence. The reading and
+// writing of sockets is liveness.cpp's two small functions; the threads are the session's.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <string_view>
+
+namespace l2 {
+
+inline constexpr char kLivenessPulse = 'p';
+inline constexpr char kLivenessEnded = 'e';
+inline constexpr char kLivenessAborting = 'a';
+// Often enough that a default timeout holds many pulses, rarely enough to cost nothing.
+inline constexpr std::chrono::milliseconds kPulseEvery{200};
+
+// What came in on a connection since it was last read, the most telling first: it ended well,
+// the coordinator ends the run on a fault, it closed without either (killed, crashed), it
+// pulsed, nothing came.
+enum class Heard { ended, aborting, closed, pulse, nothing };
+
+// `bytes` read at once from the connection; `closed`: the read found its end (or an error).
+Heard heard(std::string_view bytes, bool closed);
+
+// How long a peer has been silent, against the liveness timeout.
+class Silence {
+ public:
+  using Clock = std::chrono::steady_clock;
+  Silence(std::chrono::milliseconds timeout, Clock::time_point now)
+      : timeout_(timeout), last_(now) {}
+  void heard(Clock::time_point now) { last_ = now; }
+  bool too_long(Clock::time_point now) const { return now - last_ > timeout_; }
+
+ private:
+  std::chrono::milliseconds timeout_;
+  Clock::time_point last_;
+};
+
+// "no word for 3 s", "no word for 0.5 s": the timeout as a message says it.
+std::string no_word_for(std::chrono::milliseconds timeout);
+
+// Reads what is there without waiting, `fd` a socket; `heard` of it.
+Heard read_liveness(int fd);
+// Sends one byte without waiting (a cut link's full buffer drops it: the silence says enough).
+void send_liveness(int fd, char byte);
+
+}  // namespace l2

@@ -1,0 +1,54 @@
+// What a liveness connection's reader makes of its bytes, and the clock of a peer's silence.
+#include "mpi_link/liveness.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace l2 {
+namespace {
+
+using std::chrono::milliseconds;
+
+TEST(Liveness, TheMostTellingWordWins) {
+  EXPECT_EQ(heard("ppp", false), Heard::pulse);
+  EXPECT_EQ(heard("", false), Heard::nothing);
+  EXPECT_EQ(heard("", true), Heard::closed);
+  EXPECT_EQ(heard("ppe", true), Heard::ended);  // its word, then its close: a good end
+  EXPECT_EQ(heard("pa", true), Heard::aborting);
+  EXPECT_EQ(heard("pp", true), Heard::closed);  // pulses, then gone without a word
+}
+
+TEST(Liveness, SilenceIsTooLongOnlyPastTheTimeout) {
+  const Silence::Clock::time_point t0{};
+  Silence s(milliseconds(3000), t0);
+  EXPECT_FALSE(s.too_long(t0 + milliseconds(3000)));
+  EXPECT_TRUE(s.too_long(t0 + milliseconds(3001)));
+  s.heard(t0 + milliseconds(2000));
+  EXPECT_FALSE(s.too_long(t0 + milliseconds(5000)));
+  EXPECT_TRUE(s.too_long(t0 + milliseconds(5001)));
+}
+
+TEST(Liveness, NoWordForSaysTheTimeoutInSeconds) {
+  EXPECT_EQ(no_word_for(milliseconds(3000)), "no word for 3 s");
+  EXPECT_EQ(no_word_for(milliseconds(500)), "no word for 0.5 s");
+}
+
+// Over a real socket pair: pulses, then nothing waiting, then a good end, then a close.
+TEST(Liveness, ReadsWhatASocketHolds) {
+  int fds[2];
+  ASSERT_EQ(socketpair(AF_UNIX, SOCK_STREAM, 0, fds), 0);
+  EXPECT_EQ(read_liveness(fds[0]), Heard::nothing);
+  send_liveness(fds[1], kLivenessPulse);
+  send_liveness(fds[1], kLivenessPulse);
+  EXPECT_EQ(read_liveness(fds[0]), Heard::pulse);
+  EXPECT_EQ(read_liveness(fds[0]), Heard::nothing);
+  send_liveness(fds[1], kLivenessEnded);
+  close(fds[1]);
+  EXPECT_EQ(read_liveness(fds[0]), Heard::ended);
+  EXPECT_EQ(read_liveness(fds[0]), Heard::closed);
+  close(fds[0]);
+}
+
+}  // namespace
+}  // namespace l2
