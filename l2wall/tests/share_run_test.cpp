@@ -1,0 +1,71 @@
+// Screens shared into a live session run over HTTP, as the page's script does but from here:
+// the run opens a window per share up to the session's `shares`, refuses one more in one line,
+// takes JPEG frames (made with libjpeg's encoder) and refuses hostile ones, and a share's
+// window closed takes no more frames. The page itself in a real browser:
+// share_screen_browser_test.cpp.
+#include <httplib.h>
+
+#include <nlohmann/json.hpp>
+
+#include "control_page_run.hpp"
+#include "test_jpeg.hpp"
+
+namespace l2::testing_support {
+namespace {
+
+// POST /api/share/frame for `window`: the status and the answer's one line.
+std::pair<int, std::string> send_frame(PageRun& run, int window, const std::string& body) {
+  const auto r = run.client().Post(
+      fmt::format("/api/share/frame?window={}&token={}", window, run.token()), body, "image/jpeg");
+  if (!r) return {0, "no answer"};
+  const auto j = nlohmann::json::parse(r->body);
+  return {r->status,
+          j.contains("done") ? j["done"].get<std::string>() : j["error"].get<std::string>()};
+}
+
+TEST(ShareRun, OpensWindowsUpToTheSharesAndTakesOnlyJpegFrames) {
+  const std::string session = (fs::path(L2_SOURCE_DIR) / "examples/sessions/share.toml").string();
+  PageRun run("share-run",
+              {"--scene", "session", "--session", session, "--frames", "100000", "--keep", "none"});
+  run.wait_for_frame(2);
+  EXPECT_EQ(run.state()["shares"]["slots"], 2);
+  // Centred on the 1300x980 canvas at its own size; the second where it was asked.
+  EXPECT_EQ(run.post("share?width=640&height=360&name=alice"),
+            nlohmann::json({{"done", "sharing alice as window 1 (640x360) at 330,310 640x360"}}));
+  EXPECT_EQ(run.post("share?width=200&height=100&x=200&y=150"),
+            nlohmann::json({{"done", "sharing browser as window 2 (200x100) at 100,100 200x100"}}));
+  EXPECT_EQ(
+      run.post("share?width=200&height=100", 409),
+      nlohmann::json(
+          {{"error", "not shared: all 2 share windows are in use (the session's shares = 2)"}}));
+
+  EXPECT_EQ(send_frame(run, 1, test::two_halves(640, 360)),
+            std::pair(200, std::string("frame 1 of window 1 taken")));
+  EXPECT_EQ(send_frame(run, 1, "GIF89a\x01\x00\x01\x00"),
+            std::pair(400, std::string("frame refused: not a JPEG (it starts 47 49 46 38)")));
+  EXPECT_EQ(send_frame(run, 2, test::two_halves(640, 360)),
+            std::pair(400, std::string("frame refused: declares 640x360 pixels, more than a "
+                                       "shared frame may have (200x100)")));
+  // The run takes the frame into the window's desktop at a frame boundary.
+  const auto s = run.wait_for([](const nlohmann::json& j) {
+    for (const auto& share : j["shares"]["shown"])
+      if (share["window"] == 1 && share["shown"] == 1) return true;
+    return false;
+  });
+  EXPECT_EQ(s["shares"]["shown"].size(), 2u) << s.dump();
+
+  EXPECT_EQ(run.post("window?action=close&id=1"),
+            nlohmann::json({{"done", "window: close 1 from the next frame"}}));
+  EXPECT_EQ(send_frame(run, 1, test::two_halves(640, 360)).first, 404);
+  run.post("stop");
+  EXPECT_EQ(run.wait(60s).code, 0) << run.output();
+  const std::string summary = slurp(run.out() / "summary.txt");
+  EXPECT_NE(summary.find("shares: window 1 shared by alice (640x360) from frame "),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("windows: close 1 from frame "), std::string::npos) << summary;
+  expect_clean(run);
+}
+
+}  // namespace
+}  // namespace l2::testing_support
