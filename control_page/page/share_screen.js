@@ -40,7 +40,8 @@ async function startShare(at) {
     stream.getTracks().forEach((t) => t.stop());
     return shareSays(body.error || `not shared: ${res.status}`);
   }
-  share.window = Number(/window (\d+)/.exec(body.done)[1]);
+  // "sharing NAME as window 5 (WxH) at ...": the last such words, whatever the name says.
+  share.window = Number([...body.done.matchAll(/ as window (\d+) \(/g)].at(-1)[1]);
   share.stream = stream;
   share.sent = 0;
   shareSays(body.done);

@@ -57,6 +57,11 @@ TEST(ShareRun, OpensWindowsUpToTheSharesAndTakesOnlyJpegFrames) {
   EXPECT_EQ(run.post("window?action=close&id=1"),
             nlohmann::json({{"done", "window: close 1 from the next frame"}}));
   EXPECT_EQ(send_frame(run, 1, test::two_halves(640, 360)).first, 404);
+  run.wait_for([](const nlohmann::json& j) {  // the frame it closes in on the displays
+    for (const auto& w : j["windows"]["shown"])
+      if (w["id"] == 1) return false;
+    return true;
+  });
   run.post("stop");
   EXPECT_EQ(run.wait(60s).code, 0) << run.output();
   const std::string summary = slurp(run.out() / "summary.txt");
