@@ -53,6 +53,22 @@ TEST(ShareRun, OpensWindowsUpToTheSharesAndTakesOnlyJpegFrames) {
     return false;
   });
   EXPECT_EQ(s["shares"]["shown"].size(), 2u) << s.dump();
+  // No frame since: the share has stalled, and the displays keep its last frame, its left half
+  // red and its right half blue across the canvas's two columns of displays.
+  run.wait_for([](const nlohmann::json& j) {
+    return j["shares"]["shown"][0]["seconds_since_frame"].get<double>() >= 1.0;
+  });
+  const nlohmann::json saved = run.post("save");
+  const std::string folder = saved["done"].get<std::string>();
+  const fs::path frame = folder.substr(folder.rfind(' ') + 1);
+  for (const Display& d : default_wall().displays) {
+    const Rect r = d.on_canvas();
+    const Rgb want = r.x == 0 ? Rgb{255, 0, 0} : Rgb{0, 0, 255};
+    const int x = r.x == 0 ? 400 : 900, y = r.y == 0 ? 350 : 600;  // inside the share's window
+    const Rgb got = read_png(frame / fmt::format("display-{}.png", d.id)).at(x - r.x, y - r.y);
+    EXPECT_LE(std::abs(got.r - want.r) + std::abs(got.g - want.g) + std::abs(got.b - want.b), 40)
+        << "display " << d.id << " canvas " << x << "," << y;
+  }
 
   EXPECT_EQ(run.post("window?action=close&id=1"),
             nlohmann::json({{"done", "window: close 1 from the next frame"}}));
