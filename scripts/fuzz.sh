@@ -17,7 +17,7 @@ fi
 seconds=$1
 shift
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import mpcdi_import vizserver_wire png_frame picture_header picture_file frame_delta control_line tuio)
+((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import mpcdi_import vizserver_wire png_frame picture_header jpeg_frame picture_file frame_delta control_line tuio)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" -- --quiet

@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config clang-format
   clang libclang-rt-14-dev
   libosmesa6-dev libopenimageio-dev openimageio-tools libpng-dev libglfw3-dev libglm-dev libassimp-dev
+  libjpeg-dev  # shared screens' JPEG frames (image/jpeg_frame.hpp), decoded with libjpeg itself
   libegl-dev libegl-mesa0  # --renderer egl: glvnd's libEGL and Mesa's EGL driver (llvmpipe without a GPU)
   fonts-dejavu-core
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg

@@ -259,6 +259,7 @@ function draw(s) {
   reloadPictures(s);
   drawPipeservers(s);
   drawEvents(s);
+  if (typeof drawShares === 'function') drawShares(s);  // share_screen.js, loaded after
 }
 
 async function poll() {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <mutex>
@@ -25,15 +26,25 @@ namespace l2 {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr auto Unhandled = httplib::Server::HandlerResponse::Unhandled;
 
-// A request body is at most a mode name: anything larger is refused unread.
+// A request body is at most a mode name: anything larger is refused unread, but a shared
+// screen's frame (POST /api/share/frame), a JPEG of at most kMaxFrameBody.
 constexpr std::size_t kMaxBody = 4096;
+constexpr std::size_t kMaxFrameBody = std::size_t{16} << 20;
+constexpr const char* kFramePath = "/api/share/frame";
 constexpr int kMaxScale = 64;
 
 void reply_json(httplib::Response& res, int status, const std::string& body) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
   res.set_content(body, "application/json");
+}
+
+// What a request's Content-Length says; 0 without one.
+std::size_t declared_length(const httplib::Request& req) {
+  if (!req.has_header("Content-Length")) return 0;
+  return std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10);
 }
 
 void refuse(httplib::Response& res, int status, const std::string& why) {
@@ -60,6 +71,7 @@ struct ControlServer::Impl {
   std::thread thread;
   int port = 0;
   ControlInbox inbox;
+  std::shared_ptr<ShareInbox> shares = std::make_shared<ShareInbox>();
   std::chrono::milliseconds decision_wait{};
 
   std::mutex mutex;
@@ -78,6 +90,20 @@ struct ControlServer::Impl {
   }
 
   void routes() {
+    // Only a frame may be large: a GET with a body past kMaxBody is refused before cpp-httplib
+    // reads it into memory (a page never sends one); a POST's is read and dropped below.
+    server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+      if (req.method != "GET" || declared_length(req) <= kMaxBody) return Unhandled;
+      refuse(res, 413, fmt::format("a body of at most {} bytes here", kMaxBody));
+      res.set_header("Connection", "close");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+    server.Post(kFramePath, [this](const httplib::Request& req, httplib::Response& res,
+                                   const httplib::ContentReader& body) {
+      if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
+      if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
+      take_frame(req, res, body);
+    });
     for (const PageAsset& a : page_assets()) {
       server.Get(std::string(a.path), [&a](const httplib::Request&, httplib::Response& res) {
         res.set_content(std::string(a.body), std::string(a.type) + "; charset=utf-8");
@@ -101,17 +127,21 @@ struct ControlServer::Impl {
     // neither a length nor chunks has none (`curl -X POST URL`): cpp-httplib would read it to
     // the connection's end, which the client, waiting for the answer, never closes, and answer
     // 400 when its read timed out.
-    server.Post(R"(/api/(pause|resume|save|stop|balance|window))",
-                [this](const httplib::Request& req, httplib::Response& res,
-                       const httplib::ContentReader& body) {
-                  if ((req.has_header("Content-Length") || req.has_header("Transfer-Encoding")) &&
-                      !body([](const char*, std::size_t) { return true; })) {
-                    return;  // too long or cut short: cpp-httplib's status (413, 400) stands
-                  }
-                  if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
-                  if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
-                  steer(req, res);
-                });
+    server.Post(
+        R"(/api/(pause|resume|save|stop|balance|window|share))",
+        [this](const httplib::Request& req, httplib::Response& res,
+               const httplib::ContentReader& body) {
+          std::size_t length = 0;
+          if ((req.has_header("Content-Length") || req.has_header("Transfer-Encoding")) &&
+              !body([&](const char*, std::size_t n) { return (length += n) <= kMaxBody; })) {
+            if (length > kMaxBody)
+              refuse(res, 413, fmt::format("a body of at most {} bytes here", kMaxBody));
+            return;  // too long or cut short: cpp-httplib's status (413, 400) stands
+          }
+          if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
+          if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
+          steer(req, res);
+        });
   }
 
   std::string refusal() {
@@ -183,6 +213,55 @@ struct ControlServer::Impl {
     return command;
   }
 
+  // A shared screen's frame: admitted for an open share before its body is read (at most one
+  // body a share at a time), read up to kMaxFrameBody, decoded and kept (share_inbox.hpp).
+  void take_frame(const httplib::Request& req, httplib::Response& res,
+                  const httplib::ContentReader& body) {
+    const std::string given = req.get_param_value("window");
+    if (given.empty() || given.size() > 5 ||
+        given.find_first_not_of("0123456789") != std::string::npos)
+      return refuse(res, 400, "frame refused: give ?window=ID, the share's window");
+    const int window = std::stoi(given);
+    if (!req.has_header("Content-Length"))
+      return refuse(res, 411, "frame refused: give its Content-Length");
+    if (declared_length(req) > kMaxFrameBody) {
+      // cpp-httplib reads past a body over its payload limit and drops it, so the client, still
+      // sending, hears the answer; nothing of it is kept.
+      (void)body([](const char*, std::size_t) { return true; });
+      return refuse(res, 413, fmt::format("frame refused: more than {} bytes", kMaxFrameBody));
+    }
+    if (const ControlDecision d = shares->admit(window); d.status != 200) return answer(res, d);
+    std::string jpeg;
+    const bool whole = body([&](const char* data, std::size_t n) {
+      if (jpeg.size() + n > kMaxFrameBody) return false;
+      jpeg.append(data, n);
+      return true;
+    });
+    if (!whole) {
+      shares->drop(window);
+      return refuse(res, 400, "frame refused: its body was cut short");
+    }
+    answer(res, shares->put(window, jpeg));
+  }
+
+  // A share asked for: "W H CX CY NAME" for the run (CX CY: where on the canvas its window is
+  // centred; -1 -1: the canvas's centre). Empty: a parameter is missing or not a number.
+  static std::string share_command(const httplib::Request& req) {
+    std::string command;
+    for (const char* key : {"width", "height", "x", "y"}) {
+      std::string value = req.get_param_value(key);
+      if (value.empty() && (key[0] == 'x' || key[0] == 'y')) value = "-1";
+      if (value.empty() || value.size() > 6 ||
+          value.find_first_not_of("-0123456789") != std::string::npos)
+        return {};
+      command += value + " ";
+    }
+    std::string name;
+    for (const char c : req.get_param_value("name"))
+      if (c >= ' ' && c <= '~' && name.size() < 40) name += c;
+    return command + (name.find_first_not_of(' ') == std::string::npos ? "browser" : name);
+  }
+
   void steer(const httplib::Request& req, httplib::Response& res) {
     const std::string what = req.matches[1].str();
     ControlRequest r;
@@ -203,6 +282,12 @@ struct ControlServer::Impl {
                       "window: give ?action=move&id=ID&x=X&y=Y&w=W&h=H, or action=raise or "
                       "close with id");
     }
+    if (what == "share") {
+      r.action = ControlAction::Share;
+      r.argument = share_command(req);
+      if (r.argument.empty())
+        return refuse(res, 400, "share: give ?width=W&height=H (its frames' size), and x, y, name");
+    }
     const std::uint64_t ticket = inbox.push(std::move(r));
     answer(res, inbox.wait(ticket, decision_wait));
   }
@@ -215,7 +300,7 @@ ControlServer::ControlServer(const HttpAddress& address, std::string token,
   s.address = address;
   s.decision_wait = decision_wait;
   s.token = std::move(token);
-  s.server.set_payload_max_length(kMaxBody);
+  s.server.set_payload_max_length(kMaxFrameBody);  // others: kMaxBody, refused as they are read
   // A page asks at once and often: a connection that sends nothing for 2 s is closed, so idle
   // peers do not hold their threads long (bounded_server.hpp bounds them in number and time).
   s.server.set_read_timeout(std::chrono::seconds(2));
@@ -280,6 +365,10 @@ void ControlServer::publish_pictures(std::vector<NamedPicture> files) {
 
 ControlInbox& ControlServer::inbox() {
   return impl_->inbox;
+}
+
+std::shared_ptr<ShareInbox> ControlServer::shares() const {
+  return impl_->shares;
 }
 
 void ControlServer::refuse_steering(std::string why) {

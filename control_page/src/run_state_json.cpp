@@ -45,6 +45,22 @@ json windows(const std::vector<PageWindow>& all) {
   return out;
 }
 
+json shares(const std::vector<PageShare>& all) {
+  json out = json::array();
+  for (const PageShare& s : all) {
+    out.push_back({{"window", s.window},
+                   {"name", s.name},
+                   {"width", s.width},
+                   {"height", s.height},
+                   {"received", s.received},
+                   {"shown", s.shown},
+                   {"dropped", s.dropped},
+                   {"refused", s.refused},
+                   {"seconds_since_frame", s.seconds_since_frame}});
+  }
+  return out;
+}
+
 json pipeservers(const std::vector<PagePipeserver>& all) {
   json out = json::array();
   for (const PagePipeserver& p : all) {
@@ -91,6 +107,7 @@ std::string to_json(const RunState& s) {
       {"balance", {{"mode", s.balance_mode}, {"modes", s.balance_modes}}},
       {"tiles", tiles(s.tiles)},
       {"windows", {{"shown", windows(s.windows)}, {"movable", s.windows_movable}}},
+      {"shares", {{"slots", s.share_slots}, {"shown", shares(s.shares)}}},
       {"pipeservers", pipeservers(s.pipeservers)},
       {"events", events(s.events)},
       {"pictures", s.pictures},

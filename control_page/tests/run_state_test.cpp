@@ -23,6 +23,8 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   s.balance_modes = {"static", "kd"};
   s.windows = {{7, "picture", -20, 30, 400, 300}};
   s.windows_movable = true;
+  s.share_slots = 2;
+  s.shares = {{5, "alice", 1280, 720, 30, 28, 2, 1, 0.5}};
   const auto j = nlohmann::json::parse(to_json(s));
   EXPECT_EQ(j["wall"]["name"], "two");
   EXPECT_EQ(j["wall"]["canvas"]["width"], 2048);
@@ -50,6 +52,17 @@ TEST(RunStateJson, CarriesWhatThePageDraws) {
   EXPECT_EQ(j["windows"]["shown"][0]["x"], -20);
   EXPECT_EQ(j["windows"]["shown"][0]["height"], 300);
   EXPECT_EQ(j["windows"]["movable"], true);
+  EXPECT_EQ(j["shares"]["slots"], 2);
+  ASSERT_EQ(j["shares"]["shown"].size(), 1u);
+  EXPECT_EQ(j["shares"]["shown"][0], nlohmann::json({{"window", 5},
+                                                     {"name", "alice"},
+                                                     {"width", 1280},
+                                                     {"height", 720},
+                                                     {"received", 30},
+                                                     {"shown", 28},
+                                                     {"dropped", 2},
+                                                     {"refused", 1},
+                                                     {"seconds_since_frame", 0.5}}));
 }
 
 TEST(RunStateJson, ANameThatIsNotUtf8StillGivesJson) {

@@ -145,6 +145,8 @@ void LivePage::publish(const PageMoment& m, const DisplayPictures* pictures) {
   state_.balance_mode = m.balance_mode;
   state_.windows = m.windows;
   state_.windows_movable = m.windows_movable;
+  state_.share_slots = m.share_slots;
+  state_.shares = server_->shares()->shares(ShareInbox::Clock::now());
   state_.balance_modes.clear();
   if (!m.balance_mode.empty()) state_.balance_modes = {"static", "strips", "kd"};
   if (pictures) {

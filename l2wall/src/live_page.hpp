@@ -35,6 +35,7 @@ struct PageMoment {
   std::string balance_mode;          // "" for a run that does not balance
   std::vector<PageWindow> windows;   // a session's, at `frame`
   bool windows_movable = false;
+  int share_slots = 0;  // screens a browser may share at once
 };
 
 class LivePage {
@@ -60,6 +61,8 @@ class LivePage {
   void event(int frame, std::string text);
 
   std::vector<ControlRequest> requests();
+  // The screens browsers share into the run: their frames, as the server takes them in.
+  std::shared_ptr<ShareInbox> shares() const { return server_->shares(); }
   // The run's decision on a request taken: the page lists it as an event, and the HTTP request
   // that asked for it is answered with it.
   void decide(int frame, const ControlRequest& request, ControlDecision decision);

@@ -240,7 +240,8 @@ void add_watch_options(CLI::App& run, RunCommand& c) {
                  "picture a few times a second, frame, fps, latency, what limits the run, every "
                  "pipeserver's times, the current tiles and events; buttons to pause, resume, "
                  "save the displays (OUT/frame-N/) and stop, and the balance mode of a balanced "
-                 "run. Its URL, printed at start, carries the run's token, which every control "
+                 "run; in a session with `shares`, a browser's screen shared as a window. Its URL, "
+                 "printed at start, carries the run's token, which every control "
                  "(and, bound beyond 127.0.0.1, every read) needs (control_page/README.md)")
       ->check([](const std::string& v) { return parse_http_address(v).reason(); }, "[ADDR:]PORT");
   run.add_option("--show-readback", o.show_readback,

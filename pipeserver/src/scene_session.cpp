@@ -55,6 +55,7 @@ class SessionScene : public Scene {
         note_ += fmt::format("window {}: {}", w.id, sources_.back()->note());
       }
     }
+    add_shares();
   }
   const char* name() const override { return "session"; }
 
@@ -102,6 +103,22 @@ class SessionScene : public Scene {
       if (d.key == key) return d.scene.get();
     desktops_.push_back({key, std::make_unique<DesktopScene>(w.content.string())});
     return desktops_.back().scene.get();
+  }
+
+  // The screens shared from the control page (`shares`): each a desktop of its own, after the
+  // vnc desktops (the coordinator answers in that order), and a window shown only while the
+  // coordinator's WINDOWS line names it.
+  void add_shares() {
+    const int first = share_window_id(session_, 0);  // before the shares' windows join
+    for (int k = 0; k < session_.shares; ++k) {
+      SessionWindow w;
+      w.id = first + k;
+      w.source = "share";
+      auto scene = std::make_unique<DesktopScene>(fmt::format("share {}", w.id));
+      sources_.push_back(make_desktop_window(*scene, SourceFit::Fit));
+      desktops_.push_back({{fmt::format("share {}", w.id), {}}, std::move(scene)});
+      session_.windows.push_back(std::move(w));
+    }
   }
 
   struct Desktop {

@@ -86,7 +86,7 @@ void check_desktops(const Session& session, const toml::array& list, const TomlS
 Session parse_session(std::string_view toml_text, const std::filesystem::path& path_for_messages) {
   const TomlSource source{path_for_messages.string()};
   const toml::table doc = parse_toml(toml_text, source);
-  const TomlFields top(doc, "", source, {"background", "window"});
+  const TomlFields top(doc, "", source, {"background", "shares", "window"});
   Session session;
   session.source = path_for_messages;
   session.background = read_background(top);
@@ -114,8 +114,23 @@ Session parse_session(std::string_view toml_text, const std::filesystem::path& p
     session.windows.push_back(std::move(w));
   }
   check_desktops(session, *list, source);
+  session.shares = static_cast<int>(top.integer("shares", 0, kMaxSessionShares, 0));
+  if (static_cast<int>(list->size()) + session.shares > kMaxWindows)
+    top.fail("shares", fmt::format("{} windows and {} shares, more windows than a session may have "
+                                   "({})",
+                                   list->size(), session.shares, kMaxWindows));
+  if (session.shares > 0 && share_window_id(session, session.shares - 1) > kMaxWindowId)
+    top.fail("shares",
+             fmt::format("the shares' windows take the ids after the largest ({}), past {}",
+                         share_window_id(session, 0) - 1, kMaxWindowId));
   sort_windows(session.windows);
   return session;
+}
+
+int share_window_id(const Session& session, int slot) {
+  int largest = -1;
+  for (const SessionWindow& w : session.windows) largest = std::max(largest, w.id);
+  return largest + 1 + slot;
 }
 
 Session load_session(const std::filesystem::path& path) {

@@ -70,6 +70,20 @@ TEST(SessionFile, AWrongFieldIsOneLineNamingFileLineAndField) {
   EXPECT_EQ(session_error("[[window]\n").rfind("s/x.toml:1: malformed TOML: ", 0), 0u);
 }
 
+// Room for screens shared from the control page: their windows' ids follow the file's.
+TEST(SessionFile, SharesTakeTheIdsAfterTheFilesWindows) {
+  const Session s = parse_session("shares = 2\n" + kSessionWindow + "id = 7\n", "s/x.toml");
+  EXPECT_EQ(s.shares, 2);
+  EXPECT_EQ(share_window_id(s, 0), 8);
+  EXPECT_EQ(share_window_id(s, 1), 9);
+  EXPECT_EQ(parse_session(kSessionWindow, "s/x.toml").shares, 0);
+  EXPECT_EQ(session_error("shares = 5\n" + kSessionWindow),
+            "s/x.toml:1: shares: must be 0..4, got 5");
+  EXPECT_EQ(session_error("shares = 1\n" + kSessionWindow + "id = 9999\n"),
+            "s/x.toml:1: shares: the shares' windows take the ids after the largest (9999), past "
+            "9999");
+}
+
 // A desktop window: its content is an address, taken as written; its password file is beside
 // the session, as its pictures are.
 const std::string kDesktopWindow =

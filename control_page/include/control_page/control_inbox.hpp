@@ -16,11 +16,13 @@
 
 namespace l2 {
 
-enum class ControlAction { Pause, Resume, Save, Stop, Balance, Window };
+enum class ControlAction { Pause, Resume, Save, Stop, Balance, Window, Share };
 
 struct ControlRequest {
   ControlAction action = ControlAction::Pause;
-  std::string argument;  // Balance: the mode asked for; Window: "move ID X Y W H", "raise ID"...
+  // Balance: the mode asked for; Window: "move ID X Y W H", "raise ID"...; Share: "W H CX CY
+  // NAME", a screen of W x H frames to show centred at CX,CY (-1 -1: the canvas's centre).
+  std::string argument;
   std::uint64_t ticket = 0;  // given by push: the run decides it by this
 };
 

@@ -6,6 +6,9 @@
 //   GET  /api/picture/NAME            another picture of the run (`l2wall view`: its saved frames,
 //                                     the golden check's and the verifier's pictures)
 //   POST /api/pause, /api/resume, /api/save, /api/stop, /api/balance?mode=M, /api/window?...
+//   POST /api/share?width=W&height=H&x=X&y=Y&name=N
+//                                     a screen shared from the browser: the run opens a window
+//   POST /api/share/frame?window=ID   body: one JPEG frame of that share (share_inbox.hpp)
 //
 // A POST waits for the run's decision on it and answers with it: 200 {"done":"..."}, or the
 // refusal's status (400, 404, 409) with {"error":"..."}, the same text the page's events show;
@@ -27,6 +30,7 @@
 #include "control_page/control_inbox.hpp"
 #include "control_page/http_address.hpp"
 #include "control_page/run_state.hpp"
+#include "control_page/share_inbox.hpp"
 #include "image/rgb_image.hpp"
 
 namespace l2 {
@@ -62,6 +66,8 @@ class ControlServer {
   void publish_pictures(std::vector<NamedPicture> pictures);
 
   ControlInbox& inbox();
+  // The screens shared into the run: the run opens and closes them, the server feeds frames.
+  std::shared_ptr<ShareInbox> shares() const;
   // From now on every POST, waiting ones too, is refused with 409 and `why` ("the run is over:
   // ..."): a finished run has nothing to steer.
   void refuse_steering(std::string why);

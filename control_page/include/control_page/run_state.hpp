@@ -32,6 +32,18 @@ struct PageWindow {
   int x = 0, y = 0, width = 0, height = 0;  // on the canvas
 };
 
+// A screen shared from a browser into the run (share_inbox.hpp), as its window's source.
+struct PageShare {
+  int window = 0;
+  std::string name;  // who shares it, as the sharer's page says
+  int width = 0, height = 0;
+  long received = 0;                // frames decoded and kept
+  long shown = 0;                   // of those, taken by the run into a frame
+  long dropped = 0;                 // replaced by a newer one before the run took them
+  long refused = 0;                 // not a JPEG, damaged, or of another size
+  double seconds_since_frame = -1;  // -1: none received yet
+};
+
 // One pipeserver's figures of one frame, as its log line says them.
 struct PageFrameTimes {
   int frame = 0;
@@ -73,6 +85,8 @@ struct RunState {
   std::vector<PageTile> tiles;              // the layout of `frame`
   std::vector<PageWindow> windows;          // a session's windows at `frame`, back to front
   bool windows_movable = false;             // whether POST /api/window moves them in this run
+  int share_slots = 0;                      // screens a browser may share at once; 0: none
+  std::vector<PageShare> shares;            // the screens shared now
   std::vector<PagePipeserver> pipeservers;  // in pipeserver order
   std::vector<PageEvent> events;            // oldest first, the last few dozen
   std::vector<std::string> pictures;        // other pictures served at /api/picture/NAME

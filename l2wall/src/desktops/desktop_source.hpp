@@ -1,6 +1,7 @@
-// Where the coordinator's desktop comes from (--scene vnc, docs/vnc.md): the edge of the run
-// that talks to a desktop server. The one real source is an RFB (VNC) connection
-// (vnc_desktop.cpp); what the run does with the pixels is DesktopFrames', without I/O.
+// Where the coordinator's desktops come from (--scene vnc, docs/vnc.md; a session's shares,
+// control_page/README.md): the edge of the run that takes in a desktop's pixels. The sources are
+// an RFB (VNC) connection (vnc_desktop.cpp) and a screen a browser shares through the control
+// page (share_desktop.cpp); what the run does with the pixels is DesktopFrames', without I/O.
 #pragma once
 
 #include <chrono>
@@ -10,6 +11,8 @@
 #include "desktop_frames.hpp"
 
 namespace l2 {
+
+class ShareInbox;  // control_page/share_inbox.hpp
 
 class DesktopSource {
  public:
@@ -27,6 +30,11 @@ class DesktopSource {
 // DesktopError in one line: the server cannot be reached, wants a password, refused it.
 std::unique_ptr<DesktopSource> connect_vnc(const std::string& address,
                                            const std::string& password_file);
+
+// The screen shared into window `window` through the control page: frames of width x height,
+// taken from `inbox` as they come (share_desktop.cpp).
+std::unique_ptr<DesktopSource> share_source(std::shared_ptr<ShareInbox> inbox, int window,
+                                            int width, int height);
 
 // "HOST:DISPLAY" or "HOST::PORT" as host and port; throws DesktopError for anything else.
 std::pair<std::string, int> vnc_endpoint(const std::string& address);

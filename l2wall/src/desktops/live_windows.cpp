@@ -20,6 +20,10 @@ LiveWindows::LiveWindows(const Session& session) {
     ids_.push_back(w.id);
     sources_.push_back(w.source);
   }
+  for (int k = 0; k < session.shares; ++k) {  // closed until a browser shares a screen
+    ids_.push_back(share_window_id(session, k));
+    sources_.push_back("share");
+  }
   lines_.push_back(encode(WindowsMessage{0, now_}));
 }
 
@@ -45,6 +49,18 @@ LiveWindows::Refusal LiveWindows::command(std::string_view line) {
     return {e.what()};
   }
   return {};
+}
+
+int LiveWindows::open(int id, const Rect& r) {
+  now_.erase(std::remove_if(now_.begin(), now_.end(), [id](auto& p) { return p.id == id; }),
+             now_.end());
+  now_.push_back({id, r});
+  if (std::find(ids_.begin(), ids_.end(), id) == ids_.end()) {
+    ids_.push_back(id);
+    sources_.push_back("share");
+  }
+  pending_.push_back(fmt::format("open {} {} {} {} {}", id, r.x, r.y, r.w, r.h));
+  return static_cast<int>(lines_.size());
 }
 
 std::string LiveWindows::apply(std::string_view verb, int id, const Rect& r) {

@@ -30,6 +30,11 @@ class LiveWindows {
   // "move ID X Y W H" (its top-left and size on the canvas), "raise ID" (in front of the
   // others), "close ID": taken from the next frame decided.
   Refusal command(std::string_view line);
+  // Shows window `id` (a share's, session_shares.hpp) at `r`, in front of the others, from the
+  // next frame decided, which it returns. Its source is "share".
+  int open(int id, const Rect& r);
+  // The first frame whose windows are not decided yet: what a command changes from.
+  int next_frame() const { return static_cast<int>(lines_.size()); }
   // Frame `frame`'s WINDOWS line, deciding every frame up to it (each with the commands taken
   // since the one before).
   const std::string& line_for(int frame);

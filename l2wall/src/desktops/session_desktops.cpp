@@ -9,7 +9,8 @@
 namespace l2 {
 
 SessionDesktops::SessionDesktops(const Session& session, const TileLayout& layout,
-                                 const Connect& connect) {
+                                 const Connect& connect)
+    : shares_(session, layout) {
   for (const PipeserverPlan& p : layout.pipeservers) {
     std::vector<Rect>& rects = tiles_.emplace_back();
     for (const PackedTile& t : p.tiles) rects.push_back(t.tile.on_canvas);
@@ -44,6 +45,11 @@ void SessionDesktops::take_updates() {
       throw RunFault(fmt::format("window {}: {}", d.first_window, e.what()));
     }
   }
+  try {
+    shares_.take_updates();
+  } catch (const DesktopError& e) {
+    throw RunFault(e.what());
+  }
 }
 
 std::vector<std::string> SessionDesktops::answer(int pipeserver, int frame,
@@ -56,6 +62,8 @@ std::vector<std::string> SessionDesktops::answer(int pipeserver, int frame,
                        desktop_regions(tiles, shown, d.windows, d.live->width(), d.live->height()));
     lines.insert(lines.end(), part.begin(), part.end());
   }
+  const std::vector<std::string> shared = shares_.answer(pipeserver, frame, shown);
+  lines.insert(lines.end(), shared.begin(), shared.end());
   return lines;
 }
 
@@ -63,7 +71,7 @@ std::string SessionDesktops::summary() const {
   std::string out;
   for (const Desktop& d : desktops_)
     out += fmt::format("window {}: {}", d.first_window, d.live->summary());
-  return out;
+  return out + shares_.summary();
 }
 
 }  // namespace l2

@@ -75,6 +75,8 @@ ControlDecision PageSteering::take_request(const ControlRequest& r, int frame) {
       return switch_balance(r.argument, frame);
     case ControlAction::Window:
       return windows_.command(r.argument, core_.pipeservers);
+    case ControlAction::Share:
+      return windows_.share(r.argument, core_.page->shares(), core_.pipeservers);
   }
   return {400, "unknown request"};
 }
@@ -144,6 +146,7 @@ PageMoment PageSteering::moment() const {
   if (windows_.session()) {
     m.windows = windows_.page_windows(f.shown - 1);
     m.windows_movable = RunWindows::moving_here(core_.pipeservers);
+    m.share_slots = windows_.share_slots();
   }
   return m;
 }

@@ -1,6 +1,10 @@
 #include "run_windows.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "desktops/desktop_source.hpp"
@@ -9,6 +13,8 @@
 namespace l2 {
 
 void RunWindows::start(const RunOptions& o, const TileLayout& layout, bool balanced) {
+  canvas_width_ = layout.wall.canvas_width;
+  canvas_height_ = layout.wall.canvas_height;
   start_windows(o, layout, balanced);
   start_desktop(o, layout, balanced);
 }
@@ -27,13 +33,13 @@ void RunWindows::start_windows(const RunOptions& o, const TileLayout& layout, bo
 // vnc run's.
 void RunWindows::start_session_desktops(const Session& session, const TileLayout& layout,
                                         bool balanced) {
-  if (std::none_of(session.windows.begin(), session.windows.end(),
-                   [](const SessionWindow& w) { return w.source == "vnc"; }))
+  if (session.shares == 0 && std::none_of(session.windows.begin(), session.windows.end(),
+                                          [](const SessionWindow& w) { return w.source == "vnc"; }))
     return;
   if (balanced)
     throw std::runtime_error(
-        "a session's vnc windows are sent for the wall file's tiles: it takes no balancing "
-        "(--balance, or the wall file's [balance])");
+        "a session's vnc windows and shares are sent for the wall file's tiles: it takes no "
+        "balancing (--balance, or the wall file's [balance])");
   try {
     session_desktops_ = std::make_unique<SessionDesktops>(session, layout, connect_vnc);
   } catch (const DesktopError& e) {
@@ -72,8 +78,48 @@ ControlDecision RunWindows::command(const std::string& command, const Pipeserver
     no = windows_->command(command);
     status = no.no_such_window ? 404 : 400;
   }
-  if (no.why.empty()) return {200, "window: " + command + " from the next frame"};
-  return {status, "window not changed: " + no.why};
+  if (!no.why.empty()) return {status, "window not changed: " + no.why};
+  if (command.rfind("close ", 0) == 0) closed(std::atoi(command.c_str() + 6));
+  return {200, "window: " + command + " from the next frame"};
+}
+
+void RunWindows::closed(int id) {
+  if (!session_desktops_ || !session_desktops_->shares().close(id)) return;
+  if (share_inbox_) share_inbox_->close(id);
+}
+
+int RunWindows::share_slots() const {
+  return session_desktops_ ? session_desktops_->shares().slots() : 0;
+}
+
+ControlDecision RunWindows::share(const std::string& request,
+                                  const std::shared_ptr<ShareInbox>& inbox,
+                                  const PipeserverSet& pipeservers) {
+  if (!windows_)
+    return {409, "not shared: this run shows no session (start it with --scene session)"};
+  if (!moving_here(pipeservers)) return {409, "not shared: windows do not change under --mpi"};
+  int w = 0, h = 0, cx = -1, cy = -1, name_at = 0;
+  if (std::sscanf(request.c_str(), "%d %d %d %d %n", &w, &h, &cx, &cy, &name_at) != 4 ||
+      name_at == 0 || w < 1 || h < 1 || w > kMaxShareWidth || h > kMaxShareHeight)
+    return {400, fmt::format("not shared: expected W H CX CY NAME, W 1..{} and H 1..{}",
+                             kMaxShareWidth, kMaxShareHeight)};
+  const std::string name = request.substr(static_cast<std::size_t>(name_at));
+  if (share_slots() == 0)
+    return {409,
+            "not shared: the session takes no shares (give it shares = N, "
+            "docs/session-file.md)"};
+  share_inbox_ = inbox;
+  const Rect place = share_place(canvas_width_, canvas_height_, w, h, cx, cy);
+  // The slot's desktop starts with the frame the window is first shown in.
+  const int from = windows_->next_frame();
+  SessionShares& shares = session_desktops_->shares();
+  const Result<int> window = shares.free_window();
+  if (!window.ok()) return {409, "not shared: " + window.reason()};
+  shares.open(*window, share_source(inbox, *window, w, h), name, from);
+  windows_->open(*window, place);
+  inbox->open(*window, name, w, h);
+  return {200, fmt::format("sharing {} as window {} ({}x{}) at {},{} {}x{}", name, *window, w, h,
+                           place.x, place.y, place.w, place.h)};
 }
 
 bool RunWindows::moving_here(const PipeserverSet& pipeservers) {

@@ -9,6 +9,7 @@
 
 #include "control_page/control_inbox.hpp"
 #include "control_page/run_state.hpp"
+#include "control_page/share_inbox.hpp"
 #include "desktops/live_desktop.hpp"
 #include "desktops/live_windows.hpp"
 #include "desktops/session_desktops.hpp"
@@ -39,6 +40,13 @@ class RunWindows {
   // status the control page answers: 400 for words it cannot read, 404 for no such window, 409
   // for a run whose windows do not move.
   ControlDecision command(const std::string& command, const PipeserverSet& pipeservers);
+  // A screen a browser shares ("W H CX CY NAME", ControlRequest's Share): a free share slot's
+  // window, from the next frame decided, fed from `inbox`. 409 when the session takes no
+  // shares or all its share windows are in use; 400 for words it cannot read.
+  ControlDecision share(const std::string& request, const std::shared_ptr<ShareInbox>& inbox,
+                        const PipeserverSet& pipeservers);
+  // How many screens may be shared at once; 0: none.
+  int share_slots() const;
   // --window-stdin: the whole lines waiting on stdin, without waiting for more.
   std::vector<std::string> stdin_commands() { return stdin_lines_.take(); }
   // Whether the pipeservers take WINDOWS lines (over MPI too, --mpi-windows): all of a session's.
@@ -59,11 +67,15 @@ class RunWindows {
   void start_windows(const RunOptions& o, const TileLayout& layout, bool balanced);
   void start_session_desktops(const Session& session, const TileLayout& layout, bool balanced);
   void start_desktop(const RunOptions& o, const TileLayout& layout, bool balanced);
+  // A share's window closed (`command` closed `id`): its slot is free, its frames refused.
+  void closed(int id);
 
   std::unique_ptr<LiveWindows> windows_;               // a session run's windows
   std::unique_ptr<LiveDesktop> desktop_;               // a vnc run's desktop
   std::unique_ptr<SessionDesktops> session_desktops_;  // a session's vnc windows' desktops
   LineReader stdin_lines_{STDIN_FILENO};               // --window-stdin
+  std::shared_ptr<ShareInbox> share_inbox_;            // the page's, once a screen is shared
+  int canvas_width_ = 0, canvas_height_ = 0;           // where shares are placed
 };
 
 }  // namespace l2

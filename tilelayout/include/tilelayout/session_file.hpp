@@ -23,6 +23,9 @@ inline constexpr int kWindowReach = 16384;
 // Desktops (vnc windows) a session shows: each is an RFB connection of the run's coordinator
 // and a copy of that desktop there; windows of the same address and password share one.
 inline constexpr int kMaxSessionDesktops = 4;
+// Screens shared from the control page's browsers (`shares`) a session shows at once: each is a
+// window and a desktop of the coordinator's, fed by HTTP frames.
+inline constexpr int kMaxSessionShares = 4;
 
 struct SessionWindow {
   int id = 0;          // what commands name it by: unique in the session
@@ -41,7 +44,12 @@ struct Session {
   std::filesystem::path source;        // the file, for messages
   std::uint32_t background = 0;        // 0xRRGGBB, where no window is
   std::vector<SessionWindow> windows;  // back to front (sort_windows)
+  int shares = 0;  // screens the control page may share at once (docs/session-file.md)
 };
+
+// The id of share slot `slot` (0 .. shares-1): after every window of the file, so the
+// coordinator and the pipeservers name a share's window alike without telling each other.
+int share_window_id(const Session& session, int slot);
 
 // Parses session text; relative content paths are taken from `path_for_messages`'s folder.
 // Throws LayoutError ("s.toml:12: window[1].width: must be 1..16384, got 0").
