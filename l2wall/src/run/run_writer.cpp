@@ -64,7 +64,9 @@ std::string RunWriter::write_report(const std::string& fault, const std::string&
   FrameLedger& f = core_.frames;
   f.totals.pace.clear();  // asked anew: a fault's report may follow a report that failed
   f.totals.path_lines.clear();
+  f.totals.path_files.clear();
   for (const auto& p : core_.paths) p->add_totals(f.totals);
+  for (auto& file : f.totals.path_files) files.push_back(std::move(file));
   f.totals.lost.clear();
   std::vector<std::string> pipeserver_logs;
   for (const LivePipeserver& h : core_.pipeservers.all()) {
