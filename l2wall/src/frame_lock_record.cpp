@@ -56,6 +56,15 @@ void FrameLockRecord::add_row() {
   csv_ += '\n';
 }
 
+std::string FrameLockRecord::shown_lines() const {
+  std::string text = fmt::format("refresh {}\n", clocks_.refreshes() - 1);
+  for (std::size_t d = 0; d < clocks_.shown().size(); ++d) {
+    fmt::format_to(std::back_inserter(text), "display {}: frame {}, counter {}\n", d,
+                   clocks_.shown()[d], clocks_.counters()[d]);
+  }
+  return text;
+}
+
 std::string FrameLockRecord::summary_lines() const {
   std::string counts;
   for (std::size_t g = 0; g < clocks_.groups().size(); ++g) {

@@ -44,6 +44,10 @@ TEST(FrameLockRecord, CsvAndSummaryOfAHalfRateDisplay) {
             "group's displays showing different frames) of 4: group 5: 1; each display's frame "
             "counter and frame per refresh in frame-lock.csv\n");
   EXPECT_EQ(record.shown(1), 0);
+  EXPECT_EQ(record.shown_lines(),
+            "refresh 3\n"
+            "display 0: frame 1, counter 3\n"
+            "display 1: frame 0, counter 1\n");
 }
 
 TEST(FrameLockRecord, HouseSyncAndDisplaysNoColumnAnswered) {

@@ -17,9 +17,34 @@ inline const fs::path kFrameLockWalls = fs::path(L2_SOURCE_DIR) / "examples" / "
 struct FrameLockRun {
   std::uint64_t refreshes = 0, mismatched = 0;  // from the summary line
   std::vector<std::vector<std::string>> csv;    // frame-lock.csv, header first
+  // Of the kept frames (--keep every): those whose frame-lock.txt has a projector showing the
+  // frame before the folder's (frame stamp K-1 in frame-K), those with one not showing the
+  // folder's frame at all (the older frame, or none yet), and those without the file.
+  int saved_older = 0, saved_not_own = 0, saved_without_file = 0;
 };
 
-inline FrameLockRun frame_lock_of(const WallRun& run) {
+// Kept frame K's frame-lock.txt: which frame each projector showed at the refresh K swapped in.
+inline void count_saved_stamps(const fs::path& out, int frames, FrameLockRun& r) {
+  for (int k = 0; k < frames; ++k) {
+    const fs::path file = out / fmt::format("frame-{}", k) / "frame-lock.txt";
+    if (!fs::exists(file)) {
+      ++r.saved_without_file;
+      continue;
+    }
+    const std::string text = slurp(file);
+    bool older = false, not_own = false;
+    for (int d = 0; d < 3; ++d) {
+      older |=
+          k > 0 && text.find(fmt::format("display {}: frame {},", d, k - 1)) != std::string::npos;
+      not_own |= text.find(fmt::format("display {}: frame {},", d, k)) == std::string::npos;
+    }
+    r.saved_older += older;
+    r.saved_not_own += not_own;
+  }
+}
+
+// `frames`: the run's, each kept (--keep every).
+inline FrameLockRun frame_lock_of(const WallRun& run, int frames) {
   FrameLockRun r;
   std::smatch m;
   const std::string out = run.output();
@@ -31,6 +56,7 @@ inline FrameLockRun frame_lock_of(const WallRun& run) {
     r.mismatched = std::stoull(m[2]);
   }
   r.csv = read_csv(run.out() / "frame-lock.csv");
+  count_saved_stamps(run.out(), frames, r);
   return r;
 }
 
@@ -43,6 +69,11 @@ inline long long frame_counter(long long s, long long ppm) {
 // the frame before the others'.
 inline void expect_free_running(const FrameLockRun& r) {
   EXPECT_GT(r.mismatched, 0u);
+  EXPECT_EQ(r.saved_without_file, 0);
+  // A kept frame is saved at the refresh it swapped in, where the slow projector may still show
+  // the frame before: the visible proof, as many as the mismatched refreshes at most.
+  EXPECT_GT(r.saved_older, 0);
+  EXPECT_LE(static_cast<std::uint64_t>(r.saved_older), r.mismatched);
   ASSERT_EQ(r.csv.size(), r.refreshes + 1);
   EXPECT_EQ(r.csv[0],
             (std::vector<std::string>{"refresh", "counter_0", "frame_0", "counter_1", "frame_1",
@@ -71,6 +102,8 @@ inline void expect_free_running(const FrameLockRun& r) {
 // projectors-house-sync.toml's run: every counter the house refresh, every frame the same.
 inline void expect_house_sync(const FrameLockRun& r) {
   EXPECT_EQ(r.mismatched, 0u);
+  EXPECT_EQ(r.saved_without_file, 0);
+  EXPECT_EQ(r.saved_not_own, 0);
   ASSERT_EQ(r.csv.size(), r.refreshes + 1);
   for (std::size_t i = 1; i < r.csv.size(); ++i) {
     const auto& row = r.csv[i];

@@ -13,12 +13,12 @@ namespace {
 using namespace testing_support;
 
 FrameLockRun run_wall(const std::string& name, const std::string& wall) {
-  WallRun run(name,
-              {"--wall", (kFrameLockWalls / wall).string(), "--frames", "40", "--refresh", "0"});
+  WallRun run(name, {"--wall", (kFrameLockWalls / wall).string(), "--frames", "40", "--refresh",
+                     "0", "--keep", "every"});
   const ExitStatus status = run.wait(120s);
   EXPECT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   expect_clean(run);
-  return frame_lock_of(run);
+  return frame_lock_of(run, 40);
 }
 
 TEST(LiveRunFrameLock, FreeRunningClocksShowMismatchedRefreshes) {

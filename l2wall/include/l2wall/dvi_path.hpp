@@ -65,6 +65,11 @@ class DviPath final : public DisplayPath {
     return colour_.apply(std::move(*pictures));
   }
   int frame_shown() const override { return shown_; }
+  // A wall with [displays]: frame-lock.txt, the frame each display shows by its own clock.
+  std::vector<std::pair<std::string, std::string>> frame_files() const override {
+    if (!frame_lock_) return {};
+    return {{"frame-lock.txt", frame_lock_->shown_lines()}};
+  }
 
   bool down() override { return columns_->gone().has_value(); }
   Status failure_as_cause(int, const std::string&) override;

@@ -33,6 +33,9 @@ class FrameLockRecord {
   const DisplayClocks& clocks() const { return clocks_; }
   // The frame display `id` shows by its own clock this refresh.
   int shown(int id) const { return clocks_.shown().at(static_cast<std::size_t>(id)); }
+  // This refresh, a line per display: "display D: frame F, counter C" (F -1: none yet), after
+  // "refresh S".
+  std::string shown_lines() const;
   // "frame lock: ..." lines for the summary.
   std::string summary_lines() const;
   // frame-lock.csv: a header, then one row per refresh: refresh, each display's counter and

@@ -14,12 +14,12 @@ using namespace testing_support;
 // 3 pipeserver ranks, 1 board column, the coordinator.
 FrameLockRun run_over_mpi(const std::string& name, const std::string& wall) {
   const MpirunBase base;
-  WallRun run(
-      name,
-      {"--wall", (kFrameLockWalls / wall).string(), "--frames", "40", "--refresh", "0", "--mpi"},
-      {}, false, mpirun(base, 5));
+  WallRun run(name,
+              {"--wall", (kFrameLockWalls / wall).string(), "--frames", "40", "--refresh", "0",
+               "--keep", "every", "--mpi"},
+              {}, false, mpirun(base, 5));
   EXPECT_TRUE(wait_mpirun(run, base, 180s).ok()) << run.output();
-  return frame_lock_of(run);
+  return frame_lock_of(run, 40);
 }
 
 TEST(MpiFrameLock, FreeRunningClocksShowMismatchedRefreshes) {

@@ -36,6 +36,17 @@ void RunWriter::save_frame(int frame) {
   };
   for (std::size_t i = 0; i < core_.paths.size(); ++i)
     write(core_.paths[i]->frame_pictures(frame, watch_), core_.picture_suffix(i));
+  // Beside the pictures: what the paths know of the displays at this refresh.
+  for (const auto& p : core_.paths) {
+    for (const auto& [name, text] : p->frame_files()) {
+      try {
+        write_whole_file(dir / name, text);
+      } catch (const std::runtime_error& e) {
+        throw partly_written(e, out, fmt::format("the pictures of frame {}", frame),
+                             "no summary.txt or report.csv of this run");
+      }
+    }
+  }
   ++kept_;
 }
 
