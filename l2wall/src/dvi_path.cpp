@@ -80,6 +80,7 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
                                           : wall_mesh(layout.wall).input_count(),
                  static_cast<int>(groups_.size())),
       lock_check_(groups_) {
+  if (layout.wall.frame_lock.modelled) frame_lock_.emplace(layout.wall, groups_);
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
@@ -173,6 +174,7 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
   if (const Status s = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_);
       !s.ok())
     throw RunFault(s.reason());
+  if (frame_lock_) frame_lock_->refresh(displays_shown_);
 }
 
 const ColumnRoute& DviPath::decide(std::span<const Observation> seen,
@@ -260,6 +262,10 @@ void DviPath::add_totals(RunTotals& totals) const {
       "different and parsed\n",
       totals.frames_predicted, totals.predictions_missed);
   totals.path_lines += summary_lines();
+  if (frame_lock_) {
+    totals.path_lines += frame_lock_->summary_lines();
+    totals.path_files.emplace_back("frame-lock.csv", frame_lock_->csv());
+  }
 }
 
 std::string DviPath::summary_lines() const {

@@ -106,7 +106,9 @@ void add_wall_options(CLI::App& run, RunCommand& c) {
   add_out_option(run, o.out,
                  "frame-<k>/display-<id>.png and wall.png for kept frames, report.csv (one "
                  "row per frame), summary.txt, pipeserver-<i>.log, vizserver.log (the compositing "
-                 "server's lines), layouts.txt (--balance: each frame's layout)")
+                 "server's lines), layouts.txt (--balance: each frame's layout), "
+                 "frame-lock.csv (a wall with [displays] clocks: per refresh each display's frame "
+                 "counter and the frame it showed)")
       ->capture_default_str();
   run.add_option("--keep", o.keep,
                  "frames whose displays are written: every | last | none | K,L,...")

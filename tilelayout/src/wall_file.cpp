@@ -13,12 +13,13 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   const TomlSource source{path_for_messages.string()};
   const toml::table doc = parse_toml(toml_text, source);
   const TomlFields top(doc, "", source,
-                       {"name", "canvas", "display_grid", "display", "tiling", "pipeservers",
-                        "mesh", "depth", "overlay", "balance", "blend"});
+                       {"name", "canvas", "display_grid", "display", "displays", "tiling",
+                        "pipeservers", "mesh", "depth", "overlay", "balance", "blend"});
   Wall wall;
   wall.source = path_for_messages;
   wall.name = top.string("name").value_or(path_for_messages.stem().string());
   read_displays(top, wall);
+  read_display_clocks(top, wall);
   read_canvas(top, wall);
   read_tiling(top, wall);
   read_pipeservers_and_mesh(top, wall);

@@ -16,6 +16,8 @@ void read_warp(const TomlFields& f, Display& d);
 void read_levels(const TomlFields& f, Display& d);
 // [display_grid] `colour` (optional): one table of those keys per display, in id order.
 void read_grid_colour(const TomlFields& grid, std::vector<Display>& displays);
+// [displays] (optional): each display's refresh clock and the house sync. Needs the displays.
+void read_display_clocks(const TomlFields& top, Wall& wall);
 // [canvas] (optional): fills the canvas size and checks every display lies on it.
 void read_canvas(const TomlFields& top, Wall& wall);
 // [tiling]: needs the canvas.

@@ -75,6 +75,9 @@ class DisplayPath {
   virtual std::optional<DisplayPictures> shown() const = 0;
   // The frame the displays show; -1 before the first.
   virtual int frame_shown() const = 0;
+  // Text files (name, text) saved beside the pictures of the frame just swapped in: what the
+  // path knows of the displays at that refresh (the DVI path's frame-lock.txt).
+  virtual std::vector<std::pair<std::string, std::string>> frame_files() const { return {}; }
 
   // --- faults ------------------------------------------------------------------------------
   // The defaults are those of a path with no process or stream of its own (the emulator in

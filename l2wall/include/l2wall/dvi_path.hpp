@@ -6,9 +6,10 @@
 // and knows from the stamps the columns followed into the displays which frame they show.
 //
 // Owns: the frame sequencer, the refresh clock, READY, the balance hooks (the control channels
-// served while stepping, every swap checked against the layouts), the frame-shown rule and the
-// swap-lock check. It may not touch pixels or the transport: the columns route, and say what
-// they saw.
+// served while stepping, every swap checked against the layouts), the frame-shown rule, the
+// swap-lock check and, for a wall with [displays], the record of frame lock (what each display
+// showed by its own refresh clock, frame_lock_record.hpp). It may not touch pixels or the
+// transport: the columns route, and say what they saw.
 #pragma once
 
 #include <map>
@@ -19,6 +20,7 @@
 #include "l2wall/board_columns.hpp"
 #include "l2wall/colour_stage.hpp"
 #include "l2wall/display_path.hpp"
+#include "l2wall/frame_lock_record.hpp"
 #include "l2wall/live_run.hpp"
 #include "l2wall/swap_lock_check.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
@@ -63,6 +65,11 @@ class DviPath final : public DisplayPath {
     return colour_.apply(std::move(*pictures));
   }
   int frame_shown() const override { return shown_; }
+  // A wall with [displays]: frame-lock.txt, the frame each display shows by its own clock.
+  std::vector<std::pair<std::string, std::string>> frame_files() const override {
+    if (!frame_lock_) return {};
+    return {{"frame-lock.txt", frame_lock_->shown_lines()}};
+  }
 
   bool down() override { return columns_->gone().has_value(); }
   Status failure_as_cause(int, const std::string&) override;
@@ -110,6 +117,7 @@ class DviPath final : public DisplayPath {
   std::vector<std::map<int, int>> group_of_display_;
   FrameSequencer sequencer_;
   SwapLockCheck lock_check_;
+  std::optional<FrameLockRecord> frame_lock_;  // a wall with [displays]
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;

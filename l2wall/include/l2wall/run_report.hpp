@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "l2wall/live_run.hpp"
@@ -36,6 +37,8 @@ struct RunTotals {
   bool latency_measured = true;
   std::string pace;
   std::string path_lines;
+  // Files the paths add to OUT beside report.csv (name, text): the DVI path's frame-lock.csv.
+  std::vector<std::pair<std::string, std::string>> path_files;
   RunClock::time_point start{};  // the clock starts once every pipeserver delivered a first frame
   std::vector<bool> lost;        // by pipeserver: lost mid-run (--survive-host-loss)
 };

@@ -36,6 +36,17 @@ void RunWriter::save_frame(int frame) {
   };
   for (std::size_t i = 0; i < core_.paths.size(); ++i)
     write(core_.paths[i]->frame_pictures(frame, watch_), core_.picture_suffix(i));
+  // Beside the pictures: what the paths know of the displays at this refresh.
+  for (const auto& p : core_.paths) {
+    for (const auto& [name, text] : p->frame_files()) {
+      try {
+        write_whole_file(dir / name, text);
+      } catch (const std::runtime_error& e) {
+        throw partly_written(e, out, fmt::format("the pictures of frame {}", frame),
+                             "no summary.txt or report.csv of this run");
+      }
+    }
+  }
   ++kept_;
 }
 
@@ -64,7 +75,9 @@ std::string RunWriter::write_report(const std::string& fault, const std::string&
   FrameLedger& f = core_.frames;
   f.totals.pace.clear();  // asked anew: a fault's report may follow a report that failed
   f.totals.path_lines.clear();
+  f.totals.path_files.clear();
   for (const auto& p : core_.paths) p->add_totals(f.totals);
+  for (auto& file : f.totals.path_files) files.push_back(std::move(file));
   f.totals.lost.clear();
   std::vector<std::string> pipeserver_logs;
   for (const LivePipeserver& h : core_.pipeservers.all()) {

@@ -44,6 +44,9 @@ struct Display {
   double alpha_gamma = 1.0;
   std::shared_ptr<const LevelMap> level_map;
   int mesh = 0;  // the mesh that drives it (several_meshes.hpp)
+  // How far its own refresh clock runs from the nominal rate, in parts per million ([displays]
+  // clock_ppm): a free-running display refreshes every period / (1 + clock_ppm·1e-6).
+  int clock_ppm = 0;
 
   int canvas_width() const { return orientation.turned() ? height : width; }
   int canvas_height() const { return orientation.turned() ? width : height; }
@@ -149,6 +152,15 @@ struct BlendSpec {
   int line = 0;        // of `blend` in the wall file, for errors found later
 };
 
+// [displays]: whether the run models each display's own refresh clock, and whether a house
+// sync locks them (frame lock). Without the section the displays swap exactly in lock with the
+// emulator's refresh clock, as they always did.
+struct FrameLockSpec {
+  bool modelled = false;    // the wall has a [displays] section
+  bool house_sync = false;  // sync = "house": every retrace locked to the house clock
+  int line = 0;
+};
+
 struct Wall {
   std::filesystem::path source;  // the wall file, for error messages; empty when built in code
   std::string name;
@@ -172,6 +184,7 @@ struct Wall {
   std::optional<Overlay> overlay;
   BalanceSpec balance;
   BlendSpec blend;
+  FrameLockSpec frame_lock;
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
   int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };
