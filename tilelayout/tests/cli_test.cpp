@@ -149,9 +149,10 @@ TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
   const fs::path keyed = write("keyed.toml", "\"\\u001b[31mred\" = 1\n" + kGood);
   r = run("--wall '" + keyed.string() + "'");
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err, "tilelayout: " + keyed.string() +
-                       ":1: \\x1b[31mred: unknown key (valid here: name, canvas, display_grid, "
-                       "display, tiling, pipeservers, mesh, depth, overlay, balance, blend)\n");
+  EXPECT_EQ(r.err,
+            "tilelayout: " + keyed.string() +
+                ":1: \\x1b[31mred: unknown key (valid here: name, canvas, display_grid, "
+                "display, tiling, pipeservers, mesh, depth, overlay, balance, blend, stereo)\n");
 }
 
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {
