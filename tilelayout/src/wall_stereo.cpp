@@ -120,6 +120,13 @@ void read_stereo(const TomlFields& top, Wall& wall) {
     top.fail("stereo",
              fmt::format("must be {} or a [stereo] section, got {}", quoted_modes(), type_name(n)));
   }
+  // Before the displays are read: a wall written for a mode to come is told so, not that its
+  // displays' eyes are wrong.
+  if (s.mode != StereoMode::Passive) {
+    top.source().fail(s.line, "stereo",
+                      fmt::format("stereo walls do not support \"{}\" (only \"passive\") yet",
+                                  kStereoModeNames[static_cast<int>(s.mode)]));
+  }
 }
 
 void read_stereo_displays(const TomlFields& top, Wall& wall) {
@@ -132,9 +139,6 @@ void check_stereo(const TomlFields& top, const Wall& wall) {
   const auto refuse = [&](int line, std::string_view field, std::string_view what) {
     top.source().fail(line, field, fmt::format("stereo walls do not support {} yet", what));
   };
-  const std::string_view mode = kStereoModeNames[static_cast<int>(wall.stereo.mode)];
-  if (wall.stereo.mode != StereoMode::Passive)
-    refuse(wall.stereo.line, "stereo", fmt::format("\"{}\" (only \"passive\")", mode));
   if (wall.mesh_count > 1) refuse(wall.meshes_line, "display", "several meshes");
   if (wall.depth_layers != 0) refuse(wall.depth_line, "depth", "depth compositing");
   if (wall.overlay) refuse(wall.overlay->line, "overlay", "an overlay");

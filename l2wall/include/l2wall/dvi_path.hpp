@@ -110,6 +110,7 @@ class DviPath final : public DisplayPath {
   std::vector<std::map<int, int>> group_of_display_;
   FrameSequencer sequencer_;
   SwapLockCheck lock_check_;
+  int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;
