@@ -165,6 +165,12 @@ TEST(WallStereo, RefusesWhatStereoCannotDoYet) {
   EXPECT_EQ(stereo_error(stereo_replace(kStereoGrid, "\"passive\"", "\"active\"")),
             "walls/s.toml:1: stereo: stereo walls do not support \"active\" (only \"passive\") "
             "yet");
+  for (const std::string mode : {"side-by-side", "top-bottom"}) {
+    EXPECT_EQ(stereo_error(
+                  stereo_replace(kStereoPassive, "mode = \"passive\"", "mode = \"" + mode + "\"")),
+              "walls/s.toml:2: stereo: stereo walls do not support \"" + mode +
+                  "\" (only \"passive\") yet");
+  }
   EXPECT_EQ(stereo_error(kStereoGrid + "[depth]\nlayers = 2\n"),
             "walls/s.toml:17: depth: stereo walls do not support depth compositing yet");
   // Projectors overlapping by 10 columns, each with its twin: blend would have edges to ramp.
