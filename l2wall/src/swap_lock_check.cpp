@@ -8,7 +8,8 @@ namespace l2 {
 
 namespace {
 
-const DisplayShown* find(std::span<const DisplayShown> shown, int id) {
+// What display `id` shows this refresh; null when no column answered for it.
+const DisplayShown* shown_by(std::span<const DisplayShown> shown, int id) {
   const auto it = std::find_if(shown.begin(), shown.end(),
                                [id](const DisplayShown& s) { return s.display == id; });
   return it == shown.end() ? nullptr : &*it;
@@ -18,8 +19,8 @@ const DisplayShown* find(std::span<const DisplayShown> shown, int id) {
 
 Status SwapLockCheck::check_eyes(std::uint64_t refresh, std::span<const DisplayShown> shown) const {
   for (const EyePair& p : eyes_) {
-    const DisplayShown* left = find(shown, p.left);
-    const DisplayShown* right = find(shown, p.right);
+    const DisplayShown* left = shown_by(shown, p.left);
+    const DisplayShown* right = shown_by(shown, p.right);
     if (!left || !right || left->frame == right->frame) continue;
     return Failure{fmt::format(
         "stereo pair broken in refresh {}: left eye display {} (rank {}) shows frame {}, right "
