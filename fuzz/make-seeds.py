@@ -67,6 +67,8 @@ put("ready", "bad-checksum", b"\x01" + message("READY", 42)[:-4] + b"00\r\n")
 for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml",
              "colour-matched-2x2.toml"):
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
+put("wall_file", "stereo-passive-2x1.toml",
+    (HERE.parent / "examples" / "walls" / "stereo-passive-2x1.toml").read_bytes())
 
 # --- wall_import: the example configurations, first byte 0 (format told from the content) -----
 for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):

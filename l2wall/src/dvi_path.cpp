@@ -79,7 +79,8 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
       sequencer_(layout.meshes.size() > 1 ? layout.wall.pipeserver_count
                                           : wall_mesh(layout.wall).input_count(),
                  static_cast<int>(groups_.size())),
-      lock_check_(groups_) {
+      lock_check_(groups_, eye_pairs(layout.wall)),
+      eye_pairs_(static_cast<int>(eye_pairs(layout.wall).size())) {
   if (layout.wall.frame_lock.modelled) frame_lock_.emplace(layout.wall, groups_);
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
@@ -270,11 +271,17 @@ void DviPath::add_totals(RunTotals& totals) const {
 
 std::string DviPath::summary_lines() const {
   if (!finished_) return {};
+  const std::string stereo =
+      eye_pairs_ == 0 ? ""
+                      : fmt::format(
+                            "stereo: both eyes of {} display pair(s) showed the same frame "
+                            "in all {} refreshes\n",
+                            eye_pairs_, refreshes_);
   return fmt::format(
              "swap lock: every display of each of {} group(s) showed the same frame in all {} "
              "refreshes, {}\n",
              groups_.size(), refreshes_, columns_->where()) +
-         columns_->summary_lines();
+         stereo + columns_->summary_lines();
 }
 
 void DviPath::follow_layouts(LiveBalance& balance, PipeserverSet&) {

@@ -39,5 +39,38 @@ TEST(SwapLockCheck, DisplaysWithoutAFrameYetAreNotCompared) {
   EXPECT_TRUE(check.check(0, shown).ok());
 }
 
+// A passive stereo wall: displays 0 and 1 the left eye's, 2 and 3 their right-eye twins, all of
+// one swap group.
+SwapLockCheck stereo_check() {
+  return SwapLockCheck({SwapGroup{0, {0, 1, 2, 3}, 0}}, {{0, 2}, {1, 3}});
+}
+
+TEST(SwapLockCheck, BothEyesOfOneFramePass) {
+  const std::vector<DisplayShown> shown{{0, 6, 0}, {1, 6, 0}, {2, 6, 0}, {3, 6, 0}};
+  EXPECT_TRUE(stereo_check().check(4, shown).ok());
+}
+
+TEST(SwapLockCheck, AnEyeOfAnotherFrameIsNamed) {
+  // Out of swap lock within the group too; the pair's own line names both eyes once the group's
+  // check is left out (a check of pairs alone, as when twins are in groups of their own).
+  const SwapLockCheck pairs_only({}, {{0, 2}, {1, 3}});
+  const std::vector<DisplayShown> shown{{0, 6, 0}, {1, 6, 0}, {2, 6, 0}, {3, 5, 1}};
+  EXPECT_EQ(pairs_only.check(4, shown).reason(),
+            "stereo pair broken in refresh 4: left eye display 1 (rank 0) shows frame 6, right "
+            "eye display 3 (rank 1) frame 5");
+  EXPECT_EQ(stereo_check().check(4, shown).reason(),
+            "swap lock broken in refresh 4: group 0: display 3 (rank 1) shows frame 5, display 0 "
+            "(rank 0) frame 6");
+}
+
+TEST(SwapLockCheck, AnEyeWithoutAFrameBesideOneWithIsNamed) {
+  const SwapLockCheck pairs_only({}, {{0, 2}});
+  const std::vector<DisplayShown> shown{{0, 0, 0}, {2, -1, 0}};
+  EXPECT_EQ(pairs_only.check(0, shown).reason(),
+            "stereo pair broken in refresh 0: left eye display 0 (rank 0) shows frame 0, right "
+            "eye display 2 (rank 0) frame -1");
+  EXPECT_TRUE(pairs_only.check(0, std::vector<DisplayShown>{{0, -1, 0}, {2, -1, 0}}).ok());
+}
+
 }  // namespace
 }  // namespace l2

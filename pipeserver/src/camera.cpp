@@ -37,6 +37,23 @@ Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
   return cam;
 }
 
+Camera eye_camera(const Camera& mono, const StereoEye& eye, glm::vec3 centre) {
+  if (eye.eye == Eye::None) return mono;
+  // The eye's x in the mono camera's space: left of it is negative.
+  const float side = eye.eye == Eye::Left ? -1.0f : 1.0f;
+  const auto half = static_cast<float>(eye.stereo.eye_separation / 2);
+  const float convergence = eye.stereo.convergence > 0 ? static_cast<float>(eye.stereo.convergence)
+                                                       : -(mono.view * glm::vec4(centre, 1.0f)).z;
+  Camera cam = mono;
+  cam.view = glm::translate(glm::mat4(1.0f), glm::vec3(-side * half, 0.0f, 0.0f)) * mono.view;
+  // x_clip += k·w_clip: NDC x moves by k, which brings the convergence plane back to the mono
+  // camera's place; clip w is the distance in front of the eye.
+  glm::mat4 shift(1.0f);
+  shift[3][0] = side * mono.projection[0][0] * half / convergence;
+  cam.projection = shift * mono.projection;
+  return cam;
+}
+
 glm::mat4 orbit_matrix(float degrees_per_frame, int frame, glm::vec3 centre) {
   // In double, so that a whole number of degrees a frame gives whole angles at any frame.
   const auto degrees =

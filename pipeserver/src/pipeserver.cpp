@@ -52,6 +52,7 @@ glm::vec3 key_colour(std::uint32_t key) {
 Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver, Renderer renderer)
     : plan_(plan_of(layout, pipeserver)),
       canvas_(canvas_of(layout.wall)),
+      stereo_(layout.wall.stereo),
       renderer_(renderer),
       headers_{FrameHeaders(plan_, false), FrameHeaders(plan_, true)},
       depth_skip_(depth_skip_of(layout, pipeserver, kMeshBackground)),
@@ -68,6 +69,7 @@ void Pipeserver::set_layout(const TileLayout& layout) {
   }
   plan_ = plan;
   canvas_ = canvas_of(layout.wall);
+  stereo_ = layout.wall.stereo;
   headers_ = {FrameHeaders(plan_, false), FrameHeaders(plan_, true)};
   depth_skip_ = depth_skip_of(layout, plan_.pipeserver, kMeshBackground);
   make_windows(layout.wall);
@@ -77,7 +79,8 @@ void Pipeserver::make_windows(const Wall& wall) {
   // One GL context per size of a display's canvas rectangle: tiles of displays of one size share
   // it, one display at a time, each tile clearing its own rectangle. A new layout keeps the
   // contexts it can. A turned display is rendered upright, as the canvas is, and turned while its
-  // tiles are packed (depth_out.hpp).
+  // tiles are packed (depth_out.hpp). A passive stereo wall's twins share a rectangle, not a
+  // window: each eye's tiles are drawn with its own camera.
   windows_.clear();
   for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
     const Display& d = wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
@@ -88,16 +91,18 @@ void Pipeserver::make_windows(const Wall& wall) {
     if (at == contexts_.end())
       contexts_.push_back(
           std::make_unique<GlContext>(d.canvas_width(), d.canvas_height(), renderer_));
-    auto w = std::find_if(windows_.begin(), windows_.end(),
-                          [&](const Window& x) { return x.on_canvas == d.on_canvas(); });
+    auto w = std::find_if(windows_.begin(), windows_.end(), [&](const Window& x) {
+      return x.on_canvas == d.on_canvas() && x.eye == d.eye;
+    });
     if (w == windows_.end()) {
-      windows_.push_back({d.on_canvas(), context, {}});
+      windows_.push_back({d.on_canvas(), d.eye, context, {}});
       w = windows_.end() - 1;
     }
     w->tiles.push_back(i);
   }
-  std::stable_sort(windows_.begin(), windows_.end(),
-                   [](const Window& a, const Window& b) { return a.context < b.context; });
+  std::stable_sort(windows_.begin(), windows_.end(), [](const Window& a, const Window& b) {
+    return std::pair(a.context, a.eye) < std::pair(b.context, b.eye);
+  });
 }
 
 RgbImage& Pipeserver::render_frame(int frame, Scene& scene,
@@ -144,14 +149,16 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
   const std::uint32_t far_as = plan_.layer == 0 ? kFarDepth - 1 : kFarDepth;
   std::unique_ptr<TileRenderer> renderer;
   std::size_t context = contexts_.size();
+  Eye eye = Eye::None;
   std::vector<Rect> regions;
   for (const Window& w : windows_) {
     auto t0 = Clock::now();
-    if (w.context != context) {
+    if (w.context != context || w.eye != eye) {
+      if (w.context != context) contexts_[w.context]->make_current();
       context = w.context;
-      contexts_[context]->make_current();
-      renderer =
-          std::make_unique<TileRenderer>(scene, canvas_, GeometryShare{plan_.layer, plan_.layers});
+      eye = w.eye;
+      renderer = std::make_unique<TileRenderer>(
+          scene, canvas_, GeometryShare{plan_.layer, plan_.layers}, StereoEye{eye, stereo_});
     }
     for (int i : w.tiles) {
       const DisplayTile& t = plan_.tiles[static_cast<std::size_t>(i)].tile;
@@ -187,10 +194,11 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
   }
 }
 
-RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame) {
+RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame,
+                            const StereoEye& eye) {
   GlContext context(rect.w, rect.h);
   scene.set_frame(frame);
-  TileRenderer renderer(scene, canvas);
+  TileRenderer renderer(scene, canvas, {}, eye);
   renderer.draw_tile(rect, rect);
   context.finish();
   RgbImage image(rect.w, rect.h);
@@ -205,7 +213,8 @@ RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, i
         fmt::format("display {} does not exist: the wall has {}", display, displays.size()));
   }
   const Display& d = displays[static_cast<std::size_t>(display)];
-  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, frame),
+  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, frame,
+                                     {d.eye, layout.wall.stereo}),
                   d.orientation);
 }
 

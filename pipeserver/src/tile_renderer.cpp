@@ -85,15 +85,17 @@ std::size_t primitives(const Batch& b) {
 
 }  // namespace
 
-TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share)
-    : TileRenderer(scene, canvas, share, true) {}
+TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share,
+                           const StereoEye& eye)
+    : TileRenderer(scene, canvas, share, eye, true) {}
 
 TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share,
-                           bool clear)
+                           const StereoEye& eye, bool clear)
     : scene_(scene),
       canvas_(canvas),
-      camera_(
-          frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera(), scene.seen_whole())),
+      camera_(eye_camera(
+          frame_sphere(canvas, scene.centre(), scene.radius(), scene.camera(), scene.seen_whole()),
+          eye, scene.centre())),
       drawn_(scene.batches().size(), false) {
   if (clear) clear_framebuffer();
   const glm::mat4 clip_from_model = camera_.projection * camera_.view * scene.model();
@@ -101,7 +103,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometrySha
   for (const auto& b : scene.batches()) {
     footprints_.push_back(canvas_footprint(canvas, clip_from_model, b.bounds));
   }
-  make_windows(share);
+  make_windows(share, eye);
 
   std::size_t total = 0;
   for (const auto& b : scene.batches()) total += primitives(b);
@@ -119,7 +121,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Canvas& canvas, GeometrySha
   }
 }
 
-void TileRenderer::make_windows(GeometryShare share) {
+void TileRenderer::make_windows(GeometryShare share, const StereoEye& eye) {
   // A window's scene is drawn apart from the others: its batches split by layer would leave
   // the composite of one layer's window over another's picture meaningless.
   const std::vector<SceneWindow> windows = scene_.windows();
@@ -128,7 +130,7 @@ void TileRenderer::make_windows(GeometryShare share) {
   for (const SceneWindow& w : windows) {
     const Canvas own{w.on_canvas.w, w.on_canvas.h};
     windows_.push_back({w.on_canvas, std::unique_ptr<TileRenderer>(
-                                         new TileRenderer(*w.scene, own, share, false))});
+                                         new TileRenderer(*w.scene, own, share, eye, false))});
   }
 }
 

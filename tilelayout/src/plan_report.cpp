@@ -175,9 +175,11 @@ void displays(const TileLayout& layout, std::string& out) {
       ++count;
     }
     out += fmt::format(
-        "display {}: {}x{}{} at canvas {},{}, swap group {}: {:.1f}% covered ({} of {} pixels) "
+        "display {}: {}x{}{} at canvas {},{}, swap group {}{}: {:.1f}% covered ({} of {} pixels) "
         "by {} tiles from pipeservers {}{}{}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
+        d.eye == Eye::None ? std::string()
+                           : fmt::format(", {} eye", kEyeNames[static_cast<int>(d.eye)]),
         100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
         from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), warp(d),
         blend(layout.wall, d), colour(d));

@@ -147,7 +147,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     const TomlFields f(
         *node.as_table(), name, top.source(),
         {"id", "mesh", "width", "height", "x", "y", "swap_group", "monitor", "rotation", "flip",
-         "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma"});
+         "gain", "offset", "lut", "warp", "alpha", "beta", "alpha_gamma", "eye"});
     Display d;
     d.id = f.integer("id", 0, kMaxWallDisplays - 1, static_cast<int>(i));
     d.mesh = f.integer("mesh", 0, kMaxMeshes - 1, -1);
@@ -161,6 +161,7 @@ void read_list(const TomlFields& top, const toml::array& list, Wall& wall) {
     d.colour = read_colour(f);
     read_warp(f, d);
     read_levels(f, d);
+    d.eye = static_cast<Eye>(f.choice("eye", {"left", "right"}, -1) + 1);
     for (std::size_t j = 0; j < wall.displays.size(); ++j) {
       if (wall.displays[j].id == d.id) {
         f.fail("id", fmt::format("{} is already the id of display[{}]", d.id, j));

@@ -14,12 +14,14 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   const toml::table doc = parse_toml(toml_text, source);
   const TomlFields top(doc, "", source,
                        {"name", "canvas", "display_grid", "display", "displays", "tiling",
-                        "pipeservers", "mesh", "depth", "overlay", "balance", "blend"});
+                        "pipeservers", "mesh", "depth", "overlay", "balance", "blend", "stereo"});
   Wall wall;
   wall.source = path_for_messages;
   wall.name = top.string("name").value_or(path_for_messages.stem().string());
+  read_stereo(top, wall);
   read_displays(top, wall);
   read_display_clocks(top, wall);
+  read_stereo_displays(top, wall);
   read_canvas(top, wall);
   read_tiling(top, wall);
   read_pipeservers_and_mesh(top, wall);
@@ -27,6 +29,7 @@ Wall parse_wall(std::string_view toml_text, const std::filesystem::path& path_fo
   read_balance(top, wall);
   read_blend(top, wall);
   read_meshes(top, wall);
+  check_stereo(top, wall);
   return wall;
 }
 

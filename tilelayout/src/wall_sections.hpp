@@ -6,6 +6,13 @@
 
 namespace l2 {
 
+// `stereo` (optional, top level or a [stereo] section): read first, since it says what the
+// displays' `eye` may be.
+void read_stereo(const TomlFields& top, Wall& wall);
+// The displays' eyes (`eye`; a passive grid twinned for the right eye): needs the displays.
+void read_stereo_displays(const TomlFields& top, Wall& wall);
+// What a stereo wall cannot do yet, refused in one line: needs everything else read.
+void check_stereo(const TomlFields& top, const Wall& wall);
 // [display_grid] or [[display]]: fills wall.displays.
 void read_displays(const TomlFields& top, Wall& wall);
 // `gain`, `offset` and `lut` of one display (a [[display]] entry, one of a grid's `colour`).

@@ -152,7 +152,8 @@ TEST_F(Cli, ControlCharactersFromTheWallFileArePrintedAsEscapes) {
   EXPECT_EQ(r.err,
             "tilelayout: " + keyed.string() +
                 ":1: \\x1b[31mred: unknown key (valid here: name, canvas, display_grid, "
-                "display, displays, tiling, pipeservers, mesh, depth, overlay, balance, blend)\n");
+                "display, displays, tiling, pipeservers, mesh, depth, overlay, balance, blend, "
+                "stereo)\n");
 }
 
 TEST_F(Cli, BrokenWallsGiveOneLineAndExitOne) {

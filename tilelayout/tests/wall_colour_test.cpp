@@ -168,7 +168,7 @@ TEST_F(WallColour, BadValuesAreOneLineNamingFileLineAndField) {
   EXPECT_EQ(error_of(with("colour = [{}]")),
             f + ":11: display[1].colour: unknown key (valid here: id, mesh, width, height, x, "
                 "y, swap_group, monitor, rotation, flip, gain, offset, lut, warp, alpha, beta, "
-                "alpha_gamma)");
+                "alpha_gamma, eye)");
 }
 
 TEST_F(WallColour, ABadTableNamesItsOwnFileAndLine) {

@@ -164,7 +164,7 @@ TEST(WallFile, NestingInStringsAndCommentsDoesNotCount) {
             "framebuffer_height, assignment)");
   EXPECT_EQ(error_of(text + "[a" + repeated(".a", 14) + "]\nb = 1\n"),
             "walls/t.toml:16: a: unknown key (valid here: name, canvas, display_grid, display, "
-            "displays, tiling, pipeservers, mesh, depth, overlay, balance, blend)");
+            "displays, tiling, pipeservers, mesh, depth, overlay, balance, blend, stereo)");
   EXPECT_EQ(error_of(text + "x = '[[[[[[[[[[[[[[[[[[[[' # ]\n"),
             "walls/t.toml:16: pipeservers.x: unknown key (valid here: count, framebuffer_width, "
             "framebuffer_height, assignment)");
@@ -187,7 +187,7 @@ TEST(WallFile, UnknownKeysAreErrors) {
             "here: kind, tile_width, tile_height, tiles, tile_count, cost, strips, substrips)");
   EXPECT_EQ(error_of("colour = 1\n" + kBase),
             "walls/t.toml:1: colour: unknown key (valid here: name, canvas, display_grid, display, "
-            "displays, tiling, pipeservers, mesh, depth, overlay, balance, blend)");
+            "displays, tiling, pipeservers, mesh, depth, overlay, balance, blend, stereo)");
   EXPECT_EQ(error_of(replace(kBase, "count = 2\n", "count = 2\nfb_width = 3\n")),
             "walls/t.toml:14: pipeservers.fb_width: unknown key (valid here: count, "
             "framebuffer_width, framebuffer_height, assignment)");

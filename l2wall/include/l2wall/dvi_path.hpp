@@ -118,6 +118,7 @@ class DviPath final : public DisplayPath {
   FrameSequencer sequencer_;
   SwapLockCheck lock_check_;
   std::optional<FrameLockRecord> frame_lock_;  // a wall with [displays]
+  int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "tilelayout/geometry.hpp"
+#include "tilelayout/wall.hpp"
 
 namespace l2 {
 
@@ -42,6 +43,20 @@ struct CameraOptions {
 // arguments.
 Camera frame_sphere(const Canvas& canvas, glm::vec3 centre, float radius,
                     const CameraOptions& options = {}, bool whole = false);
+
+// The eye a tile is rendered for, and the wall's stereo camera (tilelayout/wall.hpp's
+// StereoSpec); Eye::None: the mono camera.
+struct StereoEye {
+  Eye eye = Eye::None;
+  StereoSpec stereo;
+};
+
+// One eye's camera: the mono camera's eye moved half the eye separation to its side, looking the
+// same way, with its frustum shifted (off-axis, never turned in) so that the plane `convergence`
+// in front of the eyes (default: through `centre`) lands where the mono camera draws it. A point
+// at distance d then lies e·(1/convergence − 1/d)·P00 apart in NDC x between the eyes (right
+// less left; P00 the projection's x scale). Eye::None gives `mono` itself, bit for bit.
+Camera eye_camera(const Camera& mono, const StereoEye& eye, glm::vec3 centre);
 
 // The orbit of frame `frame` as a model transform: a turn of degrees_per_frame x frame about the
 // vertical axis through `centre`. The scenes' light is fixed to the eye, so turning the scene

@@ -88,6 +88,7 @@ class Pipeserver {
   // The tiles of one display, rendered in a window of the display's size.
   struct Window {
     Rect on_canvas;           // the display
+    Eye eye = Eye::None;      // the display's, on a passive stereo wall
     std::size_t context = 0;  // into contexts_
     std::vector<int> tiles;   // into plan_.tiles
   };
@@ -96,6 +97,7 @@ class Pipeserver {
 
   PipeserverPlan plan_;
   Canvas canvas_;
+  StereoSpec stereo_;
   Renderer renderer_;
   std::vector<std::unique_ptr<GlContext>> contexts_;  // one per display size
   std::vector<Window> windows_;                       // by context, then display
@@ -108,12 +110,13 @@ class Pipeserver {
 };
 
 // What display `display` should show for `frame`: the display's canvas rectangle rendered
-// whole, at display resolution, with the same camera (its own GL context), turned into the
-// panel's raster as it hangs (image/orientation.hpp).
+// whole, at display resolution, with the same camera (its eye's on a stereo wall; its own GL
+// context), turned into the panel's raster as it hangs (image/orientation.hpp).
 RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame);
 
 // Any canvas rectangle rendered alone into an image of its size (its own GL context): the
 // reference render's engine, and the whole-canvas render the tile tests crop.
-RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame);
+RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame,
+                            const StereoEye& eye = {});
 
 }  // namespace l2

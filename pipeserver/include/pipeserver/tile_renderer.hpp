@@ -32,8 +32,10 @@ class TileRenderer {
   // Prepares one frame: a clear of the whole framebuffer to black (colour and depth), every
   // batch's canvas footprint, and a renderer for each window of a session (Scene::windows, each
   // on a canvas of the window's size). The scene must already be at the frame to draw. Throws
-  // std::invalid_argument for a session shared by depth layers.
-  TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share = {});
+  // std::invalid_argument for a session shared by depth layers. A stereo wall's tiles of one
+  // eye are drawn by a renderer of that eye (camera.hpp's eye_camera).
+  TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share = {},
+               const StereoEye& eye = {});
 
   // Draws canvas rectangle `on_canvas` as the window showing canvas rectangle `window` — the
   // current framebuffer, window.w x window.h, its row 0 the window's bottom row — draws it:
@@ -55,8 +57,9 @@ class TileRenderer {
     std::unique_ptr<TileRenderer> renderer;
   };
   // `clear`: the whole framebuffer, once a frame (not again for each window).
-  TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share, bool clear);
-  void make_windows(GeometryShare share);
+  TileRenderer(const Scene& scene, const Canvas& canvas, GeometryShare share, const StereoEye& eye,
+               bool clear);
+  void make_windows(GeometryShare share, const StereoEye& eye);
   void draw_windows(const Rect& on_canvas, const Rect& window);
   // Draws primitives [first, first + count) of `batch`, with its texture when it has one.
   void draw_batch(const Batch& batch, std::size_t first, std::size_t count) const;

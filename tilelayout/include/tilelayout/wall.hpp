@@ -21,6 +21,11 @@
 
 namespace l2 {
 
+// Which eye a display shows on a passive stereo wall (`eye` of a display): none on every other
+// wall. Named as in the wall file.
+enum class Eye { None, Left, Right };
+inline constexpr std::string_view kEyeNames[] = {"none", "left", "right"};
+
 // A display (panel or projector): its native raster, which strip headers address, and the canvas
 // rectangle it shows as it hangs. A panel turned by 90 or 270 covers its native size turned.
 struct Display {
@@ -43,7 +48,8 @@ struct Display {
   std::string alpha, beta;
   double alpha_gamma = 1.0;
   std::shared_ptr<const LevelMap> level_map;
-  int mesh = 0;  // the mesh that drives it (several_meshes.hpp)
+  int mesh = 0;         // the mesh that drives it (several_meshes.hpp)
+  Eye eye = Eye::None;  // passive stereo: the eye whose camera renders its tiles
   // How far its own refresh clock runs from the nominal rate, in parts per million ([displays]
   // clock_ppm): a free-running display refreshes every period / (1 + clock_ppm·1e-6).
   int clock_ppm = 0;
@@ -161,6 +167,26 @@ struct FrameLockSpec {
   int line = 0;
 };
 
+// `stereo` (docs/wall-file.md, "Stereo walls"): how a wall shows two eyes. Passive: each eye has
+// its own displays (Display::eye), every display of one eye twinned with one of the other that
+// covers the same canvas rectangle. The others are read and refused until they are done.
+enum class StereoMode { Mono, Passive, Active, SideBySide, TopBottom };
+inline constexpr std::string_view kStereoModeNames[] = {"mono", "passive", "active", "side-by-side",
+                                                        "top-bottom"};
+
+// The eyes' camera, in scene units (the scene fits a sphere of radius 1 about the origin): the
+// eyes stand `eye_separation` apart, left and right of the mono camera, and look parallel; the
+// plane `convergence` in front of them shows both eyes the same picture (off-axis frusta).
+struct StereoSpec {
+  StereoMode mode = StereoMode::Mono;
+  double eye_separation = 0.1;
+  double convergence = 0;  // 0: the distance from the camera to the scene's centre
+  int line = 0;            // of `stereo` in the wall file, for errors found later
+  bool on() const { return mode != StereoMode::Mono; }
+};
+inline constexpr double kMaxEyeSeparation = 2.0;  // the scene's diameter
+inline constexpr double kMaxConvergence = 1000.0;
+
 struct Wall {
   std::filesystem::path source;  // the wall file, for error messages; empty when built in code
   std::string name;
@@ -185,8 +211,24 @@ struct Wall {
   BalanceSpec balance;
   BlendSpec blend;
   FrameLockSpec frame_lock;
+  StereoSpec stereo;
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
   int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };
+
+// A passive stereo wall's twins (the wall file's checks make them one to one): each left-eye
+// display with the right-eye display on its canvas rectangle, by left id. Empty for any other.
+struct EyePair {
+  int left = 0, right = 0;
+};
+inline std::vector<EyePair> eye_pairs(const Wall& wall) {
+  std::vector<EyePair> pairs;
+  for (const Display& l : wall.displays) {
+    if (l.eye != Eye::Left) continue;
+    for (const Display& r : wall.displays)
+      if (r.eye == Eye::Right && r.on_canvas() == l.on_canvas()) pairs.push_back({l.id, r.id});
+  }
+  return pairs;
+}
 
 }  // namespace l2

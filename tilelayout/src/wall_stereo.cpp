@@ -1,0 +1,151 @@
+// `stereo` (docs/wall-file.md, "Stereo walls"): written at the top level as `stereo = "passive"`
+// or as a [stereo] section with `mode`, `eye_separation` and `convergence` (TOML reads an inline
+// table and the section alike); and each display's `eye`. A passive wall's displays come in
+// twins, one per eye, covering the same canvas rectangle and swapping together, so each eye's
+// displays show the whole picture and both eyes of a frame are shown in the same refresh.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "wall_sections.hpp"
+
+namespace l2 {
+namespace {
+
+const std::vector<std::string_view> kModes{std::begin(kStereoModeNames) + 1,
+                                           std::end(kStereoModeNames)};
+
+std::string quoted_modes() {
+  std::string text;
+  for (std::size_t i = 0; i < kModes.size(); ++i)
+    text += fmt::format("{}\"{}\"",
+                        i == 0                   ? ""
+                        : i + 1 == kModes.size() ? " or "
+                                                 : ", ",
+                        kModes[i]);
+  return text;
+}
+
+// `key` of `f`: `stereo` at the top level, `mode` of the section.
+StereoMode mode_named(const TomlFields& f, std::string_view key, const std::string& name) {
+  const auto it = std::find(kModes.begin(), kModes.end(), name);
+  if (it == kModes.end()) f.fail(key, fmt::format("must be {}, got \"{}\"", quoted_modes(), name));
+  return static_cast<StereoMode>(it - kModes.begin() + 1);
+}
+
+// The line of the [[display]] entry (or the grid) that gave display `id`, for errors.
+int display_line(const TomlFields& top, int id) {
+  if (const toml::table* grid = top.table("display_grid")) return line_of(*grid);
+  const toml::array& list = *top.node("display")->as_array();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const toml::table& t = *list.get(i)->as_table();
+    if (t["id"].value<long long>().value_or(static_cast<long long>(i)) == id)
+      return line_of(*list.get(i));
+  }
+  return 0;
+}
+
+std::string named(const Display& d) {
+  const Rect r = d.on_canvas();
+  return fmt::format("display {} (eye = \"{}\", {}x{} at {},{})", d.id,
+                     kEyeNames[static_cast<int>(d.eye)], r.w, r.h, r.x, r.y);
+}
+
+// A passive grid is written once: its displays are the left eye's, and the same displays again,
+// numbered on from them, are the right eye's (without monitor names: those name one monitor).
+void twin_grid(Wall& wall) {
+  const std::size_t n = wall.displays.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    Display right = wall.displays[i];
+    wall.displays[i].eye = Eye::Left;
+    right.eye = Eye::Right;
+    right.id = static_cast<int>(n + i);
+    right.monitor.clear();
+    wall.displays.push_back(right);
+  }
+}
+
+// Every display of a passive wall has exactly one twin of the other eye on its canvas
+// rectangle, in its swap group; no display of another wall has an eye.
+void check_eyes(const TomlFields& top, const Wall& wall) {
+  const auto fail = [&](const Display& d, const std::string& why) {
+    top.source().fail(display_line(top, d.id), fmt::format("display {}", d.id), why);
+  };
+  const bool passive = wall.stereo.mode == StereoMode::Passive;
+  for (const Display& d : wall.displays) {
+    if (!passive && d.eye != Eye::None) fail(d, "eye is only for a wall with stereo = \"passive\"");
+    if (passive && d.eye == Eye::None)
+      fail(d, "eye missing: every display of a passive stereo wall shows \"left\" or \"right\"");
+    if (!passive) continue;
+    int same = 0, other = 0;
+    const Display* twin = nullptr;
+    for (const Display& e : wall.displays) {
+      if (e.on_canvas() != d.on_canvas()) continue;
+      if (e.eye == d.eye) ++same;
+      if (e.eye != d.eye) ++other, twin = &e;
+    }
+    if (same > 1)
+      fail(d,
+           fmt::format("{}: another display of the same eye covers the same rectangle", named(d)));
+    if (other != 1 || !twin)
+      fail(d, fmt::format("{}: no display of the other eye covers the same canvas rectangle "
+                          "(each eye's display needs a twin of the other eye at the same x, y "
+                          "and size)",
+                          named(d)));
+    if (twin->swap_group != d.swap_group)
+      fail(d, fmt::format("swap_group {}, but its twin display {} has {}: both eyes of a frame "
+                          "swap together",
+                          d.swap_group, twin->id, twin->swap_group));
+  }
+}
+
+}  // namespace
+
+void read_stereo(const TomlFields& top, Wall& wall) {
+  if (!top.has("stereo")) return;
+  const toml::node& n = *top.node("stereo");
+  StereoSpec& s = wall.stereo;
+  s.line = line_of(n);
+  if (const auto text = n.value<std::string>()) {
+    s.mode = mode_named(top, "stereo", *text);
+  } else if (const toml::table* table = n.as_table()) {
+    const TomlFields f(*table, "stereo", top.source(), {"mode", "eye_separation", "convergence"});
+    const auto mode = f.string("mode");
+    if (!mode) f.fail("mode", fmt::format("missing (required): {}", quoted_modes()));
+    s.mode = mode_named(f, "mode", *mode);
+    s.line = f.line_of("mode");
+    s.eye_separation = f.fraction("eye_separation", 0, kMaxEyeSeparation, s.eye_separation);
+    s.convergence = f.fraction("convergence", 0, kMaxConvergence, s.convergence);
+  } else {
+    top.fail("stereo",
+             fmt::format("must be {} or a [stereo] section, got {}", quoted_modes(), type_name(n)));
+  }
+  // Before the displays are read: a wall written for a mode to come is told so, not that its
+  // displays' eyes are wrong.
+  if (s.mode != StereoMode::Passive) {
+    top.source().fail(s.line, "stereo",
+                      fmt::format("stereo walls do not support \"{}\" (only \"passive\") yet",
+                                  kStereoModeNames[static_cast<int>(s.mode)]));
+  }
+}
+
+void read_stereo_displays(const TomlFields& top, Wall& wall) {
+  if (wall.stereo.mode == StereoMode::Passive && top.table("display_grid")) twin_grid(wall);
+  check_eyes(top, wall);
+}
+
+void check_stereo(const TomlFields& top, const Wall& wall) {
+  if (!wall.stereo.on()) return;
+  const auto refuse = [&](int line, std::string_view field, std::string_view what) {
+    top.source().fail(line, field, fmt::format("stereo walls do not support {} yet", what));
+  };
+  if (wall.mesh_count > 1) refuse(wall.meshes_line, "display", "several meshes");
+  if (wall.depth_layers != 0) refuse(wall.depth_line, "depth", "depth compositing");
+  if (wall.overlay) refuse(wall.overlay->line, "overlay", "an overlay");
+  if (wall.balance.balancing() || wall.balance.survive_host_loss)
+    refuse(wall.balance.line, "balance", "balancing");
+  // Twins overlap wholly: blending them would halve each eye's light.
+  if (wall.blend.on) refuse(wall.blend.line, "blend", "blending");
+}
+
+}  // namespace l2
