@@ -9,13 +9,17 @@ set -euo pipefail
 l2wall=$1 out=$2 np=$3 source_dir=$4
 source "$(dirname "$0")/mpirun_local.sh"  # mpirun_local: mpirun on loopback only; mpirun_wait
 rm -rf "$out" && mkdir -p "$out"
+# Enough frames for the share to be taken and shown many times over, then the run ends by
+# itself: Ctrl-C on mpirun (SIGTERM to every rank, then SIGKILL) can cut the coordinator off
+# before its summary is written.
+frames=400
 run=""
 trap '{ [[ -z $run ]] || kill $run; } 2>/dev/null || true; mpirun_base_remove' EXIT
 oiiotool --pattern checker:width=32:height=32:color1=1,0,0:color2=0,0,1 640x360 3 \
   -o "$out/checker.jpg"
 
 "${mpirun_local[@]}" -np "$np" "$l2wall" run --mpi --scene session \
-  --session "$source_dir/examples/sessions/share.toml" --frames 100000 --keep none \
+  --session "$source_dir/examples/sessions/share.toml" --frames $frames --keep none \
   --out "$out/mpi" --no-progress --http 127.0.0.1:0 >"$out/mpi.txt" 2>"$out/mpi.err" &
 run=$!
 url=""
@@ -46,8 +50,7 @@ done
 ask "$base/api/save?token=$token" >"$out/save.json"
 frame=$(grep -o 'frame-[0-9]*' "$out/save.json") ||
   { echo "FAIL: save:"; cat "$out/save.json"; exit 1; }
-kill -INT $run  # under --mpi the page cannot stop the run: Ctrl-C on mpirun does
-mpirun_wait $run || true
+mpirun_wait $run || { echo "FAIL: the MPI run failed:"; cat "$out/mpi.err"; exit 1; }
 run=""
 
 # Display 0 (canvas 0,0 640x480) holds the window's top-left (canvas 330,310): its first square
