@@ -21,6 +21,7 @@ l2wall=$1 out=$2 cluster=$3
 rm -rf "$out" && mkdir -p "$out"
 command -v nft >/dev/null || { echo "no nft (apt-get install nftables): skipped"; exit 77; }
 source "$(dirname "$0")/rank_pid.sh"
+source "$(dirname "$0")/cluster_left.sh"  # nothing_left
 
 # refused CODE LINE ARGS...: cluster.sh ARGS exits CODE with LINE on stderr, making nothing.
 refused() {
@@ -68,20 +69,6 @@ dropped=$(sed -n 's/^cluster: --loss 1: the hosts.* links dropped \([0-9]*\) of 
 echo "1 % loss on every link: $(grep '^cluster: --loss' "$out/lossy.txt")"
 same_displays "$out/one" "$out/lossy" $((frames - 1))
 
-# nothing_left DIR PIDS: no rank had to be killed by cluster.sh, no process of the run, no shared
-# memory of PIDS.
-nothing_left() {
-  local dir=$1 pids=$2 p
-  if grep -q "^cluster: left running" "$dir.err"; then
-    echo "FAIL: processes left on a host:"
-    grep "^cluster: left running" "$dir.err"
-    exit 1
-  fi
-  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
-  for p in $pids; do
-    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
-  done
-}
 
 # under_way DIR FRAMES: until the pipeservers' reports hold FRAMES frames in all.
 under_way() {

@@ -21,6 +21,7 @@ l2wall=$1 out=$2 cluster=$3 two_columns=$4 two_meshes=$5
 frames=8
 rm -rf "$out" && mkdir -p "$out"
 source "$(dirname "$0")/rank_pid.sh"
+source "$(dirname "$0")/cluster_left.sh"  # nothing_left
 
 # same_displays ONE MPI: every display picture of the last frame of ONE is in MPI, byte for byte.
 same_displays() {
@@ -93,20 +94,6 @@ start_run() {
   done
 }
 
-# nothing_left DIR PIDS: no rank had to be killed by cluster.sh, no process of the run, no shared
-# memory of PIDS.
-nothing_left() {
-  local dir=$1 pids=$2 p
-  if grep -q "^cluster: left running" "$dir.err"; then
-    echo "FAIL: processes left on a host:"
-    grep "^cluster: left running" "$dir.err"
-    exit 1
-  fi
-  if pgrep -af -- "$dir"; then echo "FAIL: processes of the run left"; exit 1; fi
-  for p in $pids; do
-    if compgen -G "/dev/shm/l2-$p-*" >/dev/null; then echo "FAIL: /dev/shm/l2-$p-* left"; exit 1; fi
-  done
-}
 
 fault() {
   local signal=$1 dir=$out/$1 run pid pids status=0 line
