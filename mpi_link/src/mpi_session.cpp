@@ -326,10 +326,11 @@ void MpiSession::end_stopped(int code) {
     pulse_.request_stop();
     pulse_.join();
   }
-  for (const Fd& fd : liveness_)
-    if (fd) send_liveness(fd.get(), kLivenessStopped);
+  // Out before the word: the ranks end on it, and mpirun then sends this process SIGKILL.
   std::fflush(stdout);
   std::fflush(stderr);
+  for (const Fd& fd : liveness_)
+    if (fd) send_liveness(fd.get(), kLivenessStopped);
   std::_Exit(code);
 }
 

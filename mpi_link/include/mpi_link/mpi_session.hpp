@@ -87,7 +87,8 @@ class MpiSession {
   // Rank 0, once a stop signal (Ctrl-C on mpirun: SIGTERM to every rank at once) ended the run
   // and its report is written: tells every other rank, which waited for this word
   // (deferred_stop.hpp) and now ends with status 0, and ends this process with `code` at once:
-  // MPI_Finalize would wait for ranks that end without it, and mpirun is ending the job.
+  // MPI_Finalize would wait for ranks that end without it, and mpirun is ending the job. (This
+  // process's status may still be SIGKILL's: mpirun kills the rest once a rank has ended.)
   [[noreturn]] void end_stopped(int code);
 
  private:
