@@ -22,11 +22,11 @@
 #include "image/picture_regions.hpp"
 #include "image/tiled_copy.hpp"
 #include "l2wall/live_run.hpp"
+#include "l2wall/stop_signal.hpp"
 #include "pipeserver/model_file.hpp"
 #include "pipeserver/renderer_choice.hpp"
 #include "pipeserver/scene_cli.hpp"
 #include "report_plot.hpp"
-#include "stop_signal.hpp"
 #include "tilelayout/wall.hpp"
 
 #ifdef L2_HAVE_MPI

@@ -1,4 +1,4 @@
-#include "stop_signal.hpp"
+#include "l2wall/stop_signal.hpp"
 
 #include <fmt/format.h>
 #include <signal.h>

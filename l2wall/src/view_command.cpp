@@ -19,9 +19,9 @@
 #include "control_page/control_server.hpp"
 #include "image/png_io.hpp"
 #include "image/turn.hpp"
+#include "l2wall/stop_signal.hpp"
 #include "live_page.hpp"
 #include "pipeserver_log.hpp"
-#include "stop_signal.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
 

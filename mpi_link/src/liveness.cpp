@@ -11,6 +11,7 @@ namespace l2 {
 Heard heard(std::string_view bytes, bool closed) {
   if (bytes.find(kLivenessEnded) != std::string_view::npos) return Heard::ended;
   if (bytes.find(kLivenessAborting) != std::string_view::npos) return Heard::aborting;
+  if (bytes.find(kLivenessStopped) != std::string_view::npos) return Heard::stopped;
   if (closed) return Heard::closed;
   return bytes.empty() ? Heard::nothing : Heard::pulse;
 }

@@ -25,6 +25,7 @@
 #include "base/fd.hpp"
 #include "base/result.hpp"
 #include "base/socket.hpp"
+#include "deferred_stop.hpp"
 #include "mpi_link/busy_polling.hpp"
 #include "mpi_link/coordinator_address.hpp"
 #include "mpi_link/liveness.hpp"
@@ -85,6 +86,7 @@ class Deadline {
 MpiSession::MpiSession(std::chrono::milliseconds start_timeout,
                        std::chrono::milliseconds liveness_timeout)
     : liveness_timeout_(liveness_timeout) {
+  if (const auto launched = launched_rank(); launched && launched->rank != 0) defer_stop_signals();
   Deadline start(start_timeout, [start_timeout] {
     const auto launched = launched_rank();
     if (launched && launched->rank == 0)
@@ -120,6 +122,9 @@ MpiSession::MpiSession(std::chrono::milliseconds start_timeout,
 }
 
 MpiSession::~MpiSession() {
+  // The run is being stopped (deferred_stop.hpp): this rank's part is done, and the
+  // coordinator's word ends it (follow_coordinator).
+  if (rank_is_stopping()) await_coordinator_word();
   say_ended();
   live_session = nullptr;
   // MPI_Finalize waits for every rank, and now and then for ever for one lost under an mpirun
@@ -315,7 +320,24 @@ void MpiSession::end_job_after_loss() {
                  parent.c_str());
 }
 
+void MpiSession::end_stopped(int code) {
+  stop_watching();  // the ranks now end: no loss of theirs is a fault
+  if (pulse_.joinable()) {
+    pulse_.request_stop();
+    pulse_.join();
+  }
+  // Out before the word: the ranks end on it, and mpirun then sends this process SIGKILL.
+  std::fflush(stdout);
+  std::fflush(stderr);
+  for (const Fd& fd : liveness_)
+    if (fd) send_liveness(fd.get(), kLivenessStopped);
+  std::_Exit(code);
+}
+
 void MpiSession::abort_all(int code) {
+  // A rank that fails while mpirun stops the run (a pipeserver whose READY stopped coming):
+  // the coordinator's word ends it (follow_coordinator), once the report is written.
+  if (rank_is_stopping()) await_coordinator_word();
   // Another rank's MPI_Abort ends only itself: the coordinator then finds it gone, names it and
   // ends the job. Its own line must reach mpirun first, which ending its daemon could prevent.
   if (const auto launched = launched_rank(); launched && launched->rank == 0) {
@@ -328,6 +350,16 @@ void MpiSession::abort_all(int code) {
   }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
+}
+
+bool MpiSession::rank_is_stopping() {
+  const auto launched = launched_rank();
+  return launched && launched->rank != 0 && deferred_stop_signal() != 0;
+}
+
+void MpiSession::await_coordinator_word() {
+  std::this_thread::sleep_for(kStopGrace);  // follow_coordinator ends this process meanwhile
+  end_by_deferred_signal();
 }
 
 std::optional<LaunchedRank> launched_rank() {

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
+#include "deferred_stop.hpp"
 #include "mpi_link/liveness.hpp"
 #include "mpi_link/mpi_session.hpp"
 
@@ -30,8 +32,11 @@ void MpiSession::follow_coordinator(std::stop_token stop) {
   const int fd = liveness_.front().get();
   Silence silence(liveness_timeout_, Silence::Clock::now());
   auto next_pulse = Silence::Clock::now();
+  std::optional<Silence::Clock::time_point> signalled;  // when a stop signal was seen
   while (!stop.stop_requested()) {
     const auto now = Silence::Clock::now();
+    if (deferred_stop_signal() && !signalled) signalled = now;
+    if (signalled && now - *signalled > kStopGrace) end_by_deferred_signal();  // never told
     if (now >= next_pulse) {
       send_liveness(fd, kLivenessPulse);
       next_pulse = now + kPulseEvery;
@@ -40,6 +45,7 @@ void MpiSession::follow_coordinator(std::stop_token stop) {
     const Heard h = poll(&p, 1, kWakeMs) > 0 ? read_liveness(fd) : Heard::nothing;
     if (h == Heard::ended) return;
     if (h == Heard::aborting) std::_Exit(1);  // the coordinator named the fault
+    if (h == Heard::stopped) std::_Exit(0);   // a stop signal's: the report is written
     if (h == Heard::closed) lose_coordinator("its connection closed (killed or crashed)");
     if (h == Heard::pulse) silence.heard(Silence::Clock::now());
     if (silence.too_long(Silence::Clock::now()))

@@ -16,6 +16,8 @@ TEST(Liveness, TheMostTellingWordWins) {
   EXPECT_EQ(heard("", true), Heard::closed);
   EXPECT_EQ(heard("ppe", true), Heard::ended);  // its word, then its close: a good end
   EXPECT_EQ(heard("pa", true), Heard::aborting);
+  EXPECT_EQ(heard("ps", true), Heard::stopped);  // its word, then its process ends
+  EXPECT_EQ(heard("ps", false), Heard::stopped);
   EXPECT_EQ(heard("pp", true), Heard::closed);  // pulses, then gone without a word
 }
 

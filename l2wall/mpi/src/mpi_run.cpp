@@ -13,6 +13,7 @@
 #include "l2wall/dvi_path.hpp"
 #include "l2wall/pipeserver_set.hpp"
 #include "l2wall/run_backends.hpp"
+#include "l2wall/stop_signal.hpp"
 #include "l2wall/viz_path.hpp"
 #include "mpi_columns.hpp"
 #include "mpi_compositors.hpp"
@@ -199,6 +200,9 @@ int run_wall_mpi(const RunOptions& o) {
   coordinator.show_readback.clear();
   const MpiBackends backends(*layout, *map, session, coordinator);
   const int code = run_wall(coordinator, backends);
+  // Ctrl-C on mpirun (SIGTERM to every rank): the report is written and the line printed; the
+  // other ranks wait for this word (deferred_stop.hpp) before mpirun's SIGKILL.
+  if (stop_signal_received()) session.end_stopped(code);
   if (code != 0) MpiSession::abort_all(code);  // ranks may still wait for us
   session.end_job_after_loss();
   return 0;

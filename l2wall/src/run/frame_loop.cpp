@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "l2wall/run_fault.hpp"
-#include "stop_signal.hpp"
+#include "l2wall/stop_signal.hpp"
 
 namespace l2 {
 

@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "l2wall/run_fault.hpp"
+#include "l2wall/stop_signal.hpp"
 #include "pipeserver/live_exit.hpp"
 #include "stall_verdict.hpp"
-#include "stop_signal.hpp"
 
 namespace l2 {
 namespace {

@@ -2,7 +2,8 @@
 // byte at a time, a pulse every kPulseEvery from each end while the rank lives, so that a rank
 // whose host's network is cut (its packets dropped, no connection closed) is found by the
 // silence; the word of a good end; the coordinator's word that it ends the run on a fault it
-// named (the other ranks then end without a line of their own).
+// named (the other ranks then end without a line of their own); its word that a stop signal
+// ended the run and its report is written (the other ranks then end at once, status 0).
 //
 // Owns: the bytes, the verdict on what came in, the clock of a peer's silence. The reading and
 // writing of sockets is liveness.cpp's two small functions; the threads are the session's.
@@ -17,13 +18,14 @@ namespace l2 {
 inline constexpr char kLivenessPulse = 'p';
 inline constexpr char kLivenessEnded = 'e';
 inline constexpr char kLivenessAborting = 'a';
+inline constexpr char kLivenessStopped = 's';
 // Often enough that a default timeout holds many pulses, rarely enough to cost nothing.
 inline constexpr std::chrono::milliseconds kPulseEvery{200};
 
 // What came in on a connection since it was last read, the most telling first: it ended well,
-// the coordinator ends the run on a fault, it closed without either (killed, crashed), it
-// pulsed, nothing came.
-enum class Heard { ended, aborting, closed, pulse, nothing };
+// the coordinator ends the run on a fault, the coordinator ended a run a stop signal cut short,
+// it closed without a word (killed, crashed), it pulsed, nothing came.
+enum class Heard { ended, aborting, stopped, closed, pulse, nothing };
 
 // `bytes` read at once from the connection; `closed`: the read found its end (or an error).
 Heard heard(std::string_view bytes, bool closed);

@@ -76,12 +76,20 @@ class MpiSession {
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
   // an mpirun that keeps the job, where MPI_Abort ends only its caller, the coordinator asks
   // mpirun to end the job too.
+  // A rank other than 0 that took a stop signal waits for the coordinator's word instead: the
+  // run is being stopped, and an abort would cut the coordinator off before its report.
   [[noreturn]] static void abort_all(int code);
   // Rank 0, after a run that went on without a lost rank under an mpirun that keeps the job:
   // Open MPI 4.1's mpirun, and the daemon of the lost rank's host, never count that rank as
   // ended and wait for ever once every other has. Every rank's part is done: asks mpirun to end
   // the job, saying so in one line.
   void end_job_after_loss();
+  // Rank 0, once a stop signal (Ctrl-C on mpirun: SIGTERM to every rank at once) ended the run
+  // and its report is written: tells every other rank, which waited for this word
+  // (deferred_stop.hpp) and now ends with status 0, and ends this process with `code` at once:
+  // MPI_Finalize would wait for ranks that end without it, and mpirun is ending the job. (This
+  // process's status may still be SIGKILL's: mpirun kills the rest once a rank has ended.)
+  [[noreturn]] void end_stopped(int code);
 
  private:
   // Every rank connects to the coordinator's listener (coordinator_address.hpp); a rank
@@ -99,10 +107,20 @@ class MpiSession {
   // keeps the job ends only its caller, and a cut-off host's ranks cannot be reached. A
   // coordinator that ends the run on a fault says so first: the rank then ends without a line
   // (its waits on the others would only add effects of the fault named).
+  // A rank that took a stop signal (deferred_stop.hpp) ends on the coordinator's word that the
+  // run's report is written, or as the signal would have once that word is overdue.
   void follow_coordinator(std::stop_token stop);
   [[noreturn]] void lose_coordinator(const std::string& how);
   // Stops watching and tells the other end(s) of the liveness connections of a good end.
   void say_ended();
+  // A rank other than 0 that took a stop signal (deferred_stop.hpp). It must not end before
+  // the coordinator's word: Open MPI 4.1's mpirun, ending the job, sends SIGKILL to every rank
+  // as soon as one has ended, however soon after its SIGTERM, and so cut the coordinator off
+  // before its report.
+  static bool rank_is_stopping();
+  // Waits for the coordinator's word (follow_coordinator ends this process on it), else ends by
+  // the signal once it is overdue.
+  [[noreturn]] static void await_coordinator_word();
   // Takes in a rank found gone, `cause` as loss_cause says it; true when its loss ends the run.
   bool note_lost(int rank, std::string cause);
   // Prints the line of a loss that ends the run, unless the run reported it.
