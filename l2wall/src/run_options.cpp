@@ -139,6 +139,9 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
         "--balance: balancing is for a wall of one mesh; this wall's {} displays need {} meshes",
         wall.displays.size(), wall.mesh_count)};
   }
+  // A stereo wall's eyes are twins tile for tile; a re-tiling would have to keep them alike.
+  // The wall file's [balance] is refused on one (wall_stereo.cpp); the option is too.
+  if (wall.stereo.on()) return Failure{"--balance: stereo walls do not support balancing yet"};
   const std::string survive = survive_asked_by(o, wall);
   // By default a rank that dies ends the whole mpirun job: there would be no run left to go on.
   if (spec.survive_host_loss && place == RunPlace::MpiEndingOnLoss)

@@ -16,6 +16,18 @@ Wall strips_wall() {
   return wall;
 }
 
+// A stereo wall refuses balancing asked on the command line as its wall file's [balance] is.
+TEST(BalanceOptions, AStereoWallRefusesBalancingFromTheCommandLine) {
+  Wall stereo = default_wall();
+  stereo.stereo.mode = StereoMode::Passive;
+  RunOptions o;
+  o.balance = "strips";
+  EXPECT_EQ(balance_refusal(o, stereo, RunPlace::OneMachine).reason(),
+            "--balance: stereo walls do not support balancing yet");
+  o.balance = "static";
+  EXPECT_TRUE(balance_refusal(o, stereo, RunPlace::OneMachine).ok());
+}
+
 TEST(BalanceOptions, TheOptionSetsTheModeOverTheWalls) {
   RunOptions o;
   EXPECT_EQ(run_balance(o, strips_wall()).mode, BalanceMode::Strips);
