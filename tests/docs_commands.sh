@@ -80,7 +80,9 @@ python3 "$helper" extract "$root" "${names[@]}" >commands.tsv || { echo "FAIL: e
 # it is past its command line: it (with its children, as an l2wall run's pipeservers) has
 # used $cpu_ticks ticks of CPU time (a usage error takes a tenth of that), or it has been
 # running $deadline s. Then it is stopped, the group with SIGTERM (l2wall ends a run on it as
-# on Ctrl-C), after 5 s SIGKILL. Sets status (its exit status) and stopped (why it was
+# on Ctrl-C), after 30 s SIGKILL: a run of a wall of many pipeservers takes several seconds
+# to end them and remove its shared memory, which SIGKILL would leave behind (a killed run's
+# segments are removed here, said in a line). Sets status (its exit status) and stopped (why it was
 # stopped, or empty).
 cpu_ticks=10
 mkfifo pause.fifo
@@ -115,11 +117,15 @@ run_until_accepted() {
   done
   if [[ -n $stopped ]]; then
     kill -TERM -- -"$pid" 2>/dev/null
-    for ((polls = 0; polls < 100; polls++)); do
+    for ((polls = 0; polls < 600; polls++)); do
       kill -0 "$pid" 2>/dev/null || break
       read -r -t 0.05 -u "$pause" _
     done
-    kill -KILL -- -"$pid" 2>/dev/null
+    if kill -KILL -- -"$pid" 2>/dev/null; then
+      local left=(/dev/shm/l2-"$pid"-*)
+      [[ -e ${left[0]} ]] && rm -f "${left[@]}" &&
+        echo "     (killed 30 s after SIGTERM: removed ${#left[@]} shared-memory segments it left)"
+    fi
   fi
   wait "$pid"
   status=$?
