@@ -86,7 +86,7 @@ class Deadline {
 MpiSession::MpiSession(std::chrono::milliseconds start_timeout,
                        std::chrono::milliseconds liveness_timeout)
     : liveness_timeout_(liveness_timeout) {
-  if (const auto launched = launched_rank(); launched && launched->rank != 0) defer_stop_signals();
+  if (const auto launched = launched_rank(); launched && launched->rank != 0) catch_stop_signals();
   Deadline start(start_timeout, [start_timeout] {
     const auto launched = launched_rank();
     if (launched && launched->rank == 0)
@@ -354,12 +354,12 @@ void MpiSession::abort_all(int code) {
 
 bool MpiSession::rank_is_stopping() {
   const auto launched = launched_rank();
-  return launched && launched->rank != 0 && deferred_stop_signal() != 0;
+  return launched && launched->rank != 0 && stop_signal_received() != 0;
 }
 
 void MpiSession::await_coordinator_word() {
   std::this_thread::sleep_for(kStopGrace);  // follow_coordinator ends this process meanwhile
-  end_by_deferred_signal();
+  end_by_stop_signal();
 }
 
 std::optional<LaunchedRank> launched_rank() {

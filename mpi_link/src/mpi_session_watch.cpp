@@ -35,8 +35,8 @@ void MpiSession::follow_coordinator(std::stop_token stop) {
   std::optional<Silence::Clock::time_point> signalled;  // when a stop signal was seen
   while (!stop.stop_requested()) {
     const auto now = Silence::Clock::now();
-    if (deferred_stop_signal() && !signalled) signalled = now;
-    if (signalled && now - *signalled > kStopGrace) end_by_deferred_signal();  // never told
+    if (stop_signal_received() && !signalled) signalled = now;
+    if (signalled && now - *signalled > kStopGrace) end_by_stop_signal();  // never told
     if (now >= next_pulse) {
       send_liveness(fd, kLivenessPulse);
       next_pulse = now + kPulseEvery;
@@ -55,6 +55,10 @@ void MpiSession::follow_coordinator(std::stop_token stop) {
 }
 
 void MpiSession::lose_coordinator(const std::string& how) {
+  // Signalled, this rank is being ended with the job (mpirun's SIGTERM to every rank, after a
+  // fault it or the coordinator named, or Ctrl-C): the coordinator's end is part of that, and
+  // a line of this rank's would name an effect as a second fault.
+  if (stop_signal_received()) end_by_stop_signal();
   std::fprintf(stderr,
                "l2wall: rank %d on %s: lost the coordinator (rank 0 on %s): %s; this rank ends\n",
                rank_, identities_[static_cast<std::size_t>(rank_)].host.c_str(),

@@ -7,12 +7,10 @@
 
 #include <string>
 
+#include "base/stop_signals.hpp"  // catch_stop_signals, stop_signal_received
+
 namespace l2 {
 
-// Installs the handlers for SIGINT and SIGTERM (they only record the signal).
-void catch_stop_signals();
-// The stop signal that arrived (SIGINT, SIGTERM), or 0.
-int stop_signal_received();
 // The exit status of a run a stop signal ended: 128 + the signal.
 inline int stopped_exit_status(int signal) {
   return 128 + signal;

@@ -108,7 +108,8 @@ class MpiSession {
   // coordinator that ends the run on a fault says so first: the rank then ends without a line
   // (its waits on the others would only add effects of the fault named).
   // A rank that took a stop signal (deferred_stop.hpp) ends on the coordinator's word that the
-  // run's report is written, or as the signal would have once that word is overdue.
+  // run's report is written, or as the signal would have once that word is overdue; and without
+  // a line when it loses the coordinator: mpirun is ending the job, the coordinator with it.
   void follow_coordinator(std::stop_token stop);
   [[noreturn]] void lose_coordinator(const std::string& how);
   // Stops watching and tells the other end(s) of the liveness connections of a good end.

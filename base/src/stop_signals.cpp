@@ -1,4 +1,4 @@
-#include "deferred_stop.hpp"
+#include "base/stop_signals.hpp"
 
 #include <signal.h>
 
@@ -8,28 +8,29 @@
 namespace l2 {
 namespace {
 
-volatile sig_atomic_t g_deferred = 0;
+volatile sig_atomic_t g_stop_signal = 0;
 
-extern "C" void on_deferred_stop(int signal) {
-  g_deferred = signal;
+extern "C" void on_stop_signal(int signal) {
+  g_stop_signal = signal;
 }
 
 }  // namespace
 
-void defer_stop_signals() {
+void catch_stop_signals() {
   struct sigaction action {};
-  action.sa_handler = on_deferred_stop;
+  action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }
 
-int deferred_stop_signal() {
-  return g_deferred;
+int stop_signal_received() {
+  return g_stop_signal;
 }
 
-void end_by_deferred_signal() {
-  const int signal = g_deferred;
+void end_by_stop_signal() {
+  const int signal = g_stop_signal;
+  std::fflush(stdout);
   std::fflush(stderr);
   ::signal(signal, SIG_DFL);
   raise(signal);
