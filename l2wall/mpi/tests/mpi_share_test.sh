@@ -43,8 +43,17 @@ ask --data-binary "@$out/checker.jpg" -H 'Content-Type: image/jpeg' \
   "$base/api/share/frame?window=1&token=$token" >"$out/frame.json"
 grep -q '"done":"frame 1 of window 1 taken"' "$out/frame.json" ||
   { echo "FAIL: frame:"; cat "$out/frame.json"; exit 1; }
-for _ in $(seq 600); do  # shown on the displays
+for _ in $(seq 600); do  # taken by the coordinator into an application frame
   curl -s "$base/api/state" | grep -q '"shown":1' && break
+  sleep 0.1
+done
+# "shown" counts the frames the run took, not what the displays show yet: the frame that took
+# it reaches the displays a few refreshes later (pipeservers render it, the boards show it one
+# frame after). Wait until every display is five frames past the one showing when it was taken.
+displayed() { curl -s "$base/api/state" | python3 -c 'import json, sys; print(json.load(sys.stdin)["frame"])'; }
+taken_by=$(($(displayed) + 5))
+for _ in $(seq 600); do
+  (($(displayed) >= taken_by)) && break
   sleep 0.1
 done
 ask "$base/api/save?token=$token" >"$out/save.json"
