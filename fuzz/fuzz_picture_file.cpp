@@ -24,8 +24,8 @@ namespace {
 
 using l2::fuzz::require;
 
-constexpr long long kMaxArea = 1 << 20;
-constexpr int kMaxSide = 1024;
+constexpr long long kMaxArea = 1 << 16;
+constexpr int kMaxSide = 256;
 
 const char* const kExtensions[] = {"png", "jpg", "tif", "bmp", "ppm", "pfm", "hdr", "fits",
                                    "ico", "gif", "tga", "dds", "exr", "sgi", "psd", "rla"};
