@@ -19,32 +19,41 @@ build() {  # build PRESET [TARGET]; without TARGET, what the build preset builds
   cmake --preset "$1" >/dev/null
   cmake --build --preset "$1" -j "$jobs" ${2:+--target "$2"} -- --quiet
 }
-# Starts `build PRESET TARGET` at idle priority in the background; `finish_build` waits for it.
+# Builds at idle priority in the background (background_build); `finish_build` waits for them.
 # SCHED_IDLE where the system lets us set it, else the lowest nice level.
 idle=(chrt --idle 0)
 "${idle[@]}" true 2>/dev/null || idle=(nice -n 19)
 background_pid=
-background_preset=
+background_presets=()
+# background_build PRESET[:TARGET]...: the builds one after another, in one background job.
 background_build() {
-  local preset=$1 target=${2:-} log=build/$1/suite-build.log
-  mkdir -p "build/$preset"
-  echo "=== $preset: build (${target:-the targets of its build preset}), beside the tests"
-  background_preset=$preset
-  setsid "${idle[@]}" bash -c "set -euo pipefail; $(declare -f build); jobs=$jobs; build $preset $target" \
-    >"$log" 2>&1 &
+  local spec preset target chain=""
+  background_presets=()
+  for spec in "$@"; do
+    preset=${spec%%:*}
+    mkdir -p "build/$preset"
+    rm -f "build/$preset/suite-build.log"
+    background_presets+=("$preset")
+    [[ $spec == *:* ]] && target=${spec#*:} || target=""
+    echo "=== $preset: build (${target:-the targets of its build preset}), beside the tests"
+    chain+="build $preset $target >build/$preset/suite-build.log 2>&1; "
+  done
+  setsid "${idle[@]}" bash -c "set -euo pipefail; $(declare -f build); jobs=$jobs; $chain" &
   background_pid=$!
 }
 # A failing test ends the suite: the build beside it (its own process group) goes with it.
 trap '[[ -z $background_pid ]] || kill -- -"$background_pid" 2>/dev/null || true' EXIT
 finish_build() {
-  local t0=$SECONDS
+  local t0=$SECONDS preset
   if ! wait "$background_pid"; then
-    cat "build/$background_preset/suite-build.log"
-    echo "=== $background_preset: build failed"
+    for preset in "${background_presets[@]}"; do
+      [[ ! -f build/$preset/suite-build.log ]] || cat "build/$preset/suite-build.log"
+    done
+    echo "=== ${background_presets[*]}: build failed"
     exit 1
   fi
   background_pid=
-  echo "=== $background_preset: build finished ($((SECONDS - t0)) s waited for it)"
+  echo "=== ${background_presets[*]}: build finished ($((SECONDS - t0)) s waited for it)"
 }
 run_tests() {  # run_tests PRESET
   local t0=$SECONDS
@@ -57,15 +66,15 @@ t0=$SECONDS
 echo "=== default: build (all)"
 build default
 echo "=== default: build took $((SECONDS - t0)) s"
-background_build asan l2_asan_tests
+background_build asan:l2_asan_tests
 run_tests default
 finish_build
-background_build tsan l2_tsan_tests
+# The TSan and fuzz builds together beside the ASan tests: the fuzz build waited alone after
+# the short TSan tests.
+background_build tsan:l2_tsan_tests fuzz
 run_tests asan
 finish_build
-background_build fuzz
 run_tests tsan
-finish_build
 t0=$SECONDS
 echo "=== fuzz: smoke run"
 bash scripts/fuzz.sh 3
