@@ -27,12 +27,20 @@ class ChildPipeserver final : public PipeserverProcess {
 // (mpi/), and mpirun reaps it.
 class RemotePipeserver final : public PipeserverProcess {
  public:
-  RemotePipeserver(std::string place, std::function<bool()> gone, std::function<std::string()> how)
-      : place_(std::move(place)), gone_(std::move(gone)), how_(std::move(how)) {}
+  RemotePipeserver(std::string place, std::function<bool()> gone, std::function<std::string()> how,
+                   std::function<std::optional<int>()> code)
+      : place_(std::move(place)),
+        gone_(std::move(gone)),
+        how_(std::move(how)),
+        code_(std::move(code)) {}
   std::string place() const override { return place_; }
   std::optional<ExitStatus> poll() override {
     if (!gone_()) return std::nullopt;
     ExitStatus s;
+    if (const std::optional<int> code = code_ ? code_() : std::nullopt) {
+      s.code = *code;
+      return s;
+    }
     s.gone = true;
     if (how_) s.gone_how = how_();
     return s;
@@ -46,6 +54,7 @@ class RemotePipeserver final : public PipeserverProcess {
   std::string place_;
   std::function<bool()> gone_;
   std::function<std::string()> how_;
+  std::function<std::optional<int>()> code_;
 };
 
 }  // namespace
@@ -55,10 +64,11 @@ std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<st
   return std::make_unique<ChildPipeserver>(argv, env);
 }
 
-std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
-                                                             std::function<bool()> gone,
-                                                             std::function<std::string()> how) {
-  return std::make_unique<RemotePipeserver>(std::move(place), std::move(gone), std::move(how));
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(
+    std::string place, std::function<bool()> gone, std::function<std::string()> how,
+    std::function<std::optional<int>()> code) {
+  return std::make_unique<RemotePipeserver>(std::move(place), std::move(gone), std::move(how),
+                                            std::move(code));
 }
 
 }  // namespace l2

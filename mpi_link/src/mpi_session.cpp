@@ -347,6 +347,11 @@ void MpiSession::abort_all(int code) {
       for (const Fd& fd : session->liveness_)
         if (fd) send_liveness(fd.get(), kLivenessAborting);
     end_job();
+  } else if (MpiSession* session = live_session; session && !session->liveness_.empty()) {
+    // Its own line is out (stderr): the coordinator names it by its exit code, as a crash it
+    // is not.
+    std::fflush(stderr);
+    if (const Fd& fd = session->liveness_.front()) send_liveness(fd.get(), failed_word(code));
   }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler

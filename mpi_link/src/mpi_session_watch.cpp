@@ -83,7 +83,13 @@ void MpiSession::report_unclaimed() {
   const std::lock_guard lock(mutex_);
   if (lost_line_.empty() || claimed_) return;
   claimed_ = true;
+  printed_ = lost_line_;
   std::fprintf(stderr, "l2wall: %s\n", lost_line_.c_str());
+}
+
+bool MpiSession::said(const std::string& line) {
+  const std::lock_guard lock(mutex_);
+  return !printed_.empty() && printed_ == line;
 }
 
 bool MpiSession::note_lost(int rank, std::string cause) {
@@ -99,6 +105,23 @@ bool MpiSession::note_lost(int rank, std::string cause) {
   lost_line_ = line;
   claimed_ = false;  // this loss is still to be taken up
   return true;
+}
+
+bool MpiSession::note_failed(int rank, int code) {
+  {
+    const std::lock_guard lock(mutex_);
+    exit_codes_.resize(static_cast<std::size_t>(size_));
+    if (code >= 0) exit_codes_[static_cast<std::size_t>(rank)] = code;
+  }
+  // As ExitStatus::describe says a child's end on one machine.
+  return note_lost(rank, code >= 0 ? fmt::format("exited with code {}", code)
+                                   : std::string("ended by its own error (its exit code was cut)"));
+}
+
+std::optional<int> MpiSession::exit_code(int rank) {
+  const std::lock_guard lock(mutex_);
+  const auto r = static_cast<std::size_t>(rank);
+  return r < exit_codes_.size() ? exit_codes_[r] : std::nullopt;
 }
 
 void MpiSession::watch(std::stop_token stop) {
@@ -126,10 +149,13 @@ void MpiSession::watch(std::stop_token stop) {
     const auto now = Silence::Clock::now();
     for (std::size_t i = 0; i < fds.size() && !fatal; ++i) {
       const std::size_t r = ranks[i];
-      const Heard h = fds[i].revents ? read_liveness(fds[i].fd) : Heard::nothing;
+      int code = -1;
+      const Heard h = fds[i].revents ? read_liveness(fds[i].fd, &code) : Heard::nothing;
       if (h == Heard::pulse || h == Heard::aborting) silences[r].heard(now);
-      if (h == Heard::ended || h == Heard::closed) watched[r] = false;
-      if (h == Heard::closed)
+      if (h == Heard::ended || h == Heard::closed || h == Heard::failed) watched[r] = false;
+      if (h == Heard::failed)
+        fatal = note_failed(static_cast<int>(r), code);
+      else if (h == Heard::closed)
         fatal = note_lost(static_cast<int>(r),
                           "is gone (its connection to the coordinator closed: killed or crashed)");
       else if (watched[r] && silences[r].too_long(now)) {

@@ -41,9 +41,11 @@ class PipeserverProcess {
 std::unique_ptr<PipeserverProcess> child_pipeserver_process(const std::vector<std::string>& argv,
                                                             const std::vector<std::string>& env);
 // A pipeserver another process started (an MPI rank), named by `place`; `gone` says whether
-// its process was seen to end, `how` (if given) how it was found gone (ExitStatus::gone_how).
-std::unique_ptr<PipeserverProcess> remote_pipeserver_process(std::string place,
-                                                             std::function<bool()> gone,
-                                                             std::function<std::string()> how = {});
+// its process was seen to end, `how` (if given) how it was found gone (ExitStatus::gone_how),
+// `code` (if given) the exit code it said it ended with: then its end is that exit status, as a
+// child's is.
+std::unique_ptr<PipeserverProcess> remote_pipeserver_process(
+    std::string place, std::function<bool()> gone, std::function<std::string()> how = {},
+    std::function<std::optional<int>()> code = {});
 
 }  // namespace l2

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "l2wall/display_path.hpp"
 #include "l2wall/live_run.hpp"
@@ -28,6 +29,13 @@ class RunBackends {
   // page asks: child processes are signalled; MPI ranks on other hosts cannot be, they wait for
   // READY (mpirun ends them all on Ctrl-C).
   virtual bool stops_pipeservers_early() const { return true; }
+  // Whether `line` (a fault's, without "l2wall: ") is on stderr already: MPI's watch of the
+  // ranks prints a loss's line itself when the run is slow to take it up (mpirun may be ending
+  // the coordinator).
+  virtual bool fault_said(const std::string& line) const {
+    (void)line;
+    return false;
+  }
 };
 
 // Child processes, shared memory, ptys, the compositing server process.

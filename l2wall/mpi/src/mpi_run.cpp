@@ -50,6 +50,7 @@ class MpiBackends final : public RunBackends {
                                      std::make_unique<MpiColumns>(layout, map_, session_, o));
   }
   bool stops_pipeservers_early() const override { return false; }
+  bool fault_said(const std::string& line) const override { return session_.said(line); }
   std::unique_ptr<DisplayPath> viz_path(const TileLayout& layout, const VizLaunch&) const override {
     return std::make_unique<VizPath>(
         std::make_unique<MpiCompositors>(layout_, map_, stall_timeout_ms_),
@@ -64,7 +65,8 @@ class MpiBackends final : public RunBackends {
       end.process = remote_pipeserver_process(
           fmt::format("rank {} on {}, pid {}", rank, who.host, who.pid),
           [this, rank] { return session_.gone(rank); },
-          [this, rank] { return session_.loss_cause(rank); });
+          [this, rank] { return session_.loss_cause(rank); },
+          [this, rank] { return session_.exit_code(rank); });
       end.channel = std::make_unique<MpiReadyChannel>(rank, fmt::format("MPI rank {}", rank));
       // Balancing: the rank was started with --mpi-control (exec_pipeserver).
       if (launch.control)

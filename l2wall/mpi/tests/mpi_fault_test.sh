@@ -8,6 +8,7 @@
 # mpirun's end of the job): each saved display must be the one-machine run's picture
 # of the frame the line says the displays keep; a lost column's displays are named, not saved.
 # The hosts wait longer for READY than that, so none gives up first.
+# Then a pipeserver rank that fails by its own error: named by its exit code, once.
 # Last, the coordinator (rank 0) killed: mpirun names it and ends every other rank.
 # Usage: mpi_fault_test.sh L2WALL OUT TWO_COLUMN_WALL
 set -euo pipefail
@@ -171,6 +172,32 @@ fault STOP 3 "pipeserver 2" 6 "" "0 1 2 3"
 fault KILL 5 "board column 0" 6 "" ""
 # A column stopped: column 1 (display 8) on the two-column wall; column 0's displays are saved.
 fault STOP 4 "board column 1" 5 "$two_columns" "0 1 2 3 4 5 6 7"
+
+# A pipeserver rank that fails by its own error (its report cannot be written on its host: the
+# log a dangling link) prints its own line, then says its exit code on its liveness connection:
+# the coordinator names it by that code, once, as a child's exit on one machine, never as a rank
+# killed or crashed.
+own_error() {
+  local dir="$out/own-error" pids
+  mkdir -p "$dir" && ln -s /nonexistent/l2wall-test/pipeserver.log "$dir/pipeserver-1.log"
+  "${mpirun_local[@]}" -q -np 6 "$l2wall" run --mpi --frames 100000 --stall-timeout $stall_ms \
+    --ready-timeout 3000 --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
+  local run=$! status=0
+  mpirun_wait $run || status=$?
+  pids=$(pgrep -f -- "$dir" || true)
+  echo "own error of rank 2 (pipeserver 1, -np 6): exit $status"
+  [[ $status -ne 0 ]] || { echo "FAIL: exit 0"; exit 1; }
+  grep -qxF "pipeserver 1: cannot write report $dir/pipeserver-1.log" "$dir.err" ||
+    { echo "FAIL: no line of the pipeserver's own:"; cat "$dir.err"; exit 1; }
+  local line="^l2wall: pipeserver 1 \(rank 2 on [^,]+, pid [0-9]+\) exited with code 1 while"
+  line+=" the displays wait for frame 0; no frame reached the displays$"
+  [[ $(grep -cE "$line" "$dir.err") -eq 1 ]] ||
+    { echo "FAIL: not named once by its exit code:"; cat "$dir.err"; exit 1; }
+  grep -E "$line" "$dir.err" | sed 's/^/  /'
+  ! grep -q "killed or crashed" "$dir.err" || { echo "FAIL: named as killed"; exit 1; }
+  nothing_left "$dir" "$pids"
+}
+own_error
 
 # The coordinator (rank 0) killed: nobody is left to name it but mpirun, which does (without -q)
 # and ends every other rank; nothing of the run is left, on this host or in /dev/shm.

@@ -232,6 +232,35 @@ TEST_F(MpiSurvive, APipeserverRankKilledBeforeItsFirstFrameIsSurvived) {
   expect_displays_as_static();
 }
 
+// A pipeserver rank that fails by its own error (its report cannot be written on its host: the
+// log a dangling link) says its exit code on its liveness connection before it ends: it is
+// lost as a child that exited with code 1 is on one machine, not as one killed or crashed, and
+// the run goes on without it.
+TEST_F(MpiSurvive, APipeserverRankThatFailsByItsOwnErrorIsNamedByItsExitCodeAndSurvived) {
+  survivor_.emplace(
+      "mpi-survive", surviving_args(wall_),
+      [](const fs::path& out) {
+        fs::create_symlink("/nonexistent/l2wall-test/pipeserver.log",
+                           out / fmt::format("pipeserver-{}.log", kVictim));
+      },
+      false, mpirun(base_, 6, true));
+  const std::string output = finish();
+  EXPECT_NE(output.find(fmt::format("pipeserver {}: cannot write report ", kVictim)),
+            std::string::npos)
+      << output;
+  EXPECT_TRUE(std::regex_search(
+      output, std::regex(fmt::format("l2wall: pipeserver {} \\(rank 2 on [^,]+, pid \\d+\\) "
+                                     "exited with code 1 while rendering frame 0; the run goes on "
+                                     "without it \\(--survive-host-loss\\)",
+                                     kVictim))))
+      << output;
+  EXPECT_EQ(output.find("killed or crashed"), std::string::npos) << output;
+  EXPECT_NE(
+      output.find(fmt::format("l2wall run: {} frames on 4 displays from 4 pipeservers", kFrames)),
+      std::string::npos)
+      << output;
+}
+
 // Two of four lost where tilelayout says two framebuffers hold every tile: the run goes on to
 // its last frame, naming both.
 TEST_F(MpiSurvive, TwoRanksLostAreSurvivedWhereTwoFramebuffersHoldEveryTile) {

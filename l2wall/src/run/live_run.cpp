@@ -275,7 +275,7 @@ int run_wall(const RunOptions& options, const RunBackends& backends) {
     return run->run();
   } catch (const RunFault& e) {
     if (run && run->progress_shown()) std::fputs("\n", stderr);
-    std::fprintf(stderr, "l2wall: %s\n", e.what());
+    if (!backends.fault_said(e.what())) std::fprintf(stderr, "l2wall: %s\n", e.what());
     if (run) {
       if (const auto note = run->save_displays_after_fault())
         std::fprintf(stderr, "l2wall: displays as they were: %s/fault/%s\n", options.out.c_str(),

@@ -64,6 +64,8 @@ class MpiSession {
   // this process already, and watches no more.
   void watch_ranks(std::function<std::string(int rank)> describe);
   void stop_watching();
+  // Whether the watch printed `line` (a loss's line, without "l2wall: ") itself.
+  bool said(const std::string& line);
   // The ranks found gone so far, in the order found; the run reports them from here on.
   std::vector<int> lost_ranks();
   // Whether `rank` was found gone (the run reports it from here on, if so).
@@ -72,10 +74,14 @@ class MpiSession {
   // closed: killed or crashed)", "is lost (no word for 3 s: its host's network may be down)"
   // ("stopped, on the coordinator's own host" where no network joins them).
   std::string loss_cause(int rank);
+  // The exit code of a rank that ended by its own error and said so (abort_all): it is blamed
+  // as a process's exit status is on one machine. nullopt for any other end.
+  std::optional<int> exit_code(int rank);
 
   // Ends every rank of the run (MPI_Abort): for a fault, after its message was printed. Under
   // an mpirun that keeps the job, where MPI_Abort ends only its caller, the coordinator asks
-  // mpirun to end the job too.
+  // mpirun to end the job too. Any other rank first tells the coordinator its exit code
+  // (exit_code()): it ends by its own error, not killed.
   // A rank other than 0 that took a stop signal waits for the coordinator's word instead: the
   // run is being stopped, and an abort would cut the coordinator off before its report.
   [[noreturn]] static void abort_all(int code);
@@ -124,6 +130,8 @@ class MpiSession {
   [[noreturn]] static void await_coordinator_word();
   // Takes in a rank found gone, `cause` as loss_cause says it; true when its loss ends the run.
   bool note_lost(int rank, std::string cause);
+  // note_lost of a rank that said it ends by its own error with `code` (-1: the code was cut).
+  bool note_failed(int rank, int code);
   // Prints the line of a loss that ends the run, unless the run reported it.
   void report_unclaimed();
 
@@ -139,9 +147,11 @@ class MpiSession {
   std::vector<int> lost_;
   bool claimed_ = false;  // the run took up the losses found so far
   std::string lost_line_;
+  std::string printed_;              // the loss's line the watch printed itself, if it did
   std::vector<std::string> causes_;  // by rank: how it was lost, empty if not
-  std::jthread watcher_;             // rank 0: watch(), from watch_ranks()
-  std::jthread pulse_;               // rank 0: pulse(); any other: follow_coordinator()
+  std::vector<std::optional<int>> exit_codes_;  // by rank: the code it ended with, if it said
+  std::jthread watcher_;                        // rank 0: watch(), from watch_ranks()
+  std::jthread pulse_;                          // rank 0: pulse(); any other: follow_coordinator()
 };
 
 // The rank and size mpirun gave this process, read from its environment before MPI_Init
