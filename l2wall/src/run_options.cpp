@@ -160,4 +160,17 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
   return {};
 }
 
+Status stereo_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
+  if (wall.stereo.mode != StereoMode::Active) return {};
+  if (place != RunPlace::OneMachine)
+    return Failure{"--mpi: active stereo walls run on one machine only (not over MPI) yet"};
+  if (o.frames % 2 != 0) {
+    return Failure{fmt::format(
+        "--frames {}: an active stereo wall's frames are eye frames (left and right of each "
+        "application frame): give an even count",
+        o.frames)};
+  }
+  return {};
+}
+
 }  // namespace l2
