@@ -172,6 +172,11 @@ Status stereo_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
         "change between a frame's left and right eye)",
         o.scene)};
   }
+  // Its clock runs at the refresh rate, which shows an active wall's frames at half of it.
+  if (o.scene == "movie")
+    return Failure{
+        "--scene movie: active stereo walls do not support it yet (it would play at "
+        "half speed)"};
   if (o.frames % 2 != 0) {
     return Failure{fmt::format(
         "--frames {}: an active stereo wall's frames are eye frames (left and right of each "

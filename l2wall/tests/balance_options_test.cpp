@@ -48,6 +48,10 @@ TEST(BalanceOptions, AnActiveStereoWallRefusesOddFramesAndMpi) {
   EXPECT_EQ(stereo_refusal(o, active, RunPlace::OneMachine).reason(),
             "--scene session: active stereo walls do not support it yet (its windows or desktop "
             "could change between a frame's left and right eye)");
+  o.scene = "movie";
+  EXPECT_EQ(stereo_refusal(o, active, RunPlace::OneMachine).reason(),
+            "--scene movie: active stereo walls do not support it yet (it would play at half "
+            "speed)");
   EXPECT_TRUE(stereo_refusal(o, default_wall(), RunPlace::MpiEndingOnLoss).ok());
 }
 
