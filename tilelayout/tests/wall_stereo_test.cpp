@@ -174,6 +174,11 @@ TEST(WallStereo, AnActiveWallsDisplaysShowBothEyesInTurn) {
   ASSERT_EQ(w.displays.size(), 2u);  // not twinned
   EXPECT_EQ(w.displays[1].eye, Eye::None);
   EXPECT_TRUE(eye_pairs(w).empty());
+  const std::string plan = format_plan(plan_layout(w));
+  EXPECT_NE(plan.find("display 1: 100x80 at canvas 100,0, swap group 0, both eyes in turn (active "
+                      "stereo): 100.0% covered"),
+            std::string::npos)
+      << plan;
   // Eye frames: 2k the left eye of frame k, 2k+1 its right.
   for (const auto& [frame, app, eye] :
        {std::tuple{0, 0, Eye::Left}, {1, 0, Eye::Right}, {6, 3, Eye::Left}, {7, 3, Eye::Right}}) {
