@@ -69,6 +69,8 @@ for wall in ("kd-2x2.toml", "projectors-2x1.toml", "wiregl-1600x1200.toml",
     put("wall_file", wall, (HERE.parent / "walls" / wall).read_bytes())
 put("wall_file", "stereo-passive-2x1.toml",
     (HERE.parent / "examples" / "walls" / "stereo-passive-2x1.toml").read_bytes())
+put("wall_file", "stereo-active-2x1.toml",
+    (HERE.parent / "examples" / "walls" / "stereo-active-2x1.toml").read_bytes())
 
 # --- wall_import: the example configurations, first byte 0 (format told from the content) -----
 for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):

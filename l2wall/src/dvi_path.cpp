@@ -82,6 +82,7 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
       lock_check_(groups_, eye_pairs(layout.wall)),
       eye_pairs_(static_cast<int>(eye_pairs(layout.wall).size())) {
   if (layout.wall.frame_lock.modelled) frame_lock_.emplace(layout.wall, groups_);
+  if (layout.wall.stereo.mode == StereoMode::Active) eye_sequence_.emplace();
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
@@ -175,6 +176,11 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
   if (const Status s = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_);
       !s.ok())
     throw RunFault(s.reason());
+  if (eye_sequence_) {
+    if (const Status s = eye_sequence_->check(static_cast<std::uint64_t>(index), displays_shown_);
+        !s.ok())
+      throw RunFault(s.reason());
+  }
   if (frame_lock_) frame_lock_->refresh(displays_shown_);
 }
 
@@ -281,7 +287,16 @@ std::string DviPath::summary_lines() const {
              "swap lock: every display of each of {} group(s) showed the same frame in all {} "
              "refreshes, {}\n",
              groups_.size(), refreshes_, columns_->where()) +
-         stereo + columns_->summary_lines();
+         stereo + active_stereo_line() + columns_->summary_lines();
+}
+
+std::string DviPath::active_stereo_line() const {
+  if (!eye_sequence_) return {};
+  return fmt::format(
+      "active stereo: stereo pairs: {}, broken: 0: each of {} display(s) showed every frame's "
+      "left eye and then its right in the next refresh that changed it, in all {} refreshes; "
+      "{} display refresh(es) kept an eye frame (no new one was ready)\n",
+      eye_sequence_->pairs(), eye_sequence_->displays(), refreshes_, eye_sequence_->held());
 }
 
 void DviPath::follow_layouts(LiveBalance& balance, PipeserverSet&) {

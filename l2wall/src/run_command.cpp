@@ -100,7 +100,9 @@ void add_wall_options(CLI::App& run, RunCommand& c) {
                  "vnc scene: the server's password, in the file `vncpasswd -f` writes (as "
                  "Xvnc -PasswordFile and x11vnc -rfbauth read it)")
       ->check(CLI::ExistingFile);
-  run.add_option("--frames", o.frames, "application frames to render")
+  run.add_option("--frames", o.frames,
+                 "application frames to render (on an active stereo wall eye frames, an even "
+                 "count: 2k the left eye of frame k, 2k+1 its right)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   add_out_option(run, o.out,

@@ -160,4 +160,30 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
   return {};
 }
 
+Status stereo_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
+  if (wall.stereo.mode != StereoMode::Active) return {};
+  if (place != RunPlace::OneMachine)
+    return Failure{"--mpi: active stereo walls run on one machine only (not over MPI) yet"};
+  // What changes between eye frames from outside (windows moved, a desktop's pixels) could land
+  // between a frame's two eyes: each eye would show a different frame.
+  if (o.scene == "session" || o.scene == "vnc") {
+    return Failure{fmt::format(
+        "--scene {}: active stereo walls do not support it yet (its windows or desktop could "
+        "change between a frame's left and right eye)",
+        o.scene)};
+  }
+  // Its clock runs at the refresh rate, which shows an active wall's frames at half of it.
+  if (o.scene == "movie")
+    return Failure{
+        "--scene movie: active stereo walls do not support it yet (it would play at "
+        "half speed)"};
+  if (o.frames % 2 != 0) {
+    return Failure{fmt::format(
+        "--frames {}: an active stereo wall's frames are eye frames (left and right of each "
+        "application frame): give an even count",
+        o.frames)};
+  }
+  return {};
+}
+
 }  // namespace l2

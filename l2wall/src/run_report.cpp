@@ -58,13 +58,15 @@ double swap_ms(const std::vector<FrameRecord>& records, std::size_t k) {
   return std::max(0.0, ms_between(r.in_time, r.swap_time) - paused);
 }
 
+// `stereo`: an active wall's rows are eye frames, and a last column says which eye.
 std::string csv_text(const RunTotals& totals, const std::vector<PipeserverLog>& logs,
-                     const std::vector<FrameRecord>& records) {
+                     const std::vector<FrameRecord>& records, const StereoSpec& stereo) {
   const bool dvi = totals.latency_measured;
+  const bool eyes = stereo.mode == StereoMode::Active;
   std::string csv = "frame,in_refresh,swap_refresh,latency_frames,route_ms,swap_ms";
   for (std::size_t i = 0; i < logs.size(); ++i)
     csv += fmt::format(",render_ms_{0},ready_wait_ms_{0},sync_retries_{0}", i);
-  csv += "\n";
+  csv += eyes ? ",eye\n" : "\n";
   for (std::size_t k = 0; k < records.size(); ++k) {
     const FrameRecord& r = records[k];
     if (dvi) {
@@ -81,6 +83,9 @@ std::string csv_text(const RunTotals& totals, const std::vector<PipeserverLog>& 
         csv += ",,,";  // no line: its pipeserver was lost (or stopped) before
       }
     }
+    if (eyes)
+      csv += fmt::format(",{}",
+                         kEyeNames[static_cast<int>(frame_eye(stereo, static_cast<int>(k)).eye)]);
     csv += "\n";
   }
   return csv;
@@ -206,7 +211,7 @@ RunReportTexts run_report(const RunOptions& o, const Wall& wall,
   }
   summary += extra;
   summary += fmt::format("report: {}\n", csv_path.string());
-  return {csv_text(totals, logs, records), summary};
+  return {csv_text(totals, logs, records, wall.stereo), summary};
 }
 
 }  // namespace l2

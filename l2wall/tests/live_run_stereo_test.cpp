@@ -2,7 +2,8 @@
 // each left-eye projector with a right-eye twin on its canvas rectangle), on both paths: every
 // display shows, byte for byte, what the pipeserver program renders alone as that display's
 // reference (its own eye's camera), the two eyes differ, and the summary says the swap-lock
-// check proved both eyes of every frame shown together in every refresh.
+// check proved both eyes of every frame shown together in every refresh. An active wall the
+// same, each display showing a frame's left eye and then its right in consecutive refreshes.
 #include <gtest/gtest.h>
 
 #include "wall_run.hpp"
@@ -11,6 +12,14 @@ namespace l2 {
 namespace {
 
 using namespace testing_support;
+
+// The pixels of `a` that differ from `b`'s.
+long pixels_differing(const RgbImage& a, const RgbImage& b) {
+  long differ = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) differ += !(a.at(x, y) == b.at(x, y));
+  return differ;
+}
 
 TEST(LiveRunStereo, PassiveTwinsShowTheirOwnEyeOfTheSameFrame) {
   const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-passive-2x1.toml";
@@ -42,23 +51,78 @@ TEST(LiveRunStereo, PassiveTwinsShowTheirOwnEyeOfTheSameFrame) {
   // Twins 0 (left) and 2 (right) show one canvas rectangle, from eyes 0.1 scene units apart.
   const RgbImage left = read_png(shown / "display-0.png"),
                  right = read_png(shown / "display-2.png");
-  long differ = 0;
-  for (int y = 0; y < left.height(); ++y)
-    for (int x = 0; x < left.width(); ++x) differ += !(left.at(x, y) == right.at(x, y));
-  EXPECT_GT(differ, 1000);
+  EXPECT_GT(pixels_differing(left, right), 1000);
+  expect_clean(run);
+}
+
+// An active wall (examples/walls/stereo-active-2x1.toml: two projectors, each showing both eyes
+// one refresh after the other) on both paths: eye frames 4 and 5 are application frame 2's left
+// and right eye, each display shows each byte for byte as the pipeserver program renders that
+// eye frame alone, and the summary says every display showed every frame's left eye and then its
+// right in consecutive refreshes.
+TEST(LiveRunStereo, ActiveDisplaysShowEachFramesLeftThenRightEye) {
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-active-2x1.toml";
+  const int frames = 6;
+  WallRun run("stereo-active",
+              {"--wall", wall.string(), "--scene", "mesh", "--frames", std::to_string(frames),
+               "--refresh", "0", "--path", "both", "--compare", "--keep", "4,5"});
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  EXPECT_NE(run.output().find("active stereo: stereo pairs: 3, broken: 0: each of 2 display(s) "
+                              "showed every frame's left eye and then its right in the next "
+                              "refresh that changed it, in all "),
+            std::string::npos)
+      << run.output();
+
+  for (const int k : {4, 5}) {
+    const fs::path references = run.out().parent_path() / fmt::format("references-{}", k);
+    ChildProcess reference({PIPESERVER_EXE, "--wall", wall.string(), "--scene", "mesh", "--frame",
+                            std::to_string(k), "--reference", references.string()});
+    const auto ended = reference.wait_for(120s);
+    ASSERT_TRUE(ended && ended->ok()) << (ended ? ended->describe() : "did not end");
+    const fs::path shown = run.out() / fmt::format("frame-{}", k);
+    for (int d = 0; d < 2; ++d) {
+      const RgbImage want = read_png(references / fmt::format("display-{}.png", d));
+      EXPECT_TRUE(read_png(shown / fmt::format("display-{}.png", d)) == want)
+          << "eye frame " << k << ", display " << d;
+      EXPECT_TRUE(read_png(shown / fmt::format("display-{}-vizserver.png", d)) == want)
+          << "eye frame " << k << ", display " << d;
+    }
+  }
+  // report.csv's rows are eye frames, each saying its eye.
+  const std::string csv = slurp(run.out() / "report.csv");
+  EXPECT_NE(csv.find(",eye\n0,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",left\n5,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.substr(csv.size() - 7), ",right\n") << csv;
+  // One display, one application frame, eyes 0.1 scene units apart.
+  EXPECT_GT(pixels_differing(read_png(run.out() / "frame-4/display-0.png"),
+                             read_png(run.out() / "frame-5/display-0.png")),
+            1000);
+  expect_clean(run);
+}
+
+TEST(LiveRunStereo, AnActiveWallRefusesAnOddFrameCount) {
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-active-2x1.toml";
+  WallRun run("stereo-odd", {"--wall", wall.string(), "--frames", "3"});
+  const ExitStatus status = run.wait(60s);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(run.output().find("--frames 3: an active stereo wall's frames are eye frames (left "
+                              "and right of each application frame): give an even count"),
+            std::string::npos)
+      << run.output();
   expect_clean(run);
 }
 
 TEST(LiveRunStereo, AModeNotDoneYetIsRefusedInOneLine) {
-  const ScratchDir dir("stereo-active");
+  const ScratchDir dir("stereo-packed");
   std::string text = slurp(fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-passive-2x1.toml");
-  text.replace(text.find("mode = \"passive\""), 16, "mode = \"active\"");
-  std::ofstream(dir / "active.toml") << text;
-  WallRun run("stereo-active", {"--wall", (dir / "active.toml").string(), "--frames", "2"});
+  text.replace(text.find("mode = \"passive\""), 16, "mode = \"top-bottom\"");
+  std::ofstream(dir / "packed.toml") << text;
+  WallRun run("stereo-packed", {"--wall", (dir / "packed.toml").string(), "--frames", "2"});
   const ExitStatus status = run.wait(60s);
   EXPECT_FALSE(status.ok());
-  EXPECT_NE(run.output().find("active.toml:8: stereo: stereo walls do not support \"active\" "
-                              "(only \"passive\") yet"),
+  EXPECT_NE(run.output().find("packed.toml:8: stereo: stereo walls do not support \"top-bottom\" "
+                              "(only \"passive\" and \"active\") yet"),
             std::string::npos)
       << run.output();
   expect_clean(run);

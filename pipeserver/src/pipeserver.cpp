@@ -122,12 +122,15 @@ std::span<std::uint8_t> Pipeserver::render_frame(
         fmt::format("pipeserver {}: frame buffer of {} bytes, a {}x{} frame needs {}",
                     plan_.pipeserver, dst.size(), plan_.fb_width, plan_.fb_height, bytes));
   }
-  scene.set_frame(frame);
+  // An active stereo wall's frame is one eye of an application frame; headers and stamp still
+  // follow the frame itself.
+  const FrameEye shows = frame_eye(stereo_, frame);
+  scene.set_frame(shows.frame);
   // Every pixel is written: black first, then the tiles, then the headers over the gaps.
   std::memset(dst.data(), 0, bytes);
   times_ = {};
   times_.tile_ms.assign(plan_.tiles.size(), 0.0);
-  render_windows(scene, dst);
+  render_windows(scene, dst, shows.eye);
   const auto t0 = Clock::now();
   const FrameHeaders& headers = headers_[frame_parity(frame) ? 1 : 0];
   const std::size_t row_bytes = static_cast<std::size_t>(plan_.fb_width) * 3;
@@ -144,7 +147,7 @@ std::span<std::uint8_t> Pipeserver::render_frame(
   return dst.first(bytes);
 }
 
-void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
+void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst, Eye frame_eye) {
   // Layer 0 sends its clear nearer than the far plane (depth_out.hpp).
   const std::uint32_t far_as = plan_.layer == 0 ? kFarDepth - 1 : kFarDepth;
   std::unique_ptr<TileRenderer> renderer;
@@ -153,10 +156,11 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst) {
   std::vector<Rect> regions;
   for (const Window& w : windows_) {
     auto t0 = Clock::now();
-    if (w.context != context || w.eye != eye) {
+    const Eye window_eye = w.eye == Eye::None ? frame_eye : w.eye;
+    if (w.context != context || window_eye != eye) {
       if (w.context != context) contexts_[w.context]->make_current();
       context = w.context;
-      eye = w.eye;
+      eye = window_eye;
       renderer = std::make_unique<TileRenderer>(
           scene, canvas_, GeometryShare{plan_.layer, plan_.layers}, StereoEye{eye, stereo_});
     }
@@ -213,8 +217,9 @@ RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, i
         fmt::format("display {} does not exist: the wall has {}", display, displays.size()));
   }
   const Display& d = displays[static_cast<std::size_t>(display)];
-  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, frame,
-                                     {d.eye, layout.wall.stereo}),
+  const FrameEye shows = frame_eye(layout.wall.stereo, frame);
+  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, shows.frame,
+                                     {d.eye == Eye::None ? shows.eye : d.eye, layout.wall.stereo}),
                   d.orientation);
 }
 

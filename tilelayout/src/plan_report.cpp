@@ -164,6 +164,13 @@ void pipeservers(const TileLayout& layout, std::string& out) {
   }
 }
 
+// Which eye a display shows on a stereo wall: its own (passive), or both in turn (active).
+std::string eye_of(const Wall& wall, const Display& d) {
+  if (d.eye != Eye::None) return fmt::format(", {} eye", kEyeNames[static_cast<int>(d.eye)]);
+  if (wall.stereo.mode == StereoMode::Active) return ", both eyes in turn (active stereo)";
+  return {};
+}
+
 void displays(const TileLayout& layout, std::string& out) {
   for (const DisplayCoverage& c : display_coverage(layout.wall, layout.tiles)) {
     const Display& d = layout.wall.displays[c.display];
@@ -178,11 +185,9 @@ void displays(const TileLayout& layout, std::string& out) {
         "display {}: {}x{}{} at canvas {},{}, swap group {}{}: {:.1f}% covered ({} of {} pixels) "
         "by {} tiles from pipeservers {}{}{}{}\n",
         d.id, d.width, d.height, mounted(d), d.canvas_x, d.canvas_y, d.swap_group,
-        d.eye == Eye::None ? std::string()
-                           : fmt::format(", {} eye", kEyeNames[static_cast<int>(d.eye)]),
-        100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels, count,
-        from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")), warp(d),
-        blend(layout.wall, d), colour(d));
+        eye_of(layout.wall, d), 100.0 * double(c.covered) / double(c.pixels), c.covered, c.pixels,
+        count, from.empty() ? std::string("none") : fmt::format("{}", fmt::join(from, ",")),
+        warp(d), blend(layout.wall, d), colour(d));
   }
 }
 

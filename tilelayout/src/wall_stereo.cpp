@@ -2,7 +2,9 @@
 // or as a [stereo] section with `mode`, `eye_separation` and `convergence` (TOML reads an inline
 // table and the section alike); and each display's `eye`. A passive wall's displays come in
 // twins, one per eye, covering the same canvas rectangle and swapping together, so each eye's
-// displays show the whole picture and both eyes of a frame are shown in the same refresh.
+// displays show the whole picture and both eyes of a frame are shown in the same refresh. An
+// active wall's displays have no eye: each shows both, one refresh after the other, all in one
+// swap group.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -99,6 +101,20 @@ void check_eyes(const TomlFields& top, const Wall& wall) {
   }
 }
 
+// One pair of shutter glasses sees every display of an active wall: a display in another swap
+// group could show the other eye in the same refresh.
+void check_one_shutter(const TomlFields& top, const Wall& wall) {
+  if (wall.stereo.mode != StereoMode::Active) return;
+  for (const Display& d : wall.displays) {
+    if (d.swap_group == wall.displays.front().swap_group) continue;
+    top.source().fail(
+        display_line(top, d.id), fmt::format("display {}", d.id),
+        fmt::format("swap_group {}, but display {} has {}: every display of an "
+                    "active stereo wall shows the same eye in each refresh",
+                    d.swap_group, wall.displays.front().id, wall.displays.front().swap_group));
+  }
+}
+
 }  // namespace
 
 void read_stereo(const TomlFields& top, Wall& wall) {
@@ -122,16 +138,18 @@ void read_stereo(const TomlFields& top, Wall& wall) {
   }
   // Before the displays are read: a wall written for a mode to come is told so, not that its
   // displays' eyes are wrong.
-  if (s.mode != StereoMode::Passive) {
-    top.source().fail(s.line, "stereo",
-                      fmt::format("stereo walls do not support \"{}\" (only \"passive\") yet",
-                                  kStereoModeNames[static_cast<int>(s.mode)]));
+  if (s.mode != StereoMode::Passive && s.mode != StereoMode::Active) {
+    top.source().fail(
+        s.line, "stereo",
+        fmt::format("stereo walls do not support \"{}\" (only \"passive\" and \"active\") yet",
+                    kStereoModeNames[static_cast<int>(s.mode)]));
   }
 }
 
 void read_stereo_displays(const TomlFields& top, Wall& wall) {
   if (wall.stereo.mode == StereoMode::Passive && top.table("display_grid")) twin_grid(wall);
   check_eyes(top, wall);
+  check_one_shutter(top, wall);
 }
 
 void check_stereo(const TomlFields& top, const Wall& wall) {

@@ -2,6 +2,8 @@
 // passive wall's twins must be, and what is refused, each in one line naming file, line, field.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -161,16 +163,57 @@ TEST(WallStereo, EyesOnlyOnAPassiveWall) {
             "walls/s.toml:1: display 0: eye is only for a wall with stereo = \"passive\"");
 }
 
+// An active wall: the grid's two displays, no eyes, each showing both (frame_eye).
+std::string active_grid() {
+  return stereo_replace(kStereoGrid, "\"passive\"", "\"active\"");
+}
+
+TEST(WallStereo, AnActiveWallsDisplaysShowBothEyesInTurn) {
+  const Wall w = parse_wall(active_grid(), "walls/s.toml");
+  EXPECT_EQ(w.stereo.mode, StereoMode::Active);
+  ASSERT_EQ(w.displays.size(), 2u);  // not twinned
+  EXPECT_EQ(w.displays[1].eye, Eye::None);
+  EXPECT_TRUE(eye_pairs(w).empty());
+  const std::string plan = format_plan(plan_layout(w));
+  EXPECT_NE(plan.find("display 1: 100x80 at canvas 100,0, swap group 0, both eyes in turn (active "
+                      "stereo): 100.0% covered"),
+            std::string::npos)
+      << plan;
+  // Eye frames: 2k the left eye of frame k, 2k+1 its right.
+  for (const auto& [frame, app, eye] :
+       {std::tuple{0, 0, Eye::Left}, {1, 0, Eye::Right}, {6, 3, Eye::Left}, {7, 3, Eye::Right}}) {
+    EXPECT_EQ(frame_eye(w.stereo, frame).frame, app) << frame;
+    EXPECT_EQ(frame_eye(w.stereo, frame).eye, eye) << frame;
+  }
+  StereoSpec passive;
+  passive.mode = StereoMode::Passive;
+  EXPECT_EQ(frame_eye(passive, 7).frame, 7);
+  EXPECT_EQ(frame_eye(passive, 7).eye, Eye::None);
+}
+
+TEST(WallStereo, AnActiveWallHasNoEyesAndOneSwapGroup) {
+  EXPECT_EQ(stereo_error(stereo_replace(kStereoPassive, "mode = \"passive\"", "mode = \"active\"")),
+            "walls/s.toml:5: display 0: eye is only for a wall with stereo = \"passive\"");
+  const std::string two_groups =
+      "stereo = \"active\"\n"                                                    // 1
+      "[[display]]\nwidth = 100\nheight = 80\nx = 0\ny = 0\n"                    // 2-6
+      "[[display]]\nwidth = 100\nheight = 80\nx = 100\ny = 0\nswap_group = 1\n"  // 7-12
+      "[tiling]\nkind = \"grid\"\ntile_width = 50\ntile_height = 40\n"
+      "[pipeservers]\ncount = 2\nframebuffer_width = 300\nframebuffer_height = 400\n";
+  EXPECT_EQ(stereo_error(two_groups),
+            "walls/s.toml:7: display 1: swap_group 1, but display 0 has 0: every display of an "
+            "active stereo wall shows the same eye in each refresh");
+}
+
 TEST(WallStereo, RefusesWhatStereoCannotDoYet) {
-  EXPECT_EQ(stereo_error(stereo_replace(kStereoGrid, "\"passive\"", "\"active\"")),
-            "walls/s.toml:1: stereo: stereo walls do not support \"active\" (only \"passive\") "
-            "yet");
   for (const std::string mode : {"side-by-side", "top-bottom"}) {
     EXPECT_EQ(stereo_error(
                   stereo_replace(kStereoPassive, "mode = \"passive\"", "mode = \"" + mode + "\"")),
               "walls/s.toml:2: stereo: stereo walls do not support \"" + mode +
-                  "\" (only \"passive\") yet");
+                  "\" (only \"passive\" and \"active\") yet");
   }
+  EXPECT_EQ(stereo_error(active_grid() + "[depth]\nlayers = 2\n"),
+            "walls/s.toml:17: depth: stereo walls do not support depth compositing yet");
   EXPECT_EQ(stereo_error(kStereoGrid + "[depth]\nlayers = 2\n"),
             "walls/s.toml:17: depth: stereo walls do not support depth compositing yet");
   // Projectors overlapping by 10 columns, each with its twin: blend would have edges to ramp.

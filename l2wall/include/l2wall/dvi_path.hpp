@@ -20,6 +20,7 @@
 #include "l2wall/board_columns.hpp"
 #include "l2wall/colour_stage.hpp"
 #include "l2wall/display_path.hpp"
+#include "l2wall/eye_sequence_check.hpp"
 #include "l2wall/frame_lock_record.hpp"
 #include "l2wall/live_run.hpp"
 #include "l2wall/swap_lock_check.hpp"
@@ -103,6 +104,8 @@ class DviPath final : public DisplayPath {
   void note_swap();
   // The groups (bits) of the displays (bits of mesh `mesh`'s display ids).
   std::uint64_t groups_of_displays(int mesh, std::uint64_t displays) const;
+  // The summary's line of an active stereo wall's pairs; empty for any other wall.
+  std::string active_stereo_line() const;
   void count_for_balance(PipeserverSet& pipeservers);
   void check_groups_for_balance(const PipeserverSet& pipeservers);
 
@@ -119,6 +122,8 @@ class DviPath final : public DisplayPath {
   SwapLockCheck lock_check_;
   std::optional<FrameLockRecord> frame_lock_;  // a wall with [displays]
   int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
+  // An active stereo wall's proof that both eyes of every frame follow each other.
+  std::optional<EyeSequenceCheck> eye_sequence_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "balance/control_messages.hpp"
 #include "base/result.hpp"
 #include "desktop_frames.hpp"
 #include "desktop_source.hpp"

@@ -56,9 +56,10 @@ class Pipeserver {
   // contexts render with `renderer` (gl_context.hpp; by default the process's, --renderer's).
   Pipeserver(const TileLayout& layout, int pipeserver, Renderer renderer = process_renderer());
 
-  // Sets the scene to `frame`, renders, draws the headers and scans out. The returned frame
-  // stays valid until the next call, and the caller may mark it (a frame number stamped in)
-  // instead of copying 1.4 MB a frame to do so.
+  // Sets the scene to `frame` (an active stereo wall's eye frame: its application frame, with
+  // that eye's camera; tilelayout/wall.hpp's frame_eye), renders, draws the headers and scans out.
+  // The returned frame stays valid until the next call, and the caller may mark it (a frame number
+  // stamped in) instead of copying 1.4 MB a frame to do so.
   RgbImage& render_frame(int frame, Scene& scene,
                          const std::function<void(std::span<std::uint8_t>)>& dense = {});
 
@@ -92,7 +93,8 @@ class Pipeserver {
     std::size_t context = 0;  // into contexts_
     std::vector<int> tiles;   // into plan_.tiles
   };
-  void render_windows(Scene& scene, std::span<std::uint8_t> dst);
+  // `frame_eye`: the eye of an active wall's frame, for windows of displays without one.
+  void render_windows(Scene& scene, std::span<std::uint8_t> dst, Eye frame_eye);
   void make_windows(const Wall& wall);
 
   PipeserverPlan plan_;
@@ -110,8 +112,9 @@ class Pipeserver {
 };
 
 // What display `display` should show for `frame`: the display's canvas rectangle rendered
-// whole, at display resolution, with the same camera (its eye's on a stereo wall; its own GL
-// context), turned into the panel's raster as it hangs (image/orientation.hpp).
+// whole, at display resolution, with the same camera (its eye's on a passive stereo wall, the
+// frame's on an active one, whose frames are eye frames: tilelayout/wall.hpp's frame_eye; its own
+// GL context), turned into the panel's raster as it hangs (image/orientation.hpp).
 RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame);
 
 // Any canvas rectangle rendered alone into an image of its size (its own GL context): the

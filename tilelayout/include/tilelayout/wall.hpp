@@ -169,7 +169,8 @@ struct FrameLockSpec {
 
 // `stereo` (docs/wall-file.md, "Stereo walls"): how a wall shows two eyes. Passive: each eye has
 // its own displays (Display::eye), every display of one eye twinned with one of the other that
-// covers the same canvas rectangle. The others are read and refused until they are done.
+// covers the same canvas rectangle. Active (frame-sequential): every display shows both eyes,
+// one after the other (frame_eye below). The packed modes are read and refused until done.
 enum class StereoMode { Mono, Passive, Active, SideBySide, TopBottom };
 inline constexpr std::string_view kStereoModeNames[] = {"mono", "passive", "active", "side-by-side",
                                                         "top-bottom"};
@@ -229,6 +230,19 @@ inline std::vector<EyePair> eye_pairs(const Wall& wall) {
       if (r.eye == Eye::Right && r.on_canvas() == l.on_canvas()) pairs.push_back({l.id, r.id});
   }
   return pairs;
+}
+
+// What frame `frame` of the pipeline shows. On an active wall the frames that pipeservers render,
+// stamp and the displays swap are eye frames: eye frame 2k is application frame k's left eye,
+// 2k+1 its right, so both eyes of a frame reach every display in consecutive swaps and the
+// stamp, headers and routing are those of a mono wall. Any other wall: the frame itself, no eye.
+struct FrameEye {
+  int frame = 0;  // the application frame: what the scene is set to
+  Eye eye = Eye::None;
+};
+inline FrameEye frame_eye(const StereoSpec& stereo, int frame) {
+  if (stereo.mode != StereoMode::Active) return {frame, Eye::None};
+  return {frame / 2, frame % 2 == 0 ? Eye::Left : Eye::Right};
 }
 
 }  // namespace l2
