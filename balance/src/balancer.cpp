@@ -267,6 +267,14 @@ double Balancer::predicted_seconds(const TileLayout& candidate, const TileSecond
                                  overhead);
 }
 
+double Balancer::predicted_work(const TileLayout& candidate, const TileSeconds& seconds,
+                                const Footprints& footprints) const {
+  const TileSeconds measured = with_stand_ins(seconds);
+  const double overhead = tile_overhead(measured, settings_.tile_cost);
+  return predicted_work_seconds(candidate, pixel_estimate(layout_, measured, overhead, footprints),
+                                overhead);
+}
+
 double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
                                  const Footprints& footprints) const {
   const double now = predicted_seconds(layout_, seconds, footprints);

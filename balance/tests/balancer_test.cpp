@@ -329,6 +329,7 @@ TEST(Balancer, PredictsAnotherLayoutAtTheCostsMeasured) {
   const TileLayout own = plan_layout(strips_wall());
   EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), kHeavyTopLeft), 10);  // 7.5 + 2.5 measured
   EXPECT_DOUBLE_EQ(b.predicted_seconds(own, kHeavyTopLeft), 10);         // the same tiles
+  EXPECT_DOUBLE_EQ(b.predicted_work(own, kHeavyTopLeft), 15);            // 7.5 + 2.5 + 2.5 + 2.5
   b.next(kHeavyTopLeft);  // the strips moved toward the heavy tile
   // Even times measured on the moved strips: on them the prediction is what was measured.
   const TileSeconds even = {{2.5, 2.5}, {2.5, 2.5}};

@@ -34,6 +34,9 @@ TEST(LayoutCost, MoreTilesCostTheirOverheadEach) {
   EXPECT_DOUBLE_EQ(predicted_frame_seconds(eight, pixels, overhead), 6);
   // The uniform estimate alone sees no difference.
   EXPECT_DOUBLE_EQ(predicted_frame_seconds(eight, CostEstimate::from_layout(four, even), 0), 5);
+  // The work, both pipeservers summed: 10 on the measured tiles, 12 on twice as many.
+  EXPECT_DOUBLE_EQ(predicted_work_seconds(four, pixels, overhead), 10);
+  EXPECT_DOUBLE_EQ(predicted_work_seconds(eight, pixels, overhead), 12);
 }
 
 }  // namespace

@@ -181,11 +181,16 @@ void LiveBalance::send_layout(PipeserverSet& pipeservers, int frame) {
 // The last frame's times were measured on the balancer's layout: what it took against what the
 // wall's own layout would have.
 void LiveBalance::note_costs() {
-  double slowest = 0;
-  for (const std::vector<double>& tiles : pending_)
-    slowest = std::max(slowest, std::accumulate(tiles.begin(), tiles.end(), 0.0));
+  double slowest = 0, work = 0;
+  for (const std::vector<double>& tiles : pending_) {
+    const double pipeserver = std::accumulate(tiles.begin(), tiles.end(), 0.0);
+    slowest = std::max(slowest, pipeserver);
+    work += pipeserver;
+  }
   slowest_ms_.push_back(slowest * 1e3);
   own_ms_.push_back(balancer_.predicted_seconds(own_, pending_, batches_) * 1e3);
+  work_ms_.push_back(work * 1e3);
+  own_work_ms_.push_back(balancer_.predicted_work(own_, pending_, batches_) * 1e3);
 }
 
 std::string balance_paid_line(const std::vector<double>& slowest_ms,
@@ -200,6 +205,20 @@ std::string balance_paid_line(const std::vector<double>& slowest_ms,
       "balance: {} in render time: the slowest pipeserver took {:.1f} ms a frame (median); the "
       "wall's own layout, {:.1f} ms at the same costs ({:.2f}x)\n",
       verdict, slowest->p50, own->p50, gain);
+}
+
+std::string balance_work_line(const std::vector<double>& work_ms,
+                              const std::vector<double>& own_work_ms) {
+  const std::optional<Spread> work = spread_of(work_ms), own = spread_of(own_work_ms);
+  if (!work || !own || own->p50 <= 0) return {};
+  const double more = work->p50 / own->p50;
+  return fmt::format(
+      "balance: render work {:.1f} ms a frame (median), the wall's own layout {:.1f} ms at the "
+      "same costs ({:.2f}x the work){}\n",
+      work->p50, own->p50, more,
+      more > 1.05 ? "; where pipeservers share cores the work, not the slowest pipeserver, sets "
+                    "the frame rate"
+                  : "");
 }
 
 void LiveBalance::count_strips(const PipeserverSet& pipeservers,
@@ -266,6 +285,7 @@ std::string LiveBalance::summary(int shown) const {
   }
   for (const std::string& line : switches_) s += line;
   s += balance_paid_line(slowest_ms_, own_ms_);
+  s += balance_work_line(work_ms_, own_work_ms_);
   s += pricing();
   if (resisted_ > 0) {
     s += fmt::format(

@@ -76,5 +76,18 @@ TEST(LiveBalance, SaysWhetherBalancingPaid) {
   EXPECT_EQ(balance_paid_line({20}, {20.5}).rfind("balance: no gain in render time: ", 0), 0u);
 }
 
+// The frame's render work, every pipeserver's summed: balancing that splits the costly part
+// draws its geometry in more tiles, and where pipeservers share cores that work is the frame.
+TEST(LiveBalance, SaysWhatBalancingCostInWork) {
+  EXPECT_EQ(balance_work_line({}, {}), "");
+  EXPECT_EQ(balance_work_line({70, 72, 69}, {41, 40, 43}),
+            "balance: render work 70.0 ms a frame (median), the wall's own layout 41.0 ms at the "
+            "same costs (1.71x the work); where pipeservers share cores the work, not the slowest "
+            "pipeserver, sets the frame rate\n");
+  EXPECT_EQ(balance_work_line({40}, {40}),
+            "balance: render work 40.0 ms a frame (median), the wall's own layout 40.0 ms at the "
+            "same costs (1.00x the work)\n");
+}
+
 }  // namespace
 }  // namespace l2

@@ -91,6 +91,9 @@ class Balancer {
   // have taken on the same frame. On layout() itself it is the slowest measured.
   double predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
                            const Footprints& footprints = {}) const;
+  // The same for every pipeserver's time summed: the frame's render work on `candidate`.
+  double predicted_work(const TileLayout& candidate, const TileSeconds& seconds,
+                        const Footprints& footprints = {}) const;
 
   // From the next step on, cut by `mode` (a live run's control page switches it): strips start
   // from even strips, kd from the costs the next step measures, static plans the wall's own

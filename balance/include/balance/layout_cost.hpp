@@ -21,5 +21,9 @@ CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds
 // the same overhead, it is the measured frame time.
 double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,
                                double overhead);
+// Every pipeserver's predicted time on `layout` summed: the frame's render work, which sets the
+// frame rate where pipeservers share cores.
+double predicted_work_seconds(const TileLayout& layout, const CostEstimate& estimate,
+                              double overhead);
 
 }  // namespace l2

@@ -31,6 +31,12 @@ namespace l2 {
 // "no gain" within 5 %); empty for no frames.
 std::string balance_paid_line(const std::vector<double>& slowest_ms,
                               const std::vector<double>& own_ms);
+// The same for the frame's render work, every pipeserver's render time summed: "balance: render
+// work 70.1 ms a frame (median), the wall's own layout 41.0 ms at the same costs (1.71x the
+// work); where pipeservers share cores the work, not the slowest pipeserver, sets the frame rate"
+// (the clause only where balancing added work, by more than 5 %); empty for no frames.
+std::string balance_work_line(const std::vector<double>& work_ms,
+                              const std::vector<double>& own_work_ms);
 
 class LiveBalance {
  public:
@@ -127,7 +133,9 @@ class LiveBalance {
   std::vector<std::string> switches_;  // the mode switches, for the summary
   TileLayout own_;                     // the wall's own layout, frame 0's
   std::vector<double> slowest_ms_;     // by frame measured on a balanced layout, none lost: the
-  std::vector<double> own_ms_;         // slowest render, and the own layout's predicted
+  std::vector<double> own_ms_;         // slowest render, and the own layout's predicted;
+  std::vector<double> work_ms_;        // every render summed, and the own layout's predicted
+  std::vector<double> own_work_ms_;
 };
 
 }  // namespace l2
