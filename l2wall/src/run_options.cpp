@@ -160,10 +160,8 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
   return {};
 }
 
-Status stereo_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
+Status stereo_refusal(const RunOptions& o, const Wall& wall) {
   if (wall.stereo.mode != StereoMode::Active) return {};
-  if (place != RunPlace::OneMachine)
-    return Failure{"--mpi: active stereo walls run on one machine only (not over MPI) yet"};
   // What changes between eye frames from outside (windows moved, a desktop's pixels) could land
   // between a frame's two eyes: each eye would show a different frame.
   if (o.scene == "session" || o.scene == "vnc") {

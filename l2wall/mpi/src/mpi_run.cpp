@@ -171,7 +171,7 @@ int run_wall_mpi(const RunOptions& o) {
   }
   const RunPlace place = launched->keeps_job ? RunPlace::MpiKeepingJob : RunPlace::MpiEndingOnLoss;
   if (const Status s = balance_refusal(o, layout->wall, place); !s.ok()) return refuse(s.reason());
-  if (const Status s = stereo_refusal(o, layout->wall, place); !s.ok()) return refuse(s.reason());
+  if (const Status s = stereo_refusal(o, layout->wall); !s.ok()) return refuse(s.reason());
   if (const Status s = rank_count_error(*map, launched->size); !s.ok()) return refuse(s.reason());
   if (const auto pipeserver = map->pipeserver_of(launched->rank))
     return exec_pipeserver(o, *pipeserver, balanced);

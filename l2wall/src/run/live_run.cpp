@@ -125,8 +125,7 @@ void LiveRun::prepare() {
   if (const Status s = run_options_error(o); !s.ok()) throw std::invalid_argument(s.reason());
   if (const Status s = balance_refusal(o, core_.wall, RunPlace::OneMachine); !s.ok())
     throw LayoutError(s.reason());
-  if (const Status s = stereo_refusal(o, core_.wall, RunPlace::OneMachine); !s.ok())
-    throw LayoutError(s.reason());
+  if (const Status s = stereo_refusal(o, core_.wall); !s.ok()) throw LayoutError(s.reason());
   // The planner refused what no run can use (plan_layout); what it only warns of, tilelayout
   // prints too, in the same words.
   for (const std::string& w : core_.layout.warnings)

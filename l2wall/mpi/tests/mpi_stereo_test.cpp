@@ -1,0 +1,48 @@
+// An active stereo wall under `mpirun ... l2wall run --mpi`: the pipeserver ranks render eye
+// frames as the pipeserver children of a one-machine run do, the column routes them, and the
+// coordinator's DVI path checks every display's eye order from the stamps the column reads.
+// Both paths' displays equal the one-machine run's byte for byte, stamps included.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "mpirun_run.hpp"
+#include "wall_run.hpp"
+
+namespace l2 {
+namespace {
+
+using namespace testing_support;
+
+std::vector<std::string> active_args() {
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-active-2x1.toml";
+  return {"--wall", wall.string(), "--scene", "mesh",      "--frames", "6",  "--refresh",
+          "0",      "--path",      "both",    "--compare", "--keep",   "4,5"};
+}
+
+TEST(MpiStereo, AnActiveWallShowsTheOneMachineRunsEyeFrames) {
+  const MpirunBase base;
+  std::vector<std::string> args = active_args();
+  args.push_back("--mpi");
+  // The coordinator, 2 pipeserver ranks, 1 board column.
+  WallRun mpi("mpi-stereo-active", args, {}, false, mpirun(base, 4));
+  ASSERT_TRUE(wait_mpirun(mpi, base, 180s).ok()) << mpi.output();
+  EXPECT_NE(mpi.output().find("active stereo: stereo pairs: 3, broken: 0: each of 2 display(s) "
+                              "showed every frame's left eye and then its right in the next "
+                              "refresh that changed it"),
+            std::string::npos)
+      << mpi.output();
+  WallRun one("mpi-stereo-active-one", active_args());
+  ASSERT_TRUE(one.wait(120s).ok()) << one.output();
+  for (const int k : {4, 5}) {
+    for (int d = 0; d < 2; ++d) {
+      for (const char* path : {"", "-vizserver"}) {
+        const std::string name = fmt::format("frame-{}/display-{}{}.png", k, d, path);
+        EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
+        EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace l2
