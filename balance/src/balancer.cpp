@@ -259,20 +259,23 @@ BalanceStep Balancer::next(const TileSeconds& seconds, const Footprints& footpri
   return step;
 }
 
-double Balancer::predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
-                                   const Footprints& footprints) const {
+Balancer::Pricing Balancer::pricing(const TileSeconds& seconds,
+                                    const Footprints& footprints) const {
   const TileSeconds measured = with_stand_ins(seconds);
   const double overhead = tile_overhead(measured, settings_.tile_cost);
-  return predicted_frame_seconds(candidate, pixel_estimate(layout_, measured, overhead, footprints),
-                                 overhead);
+  return {pixel_estimate(layout_, measured, overhead, footprints), overhead};
+}
+
+double Balancer::predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
+                                   const Footprints& footprints) const {
+  const Pricing p = pricing(seconds, footprints);
+  return predicted_frame_seconds(candidate, p.estimate, p.overhead);
 }
 
 double Balancer::predicted_work(const TileLayout& candidate, const TileSeconds& seconds,
                                 const Footprints& footprints) const {
-  const TileSeconds measured = with_stand_ins(seconds);
-  const double overhead = tile_overhead(measured, settings_.tile_cost);
-  return predicted_work_seconds(candidate, pixel_estimate(layout_, measured, overhead, footprints),
-                                overhead);
+  const Pricing p = pricing(seconds, footprints);
+  return predicted_work_seconds(candidate, p.estimate, p.overhead);
 }
 
 double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,

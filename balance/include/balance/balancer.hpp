@@ -102,6 +102,13 @@ class Balancer {
   void switch_mode(BalanceMode mode);
 
  private:
+  // What the last frame's tile times, measured on layout(), say a tile costs: by its pixels
+  // (and footprints), plus a fixed part a tile.
+  struct Pricing {
+    CostEstimate estimate;
+    double overhead = 0;
+  };
+  Pricing pricing(const TileSeconds& seconds, const Footprints& footprints) const;
   TileLayout plan(const Wall& wall, const CostEstimate* estimate) const;
   // The predicted frame time of `candidate` over the last frame's, measured on layout().
   double predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
