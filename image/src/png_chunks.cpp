@@ -44,6 +44,12 @@ Result<PngLayout> png_layout(const char* path) {
   struct stat status {};
   if (!file || ::fstat(::fileno(file.get()), &status) != 0) return Failure{"cannot read"};
   const auto size = static_cast<std::uint64_t>(status.st_size);
+  // Its first four bytes say PNG (is_png): the rest of the signature damaged is libpng's words.
+  unsigned char signature[8] = {};
+  if (std::fread(signature, 1, 8, file.get()) == 8 &&
+      std::memcmp(signature, "\x89PNG\r\n\x1a\n", 8) != 0) {
+    return Failure{"cannot read: a damaged PNG (PNG file corrupted by ASCII conversion)"};
+  }
   PngLayout layout;
   bool header = false, idat_ended = false, end = false;
   for (std::uint64_t at = 8; at < size;) {

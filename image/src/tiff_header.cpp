@@ -63,6 +63,17 @@ std::string compression_name(std::uint64_t scheme) {
   }
 }
 
+// Every compression scheme libtiff has a number for (tiff.h's COMPRESSION_*), decoder or not.
+// A scheme outside them no reader decodes; OpenImageIO still sized a buffer for such a file by
+// its RowsPerStrip (45 GB asked by a 273-byte file) before saying so.
+bool scheme_libtiff_knows(std::uint64_t scheme) {
+  static constexpr std::uint64_t kKnown[] = {1,     2,     3,     4,     5,     6,     7,     8,
+                                             32766, 32771, 32773, 32809, 32895, 32896, 32897, 32898,
+                                             32908, 32909, 32946, 32947, 34661, 34676, 34677, 34712,
+                                             34887, 34925, 50000, 50001, 50002};
+  return std::find(std::begin(kKnown), std::end(kKnown), scheme) != std::end(kKnown);
+}
+
 long long side(std::uint64_t v) {
   return static_cast<long long>(std::min<std::uint64_t>(v, LLONG_MAX));
 }
@@ -103,6 +114,7 @@ Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entrie
         break;
       case kCompression:
         d.compression = compression_name(value);
+        if (!scheme_libtiff_knows(value)) d.compression = "unknown " + d.compression;
         break;
       case kSamplesPerPixel:
         d.channels = static_cast<int>(std::min<std::uint64_t>(value, INT_MAX));
@@ -168,6 +180,11 @@ Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
     if ((d.tile_width == 0) != (d.tile_height == 0)) {
       return Failure{"cannot read: " + which + "declares tiles of " + std::to_string(d.tile_width) +
                      "x" + std::to_string(d.tile_height) + " pixels"};
+    }
+    if (d.compression.rfind("unknown ", 0) == 0) {
+      return Failure{"cannot read: " + which + "a TIFF compressed by scheme " +
+                     d.compression.substr(d.compression.rfind(' ') + 1) +
+                     ", which no TIFF reader knows"};
     }
     if (d.width == 0 || d.height == 0) continue;
     const Status s = check_declared(d, file_size);

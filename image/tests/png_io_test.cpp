@@ -1,5 +1,7 @@
 #include "image/png_io.hpp"
 
+#include "image/picture_regions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -280,6 +282,39 @@ TEST(PngIo, DamagedPngSaysWhyAndPrintsNothing) {
             truncated.string() + ": cannot read: the PNG file ends early (truncated)");
   EXPECT_EQ(crc_error, bad_crc.string() + ": cannot read: a damaged PNG (IHDR: CRC error)");
   EXPECT_EQ(printed, "");
+}
+
+// A PNG whose line ends were converted in transfer (its signature's CR LF made LF): under a name
+// another reader takes first (.dds, found by fuzz_picture_file), OpenImageIO's PNG reader, tried
+// after it, printed libpng's line "libpng error: PNG file corrupted by ASCII conversion" on its
+// own, and the image cache glued it to the end of our line. Both readers now take a file whose
+// first four bytes say PNG as one: our line alone.
+TEST(PngIo, APngWithConvertedLineEndsIsRefusedInOneLineWhateverItsName) {
+  const auto good = temp_dir() / "line-ends.png";
+  write_png(good, RgbImage(8, 8, {1, 2, 3}));
+  std::string bytes;
+  {
+    std::ifstream file(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(file), {});
+  }
+  bytes.erase(4, 1);  // "\x89PNG\r\n\x1a\n": the CR gone
+  for (const char* name : {"converted.png", "converted.dds", "converted.tga"}) {
+    const auto path = temp_dir() / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    const std::string want =
+        path.string() + ": cannot read: a damaged PNG (PNG file corrupted by ASCII conversion)";
+    ::testing::internal::CaptureStderr();
+    EXPECT_EQ(read_error(path), want);
+    std::string regions_error;
+    try {
+      const PictureRegions regions(path);
+    } catch (const std::runtime_error& e) {
+      regions_error = e.what();
+    }
+    const std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(regions_error, want);
+    EXPECT_EQ(printed, "") << name;
+  }
 }
 
 // A PPM that ends before its pixels: OpenImageIO fails it without a reason, and the message was

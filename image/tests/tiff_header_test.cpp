@@ -159,6 +159,30 @@ TEST(TiffHeader, EveryLevelOfAPyramidIsChecked) {
       << why;
 }
 
+// A compression scheme no TIFF reader knows (768, found by fuzz_picture_file): its reader
+// sized a buffer by the file's RowsPerStrip, 45 GB for this 8x8 picture, before saying it could
+// not decode it. Refused from the header; a scheme libtiff knows is the reader's to judge.
+TEST(TiffHeader, ASchemeNoReaderKnowsIsRefused) {
+  for (const std::uint64_t scheme : {768, 50002}) {
+    std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+    directory(f,
+              {{256, 4, 1, 8},
+               {257, 4, 1, 8},
+               {258, 3, 1, 8},
+               {259, 3, 1, scheme},
+               {277, 3, 1, 3},
+               {278, 4, 1, 1885995016}},
+              0, false, false);
+    const Status s = check_tiff(reader(f), f.size());
+    if (scheme == 768) {
+      EXPECT_EQ(s.reason(),
+                "cannot read: a TIFF compressed by scheme 768, which no TIFF reader knows");
+    } else {
+      EXPECT_TRUE(s.ok()) << s.reason();  // JPEG XL: libtiff has its number
+    }
+  }
+}
+
 TEST(TiffHeader, OtherBytesAreNoTiff) {
   for (const std::string& f : {std::string("P6\n8 8\n255\n"), std::string("II*"), std::string()}) {
     EXPECT_FALSE(tiff_facts(reader(f), f.size()).tiff) << f;
