@@ -256,6 +256,14 @@ picture("grey-8x8.jpg", bytes.fromhex(
 picture("rgb-8x8.tif", tiff(8, 8, data=bytes(range(192))))
 picture("tiled-16x16.tif", tiff(16, 16, tile=16, data=bytes(768)))
 picture("pages-8x8.tif", tiff(8, 8, pages=3))
+# Findings kept as seeds: compression scheme 768 (no reader knows it) with RowsPerStrip 1885995016,
+# which its reader sized a 45 GB buffer by; a PNG whose signature's CR was lost in transfer,
+# named .dds, which let another reader print libpng's own line.
+picture("unknown-scheme-8x8.tif", tiff(8, 8, data=bytes(range(192)))
+        .replace(struct.pack("<HHIHH", 259, 3, 1, 1, 0), struct.pack("<HHIHH", 259, 3, 1, 768, 0))
+        .replace(struct.pack("<HHII", 278, 4, 1, 8), struct.pack("<HHII", 278, 4, 1, 1885995016)))
+picture("line-ends-4x4.dds",
+        png(4, 4, 2, 8, [rgb_4x4[12 * y:12 * y + 12] for y in range(4)]).replace(b"\r\n", b"\n", 1))
 bmp_rows = b"".join(rgb_4x4[12 * y:12 * y + 12] for y in range(4))  # 12 bytes: no padding
 picture("rgb-4x4.bmp", b"BM" + struct.pack("<IHHI", 54 + len(bmp_rows), 0, 0, 54) +
         struct.pack("<IiiHHIIiiII", 40, 4, 4, 1, 24, 0, len(bmp_rows), 2835, 2835, 0, 0) + bmp_rows)
