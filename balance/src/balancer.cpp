@@ -266,22 +266,17 @@ Balancer::Pricing Balancer::pricing(const TileSeconds& seconds,
   return {pixel_estimate(layout_, measured, overhead, footprints), overhead};
 }
 
-double Balancer::predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
-                                   const Footprints& footprints) const {
+FramePrediction Balancer::predicted(const TileLayout& candidate, const TileSeconds& seconds,
+                                    const Footprints& footprints) const {
   const Pricing p = pricing(seconds, footprints);
-  return predicted_frame_seconds(candidate, p.estimate, p.overhead);
-}
-
-double Balancer::predicted_work(const TileLayout& candidate, const TileSeconds& seconds,
-                                const Footprints& footprints) const {
-  const Pricing p = pricing(seconds, footprints);
-  return predicted_work_seconds(candidate, p.estimate, p.overhead);
+  return predict_frame(candidate, p.estimate, p.overhead);
 }
 
 double Balancer::predicted_ratio(const TileLayout& candidate, const TileSeconds& seconds,
                                  const Footprints& footprints) const {
-  const double now = predicted_seconds(layout_, seconds, footprints);
-  return now > 0 ? predicted_seconds(candidate, seconds, footprints) / now : 1;
+  const Pricing p = pricing(seconds, footprints);
+  const double now = predict_frame(layout_, p.estimate, p.overhead).slowest;
+  return now > 0 ? predict_frame(candidate, p.estimate, p.overhead).slowest / now : 1;
 }
 
 }  // namespace l2

@@ -23,30 +23,16 @@ CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds
   return CostEstimate::from_layout(layout, rest, footprints);
 }
 
-namespace {
-
-double pipeserver_seconds(const PipeserverPlan& p, const CostEstimate& estimate, double overhead) {
-  double sum = 0;
-  for (const PackedTile& t : p.tiles) sum += overhead + estimate.cost(t.tile.on_canvas);
-  return sum;
-}
-
-}  // namespace
-
-double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,
-                               double overhead) {
-  double slowest = 0;
-  for (const PipeserverPlan& p : layout.pipeservers)
-    slowest = std::max(slowest, pipeserver_seconds(p, estimate, overhead));
-  return slowest;
-}
-
-double predicted_work_seconds(const TileLayout& layout, const CostEstimate& estimate,
+FramePrediction predict_frame(const TileLayout& layout, const CostEstimate& estimate,
                               double overhead) {
-  double work = 0;
-  for (const PipeserverPlan& p : layout.pipeservers)
-    work += pipeserver_seconds(p, estimate, overhead);
-  return work;
+  FramePrediction f;
+  for (const PipeserverPlan& p : layout.pipeservers) {
+    double sum = 0;
+    for (const PackedTile& t : p.tiles) sum += overhead + estimate.cost(t.tile.on_canvas);
+    f.slowest = std::max(f.slowest, sum);
+    f.work += sum;
+  }
+  return f;
 }
 
 }  // namespace l2

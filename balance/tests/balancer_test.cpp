@@ -327,13 +327,13 @@ TEST(Balancer, ALostPipeserverMovesTilesWhateverTheResistance) {
 TEST(Balancer, PredictsAnotherLayoutAtTheCostsMeasured) {
   Balancer b(strips_wall(), strips());
   const TileLayout own = plan_layout(strips_wall());
-  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), kHeavyTopLeft), 10);  // 7.5 + 2.5 measured
-  EXPECT_DOUBLE_EQ(b.predicted_seconds(own, kHeavyTopLeft), 10);         // the same tiles
-  EXPECT_DOUBLE_EQ(b.predicted_work(own, kHeavyTopLeft), 15);            // 7.5 + 2.5 + 2.5 + 2.5
+  EXPECT_DOUBLE_EQ(b.predicted(b.layout(), kHeavyTopLeft).slowest, 10);  // 7.5 + 2.5 measured
+  EXPECT_DOUBLE_EQ(b.predicted(own, kHeavyTopLeft).slowest, 10);         // the same tiles
+  EXPECT_DOUBLE_EQ(b.predicted(own, kHeavyTopLeft).work, 15);            // 7.5 + 2.5 + 2.5 + 2.5
   b.next(kHeavyTopLeft);  // the strips moved toward the heavy tile
   // Even times measured on the moved strips: on them the prediction is what was measured.
   const TileSeconds even = {{2.5, 2.5}, {2.5, 2.5}};
-  EXPECT_DOUBLE_EQ(b.predicted_seconds(b.layout(), even), 5);
+  EXPECT_DOUBLE_EQ(b.predicted(b.layout(), even).slowest, 5);
 }
 
 TEST(Balancer, ResistanceAndTileCostAreFractions) {

@@ -17,9 +17,8 @@ TEST(LayoutCost, TheMeasuredLayoutPredictsItsOwnFrame) {
   EXPECT_DOUBLE_EQ(overhead, 0.2 * 15 / 4);
   const CostEstimate pixels = pixel_estimate(layout, kTimes, overhead);
   EXPECT_DOUBLE_EQ(pixels.total(), 15 - 4 * overhead);
-  EXPECT_DOUBLE_EQ(predicted_frame_seconds(layout, pixels, overhead), 10);
-  EXPECT_DOUBLE_EQ(predicted_frame_seconds(layout, CostEstimate::from_layout(layout, kTimes), 0),
-                   10);
+  EXPECT_DOUBLE_EQ(predict_frame(layout, pixels, overhead).slowest, 10);
+  EXPECT_DOUBLE_EQ(predict_frame(layout, CostEstimate::from_layout(layout, kTimes), 0).slowest, 10);
 }
 
 TEST(LayoutCost, MoreTilesCostTheirOverheadEach) {
@@ -31,12 +30,12 @@ TEST(LayoutCost, MoreTilesCostTheirOverheadEach) {
   const double overhead = tile_overhead(even, 0.2);  // 0.5 of each tile's 2.5
   const CostEstimate pixels = pixel_estimate(four, even, overhead);
   // The same pixels in twice the tiles: 8 + 4 x 0.5 a pipeserver, not the 5 they cost now.
-  EXPECT_DOUBLE_EQ(predicted_frame_seconds(eight, pixels, overhead), 6);
+  EXPECT_DOUBLE_EQ(predict_frame(eight, pixels, overhead).slowest, 6);
   // The uniform estimate alone sees no difference.
-  EXPECT_DOUBLE_EQ(predicted_frame_seconds(eight, CostEstimate::from_layout(four, even), 0), 5);
+  EXPECT_DOUBLE_EQ(predict_frame(eight, CostEstimate::from_layout(four, even), 0).slowest, 5);
   // The work, both pipeservers summed: 10 on the measured tiles, 12 on twice as many.
-  EXPECT_DOUBLE_EQ(predicted_work_seconds(four, pixels, overhead), 10);
-  EXPECT_DOUBLE_EQ(predicted_work_seconds(eight, pixels, overhead), 12);
+  EXPECT_DOUBLE_EQ(predict_frame(four, pixels, overhead).work, 10);
+  EXPECT_DOUBLE_EQ(predict_frame(eight, pixels, overhead).work, 12);
 }
 
 }  // namespace

@@ -187,10 +187,11 @@ void LiveBalance::note_costs() {
     slowest = std::max(slowest, pipeserver);
     work += pipeserver;
   }
+  const FramePrediction own = balancer_.predicted(own_, pending_, batches_);
   slowest_ms_.push_back(slowest * 1e3);
-  own_ms_.push_back(balancer_.predicted_seconds(own_, pending_, batches_) * 1e3);
+  own_ms_.push_back(own.slowest * 1e3);
   work_ms_.push_back(work * 1e3);
-  own_work_ms_.push_back(balancer_.predicted_work(own_, pending_, batches_) * 1e3);
+  own_work_ms_.push_back(own.work * 1e3);
 }
 
 std::string balance_paid_line(const std::vector<double>& slowest_ms,

@@ -10,6 +10,7 @@
 
 #include "balance/cost_estimate.hpp"
 #include "balance/edge_motion.hpp"
+#include "balance/layout_cost.hpp"
 #include "balance/strip_edges.hpp"
 #include "tilelayout/tile_layout.hpp"
 
@@ -88,12 +89,10 @@ class Balancer {
 
   // The slowest pipeserver's predicted time on `candidate` at the costs `seconds` measured on
   // layout() (a frame's times, as next() takes them): what another layout, the wall's own, would
-  // have taken on the same frame. On layout() itself it is the slowest measured.
-  double predicted_seconds(const TileLayout& candidate, const TileSeconds& seconds,
-                           const Footprints& footprints = {}) const;
-  // The same for every pipeserver's time summed: the frame's render work on `candidate`.
-  double predicted_work(const TileLayout& candidate, const TileSeconds& seconds,
-                        const Footprints& footprints = {}) const;
+  // have taken on the same frame, and every pipeserver's time summed (the frame's render work).
+  // On layout() itself they are the slowest and the sum measured.
+  FramePrediction predicted(const TileLayout& candidate, const TileSeconds& seconds,
+                            const Footprints& footprints = {}) const;
 
   // From the next step on, cut by `mode` (a live run's control page switches it): strips start
   // from even strips, kd from the costs the next step measures, static plans the wall's own

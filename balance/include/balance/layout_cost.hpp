@@ -16,14 +16,16 @@ double tile_overhead(const TileSeconds& seconds, double fraction);
 CostEstimate pixel_estimate(const TileLayout& layout, const TileSeconds& seconds, double overhead,
                             const Footprints& footprints = {});
 
-// The slowest pipeserver's predicted time on `layout`: per display tile, `overhead` plus its
-// pixels' (and footprints') cost under `estimate`. On the layout the estimate was measured on, with
-// the same overhead, it is the measured frame time.
-double predicted_frame_seconds(const TileLayout& layout, const CostEstimate& estimate,
-                               double overhead);
-// Every pipeserver's predicted time on `layout` summed: the frame's render work, which sets the
-// frame rate where pipeservers share cores.
-double predicted_work_seconds(const TileLayout& layout, const CostEstimate& estimate,
+// A layout's predicted render times, each pipeserver's the sum over its display tiles of
+// `overhead` plus the tile's pixels' (and footprints') cost under `estimate`: the slowest
+// pipeserver's (the frame, where each has cores of its own; on the layout the estimate was
+// measured on, with the same overhead, the measured frame time) and all of them summed (the
+// frame's render work, which sets the frame rate where pipeservers share cores).
+struct FramePrediction {
+  double slowest = 0;
+  double work = 0;
+};
+FramePrediction predict_frame(const TileLayout& layout, const CostEstimate& estimate,
                               double overhead);
 
 }  // namespace l2
