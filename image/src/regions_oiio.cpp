@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <memory>
 #include <string>
@@ -15,6 +14,7 @@
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
 #include "png_chunks.hpp"
+#include "png_read.hpp"
 
 namespace l2::png_codec {
 
@@ -118,12 +118,10 @@ class CacheRegions final : public RegionReader {
 // `rows`, its rows decoded (check_png_data): nothing for another format; else the megabytes it
 // decodes to as stored, or why it cannot be read.
 Result<double> png_megabytes(const char* path, bool rows) {
-  unsigned char signature[8] = {};
-  if (std::FILE* file = std::fopen(path, "rb")) {
-    std::fread(signature, 1, sizeof signature, file);
-    std::fclose(file);
+  {
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
+    if (!file || !is_png(file.get())) return 0.0;  // damaged in transfer too: png_layout says so
   }
-  if (std::memcmp(signature, "\x89PNG", 4) != 0) return 0.0;  // as is_png: damaged ones too
   const Result<PngLayout> png = png_layout(path);
   if (!png.ok()) return Failure{png.reason()};
   const double megabytes = png->decoded_bytes() / (1 << 20);

@@ -90,10 +90,12 @@ std::uint64_t first_value(const Layout& l, std::string_view entry, const ReadAt&
   return l.order.at(read(l.order.at(entry, value_at, l.offset_bytes()), size), 0, size);
 }
 
-// A directory's entries as Declared (at most the 65535 entries libtiff reads).
+// A directory's entries as Declared (at most the 65535 entries libtiff reads), and its
+// compression scheme's number (`scheme`: 1, none, where it gives none).
 Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entries,
-                         const ReadAt& read) {
+                         const ReadAt& read, std::uint64_t& scheme) {
   Declared d;
+  scheme = 1;
   d.format = "tiff";
   d.compression = "none";
   d.channels = 1;
@@ -114,7 +116,7 @@ Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entrie
         break;
       case kCompression:
         d.compression = compression_name(value);
-        if (!scheme_libtiff_knows(value)) d.compression = "unknown " + d.compression;
+        scheme = value;
         break;
       case kSamplesPerPixel:
         d.channels = static_cast<int>(std::min<std::uint64_t>(value, INT_MAX));
@@ -157,7 +159,9 @@ TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size) {
     const std::uint64_t entries = l.order.at(read(at, l.count_bytes()), 0, l.count_bytes());
     const std::uint64_t end = at + l.count_bytes() + entries * l.entry_bytes();
     if (entries == 0 || entries > 65535 || end + l.offset_bytes() > file_size) break;
-    facts.each.push_back(directory_facts(l, at, entries, read));
+    std::uint64_t scheme = 1;
+    facts.each.push_back(directory_facts(l, at, entries, read, scheme));
+    facts.schemes.push_back(scheme);
     if (facts.directories == 0) facts.first = facts.each.front();
     ++facts.directories;
     at = l.order.at(read(end, l.offset_bytes()), 0, l.offset_bytes());
@@ -181,10 +185,9 @@ Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
       return Failure{"cannot read: " + which + "declares tiles of " + std::to_string(d.tile_width) +
                      "x" + std::to_string(d.tile_height) + " pixels"};
     }
-    if (d.compression.rfind("unknown ", 0) == 0) {
+    if (!scheme_libtiff_knows(facts.schemes[i])) {
       return Failure{"cannot read: " + which + "a TIFF compressed by scheme " +
-                     d.compression.substr(d.compression.rfind(' ') + 1) +
-                     ", which no TIFF reader knows"};
+                     std::to_string(facts.schemes[i]) + ", which no TIFF reader knows"};
     }
     if (d.width == 0 || d.height == 0) continue;
     const Status s = check_declared(d, file_size);

@@ -35,6 +35,7 @@ struct TiffFacts {
   // Every directory's declaration, the first included: a pyramid's levels (or a file's pages),
   // each read by the image cache when the view asks for it.
   std::vector<Declared> each;
+  std::vector<std::uint64_t> schemes;  // by directory, its compression scheme's number
 };
 TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size);
 
