@@ -56,12 +56,12 @@ Heard read_liveness(int fd, int* exit_code) {
   return h;
 }
 
-void send_liveness(int fd, char byte) {
-  send(fd, &byte, 1, MSG_DONTWAIT | MSG_NOSIGNAL);
-}
-
 void send_liveness(int fd, std::string_view word) {
   send(fd, word.data(), word.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+}
+
+void send_liveness(int fd, char byte) {
+  send_liveness(fd, std::string_view(&byte, 1));
 }
 
 }  // namespace l2
