@@ -23,6 +23,14 @@ std::filesystem::path temp_dir() {
   return dir;
 }
 
+// The bytes of a file written by write_png, to be damaged.
+std::string png_bytes(const RgbImage& image) {
+  const auto path = temp_dir() / "written.png";
+  write_png(path, image);
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), {}};
+}
+
 TEST(PngIo, RoundTripIsExact) {
   RgbImage img(17, 5);
   for (int y = 0; y < 5; ++y)
@@ -260,13 +268,7 @@ TEST(PngIo, VolumeImageNamedPngIsRefusedNotReadPastThePicture) {
 // A damaged PNG: libpng printed "libpng error: ..." on stderr itself, and the error held
 // OpenImageIO's lines ("PNG read error: ...", "PNG library error"). Now the reason alone.
 TEST(PngIo, DamagedPngSaysWhyAndPrintsNothing) {
-  const auto good = temp_dir() / "good.png";
-  write_png(good, RgbImage(64, 16, {1, 2, 3}));
-  std::string bytes;
-  {
-    std::ifstream file(good, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(file), {});
-  }
+  const std::string bytes = png_bytes(RgbImage(64, 16, {1, 2, 3}));
   const auto truncated = temp_dir() / "truncated.png";
   std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() - 20);
   std::string bad = bytes;
@@ -290,13 +292,7 @@ TEST(PngIo, DamagedPngSaysWhyAndPrintsNothing) {
 // own, and the image cache glued it to the end of our line. Both readers now take a file whose
 // first four bytes say PNG as one: our line alone.
 TEST(PngIo, APngWithConvertedLineEndsIsRefusedInOneLineWhateverItsName) {
-  const auto good = temp_dir() / "line-ends.png";
-  write_png(good, RgbImage(8, 8, {1, 2, 3}));
-  std::string bytes;
-  {
-    std::ifstream file(good, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(file), {});
-  }
+  std::string bytes = png_bytes(RgbImage(8, 8, {1, 2, 3}));
   bytes.erase(4, 1);  // "\x89PNG\r\n\x1a\n": the CR gone
   for (const char* name : {"converted.png", "converted.dds", "converted.tga"}) {
     const auto path = temp_dir() / name;

@@ -21,6 +21,24 @@ long pixels_differing(const RgbImage& a, const RgbImage& b) {
   return differ;
 }
 
+// Each of `displays` displays of frame `k` the run kept, on both paths, byte for byte as the
+// pipeserver program renders it alone as that display's reference.
+void expect_as_references(const WallRun& run, const fs::path& wall, int k, int displays) {
+  const fs::path references = run.out().parent_path() / fmt::format("references-{}", k);
+  ChildProcess reference({PIPESERVER_EXE, "--wall", wall.string(), "--scene", "mesh", "--frame",
+                          std::to_string(k), "--reference", references.string()});
+  const auto ended = reference.wait_for(120s);
+  ASSERT_TRUE(ended && ended->ok()) << (ended ? ended->describe() : "did not end");
+  const fs::path shown = run.out() / fmt::format("frame-{}", k);
+  for (int d = 0; d < displays; ++d) {
+    const RgbImage want = read_png(references / fmt::format("display-{}.png", d));
+    EXPECT_TRUE(read_png(shown / fmt::format("display-{}.png", d)) == want)
+        << "frame " << k << ", display " << d;
+    EXPECT_TRUE(read_png(shown / fmt::format("display-{}-vizserver.png", d)) == want)
+        << "frame " << k << ", display " << d;
+  }
+}
+
 TEST(LiveRunStereo, PassiveTwinsShowTheirOwnEyeOfTheSameFrame) {
   const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-passive-2x1.toml";
   const int frames = 3, k = frames - 1;
@@ -34,21 +52,9 @@ TEST(LiveRunStereo, PassiveTwinsShowTheirOwnEyeOfTheSameFrame) {
             std::string::npos)
       << run.output();
 
-  // Each display's reference render of frame k by the pipeserver program alone.
-  const fs::path references = run.out().parent_path() / "references";
-  ChildProcess reference({PIPESERVER_EXE, "--wall", wall.string(), "--scene", "mesh", "--frame",
-                          std::to_string(k), "--reference", references.string()});
-  const auto ended = reference.wait_for(120s);
-  ASSERT_TRUE(ended && ended->ok()) << (ended ? ended->describe() : "did not end");
-
-  const fs::path shown = run.out() / fmt::format("frame-{}", k);
-  for (int d = 0; d < 4; ++d) {
-    const RgbImage want = read_png(references / fmt::format("display-{}.png", d));
-    EXPECT_TRUE(read_png(shown / fmt::format("display-{}.png", d)) == want) << "display " << d;
-    EXPECT_TRUE(read_png(shown / fmt::format("display-{}-vizserver.png", d)) == want)
-        << "display " << d;
-  }
+  expect_as_references(run, wall, k, 4);
   // Twins 0 (left) and 2 (right) show one canvas rectangle, from eyes 0.1 scene units apart.
+  const fs::path shown = run.out() / fmt::format("frame-{}", k);
   const RgbImage left = read_png(shown / "display-0.png"),
                  right = read_png(shown / "display-2.png");
   EXPECT_GT(pixels_differing(left, right), 1000);
@@ -74,21 +80,7 @@ TEST(LiveRunStereo, ActiveDisplaysShowEachFramesLeftThenRightEye) {
             std::string::npos)
       << run.output();
 
-  for (const int k : {4, 5}) {
-    const fs::path references = run.out().parent_path() / fmt::format("references-{}", k);
-    ChildProcess reference({PIPESERVER_EXE, "--wall", wall.string(), "--scene", "mesh", "--frame",
-                            std::to_string(k), "--reference", references.string()});
-    const auto ended = reference.wait_for(120s);
-    ASSERT_TRUE(ended && ended->ok()) << (ended ? ended->describe() : "did not end");
-    const fs::path shown = run.out() / fmt::format("frame-{}", k);
-    for (int d = 0; d < 2; ++d) {
-      const RgbImage want = read_png(references / fmt::format("display-{}.png", d));
-      EXPECT_TRUE(read_png(shown / fmt::format("display-{}.png", d)) == want)
-          << "eye frame " << k << ", display " << d;
-      EXPECT_TRUE(read_png(shown / fmt::format("display-{}-vizserver.png", d)) == want)
-          << "eye frame " << k << ", display " << d;
-    }
-  }
+  for (const int k : {4, 5}) expect_as_references(run, wall, k, 2);
   // report.csv's rows are eye frames, each saying its eye.
   const std::string csv = slurp(run.out() / "report.csv");
   EXPECT_NE(csv.find(",eye\n0,"), std::string::npos) << csv;

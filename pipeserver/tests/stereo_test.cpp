@@ -94,10 +94,10 @@ std::vector<RgbImage> reassembled(const TileLayout& layout, Scene& scene, int fr
 double measured_parallax(float z, const std::string& mode = "passive") {
   const TileLayout layout = stereo_layout(mode);
   auto scene = square_at(z);
-  const RgbImage left_eye =
-      mode == "passive" ? reassembled(layout, *scene, 0)[0] : reassembled(layout, *scene, 2)[0];
-  const RgbImage right_eye =
-      mode == "passive" ? reassembled(layout, *scene, 0)[1] : reassembled(layout, *scene, 3)[0];
+  const bool passive = mode == "passive";
+  const std::vector<RgbImage> first = reassembled(layout, *scene, passive ? 0 : 2);
+  const RgbImage& left_eye = first[0];
+  const RgbImage right_eye = passive ? first[1] : reassembled(layout, *scene, 3)[0];
   const auto [left, left_count] = centre_x(left_eye);
   const auto [right, right_count] = centre_x(right_eye);
   // A square some 60 pixels a side or more, whole in both eyes.
