@@ -199,8 +199,10 @@ own_error() {
 }
 own_error
 
-# The coordinator (rank 0) killed: nobody is left to name it but mpirun, which does (without -q)
-# and ends every other rank; nothing of the run is left, on this host or in /dev/shm.
+# The coordinator (rank 0) killed: it is named by mpirun (without -q), or, when the other ranks
+# see its connection close before mpirun sees it die (then mpirun reports their exit instead), by
+# those ranks in their lines naming rank 0 (liveness.hpp); every rank ends, and nothing of the run
+# is left, on this host or in /dev/shm.
 coordinator_killed() {
   local dir="$out/KILL-0-6"
   "${mpirun_local[@]}" -np 6 "$l2wall" run --mpi --frames 100000 --stall-timeout $stall_ms \
@@ -215,8 +217,11 @@ coordinator_killed() {
   pids=$(pgrep -f -- "$dir" || true)
   [[ -n $pid ]] || { echo "FAIL: no process of rank 0"; kill "$run"; exit 1; }
   signal_and_wait KILL "$pid" "$run" "$dir" "KILL rank 0 (coordinator, -np 6)"
+  local lost="^l2wall: rank [1-5] on [^:]*: lost the coordinator (rank 0 on [^)]*): its connection"
+  lost+=" closed (killed or crashed); this rank ends$"
   grep -q "mpirun noticed that process rank 0 with PID [0-9]* on node [^ ]* exited on signal 9" "$dir.err" ||
-    { echo "FAIL: mpirun did not name rank 0:"; cat "$dir.err"; exit 1; }
+    grep -q "$lost" "$dir.err" ||
+    { echo "FAIL: rank 0 named neither by mpirun nor by another rank:"; cat "$dir.err"; exit 1; }
   nothing_left "$dir" "$pids"
 }
 coordinator_killed
