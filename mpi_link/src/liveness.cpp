@@ -60,6 +60,18 @@ void send_liveness(int fd, std::string_view word) {
   send(fd, word.data(), word.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
 }
 
+void send_last_word(int fd, std::string_view word) {
+  std::array<char, 256> buffer{};
+  for (int i = 0; i < 64 && recv(fd, buffer.data(), buffer.size(), MSG_DONTWAIT) > 0; ++i) {
+  }
+  send_liveness(fd, word);
+  shutdown(fd, SHUT_WR);
+}
+
+void send_last_word(int fd, char byte) {
+  send_last_word(fd, std::string_view(&byte, 1));
+}
+
 void send_liveness(int fd, char byte) {
   send_liveness(fd, std::string_view(&byte, 1));
 }

@@ -143,7 +143,7 @@ void MpiSession::say_ended() {
   }
   // An end, not a death: the other end no longer takes this connection's close as a fault.
   for (const Fd& fd : liveness_)
-    if (fd) send_liveness(fd.get(), kLivenessEnded);
+    if (fd) send_last_word(fd.get(), kLivenessEnded);
   liveness_.clear();
 }
 
@@ -263,7 +263,8 @@ void MpiSession::accept_liveness(const Fd& listener, MPI_Request& gathered,
     std::int32_t who = -1;
     if (recv(fd.get(), &who, sizeof who, MSG_WAITALL) != sizeof who || who <= 0 || who >= size_ ||
         liveness_[static_cast<std::size_t>(who)])
-      continue;  // not one of our ranks: dropped
+      continue;             // not one of our ranks: dropped
+    set_nodelay(fd.get());  // a word must not wait behind an unacknowledged pulse
     liveness_[static_cast<std::size_t>(who)] = std::move(fd);
     ++connected;
   }
@@ -330,7 +331,7 @@ void MpiSession::end_stopped(int code) {
   std::fflush(stdout);
   std::fflush(stderr);
   for (const Fd& fd : liveness_)
-    if (fd) send_liveness(fd.get(), kLivenessStopped);
+    if (fd) send_last_word(fd.get(), kLivenessStopped);
   std::_Exit(code);
 }
 
@@ -345,13 +346,13 @@ void MpiSession::abort_all(int code) {
     // The other ranks end without a line of their own: the fault is named.
     if (MpiSession* session = live_session)
       for (const Fd& fd : session->liveness_)
-        if (fd) send_liveness(fd.get(), kLivenessAborting);
+        if (fd) send_last_word(fd.get(), kLivenessAborting);
     end_job();
   } else if (MpiSession* session = live_session; session && !session->liveness_.empty()) {
     // Its own line is out (stderr): the coordinator names it by its exit code, as a crash it
     // is not.
     std::fflush(stderr);
-    if (const Fd& fd = session->liveness_.front()) send_liveness(fd.get(), failed_word(code));
+    if (const Fd& fd = session->liveness_.front()) send_last_word(fd.get(), failed_word(code));
   }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler

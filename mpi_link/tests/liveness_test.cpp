@@ -2,8 +2,15 @@
 #include "mpi_link/liveness.hpp"
 
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <string>
+
+#include "base/fd.hpp"
+#include "base/socket.hpp"
 
 namespace l2 {
 namespace {
@@ -79,6 +86,46 @@ TEST(Liveness, ReadsAFailedWordAndItsCode) {
   EXPECT_EQ(read_liveness(fds[0], &code), Heard::failed);
   EXPECT_EQ(code, 4);
   close(fds[0]);
+}
+
+// Everything `fd` receives until its end (blocking, a second at most a read); `reset` tells
+// whether that end was a reset rather than the peer's orderly close.
+std::string read_to_end(int fd, bool& reset) {
+  std::string bytes;
+  char c[64];
+  for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 1000) <= 0) break;
+    const ssize_t n = recv(fd, c, sizeof c, MSG_DONTWAIT);
+    if (n > 0) {
+      bytes.append(c, static_cast<std::size_t>(n));
+      continue;
+    }
+    reset = n < 0 && errno == ECONNRESET;
+    break;
+  }
+  return bytes;
+}
+
+// The coordinator's last word while the rank's pulses lie unread on its end (as they do once
+// its watch has stopped): closed right after, the connection must end in order (FIN), not in a
+// reset, which would throw away a word not yet on the wire and leave the rank to take the end
+// for a crash.
+TEST(Liveness, ALastWordEndsTheConnectionInOrderOverUnreadPulses) {
+  const Fd listener = listen_tcp("127.0.0.1", 0);
+  const Fd rank = connect_tcp("127.0.0.1", local_port(listener.get()), milliseconds(3000), "test");
+  pollfd p{listener.get(), POLLIN, 0};
+  ASSERT_EQ(poll(&p, 1, 3000), 1);
+  int coordinator = accept(listener.get(), nullptr, nullptr);
+  ASSERT_GE(coordinator, 0);
+  for (int i = 0; i < 3; ++i) send_liveness(rank.get(), kLivenessPulse);
+  usleep(50 * 1000);  // the pulses are in the coordinator's receive queue, unread
+  send_liveness(coordinator, kLivenessPulse);
+  send_last_word(coordinator, kLivenessAborting);
+  close(coordinator);
+  bool reset = false;
+  EXPECT_EQ(read_to_end(rank.get(), reset), "pa");
+  EXPECT_FALSE(reset);
 }
 
 }  // namespace

@@ -117,7 +117,8 @@ fault() {
   line=$(grep -E "^l2wall: .*$role \(rank $rank on [^,]+, pid $pid\).*frame [0-9]+" "$dir.err") ||
     { echo "FAIL: no line naming rank $rank:"; cat "$dir.err"; exit 1; }
   echo "  $line"
-  [[ $(grep -c "^l2wall: " "$dir.err") -le 2 ]] || { echo "FAIL: more than one fault line"; exit 1; }
+  [[ $(grep -c "^l2wall: " "$dir.err") -le 2 ]] ||
+    { echo "FAIL: more than one fault line:"; grep "^l2wall: " "$dir.err"; exit 1; }
   # mpirun -q: none of mpirun's own messages beside ours. Open MPI's event library may still warn
   # once about the dead rank's socket ("[warn] Epoll MOD(1) on fd 25 failed ... Bad file
   # descriptor"), one run in a few: that line is the runtime's, which -q does not reach. So are

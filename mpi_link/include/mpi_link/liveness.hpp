@@ -62,5 +62,12 @@ Heard read_liveness(int fd, int* exit_code = nullptr);
 void send_liveness(int fd, char byte);
 // A word of several bytes (failed_word) in one send, which a pulse sent at once cannot split.
 void send_liveness(int fd, std::string_view word);
+// The last word on a connection (ended, aborting, stopped, failed), said so that it arrives
+// although this process ends at once: what the peer sent is read and dropped first, and the
+// word is followed by this end's FIN. A socket closed with unread bytes in it is reset, and a
+// reset throws away what this end had not yet put on the wire: the peer would see a close
+// without the word, and take the end for a crash.
+void send_last_word(int fd, std::string_view word);
+void send_last_word(int fd, char byte);
 
 }  // namespace l2
