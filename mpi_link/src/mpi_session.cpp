@@ -358,6 +358,19 @@ void MpiSession::abort_all(int code) {
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
 }
 
+void MpiSession::end_as_effect(int code) {
+  MpiSession* session = live_session;
+  const auto launched = launched_rank();
+  if (!session || session->liveness_.empty() || !launched || launched->rank == 0 ||
+      rank_is_stopping())
+    abort_all(code);
+  std::fflush(stderr);
+  if (const Fd& fd = session->liveness_.front()) send_last_word(fd.get(), failed_word(code));
+  std::this_thread::sleep_for(kStopGrace);  // follow_coordinator ends this process meanwhile
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);
+}
+
 bool MpiSession::rank_is_stopping() {
   const auto launched = launched_rank();
   return launched && launched->rank != 0 && stop_signal_received() != 0;

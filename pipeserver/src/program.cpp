@@ -20,6 +20,7 @@
 #include "image/png_io.hpp"
 #include "live_mode.hpp"
 #include "pipeserver/gl_context.hpp"
+#include "pipeserver/live_exit.hpp"
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/renderer_choice.hpp"
 #include "pipeserver/scene_cli.hpp"
@@ -147,6 +148,8 @@ int run_mpi_rank(l2::LiveOptions& o, bool tiles, bool control, bool windows,
   const int code = run_live(o);
   o.control.reset();
   o.windows.reset();
+  // Gave up waiting: the coordinator names the cause (another rank) and ends the job.
+  if (l2::gave_up_waiting(code)) l2::MpiSession::end_as_effect(code);
   if (code != 0) l2::MpiSession::abort_all(code);
   l2::report_rank_done(*sent, *tiles_sent);
   return 0;

@@ -5,12 +5,20 @@
 #include <algorithm>
 
 #include "mpi_link/mpi_wire.hpp"
+#include "pipeserver/live_exit.hpp"
 
 namespace l2 {
 
 RankLosses::RankLosses(const RankMap& map, MpiSession& session, bool survive)
     : map_(map), session_(session), survive_(survive) {
-  session_.watch_ranks([this](int rank) { return survives(rank) ? std::string() : message(rank); });
+  session_.watch_ranks([this](int rank) {
+    return survives(rank) || an_effect(rank) ? std::string() : message(rank);
+  });
+}
+
+bool RankLosses::an_effect(int rank) const {
+  const std::optional<int> code = session_.exit_code(rank);
+  return map_.pipeserver_of(rank).has_value() && code && gave_up_waiting(*code);
 }
 
 bool RankLosses::survives(int rank) const {
@@ -33,6 +41,7 @@ std::string RankLosses::displays_showing() const {
 std::optional<int> RankLosses::poll() {
   for (const int rank : session_.lost_ranks()) {
     if (ending_) break;
+    if (an_effect(rank)) continue;  // the run's watchdog names the cause (RemotePipeserver)
     if (!survives(rank)) {
       ending_ = rank;
       continue;

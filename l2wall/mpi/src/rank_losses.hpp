@@ -1,7 +1,9 @@
 // Which ranks of an MPI run are gone, and what that means for the DVI path: a pipeserver's rank
 // the run survives (--survive-host-loss: the columns are told at once, and it ends as a
-// pipeserver, PipeserverSet::poll_ended), or any other rank, which ends the run with a line
-// naming it. The session's watcher thread finds a loss; this takes it up on the run's thread.
+// pipeserver, PipeserverSet::poll_ended); a pipeserver's rank that gave up waiting (its exit
+// code says so, live_exit.hpp), an effect left to the run's watchdog, which names the cause as
+// on one machine; or any other rank, which ends the run with a line naming it. The session's
+// watcher thread finds a loss; this takes it up on the run's thread.
 //
 // Owns: the session's watch, the pipeservers lost and survived, the rank that ends the run. It
 // may not decide anything about frames.
@@ -42,6 +44,7 @@ class RankLosses {
 
  private:
   bool survives(int rank) const;
+  bool an_effect(int rank) const;
 
   const RankMap& map_;
   MpiSession& session_;

@@ -96,12 +96,14 @@ nothing_left() {
 }
 
 # fault SIGNAL RANK ROLE NP WALL SAVED (the display ids saved; empty: none, no fault/ folder;
-# maybe:IDS: those if any)
+# maybe:IDS: those if any). The run's timeouts: `timeouts`; its folder: `dir`, after.
+timeouts=(--stall-timeout $stall_ms --ready-timeout 3000)
+also_said=()  # grep -e arguments: other lines the case expects on stderr
 fault() {
-  local signal=$1 rank=$2 role=$3 np=$4 wall=$5 saved=$6 dir="$out/$1-$2-$4"
+  local signal=$1 rank=$2 role=$3 np=$4 wall=$5 saved=$6
+  dir="$out/$1-$2-$4${7:-}"
   "${mpirun_local[@]}" -q -np "$np" "$l2wall" run ${wall:+--wall "$wall"} --mpi \
-    --frames 100000 --stall-timeout $stall_ms --ready-timeout 3000 --out "$dir" --no-progress \
-    >"$dir.out" 2>"$dir.err" &
+    --frames 100000 "${timeouts[@]}" --out "$dir" --no-progress >"$dir.out" 2>"$dir.err" &
   local run=$!
   # Until the displays have swapped a few frames (the reports grow a line per frame).
   for _ in $(seq 600); do
@@ -128,6 +130,7 @@ fault() {
   # the killed one may report the same reset (btl_tcp_recv_blocking). A rank stopped resets
   # nothing.
   local runtime=(-e "^l2wall: " -e "^\[warn\] Epoll [A-Z]*([0-9]*) on fd [0-9]* failed")
+  runtime+=("${also_said[@]}")
   [[ $signal != KILL ]] || runtime+=(
     -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],0\]\[[^]]*/btl_tcp_frag\.c:[0-9]*:mca_btl_tcp_frag_send\] mca_btl_tcp_frag_send: writev failed: Connection reset by peer (104)$"
     -e "^\[[^]]*\]\[\[[0-9]*,[0-9]*\],0\]\[[^]]*/btl_tcp_endpoint\.c:[0-9]*:mca_btl_tcp_endpoint_send_handler\] invalid connection state ([0-9]*)$"
@@ -173,6 +176,17 @@ fault STOP 3 "pipeserver 2" 6 "" "0 1 2 3"
 fault KILL 5 "board column 0" 6 "" ""
 # A column stopped: column 1 (display 8) on the two-column wall; column 0's displays are saved.
 fault STOP 4 "board column 1" 5 "$two_columns" "0 1 2 3 4 5 6 7"
+
+# A pipeserver rank stopped while the others' READY wait is the shorter (the liveness timeout and
+# the stall timeout far longer): they give up waiting for READY (exit code 3), an effect; the
+# run names the stopped one as the cause, as on one machine, never one that gave up.
+timeouts=(--stall-timeout 20000 --liveness-timeout 20000 --ready-timeout 500)
+also_said=(-e "^pipeserver [013]: frame [0-9]*: no READY for frame [0-9]* on MPI rank 0 (coordinator)")
+fault STOP 3 "pipeserver 2" 6 "" "0 1 2 3" -gave-up
+cause="^l2wall: pipeserver 2 \(rank 3 on [^,]+, pid [0-9]+\) stopped answering: it did not deliver"
+cause+=" frame [0-9]+, and pipeserver [013] gave up waiting for READY \(exited with code 3\); the"
+cause+=" displays keep frame [0-9]+$"
+grep -qE "$cause" "$dir.err" || { echo "FAIL: not named as the cause:"; cat "$dir.err"; exit 1; }
 
 # A pipeserver rank that fails by its own error (its report cannot be written on its host: the
 # log a dangling link) prints its own line, then says its exit code on its liveness connection:

@@ -15,9 +15,8 @@ namespace l2 {
 namespace {
 
 // A pipeserver that gave up waiting for READY or SWAPPED: the effect of another's fault.
-bool gave_up_waiting(const LivePipeserver& h) {
-  return h.exit && h.exit->signal == 0 &&
-         (h.exit->code == kExitNoReady || h.exit->code == kExitLostCompositingServer);
+bool ended_giving_up(const LivePipeserver& h) {
+  return h.exit && h.exit->signal == 0 && gave_up_waiting(h.exit->code);
 }
 
 }  // namespace
@@ -41,7 +40,7 @@ bool Watchdog::survive(LivePipeserver& h) {
   const FrameLedger& f = core_.frames;
   LiveBalance* balance = core_.balance.get();
   if (!balance || !balance->survives_losses() || !f.pipeservers_started) return false;
-  if (gave_up_waiting(h)) return false;
+  if (ended_giving_up(h)) return false;
   const std::string how = core_.pipeservers.ended_how(h);
   // Lost while the run starts (before every first frame), it is lost at the run's second 0.
   const double seconds = f.links_open ? ms_between(f.totals.start, RunClock::now()) / 1000.0 : 0.0;
@@ -80,7 +79,7 @@ std::string Watchdog::blame() {
 // that hangs behind it, else its own end.
 std::string Watchdog::blame_given_up(const LivePipeserver& ended) {
   const int shown = core_.frames.shown;
-  if (gave_up_waiting(ended)) {
+  if (ended_giving_up(ended)) {
     if (const LivePipeserver* hung = core_.pipeservers.hung_pipeserver(shown)) {
       return fmt::format(
           "pipeserver {} ({}) stopped answering{}: it did not deliver frame {}, and "

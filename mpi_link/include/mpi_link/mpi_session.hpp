@@ -85,6 +85,12 @@ class MpiSession {
   // A rank other than 0 that took a stop signal waits for the coordinator's word instead: the
   // run is being stopped, and an abort would cut the coordinator off before its report.
   [[noreturn]] static void abort_all(int code);
+  // A rank other than 0 whose failure is the effect of another's fault (a pipeserver that gave
+  // up waiting for READY): tells the coordinator its exit code as abort_all does, then leaves
+  // the end to the coordinator, which names the cause and ends the job (its word ends this
+  // process); only when no word comes within kStopGrace does it abort. Aborting at once would
+  // have mpirun end the job before the coordinator could name the cause.
+  [[noreturn]] static void end_as_effect(int code);
   // Rank 0, after a run that went on without a lost rank under an mpirun that keeps the job:
   // Open MPI 4.1's mpirun, and the daemon of the lost rank's host, never count that rank as
   // ended and wait for ever once every other has. Every rank's part is done: asks mpirun to end

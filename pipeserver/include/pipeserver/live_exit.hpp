@@ -10,4 +10,10 @@ inline constexpr int kExitNoReady = 3;
 // stopped answering (no SWAPPED in time): the pipeserver lost it, it did not fail by itself.
 inline constexpr int kExitLostCompositingServer = 4;
 
+// A pipeserver that ended so gave up waiting on another part of the run: its end is the effect
+// of another's fault, which the run names instead (on one machine and over MPI alike).
+inline constexpr bool gave_up_waiting(int exit_code) {
+  return exit_code == kExitNoReady || exit_code == kExitLostCompositingServer;
+}
+
 }  // namespace l2
