@@ -25,6 +25,14 @@ Status ActiveStereoCheck::check(std::uint64_t refresh, std::span<const DisplaySh
     if (const Status st = check_display(refresh, s, group_frame); !st.ok()) return st;
   }
   if (first_pair_ < 0 && group_frame >= 0) first_pair_ = static_cast<std::int64_t>(refresh);
+  if (refreshes_ < max_rows_) {
+    if (group_frame < 0) {
+      csv_ += fmt::format("{},none,\n", refresh);
+    } else {
+      csv_ +=
+          fmt::format("{},{},{}\n", refresh, eye_name(static_cast<int>(refresh % 2)), group_frame);
+    }
+  }
   ++refreshes_;
   return {};
 }

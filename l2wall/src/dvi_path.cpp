@@ -85,7 +85,6 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
   if (layout.wall.stereo.mode == StereoMode::Active) {
     quad_.emplace(layout.wall.displays);
     active_check_.emplace();
-    stereo_csv_ = "refresh,eye,frame\n";
   }
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
@@ -194,13 +193,6 @@ void DviPath::refresh_quad(std::uint64_t index) {
   });
   if (const Status s = active_check_->check(index, quad_->shown()); !s.ok())
     throw RunFault(s.reason());
-  const int eye_frame = quad_->shown().front().frame;
-  if (eye_frame < 0) {
-    stereo_csv_ += fmt::format("{},none,\n", index);
-  } else {
-    stereo_csv_ +=
-        fmt::format("{},{},{}\n", index, eye_frame % 2 == 0 ? "left" : "right", eye_frame / 2);
-  }
 }
 
 const ColumnRoute& DviPath::decide(std::span<const Observation> seen,
@@ -300,7 +292,7 @@ void DviPath::add_totals(RunTotals& totals) const {
     totals.path_lines += frame_lock_->summary_lines();
     totals.path_files.emplace_back("frame-lock.csv", frame_lock_->csv());
   }
-  if (quad_) totals.path_files.emplace_back("stereo-refreshes.csv", stereo_csv_);
+  if (active_check_) totals.path_files.emplace_back("stereo-refreshes.csv", active_check_->csv());
 }
 
 std::string DviPath::summary_lines() const {
@@ -323,10 +315,13 @@ std::string DviPath::active_stereo_line() const {
   return fmt::format(
       "active stereo: {} refreshes, every display alternated left/right every refresh from "
       "its first pair (refresh {}) on; pairs shown: {} ({} repeated: no new pair ready), "
-      "broken: 0; quad buffers: {:.1f} MiB\n",
+      "broken: 0; quad buffers: {:.1f} MiB{}\n",
       active_check_->refreshes(), active_check_->first_pair(), active_check_->pairs_shown(),
       active_check_->pairs_repeated(),
-      static_cast<double>(quad_->buffer_bytes()) / (1024.0 * 1024.0));
+      static_cast<double>(quad_->buffer_bytes()) / (1024.0 * 1024.0),
+      active_check_->csv_cut()
+          ? fmt::format("; stereo-refreshes.csv holds the first {}", kMaxStereoRefreshRows)
+          : std::string());
 }
 
 void DviPath::follow_layouts(LiveBalance& balance, PipeserverSet&) {

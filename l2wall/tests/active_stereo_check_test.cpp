@@ -2,7 +2,7 @@
 // a strictly alternating sequence passes and counts its pairs, new and repeated; an eye shown in
 // a refresh of the other parity (a lone eye kept), a pair changed at a right-eye refresh, two
 // displays of the group on different frames, a frame stepping back and nothing after a pair are
-// each named in one line with refresh, display and rank.
+// each named in one line with refresh, display and rank. Its per-refresh record is bounded.
 #include "l2wall/active_stereo_check.hpp"
 
 #include <gtest/gtest.h>
@@ -30,6 +30,16 @@ TEST(ActiveStereoCheck, AlternatingPairsPassAndAreCounted) {
   EXPECT_EQ(check.first_pair(), 2);
   EXPECT_EQ(check.pairs_shown(), 3u);     // frame 0, frame 0 again, frame 1
   EXPECT_EQ(check.pairs_repeated(), 1u);  // frame 0's second showing
+}
+
+TEST(ActiveStereoCheck, ItsRecordSaysEachRefreshsEyeAndFrameUpToItsRows) {
+  ActiveStereoCheck check(4);
+  feed(check, {-1, -1, 0, 1});
+  EXPECT_EQ(check.csv(), "refresh,eye,frame\n0,none,\n1,none,\n2,left,0\n3,right,0\n");
+  EXPECT_FALSE(check.csv_cut());
+  ASSERT_TRUE(check.check(4, two(2, 2)).ok());
+  EXPECT_EQ(check.csv(), "refresh,eye,frame\n0,none,\n1,none,\n2,left,0\n3,right,0\n");
+  EXPECT_TRUE(check.csv_cut());
 }
 
 TEST(ActiveStereoCheck, ALoneEyeKeptIntoTheNextRefreshIsNamed) {

@@ -130,11 +130,10 @@ class DviPath final : public DisplayPath {
   SwapLockCheck lock_check_;
   std::optional<FrameLockRecord> frame_lock_;  // a wall with [displays]
   int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
-  // An active stereo wall's quad buffer, its proof that every refresh shows the eye of its
-  // parity of one frame, and the eye and frame of each refresh (stereo-refreshes.csv).
+  // An active stereo wall's quad buffer, and its proof that every refresh shows the eye of its
+  // parity of one frame (with stereo-refreshes.csv, each refresh's eye and frame).
   std::optional<QuadBuffer> quad_;
   std::optional<ActiveStereoCheck> active_check_;
-  std::string stereo_csv_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;
