@@ -82,7 +82,10 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
       lock_check_(groups_, eye_pairs(layout.wall)),
       eye_pairs_(static_cast<int>(eye_pairs(layout.wall).size())) {
   if (layout.wall.frame_lock.modelled) frame_lock_.emplace(layout.wall, groups_);
-  if (layout.wall.stereo.mode == StereoMode::Active) eye_sequence_.emplace();
+  if (layout.wall.stereo.mode == StereoMode::Active) {
+    quad_.emplace(layout.wall.displays);
+    active_check_.emplace();
+  }
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
@@ -176,12 +179,20 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
   if (const Status s = lock_check_.check(static_cast<std::uint64_t>(index), displays_shown_);
       !s.ok())
     throw RunFault(s.reason());
-  if (eye_sequence_) {
-    if (const Status s = eye_sequence_->check(static_cast<std::uint64_t>(index), displays_shown_);
-        !s.ok())
-      throw RunFault(s.reason());
-  }
+  if (quad_) refresh_quad(static_cast<std::uint64_t>(index));
   if (frame_lock_) frame_lock_->refresh(displays_shown_);
+}
+
+void DviPath::refresh_quad(std::uint64_t index) {
+  // The columns' pictures only when some display took in a new eye frame (fetched from far
+  // columns over MPI), once for all displays.
+  std::optional<DisplayPictures> fetched;
+  quad_->refresh(index, displays_shown_, [&](int id) -> const RgbImage& {
+    if (!fetched) fetched = columns_->pictures();
+    return (*fetched)(id);
+  });
+  if (const Status s = active_check_->check(index, quad_->shown()); !s.ok())
+    throw RunFault(s.reason());
 }
 
 const ColumnRoute& DviPath::decide(std::span<const Observation> seen,
@@ -255,6 +266,14 @@ Status DviPath::failure_as_cause(int, const std::string&) {
 
 void DviPath::finish() {
   columns_->finish();
+  // The displays refresh on once the last eye frame is in, until its pair has been shown to
+  // both eyes (at most three refreshes: to the next left-eye one, then its right). They are
+  // the quad buffer's alone: the columns have ended, the swap-lock count stays theirs.
+  std::uint64_t index = refreshes_;
+  for (int more = 0; quad_ && quad_->waiting() && more < 3; ++more) {
+    if (refresh_hz_ > 0) clock_.wait_next();
+    refresh_quad(index++);
+  }
   finished_ = true;
 }
 
@@ -273,6 +292,7 @@ void DviPath::add_totals(RunTotals& totals) const {
     totals.path_lines += frame_lock_->summary_lines();
     totals.path_files.emplace_back("frame-lock.csv", frame_lock_->csv());
   }
+  if (active_check_) totals.path_files.emplace_back("stereo-refreshes.csv", active_check_->csv());
 }
 
 std::string DviPath::summary_lines() const {
@@ -291,12 +311,17 @@ std::string DviPath::summary_lines() const {
 }
 
 std::string DviPath::active_stereo_line() const {
-  if (!eye_sequence_) return {};
+  if (!active_check_) return {};
   return fmt::format(
-      "active stereo: stereo pairs: {}, broken: 0: each of {} display(s) showed every frame's "
-      "left eye and then its right in the next refresh that changed it, in all {} refreshes; "
-      "{} display refresh(es) kept an eye frame (no new one was ready)\n",
-      eye_sequence_->pairs(), eye_sequence_->displays(), refreshes_, eye_sequence_->held());
+      "active stereo: {} refreshes, every display alternated left/right every refresh from "
+      "its first pair (refresh {}) on; pairs shown: {} ({} repeated: no new pair ready), "
+      "broken: 0; quad buffers: {:.1f} MiB{}\n",
+      active_check_->refreshes(), active_check_->first_pair(), active_check_->pairs_shown(),
+      active_check_->pairs_repeated(),
+      static_cast<double>(quad_->buffer_bytes()) / (1024.0 * 1024.0),
+      active_check_->csv_cut()
+          ? fmt::format("; stereo-refreshes.csv holds the first {}", kMaxStereoRefreshRows)
+          : std::string());
 }
 
 void DviPath::follow_layouts(LiveBalance& balance, PipeserverSet&) {

@@ -110,7 +110,8 @@ void add_wall_options(CLI::App& run, RunCommand& c) {
                  "row per frame), summary.txt, pipeserver-<i>.log, vizserver.log (the compositing "
                  "server's lines), layouts.txt (--balance: each frame's layout), "
                  "frame-lock.csv (a wall with [displays] clocks: per refresh each display's frame "
-                 "counter and the frame it showed)")
+                 "counter and the frame it showed), stereo-refreshes.csv (an active stereo wall: "
+                 "per refresh the eye shown and its frame)")
       ->capture_default_str();
   run.add_option("--keep", o.keep,
                  "frames whose displays are written: every | last | none | K,L,...")

@@ -2,9 +2,12 @@
 // is the frame number it holds, every pipeserver's strips reach every display, and a pipeserver
 // publishes its next frame once READY for the last one arrives. What the path decides (which
 // frames are new, when groups complete and swap, READY, the frame the displays show, swap lock)
-// is checked against frame numbers the test knows, not against the path's own bookkeeping.
+// is checked against frame numbers the test knows, not against the path's own bookkeeping; on an
+// active stereo wall, what the quad buffer shows in each refresh too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -75,9 +78,16 @@ class FakeColumns final : public BoardColumns {
     }
     return {};
   }
+  // With `display_size` set, each display's picture is its front frame's own colour (an active
+  // stereo wall's quad buffer copies them); else one pixel.
   DisplayPictures pictures() override {
-    return [this](int) -> const RgbImage& { return picture_; };
+    return [this](int id) -> const RgbImage& {
+      if (display_size.first == 0) return picture_;
+      return pictures_[id] = RgbImage(display_size.first, display_size.second,
+                                      frame_colour(front[static_cast<std::size_t>(id)]));
+    };
   }
+  static Rgb frame_colour(int frame) { return Rgb{static_cast<std::uint8_t>(10 + frame), 0, 0}; }
   std::optional<DisplayPictures> shown() override { return pictures(); }
   void showing(int frame) override { showing_ = frame; }
   std::optional<std::uint64_t> routed_strips(int) const override { return 1; }
@@ -87,11 +97,13 @@ class FakeColumns final : public BoardColumns {
   std::vector<int> back, done, front;  // by display: the frame held
   std::int64_t fail_at = -1;           // the refresh a column does not answer
   std::int64_t break_lock_at = -1;     // the refresh display 1 shows another frame
+  std::pair<int, int> display_size{0, 0};
 
  private:
   int frames_;
   int showing_ = -1;  // what the path said the displays keep
   RgbImage picture_{1, 1};
+  std::map<int, RgbImage> pictures_;
 };
 
 // A back-channel that hands READY to the fake pipeserver and remembers it.
@@ -118,9 +130,16 @@ class FakeLine final : public ReadyChannel {
   BackChannelCounts counts_;
 };
 
+// The built-in wall (four 640x480 displays, one swap group), or the same shown as active stereo.
+Wall test_wall(StereoMode mode) {
+  Wall wall = default_wall();
+  wall.stereo.mode = mode;
+  return wall;
+}
+
 struct PathRun {
   static constexpr int kFrames = 6;
-  TileLayout layout = plan_layout(default_wall());
+  TileLayout layout;
   RunOptions options = [] {
     RunOptions o;
     o.frames = kFrames;
@@ -134,11 +153,12 @@ struct PathRun {
   std::vector<FrameRecord> records = std::vector<FrameRecord>(kFrames);
   RunWatch watch{[] {}, [] {}};
 
-  PathRun() {
+  explicit PathRun(StereoMode mode = StereoMode::Mono) : layout(plan_layout(test_wall(mode))) {
     auto owned =
         std::make_unique<FakeColumns>(static_cast<int>(layout.wall.displays.size()),
                                       static_cast<int>(layout.pipeservers.size()), kFrames);
     columns = owned.get();
+    if (mode == StereoMode::Active) columns->display_size = {640, 480};
     path = std::make_unique<DviPath>(layout, options, std::move(owned));
     PipeserverLaunch launch;
     launch.frames = kFrames;
@@ -216,6 +236,34 @@ TEST(DviPath, SummarySaysSwapLockHeldOnceEveryFrameIsShown) {
   EXPECT_EQ(run.path->summary_lines(),
             "swap lock: every display of each of 1 group(s) showed the same frame in all 7 "
             "refreshes, in the test\n");
+}
+
+// Eye frames 0-5 reach the displays in refreshes 1-6, one a refresh (the fake renders at once):
+// the quad buffer shows pair 0 from refresh 2, when its right eye is in, and each pair whole,
+// left in even refreshes, right in odd ones, refreshing on past the columns' last refresh until
+// pair 2's right eye is shown. The pictures are the eye frames' own colours.
+TEST(DviPath, AnActiveWallShowsEachPairLeftThenRight) {
+  PathRun run(StereoMode::Active);
+  for (int frame = 0; frame < PathRun::kFrames; ++frame) run.next_swap();
+  run.path->finish();
+  RunTotals totals;
+  run.path->add_totals(totals);
+  const auto csv = std::find_if(totals.path_files.begin(), totals.path_files.end(),
+                                [](const auto& f) { return f.first == "stereo-refreshes.csv"; });
+  ASSERT_NE(csv, totals.path_files.end());
+  EXPECT_EQ(csv->second,
+            "refresh,eye,frame\n0,none,\n1,none,\n2,left,0\n3,right,0\n4,left,1\n5,right,1\n"
+            "6,left,2\n7,right,2\n");
+  EXPECT_EQ(run.path->summary_lines(),
+            "swap lock: every display of each of 1 group(s) showed the same frame in all 7 "
+            "refreshes, in the test\n"
+            "active stereo: 8 refreshes, every display alternated left/right every refresh from "
+            "its first pair (refresh 2) on; pairs shown: 3 (0 repeated: no new pair ready), "
+            "broken: 0; quad buffers: 24.6 MiB\n");
+  // Refresh 7 shows eye frame 5 (frame 2's right eye) on every display.
+  const DisplayPictures shown = *run.path->shown();
+  for (int d = 0; d < 4; ++d)
+    EXPECT_TRUE(shown(d) == RgbImage(640, 480, FakeColumns::frame_colour(5))) << "display " << d;
 }
 
 TEST(DviPath, FrameShownByStamps) {

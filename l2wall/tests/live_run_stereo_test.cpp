@@ -6,6 +6,7 @@
 // same, each display showing a frame's left eye and then its right in consecutive refreshes.
 #include <gtest/gtest.h>
 
+#include "active_stereo_summary.hpp"
 #include "wall_run.hpp"
 
 namespace l2 {
@@ -63,9 +64,10 @@ TEST(LiveRunStereo, PassiveTwinsShowTheirOwnEyeOfTheSameFrame) {
 
 // An active wall (examples/walls/stereo-active-2x1.toml: two projectors, each showing both eyes
 // one refresh after the other) on both paths: eye frames 4 and 5 are application frame 2's left
-// and right eye, each display shows each byte for byte as the pipeserver program renders that
-// eye frame alone, and the summary says every display showed every frame's left eye and then its
-// right in consecutive refreshes.
+// and right eye, each display's front buffer holds each byte for byte as the pipeserver program
+// renders that eye frame alone, and the summary says every display alternated left and right
+// eye every refresh after the quad buffer, showing each of the 3 frames as a new pair (then again
+// while no new one was ready); stereo-refreshes.csv says each refresh's eye and frame.
 TEST(LiveRunStereo, ActiveDisplaysShowEachFramesLeftThenRightEye) {
   const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-active-2x1.toml";
   const int frames = 6;
@@ -74,11 +76,18 @@ TEST(LiveRunStereo, ActiveDisplaysShowEachFramesLeftThenRightEye) {
                "--refresh", "0", "--path", "both", "--compare", "--keep", "4,5"});
   const ExitStatus status = run.wait(120s);
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
-  EXPECT_NE(run.output().find("active stereo: stereo pairs: 3, broken: 0: each of 2 display(s) "
-                              "showed every frame's left eye and then its right in the next "
-                              "refresh that changed it, in all "),
+  const auto summary = active_stereo_summary(run.output());
+  ASSERT_TRUE(summary) << run.output();
+  EXPECT_EQ(summary->shown - summary->repeated, 3) << run.output();
+  // From the first pair on, two refreshes per pair shown, and the wall shows the last one whole.
+  EXPECT_EQ(summary->refreshes, summary->first_pair + 2 * summary->shown) << run.output();
+  const std::string refreshes = slurp(run.out() / "stereo-refreshes.csv");
+  EXPECT_EQ(refreshes.rfind("refresh,eye,frame\n0,none,\n1,none,\n", 0), 0u) << refreshes;
+  EXPECT_NE(refreshes.find(fmt::format("\n{},left,0\n{},right,0\n", summary->first_pair,
+                                       summary->first_pair + 1)),
             std::string::npos)
-      << run.output();
+      << refreshes;
+  EXPECT_EQ(refreshes.substr(refreshes.size() - 9), ",right,2\n") << refreshes;
 
   for (const int k : {4, 5}) expect_as_references(run, wall, k, 2);
   // report.csv's rows are eye frames, each saying its eye.

@@ -8,8 +8,10 @@
 // Owns: the frame sequencer, the refresh clock, READY, the balance hooks (the control channels
 // served while stepping, every swap checked against the layouts), the frame-shown rule, the
 // swap-lock check and, for a wall with [displays], the record of frame lock (what each display
-// showed by its own refresh clock, frame_lock_record.hpp). It may not touch pixels or the
-// transport: the columns route, and say what they saw.
+// showed by its own refresh clock, frame_lock_record.hpp) and, for an active stereo wall, the
+// quad buffer after the columns (quad_buffer.hpp: it copies each eye frame the displays take in
+// and shows a whole pair, one eye per refresh) with its proof. It may not touch the routed
+// pixels or the transport: the columns route, and say what they saw.
 #pragma once
 
 #include <map>
@@ -17,12 +19,13 @@
 #include <vector>
 
 #include "dvi_link/refresh_clock.hpp"
+#include "l2wall/active_stereo_check.hpp"
 #include "l2wall/board_columns.hpp"
 #include "l2wall/colour_stage.hpp"
 #include "l2wall/display_path.hpp"
-#include "l2wall/eye_sequence_check.hpp"
 #include "l2wall/frame_lock_record.hpp"
 #include "l2wall/live_run.hpp"
+#include "l2wall/quad_buffer.hpp"
 #include "l2wall/swap_lock_check.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -60,7 +63,10 @@ class DviPath final : public DisplayPath {
   DisplayPictures frame_pictures(int frame, const RunWatch&) override {
     return colour_.apply(columns_->pictures(), frame);
   }
+  // An active stereo wall's: what the quad buffer shows in the last refresh, once it has a pair.
   std::optional<DisplayPictures> shown() const override {
+    if (quad_ && quad_->shown().front().frame >= 0)
+      return colour_.apply([this](int id) -> const RgbImage& { return quad_->picture(id); });
     auto pictures = columns_->shown();
     if (!pictures) return std::nullopt;
     return colour_.apply(std::move(*pictures));
@@ -104,6 +110,8 @@ class DviPath final : public DisplayPath {
   void note_swap();
   // The groups (bits) of the displays (bits of mesh `mesh`'s display ids).
   std::uint64_t groups_of_displays(int mesh, std::uint64_t displays) const;
+  // An active stereo wall: the quad buffer's refresh `index` after the columns', and its check.
+  void refresh_quad(std::uint64_t index);
   // The summary's line of an active stereo wall's pairs; empty for any other wall.
   std::string active_stereo_line() const;
   void count_for_balance(PipeserverSet& pipeservers);
@@ -122,8 +130,10 @@ class DviPath final : public DisplayPath {
   SwapLockCheck lock_check_;
   std::optional<FrameLockRecord> frame_lock_;  // a wall with [displays]
   int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
-  // An active stereo wall's proof that both eyes of every frame follow each other.
-  std::optional<EyeSequenceCheck> eye_sequence_;
+  // An active stereo wall's quad buffer, and its proof that every refresh shows the eye of its
+  // parity of one frame (with stereo-refreshes.csv, each refresh's eye and frame).
+  std::optional<QuadBuffer> quad_;
+  std::optional<ActiveStereoCheck> active_check_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;
