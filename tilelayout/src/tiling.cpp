@@ -113,9 +113,12 @@ std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<R
   std::vector<DisplayTile> out;
   for (int i = 0; i < static_cast<int>(logical.size()); ++i) {
     for (const Display& d : wall.displays) {
-      const Rect part = intersect(logical[i], d.on_canvas());
-      if (part.empty()) continue;
-      out.push_back({d.id, d.to_panel(part), part, i, Compositing::Copy, 0, d.orientation});
+      // A packed stereo display's halves are drawn by different eyes: no tile spans both.
+      for (const DisplayPart& p : display_parts(wall.stereo, d)) {
+        const Rect part = intersect(logical[i], p.on_canvas);
+        if (part.empty()) continue;
+        out.push_back({d.id, d.to_panel(part), part, i, Compositing::Copy, 0, d.orientation});
+      }
     }
   }
   return out;
