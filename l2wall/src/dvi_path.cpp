@@ -83,6 +83,7 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
       eye_pairs_(static_cast<int>(eye_pairs(layout.wall).size())) {
   if (layout.wall.frame_lock.modelled) frame_lock_.emplace(layout.wall, groups_);
   if (layout.wall.stereo.mode == StereoMode::Active) eye_sequence_.emplace();
+  if (packed_stereo(layout.wall.stereo)) packed_.emplace(layout.wall);
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
@@ -182,6 +183,7 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
       throw RunFault(s.reason());
   }
   if (frame_lock_) frame_lock_->refresh(displays_shown_);
+  if (packed_) packed_->take(displays_shown_);
 }
 
 const ColumnRoute& DviPath::decide(std::span<const Observation> seen,
@@ -287,7 +289,8 @@ std::string DviPath::summary_lines() const {
              "swap lock: every display of each of {} group(s) showed the same frame in all {} "
              "refreshes, {}\n",
              groups_.size(), refreshes_, columns_->where()) +
-         stereo + active_stereo_line() + columns_->summary_lines();
+         stereo + active_stereo_line() + (packed_ ? packed_->summary_line(refreshes_) : "") +
+         columns_->summary_lines();
 }
 
 std::string DviPath::active_stereo_line() const {

@@ -23,6 +23,7 @@
 #include "l2wall/eye_sequence_check.hpp"
 #include "l2wall/frame_lock_record.hpp"
 #include "l2wall/live_run.hpp"
+#include "l2wall/packed_stereo_record.hpp"
 #include "l2wall/swap_lock_check.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
 #include "tilelayout/tile_layout.hpp"
@@ -124,6 +125,8 @@ class DviPath final : public DisplayPath {
   int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
   // An active stereo wall's proof that both eyes of every frame follow each other.
   std::optional<EyeSequenceCheck> eye_sequence_;
+  // A packed stereo wall's count of the frames each display showed with both eyes.
+  std::optional<PackedStereoRecord> packed_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;
