@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "tilelayout/plan_report.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/tile_layout.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -109,6 +110,19 @@ TEST(WallPacked, TilesAreSplitAtEachDisplaysMiddle) {
   for (const DisplayTile& t : top_layout.tiles) top_first += t.display == 0;
   EXPECT_EQ(top_first, 12);
   expect_tiles_in_halves(top);
+}
+
+TEST(WallPacked, ThePlanSaysWhichHalfShowsWhichEye) {
+  const std::string side = format_plan(plan_layout(parse_wall(packed_wall("side-by-side"), "p")));
+  EXPECT_NE(side.find("display 1: 100x80 at canvas 100,0, swap group 0, left eye in its left "
+                      "half, right eye in its right (side-by-side stereo): 100.0% covered"),
+            std::string::npos)
+      << side;
+  const std::string top = format_plan(plan_layout(parse_wall(packed_wall("top-bottom"), "p")));
+  EXPECT_NE(top.find("display 0: 100x80 at canvas 0,0, swap group 0, left eye in its top half, "
+                     "right eye in its bottom (top-bottom stereo): 100.0% covered"),
+            std::string::npos)
+      << top;
 }
 
 TEST(WallPacked, RefusesAnOddSideInOneLine) {
