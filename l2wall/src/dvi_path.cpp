@@ -183,7 +183,11 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
       throw RunFault(s.reason());
   }
   if (frame_lock_) frame_lock_->refresh(displays_shown_);
-  if (packed_) packed_->take(displays_shown_);
+  if (packed_) {
+    if (const Status s = packed_->check(static_cast<std::uint64_t>(index), displays_shown_);
+        !s.ok())
+      throw RunFault(s.reason());
+  }
 }
 
 const ColumnRoute& DviPath::decide(std::span<const Observation> seen,

@@ -120,7 +120,8 @@ void expect_packed_run(const std::string& name, bool side) {
   ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
   EXPECT_NE(run.output().find(fmt::format(
                 "packed stereo ({}): each of 2 display(s) showed both eyes of each of its frames "
-                "in its two halves in the same refresh ({}), at least ",
+                "in its two halves in the same refresh ({}; every strip of it stamped with that "
+                "frame), at least ",
                 side ? "side-by-side" : "top-bottom",
                 side ? "left half: left eye, right half: right eye"
                      : "top half: left eye, bottom half: right eye")),

@@ -125,7 +125,7 @@ class DviPath final : public DisplayPath {
   int eye_pairs_ = 0;  // a passive stereo wall's twin pairs, which lock_check_ also proves
   // An active stereo wall's proof that both eyes of every frame follow each other.
   std::optional<EyeSequenceCheck> eye_sequence_;
-  // A packed stereo wall's count of the frames each display showed with both eyes.
+  // A packed stereo wall's proof that each display's halves show one frame, both eyes.
   std::optional<PackedStereoRecord> packed_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
