@@ -71,6 +71,10 @@ put("wall_file", "stereo-passive-2x1.toml",
     (HERE.parent / "examples" / "walls" / "stereo-passive-2x1.toml").read_bytes())
 put("wall_file", "stereo-active-2x1.toml",
     (HERE.parent / "examples" / "walls" / "stereo-active-2x1.toml").read_bytes())
+put("wall_file", "stereo-side-by-side-2x1.toml",
+    (HERE.parent / "examples" / "walls" / "stereo-side-by-side-2x1.toml").read_bytes())
+put("wall_file", "stereo-top-bottom-2x1.toml",
+    (HERE.parent / "examples" / "walls" / "stereo-top-bottom-2x1.toml").read_bytes())
 
 # --- wall_import: the example configurations, first byte 0 (format told from the content) -----
 for config in sorted((HERE.parent / "examples" / "walls" / "imported").iterdir()):

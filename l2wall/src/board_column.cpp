@@ -11,6 +11,19 @@
 
 namespace l2 {
 
+namespace {
+
+// The oldest frame among the stamps of the pipeservers whose strips a picture holds (by
+// pipeserver, kStampNotHere for one that sent none); -1: none.
+int oldest_stamp(const std::vector<int>& from) {
+  int oldest = -1;
+  for (const int f : from)
+    if (f >= 0 && (oldest < 0 || f < oldest)) oldest = f;
+  return oldest;
+}
+
+}  // namespace
+
 BoardColumn::MeshView::MeshView(const Wall& w, std::span<const int> display_ids)
     : wall(w), mesh_id_of(w.displays.size(), -1) {
   const std::vector<MeshPart> parts = mesh_parts(w);
@@ -119,9 +132,11 @@ Observation BoardColumn::observe(std::int64_t refresh) const {
                             read(p, spots_[p].before)};
     if (shown.last != kStampNotHere || shown.before != kStampNotHere) o.stamps.push_back(shown);
   }
-  for (int d = 0; d < router_.display_count(); ++d)
+  for (int d = 0; d < router_.display_count(); ++d) {
+    const auto i = static_cast<std::size_t>(d);
     o.displays.push_back(
-        {mesh_.wall_id(router_.display(d).id()), shown_frame_[static_cast<std::size_t>(d)], 0});
+        {mesh_.wall_id(router_.display(d).id()), shown_frame_[i], 0, oldest_stamp(shown_from_[i])});
+  }
   return o;
 }
 

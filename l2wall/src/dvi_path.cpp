@@ -86,6 +86,7 @@ DviPath::DviPath(const TileLayout& layout, const RunOptions& o,
     quad_.emplace(layout.wall.displays);
     active_check_.emplace();
   }
+  if (packed_stereo(layout.wall.stereo)) packed_.emplace(layout.wall);
   // A column's displays_fed are bits of its mesh's display ids.
   const std::vector<MeshPart> meshes = meshes_of(layout);
   group_of_display_.resize(meshes.size());
@@ -181,6 +182,11 @@ void DviPath::refresh(PipeserverSet& pipeservers) {
     throw RunFault(s.reason());
   if (quad_) refresh_quad(static_cast<std::uint64_t>(index));
   if (frame_lock_) frame_lock_->refresh(displays_shown_);
+  if (packed_) {
+    if (const Status s = packed_->check(static_cast<std::uint64_t>(index), displays_shown_);
+        !s.ok())
+      throw RunFault(s.reason());
+  }
 }
 
 void DviPath::refresh_quad(std::uint64_t index) {
@@ -307,7 +313,8 @@ std::string DviPath::summary_lines() const {
              "swap lock: every display of each of {} group(s) showed the same frame in all {} "
              "refreshes, {}\n",
              groups_.size(), refreshes_, columns_->where()) +
-         stereo + active_stereo_line() + columns_->summary_lines();
+         stereo + active_stereo_line() + (packed_ ? packed_->summary_line(refreshes_) : "") +
+         columns_->summary_lines();
 }
 
 std::string DviPath::active_stereo_line() const {

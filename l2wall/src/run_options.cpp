@@ -161,6 +161,16 @@ Status balance_refusal(const RunOptions& o, const Wall& wall, RunPlace place) {
 }
 
 Status stereo_refusal(const RunOptions& o, const Wall& wall) {
+  // A packed display's halves show the scene's picture squeezed: pixels and windows are drawn
+  // at canvas pixels, one to one, and cannot be.
+  const bool pixels =
+      o.scene == "picture" || o.scene == "movie" || o.scene == "session" || o.scene == "vnc";
+  if (packed_stereo(wall.stereo) && pixels) {
+    return Failure{fmt::format(
+        "--scene {}: packed stereo walls (side-by-side, top-bottom) do not support it (its "
+        "pixels are drawn one to one, not squeezed into each eye's half)",
+        o.scene)};
+  }
   if (wall.stereo.mode != StereoMode::Active) return {};
   // What changes between eye frames from outside (windows moved, a desktop's pixels) could land
   // between a frame's two eyes: each eye would show a different frame.

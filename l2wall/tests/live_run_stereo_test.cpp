@@ -3,7 +3,8 @@
 // display shows, byte for byte, what the pipeserver program renders alone as that display's
 // reference (its own eye's camera), the two eyes differ, and the summary says the swap-lock
 // check proved both eyes of every frame shown together in every refresh. An active wall the
-// same, each display showing a frame's left eye and then its right in consecutive refreshes.
+// same, each display showing a frame's left eye and then its right in consecutive refreshes; and
+// packed walls (side-by-side, top-bottom), each display showing both eyes in its two halves.
 #include <gtest/gtest.h>
 
 #include "active_stereo_summary.hpp"
@@ -114,19 +115,74 @@ TEST(LiveRunStereo, AnActiveWallRefusesAnOddFrameCount) {
   expect_clean(run);
 }
 
-TEST(LiveRunStereo, AModeNotDoneYetIsRefusedInOneLine) {
-  const ScratchDir dir("stereo-packed");
-  std::string text = slurp(fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-passive-2x1.toml");
-  text.replace(text.find("mode = \"passive\""), 16, "mode = \"top-bottom\"");
-  std::ofstream(dir / "packed.toml") << text;
-  WallRun run("stereo-packed", {"--wall", (dir / "packed.toml").string(), "--frames", "2"});
-  const ExitStatus status = run.wait(60s);
-  EXPECT_FALSE(status.ok());
-  EXPECT_NE(run.output().find("packed.toml:8: stereo: stereo walls do not support \"top-bottom\" "
-                              "(only \"passive\" and \"active\") yet"),
+// A packed wall (side-by-side or top-bottom: each display shows both eyes, one in each half) on
+// both paths: every display shows, byte for byte, the pipeserver program's reference (each half
+// rendered alone with its eye's camera), the halves differ by the eyes' parallax, and the
+// summary counts the frames every display showed with both eyes in its halves.
+void expect_packed_run(const std::string& name, bool side) {
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls" / name;
+  const int frames = 3, k = frames - 1;
+  WallRun run("stereo-packed",
+              {"--wall", wall.string(), "--scene", "mesh", "--frames", std::to_string(frames),
+               "--refresh", "0", "--path", "both", "--compare", "--keep", "last"});
+  const ExitStatus status = run.wait(120s);
+  ASSERT_TRUE(status.ok()) << status.describe() << "\n" << run.output();
+  EXPECT_NE(run.output().find(fmt::format(
+                "packed stereo ({}): each of 2 display(s) showed both eyes of each of its frames "
+                "in its two halves in the same refresh ({}; every strip of it stamped with that "
+                "frame), at least ",
+                side ? "side-by-side" : "top-bottom",
+                side ? "left half: left eye, right half: right eye"
+                     : "top half: left eye, bottom half: right eye")),
             std::string::npos)
       << run.output();
+  expect_as_references(run, wall, k, 2);
+  // The halves of display 0 show one picture from eyes 0.1 scene units apart.
+  const RgbImage shown = read_png(run.out() / fmt::format("frame-{}/display-0.png", k));
+  const int w = side ? shown.width() / 2 : shown.width(),
+            h = side ? shown.height() : shown.height() / 2;
+  long differ = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      differ += !(shown.at(x, y) == shown.at(side ? x + w : x, side ? y : y + h));
+  EXPECT_GT(differ, 1000);
   expect_clean(run);
+}
+
+TEST(LiveRunStereo, SideBySideDisplaysShowBothEyesInTheirHalves) {
+  expect_packed_run("stereo-side-by-side-2x1.toml", true);
+}
+
+TEST(LiveRunStereo, TopBottomDisplaysShowBothEyesInTheirHalves) {
+  expect_packed_run("stereo-top-bottom-2x1.toml", false);
+}
+
+// What a packed wall cannot do is refused in one line: an odd width in the wall file, and a
+// picture scene, whose pixels are drawn one to one.
+TEST(LiveRunStereo, APackedWallRefusesAnOddWidthAndPicturesInOneLine) {
+  const ScratchDir dir("stereo-packed");
+  std::string text = slurp(fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-side-by-side-2x1.toml");
+  text.replace(text.find("width = 640"), 11, "width = 641");
+  std::ofstream(dir / "packed.toml") << text;
+  WallRun odd("stereo-packed-odd", {"--wall", (dir / "packed.toml").string(), "--frames", "2"});
+  EXPECT_FALSE(odd.wait(60s).ok());
+  EXPECT_NE(odd.output().find("packed.toml:15: display 0: side-by-side stereo: width 641 is odd: "
+                              "each eye takes exactly half of it"),
+            std::string::npos)
+      << odd.output();
+  expect_clean(odd);
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-top-bottom-2x1.toml";
+  write_png(dir / "grey.png", RgbImage(64, 48, Rgb{128, 128, 128}));
+  WallRun picture("stereo-packed-picture",
+                  {"--wall", wall.string(), "--scene", "picture", "--content",
+                   (dir / "grey.png").string(), "--frames", "2"});
+  EXPECT_FALSE(picture.wait(60s).ok());
+  EXPECT_NE(picture.output().find("--scene picture: packed stereo walls (side-by-side, "
+                                  "top-bottom) do not support it (its pixels are drawn one to "
+                                  "one, not squeezed into each eye's half)"),
+            std::string::npos)
+      << picture.output();
+  expect_clean(picture);
 }
 
 }  // namespace

@@ -47,6 +47,22 @@ glm::vec3 key_colour(std::uint32_t key) {
          255.0f;
 }
 
+// `part` written into `whole` with its top-left corner at (x, y); it fits.
+void paste(const RgbImage& part, RgbImage& whole, int x, int y) {
+  for (int row = 0; row < part.height(); ++row)
+    std::copy_n(part.row(row).data(), part.stride(),
+                whole.row(y + row).data() + static_cast<std::size_t>(x) * RgbImage::kChannels);
+}
+
+// The part of display `d` that holds `tile` (a planned tile lies in one: split_at_displays).
+DisplayPart part_holding(const StereoSpec& stereo, const Display& d, const Rect& tile) {
+  if (!packed_stereo(stereo)) return {d.on_canvas(), d.eye, d.on_canvas()};
+  for (const DisplayPart& p : display_parts(stereo, d))
+    if (intersect(p.on_canvas, tile) == tile) return p;
+  throw std::out_of_range(
+      fmt::format("display {}: a tile at {},{} spans its halves", d.id, tile.x, tile.y));
+}
+
 }  // namespace
 
 Pipeserver::Pipeserver(const TileLayout& layout, int pipeserver, Renderer renderer)
@@ -80,22 +96,24 @@ void Pipeserver::make_windows(const Wall& wall) {
   // it, one display at a time, each tile clearing its own rectangle. A new layout keeps the
   // contexts it can. A turned display is rendered upright, as the canvas is, and turned while its
   // tiles are packed (depth_out.hpp). A passive stereo wall's twins share a rectangle, not a
-  // window: each eye's tiles are drawn with its own camera.
+  // window: each eye's tiles are drawn with its own camera. A packed stereo display is two
+  // windows, one a half, each showing its eye's picture of the whole display squeezed.
   windows_.clear();
   for (int i = 0; i < static_cast<int>(plan_.tiles.size()); ++i) {
-    const Display& d = wall.displays.at(static_cast<std::size_t>(plan_.tiles[i].tile.display));
+    const DisplayTile& t = plan_.tiles[static_cast<std::size_t>(i)].tile;
+    const Display& d = wall.displays.at(static_cast<std::size_t>(t.display));
+    const DisplayPart part = part_holding(wall.stereo, d, t.on_canvas);
+    const Rect& r = part.on_canvas;
     const auto at = std::find_if(contexts_.begin(), contexts_.end(), [&](const auto& c) {
-      return c->width() == d.canvas_width() && c->height() == d.canvas_height();
+      return c->width() == r.w && c->height() == r.h;
     });
     const std::size_t context = static_cast<std::size_t>(at - contexts_.begin());
     if (at == contexts_.end())
-      contexts_.push_back(
-          std::make_unique<GlContext>(d.canvas_width(), d.canvas_height(), renderer_));
-    auto w = std::find_if(windows_.begin(), windows_.end(), [&](const Window& x) {
-      return x.on_canvas == d.on_canvas() && x.eye == d.eye;
-    });
+      contexts_.push_back(std::make_unique<GlContext>(r.w, r.h, renderer_));
+    auto w = std::find_if(windows_.begin(), windows_.end(),
+                          [&](const Window& x) { return x.on_canvas == r && x.eye == part.eye; });
     if (w == windows_.end()) {
-      windows_.push_back({d.on_canvas(), d.eye, context, {}});
+      windows_.push_back({r, part.eye, part.seen, context, {}});
       w = windows_.end() - 1;
     }
     w->tiles.push_back(i);
@@ -170,7 +188,7 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst, Eye f
       // A KEY tile is cleared to its key colour: what it does not draw is transparent (§7).
       renderer->draw_tile(
           t.on_canvas, w.on_canvas,
-          t.compositing == Compositing::Key ? key_colour(t.key) : scene.clear_colour());
+          t.compositing == Compositing::Key ? key_colour(t.key) : scene.clear_colour(), w.seen);
       // OSMesa has no timer queries: the tile's time is the CPU's until its pixels are done.
       gl().Finish();
       times_.tile_ms[static_cast<std::size_t>(i)] = cpu_ms() - tile_start;
@@ -199,11 +217,11 @@ void Pipeserver::render_windows(Scene& scene, std::span<std::uint8_t> dst, Eye f
 }
 
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame,
-                            const StereoEye& eye) {
+                            const StereoEye& eye, const Rect& seen) {
   GlContext context(rect.w, rect.h);
   scene.set_frame(frame);
   TileRenderer renderer(scene, canvas, {}, eye);
-  renderer.draw_tile(rect, rect);
+  renderer.draw_tile(rect, rect, scene.clear_colour(), seen.empty() ? rect : seen);
   context.finish();
   RgbImage image(rect.w, rect.h);
   scan_out(context.rgba(), rect.w, rect.h, image.bytes());
@@ -218,9 +236,18 @@ RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, i
   }
   const Display& d = displays[static_cast<std::size_t>(display)];
   const FrameEye shows = frame_eye(layout.wall.stereo, frame);
-  return to_panel(render_canvas_rect(canvas_of(layout.wall), d.on_canvas(), scene, shows.frame,
-                                     {d.eye == Eye::None ? shows.eye : d.eye, layout.wall.stereo}),
-                  d.orientation);
+  const std::vector<DisplayPart> parts = display_parts(layout.wall.stereo, d);
+  const auto render = [&](const DisplayPart& p) {
+    return render_canvas_rect(canvas_of(layout.wall), p.on_canvas, scene, shows.frame,
+                              {p.eye == Eye::None ? shows.eye : p.eye, layout.wall.stereo}, p.seen);
+  };
+  if (parts.size() == 1) return to_panel(render(parts.front()), d.orientation);
+  // A packed display's halves, each its own render, side by side or one above the other (the
+  // wall file refuses a turned one).
+  RgbImage whole(d.width, d.height);
+  for (const DisplayPart& p : parts)
+    paste(render(p), whole, p.on_canvas.x - d.canvas_x, p.on_canvas.y - d.canvas_y);
+  return whole;
 }
 
 }  // namespace l2

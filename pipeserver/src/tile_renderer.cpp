@@ -1,5 +1,7 @@
 #include "pipeserver/tile_renderer.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
@@ -160,6 +162,14 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window) {
 }
 
 void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear) {
+  draw_tile(on_canvas, window, clear, window);
+}
+
+void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear,
+                             const Rect& seen) {
+  const bool squeezed = seen != window;
+  if (squeezed && !windows_.empty())
+    throw std::invalid_argument("a session's windows cannot be squeezed into packed stereo");
   setup_state(scene_.lit());
   gl().Viewport(0, 0, window.w, window.h);
   // GL rows count from the bottom of the window.
@@ -170,16 +180,27 @@ void TileRenderer::draw_tile(const Rect& on_canvas, const Rect& window, glm::vec
   // in a framebuffer the rest must stay black (the mesh would read colour there as headers).
   gl().ClearColor(clear.r, clear.g, clear.b, 1.0f);
   gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (scene_.fill_tile(canvas_, on_canvas, pixels_)) detail::draw_rgb(pixels_, gl_x, gl_y);
+  if (scene_.fill_tile(canvas_, on_canvas, pixels_)) {
+    if (squeezed)
+      throw std::invalid_argument(
+          fmt::format("a {} scene's pixels cannot be squeezed into packed stereo", scene_.name()));
+    detail::draw_rgb(pixels_, gl_x, gl_y);
+  }
   gl().MatrixMode(GL_PROJECTION);
-  const glm::dmat4 to_window = tile_matrix(canvas_, window);
+  const glm::dmat4 to_window = tile_matrix(canvas_, seen);
   gl().LoadMatrixd(glm::value_ptr(to_window * glm::dmat4(camera_.projection)));
   gl().MatrixMode(GL_MODELVIEW);
   gl().LoadMatrixf(glm::value_ptr(camera_.view * scene_.model()));
   scene_.draw_tile({canvas_, on_canvas, scene_.frame(), to_window, camera_});
+  // Footprints are on the canvas the camera frames: a squeezed tile is compared by what it shows.
+  const Rect shows = squeezed
+                         ? Rect{seen.x + (on_canvas.x - window.x) * seen.w / window.w,
+                                seen.y + (on_canvas.y - window.y) * seen.h / window.h,
+                                on_canvas.w * seen.w / window.w, on_canvas.h * seen.h / window.h}
+                         : on_canvas;
   const auto& batches = scene_.batches();
   for (std::size_t i = 0; i < batches.size(); ++i) {
-    if (share_count_[i] == 0 || !overlaps(footprints_[i], on_canvas)) continue;
+    if (share_count_[i] == 0 || !overlaps(footprints_[i], shows)) continue;
     draw_batch(batches[i], share_first_[i], share_count_[i]);
     ++stats_.tile_draws;
     if (!drawn_[i]) {

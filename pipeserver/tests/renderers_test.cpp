@@ -102,6 +102,16 @@ TEST_P(RenderersOnExampleWall, GiveTheSamePixels) {
 INSTANTIATE_TEST_SUITE_P(Walls, RenderersOnExampleWall,
                          ::testing::ValuesIn(test::diagonal_wall_scenes()), test::wall_scene_name);
 
+// A packed stereo display's halves are windows of half its size, each read back alone.
+TEST(Renderers, GiveTheSamePixelsOnPackedStereoWalls) {
+  for (const char* wall : {"stereo-side-by-side-2x1.toml", "stereo-top-bottom-2x1.toml"}) {
+    SCOPED_TRACE(wall);
+    expect_renderers_alike(
+        plan_layout(load_wall(std::filesystem::path(L2_SOURCE_DIR) / "examples/walls" / wall)),
+        "mesh", test::small_options(), 3);
+  }
+}
+
 // Pictures (glDrawPixels), a session of windows over a background, a model's texture.
 TEST(Renderers, GiveTheSamePixelsOnPicturesSessionsAndTextures) {
   const TileLayout layout = plan_layout(default_wall());

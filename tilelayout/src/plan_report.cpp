@@ -164,10 +164,15 @@ void pipeservers(const TileLayout& layout, std::string& out) {
   }
 }
 
-// Which eye a display shows on a stereo wall: its own (passive), or both in turn (active).
+// Which eye a display shows on a stereo wall: its own (passive), both in turn (active), or both
+// at once, one in each half (packed).
 std::string eye_of(const Wall& wall, const Display& d) {
   if (d.eye != Eye::None) return fmt::format(", {} eye", kEyeNames[static_cast<int>(d.eye)]);
   if (wall.stereo.mode == StereoMode::Active) return ", both eyes in turn (active stereo)";
+  if (wall.stereo.mode == StereoMode::SideBySide)
+    return ", left eye in its left half, right eye in its right (side-by-side stereo)";
+  if (wall.stereo.mode == StereoMode::TopBottom)
+    return ", left eye in its top half, right eye in its bottom (top-bottom stereo)";
   return {};
 }
 

@@ -4,7 +4,8 @@
 // twins, one per eye, covering the same canvas rectangle and swapping together, so each eye's
 // displays show the whole picture and both eyes of a frame are shown in the same refresh. An
 // active wall's displays have no eye: each shows both, one refresh after the other, all in one
-// swap group.
+// swap group. A packed wall's displays (side-by-side, top-bottom) have no eye either: each shows
+// both at once, one in each half of its raster (wall.hpp's display_parts).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -115,6 +116,30 @@ void check_one_shutter(const TomlFields& top, const Wall& wall) {
   }
 }
 
+// A packed display shows each eye in one half of its raster, as the display unpacks it: its
+// halves are whole pixels, and what changes pixels after the tiles (a warp, alpha and beta
+// maps) or turns its raster would move pixels across the halves or put them in the wrong one.
+void check_packed(const TomlFields& top, const Wall& wall) {
+  if (!packed_stereo(wall.stereo)) return;
+  const bool side = wall.stereo.mode == StereoMode::SideBySide;
+  const char* mode = side ? "side-by-side" : "top-bottom";
+  for (const Display& d : wall.displays) {
+    const auto fail = [&](const std::string& why) {
+      top.source().fail(display_line(top, d.id), fmt::format("display {}", d.id),
+                        fmt::format("{} stereo: {}", mode, why));
+    };
+    const int length = side ? d.width : d.height;
+    if (length % 2 != 0)
+      fail(fmt::format("{} {} is odd: each eye takes exactly half of it", side ? "width" : "height",
+                       length));
+    if (!d.orientation.identity())
+      fail("rotation and flip are not supported (each eye's half is in the panel's own raster)");
+    if (!d.warp.empty()) fail("warp is not supported (it would move pixels across the halves)");
+    if (!d.alpha.empty() || !d.beta.empty())
+      fail("alpha and beta maps are not supported (they are drawn for the unpacked picture)");
+  }
+}
+
 }  // namespace
 
 void read_stereo(const TomlFields& top, Wall& wall) {
@@ -136,20 +161,13 @@ void read_stereo(const TomlFields& top, Wall& wall) {
     top.fail("stereo",
              fmt::format("must be {} or a [stereo] section, got {}", quoted_modes(), type_name(n)));
   }
-  // Before the displays are read: a wall written for a mode to come is told so, not that its
-  // displays' eyes are wrong.
-  if (s.mode != StereoMode::Passive && s.mode != StereoMode::Active) {
-    top.source().fail(
-        s.line, "stereo",
-        fmt::format("stereo walls do not support \"{}\" (only \"passive\" and \"active\") yet",
-                    kStereoModeNames[static_cast<int>(s.mode)]));
-  }
 }
 
 void read_stereo_displays(const TomlFields& top, Wall& wall) {
   if (wall.stereo.mode == StereoMode::Passive && top.table("display_grid")) twin_grid(wall);
   check_eyes(top, wall);
   check_one_shutter(top, wall);
+  check_packed(top, wall);
 }
 
 void check_stereo(const TomlFields& top, const Wall& wall) {

@@ -64,6 +64,10 @@ struct DisplayShown {
   int display = 0;  // id
   int frame = -1;   // the frame stamp it shows; -1: no frame yet (background only)
   int rank = 0;     // the column rank that holds it (0 in one process)
+  // The oldest frame stamp among the pipeservers' strips routed into the picture it shows:
+  // `frame` when every part of it is of one frame (a packed stereo display's halves, both eyes,
+  // packed_stereo_record.hpp); -1: none.
+  int oldest = -1;
   bool operator==(const DisplayShown&) const = default;
 };
 

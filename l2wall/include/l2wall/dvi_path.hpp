@@ -25,6 +25,7 @@
 #include "l2wall/display_path.hpp"
 #include "l2wall/frame_lock_record.hpp"
 #include "l2wall/live_run.hpp"
+#include "l2wall/packed_stereo_record.hpp"
 #include "l2wall/quad_buffer.hpp"
 #include "l2wall/swap_lock_check.hpp"
 #include "lightning2_emu/frame_sequencer.hpp"
@@ -134,6 +135,8 @@ class DviPath final : public DisplayPath {
   // parity of one frame (with stereo-refreshes.csv, each refresh's eye and frame).
   std::optional<QuadBuffer> quad_;
   std::optional<ActiveStereoCheck> active_check_;
+  // A packed stereo wall's proof that each display's halves show one frame, both eyes.
+  std::optional<PackedStereoRecord> packed_;
   // This refresh: what the sequencer decided, and what the columns saw.
   std::vector<int> swapped_;
   FrameSequencer::Decision decision_;

@@ -96,8 +96,9 @@ inline constexpr const char* kMpirunKeepsJob =
 // wall file's line.
 Status balance_refusal(const RunOptions& options, const Wall& wall, RunPlace place);
 // Why this run cannot show its active stereo wall (an odd --frames would leave a frame's right
-// eye unshown; sessions, desktops and movies are not done), or nullopt: one line naming the
-// option. Any other wall: none. The same on one machine and over MPI.
+// eye unshown; sessions, desktops and movies are not done) or its packed one (pictures, movies,
+// sessions and desktops are drawn one to one, not squeezed into each eye's half), or nullopt:
+// one line naming the option. Any other wall: none. The same on one machine and over MPI.
 Status stereo_refusal(const RunOptions& options, const Wall& wall);
 // With survival asked for, what the run says as it starts: how many lost pipeservers the wall
 // survives (tilelayout's survival line, the same words tilelayout prints), e.g.

@@ -13,7 +13,7 @@ using mpi_wire::Reader;
 using mpi_wire::Record;
 
 constexpr std::size_t kSpotWords = 5, kPipeserverStampsWords = 3 * kSpotWords;
-constexpr std::size_t kInputWords = 7, kStampsShownWords = 3, kDisplayWords = 2;
+constexpr std::size_t kInputWords = 7, kStampsShownWords = 3, kDisplayWords = 3;
 
 void put(Record& r, const StampSpot& s) {
   r.insert(r.end(), {s.fb_x, s.fb_y, s.display, s.dx, s.dy});
@@ -62,7 +62,7 @@ Record encode(const Observation& o) {
   r.push_back(static_cast<std::int64_t>(o.stamps.size()));
   for (const StampsShown& s : o.stamps) r.insert(r.end(), {s.pipeserver, s.last, s.before});
   r.push_back(static_cast<std::int64_t>(o.displays.size()));
-  for (const DisplayShown& d : o.displays) r.insert(r.end(), {d.display, d.frame});
+  for (const DisplayShown& d : o.displays) r.insert(r.end(), {d.display, d.frame, d.oldest});
   return r;
 }
 
@@ -94,6 +94,7 @@ Observation decode_observation(const Record& record) {
   for (DisplayShown& d : o.displays) {
     d.display = in.next_int();
     d.frame = in.next_int();
+    d.oldest = in.next_int();
   }
   if (!in.done()) throw std::runtime_error("MPI record: words past its last item");
   return o;

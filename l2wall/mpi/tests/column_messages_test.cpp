@@ -44,7 +44,7 @@ TEST(ColumnMessages, ObservationRoundTrips) {
   sent.inputs = {{0, true, false, true, 1, 0x8000000000000001ull, 12},
                  {3, false, true, false, 0, 0, -1}};
   sent.stamps = {{1, 11, kStampNotHere}, {3, kStampNotHere, 10}};
-  sent.displays = {{8, 11, 0}, {9, -1, 0}};  // the rank is the receiver's to fill
+  sent.displays = {{8, 11, 0, 10}, {9, -1, 0, -1}};  // the rank is the receiver's to fill
   EXPECT_EQ(decode_observation(encode(sent)), sent);
 }
 

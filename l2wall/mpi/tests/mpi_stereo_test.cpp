@@ -2,7 +2,8 @@
 // frames as the pipeserver children of a one-machine run do, the column routes them, and the
 // coordinator's DVI path shows each frame's two eyes as a pair, alternating every refresh, and
 // checks it from the stamps the column reads.
-// Both paths' displays equal the one-machine run's byte for byte, stamps included.
+// Both paths' displays equal the one-machine run's byte for byte, stamps included. A packed wall
+// the same.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -40,6 +41,37 @@ TEST(MpiStereo, AnActiveWallShowsTheOneMachineRunsEyeFrames) {
         EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
         EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
       }
+    }
+  }
+}
+
+// A packed wall (side-by-side: each display both eyes, one in each half) over MPI: the ranks
+// render and route a mono wall's frames, so both paths' displays equal the one-machine run's
+// byte for byte, and the coordinator counts both eyes of every frame in the halves.
+std::vector<std::string> packed_args() {
+  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-side-by-side-2x1.toml";
+  return {"--wall", wall.string(), "--scene", "mesh",      "--frames", "3", "--refresh",
+          "0",      "--path",      "both",    "--compare", "--keep",   "2"};
+}
+
+TEST(MpiStereo, APackedWallShowsTheOneMachineRunsHalves) {
+  const MpirunBase base;
+  std::vector<std::string> args = packed_args();
+  args.push_back("--mpi");
+  // The coordinator, 2 pipeserver ranks, 1 board column.
+  WallRun mpi("mpi-stereo-packed", args, {}, false, mpirun(base, 4));
+  ASSERT_TRUE(wait_mpirun(mpi, base, 180s).ok()) << mpi.output();
+  EXPECT_NE(mpi.output().find("packed stereo (side-by-side): each of 2 display(s) showed both "
+                              "eyes of each of its frames in its two halves in the same refresh"),
+            std::string::npos)
+      << mpi.output();
+  WallRun one("mpi-stereo-packed-one", packed_args());
+  ASSERT_TRUE(one.wait(120s).ok()) << one.output();
+  for (int d = 0; d < 2; ++d) {
+    for (const char* path : {"", "-vizserver"}) {
+      const std::string name = fmt::format("frame-2/display-{}{}.png", d, path);
+      EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
+      EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
     }
   }
 }

@@ -86,10 +86,12 @@ class Pipeserver {
   Renderer renderer() const { return renderer_; }
 
  private:
-  // The tiles of one display, rendered in a window of the display's size.
+  // The tiles of one display (or one half of a packed stereo display: tilelayout/wall.hpp's
+  // display_parts), rendered in a window of its size.
   struct Window {
-    Rect on_canvas;           // the display
-    Eye eye = Eye::None;      // the display's, on a passive stereo wall
+    Rect on_canvas;           // the display or its half
+    Eye eye = Eye::None;      // the display's on a passive stereo wall, the half's on a packed one
+    Rect seen;                // the canvas rectangle it shows (squeezed on a packed wall)
     std::size_t context = 0;  // into contexts_
     std::vector<int> tiles;   // into plan_.tiles
   };
@@ -114,12 +116,15 @@ class Pipeserver {
 // What display `display` should show for `frame`: the display's canvas rectangle rendered
 // whole, at display resolution, with the same camera (its eye's on a passive stereo wall, the
 // frame's on an active one, whose frames are eye frames: tilelayout/wall.hpp's frame_eye; its own
-// GL context), turned into the panel's raster as it hangs (image/orientation.hpp).
+// GL context), turned into the panel's raster as it hangs (image/orientation.hpp). On a packed
+// stereo wall each half is rendered alone, its eye's picture of the whole display squeezed.
 RgbImage render_reference(const TileLayout& layout, int display, Scene& scene, int frame);
 
 // Any canvas rectangle rendered alone into an image of its size (its own GL context): the
-// reference render's engine, and the whole-canvas render the tile tests crop.
+// reference render's engine, and the whole-canvas render the tile tests crop. `seen`: the
+// canvas rectangle whose picture fills the image, squeezed when it is larger (a packed stereo
+// half); empty: `rect` itself.
 RgbImage render_canvas_rect(const Canvas& canvas, const Rect& rect, Scene& scene, int frame,
-                            const StereoEye& eye = {});
+                            const StereoEye& eye = {}, const Rect& seen = {});
 
 }  // namespace l2

@@ -41,9 +41,13 @@ class TileRenderer {
   // current framebuffer, window.w x window.h, its row 0 the window's bottom row — draws it:
   // only the part inside `on_canvas`, first cleared to `clear` (0..1 per channel; the scene's
   // clear colour by default) and the far depth; then a session's windows over it, clipped to
-  // the tile, back to front.
+  // the tile, back to front. `seen`: the canvas rectangle whose picture the window shows, when
+  // it is not `window` itself: a packed stereo display's half shows the whole display squeezed
+  // into it (tilelayout/wall.hpp's display_parts), only scenes of geometry (no pixels, no
+  // windows: those are drawn at canvas pixels; std::invalid_argument).
   void draw_tile(const Rect& on_canvas, const Rect& window);
   void draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear);
+  void draw_tile(const Rect& on_canvas, const Rect& window, glm::vec3 clear, const Rect& seen);
 
   // The windows' draws included.
   BucketStats stats() const;

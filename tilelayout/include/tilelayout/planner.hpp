@@ -36,7 +36,8 @@ TileLayout plan_layout(const Wall& wall, const std::vector<int>& pipeserver_of_l
 // depth-first order, first half left/top).
 std::vector<Rect> make_logical_tiles(const Wall& wall);
 
-// Each logical tile intersected with each display (in display order); empty parts dropped.
+// Each logical tile intersected with each display (in display order), and on a packed stereo
+// wall with each half of it (tilelayout/wall.hpp's display_parts); empty parts dropped.
 std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<Rect>& logical);
 
 // The pipeserver of each logical tile. `weights` is the work per tile (its visible pixels),

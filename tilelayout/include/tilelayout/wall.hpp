@@ -170,7 +170,9 @@ struct FrameLockSpec {
 // `stereo` (docs/wall-file.md, "Stereo walls"): how a wall shows two eyes. Passive: each eye has
 // its own displays (Display::eye), every display of one eye twinned with one of the other that
 // covers the same canvas rectangle. Active (frame-sequential): every display shows both eyes,
-// one after the other (frame_eye below). The packed modes are read and refused until done.
+// one after the other (frame_eye below). Packed (side-by-side, top-bottom, as 3D TVs and
+// projectors take HDMI frame packing): every display shows both eyes at once, one in each half
+// (display_parts below).
 enum class StereoMode { Mono, Passive, Active, SideBySide, TopBottom };
 inline constexpr std::string_view kStereoModeNames[] = {"mono", "passive", "active", "side-by-side",
                                                         "top-bottom"};
@@ -216,6 +218,33 @@ struct Wall {
   // Lines in the wall file (0: unknown), so errors found while planning can still point there.
   int tiling_line = 0, framebuffer_line = 0, depth_line = 0;
 };
+
+inline bool packed_stereo(const StereoSpec& s) {
+  return s.mode == StereoMode::SideBySide || s.mode == StereoMode::TopBottom;
+}
+
+// What a display shows, part by part. On a packed stereo wall its left (side-by-side) or top
+// (top-bottom) half shows the left eye and the other half the right eye, each the picture of the
+// display's whole canvas rectangle squeezed into the half (the wall file's checks make the side
+// even); the display unpacks and stretches each half back to the whole screen. Any other
+// display is one part: its canvas rectangle, showing itself, with its own eye (passive) or none.
+struct DisplayPart {
+  Rect on_canvas;  // the part's pixels on the canvas
+  Eye eye = Eye::None;
+  Rect seen;  // the canvas rectangle whose picture it shows: on_canvas unless squeezed
+};
+inline std::vector<DisplayPart> display_parts(const StereoSpec& stereo, const Display& d) {
+  const Rect r = d.on_canvas();
+  if (stereo.mode == StereoMode::SideBySide) {
+    const int half = r.w / 2;
+    return {{{r.x, r.y, half, r.h}, Eye::Left, r}, {{r.x + half, r.y, half, r.h}, Eye::Right, r}};
+  }
+  if (stereo.mode == StereoMode::TopBottom) {
+    const int half = r.h / 2;
+    return {{{r.x, r.y, r.w, half}, Eye::Left, r}, {{r.x, r.y + half, r.w, half}, Eye::Right, r}};
+  }
+  return {{r, d.eye, r}};
+}
 
 // A passive stereo wall's twins (the wall file's checks make them one to one): each left-eye
 // display with the right-eye display on its canvas rectangle, by left id. Empty for any other.
