@@ -16,10 +16,30 @@ namespace {
 
 using namespace testing_support;
 
+// A run of example wall `wall` for `frames` frames on both paths, keeping frames `keep`.
+std::vector<std::string> run_args(const char* wall, int frames, const char* keep) {
+  const fs::path file = fs::path(L2_SOURCE_DIR) / "examples/walls" / wall;
+  return {"--wall",    file.string(), "--scene", "mesh", "--frames",  std::to_string(frames),
+          "--refresh", "0",           "--path",  "both", "--compare", "--keep",
+          keep};
+}
+
 std::vector<std::string> active_args() {
-  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-active-2x1.toml";
-  return {"--wall", wall.string(), "--scene", "mesh",      "--frames", "6",  "--refresh",
-          "0",      "--path",      "both",    "--compare", "--keep",   "4,5"};
+  return run_args("stereo-active-2x1.toml", 6, "4,5");
+}
+
+// Both paths' pictures of frames `frames` are the one-machine run's, byte for byte.
+void expect_same_pictures(const WallRun& mpi, const WallRun& one,
+                          std::initializer_list<int> frames) {
+  for (const int k : frames) {
+    for (int d = 0; d < 2; ++d) {
+      for (const char* path : {"", "-vizserver"}) {
+        const std::string name = fmt::format("frame-{}/display-{}{}.png", k, d, path);
+        EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
+        EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
+      }
+    }
+  }
 }
 
 TEST(MpiStereo, AnActiveWallShowsTheOneMachineRunsEyeFrames) {
@@ -34,24 +54,14 @@ TEST(MpiStereo, AnActiveWallShowsTheOneMachineRunsEyeFrames) {
   EXPECT_EQ(summary->shown - summary->repeated, 3) << mpi.output();
   WallRun one("mpi-stereo-active-one", active_args());
   ASSERT_TRUE(one.wait(120s).ok()) << one.output();
-  for (const int k : {4, 5}) {
-    for (int d = 0; d < 2; ++d) {
-      for (const char* path : {"", "-vizserver"}) {
-        const std::string name = fmt::format("frame-{}/display-{}{}.png", k, d, path);
-        EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
-        EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
-      }
-    }
-  }
+  expect_same_pictures(mpi, one, {4, 5});
 }
 
 // A packed wall (side-by-side: each display both eyes, one in each half) over MPI: the ranks
 // render and route a mono wall's frames, so both paths' displays equal the one-machine run's
 // byte for byte, and the coordinator counts both eyes of every frame in the halves.
 std::vector<std::string> packed_args() {
-  const fs::path wall = fs::path(L2_SOURCE_DIR) / "examples/walls/stereo-side-by-side-2x1.toml";
-  return {"--wall", wall.string(), "--scene", "mesh",      "--frames", "3", "--refresh",
-          "0",      "--path",      "both",    "--compare", "--keep",   "2"};
+  return run_args("stereo-side-by-side-2x1.toml", 3, "2");
 }
 
 TEST(MpiStereo, APackedWallShowsTheOneMachineRunsHalves) {
@@ -67,13 +77,7 @@ TEST(MpiStereo, APackedWallShowsTheOneMachineRunsHalves) {
       << mpi.output();
   WallRun one("mpi-stereo-packed-one", packed_args());
   ASSERT_TRUE(one.wait(120s).ok()) << one.output();
-  for (int d = 0; d < 2; ++d) {
-    for (const char* path : {"", "-vizserver"}) {
-      const std::string name = fmt::format("frame-2/display-{}{}.png", d, path);
-      EXPECT_EQ(slurp(mpi.out() / name), slurp(one.out() / name)) << name;
-      EXPECT_FALSE(slurp(one.out() / name).empty()) << name;
-    }
-  }
+  expect_same_pictures(mpi, one, {2});
 }
 
 }  // namespace
