@@ -56,7 +56,6 @@ void paste(const RgbImage& part, RgbImage& whole, int x, int y) {
 
 // The part of display `d` that holds `tile` (a planned tile lies in one: split_at_displays).
 DisplayPart part_holding(const StereoSpec& stereo, const Display& d, const Rect& tile) {
-  if (!packed_stereo(stereo)) return {d.on_canvas(), d.eye, d.on_canvas()};
   for (const DisplayPart& p : display_parts(stereo, d))
     if (intersect(p.on_canvas, tile) == tile) return p;
   throw std::out_of_range(

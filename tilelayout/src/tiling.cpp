@@ -110,28 +110,18 @@ std::vector<Rect> make_logical_tiles(const Wall& wall) {
 }
 
 std::vector<DisplayTile> split_at_displays(const Wall& wall, const std::vector<Rect>& logical) {
-  // A packed stereo display's halves are drawn by different eyes: no tile spans both. Any other
-  // display is one part, its rectangle (a live balanced run re-plans every frame: no parts
-  // made for it).
-  std::vector<std::vector<Rect>> parts;
-  if (packed_stereo(wall.stereo)) {
-    for (const Display& d : wall.displays) {
-      std::vector<Rect>& own = parts.emplace_back();
-      for (const DisplayPart& p : display_parts(wall.stereo, d)) own.push_back(p.on_canvas);
-    }
-  }
+  // Each display's parts: its rectangle, or a packed stereo display's halves, which different
+  // eyes draw, so that no tile spans both.
+  std::vector<std::vector<DisplayPart>> parts;
+  for (const Display& d : wall.displays) parts.push_back(display_parts(wall.stereo, d));
   std::vector<DisplayTile> out;
   for (int i = 0; i < static_cast<int>(logical.size()); ++i) {
-    for (const Display& d : wall.displays) {
-      const auto add = [&](const Rect& r) {
-        const Rect part = intersect(logical[i], r);
+    for (std::size_t k = 0; k < wall.displays.size(); ++k) {
+      const Display& d = wall.displays[k];
+      for (const DisplayPart& p : parts[k]) {
+        const Rect part = intersect(logical[i], p.on_canvas);
         if (!part.empty())
           out.push_back({d.id, d.to_panel(part), part, i, Compositing::Copy, 0, d.orientation});
-      };
-      if (parts.empty()) {
-        add(d.on_canvas());
-      } else {
-        for (const Rect& r : parts[static_cast<std::size_t>(d.id)]) add(r);
       }
     }
   }
