@@ -6,9 +6,9 @@
 namespace l2 {
 namespace {
 
-// `from` into `to` (the same size), row by row as spans: both keep their own stride.
-void copy_rows(const RgbImage& from, RgbImage& to) {
-  for (int y = 0; y < from.height(); ++y) std::ranges::copy(from.row(y), to.row(y).begin());
+// `from` into `to`, the same size: one span, into the buffer allocated once.
+void copy_into(const RgbImage& from, RgbImage& to) {
+  std::ranges::copy(from.bytes(), to.bytes().begin());
 }
 
 }  // namespace
@@ -56,13 +56,13 @@ void QuadBuffer::take(Buffers& b, int eye_frame, const RgbImage& picture) {
     if (b.filling < 0) b.filling = free_pair(b);
     Pair& p = b.pairs[b.filling];
     p.frame = frame;
-    copy_rows(picture, p.eye[0]);
+    copy_into(picture, p.eye[0]);
     return;
   }
   // A right eye whose left never arrived here makes no pair: the display keeps its front pair.
   if (b.filling < 0 || b.pairs[b.filling].frame != frame) return;
   Pair& p = b.pairs[b.filling];
-  copy_rows(picture, p.eye[1]);
+  copy_into(picture, p.eye[1]);
   if (b.ready >= 0) b.pairs[b.ready].frame = -1;  // a newer pair supersedes one still waiting
   b.ready = std::exchange(b.filling, -1);
 }
