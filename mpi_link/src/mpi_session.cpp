@@ -336,6 +336,14 @@ void MpiSession::end_stopped(int code) {
 }
 
 void MpiSession::abort_all(int code) {
+  end_after_word(code, std::chrono::milliseconds(0));
+}
+
+void MpiSession::end_as_effect(int code) {
+  end_after_word(code, kStopGrace);
+}
+
+void MpiSession::end_after_word(int code, std::chrono::milliseconds wait) {
   // A rank that fails while mpirun stops the run (a pipeserver whose READY stopped coming):
   // the coordinator's word ends it (follow_coordinator), once the report is written.
   if (rank_is_stopping()) await_coordinator_word();
@@ -353,22 +361,10 @@ void MpiSession::abort_all(int code) {
     // is not.
     std::fflush(stderr);
     if (const Fd& fd = session->liveness_.front()) send_last_word(fd.get(), failed_word(code));
+    std::this_thread::sleep_for(wait);  // follow_coordinator may end this process meanwhile
   }
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
-}
-
-void MpiSession::end_as_effect(int code) {
-  MpiSession* session = live_session;
-  const auto launched = launched_rank();
-  if (!session || session->liveness_.empty() || !launched || launched->rank == 0 ||
-      rank_is_stopping())
-    abort_all(code);
-  std::fflush(stderr);
-  if (const Fd& fd = session->liveness_.front()) send_last_word(fd.get(), failed_word(code));
-  std::this_thread::sleep_for(kStopGrace);  // follow_coordinator ends this process meanwhile
-  MPI_Abort(MPI_COMM_WORLD, code);
-  std::_Exit(code);
 }
 
 bool MpiSession::rank_is_stopping() {

@@ -134,6 +134,9 @@ class MpiSession {
   // Waits for the coordinator's word (follow_coordinator ends this process on it), else ends by
   // the signal once it is overdue.
   [[noreturn]] static void await_coordinator_word();
+  // abort_all's and end_as_effect's one way: a rank other than 0 says `code` and then leaves the
+  // end to the coordinator for `wait` before it aborts.
+  [[noreturn]] static void end_after_word(int code, std::chrono::milliseconds wait);
   // Takes in a rank found gone, `cause` as loss_cause says it; true when its loss ends the run.
   bool note_lost(int rank, std::string cause);
   // note_lost of a rank that said it ends by its own error with `code` (-1: the code was cut).
