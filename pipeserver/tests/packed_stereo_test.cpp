@@ -4,7 +4,7 @@
 // of the same canvas rectangle rendered at the half's size, byte for byte, and is that picture
 // at full size with each pair of columns (rows) averaged, but for edges; a square at a known
 // depth lies apart between the halves by the parallax the eye separation gives, worked out here
-// from the geometry (stereo_test.cpp): e·f·(1/c − 1/d) canvas pixels, half of it in a
+// from the geometry (stereo_square.hpp): e·f·(1/c − 1/d) canvas pixels, half of it in a
 // side-by-side half's squeezed pixels, all of it in a top-bottom half's.
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/renderer.hpp"
+#include "stereo_square.hpp"
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -24,61 +25,12 @@
 namespace l2::packed_test {
 namespace {
 
-constexpr double kSeparation = 0.4, kConvergence = 3.0, kCameraDistance = 3.0, kFov = 40.0;
-constexpr int kWidth = 320, kHeight = 240;
+using namespace stereo_square;
+using test::crop;
 
-// One 320x240 display on a 320x240 canvas; tiles of 80x60 dealt to two pipeservers.
-// "passive": twins, one per eye.
+// One 320x240 display, tiles of 70x50 dealt to two pipeservers. "passive": twins, one per eye.
 TileLayout layout_of(const std::string& mode) {
-  std::string displays;
-  for (const char* eye : {"left", "right"}) {
-    displays +=
-        fmt::format("[[display]]\nwidth = {}\nheight = {}\nx = 0\ny = 0\n", kWidth, kHeight);
-    if (mode != "passive") break;
-    displays += fmt::format("eye = \"{}\"\n", eye);
-  }
-  const std::string text = fmt::format(
-      "[stereo]\nmode = \"{}\"\neye_separation = {}\nconvergence = {}\n{}"
-      "[tiling]\nkind = \"grid\"\ntile_width = 70\ntile_height = 50\n"
-      "[pipeservers]\ncount = 2\nframebuffer_width = 400\nframebuffer_height = 320\n",
-      mode, kSeparation, kConvergence, displays);
-  return plan_layout(parse_wall(text, "packed.toml"));
-}
-
-// A white square 0.6 scene units a side facing the eyes, `z` in front of the scene's centre, on
-// black, with the test's camera.
-std::unique_ptr<Scene> square_at(float z) {
-  auto scene = make_own_scene([z](const TileView&) {
-    gl().Begin(GL_QUADS);
-    gl().Color3f(1.0f, 1.0f, 1.0f);
-    gl().Vertex3f(-0.3f, -0.3f, z);
-    gl().Vertex3f(0.3f, -0.3f, z);
-    gl().Vertex3f(0.3f, 0.3f, z);
-    gl().Vertex3f(-0.3f, 0.3f, z);
-    gl().End();
-  });
-  CameraOptions camera;
-  camera.distance = static_cast<float>(kCameraDistance);
-  camera.fov = static_cast<float>(kFov);
-  scene->set_camera(camera);
-  return scene;
-}
-
-// Frame `frame` through the pipeservers, each display checked against its reference (for a
-// packed display, its halves rendered alone): the reassembled displays.
-std::vector<RgbImage> reassembled(const TileLayout& layout, Scene& scene, int frame) {
-  const auto check = test::check_wall(layout, scene, frame);
-  EXPECT_EQ(check.reassembly.errors.total(), 0u);
-  for (std::size_t d = 0; d < check.diffs.size(); ++d)
-    EXPECT_EQ(check.diffs[d].pixels_differing, 0) << "display " << d << ", frame " << frame;
-  return check.reassembly.displays;
-}
-
-RgbImage crop(const RgbImage& image, const Rect& r) {
-  RgbImage out(r.w, r.h);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) out.set(x, y, image.at(r.x + x, r.y + y));
-  return out;
+  return square_wall(mode, 70, 50, 400, 320);
 }
 
 // The halves of a packed display: left (top) then right (bottom).
@@ -88,26 +40,6 @@ std::pair<RgbImage, RgbImage> halves(const RgbImage& d, bool side) {
   const Rect second = side ? Rect{d.width() / 2, 0, d.width() / 2, d.height()}
                            : Rect{0, d.height() / 2, d.width(), d.height() / 2};
   return {crop(d, first), crop(d, second)};
-}
-
-// The mean (x, y) of the lit pixels, and how many there are.
-struct Lit {
-  double x = -1, y = -1;
-  long count = 0;
-};
-Lit lit(const RgbImage& image) {
-  Lit l{0, 0, 0};
-  for (int y = 0; y < image.height(); ++y)
-    for (int x = 0; x < image.width(); ++x)
-      if (image.at(x, y).r > 128) l.x += x, l.y += y, ++l.count;
-  if (l.count > 0) l.x /= static_cast<double>(l.count), l.y /= static_cast<double>(l.count);
-  return l;
-}
-
-// In canvas pixels: a point at `distance` from the eyes, right eye less left eye.
-double expected_parallax(double distance) {
-  const double focal = kHeight / (2 * std::tan(kFov / 2 * std::numbers::pi / 180));
-  return kSeparation * focal * (1 / kConvergence - 1 / distance);
 }
 
 // The right half's square centre less the left half's (x), and the same in y.

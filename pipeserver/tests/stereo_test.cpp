@@ -1,10 +1,7 @@
 // A passive stereo wall (docs/wall-file.md, "Stereo walls"): each eye's displays reassemble to
 // their own eye's reference, and a square at a known depth lies apart between the eyes by the
-// parallax the eye separation gives, worked out here from the geometry of two parallel eyes with
-// shifted frusta, not from the camera code: a point at distance d from the eyes shows the right
-// eye's picture e·f·(1/c − 1/d) pixels right of the left eye's, where e is the eye separation,
-// c the convergence distance and f = H / (2·tan(fov/2)) the focal length in pixels of a canvas
-// H pixels tall. An active wall shows the same two eyes in consecutive eye frames of one display.
+// parallax the eye separation gives (stereo_square.hpp works it out from the geometry). An
+// active wall shows the same two eyes in consecutive eye frames of one display.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -14,6 +11,7 @@
 
 #include "pipeserver/pipeserver.hpp"
 #include "pipeserver/renderer.hpp"
+#include "stereo_square.hpp"
 #include "test_support.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -21,71 +19,12 @@
 namespace l2::stereo_test {
 namespace {
 
-constexpr double kSeparation = 0.4, kConvergence = 3.0, kCameraDistance = 3.0, kFov = 40.0;
-constexpr int kWidth = 320, kHeight = 240;
+using namespace stereo_square;
 
 // Passive: one projector per eye on one 320x240 canvas rectangle. Active: one projector showing
 // both eyes. Its tiles dealt to two pipeservers.
 TileLayout stereo_layout(const std::string& mode = "passive") {
-  const bool passive = mode == "passive";
-  std::string displays;
-  for (const char* eye : {"left", "right"}) {
-    displays +=
-        fmt::format("[[display]]\nwidth = {}\nheight = {}\nx = 0\ny = 0\n", kWidth, kHeight);
-    if (!passive) break;
-    displays += fmt::format("eye = \"{}\"\n", eye);
-  }
-  const std::string text = fmt::format(
-      "[stereo]\nmode = \"{}\"\neye_separation = {}\nconvergence = {}\n{}"
-      "[tiling]\nkind = \"grid\"\ntile_width = 80\ntile_height = 60\n"
-      "[pipeservers]\ncount = 2\nframebuffer_width = 340\nframebuffer_height = 260\n",
-      mode, kSeparation, kConvergence, displays);
-  return plan_layout(parse_wall(text, "stereo.toml"));
-}
-
-// A white square 0.6 scene units a side facing the eyes, `z` in front of the scene's centre
-// (so kCameraDistance − z from the eyes), on black.
-std::unique_ptr<Scene> square_at(float z, float orbit = 0.0f) {
-  auto scene = make_own_scene([z](const TileView&) {
-    gl().Begin(GL_QUADS);
-    gl().Color3f(1.0f, 1.0f, 1.0f);
-    gl().Vertex3f(-0.3f, -0.3f, z);
-    gl().Vertex3f(0.3f, -0.3f, z);
-    gl().Vertex3f(0.3f, 0.3f, z);
-    gl().Vertex3f(-0.3f, 0.3f, z);
-    gl().End();
-  });
-  CameraOptions camera;
-  camera.distance = static_cast<float>(kCameraDistance);
-  camera.fov = static_cast<float>(kFov);
-  camera.orbit = orbit;
-  scene->set_camera(camera);
-  return scene;
-}
-
-// The mean x of the lit pixels, and how many there are.
-std::pair<double, long> centre_x(const RgbImage& image) {
-  double sum = 0;
-  long count = 0;
-  for (int y = 0; y < image.height(); ++y)
-    for (int x = 0; x < image.width(); ++x)
-      if (image.at(x, y).r > 128) sum += x, ++count;
-  return {count > 0 ? sum / static_cast<double>(count) : -1.0, count};
-}
-
-double expected_parallax(double distance) {
-  const double focal = kHeight / (2 * std::tan(kFov / 2 * std::numbers::pi / 180));
-  return kSeparation * focal * (1 / kConvergence - 1 / distance);
-}
-
-// Frame `frame` through the pipeservers, each display checked against its reference: the
-// reassembled displays.
-std::vector<RgbImage> reassembled(const TileLayout& layout, Scene& scene, int frame) {
-  const auto check = test::check_wall(layout, scene, frame);
-  EXPECT_EQ(check.reassembly.errors.total(), 0u);
-  for (std::size_t d = 0; d < check.diffs.size(); ++d)
-    EXPECT_EQ(check.diffs[d].pixels_differing, 0) << "display " << d << ", frame " << frame;
-  return check.reassembly.displays;
+  return square_wall(mode, 80, 60, 340, 260);
 }
 
 // Both eyes through the pipeservers: a passive wall's twins in frame 0, or an active wall's one
@@ -98,12 +37,11 @@ double measured_parallax(float z, const std::string& mode = "passive") {
   const std::vector<RgbImage> first = reassembled(layout, *scene, passive ? 0 : 2);
   const RgbImage& left_eye = first[0];
   const RgbImage right_eye = passive ? first[1] : reassembled(layout, *scene, 3)[0];
-  const auto [left, left_count] = centre_x(left_eye);
-  const auto [right, right_count] = centre_x(right_eye);
+  const Lit left = lit(left_eye), right = lit(right_eye);
   // A square some 60 pixels a side or more, whole in both eyes.
-  EXPECT_GT(left_count, 2000);
-  EXPECT_GT(right_count, 2000);
-  return right - left;
+  EXPECT_GT(left.count, 2000);
+  EXPECT_GT(right.count, 2000);
+  return right.x - left.x;
 }
 
 TEST(PassiveStereo, ASquareAtTheConvergenceDistanceShowsNoParallax) {

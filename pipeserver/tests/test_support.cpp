@@ -95,6 +95,13 @@ ImageDiff& ImageDiff::operator+=(const ImageDiff& o) {
   return *this;
 }
 
+RgbImage crop(const RgbImage& image, const Rect& r) {
+  RgbImage out(r.w, r.h);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) out.set(x, y, image.at(r.x + x, r.y + y));
+  return out;
+}
+
 ImageDiff compare(const RgbImage& a, const RgbImage& b) {
   if (a.width() != b.width() || a.height() != b.height()) {
     throw std::invalid_argument("compare: images differ in size");

@@ -38,6 +38,8 @@ struct ImageDiff {
   ImageDiff& operator+=(const ImageDiff& o);
 };
 ImageDiff compare(const RgbImage& a, const RgbImage& b);
+// The pixels of `image` in `r` (inside it).
+RgbImage crop(const RgbImage& image, const Rect& r);
 // Also counts differing pixels on the border rows/columns of the display's tiles.
 ImageDiff compare(const RgbImage& a, const RgbImage& b, const TileLayout& layout, int display);
 

@@ -12,12 +12,7 @@
 namespace l2 {
 namespace {
 
-RgbImage crop(const RgbImage& img, const Rect& r) {
-  RgbImage out(r.w, r.h);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) out.set(x, y, img.at(r.x + x, r.y + y));
-  return out;
-}
+using test::crop;
 
 // Canvas rectangle `r` drawn as the window of the whole canvas draws it, the rest black.
 RgbImage tile_in_window(const Canvas& canvas, const Rect& r, Scene& scene, int frame) {
