@@ -316,6 +316,27 @@ picture("rgb-2x2.exr", bytes.fromhex(
 # SGI: a 512-byte header (magic 474, verbatim, a byte a channel, three channels), then planes.
 picture("rgb-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 0, 1, 3, 4, 4, 3, 0, 255, 0).ljust(512, b"\0")
         + bytes(range(48)))
+# Findings kept as seeds: an SGI of storage 64 and 0 bytes a channel, which crashed its reader as
+# it read a row; an OpenEXR of 26 half channels a million pixels wide in PIZ's chunks of 32
+# lines, whose chunk buffer (1.6 GB) OpenEXR allocated as it opened the file.
+picture("zero-bytes-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 64, 0, 3, 4, 4, 3, 0, 255, 0)
+        .ljust(512, b"\0") + bytes(range(48)))
+
+
+def exr_attribute(name, type_, value):
+    return name.encode() + b"\0" + type_.encode() + b"\0" + struct.pack("<I", len(value)) + value
+
+
+picture("wide-chunk.exr", b"\x76\x2f\x31\x01" + struct.pack("<I", 2) +
+        exr_attribute("channels", "chlist", b"".join(bytes([65 + c]) + b"\0" +
+                      struct.pack("<IIII", 1, 0, 1, 1) for c in range(26)) + b"\0") +
+        exr_attribute("compression", "compression", b"\x04") +
+        exr_attribute("dataWindow", "box2i", struct.pack("<4i", 0, 0, 999999, 63)) +
+        exr_attribute("displayWindow", "box2i", bytes(16)) +
+        exr_attribute("lineOrder", "lineOrder", b"\0") +
+        exr_attribute("pixelAspectRatio", "float", struct.pack("<f", 1)) +
+        exr_attribute("screenWindowCenter", "v2f", bytes(8)) +
+        exr_attribute("screenWindowWidth", "float", struct.pack("<f", 1)) + b"\0" + bytes(512))
 
 
 # --- frame_delta: width-1 and height-1 bytes, then one message (dvi_link/frame_delta.hpp) -----

@@ -3,11 +3,14 @@
 # for SECONDS seconds from its seed corpus (fuzz/corpus/<harness>), then prints per harness the
 # executions, their rate, and libFuzzer's coverage figures (cov: code edges, ft: features) from
 # its last status line. Exits 1 if any harness crashed, hung (over 10 s on one input) or
-# broke a promise; the input that did it is saved in build/fuzz/runs/<harness>/artifacts/
-# (under FUZZ_OUT instead of build/fuzz/runs when set).
+# broke a promise; the input that did it is saved in build/<preset>/runs/<harness>/artifacts/
+# (under FUZZ_OUT instead of build/<preset>/runs when set).
 # Usage: scripts/fuzz.sh SECONDS [HARNESS...]   (default: all of them)
 # FUZZ_RUNS=N also stops each harness after N executions (a long run: FUZZ_RUNS=10000000 with
 # SECONDS as the upper bound). FUZZ_JOBS=N runs N harnesses at a time (default: one a core).
+# FUZZ_PRESET=fuzz-long builds them with LeakSanitizer's allocator alone (build/fuzz-long): several
+# times the executions a second where a harness's time goes to libraries ASan does not
+# instrument (the picture readers), its allocation limit and leak check kept.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ || $1 -lt 1 ]]; then
@@ -19,10 +22,13 @@ shift
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=(scanline ready wall_file session_file colour_lut warp_pfm wall_import mpcdi_import vizserver_wire png_frame picture_header jpeg_frame picture_file frame_delta control_line tuio)
 
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$(nproc)" -- --quiet
+preset=${FUZZ_PRESET:-fuzz}
+[[ $preset == fuzz || $preset == fuzz-long ]] ||
+  { echo "fuzz.sh: FUZZ_PRESET '$preset' is not fuzz or fuzz-long" >&2; exit 2; }
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset" -j "$(nproc)" -- --quiet
 
-out=${FUZZ_OUT:-build/fuzz/runs}  # FUZZ_OUT: another folder, for a run beside this one
+out=${FUZZ_OUT:-build/$preset/runs}  # FUZZ_OUT: another folder, for a run beside this one
 # FUZZ_JOBS harnesses run side by side (default: one a core): each is one process, so the smoke
 # run takes SECONDS per FUZZ_JOBS harnesses. Their lines are printed in the list's order.
 jobs=${FUZZ_JOBS:-$(nproc)}
@@ -50,7 +56,7 @@ fuzz_one() {
   # 512 MiB, with room), nor the process past 2 GB; files of up to 64 kB.
   [[ $h == picture_file ]] && limits=(-max_len=65536 -malloc_limit_mb=1024 -rss_limit_mb=2048)
   local status=0
-  build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
+  build/"$preset"/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
     >"$log" 2>&1 || status=$?
   local runs rate last cov ft corpus verdict took

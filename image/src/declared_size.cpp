@@ -91,6 +91,29 @@ Status check_gif(std::string_view b, std::uintmax_t file_size) {
   return check_declared(d, file_size);
 }
 
+// An SGI image's header (big-endian: magic 474, storage, bytes per channel, dimension, sides):
+// its reader trusts the storage and sample size it finds, and one of 0 bytes a channel crashed
+// it as it read a row (found by fuzz_picture_file). The format has verbatim or RLE storage, 1 or
+// 2 bytes a channel and 1 to 3 dimensions; anything else is no SGI image.
+Status check_sgi(std::string_view b) {
+  if (b.size() < 12) return {};
+  const auto byte = [&](std::size_t at) { return static_cast<unsigned char>(b[at]); };
+  const unsigned storage = byte(2), bpc = byte(3), dimension = byte(4) << 8 | byte(5);
+  if (storage > 1) {
+    return Failure{"cannot read: an SGI image of storage " + std::to_string(storage) +
+                   " (the format has 0, verbatim, and 1, RLE)"};
+  }
+  if (bpc != 1 && bpc != 2) {
+    return Failure{"cannot read: an SGI image of " + std::to_string(bpc) +
+                   " bytes a channel (the format has 1 or 2)"};
+  }
+  if (dimension < 1 || dimension > 3) {
+    return Failure{"cannot read: an SGI image of dimension " + std::to_string(dimension) +
+                   " (the format has 1 to 3)"};
+  }
+  return {};
+}
+
 bool is(std::string_view a, std::initializer_list<std::string_view> names) {
   return std::find(names.begin(), names.end(), a) != names.end();
 }
@@ -106,6 +129,9 @@ Result<HeaderFacts> check_header(std::string_view b, std::uintmax_t file_size) {
   // 19018x19018 asked for 1.4 GB).
   if (b.substr(0, 3) == "GIF") {
     if (const Status s = check_gif(b, file_size); !s.ok()) return Failure{s.reason()};
+  }
+  if (b.substr(0, 2) == "\x01\xDA") {
+    if (const Status s = check_sgi(b); !s.ok()) return Failure{s.reason()};
   }
   if (b.size() >= 3 && b.substr(0, 3) == "\xFF\xD8\xFF") facts.decoded_whole = jpeg_progressive(b);
   return facts;

@@ -108,6 +108,29 @@ TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
             "cannot read: a DDS whose alpha bit mask is zero, no channel its reader can unpack");
 }
 
+// An SGI header: magic 474 (0x01DA), storage, bytes a channel, dimension (big-endian), sides.
+// fuzz_picture_file's 109 bytes of storage 64 and 0 bytes a channel crashed the reader as it
+// read a row.
+TEST(DeclaredSize, AnSgiHeaderOutsideTheFormatIsRefused) {
+  std::string sgi("\x01\xDA\x00\x01\x00\x03\x00\x02\x00\x02\x00\x03", 12);
+  sgi.resize(512 + 2 * 2 * 3, '\0');
+  EXPECT_TRUE(check_header(sgi, sgi.size()).ok());
+  sgi[3] = 2;
+  EXPECT_TRUE(check_header(sgi, sgi.size()).ok());
+  sgi[3] = 0;
+  EXPECT_EQ(check_header(sgi, sgi.size()).reason(),
+            "cannot read: an SGI image of 0 bytes a channel (the format has 1 or 2)");
+  sgi[3] = 1;
+  sgi[2] = 0x40;
+  EXPECT_EQ(check_header(sgi, sgi.size()).reason(),
+            "cannot read: an SGI image of storage 64 (the format has 0, verbatim, and 1, RLE)");
+  sgi[2] = 1;
+  EXPECT_TRUE(check_header(sgi, sgi.size()).ok());
+  sgi[5] = 4;
+  EXPECT_EQ(check_header(sgi, sgi.size()).reason(),
+            "cannot read: an SGI image of dimension 4 (the format has 1 to 3)");
+}
+
 TEST(DeclaredSize, HeadersBeforeTheReader) {
   // "DDS " and 124 bytes: height at 12, width at 16, levels at 28 (little-endian).
   std::string dds(128, '\0');

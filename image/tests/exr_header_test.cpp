@@ -63,6 +63,99 @@ TEST(ExrHeader, EveryPartOfAMultipartFileIsWalked) {
   EXPECT_TRUE(check(exr(0, part + bad)).ok());
 }
 
+// A data window from (x0, y0) to (x1, y1), both corners in it.
+std::string window(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1) {
+  return attribute("dataWindow", "box2i", 16,
+                   le32(static_cast<std::uint32_t>(x0)) + le32(static_cast<std::uint32_t>(y0)) +
+                       le32(static_cast<std::uint32_t>(x1)) + le32(static_cast<std::uint32_t>(y1)));
+}
+
+std::string tiles(std::uint32_t width, std::uint32_t height) {
+  return attribute("tiles", "tiledesc", 9, le32(width) + le32(height) + std::string(1, '\0'));
+}
+
+std::string compression(unsigned char code) {
+  return attribute("compression", "compression", 1, std::string(1, static_cast<char>(code)));
+}
+
+// `count` channels named A, B, ... of `type` (0 UINT, 1 HALF, 2 FLOAT), each 16 bytes after its
+// name, the list ended by an empty name.
+std::string channels(int count, std::uint32_t type) {
+  std::string list;
+  for (int c = 0; c < count; ++c) {
+    list += std::string(1, static_cast<char>('A' + c)) + '\0' + le32(type) + std::string(4, '\0') +
+            le32(1) + le32(1);
+  }
+  list += '\0';
+  return attribute("channels", "chlist", static_cast<std::uint32_t>(list.size()), list);
+}
+
+// OpenEXR allocates a part's offset table, eight bytes a chunk, from its data window as it opens
+// the file.
+TEST(ExrHeader, ADataWindowWhoseOffsetsAloneOutgrowTheFileIsRefused) {
+  // The window's attribute is "dataWindow\0" (11), "box2i\0" (6), the size (4) and 16 bytes:
+  // 37. Without a compression, a line a chunk: 2 lines, 16 bytes of offsets, in 8 + 37 + 1 + 8.
+  EXPECT_TRUE(check(exr(0, window(0, 0, 1, 1) + '\0' + std::string(8, '\0'))).ok());
+  EXPECT_EQ(check(exr(0, window(0, 0, 0, 8191) + '\0' + std::string(100, '\0'))).reason(),
+            "cannot read: an OpenEXR data window of 1x8192 pixels in at least 8192 chunks, whose "
+            "offsets alone are more than the file's 146 bytes");
+  // DWAB puts 256 lines in a chunk: 512 lines are 2 chunks, 16 bytes; as ZIP (16 lines), 32
+  // chunks, 256 bytes. The compression's attribute: 12 + 12 + 4 + 1 = 29 bytes; 8 + 37 + 29 + 1
+  // + 100 in all.
+  EXPECT_TRUE(
+      check(exr(0, window(0, 0, 0, 511) + compression(9) + '\0' + std::string(100, '\0'))).ok());
+  EXPECT_EQ(
+      check(exr(0, window(0, 0, 0, 511) + compression(3) + '\0' + std::string(100, '\0'))).reason(),
+      "cannot read: an OpenEXR data window of 1x512 pixels in at least 32 chunks, whose offsets "
+      "alone are more than the file's 175 bytes");
+  // Tiled: 64x64 pixels in 1x1 tiles, 4096 of them (the tile description "tiles\0" (6),
+  // "tiledesc\0" (9), the size and 9 bytes: 28), in 8 + 37 + 28 + 1 + 1000 bytes.
+  EXPECT_EQ(
+      check(exr(0, window(0, 0, 63, 63) + tiles(1, 1) + '\0' + std::string(1000, '\0'))).reason(),
+      "cannot read: an OpenEXR data window of 64x64 pixels in at least 4096 chunks, whose "
+      "offsets alone are more than the file's 1074 bytes");
+  EXPECT_TRUE(
+      check(exr(0, window(0, 0, 63, 63) + tiles(32, 32) + '\0' + std::string(32, '\0'))).ok());
+}
+
+// OpenEXR allocates the buffer of a chunk as it opens the file: fuzz_picture_file's 26 half
+// channels a million pixels wide, in PIZ's chunks of 32 lines, asked for 1.6 GB.
+TEST(ExrHeader, AChunkLargerThanAReaderMayHoldIsRefused) {
+  const std::string padding(1 << 12, '\0');
+  // 1000000 x 32 x 52 bytes = 1587 MiB.
+  EXPECT_EQ(
+      check(exr(0, channels(26, 1) + compression(4) + window(0, 0, 999999, 63) + '\0' + padding))
+          .reason(),
+      "cannot read: an OpenEXR data window of 1000000x64 pixels of 52 bytes each, in chunks "
+      "of 1000000x32 (1587 MiB decoded), more than a reader may hold (512 MiB)");
+  // Scanlines of none: 1000000 x 1 x 52 bytes is 50 MiB, and 64 chunks fit the padding.
+  EXPECT_TRUE(
+      check(exr(0, channels(26, 1) + compression(0) + window(0, 0, 999999, 63) + '\0' + padding))
+          .ok());
+  // Tiles of 16384x16384 of 3 floats: 3072 MiB.
+  EXPECT_EQ(
+      check(exr(0, channels(3, 2) + window(0, 0, 99, 99) + tiles(16384, 16384) + '\0' + padding))
+          .reason(),
+      "cannot read: an OpenEXR data window of 100x100 pixels of 12 bytes each, in chunks of "
+      "16384x16384 (3072 MiB decoded), more than a reader may hold (512 MiB)");
+}
+
+TEST(ExrHeader, ADataWindowBeyondAnyWallIsRefusedWhateverTheFile) {
+  EXPECT_EQ(check(exr(0, window(-2000000000, 0, 2000000000, 0) + '\0')).reason(),
+            "cannot read: an OpenEXR data window of 4000000001x1 pixels, more than 1048576 a "
+            "side");
+}
+
+TEST(ExrHeader, TheOffsetsOfEveryPartCountTogether) {
+  // Two parts of 8 lines, a line a chunk: 16 chunks, 128 bytes of offsets together. They fit in
+  // 8 + 2 * (37 + 1) + 1 + 60 = 145 bytes, not in the same without the 60 bytes after (85).
+  const std::string part = window(0, 0, 0, 7) + '\0';
+  EXPECT_TRUE(check(exr(0x1000, part + part + '\0' + std::string(60, '\0'))).ok());
+  EXPECT_EQ(check(exr(0x1000, part + part + '\0')).reason(),
+            "cannot read: an OpenEXR data window of 1x8 pixels in at least 16 chunks, whose "
+            "offsets alone are more than the file's 85 bytes");
+}
+
 // OpenEXR reads a name of at most 255 characters, with or without the long-names flag, and 256
 // bytes of a longer one, the rest read as the next field: a size is found where it finds it
 // (fuzz_picture_file found 1.6 GB behind a name of 33 characters, which a walk stopping at 31

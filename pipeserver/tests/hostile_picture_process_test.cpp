@@ -45,6 +45,9 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"huge.ico", hostile::ico(huge_png)},
       {"cut.ico", hostile::ico(hostile::small_png().substr(0, 40))},
       {"no-green.dds", hostile::dds_no_green()},
+      {"chunk.exr", hostile::exr_window(1000000, 64, 26, 4)},
+      {"zero.sgi", hostile::sgi(0, 0)},
+      {"storage.sgi", hostile::sgi(64, 1)},
       {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
   };

@@ -26,7 +26,8 @@ inline constexpr double kMaxWholeMegabytes = 512;
 
 // What the bytes before the reader say, from the file's first bytes (at most 4096) and its size:
 // a DDS's mip levels against its sides and its size, a GIF's screen against its size (both are
-// trusted while the file is opened), and whether a JPEG is progressive (decoded whole). Failure:
+// trusted while the file is opened), an SGI image's storage, sample size and dimension (trusted
+// as its rows are read), and whether a JPEG is progressive (decoded whole). Failure:
 // one line saying what the file declares.
 struct HeaderFacts {
   bool decoded_whole = false;

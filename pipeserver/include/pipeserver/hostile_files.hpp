@@ -258,6 +258,46 @@ inline std::string exr_attribute(std::uint32_t size) {
          le32(size) + "abc";
 }
 
+// An OpenEXR file of `channels` half-float channels named A, B, ..., of `compression`
+// (OpenEXR's code: 0 none, 4 PIZ), its data window `width` x `height`, then 4096 bytes:
+// OpenEXR allocated the buffer of a chunk as it opened the file (fuzz_picture_file's 26 channels
+// a million pixels wide in PIZ's chunks of 32 lines: 1.6 GB).
+inline std::string exr_window(std::uint32_t width, std::uint32_t height, int channels,
+                              unsigned char compression) {
+  const auto attribute = [](const std::string& name, const std::string& type,
+                            const std::string& value) {
+    return name + '\0' + type + '\0' + le32(static_cast<std::uint32_t>(value.size())) + value;
+  };
+  std::string list;
+  for (int c = 0; c < channels; ++c) {
+    list += std::string(1, static_cast<char>('A' + c)) + '\0' + le32(1) + std::string(4, '\0') +
+            le32(1) + le32(1);
+  }
+  list += '\0';
+  const std::string window = le32(0) + le32(0) + le32(width - 1) + le32(height - 1);
+  const std::string one = le32(0) + le32(0) + le32(0) + le32(0);
+  return std::string("\x76\x2f\x31\x01", 4) + le32(2) + attribute("channels", "chlist", list) +
+         attribute("compression", "compression", std::string(1, static_cast<char>(compression))) +
+         attribute("dataWindow", "box2i", window) + attribute("displayWindow", "box2i", one) +
+         attribute("lineOrder", "lineOrder", std::string(1, '\0')) +
+         attribute("pixelAspectRatio", "float", le32(0x3f800000)) +
+         attribute("screenWindowCenter", "v2f", std::string(8, '\0')) +
+         attribute("screenWindowWidth", "float", le32(0x3f800000)) + std::string(1, '\0') +
+         std::string(4096, '\0');
+}
+
+// An SGI image's header (big-endian: magic 474, `storage`, `bytes_per_channel`, 3 dimensions,
+// 4x4 pixels of 3 channels) and its planes at one byte a sample: a `bytes_per_channel` of 0
+// crashed the reader as it read a row.
+inline std::string sgi(unsigned char storage, unsigned char bytes_per_channel) {
+  std::string h("\x01\xDA", 2);
+  h += static_cast<char>(storage);
+  h += static_cast<char>(bytes_per_channel);
+  h += std::string("\x00\x03\x00\x04\x00\x04\x00\x03", 8);
+  h.resize(512, '\0');
+  return h + std::string(48, '\x40');
+}
+
 // dds_levels(1) with its green bit mask zero: OpenImageIO's reader shifted it for ever.
 inline std::string dds_no_green() {
   std::string d = dds_levels(1);
