@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # A cluster on one machine: each host a Linux network namespace with its own address and host
 # name, joined by a bridge, its link shaped to a rate if asked (tc tbf) or made to lose packets
-# (nftables' random drop: this kernel may lack netem, so delay and jitter cannot be made), and a
-# command run across
+# (nftables' random drop), or joined instead by the link emulator (tools/link_emulator: a switch
+# between tap devices that holds every packet for a delay with jitter, as netem would, which
+# this machine's kernel lacks), and a command run across
 # the hosts with mpirun as on real machines (a hostfile, an rsh agent that enters the namespaces,
 # the MPI interfaces pinned to the cluster's subnet). mpirun itself runs on the first host, as a
 # user would on the head node. Everything made is removed when it ends, however it ends; names
 # are unique to the run, so two runs at once do not meet. Needs root (CI is).
 #
-# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--loss PERCENT] [--subnet A.B.C]
+# Usage: scripts/cluster.sh [--hosts NAME:SLOTS,...] [--rate RATE] [--loss PERCENT]
+#                           [--delay MS [--jitter MS]] [--link-emulator PATH] [--subnet A.B.C]
 #                           [--keep-job] [--id ID] -- PROGRAM ARGS...
 #        scripts/cluster.sh --link ID HOST cut|restore
 #   --hosts    the hosts and how many ranks each takes, in rank order (default
@@ -18,6 +20,13 @@
 #   --loss     each host's link drops this share of its packets at random, both ways: 0 < PERCENT
 #              < 100, one decimal at most (e.g. 1, 0.5); a packet between two hosts crosses two
 #              links, so about twice PERCENT of them are lost end to end (nftables' numgen random)
+#   --delay    every packet a host sends is held MS milliseconds (e.g. 5, 0.5) before it reaches
+#              the host it is for, as `tc netem delay MS` on every host's link: the hosts are
+#              joined by the link emulator, not the bridge (not with --rate)
+#   --jitter   with --delay: each packet's hold drawn uniformly from the delay ± MS, never below
+#              0, so packets overtake each other as under netem (default 0)
+#   --link-emulator PATH
+#              the link emulator program (default: build/default/tools/link_emulator/link_emulator)
 #   --subnet   the hosts' /24, host i at .(i+2) (default 10.213.7; only inside the namespaces)
 #   --keep-job mpirun keeps the job when a rank dies (--mca orte_enable_recovery 1 --mca
 #              orte_abort_on_non_zero_status 0), as `l2wall run --mpi --survive-host-loss` needs;
@@ -34,18 +43,24 @@
 #              told) or restore it; exits 1 with a line if ID-HOST is not there
 # It runs: mpirun -np <the slots' sum> --hostfile ... PROGRAM ARGS..., prints that command on
 # one line ("cluster: ..."), with --loss a last line of what the links dropped ("cluster: --loss 1:
-# the hosts' links dropped 37 of 3815 packets"), and exits with its code; 77 when this machine cannot make network
+# the hosts' links dropped 37 of 3815 packets"), with --delay one of what the link emulator
+# carried and how long it held each ("cluster: link_emulator: 52310 frames ... held 0.0 to
+# 10.3 ms, mean 5.02 ms; dropped ..."), and exits with its code; 77 when this machine cannot make network
 # namespaces (not root, no ip netns), said in one line. Open MPI's own lines that -q does not
 # reach and that say nothing wrong of the run here are left out of its stderr (noise() below).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 hosts_spec=render-a:3,render-b:2,display-a:1 rate= loss= subnet=10.213.7 keep_job=() id=
+delay= jitter= emulator=$here/../build/default/tools/link_emulator/link_emulator emulator_pid=
 usage() { sed -n '/^# Usage:/,/^set /p' "$0" | sed '$d; s/^# \{0,1\}//'; }
 while (($#)); do
   case $1 in
     --hosts) hosts_spec=${2:?--hosts needs NAME:SLOTS,...}; shift 2 ;;
     --rate) rate=${2:?--rate needs a rate such as 1gbit}; shift 2 ;;
     --loss) loss=${2:?--loss needs a percentage such as 1}; shift 2 ;;
+    --delay) delay=${2:?--delay needs milliseconds such as 5}; shift 2 ;;
+    --jitter) jitter=${2:?--jitter needs milliseconds such as 5}; shift 2 ;;
+    --link-emulator) emulator=${2:?--link-emulator needs a path}; shift 2 ;;
     --subnet) subnet=${2:?--subnet needs A.B.C}; shift 2 ;;
     --id) id=${2:?--id needs a name}; shift 2 ;;
     --link) shift; exec bash "$here/cluster-link.sh" "$@" ;;
@@ -64,6 +79,28 @@ if [[ -n $rate && ! $rate =~ ^[0-9]+[kmg]bit$ ]]; then
 fi
 if [[ -n $loss ]] && ! [[ $loss =~ ^[0-9]{1,2}(\.[0-9])?$ && ${loss/./} =~ [1-9] ]]; then
   echo "cluster.sh: --loss '$loss' is not a percentage above 0 and below 100 (one decimal at most)" >&2
+  exit 2
+fi
+# Milliseconds: at most 10000, three decimals at most.
+milliseconds() { [[ $1 =~ ^[0-9]{1,5}(\.[0-9]{1,3})?$ ]] && awk -v t="$1" 'BEGIN { exit !(t <= 10000) }'; }
+if [[ -n $delay ]] && ! { milliseconds "$delay" && [[ $delay =~ [1-9] ]]; }; then
+  echo "cluster.sh: --delay '$delay' is not milliseconds above 0 and at most 10000 (e.g. 5, 0.5)" >&2
+  exit 2
+fi
+if [[ -n $jitter ]] && ! milliseconds "$jitter"; then
+  echo "cluster.sh: --jitter '$jitter' is not milliseconds from 0 to 10000 (e.g. 5, 0.5)" >&2
+  exit 2
+fi
+if [[ -n $jitter && -z $delay ]]; then
+  echo "cluster.sh: --jitter needs --delay (the jitter is around the delay)" >&2
+  exit 2
+fi
+if [[ -n $delay && -n $rate ]]; then
+  echo "cluster.sh: --delay and --rate cannot be combined: the link emulator does not shape links" >&2
+  exit 2
+fi
+if [[ -n $delay && ! -x $emulator ]]; then
+  echo "cluster.sh: --delay needs the link emulator, not at $emulator (cmake --build --preset default, or --link-emulator PATH)" >&2
   exit 2
 fi
 if [[ -n $id && ! $id =~ ^[a-z][a-z0-9]{0,7}$ ]]; then
@@ -109,7 +146,10 @@ cleanup() {
     kill -9 $pids 2>/dev/null || true
   done
   [[ -z $loss ]] || say_losses
+  [[ -z $emulator_pid ]] || say_held
   for h in "${names[@]}"; do ip netns del "$id-$h" 2>/dev/null || true; done
+  # Links not yet moved into a namespace when the setup failed.
+  for h in "${!names[@]}"; do ip link del "${id}h$h" 2>/dev/null || true; done
   ip link del "${id}br" 2>/dev/null || true
   rm -rf "$work"
 }
@@ -122,6 +162,12 @@ say_losses() {
                              if (/drop/) dropped += n; else seen += n }
          END { printf "%d %d", dropped, seen }')
   echo "cluster: --loss $loss: the hosts' links dropped ${counts% *} of ${counts#* } packets"
+}
+# --delay: the link emulator ended and its last line (what it carried, held and dropped) shown.
+say_held() {
+  kill -TERM "$emulator_pid" 2>/dev/null || true
+  wait "$emulator_pid" 2>/dev/null || true
+  echo "cluster: $(tail -1 "$work/link_emulator.out")"
 }
 interrupted=0
 trap cleanup EXIT
@@ -154,15 +200,39 @@ if [[ -n $loss ]] && ! command -v nft >/dev/null; then
   echo "cluster.sh: --loss needs nftables' nft (apt-get install nftables)" >&2
   exit 2
 fi
-ip link add "${id}br" type bridge
-ip link set "${id}br" up
+# The hosts' links: veth pairs joined by a bridge, or with --delay tap devices whose other ends
+# the link emulator holds. It attaches to them here, before they move into the hosts'
+# namespaces, where their names are no longer seen from here.
+if [[ -z $delay ]]; then
+  ip link add "${id}br" type bridge
+  ip link set "${id}br" up
+fi
+for i in "${!names[@]}"; do
+  ip netns add "$id-${names[$i]}"
+  if [[ -n $delay ]]; then
+    ip tuntap add dev "${id}h$i" mode tap
+  else
+    ip link add "${id}h$i" type veth peer name "${id}b$i"
+    ip link set "${id}b$i" master "${id}br"
+    ip link set "${id}b$i" up
+  fi
+done
+if [[ -n $delay ]]; then
+  taps=()
+  for i in "${!names[@]}"; do taps+=(--tap "${id}h$i"); done
+  "$emulator" "${taps[@]}" --delay "$delay" --jitter "${jitter:-0}" >"$work/link_emulator.out" &
+  emulator_pid=$!
+  for _ in $(seq 100); do
+    grep -q '^link_emulator: ready$' "$work/link_emulator.out" && break
+    kill -0 "$emulator_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  grep -q '^link_emulator: ready$' "$work/link_emulator.out" ||
+    { echo "cluster: the link emulator did not start" >&2; emulator_pid=; exit 1; }
+fi
 : >"$work/hostfile"
 for i in "${!names[@]}"; do
   ns=$id-${names[$i]}
-  ip netns add "$ns"
-  ip link add "${id}h$i" type veth peer name "${id}b$i"
-  ip link set "${id}b$i" master "${id}br"
-  ip link set "${id}b$i" up
   ip link set "${id}h$i" netns "$ns"
   ip -n "$ns" link set lo up
   ip -n "$ns" addr add "$subnet.$((i + 2))/24" dev "${id}h$i"
@@ -182,7 +252,7 @@ mpirun=(mpirun -q -np "$np" --hostfile "$work/hostfile" --map-by slot
   --mca orte_tmpdir_base "$work" --mca plm_rsh_agent "$here/netns-rsh.sh" --mca btl self,tcp
   --mca btl_tcp_if_include "$subnet.0/24" --mca oob_tcp_if_include "$subnet.0/24"
   --mca mpi_yield_when_idle 1 "${keep_job[@]}")
-echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }, namespaces $id-HOST) on $subnet.0/24${rate:+, links at $rate}${loss:+, $loss % loss each way}: ${mpirun[*]} $*"
+echo "cluster: ${#names[@]} hosts (${hosts_spec//,/ }, namespaces $id-HOST) on $subnet.0/24${rate:+, links at $rate}${loss:+, $loss % loss each way}${delay:+, each packet held $delay${jitter:+ ± $jitter} ms by the link emulator}: ${mpirun[*]} $*"
 # Open MPI 4.1's lines that -q does not reach, each harmless here: the
 # rsh launcher cannot move a namespace's agent into its own process group (the agent is ended
 # with the job all the same); PMIx reports a bad parameter of its event notification when a job

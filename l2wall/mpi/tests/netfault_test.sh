@@ -2,7 +2,8 @@
 # The wall across hosts whose network fails (scripts/cluster.sh: network namespaces joined by a
 # bridge, mpirun across them), the default wall over render-a (coordinator, pipeservers 0-1),
 # render-b (pipeservers 2-3) and display-a (the board column):
-#   a. 1 % of the packets dropped at random on every host's link, both ways (--loss 1): both
+#   a. 1 % of the packets dropped at random on every host's link, both ways (--loss 1), and every
+#      packet held 5 ms ± 5 ms (--delay 5 --jitter 5: the link emulator, as netem would): both
 #      paths, their displays the one-machine run's bytes, swap lock every refresh;
 #   b. render-b's link cut mid-run (every packet dropped, no connection told): the coordinator
 #      names a pipeserver on render-b and what it lost within the liveness timeout (a ceiling of
@@ -12,12 +13,11 @@
 #   d. --survive-host-loss under an mpirun that keeps the job, pipeserver 2 alone on render-b
 #      (the wall has room for one loss): its link cut, the run goes on without it, says so and
 #      renders every frame; nothing left once the link is back.
-# Before them, a bad --loss, --id or --link is refused in one line. Delay and jitter are not
-# tested: this machine's kernel has no netem to make them.
+# Before them, a bad --loss, --delay, --jitter, --id or --link is refused in one line.
 # Exit 77 (skipped) where this machine cannot make network namespaces or has no nft.
-# Usage: netfault_test.sh L2WALL OUT CLUSTER_SH
+# Usage: netfault_test.sh L2WALL OUT CLUSTER_SH LINK_EMULATOR
 set -euo pipefail
-l2wall=$1 out=$2 cluster=$3
+l2wall=$1 out=$2 cluster=$3 emulator=$4
 rm -rf "$out" && mkdir -p "$out"
 command -v nft >/dev/null || { echo "no nft (apt-get install nftables): skipped"; exit 77; }
 source "$(dirname "$0")/rank_pid.sh"
@@ -35,11 +35,21 @@ for p in 0 0.0 100 1.55 -1 abc; do
   refused 2 "cluster.sh: --loss '$p' is not a percentage above 0 and below 100 (one decimal at most)" \
     --loss "$p" -- true
 done
+for d in 0 0.000 abc 1e3 10001 5.0001; do
+  refused 2 "cluster.sh: --delay '$d' is not milliseconds above 0 and at most 10000 (e.g. 5, 0.5)" \
+    --delay "$d" -- true
+done
+refused 2 "cluster.sh: --jitter '-1' is not milliseconds from 0 to 10000 (e.g. 5, 0.5)" --delay 5 --jitter -1 -- true
+refused 2 "cluster.sh: --jitter needs --delay (the jitter is around the delay)" --jitter 5 -- true
+refused 2 "cluster.sh: --delay and --rate cannot be combined: the link emulator does not shape links" \
+  --delay 5 --rate 1gbit -- true
+refused 2 "cluster.sh: --delay needs the link emulator, not at $out/none (cmake --build --preset default, or --link-emulator PATH)" \
+  --delay 5 --link-emulator "$out/none" -- true
 refused 2 "cluster.sh: --id 'Render' is not a-z then a-z or 0-9, 8 at most" --id Render -- true
 refused 2 "cluster.sh --link: 'down' is not cut or restore" --link nfnone render-b down
 refused 1 "cluster.sh --link: no host render-b in cluster nfnone (no namespace nfnone-render-b)" \
   --link nfnone render-b cut
-echo "cluster.sh refuses a bad --loss, --id and --link in one line"
+echo "cluster.sh refuses a bad --loss, --delay, --jitter, --id and --link in one line"
 
 # same_displays ONE MPI FRAME: every display picture of FRAME of ONE is in MPI, byte for byte.
 same_displays() {
@@ -52,21 +62,33 @@ same_displays() {
   echo "  $n display pictures of frame $3 the same bytes as on one machine"
 }
 
-# a. 1 % loss on every link, both paths.
-frames=30
+# a. 1 % loss and 5 ms ± 5 ms on every link, both paths: TCP under that loss and reordering
+# carries the vizserver path's whole tiles slowly, so fewer frames than the other cases.
+frames=12
 "$l2wall" run --path both --compare --frames $frames --refresh 0 --out "$out/one" --no-progress >/dev/null
 status=0
-bash "$cluster" --loss 1 -- "$l2wall" run --mpi --path both --compare --frames $frames --refresh 0 \
+bash "$cluster" --loss 1 --delay 5 --jitter 5 --link-emulator "$emulator" -- \
+  "$l2wall" run --mpi --path both --compare --frames $frames --refresh 0 \
   --out "$out/lossy" --no-progress >"$out/lossy.txt" 2>"$out/lossy.err" || status=$?
 if ((status == 77)); then cat "$out/lossy.err"; exit 77; fi
-((status == 0)) || { echo "FAIL: --loss 1: exit $status"; cat "$out/lossy.err"; exit 1; }
+((status == 0)) || { echo "FAIL: --loss 1 --delay 5 --jitter 5: exit $status"; cat "$out/lossy.err"; exit 1; }
 grep -qE "^compare: [0-9]+ display pictures identical byte for byte" "$out/lossy.txt" ||
-  { echo "FAIL: --loss 1: no compare line"; cat "$out/lossy.txt"; exit 1; }
+  { echo "FAIL: lossy, late links: no compare line"; cat "$out/lossy.txt"; exit 1; }
 grep -E "^swap lock: every display of each of [0-9]+ group\(s\) showed the same frame in all [0-9]+ refreshes" \
-  "$out/lossy.txt" || { echo "FAIL: --loss 1: no swap-lock line"; cat "$out/lossy.txt"; exit 1; }
+  "$out/lossy.txt" || { echo "FAIL: lossy, late links: no swap-lock line"; cat "$out/lossy.txt"; exit 1; }
 dropped=$(sed -n 's/^cluster: --loss 1: the hosts.* links dropped \([0-9]*\) of [0-9]* packets$/\1/p' "$out/lossy.txt")
 ((${dropped:-0} > 0)) || { echo "FAIL: --loss 1 dropped no packet"; tail -3 "$out/lossy.txt"; exit 1; }
 echo "1 % loss on every link: $(grep '^cluster: --loss' "$out/lossy.txt")"
+# The emulator's line: frames carried, and their mean hold. Each frame's hold is drawn from
+# 0..10 ms and none leaves before its time, so a mean under 4 ms means frames were not held.
+held=$(grep '^cluster: link_emulator: ' "$out/lossy.txt") ||
+  { echo "FAIL: no line of the link emulator"; tail -3 "$out/lossy.txt"; exit 1; }
+[[ $held =~ ^cluster:\ link_emulator:\ ([0-9]+)\ frames\ .*\ each\ held\ 5\ ±\ 5\ ms:\ held\ [0-9.]+\ to\ [0-9.]+\ ms,\ mean\ ([0-9]+)\.[0-9]+\ ms\;\ dropped\ 0\ past ]] ||
+  { echo "FAIL: the link emulator's line is not as expected: $held"; exit 1; }
+((BASH_REMATCH[1] > 1000 && BASH_REMATCH[2] >= 4)) ||
+  { echo "FAIL: the link emulator carried too little or held too briefly: $held"; exit 1; }
+[[ $held != *"went away"* ]] || { echo "FAIL: a tap went away mid-run: $held"; exit 1; }
+echo "every packet held 5 ± 5 ms: $held"
 same_displays "$out/one" "$out/lossy" $((frames - 1))
 
 
