@@ -117,11 +117,4 @@ ColumnRoute decode_route(Reader& in) {
   return route;
 }
 
-Record encode(const ColumnRoute& route, const Tick& next) {
-  Record r = encode(route);
-  const Record tick = encode(next);
-  r.insert(r.end(), tick.begin(), tick.end());
-  return r;
-}
-
 }  // namespace l2

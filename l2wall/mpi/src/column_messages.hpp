@@ -10,7 +10,6 @@
 //   mpi_wire::send(encode(tick), column_rank, mpi_wire::kCommand);
 //   // on the column, after reading the command word kTick:
 //   const Tick got = decode_tick(reader);
-// A command record may hold several commands, one after the other (a route, then a tick).
 #pragma once
 
 #include <cstdint>
@@ -34,10 +33,5 @@ Observation decode_observation(const mpi_wire::Record& record);
 mpi_wire::Record encode(const ColumnRoute& route);
 // Reads what follows the command word.
 ColumnRoute decode_route(mpi_wire::Reader& in);
-
-// A refresh's route and the next refresh's tick in one record: the route's record, then the
-// tick's. At full speed the next refresh follows a completing one at once; the column takes
-// both at one wake-up, in the order it would have taken them apart.
-mpi_wire::Record encode(const ColumnRoute& route, const Tick& next);
 
 }  // namespace l2

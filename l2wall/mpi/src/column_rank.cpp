@@ -63,40 +63,31 @@ class Column {
 
   void run() {
     for (;;) {
-      // Losses are taken in a tick only: a route held for the next tick (mpi_columns.hpp) still
-      // writes the frames its refresh took in, which a loss taken now would drop.
       const Record command =
-          mpi_wire::receive_watched(RankMap::kCoordinator, mpi_wire::kCommand, tiles_);
+          mpi_wire::receive_watched(RankMap::kCoordinator, mpi_wire::kCommand, pump_);
       Reader in(command);
-      do {  // a record may hold several commands (a route, then the next tick)
-        if (!obey(in)) return;
-      } while (!in.done());
+      switch (in.next()) {
+        case mpi_wire::kTick:
+          tick(in);
+          break;
+        case mpi_wire::kRoute:
+          route(in);
+          break;
+        case mpi_wire::kFetch:
+          send_pictures();
+          break;
+        case mpi_wire::kFetchComposed:
+          send_composed(static_cast<std::uint32_t>(in.next()));
+          break;
+        case mpi_wire::kEnd:
+          return;
+        default:
+          throw std::runtime_error("unknown command from the coordinator");
+      }
     }
   }
 
  private:
-  // One command from `in`; false for the end.
-  bool obey(Reader& in) {
-    switch (in.next()) {
-      case mpi_wire::kTick:
-        tick(in);
-        return true;
-      case mpi_wire::kRoute:
-        route(in);
-        return true;
-      case mpi_wire::kFetch:
-        send_pictures();
-        return true;
-      case mpi_wire::kFetchComposed:
-        send_composed(static_cast<std::uint32_t>(in.next()));
-        return true;
-      case mpi_wire::kEnd:
-        return false;
-      default:
-        throw std::runtime_error("unknown command from the coordinator");
-    }
-  }
-
   // The groups swap, each input's frame of the tick is taken in (waiting for it), and what the
   // column saw goes to the coordinator.
   void tick(Reader& in) {
@@ -131,8 +122,8 @@ class Column {
     column_.complete(route.completed_groups);
   }
 
-  // While a tick waits for its frames: a pipeserver lost (its frame may never arrive whole); the
-  // viz path's tiles.
+  // What the coordinator says at any time: a pipeserver lost (its frame being waited for may
+  // never arrive whole); the viz path's tiles.
   void pump() {
     take_losses();
     pump_tiles();
@@ -248,7 +239,6 @@ class Column {
   std::map<int, viz::TileDeltaDecoder> tile_deltas_;  // by pipeserver: its TILE_DELTA tiles
   ColumnShow* show_;                                  // --show monitors, or null
   const std::function<void()> pump_ = [this] { pump(); };
-  const std::function<void()> tiles_ = [this] { pump_tiles(); };
 };
 
 }  // namespace

@@ -21,7 +21,6 @@ MpiColumns::MpiColumns(const TileLayout& layout, const RankMap& map, MpiSession&
       session_(session),
       losses_(map, session, run_balance(o, layout.wall).survive_host_loss),
       stall_timeout_ms_(o.stall_timeout_ms),
-      hold_routes_(o.refresh_hz == 0),
       frames_(o.frames) {}
 
 bool MpiColumns::take_in(PipeserverSet& pipeservers) {
@@ -61,9 +60,10 @@ void MpiColumns::open(PipeserverSet& pipeservers, std::chrono::milliseconds time
 
 Status MpiColumns::refresh(const Tick& tick, PipeserverSet& pipeservers, const Decide& decide,
                            const std::function<void(std::span<const Observation>)>& took) {
-  const auto every = [](int) { return true; };
-  send_all(held_route_ ? encode(*held_route_, tick) : encode(tick), every);
-  held_route_.reset();
+  const Record record = encode(tick);
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send(record, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += record.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
   // A column that failed: the others still answer (they swapped with it).
   std::optional<int> failed;
   seen_.clear();
@@ -83,28 +83,11 @@ Status MpiColumns::refresh(const Tick& tick, PipeserverSet& pipeservers, const D
     took(seen_);
     return Failure{failure(*failed, tick.refresh)};  // names the frame kept now
   }
-  const ColumnRoute& route = decide(seen_);
-  if (hold_routes_ && !route.completed_groups.empty()) {
-    held_route_ = route;  // with the next tick, the swap's, due at once
-  } else {
-    send_all(encode(route), every);
-  }
+  const Record route = encode(decide(seen_));
+  for (int c = 0; c < map_.columns; ++c)
+    mpi_wire::send(route, map_.column_rank(c), mpi_wire::kCommand);
+  control_bytes_ += route.size() * sizeof(std::int64_t) * static_cast<std::size_t>(map_.columns);
   return {};
-}
-
-void MpiColumns::send_all(const Record& record, const std::function<bool(int)>& to) {
-  for (int c = 0; c < map_.columns; ++c) {
-    if (!to(map_.column_rank(c))) continue;
-    mpi_wire::send(record, map_.column_rank(c), mpi_wire::kCommand);
-    control_bytes_ += record.size() * sizeof(std::int64_t);
-  }
-}
-
-void MpiColumns::send_held_route(const std::function<bool(int)>& to) {
-  if (!held_route_) return;
-  const Record route = encode(*held_route_);
-  held_route_.reset();
-  send_all(route, to);
 }
 
 std::optional<Record> MpiColumns::answer(int c, PipeserverSet& pipeservers) {
@@ -146,8 +129,6 @@ void MpiColumns::fetch(std::optional<std::chrono::milliseconds> grace) {
   const auto answering = [&](int rank) {
     return !grace || (losses_.ending() != rank && stuck_ != rank);  // else lost with it
   };
-  // The route of the last refresh first: the displays as they are once it is written.
-  send_held_route(answering);
   for (int c = 0; c < map_.columns; ++c) {  // all asked first: they answer side by side
     if (answering(map_.column_rank(c)))
       mpi_wire::send({mpi_wire::kFetch}, map_.column_rank(c), mpi_wire::kCommand);
@@ -204,11 +185,6 @@ void MpiColumns::finish() {
 void MpiColumns::end_columns() {
   if (ended_) return;
   ended_ = true;
-  try {
-    send_held_route([](int) { return true; });  // written before the end, as it was decided
-  } catch (const std::runtime_error&) {
-    // a column that is gone: the fault's MPI_Abort ends what is left
-  }
   for (int c = 0; c < map_.columns; ++c) {
     try {
       mpi_wire::send({mpi_wire::kEnd}, map_.column_rank(c), mpi_wire::kCommand);

@@ -1,21 +1,15 @@
 // The board columns of an MPI run as the DVI path drives them (board_columns.hpp), on the
 // coordinator: each column rank (column_rank.hpp) routes its own displays. A refresh sends every
 // column the tick, gathers their observations, and sends them the route the path chose; a column
-// that does not answer within the stall timeout is named after the others answered. At full
-// speed a route that completes groups is held and sent with the next tick, which follows at once
-// (the swap), in one record: one message and one wake-up of each column fewer, the column's work
-// and its order unchanged. The pipeservers' frames go straight to the columns: here only their
-// notices arrive.
+// that does not answer within the stall timeout is named after the others answered. The
+// pipeservers' frames go straight to the columns: here only their notices arrive.
 //
-// Owns: the records to and from the columns, the route held for the next tick, the pictures
-// fetched from them, the losses of ranks
+// Owns: the records to and from the columns, the pictures fetched from them, the losses of ranks
 // (rank_losses.hpp) and what crossed the network (mpi_traffic.hpp). It may not decide: the path
 // does, once, as on one machine.
 #pragma once
 
-#include <functional>
 #include <map>
-#include <optional>
 #include <vector>
 
 #include "l2wall/board_columns.hpp"
@@ -58,10 +52,6 @@ class MpiColumns final : public BoardColumns {
   // Column `c`'s answer; nullopt when it is gone or did not answer within the stall timeout.
   std::optional<mpi_wire::Record> answer(int c, PipeserverSet& pipeservers);
   std::string failure(int c, std::int64_t refresh) const;
-  // Sends `record` to every column `to(rank)` says (all, or those still answering).
-  void send_all(const mpi_wire::Record& record, const std::function<bool(int)>& to);
-  // The route held for the next tick, sent alone (the next command is no tick).
-  void send_held_route(const std::function<bool(int)>& to);
   // Every column's displays into pictures_; `grace`: how long each may take (after a fault:
   // those that do not answer are left out), or wait as long as it takes.
   void fetch(std::optional<std::chrono::milliseconds> grace);
@@ -73,8 +63,6 @@ class MpiColumns final : public BoardColumns {
   RankLosses losses_;
   MpiTraffic traffic_;
   int stall_timeout_ms_;
-  bool hold_routes_;  // full speed: the next refresh follows a completing one at once
-  std::optional<ColumnRoute> held_route_;
   int frames_;
   int stuck_ = -1;  // a column rank that stopped answering
   std::vector<Observation> seen_;

@@ -38,41 +38,6 @@ TEST(ColumnMessages, TickRoundTripsAfterItsCommandWord) {
   EXPECT_TRUE(in.done());
 }
 
-// A refresh's route and the next tick in one record: the route's command, then the tick's, each
-// read back whole, nothing after.
-TEST(ColumnMessages, RouteAndNextTickTravelInOneRecordInThatOrder) {
-  const ColumnRoute route{.route = {1, 0, 1}, .completed_groups = {2}};
-  const Tick next = two_pipeserver_tick();
-  const mpi_wire::Record r = encode(route, next);
-  // kRoute, 3 inputs, 1 group; then the tick as alone (kTick, refresh, 2 groups, 2 sequences,
-  // 2 hosts of 3 spots of 5 words).
-  EXPECT_EQ(r.size(), (1u + (1 + 3) + (1 + 1)) + (1u + 1 + (1 + 2) + (1 + 2) + (1 + 2 * 15)));
-  mpi_wire::Reader in(r);
-  EXPECT_EQ(in.next(), mpi_wire::kRoute);
-  const ColumnRoute got = decode_route(in);
-  EXPECT_EQ(got.route, route.route);
-  EXPECT_EQ(got.completed_groups, route.completed_groups);
-  ASSERT_FALSE(in.done());
-  EXPECT_EQ(in.next(), mpi_wire::kTick);
-  EXPECT_EQ(decode_tick(in), next);
-  EXPECT_TRUE(in.done());
-}
-
-// Cut anywhere inside its tick, the record is refused when the tick is read.
-TEST(ColumnMessages, ARouteWithACutTickIsRefused) {
-  const ColumnRoute route{.route = {1}, .completed_groups = {0}};
-  const mpi_wire::Record whole = encode(route, two_pipeserver_tick());
-  constexpr std::size_t kRouteWords = 1 + (1 + 1) + (1 + 1);
-  for (std::size_t size = kRouteWords + 2; size < whole.size(); ++size) {
-    const mpi_wire::Record cut(whole.begin(), whole.begin() + static_cast<std::ptrdiff_t>(size));
-    mpi_wire::Reader in(cut);
-    in.next();
-    decode_route(in);
-    EXPECT_EQ(in.next(), mpi_wire::kTick);
-    EXPECT_THROW(decode_tick(in), std::runtime_error) << "cut to " << size << " words";
-  }
-}
-
 TEST(ColumnMessages, ObservationRoundTrips) {
   Observation sent;
   sent.refresh = 9;
