@@ -1,8 +1,8 @@
 #include "tap_loop.hpp"
 
 #include <fcntl.h>
-#include <linux/if.h>
 #include <linux/if_tun.h>
+#include <net/if.h>
 #include <poll.h>
 #include <sys/ioctl.h>
 #include <time.h>
@@ -41,6 +41,10 @@ Result<Fd> attach_tap(const std::string& name) {
   if (name.empty() || name.size() >= IFNAMSIZ)
     return Failure{
         fmt::format("tap '{}': not a device name (1 to {} characters)", name, IFNAMSIZ - 1)};
+  // TUNSETIFF would make a device of a name that has none, one nothing else is joined to.
+  if (::if_nametoindex(name.c_str()) == 0)
+    return Failure{
+        fmt::format("tap '{}': no such device (ip tuntap add dev {} mode tap)", name, name)};
   Fd fd(::open("/dev/net/tun", O_RDWR | O_NONBLOCK | O_CLOEXEC));
   if (!fd) return Failure{fmt::format("/dev/net/tun: {}", std::strerror(errno))};
   ifreq request{};
@@ -115,10 +119,10 @@ Result<TapLoopEnd> carry_frames(const TapLoopOptions& options, void (*ready)()) 
 std::string describe(const TapLoopOptions& options, const TapLoopEnd& end) {
   const auto ms = [](Nanoseconds t) { return static_cast<double>(t.count()) / 1e6; };
   const HeldCounts& held = end.held;
-  std::string line =
-      fmt::format("{} frames ({:.1f} MB) carried between {} hosts, each held {:g} ± {:g} ms",
-                  held.frames, static_cast<double>(held.bytes) / 1e6, options.taps.size(),
-                  ms(options.link.delay), ms(options.link.jitter));
+  std::string line = fmt::format(
+      "{} frames ({:.1f} MB) carried between {} host{}, each held {:g} ± {:g} ms", held.frames,
+      static_cast<double>(held.bytes) / 1e6, options.taps.size(),
+      options.taps.size() == 1 ? "" : "s", ms(options.link.delay), ms(options.link.jitter));
   if (held.frames > 0) {
     line += fmt::format(": held {:.1f} to {:.1f} ms, mean {:.2f} ms", ms(held.least), ms(held.most),
                         ms(held.total) / static_cast<double>(held.frames));

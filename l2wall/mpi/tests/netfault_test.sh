@@ -45,11 +45,15 @@ refused 2 "cluster.sh: --delay and --rate cannot be combined: the link emulator 
   --delay 5 --rate 1gbit -- true
 refused 2 "cluster.sh: --delay needs the link emulator, not at $out/none (cmake --build --preset default, or --link-emulator PATH)" \
   --delay 5 --link-emulator "$out/none" -- true
+# The emulator attaches to taps that exist; TUNSETIFF would quietly make one joined to nothing.
+err=$("$emulator" --tap l2nonetap --delay 1 2>&1 >/dev/null) && status=0 || status=$?
+[[ $status == 1 && $err == "link_emulator: tap 'l2nonetap': no such device (ip tuntap add dev l2nonetap mode tap)" ]] ||
+  { echo "FAIL: link_emulator --tap l2nonetap: exit $status, '$err'"; exit 1; }
 refused 2 "cluster.sh: --id 'Render' is not a-z then a-z or 0-9, 8 at most" --id Render -- true
 refused 2 "cluster.sh --link: 'down' is not cut or restore" --link nfnone render-b down
 refused 1 "cluster.sh --link: no host render-b in cluster nfnone (no namespace nfnone-render-b)" \
   --link nfnone render-b cut
-echo "cluster.sh refuses a bad --loss, --delay, --jitter, --id and --link in one line"
+echo "cluster.sh refuses a bad --loss, --delay, --jitter, --id and --link in one line, the link emulator a tap that is not there"
 
 # same_displays ONE MPI FRAME: every display picture of FRAME of ONE is in MPI, byte for byte.
 same_displays() {
