@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the fuzz harnesses' seed corpora (fuzz/corpus/<harness>/): a few small, valid inputs
 of each format, from which libFuzzer mutates. Run from anywhere; the files are committed."""
+import base64
 import pathlib
 import shutil
 import struct
@@ -321,6 +322,22 @@ picture("rgb-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 0, 1, 3, 4, 4, 3, 0, 255,
 # lines, whose chunk buffer (1.6 GB) OpenEXR allocated as it opened the file.
 picture("zero-bytes-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 64, 0, 3, 4, 4, 3, 0, 255, 0)
         .ljust(512, b"\0") + bytes(range(48)))
+
+
+# An icon of one 4x4 bitmap (32 bits a pixel, its colour rows then its mask rows), and a finding
+# (zlib-compressed here): 105 directory entries, the first a bitmap whose header claims 2304
+# bytes, 1 bit a pixel, a width of 16,778,241 and 2048 planes, on which OpenImageIO's ICO reader
+# corrupted the heap (`strip_headers dump`: "double free or corruption").
+dib_4x4 = struct.pack("<IiiHHIIiiII", 40, 4, 8, 1, 32, 0, 0, 0, 0, 0, 0) + bytes(64 + 16)
+picture("bitmap-4x4.ico", struct.pack("<HHHBBBBHHII", 0, 1, 1, 4, 4, 0, 0, 1, 32, len(dib_4x4), 22)
+        + dib_4x4)
+picture("heap-1bit.ico", zlib.decompress(base64.b64decode(
+    "eNrtVEtLw0AQnrQ9tOhBEDx52Iu3Jibp04AXUWtOBQW9eHBN0nYh3Q27i00v4sXf50+qm4TU2hQfRQSxQ2azmZ2ZfDPfsAAa"
+    "EKhUQL0RPAPAnlKoqe+KMiVPVWm6h+odwPbDoaWVJONTEJITOoRrdTLC4S3SdY+NIx4IQRhFlNEA6Zm78jiLycBxx3gYXBCx"
+    "HM4IYZKxUKWIsJQBp8hjVEhMpeOxkPFj02jVTcNu1bfWkv2PJHeCtNxUe+kKC5bLggUWqn23Tw99LPENoT6bwD2LbQI7kMvB"
+    "PIVPRBTiaeb3yy1ZFgvZsY0aSPeRYnOA1gxbNQQMSSOI+RX7N3w3NnwnfA/kBPMgLzNUZfajgKa3gNtHttE0OoaFHPSN4rP/"
+    "13ruefcIa6qrT2mPZ7MlSDxaBcnD0SmWc0S7KtI27bZj2Y7ZRmbXabSdZtcbYUqDUIA3CtVlBR3ldlKYhy/MzCP8EDlvXS5p"
+    "5SSzEACuK8QnbRdFKTKxYekvsLQeEy85xiRpOUMFKV54BSG3oBQ=")))
 
 
 def exr_attribute(name, type_, value):

@@ -48,6 +48,8 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"chunk.exr", hostile::exr_window(1000000, 64, 26, 4)},
       {"zero.sgi", hostile::sgi(0, 0)},
       {"storage.sgi", hostile::sgi(64, 1)},
+      {"header.ico", hostile::ico_bitmap(2304, 32)},
+      {"bits.ico", hostile::ico_bitmap(40, 7)},
       {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
   };
