@@ -1,6 +1,7 @@
 // Model and picture files made to hurt a reader that trusts them: nested past any real scene,
 // declaring sizes the file cannot hold, cut short, or not what their names say. Each is small;
-// what it claims is not. Written by the tests that need them (unit and process tests).
+// what it claims is not. Written by the tests that need them (unit and process tests). The
+// pictures are in hostile_pictures.hpp, the models here.
 #pragma once
 
 #include <algorithm>
@@ -12,15 +13,12 @@
 #include <utility>
 #include <vector>
 
+#include "pipeserver/hostile_pictures.hpp"
+
 namespace l2::hostile {
 
 inline void write(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
-}
-
-template <typename T>
-std::string bytes_of(const T& value) {
-  return std::string(reinterpret_cast<const char*>(&value), sizeof value);
 }
 
 // A glTF 2.0 triangle (its buffer inline) under `nodes`, a JSON array of node objects (node 0
@@ -84,239 +82,6 @@ inline std::string x_frame_chain(int n) {
   return out + std::string(static_cast<std::size_t>(n), '}') + "\n";
 }
 
-// Pictures whose headers declare more than their bytes hold (issue 54). A binary PPM and a PFM of
-// `width` x 1 with 300 bytes of samples.
-inline std::string pnm_wide(long long width) {
-  return "P6\n" + std::to_string(width) + " 1\n255\n" + std::string(300, '\0');
-}
-inline std::string pfm_wide(long long width) {
-  return "PF\n" + std::to_string(width) + " 1\n-1.0\n" + std::string(300, '\0');
-}
-
-// The classic 35-byte GIF of one pixel, its logical screen declared `width` x `height`.
-inline std::string gif_screen(int width, int height) {
-  std::string g = "GIF89a";
-  g += static_cast<char>(width & 0xFF);
-  g += static_cast<char>(width >> 8);
-  g += static_cast<char>(height & 0xFF);
-  g += static_cast<char>(height >> 8);
-  g += std::string(
-      "\x80\x00\x00"
-      "\x00\x00\x00\xff\xff\xff",
-      9);                                                            // 2-colour table
-  g += std::string("\x2c\x00\x00\x00\x00\x01\x00\x01\x00\x00", 10);  // a 1x1 image
-  g += std::string("\x02\x02\x44\x01\x00\x3b", 6);                   // its LZW data, the trailer
-  return g;
-}
-
-// An 8x8 grey baseline JPEG (FFmpeg's, bit-exact) whose frame header says `width` x `height`.
-inline std::string jpeg_frame(int width, int height) {
-  std::string j(
-      "\xff\xd8\xff\xe0\x00\x10\x4a\x46\x49\x46\x00\x01\x02\x00\x00\x01\x00\x01\x00\x00\xff\xdb\x00"
-      "\x43"
-      "\x00\x08\x3e\x3e\x49\x3e\x49\x55\x55\x55\x55\x55\x55\x64\x5d\x64\x68\x68\x68\x64\x64\x64\x64"
-      "\x68"
-      "\x68\x68\x70\x70\x70\x83\x83\x83\x70\x70\x70\x68\x68\x70\x70\x7c\x7c\x83\x83\x8f\x93\x8f\x87"
-      "\x87"
-      "\x83\x87\x93\x93\x9b\x9b\x9b\xba\xba\xb2\xb2\xd9\xd9\xe0\xff\xff\xff\xff\xc4\x00\x4a\x00\x01"
-      "\x00"
-      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x01\x01\x00\x00\x00\x00\x00\x00"
-      "\x00"
-      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x10\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00"
-      "\x00"
-      "\x00\x00\x00\x11\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xff\xc0"
-      "\x00"
-      "\x11\x08\x00\x08\x00\x08\x03\x01\x22\x00\x02\x11\x00\x03\x11\x00\xff\xda\x00\x0c\x03\x01\x00"
-      "\x02"
-      "\x11\x03\x11\x00\x3f\x00\x00\x0f\xff\xd9",
-      202);
-  for (std::size_t at = 2; at + 9 < j.size();) {
-    const auto marker = static_cast<unsigned char>(j[at + 1]);
-    if (marker == 0xC0) {
-      j[at + 5] = static_cast<char>(height >> 8);
-      j[at + 6] = static_cast<char>(height & 0xFF);
-      j[at + 7] = static_cast<char>(width >> 8);
-      j[at + 8] = static_cast<char>(width & 0xFF);
-      break;
-    }
-    at += 2 + (static_cast<unsigned char>(j[at + 2]) << 8 | static_cast<unsigned char>(j[at + 3]));
-  }
-  return j;
-}
-
-// A DDS of 8x8 RGB pixels whose header declares `levels` mipmap levels.
-inline std::string dds_levels(std::uint32_t levels) {
-  const auto u32 = [](std::uint32_t v) {
-    return std::string{static_cast<char>(v), static_cast<char>(v >> 8), static_cast<char>(v >> 16),
-                       static_cast<char>(v >> 24)};
-  };
-  std::string d = "DDS " + u32(124) + u32(0x2100F) + u32(8) + u32(8) + u32(24) + u32(0) +
-                  u32(levels) + std::string(44, '\0');
-  d += u32(32) + u32(0x40) + u32(0) + u32(24) + u32(0xFF0000) + u32(0xFF00) + u32(0xFF) + u32(0);
-  d += u32(0x401008) + std::string(16, '\0');
-  return d + std::string(8 * 8 * 3 * 2, '\x80');
-}
-
-// --- More formats whose headers OpenImageIO believes (issue 54) -------------------------------
-
-inline std::string le16(std::uint16_t v) {
-  return bytes_of(v);
-}
-inline std::string le32(std::uint32_t v) {
-  return bytes_of(v);
-}
-
-// A little-endian TIFF of RGB bytes: each directory declares `width` x `height` pixels of
-// `samples` samples of `bits` bits, uncompressed, as one strip (or, with `tile` > 0, tiles of
-// `tile` x `tile`, or `tile` x `tile_length` when that is given) whose `data` follows;
-// `directories` such directories, chained, then those of `more` (a pyramid's levels).
-struct Tiff {
-  std::uint32_t width = 8, height = 8, samples = 3, bits = 8, tile = 0;
-  int directories = 1;
-  std::string data = std::string(300, '\0');
-  std::optional<std::uint32_t> tile_length = std::nullopt;
-  std::vector<Tiff> more = {};
-};
-// One directory of `t` at the end of `out`, naming the next when `last` is false.
-inline void tiff_directory(std::string& out, const Tiff& t, bool last) {
-  // Tags in ascending order: (tag, type, value), SHORT = 3, LONG = 4; a SHORT sits in the
-  // first two bytes of its value field.
-  std::vector<std::pair<std::uint16_t, std::uint32_t>> tags = {
-      {256, t.width}, {257, t.height}, {258, t.bits}, {259, 1}, {262, t.samples >= 3 ? 2u : 1u}};
-  const bool tiled = t.tile > 0;
-  if (!tiled) tags.push_back({273, 0});
-  tags.push_back({277, t.samples});
-  if (!tiled) tags.insert(tags.end(), {{278, t.height}, {279, 0}});
-  if (tiled)
-    tags.insert(tags.end(),
-                {{322, t.tile}, {323, t.tile_length.value_or(t.tile)}, {324, 0}, {325, 0}});
-  const auto at = static_cast<std::uint32_t>(out.size());
-  const auto data_at = static_cast<std::uint32_t>(at + 2 + 12 * tags.size() + 4);
-  const auto next = static_cast<std::uint32_t>(data_at + t.data.size());
-  out += le16(static_cast<std::uint16_t>(tags.size()));
-  for (auto [tag, value] : tags) {
-    const bool is_short = tag == 258 || tag == 259 || tag == 262 || tag == 277;
-    if (tag == 273 || tag == 324) value = data_at;
-    if (tag == 279 || tag == 325) value = static_cast<std::uint32_t>(t.data.size());
-    out += le16(tag) + le16(is_short ? 3 : 4) + le32(1) +
-           (is_short ? le16(static_cast<std::uint16_t>(value)) + le16(0) : le32(value));
-  }
-  out += le32(last ? 0 : next) + t.data;
-}
-inline std::string tiff(const Tiff& t) {
-  std::string out = "II*" + std::string(1, '\0') + le32(8);
-  for (int d = 0; d < t.directories; ++d)
-    tiff_directory(out, t, d + 1 == t.directories && t.more.empty());
-  for (std::size_t m = 0; m < t.more.size(); ++m)
-    tiff_directory(out, t.more[m], m + 1 == t.more.size());
-  return out;
-}
-
-// A 24-bit BMP declaring `width` x `height` (negative: top-down) with 300 bytes of pixels.
-inline std::string bmp(std::int32_t width, std::int32_t height) {
-  const std::string pixels(300, '\0');
-  const std::string info = le32(40) + bytes_of(width) + bytes_of(height) + le16(1) + le16(24) +
-                           le32(0) + le32(0) + le32(2835) + le32(2835) + le32(0) + le32(0);
-  return "BM" + le32(static_cast<std::uint32_t>(14 + info.size() + pixels.size())) + le32(0) +
-         le32(14 + 40) + info + pixels;
-}
-
-// A Radiance HDR declaring `width` x `height` with 300 bytes of pixels.
-inline std::string hdr(long long width, long long height) {
-  return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " +
-         std::to_string(width) + "\n" + std::string(300, '\0');
-}
-
-// A FITS file of 8-bit samples declaring `width` x `height`, with one 2880-byte block of them.
-inline std::string fits(long long width, long long height) {
-  const auto card = [](const std::string& key, const std::string& value) {
-    std::string c = key;
-    c.resize(8, ' ');
-    c += "= ";
-    c += std::string(20 - std::min<std::size_t>(20, value.size()), ' ') + value;
-    c.resize(80, ' ');
-    return c;
-  };
-  std::string h = card("SIMPLE", "T") + card("BITPIX", "8") + card("NAXIS", "2") +
-                  card("NAXIS1", std::to_string(width)) + card("NAXIS2", std::to_string(height));
-  h += "END";
-  h.resize(2880, ' ');
-  return h + std::string(2880, '\0');
-}
-
-// An ICO of one icon, the PNG `png` (its directory entry says 256x256, as icons larger than 255
-// do).
-inline std::string ico(const std::string& png) {
-  return le16(0) + le16(1) + le16(1) + std::string(4, '\0') + le16(1) + le16(32) +
-         le32(static_cast<std::uint32_t>(png.size())) + le32(6 + 16) + png;
-}
-
-// An OpenEXR file (magic number, version 2) whose first header attribute declares `size` bytes
-// of value and holds 3; OpenEXR allocated the size declared before reading it.
-inline std::string exr_attribute(std::uint32_t size) {
-  return std::string("\x76\x2f\x31\x01", 4) + le32(2) + std::string("junk\0opaque\0", 12) +
-         le32(size) + "abc";
-}
-
-// An OpenEXR file of `channels` half-float channels named A, B, ..., of `compression`
-// (OpenEXR's code: 0 none, 4 PIZ), its data window `width` x `height`, then 4096 bytes:
-// OpenEXR allocated the buffer of a chunk as it opened the file (fuzz_picture_file's 26 channels
-// a million pixels wide in PIZ's chunks of 32 lines: 1.6 GB).
-inline std::string exr_window(std::uint32_t width, std::uint32_t height, int channels,
-                              unsigned char compression) {
-  const auto attribute = [](const std::string& name, const std::string& type,
-                            const std::string& value) {
-    return name + '\0' + type + '\0' + le32(static_cast<std::uint32_t>(value.size())) + value;
-  };
-  std::string list;
-  for (int c = 0; c < channels; ++c) {
-    list += std::string(1, static_cast<char>('A' + c)) + '\0' + le32(1) + std::string(4, '\0') +
-            le32(1) + le32(1);
-  }
-  list += '\0';
-  const std::string window = le32(0) + le32(0) + le32(width - 1) + le32(height - 1);
-  const std::string one = le32(0) + le32(0) + le32(0) + le32(0);
-  return std::string("\x76\x2f\x31\x01", 4) + le32(2) + attribute("channels", "chlist", list) +
-         attribute("compression", "compression", std::string(1, static_cast<char>(compression))) +
-         attribute("dataWindow", "box2i", window) + attribute("displayWindow", "box2i", one) +
-         attribute("lineOrder", "lineOrder", std::string(1, '\0')) +
-         attribute("pixelAspectRatio", "float", le32(0x3f800000)) +
-         attribute("screenWindowCenter", "v2f", std::string(8, '\0')) +
-         attribute("screenWindowWidth", "float", le32(0x3f800000)) + std::string(1, '\0') +
-         std::string(4096, '\0');
-}
-
-// An ICO of one 4x4 bitmap image whose header says `header_size` bytes and `bits` a pixel, its
-// rows as a 32-bit icon's. OpenImageIO's ICO reader trusts a bitmap's header: fuzz_picture_file's
-// (2304 header bytes, 1 bit a pixel, 16,778,241 wide, 2048 planes: the seed heap-1bit.ico)
-// corrupted the heap in `strip_headers dump`; headers outside the format are refused before it.
-inline std::string ico_bitmap(std::uint32_t header_size, std::uint16_t bits) {
-  std::string dib = le32(header_size) + le32(4) + le32(8) + le16(1) + le16(bits) + le32(0);
-  dib.resize(40, '\0');
-  dib += std::string(4 * 4 * 4 + 4 * 4, '\0');
-  return le16(0) + le16(1) + le16(1) + std::string("\x04\x04\x00\x00", 4) + le16(1) + le16(32) +
-         le32(static_cast<std::uint32_t>(dib.size())) + le32(6 + 16) + dib;
-}
-
-// An SGI image's header (big-endian: magic 474, `storage`, `bytes_per_channel`, 3 dimensions,
-// 4x4 pixels of 3 channels) and its planes at one byte a sample: a `bytes_per_channel` of 0
-// crashed the reader as it read a row.
-inline std::string sgi(unsigned char storage, unsigned char bytes_per_channel) {
-  std::string h("\x01\xDA", 2);
-  h += static_cast<char>(storage);
-  h += static_cast<char>(bytes_per_channel);
-  h += std::string("\x00\x03\x00\x04\x00\x04\x00\x03", 8);
-  h.resize(512, '\0');
-  return h + std::string(48, '\x40');
-}
-
-// dds_levels(1) with its green bit mask zero: OpenImageIO's reader shifted it for ever.
-inline std::string dds_no_green() {
-  std::string d = dds_levels(1);
-  d.replace(96, 4, std::string(4, '\0'));
-  return d;
-}
-
 // `depth` arrays nested in one another.
 inline std::string nested_arrays(int depth) {
   return std::string(static_cast<std::size_t>(depth), '[') +
@@ -350,71 +115,6 @@ inline std::string binary_ply_list(std::uint32_t length) {
   body += bytes_of(length);
   for (const std::int32_t i : {0, 1, 2}) body += bytes_of(i);
   return ply_header("binary_little_endian", "uint") + body;
-}
-
-// --- PNG, chunk by chunk --------------------------------------------------------------------
-
-inline std::uint32_t crc32(const std::string& bytes) {
-  std::uint32_t crc = 0xFFFFFFFFu;
-  for (const unsigned char b : bytes) {
-    crc ^= b;
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-inline std::string big_endian(std::uint32_t v) {
-  return {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
-          static_cast<char>(v)};
-}
-
-inline std::string png_chunk(const std::string& type, const std::string& data) {
-  return big_endian(static_cast<std::uint32_t>(data.size())) + type + data +
-         big_endian(crc32(type + data));
-}
-
-// A PNG of width x height 8-bit RGB pixels (interlaced or not) whose image data is a zlib
-// stream of `raw` (the filtered rows, which may hold far fewer bytes than the size claims) in
-// stored blocks; `damaged`: its zlib check (Adler-32) one off, as a bit flipped in the data
-// leaves it.
-inline std::string png(std::uint32_t width, std::uint32_t height, bool interlaced,
-                       const std::string& raw, bool damaged = false) {
-  std::string idat = "\x78\x01";  // zlib, no compression
-  for (std::size_t at = 0; at == 0 || at < raw.size(); at += 0xFFFF) {
-    const auto n = static_cast<std::uint16_t>(std::min<std::size_t>(raw.size() - at, 0xFFFF));
-    idat += at + n >= raw.size() ? '\x01' : '\x00';  // the last block or not, stored
-    idat += bytes_of(n) + bytes_of(static_cast<std::uint16_t>(~n)) + raw.substr(at, n);
-  }
-  std::uint32_t a = 1, b = 0;  // Adler-32
-  for (const unsigned char c : raw) {
-    a = (a + c) % 65521;
-    b = (b + a) % 65521;
-  }
-  idat += big_endian((b << 16 | a) ^ (damaged ? 1u : 0u));
-  const std::string ihdr = big_endian(width) + big_endian(height) +
-                           std::string("\x08\x02\x00\x00", 4) +
-                           std::string(1, interlaced ? '\x01' : '\x00');
-  return "\x89PNG\r\n\x1a\n" + png_chunk("IHDR", ihdr) + png_chunk("IDAT", idat) +
-         png_chunk("IEND", "");
-}
-
-// A whole 4x2 RGB picture (not interlaced): each row a filter byte and 12 bytes of colour;
-// `damaged` as for png().
-inline std::string small_png(bool damaged = false) {
-  std::string raw;
-  for (int y = 0; y < 2; ++y) {
-    raw += '\0';
-    for (int x = 0; x < 4; ++x) raw += std::string{char(40 * x), char(100 * y), '\x7f'};
-  }
-  return png(4, 2, false, raw, damaged);
-}
-
-// small_png() with its signature's last byte changed and a byte put after it: the first chunk's
-// length then reads as 0xD20A0000, beyond what PNG allows (as fuzz_picture_file found it).
-inline std::string damaged_signature_png() {
-  std::string p = small_png();
-  p[7] = '`';
-  return p.insert(8, 1, '\xD2');
 }
 
 }  // namespace l2::hostile
