@@ -59,6 +59,9 @@ fuzz_one() {
   build/"$preset"/fuzz/fuzz_"$h" "$work" "$seeds" "${limits[@]}" -max_total_time="$seconds" -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$artifacts" ${FUZZ_RUNS:+-runs="$FUZZ_RUNS"} \
     >"$log" 2>&1 || status=$?
+  # A harness ended mid-input (a crash, a timeout) leaves its input's file; fuzz_picture_file's
+  # is named after its process, which has ended.
+  [[ $h != picture_file ]] || rm -f /dev/shm/l2-fuzz-picture-[0-9]* /tmp/l2-fuzz-picture-[0-9]*
   local runs rate last cov ft corpus verdict took
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
