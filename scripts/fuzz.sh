@@ -73,7 +73,12 @@ fuzz_one() {
     verdict="no crash"
   else
     verdict="FAILED (exit $status, see $log)"
-    grep -E '^(==[0-9]+==ERROR|fuzz: broken promise|SUMMARY)' "$log" | head -3 >"$out/$h/why.txt" || true
+    # The sanitizers' and libFuzzer's own lines ("==PID==ERROR", "==PID== ERROR", "SUMMARY",
+    # "LeakSanitizer has encountered a fatal error"), else the log's last lines: a CI log holds
+    # only what the script prints, not the harness's log.
+    grep -E '^(==[0-9]+== ?ERROR|==[0-9]+==.*Sanitizer|fuzz: broken promise|SUMMARY)' "$log" |
+      head -4 >"$out/$h/why.txt" || true
+    [[ -s $out/$h/why.txt ]] || tail -n 6 "$log" >"$out/$h/why.txt"
   fi
   took=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
   printf 'fuzz_%-15s %12s runs in %s s (%s/s)  cov %s  ft %s  corpus %s  %s\n' "$h" \
@@ -97,6 +102,6 @@ for i in "${!harnesses[@]}"; do
   h=${harnesses[$i]}
   wait "${pids[$i]}" || failed=1
   cat "$out/$h/summary.txt"
-  [[ -s $out/$h/why.txt ]] && cat "$out/$h/why.txt" >&2
+  [[ ! -s $out/$h/why.txt ]] || sed 's/^/    /' "$out/$h/why.txt"
 done
 exit $failed
