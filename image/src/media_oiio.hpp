@@ -1,5 +1,5 @@
 // Pieces of the codec module (png_codec.hpp) its source files share: the opening of picture
-// regions and movies, and the wording of a picture that cannot be opened.
+// regions and movies, and OpenImageIO's error text in one line.
 #pragma once
 
 #include <string>
@@ -11,10 +11,6 @@ namespace l2::png_codec {
 
 // OpenImageIO's error text (several lines, one per complaint) as one line: "a; b".
 std::string one_line(const std::string& text);
-
-// Why OpenImageIO could not open `path`, in one line, in the words of the reader that knows
-// the file's content ("cannot read: a TIFF file: ...").
-std::string open_failed(const char* path);
 
 // A PNG's pixels decoded with libpng, a row at a time and dropped, before the image cache reads
 // it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),

@@ -20,8 +20,10 @@
 #include <utility>
 #include <vector>
 
+#include "image/picture_formats.hpp"
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
+#include "picture_readers.hpp"
 #include "png_codec.hpp"
 #include "png_read.hpp"
 
@@ -31,7 +33,6 @@ namespace OIIO = OIIO_NAMESPACE;
 using l2::Failure;
 using l2::Status;
 using l2::png_codec::Input;
-using l2::png_codec::open_failed;
 using l2::png_codec::refusal;
 using l2::png_codec::refused;
 using l2::png_codec::RgbSink;
@@ -85,44 +86,12 @@ std::optional<std::pair<long, long>> gif_screen(std::FILE* file) {
   return std::pair<long, long>(header[6] | header[7] << 8, header[8] | header[9] << 8);
 }
 
-std::string upper(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return text;
-}
-
 // OpenImageIO's reason, or ours where it gives none (its PNM reader fails a file that ends
 // early with an empty error).
 std::string read_failed(const std::string& format, const std::string& error) {
   if (!error.empty()) return "cannot read: " + l2::png_codec::one_line(error);
-  return "cannot read: the " + upper(format) + " file is damaged or ends early";
-}
-
-// The format a picture's first bytes say it is in (OpenImageIO's name), for formats that begin
-// with a signature; empty for others. (OpenImageIO's own test, valid_file(), fails a damaged
-// file, which is when the question is asked.)
-std::string format_by_signature(const unsigned char* head, std::size_t n) {
-  const auto starts = [&](std::string_view magic) {
-    return n >= magic.size() && std::memcmp(head, magic.data(), magic.size()) == 0;
-  };
-  if (starts("GIF")) return "gif";
-  if (starts("BM")) return "bmp";
-  if (n >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') return "pnm";
-  if (starts("II*\0") || starts("MM\0*")) return "tiff";
-  if (starts("\xff\xd8\xff")) return "jpeg";
-  if (starts("DDS ")) return "dds";
-  if (starts("8BPS")) return "psd";
-  if (starts("\x76\x2f\x31\x01")) return "openexr";
-  if (starts("RIFF") && n >= 12 && std::memcmp(head + 8, "WEBP", 4) == 0) return "webp";
-  return {};
-}
-
-std::string format_by_signature(const char* path) {
-  unsigned char head[12] = {};
-  std::FILE* file = std::fopen(path, "rb");
-  if (!file) return {};
-  const std::size_t n = std::fread(head, 1, sizeof head, file);
-  std::fclose(file);
-  return format_by_signature(head, n);
+  return "cannot read: the " + l2::png_codec::format_label(format) +
+         " file is damaged or ends early";
 }
 
 // An OpenImageIO reader and, for a picture in memory, what it reads from (which must outlive it:
@@ -134,29 +103,30 @@ struct Opened {
 
 // A picture in memory opened by the reader its first bytes (or else its hint) name.
 l2::Result<Opened> open_bytes(const Input& input, const OIIO::ImageSpec& config) {
+  const std::string_view head(reinterpret_cast<const char*>(input.bytes),
+                              std::min<std::size_t>(input.size, 256));
+  const auto choice = l2::png_codec::choose_reader(head, input.format_hint);
+  if (!choice.ok()) return Failure{choice.reason()};
   Opened opened;
-  const std::string format = format_by_signature(input.bytes, input.size);
-  // By the format's name or an extension ("tga"): a file name would be opened.
-  opened.in = OIIO::ImageInput::create(format.empty() ? std::string(input.format_hint) : format);
-  if (!opened.in) {
-    OIIO::geterror();  // cleared: our wording replaces OpenImageIO's
-    return Failure{"cannot read: not a picture of a format known here"};
-  }
+  opened.in = l2::png_codec::make_reader(choice->format);
+  if (!opened.in) return Failure{"cannot read: not a picture of a format known here"};
   opened.memory = std::make_unique<OIIO::Filesystem::IOMemReader>(input.bytes, input.size);
   OIIO::ImageSpec spec;
   if (!opened.in->set_ioproxy(opened.memory.get()) || !opened.in->open("memory", spec, config)) {
     std::string why = opened.in->geterror();
     if (why.empty()) why = "damaged or ends early";
-    return Failure{"cannot read: a " + upper(opened.in->format_name()) + " picture: " + why};
+    return Failure{"cannot read: a " + l2::png_codec::format_label(opened.in->format_name()) +
+                   " picture: " + why};
   }
   return opened;
 }
 
 l2::Result<Opened> open_oiio(const Input& input, const OIIO::ImageSpec& config) {
   if (input.in_memory()) return open_bytes(input, config);
+  auto in = l2::png_codec::open_reader(input.path, &config);
+  if (!in.ok()) return Failure{in.reason()};
   Opened opened;
-  opened.in = OIIO::ImageInput::open(input.path, &config);
-  if (!opened.in) return Failure{open_failed(input.path)};
+  opened.in = std::move(in).value();
   return opened;
 }
 
@@ -248,9 +218,6 @@ Status read_rgb_bytes(const std::uint8_t* bytes, std::size_t size, const char* f
 
 namespace l2::png_codec {
 
-// When OpenImageIO cannot open a file it reports the reader its name chose: a damaged GIF named
-// .png was "Not a PNG file". The reason is the reader's that knows the content, and says what
-// the file is.
 std::string one_line(const std::string& text) {
   std::string line;
   std::size_t at = 0;
@@ -260,18 +227,6 @@ std::string one_line(const std::string& text) {
     at = end + 1;
   }
   return line;
-}
-
-std::string open_failed(const char* path) {
-  const std::string error = one_line(OIIO::geterror());
-  const std::string format = format_by_signature(path);
-  if (format.empty()) return "cannot read: " + (error.empty() ? "not a picture" : error);
-  const auto reader = OIIO::ImageInput::create(format);
-  OIIO::ImageSpec spec;
-  std::string why = "damaged";
-  if (reader && !reader->open(path, spec)) why = one_line(reader->geterror());
-  if (why.empty()) why = "damaged or ends early";
-  return "cannot read: a " + upper(format) + " file: " + why;
 }
 
 }  // namespace l2::png_codec

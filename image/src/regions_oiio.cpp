@@ -13,6 +13,7 @@
 
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
+#include "picture_readers.hpp"
 #include "png_chunks.hpp"
 #include "png_read.hpp"
 
@@ -155,16 +156,16 @@ Result<PictureShape> checked_shape(const char* path, bool rows) {
   const PictureBytes bytes = file_bytes(path);
   const Result<HeaderFacts> facts = check_before_open(bytes);
   if (!facts.ok()) return Failure{facts.reason()};
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) return Failure{open_failed(path)};
-  const OIIO::ImageSpec& spec = in->spec();
+  const Result<std::unique_ptr<OIIO::ImageInput>> in = open_reader(path);
+  if (!in.ok()) return Failure{in.reason()};
+  const OIIO::ImageSpec& spec = (*in)->spec();
   if (spec.deep || spec.depth > 1) {
     return Failure{"cannot read: a deep or volume image, not a picture"};
   }
   if (spec.width <= 0 || spec.height <= 0) {
     return Failure{"cannot read: the picture has no pixels"};
   }
-  if (const Status s = check_opened(*in, bytes.size, true, facts->decoded_whole); !s.ok())
+  if (const Status s = check_opened(**in, bytes.size, true, facts->decoded_whole); !s.ok())
     return Failure{s.reason()};
   return PictureShape{spec.width, spec.height, spec.tile_width > 0,
                       double(spec.width) * spec.height * 3 / (1 << 20)};
@@ -193,8 +194,11 @@ Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache
   cache->attribute("max_memory_MB", cache_megabytes);
   cache->attribute("autotile", kAutoTile);
   const OIIO::ustring file(path);
+  // The cache's own readers are of the format checked_shape opened the file as.
+  const Result<ReaderChoice> reader = choose_reader(first_bytes(path), path);
+  if (!reader.ok()) return Failure{reader.reason()};
   OIIO::ImageSpec spec;
-  if (!cache->get_imagespec(file, spec)) {
+  if (!cache->add_file(file, reader_creator(reader->format)) || !cache->get_imagespec(file, spec)) {
     return Failure{"cannot read: " + one_line(cache->geterror())};
   }
   Result<std::vector<LevelSides>> sides = level_sides(*cache, file, spec);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "media_oiio.hpp"
+#include "picture_readers.hpp"
 
 namespace l2::png_codec {
 
@@ -149,8 +150,9 @@ Status read_source(OIIO::ImageInput& in, Level& first, Progress progress) {
 
 // Level `level`'s file appended to the copy as its next directory, a band at a time.
 Status append_level(OIIO::ImageOutput& copy, const std::string& target, Level& level) {
-  auto in = OIIO::ImageInput::open(level.path());
-  if (!in) return Failure{"cannot read " + level.path() + ": " + one_line(OIIO::geterror())};
+  const Result<std::unique_ptr<OIIO::ImageInput>> opened = open_reader(level.path().c_str());
+  if (!opened.ok()) return Failure{"cannot read " + level.path() + ": " + opened.reason()};
+  OIIO::ImageInput* in = opened->get();
   OIIO::ImageSpec spec(level.width(), level.height(), 3, OIIO::TypeDesc::UINT8);
   spec.tile_width = spec.tile_height = kTile;
   spec.attribute("compression", "zip");
@@ -169,8 +171,9 @@ Status append_level(OIIO::ImageOutput& copy, const std::string& target, Level& l
 }
 
 Status copy_levels(const char* source, const char* target, Progress progress) {
-  auto in = OIIO::ImageInput::open(source);
-  if (!in) return Failure{open_failed(source)};
+  const Result<std::unique_ptr<OIIO::ImageInput>> opened = open_reader(source);
+  if (!opened.ok()) return Failure{opened.reason()};
+  OIIO::ImageInput* in = opened->get();
   std::string why;
   std::vector<std::unique_ptr<Level>> levels =
       make_levels(target, in->spec().width, in->spec().height, &why);

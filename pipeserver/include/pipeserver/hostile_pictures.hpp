@@ -304,6 +304,27 @@ inline std::string small_png(bool damaged = false) {
   return png(4, 2, false, raw, damaged);
 }
 
+// A JPEG 2000 codestream (OpenJPEG's, 64x64 RGB: `oiiotool --pattern constant:color=0.2,0.4,0.6
+// 64x64 3 -d uint8 -o small.j2k`) whose SIZ marker declares `side` x `side` pixels in one tile.
+// No check bounds OpenJPEG, and OpenImageIO tried its reader on any file its name's reader could
+// not open: 177 bytes named .tga of 60000x60000 took 1.1 GB, of 1000000x1000000 hung
+// `strip_headers dump`. The format is not read here.
+inline std::string jpeg2000(std::uint32_t side) {
+  std::string j(
+      "\xff\x4f\xff\x51\x00\x2f\x00\x00\x00\x00\x00\x40\x00\x00\x00\x40\x00\x00\x00\x00"
+      "\x00\x00\x00\x00\x00\x00\x00\x40\x00\x00\x00\x40\x00\x00\x00\x00\x00\x00\x00\x00"
+      "\x00\x03\x07\x01\x01\x07\x01\x01\x07\x01\x01\xff\x52\x00\x0c\x00\x00\x00\x01\x00"
+      "\x05\x04\x04\x00\x01\xff\x5c\x00\x13\x40\x40\x48\x48\x50\x48\x48\x50\x48\x48\x50"
+      "\x48\x48\x50\x48\x48\x50\xff\x64\x00\x25\x00\x01\x43\x72\x65\x61\x74\x65\x64\x20"
+      "\x62\x79\x20\x4f\x70\x65\x6e\x4a\x50\x45\x47\x20\x76\x65\x72\x73\x69\x6f\x6e\x20"
+      "\x32\x2e\x35\x2e\x30\xff\x90\x00\x0a\x00\x00\x00\x00\x00\x32\x00\x01\xff\x93\xcf"
+      "\xb4\x14\x08\x8f\x9e\x9d\xbf\xc3\xe7\x06\x08\x84\xdc\xc3\xe7\x08\x01\xcd\x60\x3f"
+      "\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\x80\xff\xd9",
+      177);
+  for (const std::size_t at : {8, 12, 24, 28}) j.replace(at, 4, big_endian(side));
+  return j;
+}
+
 // small_png() with its signature's last byte changed and a byte put after it: the first chunk's
 // length then reads as 0xD20A0000, beyond what PNG allows (as fuzz_picture_file found it).
 inline std::string damaged_signature_png() {
