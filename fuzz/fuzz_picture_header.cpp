@@ -2,8 +2,9 @@
 // (image/declared_size.hpp, image/tiff_header.hpp, image/exr_header.hpp), on arbitrary bytes:
 // the file's first bytes through check_header, check_tiff (a TIFF's directories, read where they
 // point) and check_exr (an OpenEXR file's attributes) at a size of the input's own choosing, and
-// numbers taken from the input as what a reader declared through check_declared. Never a crash
-// or an overflow (UBSan), and every refusal one line saying "cannot read: ".
+// numbers taken from the input as what a reader declared through check_declared, and the same
+// first bytes through format_by_signature (image/picture_formats.hpp). Never a crash or an
+// overflow (UBSan), and every refusal one line saying "cannot read: ".
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include "fuzz_check.hpp"
 #include "image/declared_size.hpp"
 #include "image/exr_header.hpp"
+#include "image/picture_formats.hpp"
 #include "image/tiff_header.hpp"
 
 namespace {
@@ -54,6 +56,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   check_refusal(l2::png_codec::check_tiff(read, file_size), "a TIFF refusal is one line");
   check_refusal(l2::png_codec::check_exr(read, file_size), "an OpenEXR refusal is one line");
+  // A signature names a format or none; one not read here is refused in one line.
+  const std::string format = l2::png_codec::format_by_signature(header);
+  if (!format.empty() && !l2::png_codec::read_here(format)) {
+    check_refusal(l2::Failure{l2::png_codec::not_read_here(format)},
+                  "a format refusal is one line");
+  }
 
   l2::png_codec::Declared d;
   d.format = kFormats[take(data, size, 1) % std::size(kFormats)];
