@@ -322,6 +322,15 @@ picture("rgb-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 0, 1, 3, 4, 4, 3, 0, 255,
 # lines, whose chunk buffer (1.6 GB) OpenEXR allocated as it opened the file.
 picture("zero-bytes-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 64, 0, 3, 4, 4, 3, 0, 255, 0)
         .ljust(512, b"\0") + bytes(range(48)))
+# RLE storage: tables of each row's offset and length (4x4, three channels: 12 rows), then each
+# row as one run of 4 samples copied and an end. And a finding: one row of one channel whose
+# tables (43283 x 0 entries) are empty, on which the reader crashed at the first row.
+rle_rows = [bytes([0x84, 16 * r, 16 * r + 1, 16 * r + 2, 16 * r + 3, 0]) for r in range(12)]
+picture("rle-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 1, 1, 3, 4, 4, 3, 0, 255, 0).ljust(512, b"\0")
+        + b"".join(struct.pack(">I", 512 + 96 + 6 * r) for r in range(12))
+        + b"".join(struct.pack(">I", 6) for _ in range(12)) + b"".join(rle_rows))
+picture("rle-empty-tables.sgi", struct.pack(">HBBHHHH", 474, 1, 1, 1, 256, 43283, 0)
+        + bytes.fromhex("96" * 120 + "3ea91300003e86666974eaff00"))
 
 
 # An icon of one 4x4 bitmap (32 bits a pixel, its colour rows then its mask rows), and a finding

@@ -156,6 +156,9 @@ Result<HeaderFacts> check_before_open(const PictureBytes& bytes) {
   if (const Status exr = check_exr(bytes.read, bytes.size); !exr.ok()) {
     return Failure{exr.reason()};
   }
+  if (const Status sgi = check_sgi_rle(bytes.read, bytes.size); !sgi.ok()) {
+    return Failure{sgi.reason()};
+  }
   return facts;
 }
 

@@ -10,6 +10,7 @@
 
 #include "image/declared_size.hpp"
 #include "image/exr_header.hpp"
+#include "image/sgi_header.hpp"
 #include "image/tiff_header.hpp"
 
 namespace l2::png_codec {
@@ -24,7 +25,8 @@ PictureBytes memory_bytes(const std::uint8_t* bytes, std::size_t size);
 
 // What the first bytes declare (check_header), a TIFF's directories (check_tiff) and an ICO's
 // PNG images (their headers, the first one's rows: libpng, not OpenImageIO's ICO reader), an
-// OpenEXR file's header attributes (check_exr).
+// OpenEXR file's header attributes (check_exr), an SGI image's RLE tables and rows
+// (check_sgi_rle).
 Result<HeaderFacts> check_before_open(const PictureBytes& bytes);
 
 // What the opened reader declares (check_declared). `cached`: the image cache will read it, so a

@@ -240,6 +240,14 @@ inline std::string sgi(unsigned char storage, unsigned char bytes_per_channel) {
   return h + std::string(48, '\x40');
 }
 
+// fuzz_picture_file's SGI of RLE storage and dimension 1 (one row of one channel, 256 wide)
+// whose tables, sized by its ysize x zsize of 43283 x 0, are empty: the reader looked up the
+// first row's offset in them and crashed (SIGSEGV).
+inline std::string sgi_empty_tables() {
+  return std::string("\x01\xDA\x01\x01\x00\x01\x01\x00\xA9\x13\x00\x00", 12) +
+         std::string(133, '\x96');
+}
+
 // dds_levels(1) with its green bit mask zero: OpenImageIO's reader shifted it for ever.
 inline std::string dds_no_green() {
   std::string d = dds_levels(1);
