@@ -322,6 +322,14 @@ picture("rgb-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 0, 1, 3, 4, 4, 3, 0, 255,
 # lines, whose chunk buffer (1.6 GB) OpenEXR allocated as it opened the file.
 picture("zero-bytes-4x4.sgi", struct.pack(">HBBHHHHIII", 474, 64, 0, 3, 4, 4, 3, 0, 255, 0)
         .ljust(512, b"\0") + bytes(range(48)))
+# Findings kept as seeds: a FITS of three axes that names two (depth 0: the image cache aborted
+# on it), and a DDS flagged alpha alone (0xFFFDFFC2, RGB among the flags) whose alpha mask is
+# zero (its reader spread the alpha bits over a byte in steps of zero, for good).
+picture("depth-0.fits", (fits_card("SIMPLE", "T") + fits_card("BITPIX", "8") + fits_card("NAXIS", "3")
+                         + fits_card("NAXIS1", "9") + fits_card("NAXIS2", "4") + b"END".ljust(80))
+        .ljust(2880, b" ") + bytes(range(36)).ljust(122, b"\0"))
+picture("alpha-alone.dds", dds(8, 8, 1)[:80] + struct.pack("<I", 0xFFFDFFC2) + dds(8, 8, 1)[84:108]
+        + struct.pack("<I", 0x1000) + bytes(16) + bytes(range(84)))
 # RLE storage: tables of each row's offset and length (4x4, three channels: 12 rows), then each
 # row as one run of 4 samples copied and an end. And a finding: one row of one channel whose
 # tables (43283 x 0 entries) are empty, on which the reader crashed at the first row.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace l2::png_codec {
 
@@ -37,23 +38,34 @@ Status check_dds(std::string_view b, std::uintmax_t file_size) {
                    " mipmap levels, more than its sides (" + std::to_string(possible) +
                    ") or its " + std::to_string(file_size) + " bytes allow"};
   }
-  // Uncompressed pixels (flag RGB, LUMINANCE or ALPHAPIXELS) are unpacked by their channels' bit
-  // masks, which the reader shifts until a set bit comes: a mask of zero never ends (an 8x8 DDS
-  // of 194 bytes held it for good; found by fuzz_picture_file).
+  // Uncompressed pixels (no FOURCC) are unpacked by the bit masks of the channels the reader
+  // takes from the flags: luminance (then alpha, with ALPHAPIXELS), alpha alone (then the green
+  // mask's channel), else red, green and blue whatever flag RGB says (then alpha). It spreads a
+  // channel's bits over a byte in steps of its mask's width: a mask of zero never ends (found by
+  // fuzz_picture_file: an 8x8 RGB DDS of 194 bytes whose green mask is zero, and one of 212
+  // bytes flagged alpha alone whose alpha mask is zero, held their readers for good).
   const std::uint32_t flags = le32(b, 80);
-  const struct {
-    std::uint32_t flag;
-    std::size_t at;
-    const char* channel;
-  } masks[] = {{0x40, 92, "red"},
-               {0x40, 96, "green"},
-               {0x40, 100, "blue"},
-               {0x20000, 92, "luminance"},
-               {0x1, 104, "alpha"}};
-  for (const auto& m : masks) {
-    if ((flags & m.flag) != 0 && le32(b, m.at) == 0) {
-      return Failure{std::string("cannot read: a DDS whose ") + m.channel +
-                     " bit mask is zero, no channel its reader can unpack"};
+  // (Without FOURCC and without any of RGB, LUMINANCE, ALPHAPIXELS and alpha alone, the reader
+  // refuses the file itself.)
+  if ((flags & 0x4) == 0 && (flags & (0x40 | 0x20000 | 0x1 | 0x2)) != 0) {
+    struct Channel {
+      std::size_t at;
+      const char* name;
+    };
+    std::vector<Channel> used;
+    if ((flags & 0x20000) != 0) {
+      used = {{92, "luminance"}, {104, "alpha"}};
+    } else if ((flags & 0x2) != 0) {
+      used = {{104, "alpha"}, {96, "green"}};
+    } else {
+      used = {{92, "red"}, {96, "green"}, {100, "blue"}, {104, "alpha"}};
+    }
+    if ((flags & 0x1) == 0) used.pop_back();  // no ALPHAPIXELS: not the last one
+    for (const Channel& c : used) {
+      if (le32(b, c.at) == 0) {
+        return Failure{std::string("cannot read: a DDS whose ") + c.name +
+                       " bit mask is zero, no channel its reader can unpack"};
+      }
     }
   }
   return {};
@@ -165,6 +177,11 @@ Status check_declared(const Declared& d, std::uintmax_t file_size) {
                    std::to_string(d.height) + "x" + std::to_string(d.depth) + " pixels of " +
                    std::to_string(d.channels) + " channels of " +
                    std::to_string(d.bytes_per_channel) + " bytes, not a picture"};
+  }
+  if (d.tile_width < 0 || (d.tile_width > 0 && (d.tile_height < 1 || d.tile_depth < 1))) {
+    return Failure{"cannot read: declares tiles of " + std::to_string(d.tile_width) + "x" +
+                   std::to_string(d.tile_height) + "x" + std::to_string(d.tile_depth) +
+                   " pixels, not a tiling"};
   }
   const std::string sides = std::to_string(d.width) + "x" + std::to_string(d.height) +
                             (d.depth > 1 ? "x" + std::to_string(d.depth) : "");

@@ -170,12 +170,14 @@ Status check_opened(const OIIO_NAMESPACE::ImageInput& in, std::uintmax_t file_si
   d.compression = spec.get_string_attribute("compression");
   d.width = spec.width;
   d.height = spec.height;
-  d.depth = std::max(spec.depth, 1);
+  // As declared: a FITS of 3 axes naming only two has depth 0, on which the image cache aborts
+  // (an assertion; found by fuzz_picture_file).
+  d.depth = spec.depth;
   d.channels = spec.nchannels;
   d.bytes_per_channel = static_cast<int>(spec.format.size());
   d.tile_width = spec.tile_width;
   d.tile_height = spec.tile_height;
-  d.tile_depth = std::max(spec.tile_depth, 1);
+  d.tile_depth = spec.tile_width > 0 ? spec.tile_depth : 1;
   d.decoded_whole = cached && (progressive || decoded_whole_by(d.format));
   return check_declared(d, file_size);
 }

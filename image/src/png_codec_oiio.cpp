@@ -142,7 +142,7 @@ Status read_oiio(OIIO::ImageInput& in, std::uintmax_t file_size, RgbSink sink, S
   }
   // OpenImageIO picks the reader by content, not by name: a volume or deep image (a DDS volume
   // texture named .png) reads width x height x depth pixels, more than the picture holds.
-  if (spec.depth != 1 || spec.deep) {
+  if (spec.depth > 1 || spec.deep) {
     return Failure{spec.deep
                        ? std::string("a deep image, not a picture")
                        : "a volume (depth " + std::to_string(spec.depth) + "), not a picture"};

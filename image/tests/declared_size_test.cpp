@@ -106,6 +106,53 @@ TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
   dds[80] = 0x41;  // and alpha, whose mask is zero
   EXPECT_EQ(check_header(dds, 400).reason(),
             "cannot read: a DDS whose alpha bit mask is zero, no channel its reader can unpack");
+  // The reader takes red, green and blue whatever flag RGB says: ALPHAPIXELS alone, with an
+  // alpha mask and no colour masks.
+  dds[80] = 0x01;
+  dds[107] = '\xff';
+  dds[94] = 0;
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose red bit mask is zero, no channel its reader can unpack");
+  // Alpha alone (flag 0x2) takes the alpha mask: fuzz_picture_file's 212-byte DDS, flags
+  // 0xFFFDFFC2 (RGB among them) and colour masks set, its alpha mask zero.
+  dds[80] = '\xc2';
+  dds[81] = '\xff';
+  dds[82] = '\xfd';
+  dds[83] = '\xff';
+  dds[94] = '\xff';
+  dds[107] = 0;
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose alpha bit mask is zero, no channel its reader can unpack");
+  dds[107] = '\xff';
+  EXPECT_TRUE(check_header(dds, 400).ok());
+  // Luminance takes the first mask; compressed pixels (FOURCC) none.
+  dds[80] = 0;
+  dds[81] = 0;
+  dds[82] = 0x02;
+  dds[83] = 0;
+  dds[94] = 0;
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: a DDS whose luminance bit mask is zero, no channel its reader can "
+            "unpack");
+  dds[80] = 0x04;
+  dds[82] = 0;
+  EXPECT_TRUE(check_header(dds, 400).ok());
+}
+
+// What a reader declares of depth and tiles, as declared: a FITS of three axes naming two has
+// depth 0, on which the image cache aborted (fuzz_picture_file).
+TEST(DeclaredSize, NoDepthOrTileSideIsRefused) {
+  Declared d = picture("fits", 9, 4, 1);
+  d.depth = 0;
+  EXPECT_EQ(check_declared(d, 2880 * 2).reason(),
+            "cannot read: declares 9x4x0 pixels of 1 channels of 1 bytes, not a picture");
+  d.depth = 1;
+  EXPECT_TRUE(check_declared(d, 2880 * 2).ok());
+  d.tile_width = 16;
+  d.tile_height = 16;
+  d.tile_depth = 0;
+  EXPECT_EQ(check_declared(d, 2880 * 2).reason(),
+            "cannot read: declares tiles of 16x16x0 pixels, not a tiling");
 }
 
 // An SGI header: magic 474 (0x01DA), storage, bytes a channel, dimension (big-endian), sides.

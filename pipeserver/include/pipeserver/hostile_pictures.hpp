@@ -255,6 +255,23 @@ inline std::string dds_no_green() {
   return d;
 }
 
+// dds_levels(1) flagged alpha alone (fuzz_picture_file's flags 0xFFFDFFC2, RGB among them),
+// its alpha mask zero: OpenImageIO's reader spread the alpha bits over a byte in steps of zero,
+// for good.
+inline std::string dds_alpha_alone() {
+  std::string d = dds_levels(1);
+  d.replace(80, 4, std::string("\xC2\xFF\xFD\xFF", 4));
+  return d;
+}
+
+// fits(9, 4) declaring three axes: its depth, the missing third, is 0, on which the image cache
+// aborted (an assertion; found by fuzz_picture_file).
+inline std::string fits_missing_axis() {
+  std::string f = fits(9, 4);
+  f.replace(f.find("NAXIS   =                    2"), 30, "NAXIS   =                    3");
+  return f;
+}
+
 // --- PNG, chunk by chunk --------------------------------------------------------------------
 
 inline std::uint32_t crc32(const std::string& bytes) {
