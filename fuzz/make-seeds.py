@@ -330,6 +330,13 @@ picture("depth-0.fits", (fits_card("SIMPLE", "T") + fits_card("BITPIX", "8") + f
         .ljust(2880, b" ") + bytes(range(36)).ljust(122, b"\0"))
 picture("alpha-alone.dds", dds(8, 8, 1)[:80] + struct.pack("<I", 0xFFFDFFC2) + dds(8, 8, 1)[84:108]
         + struct.pack("<I", 0x1000) + bytes(16) + bytes(range(84)))
+# A finding kept as a seed: a TIFF of 24x2049 pixels whose RowsPerStrip says 855,640,105 rows;
+# OpenImageIO sized its read buffer by it (20 GB).
+picture("tall-strips.tif", bytes.fromhex(
+    "49492a000800000009000001040001000000180000000101040001000000010800000200030001000000080000000301"
+    "03000100000003000000060103000100000002000000110104000100000079fffffa155f030001000000030000001601"
+    "040001000000290800330000000000000000000000000000000000002222222222222222222222222222222200000000"
+    "0000000000006a7065670000"))
 # RLE storage: tables of each row's offset and length (4x4, three channels: 12 rows), then each
 # row as one run of 4 samples copied and an end. And a finding: one row of one channel whose
 # tables (43283 x 0 entries) are empty, on which the reader crashed at the first row.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <set>
 #include <string>
 #include <string_view>
@@ -39,6 +40,7 @@ enum Tag : std::uint16_t {
   kBitsPerSample = 258,
   kCompression = 259,
   kSamplesPerPixel = 277,
+  kRowsPerStrip = 278,
   kTileWidth = 322,
   kTileLength = 323,
 };
@@ -90,12 +92,14 @@ std::uint64_t first_value(const Layout& l, std::string_view entry, const ReadAt&
   return l.order.at(read(l.order.at(entry, value_at, l.offset_bytes()), size), 0, size);
 }
 
-// A directory's entries as Declared (at most the 65535 entries libtiff reads), and its
-// compression scheme's number (`scheme`: 1, none, where it gives none).
+// A directory's entries as Declared (at most the 65535 entries libtiff reads), its compression
+// scheme's number (`scheme`: 1, none, where it gives none) and its RowsPerStrip (0 where it gives
+// none).
 Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entries,
-                         const ReadAt& read, std::uint64_t& scheme) {
+                         const ReadAt& read, std::uint64_t& scheme, std::uint64_t& rows_per_strip) {
   Declared d;
   scheme = 1;
+  rows_per_strip = 0;
   d.format = "tiff";
   d.compression = "none";
   d.channels = 1;
@@ -118,6 +122,9 @@ Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entrie
         d.compression = compression_name(value);
         scheme = value;
         break;
+      case kRowsPerStrip:
+        rows_per_strip = value;
+        break;
       case kSamplesPerPixel:
         d.channels = static_cast<int>(std::min<std::uint64_t>(value, INT_MAX));
         break;
@@ -135,6 +142,23 @@ Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entrie
   d.bytes_per_channel = static_cast<int>(std::min<std::uint64_t>((bits + 7) / 8, 9));
   if (d.bytes_per_channel < 1) d.bytes_per_channel = 1;
   return d;
+}
+
+// OpenImageIO reads a TIFF stored in strips in chunks of a whole number of strips, its buffer
+// sized by the RowsPerStrip the file gives (read as an int; none, or one past an int's range,
+// counts as 64), not by the picture's height: a 157-byte file of 24x2049 pixels whose strips
+// say 855,640,105 rows asked for 20 GB (found by fuzz_picture_file). Writers give at most the
+// height, or 2^32 - 1 for "one strip"; a strip holding more than kMaxWholeMegabytes is refused.
+Status check_strips(const Declared& d, std::uint64_t rows_per_strip) {
+  if (d.tile_width > 0 || rows_per_strip == 0 || rows_per_strip > INT_MAX) return {};
+  const double bytes =
+      double(rows_per_strip) * double(d.width) * d.channels * std::max(d.bytes_per_channel, 1);
+  if (bytes <= kMaxWholeMegabytes * (1 << 20)) return {};
+  return Failure{"strips of " + std::to_string(rows_per_strip) + " rows of " +
+                 std::to_string(d.width) + " pixels (" +
+                 std::to_string(static_cast<long long>(std::ceil(bytes / (1 << 20)))) +
+                 " MiB each), more than the " + std::to_string(int(kMaxWholeMegabytes)) +
+                 " MiB its reader may hold at once; save it with fewer rows a strip"};
 }
 
 }  // namespace
@@ -159,9 +183,10 @@ TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size) {
     const std::uint64_t entries = l.order.at(read(at, l.count_bytes()), 0, l.count_bytes());
     const std::uint64_t end = at + l.count_bytes() + entries * l.entry_bytes();
     if (entries == 0 || entries > 65535 || end + l.offset_bytes() > file_size) break;
-    std::uint64_t scheme = 1;
-    facts.each.push_back(directory_facts(l, at, entries, read, scheme));
+    std::uint64_t scheme = 1, rows_per_strip = 0;
+    facts.each.push_back(directory_facts(l, at, entries, read, scheme, rows_per_strip));
     facts.schemes.push_back(scheme);
+    facts.rows_per_strip.push_back(rows_per_strip);
     if (facts.directories == 0) facts.first = facts.each.front();
     ++facts.directories;
     at = l.order.at(read(end, l.offset_bytes()), 0, l.offset_bytes());
@@ -190,6 +215,9 @@ Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
                      std::to_string(facts.schemes[i]) + ", which no TIFF reader knows"};
     }
     if (d.width == 0 || d.height == 0) continue;
+    if (const Status s = check_strips(d, facts.rows_per_strip[i]); !s.ok()) {
+      return Failure{"cannot read: " + which + s.reason()};
+    }
     const Status s = check_declared(d, file_size);
     if (!s.ok()) {
       const std::string prefix = "cannot read: ";

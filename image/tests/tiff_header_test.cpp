@@ -171,7 +171,7 @@ TEST(TiffHeader, ASchemeNoReaderKnowsIsRefused) {
                {258, 3, 1, 8},
                {259, 3, 1, scheme},
                {277, 3, 1, 3},
-               {278, 4, 1, 1885995016}},
+               {278, 4, 1, 8}},
               0, false, false);
     const Status s = check_tiff(reader(f), f.size());
     if (scheme == 768) {
@@ -181,6 +181,32 @@ TEST(TiffHeader, ASchemeNoReaderKnowsIsRefused) {
       EXPECT_TRUE(s.ok()) << s.reason();  // JPEG XL: libtiff has its number
     }
   }
+}
+
+// OpenImageIO sizes its buffer by RowsPerStrip, not the height: fuzz_picture_file's 24x2049
+// picture of one sample a pixel in strips of 855,640,105 rows asked for 20 GB. 855,640,105 x 24
+// bytes is 19585 MiB, rounded up; 8 rows of 8 RGB pixels a strip, or the "one strip" value
+// 2^32 - 1 (which the reader takes as none), are fine, and 22,369,621 rows of 8 RGB pixels are
+// 511.99 MiB.
+TEST(TiffHeader, StripsLargerThanTheReaderHoldsAreRefused) {
+  const auto strips = [](std::uint64_t width, std::uint64_t samples, std::uint64_t rows) {
+    std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+    directory(f,
+              {{256, 4, 1, width},
+               {257, 4, 1, 2049},
+               {259, 3, 1, 3},
+               {277, 3, 1, samples},
+               {278, 4, 1, rows}},
+              0, false, false);
+    return check_tiff(reader(f), 100000000);
+  };
+  EXPECT_EQ(strips(24, 1, 855640105).reason(),
+            "cannot read: strips of 855640105 rows of 24 pixels (19585 MiB each), more than the "
+            "512 MiB its reader may hold at once; save it with fewer rows a strip");
+  EXPECT_TRUE(strips(8, 3, 8).ok());
+  EXPECT_TRUE(strips(8, 3, 4294967295u).ok());
+  EXPECT_TRUE(strips(8, 3, 22369621).ok());
+  EXPECT_FALSE(strips(8, 3, 22369622).ok());
 }
 
 TEST(TiffHeader, OtherBytesAreNoTiff) {

@@ -35,14 +35,16 @@ struct TiffFacts {
   // Every directory's declaration, the first included: a pyramid's levels (or a file's pages),
   // each read by the image cache when the view asks for it.
   std::vector<Declared> each;
-  std::vector<std::uint64_t> schemes;  // by directory, its compression scheme's number
+  std::vector<std::uint64_t> schemes;         // by directory, its compression scheme's number
+  std::vector<std::uint64_t> rows_per_strip;  // by directory, its RowsPerStrip (0: none given)
 };
 TiffFacts tiff_facts(const ReadAt& read, std::uintmax_t file_size);
 
 // tiff_facts checked: the chain's length, then every directory through check_declared (a
 // level of a pyramid declaring tiles of 65536x65536, or more pixels than the file holds, is
-// refused as the first would be), and tiles of one side 0. Failure: one line saying what the
-// file declares, and which directory after the first.
+// refused as the first would be), tiles of one side 0, and strips holding more than
+// kMaxWholeMegabytes. Failure: one line saying what the file declares, and which directory after
+// the first.
 Status check_tiff(const ReadAt& read, std::uintmax_t file_size);
 
 }  // namespace l2::png_codec

@@ -255,6 +255,28 @@ inline std::string dds_no_green() {
   return d;
 }
 
+// A TIFF of 24x2049 grey bytes in strips whose RowsPerStrip says 855,640,105 rows
+// (fuzz_picture_file's): OpenImageIO sized its read buffer by it, not by the height, and asked
+// for 20 GB.
+inline std::string tiff_tall_strips() {
+  std::string t = "II*" + std::string(1, '\0') + le32(8) + le16(8);
+  const auto entry = [&t](std::uint16_t tag, std::uint16_t type, std::uint32_t value) {
+    t += le16(tag) + le16(type) + le32(1) +
+         (type == 3 ? le16(static_cast<std::uint16_t>(value)) + le16(0) : le32(value));
+  };
+  entry(256, 4, 24);         // width
+  entry(257, 4, 2049);       // height
+  entry(258, 3, 8);          // bits a sample
+  entry(262, 3, 1);          // grey, black at 0
+  entry(273, 4, 200);        // the strip's offset
+  entry(277, 3, 1);          // samples a pixel
+  entry(278, 4, 855640105);  // rows a strip
+  entry(279, 4, 300);        // the strip's bytes
+  t += le32(0);
+  t.resize(200, '\0');
+  return t + std::string(300, '\x40');
+}
+
 // dds_levels(1) flagged alpha alone (fuzz_picture_file's flags 0xFFFDFFC2, RGB among them),
 // its alpha mask zero: OpenImageIO's reader spread the alpha bits over a byte in steps of zero,
 // for good.
