@@ -80,12 +80,33 @@ long long side(std::uint64_t v) {
   return static_cast<long long>(std::min<std::uint64_t>(v, LLONG_MAX));
 }
 
+// The bytes of one value of an entry's type, for the integer types libtiff reads a number from
+// (BYTE, SBYTE, SHORT, SSHORT, LONG, SLONG, LONG8, SLONG8); 0 for others, whose entries it
+// skips.
+int value_bytes(std::uint64_t type) {
+  switch (type) {
+    case 1:
+    case 6:
+      return 1;
+    case 3:
+    case 8:
+      return 2;
+    case 4:
+    case 9:
+      return 4;
+    case 16:
+    case 17:
+      return 8;
+    default:
+      return 0;
+  }
+}
+
 // One entry's first value: inline when its values fit the entry, else read where it points.
 std::uint64_t first_value(const Layout& l, std::string_view entry, const ReadAt& read) {
-  const std::uint64_t type = l.order.at(entry, 2, 2);
   const std::uint64_t count = l.order.at(entry, 4, l.big ? 8 : 4);
   const std::size_t value_at = l.big ? 12 : 8;
-  const int size = type == 3 ? 2 : type == 16 ? 8 : type == 1 ? 1 : 4;  // SHORT, LONG8, BYTE
+  const int size = value_bytes(l.order.at(entry, 2, 2));
   if (count == 0) return 0;
   if (count * size <= static_cast<std::uint64_t>(l.offset_bytes()))
     return l.order.at(entry, value_at, size);
@@ -105,34 +126,39 @@ Declared directory_facts(const Layout& l, std::uint64_t at, std::uint64_t entrie
   d.channels = 1;
   std::uint64_t bits = 1;
   const std::string b = read(at + l.count_bytes(), entries * l.entry_bytes());
+  // A tag given twice counts at its larger value (the checks bound the most a reader could
+  // take); an entry of a type no number is read from is skipped, as libtiff skips it (a second
+  // width entry of type 0 pointing past the file had hidden the first: fuzz_picture_file).
   for (std::size_t e = 0; e + l.entry_bytes() <= b.size(); e += l.entry_bytes()) {
     const std::string_view entry(b.data() + e, l.entry_bytes());
+    if (value_bytes(l.order.at(entry, 2, 2)) == 0) continue;
     const std::uint64_t value = first_value(l, entry, read);
     switch (l.order.at(entry, 0, 2)) {
       case kWidth:
-        d.width = side(value);
+        d.width = std::max(d.width, side(value));
         break;
       case kLength:
-        d.height = side(value);
+        d.height = std::max(d.height, side(value));
         break;
       case kBitsPerSample:
-        bits = value;
+        bits = std::max(bits, value);
         break;
       case kCompression:
         d.compression = compression_name(value);
         scheme = value;
         break;
       case kRowsPerStrip:
-        rows_per_strip = value;
+        rows_per_strip = std::max(rows_per_strip, value);
         break;
       case kSamplesPerPixel:
-        d.channels = static_cast<int>(std::min<std::uint64_t>(value, INT_MAX));
+        d.channels =
+            std::max(d.channels, static_cast<int>(std::min<std::uint64_t>(value, INT_MAX)));
         break;
       case kTileWidth:
-        d.tile_width = side(value);
+        d.tile_width = std::max(d.tile_width, side(value));
         break;
       case kTileLength:
-        d.tile_height = side(value);
+        d.tile_height = std::max(d.tile_height, side(value));
         break;
       default:
         break;

@@ -209,6 +209,31 @@ TEST(TiffHeader, StripsLargerThanTheReaderHoldsAreRefused) {
   EXPECT_FALSE(strips(8, 3, 22369622).ok());
 }
 
+// A second width entry of type 0 (no number libtiff reads), its 524,544 values past the file,
+// had the walk take the width as 0 and skip the directory's checks (fuzz_picture_file); a tag
+// given twice counts at its larger value.
+TEST(TiffHeader, EntriesOfNoNumberTypeAreSkippedAndRepeatsCountAtTheirLargest) {
+  const auto check = [](std::uint16_t second_type, std::uint64_t count,
+                        std::uint64_t second_width) {
+    std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+    directory(f,
+              {{256, 4, 1, 24},
+               {257, 4, 1, 2049},
+               {259, 3, 1, 3},
+               {256, second_type, count, second_width},
+               {278, 4, 1, 855640105}},
+              0, false, false);
+    return check_tiff(reader(f), 100000000).reason();
+  };
+  const std::string strips =
+      "cannot read: strips of 855640105 rows of 24 pixels (19585 MiB "
+      "each), more than the 512 MiB its reader may hold at once; save it "
+      "with fewer rows a strip";
+  EXPECT_EQ(check(0, 524544, 512), strips);
+  EXPECT_EQ(check(4, 524544, 99999999), strips);  // a valid type, its values past the file: none
+  EXPECT_EQ(check(3, 1, 48).find("strips of 855640105 rows of 48 pixels"), 13u) << check(3, 1, 48);
+}
+
 TEST(TiffHeader, OtherBytesAreNoTiff) {
   for (const std::string& f : {std::string("P6\n8 8\n255\n"), std::string("II*"), std::string()}) {
     EXPECT_FALSE(tiff_facts(reader(f), f.size()).tiff) << f;
