@@ -241,14 +241,15 @@ Status check_tiff(const ReadAt& read, std::uintmax_t file_size) {
                      std::to_string(facts.schemes[i]) + ", which no TIFF reader knows"};
     }
     if (d.width == 0 || d.height == 0) continue;
-    if (const Status s = check_strips(d, facts.rows_per_strip[i]); !s.ok()) {
-      return Failure{"cannot read: " + which + s.reason()};
-    }
     const Status s = check_declared(d, file_size);
     if (!s.ok()) {
       const std::string prefix = "cannot read: ";
       return Failure{prefix + which +
                      s.reason().substr(s.reason().rfind(prefix, 0) == 0 ? prefix.size() : 0)};
+    }
+    // After what the picture declares as a whole: its strips are how it is read.
+    if (const Status strips = check_strips(d, facts.rows_per_strip[i]); !strips.ok()) {
+      return Failure{"cannot read: " + which + strips.reason()};
     }
   }
   return {};
