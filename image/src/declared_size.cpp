@@ -8,16 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "byte_fields.hpp"
+
 namespace l2::png_codec {
 
 namespace {
-
-std::uint32_t le32(std::string_view b, std::size_t at) {
-  return static_cast<std::uint32_t>(static_cast<unsigned char>(b[at])) |
-         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 1])) << 8 |
-         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 2])) << 16 |
-         static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 3])) << 24;
-}
 
 // Megabytes rounded up, as text: any size a header can declare, never converted to an integer.
 std::string mib(double bytes) {
@@ -28,7 +23,7 @@ std::string mib(double bytes) {
 // side cannot exist, and every level holds at least one byte.
 Status check_dds(std::string_view b, std::uintmax_t file_size) {
   if (b.size() < 128) return {};
-  const std::uint32_t height = le32(b, 12), width = le32(b, 16), levels = le32(b, 28);
+  const std::uint32_t height = le(b, 12, 4), width = le(b, 16, 4), levels = le(b, 28, 4);
   const std::uint32_t largest = std::max(width, height);
   int possible = 1;
   for (std::uint32_t side = largest; side > 1; side /= 2) ++possible;
@@ -44,7 +39,7 @@ Status check_dds(std::string_view b, std::uintmax_t file_size) {
   // channel's bits over a byte in steps of its mask's width: a mask of zero never ends (found by
   // fuzz_picture_file: an 8x8 RGB DDS of 194 bytes whose green mask is zero, and one of 212
   // bytes flagged alpha alone whose alpha mask is zero, held their readers for good).
-  const std::uint32_t flags = le32(b, 80);
+  const std::uint32_t flags = le(b, 80, 4);
   // (Without FOURCC and without any of RGB, LUMINANCE, ALPHAPIXELS and alpha alone, the reader
   // refuses the file itself.)
   if ((flags & 0x4) == 0 && (flags & (0x40 | 0x20000 | 0x1 | 0x2)) != 0) {
@@ -62,7 +57,7 @@ Status check_dds(std::string_view b, std::uintmax_t file_size) {
     }
     if ((flags & 0x1) == 0) used.pop_back();  // no ALPHAPIXELS: not the last one
     for (const Channel& c : used) {
-      if (le32(b, c.at) == 0) {
+      if (le(b, c.at, 4) == 0) {
         return Failure{std::string("cannot read: a DDS whose ") + c.name +
                        " bit mask is zero, no channel its reader can unpack"};
       }

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "byte_fields.hpp"
 #include "command_line/printable.hpp"
 #include "image/declared_size.hpp"
 
@@ -30,14 +31,6 @@ bool text_at(const ReadAt& read, std::uint64_t& at, std::size_t longest, std::st
   return true;
 }
 
-std::uint32_t le32_at(const std::string& b, std::size_t at) {
-  std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) {
-    v = v << 8 | (at + i < b.size() ? static_cast<unsigned char>(b[at + i]) : 0u);
-  }
-  return v;
-}
-
 // The bytes OpenEXR reads for a value of `type` at `at`, which for a type it knows is not the
 // size the attribute declares: a fixed size, a channel list up to its empty name, a preview's
 // pixels by its own width and height. `declared` for the rest (text, vectors, a type it does
@@ -58,7 +51,7 @@ std::uint64_t value_bytes(const std::string& type, std::uint32_t declared, const
   }
   if (type == "preview") {
     const std::string sides = read(at, 8);
-    return 8 + std::uint64_t{le32_at(sides, 0)} * le32_at(sides, 4) * 4;
+    return 8 + std::uint64_t{le(sides, 0, 4)} * le(sides, 4, 4) * 4;
   }
   if (type == "chlist") {
     // Channels: a name of up to 255 characters, then 16 bytes, until an empty name.
@@ -74,7 +67,7 @@ std::uint64_t value_bytes(const std::string& type, std::uint32_t declared, const
 }
 
 std::int64_t signed32_at(const std::string& b, std::size_t at) {
-  return static_cast<std::int32_t>(le32_at(b, at));
+  return static_cast<std::int32_t>(le(b, at, 4));
 }
 
 // What one part's header declares of its pixels: the data window's sides, for a tiled part its
@@ -94,7 +87,7 @@ std::int64_t pixel_bytes(const ReadAt& read, std::uint64_t at, std::uint64_t end
   for (int channel = 0; channel < kMaxExrAttributes && at < end; ++channel) {
     std::string name;
     if (!text_at(read, at, 255, name) || name.empty()) break;
-    bytes += le32_at(read(at, 4), 0) == 1 ? 2 : 4;
+    bytes += le(read(at, 4), 0, 4) == 1 ? 2 : 4;
     at += 16;
   }
   return bytes;
@@ -206,8 +199,8 @@ Status check_exr(const ReadAt& read, std::uintmax_t file_size) {
       if (!code.empty()) part.chunk_lines = chunk_lines(static_cast<unsigned char>(code[0]));
     } else if (name == "tiles" && type == "tiledesc") {
       const std::string tiles = read(at, 8);
-      part.tile_width = le32_at(tiles, 0);
-      part.tile_height = le32_at(tiles, 4);
+      part.tile_width = le(tiles, 0, 4);
+      part.tile_height = le(tiles, 4, 4);
     }
     if (++attributes > kMaxExrAttributes) {
       return Failure{"cannot read: an OpenEXR file of more than " +

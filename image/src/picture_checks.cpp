@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "byte_fields.hpp"
 #include "media_oiio.hpp"
 
 namespace l2::png_codec {
@@ -27,22 +28,6 @@ struct Fd {
     if (fd >= 0) ::close(fd);
   }
 };
-
-std::uint32_t le(const std::string& b, std::size_t at, int n) {
-  std::uint32_t v = 0;
-  for (int i = 0; i < n && at + i < b.size(); ++i) {
-    v |= std::uint32_t{static_cast<unsigned char>(b[at + i])} << (8 * i);
-  }
-  return v;
-}
-
-std::uint32_t be32(const std::string& b, std::size_t at) {
-  std::uint32_t v = 0;
-  for (std::size_t i = 0; i < 4 && at + i < b.size(); ++i) {
-    v = v << 8 | static_cast<unsigned char>(b[at + i]);
-  }
-  return v;
-}
 
 // An ICO's image that is a bitmap (a BITMAPINFOHEADER, its palette, then the colour and mask
 // rows): OpenImageIO's ICO reader trusts its header, and one of a bit depth and size no icon
@@ -107,7 +92,7 @@ Status check_ico(const PictureBytes& bytes) {
     }
     // As the reader reads it: from its offset on, as far as libpng asks.
     const std::string png = bytes.read(offset, i == 0 ? bytes.size : kIcoHeaderBytes);
-    const double decoded = double(be32(png, 16)) * be32(png, 20) * 4;
+    const double decoded = double(be(png, 16, 4)) * be(png, 20, 4) * 4;
     const bool rows = i == 0 && decoded <= kMaxWholeMegabytes * (1 << 20);
     if (const Status s = check_png_bytes(png, rows); !s.ok()) {
       return Failure{"cannot read: an ICO's image " + std::to_string(i) + ": " +

@@ -3,19 +3,13 @@
 #include <climits>
 #include <string>
 
+#include "byte_fields.hpp"
+
 namespace l2::png_codec {
 
 namespace {
 
 constexpr std::uint64_t kHeaderBytes = 512;
-
-unsigned be16(const std::string& b, std::size_t at) {
-  return static_cast<unsigned char>(b[at]) << 8 | static_cast<unsigned char>(b[at + 1]);
-}
-
-std::uint32_t be32(const std::string& b, std::size_t at) {
-  return static_cast<std::uint32_t>(be16(b, at)) << 16 | be16(b, at + 2);
-}
 
 Failure refused(const std::string& what) {
   return Failure{"cannot read: an SGI image " + what};
@@ -29,7 +23,7 @@ bool runs_fit(const std::string& bytes, unsigned bpc, std::uint64_t width) {
   const std::uint64_t n = bytes.size();
   while (i < n) {
     if (i + bpc > n) return false;  // the count itself
-    const unsigned value = bpc == 1 ? static_cast<unsigned char>(bytes[i]) : be16(bytes, i);
+    const unsigned value = bpc == 1 ? static_cast<unsigned char>(bytes[i]) : be(bytes, i, 2);
     i += bpc;
     const unsigned count = value & 0x7F;
     if (count == 0) break;
@@ -45,9 +39,9 @@ bool runs_fit(const std::string& bytes, unsigned bpc, std::uint64_t width) {
 
 Status check_sgi_rle(const ReadAt& read, std::uintmax_t file_size) {
   const std::string h = read(0, 12);
-  if (h.size() < 12 || be16(h, 0) != 474 || h[2] != 1) return {};
-  const unsigned bpc = static_cast<unsigned char>(h[3]), dimension = be16(h, 4);
-  const std::uint64_t width = be16(h, 6), ysize = be16(h, 8), zsize = be16(h, 10);
+  if (h.size() < 12 || be(h, 0, 2) != 474 || h[2] != 1) return {};
+  const unsigned bpc = static_cast<unsigned char>(h[3]), dimension = be(h, 4, 2);
+  const std::uint64_t width = be(h, 6, 2), ysize = be(h, 8, 2), zsize = be(h, 10, 2);
   if (bpc != 1 && bpc != 2) return {};  // check_header refuses it
   const std::uint64_t rows = dimension == 1 ? 1 : ysize, channels = dimension == 3 ? zsize : 1;
   const std::uint64_t entries = ysize * zsize;
@@ -65,7 +59,7 @@ Status check_sgi_rle(const ReadAt& read, std::uintmax_t file_size) {
   const std::string lengths = read(kHeaderBytes + 4 * entries, 4 * rows * channels);
   if (starts.size() < 4 * rows * channels || lengths.size() < 4 * rows * channels) return {};
   for (std::uint64_t row = 0; row < rows * channels; ++row) {
-    const std::uint64_t start = be32(starts, 4 * row), length = be32(lengths, 4 * row);
+    const std::uint64_t start = be(starts, 4 * row, 4), length = be(lengths, 4 * row, 4);
     if (start > INT_MAX || length > INT_MAX || start + length > file_size) {
       return refused("whose row " + std::to_string(row) + " is " + std::to_string(length) +
                      " bytes at " + std::to_string(start) + ", past the end of its " +
