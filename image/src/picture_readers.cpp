@@ -21,6 +21,16 @@ void only_readers_asked_for() {
   (void)off;
 }
 
+// A file's first bytes, as many as format_by_signature looks at.
+std::string first_bytes(const char* path) {
+  std::string head(256, '\0');
+  std::FILE* file = std::fopen(path, "rb");
+  if (!file) return {};
+  head.resize(std::fread(head.data(), 1, head.size(), file));
+  std::fclose(file);
+  return head;
+}
+
 template <std::size_t I>
 OIIO::ImageInput* create_read_here() {
   return make_reader(kFormatsReadHere[I]).release();
@@ -55,15 +65,6 @@ Result<ReaderChoice> choose_reader(std::string_view head, const std::string& nam
   if (choice.format.empty()) return Failure{"cannot read: not a picture of a format known here"};
   if (!read_here(choice.format)) return Failure{not_read_here(choice.format)};
   return choice;
-}
-
-std::string first_bytes(const char* path) {
-  std::string head(256, '\0');
-  std::FILE* file = std::fopen(path, "rb");
-  if (!file) return {};
-  head.resize(std::fread(head.data(), 1, head.size(), file));
-  std::fclose(file);
-  return head;
 }
 
 Result<std::unique_ptr<OIIO::ImageInput>> open_reader(const char* path,

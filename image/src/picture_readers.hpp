@@ -38,7 +38,4 @@ Result<std::unique_ptr<OIIO_NAMESPACE::ImageInput>> open_reader(
 // it too opens a file by its content.
 OIIO_NAMESPACE::ImageInput::Creator reader_creator(std::string_view format);
 
-// A file's first bytes, as many as format_by_signature looks at.
-std::string first_bytes(const char* path);
-
 }  // namespace l2::png_codec

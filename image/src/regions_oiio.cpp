@@ -150,7 +150,8 @@ namespace {
 // then opened once directly, so that a file that cannot be read gets the same one-line reason
 // as read_png: its sides and storage, or why not. `rows`: a PNG's rows decoded too, before a
 // reader decodes them (its own lines on stderr, a damaged row a frame into the run).
-Result<PictureShape> checked_shape(const char* path, bool rows) {
+// `format`: the format its reader read it as, which the image cache then reads it as.
+Result<PictureShape> checked_shape(const char* path, bool rows, std::string* format = nullptr) {
   const Result<double> png = png_megabytes(path, rows);
   if (!png.ok()) return Failure{png.reason()};
   const PictureBytes bytes = file_bytes(path);
@@ -167,6 +168,7 @@ Result<PictureShape> checked_shape(const char* path, bool rows) {
   }
   if (const Status s = check_opened(**in, bytes.size, true, facts->decoded_whole); !s.ok())
     return Failure{s.reason()};
+  if (format) *format = (*in)->format_name();
   return PictureShape{spec.width, spec.height, spec.tile_width > 0,
                       double(spec.width) * spec.height * 3 / (1 << 20)};
 }
@@ -188,17 +190,15 @@ Result<PictureShape> checked_picture(const char* path) try {
 }
 
 Result<std::unique_ptr<RegionReader>> open_regions(const char* path, float cache_megabytes) try {
-  if (const Result<PictureShape> shape = checked_shape(path, true); !shape.ok())
+  std::string format;
+  if (const Result<PictureShape> shape = checked_shape(path, true, &format); !shape.ok())
     return Failure{shape.reason()};
   std::unique_ptr<OIIO::ImageCache, CacheDeleter> cache(OIIO::ImageCache::create(false));
   cache->attribute("max_memory_MB", cache_megabytes);
   cache->attribute("autotile", kAutoTile);
   const OIIO::ustring file(path);
-  // The cache's own readers are of the format checked_shape opened the file as.
-  const Result<ReaderChoice> reader = choose_reader(first_bytes(path), path);
-  if (!reader.ok()) return Failure{reader.reason()};
   OIIO::ImageSpec spec;
-  if (!cache->add_file(file, reader_creator(reader->format)) || !cache->get_imagespec(file, spec)) {
+  if (!cache->add_file(file, reader_creator(format)) || !cache->get_imagespec(file, spec)) {
     return Failure{"cannot read: " + one_line(cache->geterror())};
   }
   Result<std::vector<LevelSides>> sides = level_sides(*cache, file, spec);
