@@ -12,6 +12,7 @@
 
 #include "image/picture_regions.hpp"
 #include "image/png_io.hpp"
+#include "test_folder.hpp"
 
 namespace l2 {
 namespace {
@@ -59,11 +60,7 @@ TEST(PictureFormats, OnlyFormatsWhoseHeadersAreCheckedAreRead) {
 }
 
 std::filesystem::path temp_dir() {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("l2_formats_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_folder("l2_formats_");
 }
 
 std::filesystem::path file(const std::string& name, const std::string& bytes) {

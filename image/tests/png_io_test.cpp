@@ -1,6 +1,7 @@
 #include "image/png_io.hpp"
 
 #include "image/picture_regions.hpp"
+#include "test_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,11 +17,7 @@ namespace l2 {
 namespace {
 
 std::filesystem::path temp_dir() {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("l2_png_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_folder("l2_png_");
 }
 
 // The bytes of a file written by write_png, to be damaged.
