@@ -72,7 +72,11 @@ Result<std::unique_ptr<OIIO::ImageInput>> open_reader(const char* path,
   const Result<ReaderChoice> choice = choose_reader(first_bytes(path), path);
   if (!choice.ok()) return Failure{choice.reason()};
   auto reader = make_reader(choice->format);
-  if (!reader) return Failure{not_read_here(choice->format)};
+  if (!reader) {  // read here, but this OpenImageIO was built without the format's reader
+    OIIO::geterror();
+    return Failure{"cannot read: a " + format_label(choice->format) +
+                   " file, and OpenImageIO here has no reader of it"};
+  }
   OIIO::ImageSpec spec;
   const bool opened = config ? reader->open(path, spec, *config) : reader->open(path, spec);
   if (opened) return reader;
