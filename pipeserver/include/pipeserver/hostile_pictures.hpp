@@ -257,7 +257,8 @@ inline std::string dds_no_green() {
 
 // A TIFF of 24x2049 grey bytes in strips whose RowsPerStrip says 855,640,105 rows
 // (fuzz_picture_file's): OpenImageIO sized its read buffer by it, not by the height, and asked
-// for 20 GB.
+// for 20 GB. For the picture scene: a whole read refuses a grey picture anyway (no strip
+// headers fit in one channel).
 inline std::string tiff_tall_strips() {
   std::string t = "II*" + std::string(1, '\0') + le32(8) + le16(8);
   const auto entry = [&t](std::uint16_t tag, std::uint16_t type, std::uint32_t value) {
