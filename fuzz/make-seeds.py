@@ -371,6 +371,24 @@ picture("heap-1bit.ico", zlib.decompress(base64.b64decode(
     "5SSzEACuK8QnbRdFKTKxYekvsLQeEy85xiRpOUMFKV54BSG3oBQ=")))
 
 
+
+def rla(colour_type, colour_bits, aux, aux_bits):
+    """A 4x4 Wavefront RLA (big-endian; read as RLA by its name alone): 3 colour channels of
+    colour_type (0 bytes, 1 words) and aux auxiliary byte channels, each row of each channel one
+    run of 4 samples of a byte per byte of a sample."""
+    head = struct.pack(">14h", 0, 3, 0, 3, 0, 3, 0, 3, 1, colour_type, 3, 0, aux, -2).ljust(740, b"\0")
+    head = head[:658] + struct.pack(">5h", colour_bits, 0, 0, 0, aux_bits) + head[668:]
+    row = b"".join(struct.pack(">H", 2 * n) + b"\x03\x40" * n
+                   for n in [2 if colour_type == 1 else 1] * 3 + [1] * aux)
+    return head + b"".join(struct.pack(">I", 740 + 16 + y * len(row)) for y in range(4)) + row * 4
+
+
+# And two findings: an auxiliary channel of 0 bits, which the reader rescaled in a loop that never
+# ends, and words of 20 bits, which it rescaled as 32-bit samples past the end of its row.
+picture("rgb-4x4.rla", rla(0, 8, 0, 0))
+picture("aux-bits-0.rla", rla(0, 8, 1, 0))
+picture("words-20-bits.rla", rla(1, 20, 0, 0))
+
 def exr_attribute(name, type_, value):
     return name.encode() + b"\0" + type_.encode() + b"\0" + struct.pack("<I", len(value)) + value
 

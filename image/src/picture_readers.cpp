@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "image/picture_formats.hpp"
+#include "image/rla_header.hpp"
 #include "media_oiio.hpp"
 
 namespace l2::png_codec {
@@ -21,9 +22,9 @@ void only_readers_asked_for() {
   (void)off;
 }
 
-// A file's first bytes, as many as format_by_signature looks at.
+// A file's first bytes, as many as format_by_signature and check_chosen look at.
 std::string first_bytes(const char* path) {
-  std::string head(256, '\0');
+  std::string head(kRlaHeaderBytes, '\0');
   std::FILE* file = std::fopen(path, "rb");
   if (!file) return {};
   head.resize(std::fread(head.data(), 1, head.size(), file));
@@ -67,10 +68,16 @@ Result<ReaderChoice> choose_reader(std::string_view head, const std::string& nam
   return choice;
 }
 
+Status check_chosen(const ReaderChoice& choice, std::string_view head) {
+  return choice.format == "rla" ? check_rla(head) : Status{};
+}
+
 Result<std::unique_ptr<OIIO::ImageInput>> open_reader(const char* path,
                                                       const OIIO::ImageSpec* config) {
-  const Result<ReaderChoice> choice = choose_reader(first_bytes(path), path);
+  const std::string head = first_bytes(path);
+  const Result<ReaderChoice> choice = choose_reader(head, path);
   if (!choice.ok()) return Failure{choice.reason()};
+  if (const Status s = check_chosen(*choice, head); !s.ok()) return Failure{s.reason()};
   auto reader = make_reader(choice->format);
   if (!reader) {  // read here, but this OpenImageIO was built without the format's reader
     OIIO::geterror();

@@ -25,6 +25,11 @@ struct ReaderChoice {
 // Failure in one line: a format not read here, or none known.
 Result<ReaderChoice> choose_reader(std::string_view head, const std::string& name);
 
+// The header of a format known by its name alone, checked once its reader is chosen: an RLA
+// file's (image/rla_header.hpp). Formats with a signature are checked before, by their bytes
+// (picture_checks.hpp). `head`: the first kRlaHeaderBytes bytes where the file has them.
+Status check_chosen(const ReaderChoice& choice, std::string_view head);
+
 // A reader of `format`, one read here, not yet opened.
 std::unique_ptr<OIIO_NAMESPACE::ImageInput> make_reader(std::string_view format);
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "image/picture_formats.hpp"
+#include "image/rla_header.hpp"
 #include "media_oiio.hpp"
 #include "picture_checks.hpp"
 #include "picture_readers.hpp"
@@ -104,9 +105,12 @@ struct Opened {
 // A picture in memory opened by the reader its first bytes (or else its hint) name.
 l2::Result<Opened> open_bytes(const Input& input, const OIIO::ImageSpec& config) {
   const std::string_view head(reinterpret_cast<const char*>(input.bytes),
-                              std::min<std::size_t>(input.size, 256));
+                              std::min(input.size, l2::png_codec::kRlaHeaderBytes));
   const auto choice = l2::png_codec::choose_reader(head, input.format_hint);
   if (!choice.ok()) return Failure{choice.reason()};
+  if (const Status s = l2::png_codec::check_chosen(*choice, head); !s.ok()) {
+    return Failure{s.reason()};
+  }
   Opened opened;
   opened.in = l2::png_codec::make_reader(choice->format);
   if (!opened.in) return Failure{"cannot read: not a picture of a format known here"};

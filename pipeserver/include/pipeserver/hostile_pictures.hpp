@@ -381,4 +381,25 @@ inline std::string damaged_signature_png() {
   return p.insert(8, 1, '\xD2');
 }
 
+// A 4x4 Wavefront RLA file (no signature: read as RLA by its name) of 3 colour channels of
+// `type` (0 bytes, 1 words) and `bits`, and `aux` auxiliary byte channels of `aux_bits`, each
+// row of each channel one run of 0x40 a byte of its samples. 0 auxiliary bits hung OpenImageIO's
+// reader (found by fuzz_picture_file); 20-bit words had it write past its row buffer.
+inline std::string rla(int type, int bits, int aux, int aux_bits) {
+  const auto be16 = [](int v) {
+    return big_endian(static_cast<std::uint32_t>(v) << 16).substr(0, 2);
+  };
+  std::string h = be16(0) + be16(3) + be16(0) + be16(3) + be16(0) + be16(3) + be16(0) + be16(3) +
+                  be16(1) + be16(type) + be16(3) + be16(0) + be16(aux) + be16(-2);
+  h.resize(740, '\0');
+  h.replace(658, 2, be16(bits)).replace(666, 2, be16(aux_bits));
+  std::string row;
+  for (int c = 0; c < 3 + aux; ++c) {
+    const int spans = c < 3 && type == 1 ? 2 : 1;  // one a byte of a sample
+    row += be16(2 * spans) + (spans == 2 ? "\x03\x40\x03\x40" : "\x03\x40");
+  }
+  for (std::uint32_t y = 0; y < 4; ++y) h += big_endian(740 + 16 + y * std::uint32_t(row.size()));
+  return h + row + row + row + row;
+}
+
 }  // namespace l2::hostile

@@ -1,0 +1,43 @@
+#include "image/rla_header.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "byte_fields.hpp"
+
+namespace l2::png_codec {
+
+namespace {
+
+// A class of channels as the header declares it: where its count, type and bits lie, and
+// whether 0 bits stands for 8.
+struct ChannelClass {
+  const char* name;
+  std::size_t count_at, type_at, bits_at;
+  bool zero_bits_is_eight;
+};
+constexpr ChannelClass kClasses[] = {{"colour", 20, 18, 658, true},
+                                     {"matte", 22, 660, 662, false},
+                                     {"auxiliary", 24, 664, 666, false}};
+constexpr int kWord = 1;
+
+int field(std::string_view h, std::size_t at) {
+  return static_cast<std::int16_t>(be(h, at, 2));
+}
+
+}  // namespace
+
+Status check_rla(std::string_view h) {
+  if (h.size() < kRlaHeaderBytes) return {};
+  for (const ChannelClass& c : kClasses) {
+    const int count = field(h, c.count_at), type = field(h, c.type_at);
+    const int bits = field(h, c.bits_at) == 0 && c.zero_bits_is_eight ? 8 : field(h, c.bits_at);
+    const std::string declares = "cannot read: an RLA file declaring " + std::to_string(count) +
+                                 " " + c.name + " channel(s) of " + std::to_string(bits) + " bits";
+    if (count > 0 && bits < 1) return Failure{declares};
+    if (count > 0 && type == kWord && bits > 16) return Failure{declares + " in 16-bit words"};
+  }
+  return {};
+}
+
+}  // namespace l2::png_codec
