@@ -389,6 +389,21 @@ picture("rgb-4x4.rla", rla(0, 8, 0, 0))
 picture("aux-bits-0.rla", rla(0, 8, 1, 0))
 picture("words-20-bits.rla", rla(1, 20, 0, 0))
 
+
+def ico_bitmap(side, bits, colours):
+    """An icon of one side x side bitmap of `bits` a pixel, its directory entry `colours`."""
+    palette = bytes(4 << bits) if bits <= 8 else b""
+    dib = (struct.pack("<IiiHHIIiiII", 40, side, 2 * side, 1, bits, 0, 0, 0, 0, 0, 0) + palette
+           + bytes(((side * bits + 31) // 32 + (side + 31) // 32) * 4 * side))
+    return struct.pack("<HHHBBBBHHII", 0, 1, 1, side, side, colours, 0, 1, 32, len(dib), 22) + dib
+
+
+# Findings kept as seeds: a well-formed 12x12 icon of 4 bits a pixel, whose mask OpenImageIO's
+# ICO reader writes past its buffer (it found a 4x4 one of 1 bit), and an 8-bit icon whose entry
+# says 2 colours (the reader looks colours up by any value in a palette of 2).
+picture("mask-12x12-4bit.ico", ico_bitmap(12, 4, 16))
+picture("palette-8bit-2.ico", ico_bitmap(8, 8, 2))
+
 def exr_attribute(name, type_, value):
     return name.encode() + b"\0" + type_.encode() + b"\0" + struct.pack("<I", len(value)) + value
 

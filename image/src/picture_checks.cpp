@@ -10,6 +10,7 @@
 #include <string>
 
 #include "byte_fields.hpp"
+#include "image/ico_header.hpp"
 #include "media_oiio.hpp"
 
 namespace l2::png_codec {
@@ -29,43 +30,6 @@ struct Fd {
   }
 };
 
-// An ICO's image that is a bitmap (a BITMAPINFOHEADER, its palette, then the colour and mask
-// rows): OpenImageIO's ICO reader trusts its header, and one of a bit depth and size no icon
-// has corrupted the heap (fuzz_picture_file's: a 2304-byte header, 1 bit a pixel, 16,778,241
-// pixels wide, 2048 planes; `strip_headers dump` aborted in free()). Only what the format has: a
-// 40-byte header, one plane, 1, 4, 8, 16, 24 or 32 bits a pixel, no compression, sides of 1 to
-// 256 (the height counts colour and mask rows), a palette within its bits, rows within the file.
-Status check_ico_bitmap(const PictureBytes& bytes, std::uint64_t offset) {
-  const std::string h = bytes.read(offset, 40);
-  const std::uint32_t size = le(h, 0, 4), width = le(h, 4, 4), height = le(h, 8, 4);
-  const std::uint32_t planes = le(h, 12, 2), bits = le(h, 14, 2), compression = le(h, 16, 4);
-  const std::uint32_t colours = le(h, 32, 4);
-  const auto refused = [&](const std::string& what) { return Failure{"a bitmap " + what}; };
-  if (h.size() < 40 || size != 40)
-    return refused("header of " + std::to_string(size) + " bytes, not 40");
-  if (bits != 1 && bits != 4 && bits != 8 && bits != 16 && bits != 24 && bits != 32)
-    return refused("of " + std::to_string(bits) +
-                   " bits a pixel (an icon has 1, 4, 8, 16, 24 or 32)");
-  if (planes != 1) return refused("of " + std::to_string(planes) + " planes (an icon has 1)");
-  if (compression != 0)
-    return refused("compressed (scheme " + std::to_string(compression) + "); an icon's is not");
-  if (width < 1 || width > 256 || height < 2 || height > 512 || height % 2 != 0)
-    return refused("of " + std::to_string(width) + "x" + std::to_string(height / 2) +
-                   " pixels (an icon's are 1 to 256 a side)");
-  const std::uint64_t rows = height / 2;
-  const std::uint64_t palette = bits <= 8 ? 4ull * (colours != 0 ? colours : 1u << bits) : 0;
-  if (bits <= 8 && colours > (1u << bits))
-    return refused("of " + std::to_string(colours) + " colours at " + std::to_string(bits) +
-                   " bits a pixel");
-  const std::uint64_t colour_rows = (width * std::uint64_t{bits} + 31) / 32 * 4 * rows;
-  const std::uint64_t mask_rows = (width + 31) / 32 * 4 * rows;
-  const std::uint64_t needed = 40 + palette + colour_rows + mask_rows;
-  if (offset + needed > bytes.size)
-    return refused("of " + std::to_string(width) + "x" + std::to_string(rows) + " needing " +
-                   std::to_string(needed) + " bytes, past the file's end");
-  return {};
-}
-
 // An ICO's images that are PNGs, checked with libpng before OpenImageIO's ICO reader sees them:
 // its libpng error handler crashed the process on a PNG icon cut short. Every image's header;
 // the first's rows too (the one a picture shows), unless it is larger than any picture decoded
@@ -83,13 +47,16 @@ Status check_ico(const PictureBytes& bytes) {
   for (std::uint32_t i = 0; i < count && 16 * i + 16 <= entries.size(); ++i) {
     const std::uint32_t offset = le(entries, 16 * i + 12, 4);
     // An image is a PNG to the reader when its bytes 1 to 3 say "PNG", whatever the rest of the
-    // signature (a damaged one crashed it likewise).
-    if (!seen.insert(offset).second) continue;
+    // signature (a damaged one crashed it likewise). A bitmap is checked with each entry that
+    // points at it (the reader takes its sides from the entry); a PNG once.
     if (bytes.read(offset + 1, 3) != "PNG") {
-      if (const Status s = check_ico_bitmap(bytes, offset); !s.ok())
+      const Status s =
+          check_ico_bitmap(entries.substr(16 * i, 16), bytes.read(offset, 40), offset, bytes.size);
+      if (!s.ok())
         return Failure{"cannot read: an ICO's image " + std::to_string(i) + ": " + s.reason()};
       continue;
     }
+    if (!seen.insert(offset).second) continue;
     // As the reader reads it: from its offset on, as far as libpng asks.
     const std::string png = bytes.read(offset, i == 0 ? bytes.size : kIcoHeaderBytes);
     const double decoded = double(be(png, 16, 4)) * be(png, 20, 4) * 4;

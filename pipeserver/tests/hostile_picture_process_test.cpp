@@ -4,7 +4,8 @@
 // lightning2_emu route. Before, a 434-byte TIFF of 1024x1024 pixels in one tile of 65536x65536
 // took 13 GB and a minute in dump and route, and a 2.3 MB TIFF of 20,000 one-pixel directories
 // held the picture scene for minutes, and an ICO holding a PNG cut short crashed every one of
-// them (SIGFPE in OpenImageIO's ICO reader); an RLA of 4x4 pixels with an auxiliary channel of 0
+// them (SIGFPE in OpenImageIO's ICO reader), as a well-formed 12x12 ICO of 4 bits a pixel did
+// (its mask written past the reader's buffer); an RLA of 4x4 pixels with an auxiliary channel of 0
 // bits, and 177 bytes of JPEG 2000 named .tga (a format not read here), hung them.
 // hostile_process.hpp says what each run must do.
 #include "hostile_process.hpp"
@@ -56,6 +57,8 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"strips.tif", hostile::tiff_tall_strips()},
       {"header.ico", hostile::ico_bitmap(2304, 32)},
       {"bits.ico", hostile::ico_bitmap(40, 7)},
+      {"mask.ico", hostile::ico_bitmap(40, 4, 12, 16)},
+      {"palette.ico", hostile::ico_bitmap(40, 8, 8, 2)},
       {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
       {"bits.rla", hostile::rla(0, 8, 1, 0)},
       {"words.rla", hostile::rla(1, 20, 0, 0)},
@@ -81,8 +84,8 @@ TEST_F(HostileProcess, WholeReadsOfEveryFormatAreRefusedInOneLine) {
     if (name == "tiled.tif" || name == "tiles.tif" || name == "samples.tif" ||
         name == "pages.tif" || name == "cut.ico" || name == "no-green.dds" ||
         name == "tables.sgi" || name == "alpha.dds" || name == "axes.fits" ||
-        name.find(".rla") != std::string::npos || name.find("j2k") != std::string::npos ||
-        name.find("jpeg2000") == 0)
+        name.find(".rla") != std::string::npos || name == "mask.ico" || name == "palette.ico" ||
+        name.find("j2k") != std::string::npos || name.find("jpeg2000") == 0)
       files.emplace_back(name, bytes);
   }
   files.insert(files.end(),

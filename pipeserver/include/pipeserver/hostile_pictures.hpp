@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -216,16 +217,19 @@ inline std::string exr_window(std::uint32_t width, std::uint32_t height, int cha
          std::string(4096, '\0');
 }
 
-// An ICO of one 4x4 bitmap image whose header says `header_size` bytes and `bits` a pixel, its
-// rows as a 32-bit icon's. OpenImageIO's ICO reader trusts a bitmap's header: fuzz_picture_file's
-// (2304 header bytes, 1 bit a pixel, 16,778,241 wide, 2048 planes: the seed heap-1bit.ico)
-// corrupted the heap in `strip_headers dump`; headers outside the format are refused before it.
-inline std::string ico_bitmap(std::uint32_t header_size, std::uint16_t bits) {
-  std::string dib = le32(header_size) + le32(4) + le32(8) + le16(1) + le16(bits) + le32(0);
+// An ICO of one `side` x `side` bitmap image whose header says `header_size` bytes and `bits` a
+// pixel, its directory entry `colours`, its palette and rows as its bits take. OpenImageIO's ICO
+// reader trusts both: fuzz_picture_file's header (2304 header bytes, 1 bit a pixel, 16,778,241
+// wide, 2048 planes: the seed heap-1bit.ico) corrupted the heap in `strip_headers dump`, and so
+// did a well-formed 12x12 icon of 4 bits (its mask written past the reader's buffer).
+inline std::string ico_bitmap(std::uint32_t header_size, std::uint16_t bits, std::uint8_t side = 4,
+                              std::uint8_t colours = 0) {
+  std::string dib = le32(header_size) + le32(side) + le32(2u * side) + le16(1) + le16(bits);
   dib.resize(40, '\0');
-  dib += std::string(4 * 4 * 4 + 4 * 4, '\0');
-  return le16(0) + le16(1) + le16(1) + std::string("\x04\x04\x00\x00", 4) + le16(1) + le16(32) +
-         le32(static_cast<std::uint32_t>(dib.size())) + le32(6 + 16) + dib;
+  const std::size_t palette = bits <= 8 ? 4u << bits : 0;
+  dib += std::string(palette + ((side * bits + 31u) / 32 + (side + 31u) / 32) * 4 * side, '\0');
+  return le16(0) + le16(1) + le16(1) + std::string{char(side), char(side), char(colours), 0} +
+         le16(1) + le16(32) + le32(static_cast<std::uint32_t>(dib.size())) + le32(6 + 16) + dib;
 }
 
 // An SGI image's header (big-endian: magic 474, `storage`, `bytes_per_channel`, 3 dimensions,
