@@ -375,7 +375,7 @@ picture("heap-1bit.ico", zlib.decompress(base64.b64decode(
 def rla(colour_type, colour_bits, aux, aux_bits):
     """A 4x4 Wavefront RLA (big-endian; read as RLA by its name alone): 3 colour channels of
     colour_type (0 bytes, 1 words) and aux auxiliary byte channels, each row of each channel one
-    run of 4 samples of a byte per byte of a sample."""
+    run of 4 samples of a byte per byte of a sample (other types than 1 as bytes)."""
     head = struct.pack(">14h", 0, 3, 0, 3, 0, 3, 0, 3, 1, colour_type, 3, 0, aux, -2).ljust(740, b"\0")
     head = head[:658] + struct.pack(">5h", colour_bits, 0, 0, 0, aux_bits) + head[668:]
     row = b"".join(struct.pack(">H", 2 * n) + b"\x03\x40" * n
@@ -383,11 +383,13 @@ def rla(colour_type, colour_bits, aux, aux_bits):
     return head + b"".join(struct.pack(">I", 740 + 16 + y * len(row)) for y in range(4)) + row * 4
 
 
-# And two findings: an auxiliary channel of 0 bits, which the reader rescaled in a loop that never
-# ends, and words of 20 bits, which it rescaled as 32-bit samples past the end of its row.
+# And three findings: an auxiliary channel of 0 bits, which the reader rescaled in a loop that
+# never ends, words of 20 bits, which it rescaled as 32-bit samples past the end of its row, and
+# colour of type 3 (the format's are 0, 1, 2 and 4), on which it aborted (an assertion).
 picture("rgb-4x4.rla", rla(0, 8, 0, 0))
 picture("aux-bits-0.rla", rla(0, 8, 1, 0))
 picture("words-20-bits.rla", rla(1, 20, 0, 0))
+picture("type-3.rla", rla(3, 8, 0, 0))
 
 
 def ico_bitmap(side, bits, colours):

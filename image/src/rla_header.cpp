@@ -9,17 +9,19 @@ namespace l2::png_codec {
 
 namespace {
 
-// A class of channels as the header declares it: where its count, type and bits lie, and
-// whether 0 bits stands for 8.
+// A class of channels as the header declares it: where its count, type and bits lie. The
+// reader takes the colour class's type whatever its count, and its 0 bits for 8.
 struct ChannelClass {
   const char* name;
   std::size_t count_at, type_at, bits_at;
-  bool zero_bits_is_eight;
+  bool colour;
 };
 constexpr ChannelClass kClasses[] = {{"colour", 20, 18, 658, true},
                                      {"matte", 22, 660, 662, false},
                                      {"auxiliary", 24, 664, 666, false}};
-constexpr int kWord = 1;
+// The format's types: 0 byte, 1 word, 2 dword, 4 float. The reader refuses those past 4 and
+// below 0, but 3 reached its assertion (the process aborted).
+constexpr int kWord = 1, kNoType = 3;
 
 int field(std::string_view h, std::size_t at) {
   return static_cast<std::int16_t>(be(h, at, 2));
@@ -31,9 +33,12 @@ Status check_rla(std::string_view h) {
   if (h.size() < kRlaHeaderBytes) return {};
   for (const ChannelClass& c : kClasses) {
     const int count = field(h, c.count_at), type = field(h, c.type_at);
-    const int bits = field(h, c.bits_at) == 0 && c.zero_bits_is_eight ? 8 : field(h, c.bits_at);
+    const int bits = field(h, c.bits_at) == 0 && c.colour ? 8 : field(h, c.bits_at);
     const std::string declares = "cannot read: an RLA file declaring " + std::to_string(count) +
                                  " " + c.name + " channel(s) of " + std::to_string(bits) + " bits";
+    if ((count > 0 || c.colour) && type == kNoType) {
+      return Failure{declares + " of type 3 (the format's are 0, 1, 2 and 4)"};
+    }
     if (count > 0 && bits < 1) return Failure{declares};
     if (count > 0 && type == kWord && bits > 16) return Failure{declares + " in 16-bit words"};
   }

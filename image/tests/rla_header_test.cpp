@@ -31,7 +31,7 @@ TEST(RlaHeader, ChannelsOfBitsTheirTypesHoldPass) {
   put16(h, 658, 16);
   EXPECT_TRUE(check_rla(h).ok());
   put16(h, 24, 1);  // one auxiliary channel of 32 bits in a float
-  put16(h, 664, 3);
+  put16(h, 664, 4);
   put16(h, 666, 32);
   EXPECT_TRUE(check_rla(h).ok());
 }
@@ -63,6 +63,26 @@ TEST(RlaHeader, WordsOfMoreThanSixteenBitsAreRefused) {
   EXPECT_EQ(check_rla(h).reason(),
             "cannot read: an RLA file declaring 3 colour channel(s) of 17 bits in 16-bit words");
   put16(h, 18, 2);  // the same bits in dwords hold
+  EXPECT_TRUE(check_rla(h).ok());
+}
+
+TEST(RlaHeader, TypeThreeIsRefused) {
+  std::string h = rla_header();
+  put16(h, 18, 3);  // colour of type 3: between dword (2) and float (4)
+  EXPECT_EQ(check_rla(h).reason(),
+            "cannot read: an RLA file declaring 3 colour channel(s) of 8 bits of type 3 (the "
+            "format's are 0, 1, 2 and 4)");
+  put16(h, 20, 0);  // the reader takes the colour class's type even without channels
+  EXPECT_FALSE(check_rla(h).ok());
+  h = rla_header();
+  put16(h, 664, 3);  // auxiliary of type 3, but no auxiliary channels
+  EXPECT_TRUE(check_rla(h).ok());
+  put16(h, 24, 1);
+  put16(h, 666, 8);
+  EXPECT_EQ(check_rla(h).reason(),
+            "cannot read: an RLA file declaring 1 auxiliary channel(s) of 8 bits of type 3 (the "
+            "format's are 0, 1, 2 and 4)");
+  put16(h, 664, 4);  // float
   EXPECT_TRUE(check_rla(h).ok());
 }
 

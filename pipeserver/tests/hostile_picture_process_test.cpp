@@ -62,6 +62,7 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"signature.ico", hostile::ico(hostile::damaged_signature_png())},
       {"bits.rla", hostile::rla(0, 8, 1, 0)},
       {"words.rla", hostile::rla(1, 20, 0, 0)},
+      {"type.rla", hostile::rla(3, 8, 0, 0)},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
       // A format no check bounds, under its own name and another's.
       {"wide.j2k", hostile::jpeg2000(60000)},

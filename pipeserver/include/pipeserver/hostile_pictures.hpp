@@ -386,9 +386,10 @@ inline std::string damaged_signature_png() {
 }
 
 // A 4x4 Wavefront RLA file (no signature: read as RLA by its name) of 3 colour channels of
-// `type` (0 bytes, 1 words) and `bits`, and `aux` auxiliary byte channels of `aux_bits`, each
-// row of each channel one run of 0x40 a byte of its samples. 0 auxiliary bits hung OpenImageIO's
-// reader (found by fuzz_picture_file); 20-bit words had it write past its row buffer.
+// `type` (0 bytes, 1 words, other types as bytes) and `bits`, and `aux` auxiliary byte channels
+// of `aux_bits`, each row of each channel one run of 0x40 a byte of its samples. 0 auxiliary
+// bits hung OpenImageIO's reader and type 3 aborted it (found by fuzz_picture_file); 20-bit
+// words had it write past its row buffer.
 inline std::string rla(int type, int bits, int aux, int aux_bits) {
   const auto be16 = [](int v) {
     return big_endian(static_cast<std::uint32_t>(v) << 16).substr(0, 2);
