@@ -1,12 +1,12 @@
 // What a picture file's header declares, checked before any reader trusts it
-// (image/declared_size.hpp, tiff_header.hpp, exr_header.hpp, sgi_header.hpp, rla_header.hpp),
-// on arbitrary bytes: the file's first bytes through check_header, check_tiff (a TIFF's
-// directories, read where they point), check_exr (an OpenEXR file's attributes), check_sgi_rle
-// (an SGI image's RLE tables and rows) and check_rla (an RLA file's channel classes) at a size
-// of the input's own choosing, numbers taken from the input as what a reader declared through
-// check_declared, and the same first bytes through format_by_signature
-// (image/picture_formats.hpp). Never a crash or an overflow (UBSan), and every refusal one line
-// saying "cannot read: ".
+// (image/declared_size.hpp, tiff_header.hpp, exr_header.hpp, sgi_header.hpp, fits_header.hpp,
+// rla_header.hpp), on arbitrary bytes: the file's first bytes through check_header, check_tiff
+// (a TIFF's directories, read where they point), check_exr (an OpenEXR file's attributes),
+// check_sgi_rle (an SGI image's RLE tables and rows), check_fits (a FITS file's image headers)
+// and check_rla (an RLA file's channel classes) at a size of the input's own choosing, numbers
+// taken from the input as what a reader declared through check_declared, and the same first
+// bytes through format_by_signature (image/picture_formats.hpp). Never a crash or an overflow
+// (UBSan), and every refusal one line saying "cannot read: ".
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +16,7 @@
 #include "fuzz_check.hpp"
 #include "image/declared_size.hpp"
 #include "image/exr_header.hpp"
+#include "image/fits_header.hpp"
 #include "image/picture_formats.hpp"
 #include "image/rla_header.hpp"
 #include "image/sgi_header.hpp"
@@ -61,6 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_refusal(l2::png_codec::check_tiff(read, file_size), "a TIFF refusal is one line");
   check_refusal(l2::png_codec::check_exr(read, file_size), "an OpenEXR refusal is one line");
   check_refusal(l2::png_codec::check_sgi_rle(read, file_size), "an SGI refusal is one line");
+  check_refusal(l2::png_codec::check_fits(read, file_size), "a FITS refusal is one line");
   check_refusal(l2::png_codec::check_rla(header), "an RLA refusal is one line");
   // A signature names a format or none; one not read here is refused in one line.
   const std::string format = l2::png_codec::format_by_signature(header);

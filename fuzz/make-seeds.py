@@ -390,6 +390,13 @@ picture("rgb-4x4.rla", rla(0, 8, 0, 0))
 picture("aux-bits-0.rla", rla(0, 8, 1, 0))
 picture("words-20-bits.rla", rla(1, 20, 0, 0))
 picture("type-3.rla", rla(3, 8, 0, 0))
+# And one as found (zlib-compressed here): a next image at byte -1, where the reader's failed
+# seek left it reading a header from wherever the file stood; the picture scene hung. The
+# hostile-process tests read it from here.
+picture("next-offset-garbage.rla", zlib.decompress(base64.b64decode(
+    "eNpjYGBgZkDGjEAIYjH8/8dAH8DIoMDQyqCMDh7e+f9/x6evT7mQ1ZakMhSXqGTmpTMIA3lGBkZmVoZGVgZmXFxwZYy3IPT/"
+    "AQQMAw7EhqjZ2IAyCWpl5WAp5fv/mfD4YMphYGAqAuIKIK4D4hYg7gLiCUA8DYjnADHDIgYGNgZcmA1sKpwPNJTRBBTRRUw4"
+    "jJ0ENXYRAz5jseAWBkYmZoYWAUEh4YFMQbYQioXZgdkBQgIADeKtLw==")))
 
 
 def ico_bitmap(side, bits, colours):

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "byte_fields.hpp"
+#include "image/fits_header.hpp"
 #include "image/ico_header.hpp"
 #include "media_oiio.hpp"
 
@@ -110,6 +111,9 @@ Result<HeaderFacts> check_before_open(const PictureBytes& bytes) {
   }
   if (const Status sgi = check_sgi_rle(bytes.read, bytes.size); !sgi.ok()) {
     return Failure{sgi.reason()};
+  }
+  if (const Status fits = check_fits(bytes.read, bytes.size); !fits.ok()) {
+    return Failure{fits.reason()};
   }
   return facts;
 }

@@ -26,7 +26,7 @@ PictureBytes memory_bytes(const std::uint8_t* bytes, std::size_t size);
 // What the first bytes declare (check_header), a TIFF's directories (check_tiff) and an ICO's
 // PNG images (their headers, the first one's rows: libpng, not OpenImageIO's ICO reader), an
 // OpenEXR file's header attributes (check_exr), an SGI image's RLE tables and rows
-// (check_sgi_rle).
+// (check_sgi_rle), a FITS file's image headers (check_fits).
 Result<HeaderFacts> check_before_open(const PictureBytes& bytes);
 
 // What the opened reader declares (check_declared). `cached`: the image cache will read it, so a

@@ -31,6 +31,12 @@ int field(std::string_view h, std::size_t at) {
 
 Status check_rla(std::string_view h) {
   if (h.size() < kRlaHeaderBytes) return {};
+  // The offset of a next image, which the image cache looks for as it opens the file: the reader
+  // seeks there, and where the seek fails reads a header from wherever the file stands.
+  if (const auto next = static_cast<std::int32_t>(be(h, 736, 4)); next != 0) {
+    return Failure{"cannot read: an RLA file declaring a next image at byte " +
+                   std::to_string(next) + "; RLA files of one image are read here"};
+  }
   for (const ChannelClass& c : kClasses) {
     const int count = field(h, c.count_at), type = field(h, c.type_at);
     const int bits = field(h, c.bits_at) == 0 && c.colour ? 8 : field(h, c.bits_at);

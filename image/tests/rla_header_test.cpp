@@ -86,6 +86,18 @@ TEST(RlaHeader, TypeThreeIsRefused) {
   EXPECT_TRUE(check_rla(h).ok());
 }
 
+TEST(RlaHeader, AFileOfMoreThanOneImageIsRefused) {
+  std::string h = rla_header();
+  put16(h, 736, 0xFFFF);  // NextOffset -1
+  put16(h, 738, 0xFFFF);
+  EXPECT_EQ(check_rla(h).reason(),
+            "cannot read: an RLA file declaring a next image at byte -1; RLA files of one image "
+            "are read here");
+  put16(h, 736, 0);
+  put16(h, 738, 1000);
+  EXPECT_FALSE(check_rla(h).ok());
+}
+
 TEST(RlaHeader, AHeaderCutShortIsTheReadersToRefuse) {
   std::string h = rla_header();
   put16(h, 24, 1);  // refused whole...
