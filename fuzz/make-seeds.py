@@ -330,6 +330,12 @@ picture("depth-0.fits", (fits_card("SIMPLE", "T") + fits_card("BITPIX", "8") + f
         .ljust(2880, b" ") + bytes(range(36)).ljust(122, b"\0"))
 picture("alpha-alone.dds", dds(8, 8, 1)[:80] + struct.pack("<I", 0xFFFDFFC2) + dds(8, 8, 1)[84:108]
         + struct.pack("<I", 0x1000) + bytes(16) + bytes(range(84)))
+# A finding kept as found (zlib-compressed here): an uncompressed 20x24 DDS flagged ALPHAPIXELS
+# alone whose bit count is 4227792896, for which OpenImageIO's reader asked 2 GB for a row (it
+# checks the count only with other flags). The hostile-process tests read it from here.
+picture("bits-a-pixel.dds", zlib.decompress(base64.b64decode(
+    "eNpzcQlWqGFgYOAXYNKTANIiQCyxjAEMmBiwgUsMuIACEDPCtf7/zcDyn4GBBZsFGppa2jq6XMFA+f8g5YpgqqRSvSA1Na+M"
+    "gUEAyFOHKQIALHQRrg==")))
 # A finding kept as a seed: a TIFF of 24x2049 pixels whose RowsPerStrip says 855,640,105 rows;
 # OpenImageIO sized its read buffer by it (20 GB).
 picture("tall-strips.tif", bytes.fromhex(

@@ -95,6 +95,7 @@ TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
   dds[16] = 8;
   dds[28] = 1;
   dds[80] = 0x40;  // RGB: red, green and blue masks
+  dds[88] = 24;    // bits a pixel
   dds[94] = '\xff';
   dds[97] = '\xff';
   dds[100] = '\xff';
@@ -136,6 +137,31 @@ TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
             "unpack");
   dds[80] = 0x04;
   dds[82] = 0;
+  EXPECT_TRUE(check_header(dds, 400).ok());
+}
+
+// Its bytes a pixel come from the bit count: fuzz_picture_file's 164-byte DDS, ALPHAPIXELS alone
+// and a count of 4227792896 (0xFBFF0000), had OpenImageIO's reader ask for 2 GB.
+TEST(DeclaredSize, AnUncompressedDdsOfBitsNoPixelHasIsRefused) {
+  std::string dds(128, '\0');
+  dds.replace(0, 4, "DDS ");
+  dds[12] = 24;  // 20x24, one level
+  dds[16] = 20;
+  dds[28] = 1;
+  dds[80] = 0x01;  // ALPHAPIXELS alone: red, green, blue and alpha masks
+  for (const int at : {94, 97, 100, 107}) dds[at] = '\xff';
+  for (const int bits : {8, 16, 24, 32}) {
+    dds[88] = static_cast<char>(bits);
+    EXPECT_TRUE(check_header(dds, 400).ok()) << bits;
+  }
+  dds.replace(88, 4, std::string("\x00\x00\xff\xfb", 4));
+  EXPECT_EQ(check_header(dds, 400).reason(),
+            "cannot read: an uncompressed DDS of 4227792896 bits a pixel (the format has 8, 16, "
+            "24 or 32)");
+  dds.replace(88, 4, std::string(4, '\0'));
+  EXPECT_FALSE(check_header(dds, 400).ok());
+  dds[84] = 4;  // FOURCC: compressed, its pixels' size from the code, not the count
+  dds[80] = 0x05;
   EXPECT_TRUE(check_header(dds, 400).ok());
 }
 

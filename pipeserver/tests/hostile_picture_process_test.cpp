@@ -79,6 +79,7 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"type.rla", hostile::rla(3, 8, 0, 0)},
       {"next.rla", hostile::rla(0, 8, 0, 0).replace(736, 4, "\xFF\xFF\xFF\xFF")},
       {"garbage.rla", seed("next-offset-garbage.rla")},
+      {"bits.dds", seed("bits-a-pixel.dds")},
       {"naxis.fits", hostile::fits(9, 4).replace(170, 20, std::string(20, '7'))},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
       // A format no check bounds, under its own name and another's.
@@ -103,7 +104,8 @@ TEST_F(HostileProcess, WholeReadsOfEveryFormatAreRefusedInOneLine) {
         name == "pages.tif" || name == "cut.ico" || name == "no-green.dds" ||
         name == "tables.sgi" || name == "alpha.dds" || name == "axes.fits" ||
         name.find(".rla") != std::string::npos || name == "mask.ico" || name == "palette.ico" ||
-        name == "naxis.fits" || name.find("j2k") != std::string::npos || name.find("jpeg2000") == 0)
+        name == "naxis.fits" || name == "bits.dds" || name.find("j2k") != std::string::npos ||
+        name.find("jpeg2000") == 0)
       files.emplace_back(name, bytes);
   }
   files.insert(files.end(),
