@@ -350,6 +350,12 @@ picture("tall-strips-width-0.tif", bytes.fromhex(
     "03000100000003000000060103000100000002000000110104000100000079fffffa0001000000010800000200001601"
     "0400010000002908003300000000000000000000000000000000001b0022222222222222222222222222222222000000"
     "020000000000006a7065670000"))
+# And one as found (zlib-compressed here): its directory's next offset cut off by the file's end,
+# which hid the directory from the checks while libtiff read it: strips of 50,331,689 rows asked
+# for 1.2 GB in the picture scene. The hostile-process tests read it from here.
+picture("strips-no-next-offset.tif", zlib.decompress(base64.b64decode(
+    "eNrz9NRi4GBgYOBkYGBkYWAEsiSAmBHKZgRKMTEwg9kgVcyMEDYzELNB2UxALAhVX/n//y/ReIQaMai4JogrBmQwZBWkpjMw"
+    "AAAgLAcp")))
 # RLE storage: tables of each row's offset and length (4x4, three channels: 12 rows), then each
 # row as one run of 4 samples copied and an end. And a finding: one row of one channel whose
 # tables (43283 x 0 entries) are empty, on which the reader crashed at the first row.

@@ -209,6 +209,19 @@ TEST(TiffHeader, StripsLargerThanTheReaderHoldsAreRefused) {
   EXPECT_FALSE(strips(8, 3, 22369622).ok());
 }
 
+// A directory whose next offset the file's end cuts off is still read, as libtiff reads it
+// (fuzz_picture_file's 118-byte TIFF: its strips of 50,331,689 rows had the reader ask 1.2 GB).
+TEST(TiffHeader, ADirectoryWithoutItsNextOffsetIsChecked) {
+  std::string f = "II" + num(42, 2, false) + num(8, 4, false);
+  directory(f, {{256, 4, 1, 24}, {257, 4, 1, 2049}, {278, 4, 1, 50331689}}, 0, false, false);
+  f.resize(f.size() - 4);  // no next directory's offset
+  EXPECT_EQ(check_tiff(reader(f), f.size()).reason(),
+            "cannot read: strips of 50331689 rows of 24 pixels (1153 MiB each), more than the "
+            "512 MiB its reader may hold at once; save it with fewer rows a strip");
+  f.resize(f.size() - 1);  // its last entry cut short: libtiff cannot read the directory
+  EXPECT_TRUE(check_tiff(reader(f), f.size()).ok());
+}
+
 // A second width entry of type 0 (no number libtiff reads), its 524,544 values past the file,
 // had the walk take the width as 0 and skip the directory's checks (fuzz_picture_file); a tag
 // given twice counts at its larger value.

@@ -80,6 +80,7 @@ std::vector<std::pair<std::string, std::string>> every_format() {
       {"next.rla", hostile::rla(0, 8, 0, 0).replace(736, 4, "\xFF\xFF\xFF\xFF")},
       {"garbage.rla", seed("next-offset-garbage.rla")},
       {"bits.dds", seed("bits-a-pixel.dds")},
+      {"cut-strips.tif", seed("strips-no-next-offset.tif")},
       {"naxis.fits", hostile::fits(9, 4).replace(170, 20, std::string(20, '7'))},
       {"whole.ico", hostile::ico(hostile::png(16384, 16384, false, std::string(100000, '\0')))},
       // A format no check bounds, under its own name and another's.
