@@ -9,8 +9,20 @@ export function launch() {
   });
 }
 
+// A state that is no JSON says what came instead (status and body), so that a failure names it
+// (once a CI run got an empty body here).
 export const state = (page) =>
-  page.evaluate(async () => (await fetch(`/api/state${location.search}`)).json());
+  page.evaluate(async () => {
+    const r = await fetch(`/api/state${location.search}`);
+    const text = await r.text();
+    try {
+      return JSON.parse(text);
+    } catch (e) {
+      throw new Error(`/api/state answered ${r.status} with ${text.length} bytes: ` +
+                      `${JSON.stringify(text.slice(0, 200))}; headers ` +
+                      JSON.stringify([...r.headers]));
+    }
+  });
 
 export const windowOf = (s, id) => s.windows.shown.find((w) => w.id === id);
 
