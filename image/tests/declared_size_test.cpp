@@ -86,16 +86,22 @@ TEST(DeclaredSize, AnyGifVersionHasItsScreenChecked) {
   EXPECT_TRUE(check_header(gif("89a", 8192), 1000000).ok());  // 256 MiB
 }
 
+// A DDS header of `width` x `height`, one level, its pixel format's `flags`; no masks, no bits.
+std::string dds_header(char width, char height, char flags) {
+  std::string dds(128, '\0');
+  dds.replace(0, 4, "DDS ");
+  dds[12] = height;
+  dds[16] = width;
+  dds[28] = 1;
+  dds[80] = flags;
+  return dds;
+}
+
 // An uncompressed DDS's channels are unpacked by bit masks: OpenImageIO's reader shifts a mask
 // of zero for ever (fuzz_picture_file's 194-byte 8x8 DDS).
 TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
-  std::string dds(128, '\0');
-  dds.replace(0, 4, "DDS ");
-  dds[12] = 8;  // 8x8, one level
-  dds[16] = 8;
-  dds[28] = 1;
-  dds[80] = 0x40;  // RGB: red, green and blue masks
-  dds[88] = 24;    // bits a pixel
+  std::string dds = dds_header(8, 8, 0x40);  // RGB: red, green and blue masks
+  dds[88] = 24;                              // bits a pixel
   dds[94] = '\xff';
   dds[97] = '\xff';
   dds[100] = '\xff';
@@ -143,12 +149,7 @@ TEST(DeclaredSize, ADdsChannelMaskOfZeroIsRefused) {
 // Its bytes a pixel come from the bit count: fuzz_picture_file's 164-byte DDS, ALPHAPIXELS alone
 // and a count of 4227792896 (0xFBFF0000), had OpenImageIO's reader ask for 2 GB.
 TEST(DeclaredSize, AnUncompressedDdsOfBitsNoPixelHasIsRefused) {
-  std::string dds(128, '\0');
-  dds.replace(0, 4, "DDS ");
-  dds[12] = 24;  // 20x24, one level
-  dds[16] = 20;
-  dds[28] = 1;
-  dds[80] = 0x01;  // ALPHAPIXELS alone: red, green, blue and alpha masks
+  std::string dds = dds_header(20, 24, 0x01);  // ALPHAPIXELS alone: all four masks
   for (const int at : {94, 97, 100, 107}) dds[at] = '\xff';
   for (const int bits : {8, 16, 24, 32}) {
     dds[88] = static_cast<char>(bits);
