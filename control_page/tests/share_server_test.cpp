@@ -92,6 +92,42 @@ TEST(ShareServer, AClosedShareTakesNoFrames) {
   EXPECT_TRUE(s.server.shares()->shares(ShareInbox::Clock::now()).empty());
 }
 
+// A frame refused before its body is read (a share stopped while a frame was on its way, a
+// missing token or window) leaves the connection ready for the client's next request: the
+// body is read and dropped, not taken for that request, which a browser then saw answered 400
+// with nothing (its next /api/state not JSON).
+TEST(ShareServer, ARefusedFrameLeavesItsConnectionReadyForTheNextRequest) {
+  SharedServer s;
+  s.client.set_keep_alive(true);
+  const std::string good = test::two_halves(64, 32);
+  const std::string token = std::string("token=") + kShareToken;
+  for (const auto& [query, status] : std::vector<std::pair<std::string, int>>{
+           {"window=13&" + token, 404}, {"window=12", 403}, {token, 400}}) {
+    const auto refused = s.client.Post("/api/share/frame?" + query, good, "image/jpeg");
+    ASSERT_TRUE(refused) << query;
+    EXPECT_EQ(refused->status, status) << query;
+    const auto next = s.client.Get("/api/state");
+    ASSERT_TRUE(next) << query;
+    EXPECT_EQ(next->status, 200) << query << ": " << next->body;
+    EXPECT_EQ(next->body, "{}") << query;
+  }
+  // Sent in chunks, without a length: refused (411), its chunks dropped.
+  const auto chunked = s.client.Post(
+      std::string("/api/share/frame?window=12&token=") + kShareToken,
+      [&](std::size_t, httplib::DataSink& sink) {
+        sink.write(good.data(), good.size());
+        sink.done();
+        return true;
+      },
+      "image/jpeg");
+  ASSERT_TRUE(chunked);
+  EXPECT_EQ(chunked->status, 411);
+  const auto next = s.client.Get("/api/state");
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->status, 200) << next->body;
+  EXPECT_EQ(s.frame(good).first, 200);
+}
+
 // A share request reaches the run as one line; a body on another route is refused unread.
 TEST(ShareServer, AShareRequestIsALineForTheRun) {
   SharedServer s;
