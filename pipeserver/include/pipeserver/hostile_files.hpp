@@ -1,7 +1,7 @@
 // Model and picture files made to hurt a reader that trusts them: nested past any real scene,
 // declaring sizes the file cannot hold, cut short, or not what their names say. Each is small;
 // what it claims is not. Written by the tests that need them (unit and process tests). The
-// pictures are in hostile_pictures.hpp, the models here.
+// pictures are in hostile_pictures.hpp (and hostile_png.hpp), the models here.
 #pragma once
 
 #include <algorithm>
