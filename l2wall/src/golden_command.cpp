@@ -6,9 +6,11 @@
 #include <iostream>
 #include <memory>
 
+#include "base/stop_signals.hpp"
 #include "command_line/checks.hpp"
 #include "command_line/program_paths.hpp"
 #include "golden/golden_check.hpp"
+#include "golden/golden_rendered.hpp"
 #include "golden/golden_update.hpp"
 
 namespace l2 {
@@ -38,11 +40,18 @@ void add_path_options(CLI::App& cmd, GoldenPaths& paths, std::vector<std::string
 }
 
 // Runs `body` and ends the parse with its exit code; errors are one line on stderr, exit 2.
+// SIGINT and SIGTERM are recorded, not taken at once: they end the body between entries, or
+// once an entry's commands ended (its `l2wall run` removes its shared memory as it ends).
 template <class Body>
 [[noreturn]] void finish(Body body) {
+  catch_stop_signals();
   int code = 2;
   try {
     code = body();
+  } catch (const GoldenStopped& e) {
+    // Its commands ended (golden_rendered.hpp): the exit status says the signal, as a shell's.
+    std::fprintf(stderr, "l2wall golden: %s\n", e.what());
+    end_by_stop_signal();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "l2wall golden: %s\n", e.what());
   }

@@ -1,10 +1,14 @@
 // `l2wall golden` on a rendered entry, with real pipeserver processes: update makes a new
 // entry's images and records this Mesa; images recorded as made by another Mesa are compared
-// within the tolerance, and the output says so; with this Mesa the same pixel fails. A small
-// wall of its own (two pipeservers, one 320x240 display, DVI path only) keeps the three live
-// runs short; the repository's rendered entries, on both paths, run in the CTest
-// l2wall_golden_check.
+// within the tolerance, and the output says so; with this Mesa the same pixel fails; stopped by
+// SIGTERM, it ends its live run first. A small wall of its own (two pipeservers, one 320x240
+// display, DVI path only) keeps the live runs short; the repository's rendered entries, on both
+// paths, run in the CTest l2wall_golden_check.
+#include <signal.h>
+
+#include <algorithm>
 #include <fstream>
+#include <thread>
 
 #include "golden/golden_manifest.hpp"
 #include "golden_cli.hpp"
@@ -133,6 +137,72 @@ TEST_F(GoldenCli, StampsMovedByAReTilingAreLeftOutAndSaidSo) {
   EXPECT_NE(failed.output.find("small-bunny display 0: emulator vs golden image: 1 pixel differs"),
             std::string::npos)
       << failed.output;
+}
+
+// A process whose command line holds every one of `words` (each a whole argument) and `part`
+// somewhere.
+pid_t process_with(const std::vector<std::string>& words, const std::string& part = "") {
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string n = e.path().filename().string();
+    if (n.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(e.path() / "cmdline", std::ios::binary);
+    const std::string cmdline((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+    if (cmdline.find(part) != std::string::npos &&
+        std::all_of(words.begin(), words.end(), [&](const std::string& w) {
+          return cmdline.find(std::string(1, '\0') + w + '\0') != std::string::npos;
+        }))
+      return std::stoi(n);
+  }
+  return 0;
+}
+
+bool alive(pid_t pid) {
+  std::ifstream in(fmt::format("/proc/{}/stat", pid));
+  std::string stat;
+  std::getline(in, stat);
+  const std::size_t end = stat.rfind(')');
+  return end != std::string::npos && end + 2 < stat.size() && stat[end + 2] != 'Z';
+}
+
+// `l2wall golden` stopped (SIGTERM to it alone, as `kill` sends it) while its entry's live run
+// runs: it ends that run first, which ends its pipeservers and removes its shared memory, then
+// says it was stopped and exits as by the signal. The live run is held (SIGSTOP) while golden is
+// signalled, so the run is surely under way and still running when golden hears it.
+TEST_F(GoldenCli, AStoppedGoldenEndsItsLiveRunFirst) {
+  const fs::path root = dir_ / "root";
+  std::string where = small_entry(root, goldens(), out());
+  std::string entry = kSmallEntry;
+  entry.replace(entry.find("frame = 1"), 9, "frame = 100000");
+  std::ofstream(goldens() / "manifest.toml") << entry;
+  ChildProcess golden({L2WALL_PATH, "golden", "update", "--goldens", goldens().string(), "--root",
+                       root.string(), "--out", out().string()},
+                      {}, Capture{.out = true, .err = true});
+  pid_t run = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline && !golden.poll()) {
+    if (run == 0) run = process_with({"run", "--no-progress"}, out().string());
+    if (run != 0 && fs::exists(fmt::format("/dev/shm/l2-{}-in1", run))) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_NE(run, 0) << "no live run seen";
+  ASSERT_TRUE(fs::exists(fmt::format("/dev/shm/l2-{}-in1", run))) << "its links never opened";
+  ASSERT_EQ(kill(run, SIGSTOP), 0);
+  ASSERT_EQ(kill(golden.pid(), SIGTERM), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(kill(run, SIGCONT), 0);
+  const std::optional<ExitStatus> ended = golden.wait_for(std::chrono::seconds(60));
+  ASSERT_TRUE(ended) << "l2wall golden did not end within 60 s of SIGTERM";
+  EXPECT_FALSE(alive(run)) << "its live run outlived it";
+  EXPECT_EQ(ended->signal, SIGTERM) << ended->describe();
+  const Finished said = golden.finish(std::chrono::seconds(5));
+  EXPECT_NE(said.err.find("l2wall golden: stopped by signal 15 (Terminated)\n"), std::string::npos)
+      << said.err << said.out;
+  for (int i = 0; i < 2; ++i) {
+    const std::string link = fmt::format("/l2-{}-in{}", run, i);
+    EXPECT_EQ(process_with({"--link", link}), 0) << "pipeserver " << i << " left";
+    EXPECT_FALSE(fs::exists("/dev/shm" + link)) << link << " left";
+  }
 }
 
 }  // namespace

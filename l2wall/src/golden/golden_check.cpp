@@ -191,6 +191,9 @@ EntryResult check_entry(const GoldenEntry& entry, const CheckOptions& o, std::op
                                          "-reference", "-reference-diff"};
       check.compare(against_reference, shown.ids, shown.reference, shown.emulator, entry.tolerance);
     }
+  } catch (const GoldenStopped&) {
+    out << "stopped\n";
+    throw;  // not the entry's failure: the command's end (golden_command.cpp)
   } catch (const std::exception& e) {
     check.could_not_run(e.what());
   }
@@ -225,6 +228,7 @@ int run_golden_check(const CheckOptions& o, std::ostream& out) {
   bool routing_failed = false;
   std::optional<GlInfo> gl;
   for (std::size_t i = 0; i < entries.size(); ++i) {
+    throw_if_stopped();
     const GoldenEntry& e = *entries[i];
     // One line per entry, finished when its check is; what the check found follows it.
     out << fmt::format("[{}/{}] {} ... ", i + 1, entries.size(),

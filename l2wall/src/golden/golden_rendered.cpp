@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
 #include <fstream>
 
 #include "base/child_process.hpp"
+#include "base/stop_signals.hpp"
 #include "image/folders.hpp"
 #include "image/png_io.hpp"
 #include "l2wall/colour_stage.hpp"
@@ -22,6 +24,9 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
   return lines;
 }
 
+// How long a command stopped by a signal has to end its own way before it is killed.
+constexpr std::chrono::seconds kStopGrace{30};
+
 // A command as a child process with its output in `log`.
 struct LoggedCommand {
   std::string what;  // "l2wall run"
@@ -33,9 +38,21 @@ struct LoggedCommand {
         log(std::move(log_file)),
         child(shell_redirect(args, log)) {}
 
-  // Throws when it failed or overstays, with the last line it wrote (usually the reason).
+  // Throws when it failed or overstays, with the last line it wrote (usually the reason), or
+  // when a stop signal came (GoldenStopped), once the child has ended: an `l2wall run` ends its
+  // run on SIGTERM as on Ctrl-C, its pipeservers ended and their links removed, which takes
+  // it a few seconds; killed at once, or left running as this process ended, it could not.
   void finish(std::chrono::seconds timeout) {
-    const auto status = child.wait_for(timeout);
+    using namespace std::chrono_literals;
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    std::optional<ExitStatus> status;
+    while (!status && std::chrono::steady_clock::now() < deadline) {
+      if (const int signal = stop_signal_received()) {
+        child.terminate(kStopGrace);
+        throw GoldenStopped(signal);
+      }
+      status = child.wait_for(50ms);
+    }
     if (!status) {
       child.terminate();
       throw std::runtime_error(fmt::format("{} did not finish within {} s (output: {})", what,
@@ -59,6 +76,13 @@ struct LoggedCommand {
 };
 
 }  // namespace
+
+GoldenStopped::GoldenStopped(int signal)
+    : std::runtime_error(fmt::format("stopped by signal {} ({})", signal, strsignal(signal))) {}
+
+void throw_if_stopped() {
+  if (const int signal = stop_signal_received()) throw GoldenStopped(signal);
+}
 
 namespace {
 

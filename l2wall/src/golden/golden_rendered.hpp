@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,15 @@
 #include "tilelayout/tile_layout.hpp"
 
 namespace l2 {
+
+// `l2wall golden` stopped by SIGINT or SIGTERM (it records them: golden_command.cpp): thrown
+// between entries, or once the commands of a rendered entry have ended; what `what()` says is
+// "stopped by signal 15 (Terminated)".
+struct GoldenStopped : std::runtime_error {
+  explicit GoldenStopped(int signal);
+};
+// Throws GoldenStopped once a stop signal came.
+void throw_if_stopped();
 
 struct RenderedRun {
   std::string l2wall;              // the executable whose `run` subcommand renders the frame

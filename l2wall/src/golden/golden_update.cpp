@@ -113,6 +113,7 @@ int run_golden_update(const UpdateOptions& o, std::ostream& out) {
   std::vector<Pending> pending;
   std::vector<std::string> problems, refusals;
   for (std::size_t n = 0; n < selected.size(); ++n) {
+    throw_if_stopped();
     const GoldenEntry& e = *selected[n];
     out << fmt::format("[{}/{}] {} ... ", n + 1, selected.size(), e.name) << std::flush;
     if (e.kind == GoldenKind::Rendered && !gl)
@@ -121,6 +122,9 @@ int run_golden_update(const UpdateOptions& o, std::ostream& out) {
     EntryDisplays shown;
     try {
       shown = produce_entry(e, o.paths, o.tools, o.out / e.name / "run");
+    } catch (const GoldenStopped&) {
+      out << "stopped\n";
+      throw;  // not the entry's failure: the command's end (golden_command.cpp)
     } catch (const std::exception& ex) {
       out << "FAILED\n";
       problems.push_back(fmt::format("{}: {}", e.name, ex.what()));
