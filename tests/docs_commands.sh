@@ -4,7 +4,9 @@
 # a table of README.md, the parts' READMEs and docs/*.md (tests/docs_commands.py finds them) is
 # run from a scratch folder, its placeholders (WALL, DIR, N, model.glb, /dev/pts/N...) replaced
 # by real values there, `l2wall run` at most 3 frames. It must not exit 2 or print a usage
-# error ("Run with --help"): what every program does with a command line it does not take. A
+# error ("Run with --help"): what every program does with a command line it does not take. It
+# must not crash (end by SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL or SIGTRAP), stopped or not,
+# nor leave shared memory behind (its own or a child's /dev/shm/l2-PID-*). A
 # usage error comes at once, so a command is stopped, accepted, once it has used 0.1 s of CPU
 # time (ten times what a usage error takes) or run $deadline s: it is past its command line.
 # A command mpirun starts runs alone, where l2wall stops at once saying mpirun did not start
@@ -90,9 +92,11 @@ exec {pause}<>pause.fifo  # read -t on it: a pause without starting a process
 run_until_accepted() {
   local name=$1 pid ticks polls=0 limit=$((deadline * 20)) child task stat more children
   shift
+  seen=()
   setsid env -u DISPLAY -u WAYLAND_DISPLAY -u OMPI_COMM_WORLD_RANK -u OMPI_COMM_WORLD_SIZE \
     "$@" </dev/null >"$name.out" 2>"$name.err" {pause}<&- &
   pid=$!
+  pid_run=$pid
   stopped=""
   # Polled with bash's own reads only: a loaded machine is slow to start processes.
   while kill -0 "$pid" 2>/dev/null; do
@@ -101,6 +105,7 @@ run_until_accepted() {
       read -r -a more <"$task" 2>/dev/null && children+=("${more[@]}")
     done
     ticks=0
+    for child in "${children[@]}"; do seen[$child]=1; done
     for child in "$pid" "${children[@]}"; do
       read -r stat <"/proc/$child/stat" 2>/dev/null || continue
       read -r -a stat <<<"${stat##*) }"  # after the ")" that ends the name: state, ppid, ...
@@ -122,9 +127,9 @@ run_until_accepted() {
       read -r -t 0.05 -u "$pause" _
     done
     if kill -KILL -- -"$pid" 2>/dev/null; then
-      local left=(/dev/shm/l2-"$pid"-*)
-      [[ -e ${left[0]} ]] && rm -f "${left[@]}" &&
-        echo "     (killed 30 s after SIGTERM: removed ${#left[@]} shared-memory segments it left)"
+      left_by "$pid"
+      ((${#left[@]} == 0)) || { rm -f "${left[@]}" &&
+        echo "     (killed 30 s after SIGTERM: removed ${#left[@]} shared-memory segments it left)"; }
     fi
   fi
   wait "$pid"
@@ -132,9 +137,20 @@ run_until_accepted() {
   kill -KILL -- -"$pid" 2>/dev/null  # what the group left behind
 }
 
+# left_by PID: sets `left` to the shared-memory segments (DVI links, named by the process that
+# made them: /dev/shm/l2-PID-*) of PID and of the children seen while it ran (an `l2wall golden`
+# runs `l2wall run` as a child).
+left_by() {
+  local p segment
+  left=()
+  for p in "$1" "${!seen[@]}"; do
+    for segment in /dev/shm/l2-"$p"-*; do [[ -e $segment ]] && left+=("$segment"); done
+  done
+}
+
 # listed ENTRIES... -- TEXT: whether TEXT starts as an entry of a list above does; `why` is
 # then the entry's reason. (No subshells here or below: a loaded machine is slow to start them.)
-declare -A used
+declare -A used seen
 listed() {
   local text=${*: -1} entry
   for entry in "${@:1:$#-2}"; do
@@ -197,7 +213,16 @@ while IFS=$'\t' read -r where kind mode words; do
   run_until_accepted "run-$runs" "${argv[@]}"
   took="$(((${EPOCHREALTIME/./} - begun) / 1000)) ms"
   err=$(head -c 300 "run-$runs.err")
-  if [[ $status -eq 2 || $err == *"Run with --help"* ]]; then
+  left_by "$pid_run"
+  if ((${#left[@]} > 0)); then
+    echo "FAIL $where: $text: left shared memory behind (${left[*]})${stopped:+; it was stopped $stopped}"
+    rm -f "${left[@]}"
+    failed=1
+  fi
+  if ((status > 128)) && [[ " 132 133 134 135 136 139 " == *" $status "* ]]; then
+    echo "FAIL $where: $text: crashed (exit $status: signal $((status - 128)))${stopped:+, stopped $stopped}: ${err%%$'\n'*}"
+    failed=1
+  elif [[ $status -eq 2 || $err == *"Run with --help"* ]]; then
     if [[ $kind == table && $err == *required* ]]; then
       echo "part $where: $text: a fragment (${err%%$'\n'*}): its words checked below"
       printf '%s\t%s\n' "$where" "$words" >>words.tsv
