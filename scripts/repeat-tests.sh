@@ -6,7 +6,7 @@
 # what the phase left behind (new since the phase began, named with round and phase): Open MPI
 # session folders (/tmp/ompi.<host>.<uid>, the MPI tests' own bases /tmp/l2mpi.*, and the job
 # folders in them) and our shared memory (/dev/shm/l2-*); a passing test must leave neither.
-# The phase's log is then kept too.
+# The phase's logs are then kept too (ctest's, and every test's whole output).
 #
 # --load  loads the machine as CI does, for the whole run: beside the tests, a compile at the
 #         idle scheduling priority (SCHED_IDLE, as scripts/test.sh's builds beside the tests) —
@@ -75,8 +75,14 @@ leftover_paths() {
   find /tmp -maxdepth 2 \( -path '/tmp/ompi.*' -o -path '/tmp/l2mpi.*' \) 2>/dev/null || true
   find /dev/shm -maxdepth 1 -name 'l2-*' 2>/dev/null || true
 }
+# keep_logs ROUND PRESET LOG: keeps the phase's ctest log and every test's whole output (ctest's
+# LastTest.log, which the next phase's run replaces) as build/PRESET/repeat-round-ROUND[-tests].log.
+keep_logs() {
+  cp "$3" "build/$2/repeat-round-$1.log"
+  cp "build/$2/Testing/Temporary/LastTest.log" "build/$2/repeat-round-$1-tests.log" 2>/dev/null || true
+}
 # leftovers_since BEFORE ROUND PRESET LOG: says each path new since the listing BEFORE (a file),
-# with its time, and keeps LOG; adds them to `leftovers`.
+# with its time, and keeps the phase's logs; adds them to `leftovers`.
 leftovers=()
 leftovers_since() {
   local path line new
@@ -87,7 +93,7 @@ leftovers_since() {
     echo "=== left behind: $line"
     leftovers+=("$line")
   done <<<"$new"
-  cp "$4" "build/$3/repeat-round-$2.log"
+  keep_logs "$2" "$3" "$4"
 }
 
 declare -A failures=() phase_seconds=()
@@ -103,7 +109,7 @@ for ((round = 1; round <= rounds; round++)); do
     leftover_paths | sort >"$logs/before"
     if ! ctest --preset "$preset" -j "$jobs" >"$log" 2>&1; then
       round_failed=1
-      cp "$log" "build/$preset/repeat-round-$round.log"
+      keep_logs "$round" "$preset" "$log"
     fi
     times+="$preset $((SECONDS - p0)) s, "
     phase_seconds[$preset]=$((${phase_seconds[$preset]:-0} + SECONDS - p0))
@@ -127,7 +133,7 @@ if [[ ${#failures[@]} -eq 0 ]]; then
   echo "none"
 else
   for key in "${!failures[@]}"; do echo "${failures[$key]} $key"; done | sort -rn
-  echo "(the log of each failed round: build/<preset>/repeat-round-<n>.log)"
+  echo "(the logs of each failed round: build/<preset>/repeat-round-<n>.log, and -tests.log: every test's output)"
 fi
 if [[ ${#leftovers[@]} -eq 0 ]]; then
   echo "=== leftovers: none"
