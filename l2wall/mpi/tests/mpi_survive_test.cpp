@@ -11,6 +11,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -43,6 +44,27 @@ std::vector<pid_t> ranks_running(const WallRun& run) {
   for (const pid_t p : run.processes_naming(""))
     if (p != run.pid()) ranks.push_back(p);
   return ranks;
+}
+
+// The run's ranks still running 10 s after mpirun ended, each as "pid (state): command line":
+// mpirun ends its job's ranks as it ends, but one may still be ending as mpirun exits.
+std::string ranks_left(const WallRun& run) {
+  const auto deadline = std::chrono::steady_clock::now() + 10s;
+  std::vector<pid_t> left = ranks_running(run);
+  while (!left.empty() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(20ms);
+    left = ranks_running(run);
+  }
+  std::string said;
+  for (const pid_t p : left) {
+    std::string cmdline = slurp(fmt::format("/proc/{}/cmdline", p));
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    const std::string stat = slurp(fmt::format("/proc/{}/stat", p));
+    const std::size_t end = stat.rfind(')');
+    said += fmt::format("{} ({}): {}\n", p, end + 2 < stat.size() ? stat.substr(end + 2, 1) : "?",
+                        cmdline);
+  }
+  return said;
 }
 
 // Waits for the run under an mpirun that keeps the job, whose exit status says little (Open
@@ -162,7 +184,7 @@ class MpiSurvive : public ::testing::Test {
     wait_keeping_job(*survivor_, base_);
     const std::string output = survivor_->output();
     expect_job_ended(output);
-    EXPECT_TRUE(ranks_running(*survivor_).empty());
+    EXPECT_EQ(ranks_left(*survivor_), "") << "ranks left running";
     return output;
   }
   // The default wall's run with pipeserver kVictim killed at `frames`: every frame rendered.
@@ -289,7 +311,7 @@ TEST_F(MpiSurvive, ALossTheOthersCannotHoldEndsTheRunSayingSo) {
                          "framebuffers cannot hold pipeserver 1's tiles: [^\n]*does not fit")))
       << output;
   EXPECT_EQ(output.find("l2wall run: 40 frames"), std::string::npos) << output;
-  EXPECT_TRUE(ranks_running(*survivor_).empty());
+  EXPECT_EQ(ranks_left(*survivor_), "") << "ranks left running";
 }
 
 // mpirun's default ends the job with any rank: refused before anything runs, saying what mpirun
