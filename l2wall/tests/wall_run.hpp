@@ -65,6 +65,9 @@ class ScratchDir {
 // One l2wall run in its own folder; its output goes to DIR/output.txt.
 class WallRun {
  public:
+  // How long a run stopped by SIGTERM has to end its own way before it is killed.
+  static constexpr std::chrono::seconds kStopGrace{10};
+
   // `before` gets the --out folder (made, empty) before l2wall starts. `own_session`: l2wall
   // leads a session and process group of its own (setsid), which its pipeservers join, as a
   // command started from a terminal leads the terminal's foreground group. `launcher`: words
@@ -93,7 +96,11 @@ class WallRun {
   static fs::path folder_for(const std::string& name) {
     return fs::temp_directory_path() / fmt::format("l2wall-test-{}-{}", getpid(), name);
   }
+  // A run still going is stopped as a user stops it (SIGTERM, as Ctrl-C): l2wall ends its
+  // pipeservers one by one and removes their links, which takes longer than ChildProcess's
+  // half-second grace; killed in the middle, it would leave the rest of them behind.
   ~WallRun() {
+    if (process_ && !process_->poll()) process_->terminate(kStopGrace);
     process_.reset();
     fs::remove_all(dir_);
   }
@@ -101,7 +108,7 @@ class WallRun {
     auto status = process_->wait_for(timeout);
     if (!status) {
       ADD_FAILURE() << "l2wall did not end within " << timeout.count() << " ms";
-      status = process_->terminate();
+      status = process_->terminate(kStopGrace);
     }
     return *status;
   }
