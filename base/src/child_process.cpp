@@ -1,5 +1,7 @@
 #include "base/child_process.hpp"
 
+#include "base/process_table.hpp"
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>
@@ -11,8 +13,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <thread>
@@ -120,15 +120,8 @@ ChildProcess::~ChildProcess() {
 
 bool ChildProcess::stopped() const {
   if (pid_ <= 0 || status_) return false;
-  std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
-  std::stringstream text;
-  text << in.rdbuf();
-  // "pid (command) state ...": the command may hold spaces and parentheses, the state follows
-  // the last ')'.
-  const std::string stat = text.str();
-  const std::size_t end = stat.rfind(')');
-  return end != std::string::npos && end + 2 < stat.size() &&
-         (stat[end + 2] == 'T' || stat[end + 2] == 't');
+  const char state = process_state(pid_);
+  return state == 'T' || state == 't';
 }
 
 std::optional<ExitStatus> ChildProcess::poll() {

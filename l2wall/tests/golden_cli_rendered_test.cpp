@@ -10,6 +10,7 @@
 #include <fstream>
 #include <thread>
 
+#include "base/process_table.hpp"
 #include "golden/golden_manifest.hpp"
 #include "golden_cli.hpp"
 #include "image/png_io.hpp"
@@ -139,30 +140,16 @@ TEST_F(GoldenCli, StampsMovedByAReTilingAreLeftOutAndSaidSo) {
       << failed.output;
 }
 
-// A process whose command line holds every one of `words` (each a whole argument) and `part`
-// somewhere.
+// A process whose command line holds `part` and every one of `words`, each a whole argument.
 pid_t process_with(const std::vector<std::string>& words, const std::string& part = "") {
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    const std::string n = e.path().filename().string();
-    if (n.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream in(e.path() / "cmdline", std::ios::binary);
-    const std::string cmdline((std::istreambuf_iterator<char>(in)),
-                              std::istreambuf_iterator<char>());
-    if (cmdline.find(part) != std::string::npos &&
-        std::all_of(words.begin(), words.end(), [&](const std::string& w) {
+  for (const pid_t p : processes_with_command_line(part)) {
+    const std::string cmdline = process_command_line(p);
+    if (std::all_of(words.begin(), words.end(), [&](const std::string& w) {
           return cmdline.find(std::string(1, '\0') + w + '\0') != std::string::npos;
         }))
-      return std::stoi(n);
+      return p;
   }
   return 0;
-}
-
-bool alive(pid_t pid) {
-  std::ifstream in(fmt::format("/proc/{}/stat", pid));
-  std::string stat;
-  std::getline(in, stat);
-  const std::size_t end = stat.rfind(')');
-  return end != std::string::npos && end + 2 < stat.size() && stat[end + 2] != 'Z';
 }
 
 // `l2wall golden` stopped (SIGTERM to it alone, as `kill` sends it) while its entry's live run
@@ -193,7 +180,7 @@ TEST_F(GoldenCli, AStoppedGoldenEndsItsLiveRunFirst) {
   ASSERT_EQ(kill(run, SIGCONT), 0);
   const std::optional<ExitStatus> ended = golden.wait_for(std::chrono::seconds(60));
   ASSERT_TRUE(ended) << "l2wall golden did not end within 60 s of SIGTERM";
-  EXPECT_FALSE(alive(run)) << "its live run outlived it";
+  EXPECT_FALSE(process_running(run)) << "its live run outlived it";
   EXPECT_EQ(ended->signal, SIGTERM) << ended->describe();
   const Finished said = golden.finish(std::chrono::seconds(5));
   EXPECT_NE(said.err.find("l2wall golden: stopped by signal 15 (Terminated)\n"), std::string::npos)

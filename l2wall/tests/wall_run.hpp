@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 #include "base/child_process.hpp"
+#include "base/process_table.hpp"
 #include "image/png_io.hpp"
 #include "l2wall/frame_stamp.hpp"
 #include "tilelayout/planner.hpp"
@@ -130,29 +131,13 @@ class WallRun {
   }
   // Processes whose command line names one of this run's links: its pipeservers.
   std::vector<pid_t> pipeservers(int pipeserver = -1) const {
-    std::vector<pid_t> pids;
-    const std::string needle =
-        "/" + link_prefix() + (pipeserver >= 0 ? fmt::format("{}", pipeserver) + '\0' : "");
-    for (const auto& e : fs::directory_iterator("/proc")) {
-      const std::string n = e.path().filename().string();
-      if (n.find_first_not_of("0123456789") != std::string::npos) continue;
-      const std::string cmdline = slurp(e.path() / "cmdline");
-      if (cmdline.find(needle) != std::string::npos) pids.push_back(std::stoi(n));
-    }
-    return pids;
+    return processes_with_command_line(
+        "/" + link_prefix() + (pipeserver >= 0 ? fmt::format("{}", pipeserver) + '\0' : ""));
   }
   // Processes whose command line names this run's output folder: its pipeservers (--report
   // OUT/pipeserver-<i>.log) and its compositing server (--log OUT/vizserver.log), on every path.
   std::vector<pid_t> processes_naming(const std::string& what) const {
-    std::vector<pid_t> pids;
-    const std::string needle = (out() / what).string();
-    for (const auto& e : fs::directory_iterator("/proc")) {
-      const std::string n = e.path().filename().string();
-      if (n.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (slurp(e.path() / "cmdline").find(needle) != std::string::npos)
-        pids.push_back(std::stoi(n));
-    }
-    return pids;
+    return processes_with_command_line((out() / what).string());
   }
   std::vector<pid_t> vizservers() const { return processes_naming("vizserver.log"); }
   // The frames pipeserver `pipeserver` has logged ("frame K ..." lines: its log opens with the

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "balanced_run.hpp"
+#include "base/process_table.hpp"
 #include "mpirun_run.hpp"
 #include "tilelayout/planner.hpp"
 #include "tilelayout/wall_file.hpp"
@@ -57,12 +58,10 @@ std::string ranks_left(const WallRun& run) {
   }
   std::string said;
   for (const pid_t p : left) {
-    std::string cmdline = slurp(fmt::format("/proc/{}/cmdline", p));
+    std::string cmdline = process_command_line(p);
     std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    const std::string stat = slurp(fmt::format("/proc/{}/stat", p));
-    const std::size_t end = stat.rfind(')');
-    said += fmt::format("{} ({}): {}\n", p, end + 2 < stat.size() ? stat.substr(end + 2, 1) : "?",
-                        cmdline);
+    const char state = process_state(p);
+    said += fmt::format("{} ({}): {}\n", p, state != '\0' ? state : '?', cmdline);
   }
   return said;
 }
