@@ -71,6 +71,26 @@ void BoundedServer::deepen_backlog() {
   ::listen(svr_sock_, kBacklog);
 }
 
+void BoundedServer::post_reading_body(const std::string& pattern,
+                                      HandlerWithContentReader handler) {
+  Post(pattern, [handler = std::move(handler)](const httplib::Request& req, httplib::Response& res,
+                                               const httplib::ContentReader& body) {
+    const bool has_body = req.has_header("Content-Length") || req.has_header("Transfer-Encoding");
+    bool asked = false;
+    const httplib::ContentReader reader(
+        [&](httplib::ContentReceiver receive) {
+          asked = true;
+          return !has_body || body(std::move(receive));
+        },
+        [&](httplib::MultipartContentHeader header, httplib::ContentReceiver receive) {
+          asked = true;
+          return !has_body || body(std::move(header), std::move(receive));
+        });
+    handler(req, res, reader);
+    if (has_body && !asked) (void)body([](const char*, std::size_t) { return true; });
+  });
+}
+
 // On the accepting thread: admitted to a thread of its own, or refused; never waits.
 bool BoundedServer::process_and_close_socket(socket_t sock) {
   std::string client = peer_address(sock).host;

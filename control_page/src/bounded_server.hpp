@@ -61,6 +61,15 @@ class BoundedServer : public httplib::Server {
   // there holds no thread; the accepting thread drains it quickly, admitting or refusing.
   void deepen_backlog();
 
+  // A POST route whose handler reads the body as it comes. Its reader is cpp-httplib's, with the
+  // connection's rules kept whatever the handler does:
+  // - a request with neither a length nor chunks has an empty body (HTTP/1.1; cpp-httplib would
+  //   read to the connection's end, which a client waiting for its answer never closes);
+  // - a body the handler leaves unread (a request refused before its body) is read and dropped
+  //   once the handler returns: left on a keep-alive connection, its bytes would be taken for
+  //   the client's next request there, which cpp-httplib then answers 400 with nothing in it.
+  void post_reading_body(const std::string& pattern, HandlerWithContentReader handler);
+
   // Ends serving once stop() has ended listening: connections being served end at once (their
   // sockets shut down), those admitted and not yet served are closed, the threads are joined.
   // Handlers run no more after it, so what they use may go. The destructor calls it too.

@@ -98,9 +98,9 @@ struct ControlServer::Impl {
       res.set_header("Connection", "close");
       return httplib::Server::HandlerResponse::Handled;
     });
-    server.Post(kFramePath,
-                [this](const httplib::Request& req, httplib::Response& res,
-                       const httplib::ContentReader& body) { take_frame(req, res, body); });
+    server.post_reading_body(
+        kFramePath, [this](const httplib::Request& req, httplib::Response& res,
+                           const httplib::ContentReader& body) { take_frame(req, res, body); });
     for (const PageAsset& a : page_assets()) {
       server.Get(std::string(a.path), [&a](const httplib::Request&, httplib::Response& res) {
         res.set_content(std::string(a.body), std::string(a.type) + "; charset=utf-8");
@@ -120,17 +120,14 @@ struct ControlServer::Impl {
                  if (!allowed(req, false)) return refuse(res, 403, "this needs the run's token");
                  serve_picture(req.matches[1].str(), res);
                });
-    // What to steer is in the path and the query; a body is read and dropped. A request with
-    // neither a length nor chunks has none (`curl -X POST URL`): cpp-httplib would read it to
-    // the connection's end, which the client, waiting for the answer, never closes, and answer
-    // 400 when its read timed out.
-    server.Post(
+    // What to steer is in the path and the query; a body is read and dropped (`curl -X POST URL`
+    // sends none).
+    server.post_reading_body(
         R"(/api/(pause|resume|save|stop|balance|window|share))",
         [this](const httplib::Request& req, httplib::Response& res,
                const httplib::ContentReader& body) {
           std::size_t length = 0;
-          if ((req.has_header("Content-Length") || req.has_header("Transfer-Encoding")) &&
-              !body([&](const char*, std::size_t n) { return (length += n) <= kMaxBody; })) {
+          if (!body([&](const char*, std::size_t n) { return (length += n) <= kMaxBody; })) {
             if (length > kMaxBody)
               refuse(res, 413, fmt::format("a body of at most {} bytes here", kMaxBody));
             return;  // too long or cut short: cpp-httplib's status (413, 400) stands
@@ -211,31 +208,23 @@ struct ControlServer::Impl {
   }
 
   // A shared screen's frame: admitted for an open share before its body is read (at most one
-  // body a share at a time), read up to kMaxFrameBody, decoded and kept (share_inbox.hpp).
+  // body a share at a time), read up to kMaxFrameBody, decoded and kept (share_inbox.hpp). A
+  // frame refused before its body is read is dropped by its route (post_reading_body).
   void take_frame(const httplib::Request& req, httplib::Response& res,
                   const httplib::ContentReader& body) {
-    // A frame refused unread is read and dropped first: left on the connection, its bytes would
-    // be taken for the client's next request there, which then gets a 400 with nothing in it
-    // (a page's frame still on its way when its share stopped did that to the page's next
-    // /api/state). Over kMaxFrameBody cpp-httplib reads the rest and drops it itself.
-    const auto refuse_unread = [&](int status, const std::string& why) {
-      if (req.has_header("Content-Length") || req.has_header("Transfer-Encoding"))
-        (void)body([](const char*, std::size_t) { return true; });
-      refuse(res, status, why);
-    };
-    if (!allowed(req, true)) return refuse_unread(403, "this needs the run's token");
-    if (const std::string why = refusal(); !why.empty()) return refuse_unread(409, why);
+    if (!allowed(req, true)) return refuse(res, 403, "this needs the run's token");
+    if (const std::string why = refusal(); !why.empty()) return refuse(res, 409, why);
     const std::string given = req.get_param_value("window");
     if (given.empty() || given.size() > 5 ||
         given.find_first_not_of("0123456789") != std::string::npos)
-      return refuse_unread(400, "frame refused: give ?window=ID, the share's window");
+      return refuse(res, 400, "frame refused: give ?window=ID, the share's window");
     const int window = std::stoi(given);
     if (!req.has_header("Content-Length"))
-      return refuse_unread(411, "frame refused: give its Content-Length");
+      return refuse(res, 411, "frame refused: give its Content-Length");
     if (declared_length(req) > kMaxFrameBody)
-      return refuse_unread(413, fmt::format("frame refused: more than {} bytes", kMaxFrameBody));
+      return refuse(res, 413, fmt::format("frame refused: more than {} bytes", kMaxFrameBody));
     if (const ControlDecision d = shares->admit(window); d.status != 200)
-      return refuse_unread(d.status, d.text);
+      return refuse(res, d.status, d.text);
     std::string jpeg;
     const bool whole = body([&](const char* data, std::size_t n) {
       if (jpeg.size() + n > kMaxFrameBody) return false;
