@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 
@@ -19,7 +20,35 @@ void check(int code, const char* call, int peer) {
       fmt::format("{} with rank {}: {}", call, peer, std::string(text, length)));
 }
 
+// Waits for `request` to complete: at first as MPI_Wait would, then looking every 100 us.
+void wait_sleeping(MPI_Request& request, const char* call, int peer) {
+  const auto spin_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+  for (;;) {
+    int done = 0;
+    check(MPI_Test(&request, &done, MPI_STATUS_IGNORE), call, peer);
+    if (done) return;
+    if (std::chrono::steady_clock::now() >= spin_until)
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
 }  // namespace
+
+void send_bytes(std::span<const std::uint8_t> bytes, int to, int tag) {
+  MPI_Request request = MPI_REQUEST_NULL;
+  check(MPI_Isend(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD,
+                  &request),
+        "MPI_Isend", to);
+  wait_sleeping(request, "MPI_Isend", to);
+}
+
+void receive_bytes(std::span<std::uint8_t> into, int from, int tag) {
+  MPI_Request request = MPI_REQUEST_NULL;
+  check(MPI_Irecv(into.data(), static_cast<int>(into.size()), MPI_BYTE, from, tag, MPI_COMM_WORLD,
+                  &request),
+        "MPI_Irecv", from);
+  wait_sleeping(request, "MPI_Irecv", from);
+}
 
 void send(const Record& record, int to, int tag) {
   check(MPI_Send(record.data(), static_cast<int>(record.size()), MPI_INT64_T, to, tag,

@@ -108,9 +108,7 @@ void MpiTileSender::send_tile(std::uint32_t frame, const viz::TileTarget& t,
   std::memcpy(message_.data(), &m, sizeof m);
   const int to = column_ranks_[column];
   ++sent_[column];
-  if (MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, to, mpi_wire::kTile,
-               MPI_COMM_WORLD) != MPI_SUCCESS)
-    throw std::runtime_error(fmt::format("sending a tile to rank {} failed", to));
+  mpi_wire::send_bytes(message_, to, mpi_wire::kTile);
   bytes_sent_->raw += sizeof m + h.pixel_bytes();
   bytes_sent_->wire += message_.size();
   if (frame == 0) bytes_sent_->first_wire += message_.size();

@@ -149,8 +149,7 @@ class Column {
       int bytes = 0;
       MPI_Get_count(&status, MPI_BYTE, &bytes);
       tile_bytes_.resize(static_cast<std::size_t>(bytes));
-      MPI_Recv(tile_bytes_.data(), bytes, MPI_BYTE, status.MPI_SOURCE, mpi_wire::kTile,
-               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi_wire::receive_bytes(tile_bytes_, status.MPI_SOURCE, mpi_wire::kTile);
       mpi_wire::TileMessage m;
       if (tile_bytes_.size() < sizeof m) throw std::runtime_error("a tile message too short");
       std::memcpy(&m, tile_bytes_.data(), sizeof m);
@@ -213,16 +212,14 @@ class Column {
       const int id = layout_.wall.displays[i].id;
       if (!own(id)) continue;  // another column's
       const RgbImage& picture = it->second[i];
-      MPI_Send(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
-               RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
+      mpi_wire::send_bytes(picture.bytes(), RankMap::kCoordinator, mpi_wire::kPicture);
     }
   }
 
   void send_pictures() {
     for (int d = 0; d < column_.router().display_count(); ++d) {
       const RgbImage& front = column_.router().display(d).front();
-      MPI_Send(front.data(), static_cast<int>(front.bytes().size()), MPI_BYTE,
-               RankMap::kCoordinator, mpi_wire::kPicture, MPI_COMM_WORLD);
+      mpi_wire::send_bytes(front.bytes(), RankMap::kCoordinator, mpi_wire::kPicture);
     }
   }
 

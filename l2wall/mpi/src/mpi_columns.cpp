@@ -145,8 +145,7 @@ void MpiColumns::fetch(std::optional<std::chrono::milliseconds> grace) {
                                   [id](const Display& x) { return x.id == id; });
       RgbImage& picture = pictures_[id];
       if (picture.empty()) picture = RgbImage(d->width, d->height);
-      MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE, rank,
-               mpi_wire::kPicture, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi_wire::receive_bytes(picture.bytes(), rank, mpi_wire::kPicture);
     }
   }
 }

@@ -58,8 +58,7 @@ DisplayPictures MpiCompositors::pictures(int frame) {
         if (map_.column_of_display[static_cast<std::size_t>(d.id)] != c) continue;
         RgbImage& picture = pictures_[d.id];
         if (picture.empty()) picture = RgbImage(d.width, d.height);
-        MPI_Recv(picture.data(), static_cast<int>(picture.bytes().size()), MPI_BYTE,
-                 map_.column_rank(c), mpi_wire::kPicture, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        mpi_wire::receive_bytes(picture.bytes(), map_.column_rank(c), mpi_wire::kPicture);
       }
     }
     fetched_ = frame;

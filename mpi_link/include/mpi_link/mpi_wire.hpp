@@ -1,12 +1,13 @@
 // The messages of an MPI run, one tag each (docs/mpi-design.md), and the few calls every role
-// makes with them: blocking sends of small integer records and a receive that keeps watching
-// while it waits.
+// makes with them: blocking sends of small integer records, a receive that keeps watching while
+// it waits, and large messages waited for without busy-polling.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace l2::mpi_wire {
@@ -57,6 +58,13 @@ void send(const Record& record, int to, int tag);
 // bytes.
 std::optional<int> waiting(int from, int tag);
 Record receive(int from, int tag);
+// One message of `bytes` (a picture, a tile) sent or received whole, waiting as the run's other
+// waits do. MPI_Send and MPI_Recv busy-poll until a large message has crossed, yield or not:
+// on a slow or lossy link that is most of a frame, spent on a core the ranks working beside it
+// need. These wait as MPI would for a millisecond (a fast link has carried a picture by then),
+// then look every 100 microseconds. Throw as `send` does.
+void send_bytes(std::span<const std::uint8_t> bytes, int to, int tag);
+void receive_bytes(std::span<std::uint8_t> into, int from, int tag);
 // Waits for a record, calling `watch` (which may throw) about every millisecond meanwhile.
 Record receive_watched(int from, int tag, const std::function<void()>& watch);
 
