@@ -1,15 +1,29 @@
 #include "base/process_table.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+
+#include "base/fd.hpp"
 
 namespace l2 {
 namespace {
 
-std::string read_whole(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// The whole of a /proc file, or what could be read of it: empty for a process that has gone.
+// By read(2): a process ending mid-read fails it with ESRCH, which std::filebuf would throw.
+std::string read_whole(const std::string& path) {
+  const Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  std::string text;
+  if (!fd) return text;
+  char chunk[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd.get(), chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return text;
+    text.append(chunk, static_cast<std::size_t>(n));
+  }
 }
 
 }  // namespace
@@ -39,7 +53,7 @@ std::vector<pid_t> processes_with_command_line(std::string_view needle) {
     const std::string n = e.path().filename().string();
     if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos) continue;
     // A process that ended since the listing reads as an empty command line.
-    if (read_whole(e.path() / "cmdline").find(needle) != std::string::npos)
+    if (read_whole(e.path().string() + "/cmdline").find(needle) != std::string::npos)
       pids.push_back(static_cast<pid_t>(std::stol(n)));
   }
   return pids;
