@@ -1,3 +1,11 @@
+// What /proc says of the processes on this machine, read once per call: a process's state, and
+// the processes whose command line holds some text. Read by ChildProcess (is its child
+// stopped?) and by the tests that check what a run left running.
+//
+// Example:
+//
+//   for (const pid_t p : l2::processes_with_command_line(std::string("\0--link\0", 8)))
+//     if (l2::process_state(p) == 'T') std::printf("%d is stopped\n", p);
 #pragma once
 
 #include <sys/types.h>
@@ -7,10 +15,6 @@
 #include <vector>
 
 namespace l2 {
-
-// What /proc says of the processes on this machine, read once per call: a process's state, and
-// the processes whose command line holds some text. Read by ChildProcess (is its child
-// stopped?) and by the tests that check what a run left running.
 
 // The state letter of process `pid` ('R', 'S', 'D', 'T' stopped, 't' traced, 'Z' zombie, ...),
 // or '\0' when there is no such process (it has ended and been reaped).
