@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "displays/display_error.hpp"
+#include "lsan_gl.hpp"
 
 namespace l2 {
 
@@ -28,6 +29,7 @@ std::string last_glfw_error() {
 GlfwSession::GlfwSession() {
   std::lock_guard lock(g_mutex);
   if (g_users == 0) {
+    keep_gl_loaded();
     glfwSetErrorCallback(on_glfw_error);
     if (glfwInit() != GLFW_TRUE) {
       const char* display = std::getenv("DISPLAY");
