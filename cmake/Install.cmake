@@ -106,6 +106,7 @@ set(l2_package_finds
     PkgConfig::ASSIMP "l2_pkg_target(ASSIMP assimp)"
     PkgConfig::TOMLPP "l2_pkg_target(TOMLPP tomlplusplus)"
     PkgConfig::LZ4 "l2_pkg_target(LZ4 liblz4)"
+    PkgConfig::PNG "l2_pkg_target(PNG libpng)"
     PkgConfig::ZSTD "l2_pkg_target(ZSTD libzstd)")
 set(L2_PACKAGE_DEPENDENCIES "")
 foreach(dependency ${l2_package_imported})

@@ -36,9 +36,12 @@ codec=$prefix/lib/lightning2/libl2_png_oiio.so
 mkdir "$prefix/elsewhere"
 cd "$prefix/elsewhere" || exit 1
 # The dynamic loader's log of every process of the run: the image codec they load on their first
-# picture must be the prefix's, not the build tree's.
+# picture of another format than PNG (PNG they read and write themselves), here a PPM the
+# pipeservers show, must be the prefix's, not the build tree's.
+printf 'P6\n2 2\n255\n\377\0\0\0\377\0\0\0\377\377\377\377' >picture.ppm
 LD_DEBUG=libs LD_DEBUG_OUTPUT="$prefix/loader" \
-  "$prefix/bin/l2wall" run --frames 2 --no-progress --out run >run.log 2>&1
+  "$prefix/bin/l2wall" run --scene picture --content picture.ppm --frames 2 --no-progress \
+  --out run >run.log 2>&1
 status=$?
 [[ $status -eq 0 ]] || fail "installed l2wall run: exit $status: $(tail -5 run.log)"
 # (found through the run path $ORIGIN/../lib/lightning2: PREFIX/bin/../lib/lightning2/...)

@@ -13,6 +13,7 @@
 #include "image/fits_header.hpp"
 #include "image/ico_header.hpp"
 #include "media_oiio.hpp"
+#include "png_libpng.hpp"
 
 namespace l2::png_codec {
 

@@ -2,8 +2,10 @@
 // (png_codec_oiio.cpp, built as l2_png_oiio). OpenImageIO pulls in some 260 shared libraries
 // (OpenCV, OpenVDB, FFmpeg, GStreamer...) whose relocations cost every process that links it
 // about half a second of CPU at start, before main(); most runs of our programs (a pipeserver in a
-// live wall, --help, a parse error) never touch an image file. So only the module links
-// OpenImageIO, and a process pays for it when it first reads or writes a picture.
+// live wall, --help, a parse error) never touch an image file, and most that do only read or write
+// PNG. So only the module links OpenImageIO, a process pays for it when it first reads or writes
+// a picture of another format, and PNG files are read and written with libpng on this side of the
+// boundary (png_libpng.hpp).
 //
 // The module is built from the same sources with the same compiler, so standard types cross.
 #pragma once
@@ -95,10 +97,6 @@ struct Codec {
   Result<std::unique_ptr<RegionReader>> (*open_regions)(const char* path, float cache_megabytes);
   Result<std::unique_ptr<MovieDecoder>> (*open_movie)(const char* path);
   Result<TextMask> (*render_text)(const char* text, int cap_height);  // image/text.hpp
-  // A PNG file's bytes, appended to *out: 8-bit RGB (`channels` 3) or grey (1), `pixels` row by
-  // row.
-  Status (*encode_pixels)(int width, int height, int channels, const std::uint8_t* pixels,
-                          std::string* out);
   Result<PictureShape> (*picture_shape)(const char* path);
   // `source` (any picture, read in rows) copied into `target`, a tiled TIFF with MIP levels,
   // holding a band of rows of each level at a time (tiled_copy_oiio.cpp).
@@ -109,7 +107,7 @@ struct Codec {
 // version of the structures above: a program and a module built from different sources (a
 // partial rebuild) then fail with "has no l2_png_codec_v4" instead of misreading each other's
 // structures (a picture's size limit read as garbage, or a crash). Change both with them.
-inline constexpr const char* kEntryPoint = "l2_png_codec_v14";
+inline constexpr const char* kEntryPoint = "l2_png_codec_v15";
 using EntryPoint = const Codec* (*)();
 
 // The module, loaded on first use (png_io.cpp); throws std::runtime_error naming `file` (the

@@ -1,9 +1,9 @@
-// The image codec module (png_codec.hpp): PNG (and whatever else OpenImageIO reads) to and from
-// 8-bit RGB, PNG files read with libpng (png_read_libpng.cpp), the others through OpenImageIO.
-// Loaded by png_io.cpp; no exception leaves it.
+// The image codec module (png_codec.hpp): whatever OpenImageIO reads and writes, to and from
+// 8-bit RGB. Programs read and write PNG themselves (png_libpng.hpp); a PNG that reaches the
+// module anyway is read with the same libpng reader, the others through OpenImageIO. Loaded by
+// png_io.cpp; no exception leaves it.
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <png.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -26,7 +26,7 @@
 #include "picture_checks.hpp"
 #include "picture_readers.hpp"
 #include "png_codec.hpp"
-#include "png_read.hpp"
+#include "png_libpng.hpp"
 
 namespace {
 
@@ -54,13 +54,7 @@ l2::Result<std::string> encode_file(const char* name, int width, int height,
     return Failure{std::string("cannot write: OpenImageIO cannot write ") + out->format_name() +
                    " into memory (give .png)"};
   }
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  // libpng's defaults (every row filter tried, zlib level 6) took 108-117 ms for a 1984x768
-  // wall picture; one filter (each row minus the row above, which suits rendered pictures) and
-  // zlib level 1 take 21-24 ms for files about 1.5x the size. Runs that keep every frame's pictures
-  // spent most of their time here.
-  spec.attribute("png:filter", PNG_FILTER_UP);
-  spec.attribute("png:compressionLevel", 1);
+  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);
   if (!out->set_ioproxy(&memory) || !out->open(name, spec) ||
@@ -243,13 +237,12 @@ constexpr l2::png_codec::Codec kCodec{encode_file,
                                       l2::png_codec::open_regions,
                                       l2::png_codec::open_movie,
                                       l2::png_codec::render_text,
-                                      l2::png_codec::encode_pixels,
                                       l2::png_codec::picture_shape,
                                       l2::png_codec::make_tiled_copy};
 
 }  // namespace
 
 // Named as png_codec::kEntryPoint says.
-extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v14() {
+extern "C" __attribute__((visibility("default"))) const l2::png_codec::Codec* l2_png_codec_v15() {
   return &kCodec;
 }

@@ -1,13 +1,14 @@
-// PNG into memory, with libpng (the codec module, png_codec.hpp): pictures a program sends
-// rather than writes (the control page's displays), and grey maps (an import's alpha and beta
-// maps). The same filter and compression as the
-// files write_rgb() writes, for the same reason: rendered pictures, encoded often.
+// PNG with libpng (png_libpng.hpp): the files write_png() writes, pictures a program sends rather
+// than writes (the control page's displays), and grey maps (an import's alpha and beta maps).
+// One row filter (each row minus the row above, which suits rendered pictures) and zlib level 1:
+// libpng's defaults (every filter tried, level 6) made runs that keep every frame's pictures
+// spend most of their time here, for files only a little smaller.
 #include <png.h>
 
 #include <csetjmp>
 #include <string>
 
-#include "media_oiio.hpp"
+#include "png_libpng.hpp"
 
 namespace l2::png_codec {
 namespace {

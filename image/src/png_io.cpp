@@ -11,6 +11,7 @@
 
 #include "image/folders.hpp"
 #include "png_codec.hpp"
+#include "png_libpng.hpp"
 
 namespace l2 {
 
@@ -92,10 +93,31 @@ struct Target {
   }
 };
 
+// Whether `path` names a PNG file by its extension, as OpenImageIO chooses a writer (any case).
+bool png_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+// `input` read here with libpng when it is a PNG (no module loaded); otherwise not read at all
+// (false), for the module to read, which also says why a file cannot be opened.
+bool read_if_png(const png_codec::Input& input, Target& target, png_codec::Source& found,
+                 Status& read) {
+  const png_codec::Stream file = png_codec::open_stream(input);
+  if (!file || !png_codec::is_png(file.get())) return false;
+  read = png_codec::read_png(file.get(), target.sink(), found);
+  return true;
+}
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
+  if (png_extension(path)) {
+    write_whole_file(path, encode_png(image));
+    return;
+  }
   Result<std::string> encoded =
       png_codec::codec(path).encode_file(path.c_str(), image.width(), image.height(), image.data());
   if (!encoded.ok()) throw std::runtime_error(path.string() + ": " + encoded.reason());
@@ -103,19 +125,17 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
 }
 
 std::string encode_png(const RgbImage& image) {
-  const std::filesystem::path what("a PNG in memory");
   std::string bytes;
-  check(what, png_codec::codec(what).encode_pixels(image.width(), image.height(), 3, image.data(),
-                                                   &bytes));
+  check("a PNG in memory",
+        png_codec::encode_pixels(image.width(), image.height(), 3, image.data(), &bytes));
   return bytes;
 }
 
 std::string encode_grey_png(int width, int height, std::span<const std::uint8_t> grey) {
   if (width < 1 || height < 1 || grey.size() != static_cast<std::size_t>(width) * height)
     throw std::invalid_argument("encode_grey_png: the bytes are not width x height");
-  const std::filesystem::path what("a grey PNG in memory");
   std::string bytes;
-  check(what, png_codec::codec(what).encode_pixels(width, height, 1, grey.data(), &bytes));
+  check("a grey PNG in memory", png_codec::encode_pixels(width, height, 1, grey.data(), &bytes));
   return bytes;
 }
 
@@ -123,7 +143,9 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                   const SizeCheck& accept) {
   Target target{RgbImage(), accept, nullptr};
   png_codec::Source found;
-  const Status read = png_codec::codec(path).read_rgb(path.c_str(), target.sink(), &found);
+  Status read;
+  if (!read_if_png({path.c_str()}, target, found, read))
+    read = png_codec::codec(path).read_rgb(path.c_str(), target.sink(), &found);
   RgbImage image = target.take(path, read);
   if (source) *source = {found.format, found.colour_channels, found.lossy};
   return image;
@@ -132,8 +154,12 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
 RgbImage read_picture_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
                             const std::string& format_hint, const SizeCheck& accept) {
   Target target{RgbImage(), accept, nullptr};
-  const Status read = png_codec::codec(name).read_rgb_bytes(
-      bytes.data(), bytes.size(), format_hint.c_str(), target.sink(), nullptr);
+  png_codec::Source found;
+  Status read;
+  if (bytes.empty() ||
+      !read_if_png({nullptr, bytes.data(), bytes.size(), format_hint.c_str()}, target, found, read))
+    read = png_codec::codec(name).read_rgb_bytes(bytes.data(), bytes.size(), format_hint.c_str(),
+                                                 target.sink(), nullptr);
   return target.take(name, read);
 }
 

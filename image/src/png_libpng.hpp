@@ -1,6 +1,9 @@
-// What the codec module's whole-picture readers share: where a picture's bytes are, the check on
-// the size a file's header claims, and the PNG reader on libpng (all in png_read_libpng.cpp)
-// that png_codec_oiio.cpp hands PNG files to before OpenImageIO reads anything else.
+// PNG through libpng itself (png_read_libpng.cpp, png_encode.cpp: the object library
+// l2_png_libpng), built into both sides of the codec module's boundary (png_codec.hpp): programs
+// read and write PNG files with it directly, without loading the module (libpng is one small
+// library; OpenImageIO's hundreds are what cost), and the module's readers share its stream, its
+// check on the size a file's header claims, and its PNG reader, to which png_codec_oiio.cpp hands
+// PNG files before OpenImageIO reads anything else.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "png_codec.hpp"
 
@@ -39,5 +43,17 @@ Status refused(const std::string& why);
 bool is_png(std::FILE* file);
 // A PNG file (`file`, still the caller's) into the sink as 8-bit RGB, as Codec::read_rgb says.
 Status read_png(std::FILE* file, RgbSink sink, Source& source);
+
+// A PNG's pixels decoded with libpng, a row at a time and dropped, before the image cache reads
+// it: ok, or why not in one line ("cannot read: a damaged PNG (IDAT: incorrect data check)"),
+// nothing printed.
+Status check_png_data(const char* path);
+// The same for a PNG in memory (an icon's), its rows decoded only with `rows`.
+Status check_png_bytes(std::string_view bytes, bool rows);
+
+// A PNG file's bytes, appended to *out: 8-bit RGB (`channels` 3) or grey (1), `pixels` row by
+// row (png_encode.cpp).
+Status encode_pixels(int width, int height, int channels, const std::uint8_t* pixels,
+                     std::string* out);
 
 }  // namespace l2::png_codec

@@ -1,4 +1,4 @@
-// PNG files read with libpng itself (png_read.hpp), for a whole picture and for the checks a PNG
+// PNG files read with libpng itself (png_libpng.hpp), for a whole picture and for the checks a PNG
 // passes before the image cache reads it; and what this reader shares with png_codec_oiio.cpp's
 // OpenImageIO reader: the picture's stream and the check on its claimed size. No exception
 // leaves it.
@@ -20,8 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "media_oiio.hpp"
-#include "png_read.hpp"
+#include "png_libpng.hpp"
 
 namespace l2::png_codec {
 namespace {

@@ -15,7 +15,7 @@
 #include "picture_checks.hpp"
 #include "picture_readers.hpp"
 #include "png_chunks.hpp"
-#include "png_read.hpp"
+#include "png_libpng.hpp"
 
 namespace l2::png_codec {
 

@@ -350,24 +350,33 @@ bool mapped(const std::string& name) {
   return false;
 }
 
-// OpenImageIO costs half a second of start-up; a process pays for it on its first picture only.
-// A "threadsafe" death test runs its statement in a fresh process (this binary, executed again),
+// OpenImageIO costs half a second of start-up; a process pays for it on its first picture of
+// another format than PNG only (PNG is read and written with libpng, in memory too). A
+// "threadsafe" death test runs its statement in a fresh process (this binary, executed again),
 // where no picture has been read or written yet.
-TEST(PngIoDeathTest, OpenImageIOIsLoadedOnTheFirstPictureOnly) {
+TEST(PngIoDeathTest, OpenImageIOIsLoadedOnTheFirstPictureThatIsNotAPngOnly) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
-  const auto path = temp_dir() / "first.png";
+  const auto png = temp_dir() / "first.PNG";
+  const auto bmp = temp_dir() / "first.bmp";
   EXPECT_EXIT(
       {
+        const RgbImage picture(3, 2, {1, 2, 3});
+        write_png(png, picture);
+        const std::string bytes = encode_png(picture);
+        const bool same =
+            read_png(png) == picture &&
+            read_picture_bytes({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},
+                               "a PNG in memory", "") == picture;
         if (mapped("libOpenImageIO")) {
-          std::fputs("OpenImageIO was loaded before any picture\n", stderr);
+          std::fputs("OpenImageIO loaded for a PNG\n", stderr);
           std::exit(1);
         }
-        write_png(path, RgbImage(3, 2, {1, 2, 3}));
+        write_png(bmp, picture);
         if (!mapped("libOpenImageIO")) {
-          std::fputs("OpenImageIO not loaded after writing a picture\n", stderr);
+          std::fputs("OpenImageIO not loaded after writing a BMP\n", stderr);
           std::exit(2);
         }
-        std::exit(read_png(path) == RgbImage(3, 2, {1, 2, 3}) ? 0 : 3);
+        std::exit(same && read_png(bmp) == picture ? 0 : 3);
       },
       ::testing::ExitedWithCode(0), "");
 }
