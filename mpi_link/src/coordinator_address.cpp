@@ -7,10 +7,10 @@
 #include <netinet/in.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
-#include <ranges>
 
 namespace l2 {
 namespace {
@@ -33,8 +33,12 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> parse_block(std::string_v
 }
 
 bool pinned(const InterfaceAddress& i, std::string_view pin) {
-  for (const auto part : pin | std::views::split(',')) {
-    const std::string_view entry(part.begin(), part.end());
+  // Its comma-separated entries (not std::views::split: clang 14, the sanitizer builds' compiler,
+  // cannot compile libstdc++ 12's views).
+  for (std::size_t at = 0; at <= pin.size();) {
+    const std::size_t comma = std::min(pin.find(',', at), pin.size());
+    const std::string_view entry = pin.substr(at, comma - at);
+    at = comma + 1;
     if (entry == i.name) return true;
     if (const auto block = parse_block(entry); block && (i.ipv4 & block->second) == block->first)
       return true;

@@ -27,7 +27,8 @@ inline std::vector<std::uint8_t> serialised(lo_bundle b) {
 
 // One frame: `fingers` down (alive and set), numbered `fseq`.
 inline std::vector<std::uint8_t> tuio_frame(int fseq, const std::vector<TuioFinger>& fingers) {
-  lo_bundle b = lo_bundle_new(LO_TT_IMMEDIATE);
+  const lo_timetag immediate{0U, 1U};  // LO_TT_IMMEDIATE, without its C compound literal
+  lo_bundle b = lo_bundle_new(immediate);
   lo_message source = lo_message_new();
   lo_message_add_string(source, "source");
   lo_message_add_string(source, "test@127.0.0.1");

@@ -42,7 +42,7 @@ namespace l2 {
 
 namespace router_detail {  // src/router_detail.hpp
 struct Target;
-struct InputScan;
+class InputScan;
 struct DisplayBands;
 struct WorkerScratch;
 }  // namespace router_detail
