@@ -1,9 +1,17 @@
-# Links with gold where the toolchain has it (Debian's binutils does): it links the larger
-# programs with their debug information several times faster than GNU ld, and the suite links
-# every program and test of three builds. Without gold the default linker is used. Not for the fuzz build: gold warns for every one of clang's
-# ASan helper symbols, and that build links five small programs.
+# A faster linker than GNU ld where the toolchain has one: the suite links every program and test
+# of three builds, the larger programs with their debug information. GCC links with gold
+# (Debian's binutils has it); clang with lld (Debian package lld), since gold warns for every one
+# of the helper symbols clang's AddressSanitizer exports. Without either the default linker is
+# used.
 include(CheckLinkerFlag)
-check_linker_flag(CXX "-fuse-ld=gold" L2_HAVE_GOLD)
-if(L2_HAVE_GOLD AND NOT L2_FUZZ)
-  add_link_options(-fuse-ld=gold)
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  check_linker_flag(CXX "-fuse-ld=lld" L2_HAVE_LLD)
+  if(L2_HAVE_LLD)
+    add_link_options(-fuse-ld=lld)
+  endif()
+else()
+  check_linker_flag(CXX "-fuse-ld=gold" L2_HAVE_GOLD)
+  if(L2_HAVE_GOLD)
+    add_link_options(-fuse-ld=gold)
+  endif()
 endif()

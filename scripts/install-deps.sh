@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config clang-format
-  clang libclang-rt-14-dev
+  clang lld libclang-rt-14-dev  # the sanitizer and fuzz builds (lld: their linker)
   libosmesa6-dev libopenimageio-dev openimageio-tools libpng-dev libglfw3-dev libglm-dev libassimp-dev
   libjpeg-dev  # shared screens' JPEG frames (image/jpeg_frame.hpp), decoded with libjpeg itself
   libegl-dev libegl-mesa0  # --renderer egl: glvnd's libEGL and Mesa's EGL driver (llvmpipe without a GPU)
