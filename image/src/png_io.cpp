@@ -5,6 +5,7 @@
 #include <cctype>
 #include <exception>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -100,14 +101,13 @@ bool png_extension(const std::filesystem::path& path) {
   return ext == ".png";
 }
 
-// `input` read here with libpng when it is a PNG (no module loaded); otherwise not read at all
-// (false), for the module to read, which also says why a file cannot be opened.
-bool read_if_png(const png_codec::Input& input, Target& target, png_codec::Source& found,
-                 Status& read) {
+// `input` read here with libpng when it is a PNG (no module loaded); nothing when it is not (or
+// cannot be opened), for the module to read, which also says why a file cannot be opened.
+std::optional<Status> read_if_png(const png_codec::Input& input, Target& target,
+                                  png_codec::Source& found) {
   const png_codec::Stream file = png_codec::open_stream(input);
-  if (!file || !png_codec::is_png(file.get())) return false;
-  read = png_codec::read_png(file.get(), target.sink(), found);
-  return true;
+  if (!file || !png_codec::is_png(file.get())) return std::nullopt;
+  return png_codec::read_png(file.get(), target.sink(), found);
 }
 
 }  // namespace
@@ -115,7 +115,9 @@ bool read_if_png(const png_codec::Input& input, Target& target, png_codec::Sourc
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
   if (png_extension(path)) {
-    write_whole_file(path, encode_png(image));
+    std::string bytes;
+    check(path, png_codec::encode_pixels(image.width(), image.height(), 3, image.data(), &bytes));
+    write_whole_file(path, bytes);
     return;
   }
   Result<std::string> encoded =
@@ -143,10 +145,9 @@ RgbImage read_png(const std::filesystem::path& path, PictureSource* source,
                   const SizeCheck& accept) {
   Target target{RgbImage(), accept, nullptr};
   png_codec::Source found;
-  Status read;
-  if (!read_if_png({path.c_str()}, target, found, read))
-    read = png_codec::codec(path).read_rgb(path.c_str(), target.sink(), &found);
-  RgbImage image = target.take(path, read);
+  std::optional<Status> read = read_if_png({path.c_str()}, target, found);
+  if (!read) read = png_codec::codec(path).read_rgb(path.c_str(), target.sink(), &found);
+  RgbImage image = target.take(path, *read);
   if (source) *source = {found.format, found.colour_channels, found.lossy};
   return image;
 }
@@ -155,12 +156,14 @@ RgbImage read_picture_bytes(std::span<const std::uint8_t> bytes, const std::stri
                             const std::string& format_hint, const SizeCheck& accept) {
   Target target{RgbImage(), accept, nullptr};
   png_codec::Source found;
-  Status read;
-  if (bytes.empty() ||
-      !read_if_png({nullptr, bytes.data(), bytes.size(), format_hint.c_str()}, target, found, read))
+  // fmemopen refuses an empty buffer: no bytes are the module's to refuse.
+  std::optional<Status> read;
+  if (!bytes.empty())
+    read = read_if_png({nullptr, bytes.data(), bytes.size(), format_hint.c_str()}, target, found);
+  if (!read)
     read = png_codec::codec(name).read_rgb_bytes(bytes.data(), bytes.size(), format_hint.c_str(),
                                                  target.sink(), nullptr);
-  return target.take(name, read);
+  return target.take(name, *read);
 }
 
 RgbImage read_scanned_frame(const std::filesystem::path& path, const SizeCheck& accept) {
