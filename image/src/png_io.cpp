@@ -110,14 +110,19 @@ std::optional<Status> read_if_png(const png_codec::Input& input, Target& target,
   return png_codec::read_png(file.get(), target.sink(), found);
 }
 
+// `image` as PNG bytes (libpng, no module); a failure names `name`, the file or "in memory".
+std::string encode_rgb(const std::filesystem::path& name, const RgbImage& image) {
+  std::string bytes;
+  check(name, png_codec::encode_pixels(image.width(), image.height(), 3, image.data(), &bytes));
+  return bytes;
+}
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {
   if (path.has_parent_path()) make_folders(path.parent_path());
   if (png_extension(path)) {
-    std::string bytes;
-    check(path, png_codec::encode_pixels(image.width(), image.height(), 3, image.data(), &bytes));
-    write_whole_file(path, bytes);
+    write_whole_file(path, encode_rgb(path, image));
     return;
   }
   Result<std::string> encoded =
@@ -127,10 +132,7 @@ void write_png(const std::filesystem::path& path, const RgbImage& image) {
 }
 
 std::string encode_png(const RgbImage& image) {
-  std::string bytes;
-  check("a PNG in memory",
-        png_codec::encode_pixels(image.width(), image.height(), 3, image.data(), &bytes));
-  return bytes;
+  return encode_rgb("a PNG in memory", image);
 }
 
 std::string encode_grey_png(int width, int height, std::span<const std::uint8_t> grey) {

@@ -38,6 +38,24 @@ TEST(PngIo, RoundTripIsExact) {
   EXPECT_EQ(read_png(path), img);
 }
 
+// libpng refuses a picture of no pixels: the error names the file written, or "in memory".
+TEST(PngIo, AnEncodingThatFailsNamesTheFile) {
+  const auto path = temp_dir() / "empty.png";
+  try {
+    write_png(path, RgbImage());
+    ADD_FAILURE() << "an empty picture was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path.string() + ": cannot encode: ", 0), 0u) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  try {
+    encode_png(RgbImage());
+    ADD_FAILURE() << "an empty picture was encoded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("a PNG in memory: cannot encode: ", 0), 0u) << e.what();
+  }
+}
+
 TEST(PngIo, MissingFileErrorNamesIt) {
   try {
     read_png("/nonexistent/frame-7.png");
