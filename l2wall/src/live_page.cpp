@@ -82,11 +82,13 @@ LivePage::LivePage(const RunOptions& o, const Wall& wall, bool stoppable) {
   state_.path = path_choice_name(o.path);
   state_.frames_planned = o.frames;
   state_.stoppable = stoppable;
+  // Published before the URL is printed: whoever follows it reads the run's state, never the
+  // server's empty one.
+  server_->publish(state_);
   std::fprintf(stderr, "l2wall: control page: %s%s\n", server_->url().c_str(),
                address.loopback() ? ""
                                   : " (reachable beyond this machine: the token is the only "
                                     "lock, and the traffic is not encrypted)");
-  server_->publish(state_);
 }
 
 void LivePage::watch_pipeservers(const std::vector<std::string>& logs,

@@ -38,7 +38,11 @@ class PageRun : public WallRun {
   nlohmann::json state() {
     const auto r = client_->Get("/api/state");
     if (!r || r->status != 200) throw std::runtime_error("GET /api/state failed: " + output());
-    return nlohmann::json::parse(r->body);
+    // The waits read its fields unchecked: a state without its frame is an error here.
+    nlohmann::json s = nlohmann::json::parse(r->body);
+    if (!s.is_object() || !s.contains("frame"))
+      throw std::runtime_error("GET /api/state: not the run's state: " + r->body);
+    return s;
   }
 
   // POST /api/WHAT (WHAT may carry its own query) with the token: the run's answer, expected
